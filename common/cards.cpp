@@ -1,0 +1,231 @@
+#include "common/cards.h"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <limits>
+
+namespace impact3d {
+
+namespace {
+std::string_view trim(std::string_view s) {
+  std::size_t b = 0, e = s.size();
+  while (b < e && s[b] == ' ') ++b;
+  while (e > b && s[e - 1] == ' ') --e;
+  return s.substr(b, e - b);
+}
+bool is_digit(char c) { return c >= '0' && c <= '9'; }
+}  // namespace
+
+FieldStatus parse_fortran_int(std::string_view text, long long& value) {
+  std::string_view s = trim(text);
+  if (s.empty()) return FieldStatus::blank;
+  std::size_t p = 0;
+  bool neg = false;
+  if (s[p] == '+' || s[p] == '-') { neg = s[p] == '-'; ++p; }
+  if (p >= s.size()) return FieldStatus::bad;
+  long long v = 0;
+  for (; p < s.size(); ++p) {
+    if (!is_digit(s[p])) return FieldStatus::bad;
+    if (v > (std::numeric_limits<long long>::max() - 9) / 10) return FieldStatus::bad;
+    v = v * 10 + (s[p] - '0');
+  }
+  if (v > std::numeric_limits<int>::max()) return FieldStatus::bad;
+  value = neg ? -v : v;
+  return FieldStatus::ok;
+}
+
+FieldStatus parse_fortran_real(std::string_view text, double& value) {
+  std::string_view s = trim(text);
+  if (s.empty()) return FieldStatus::blank;
+  std::string norm;
+  norm.reserve(s.size() + 2);
+  std::size_t p = 0;
+  if (s[p] == '+' || s[p] == '-') norm += s[p++];
+  int mant_digits = 0;
+  while (p < s.size() && is_digit(s[p])) { norm += s[p++]; ++mant_digits; }
+  if (p < s.size() && s[p] == '.') {
+    norm += s[p++];
+    while (p < s.size() && is_digit(s[p])) { norm += s[p++]; ++mant_digits; }
+  }
+  if (mant_digits == 0) return FieldStatus::bad;
+  if (p < s.size()) {
+    // exponent: letter (e, E, d, D) with optional sign, or a bare sign (Fortran 1.0-5)
+    char c = s[p];
+    if (c == 'e' || c == 'E' || c == 'd' || c == 'D') {
+      ++p;
+    } else if (c != '+' && c != '-') {
+      return FieldStatus::bad;
+    }
+    norm += 'e';
+    if (p < s.size() && (s[p] == '+' || s[p] == '-')) norm += s[p++];
+    int exp_digits = 0;
+    while (p < s.size() && is_digit(s[p])) { norm += s[p++]; ++exp_digits; }
+    if (exp_digits == 0 || exp_digits > 4 || p != s.size()) return FieldStatus::bad;
+  }
+  errno = 0;
+  char* end = nullptr;
+  double v = std::strtod(norm.c_str(), &end);
+  if (end != norm.c_str() + norm.size()) return FieldStatus::bad;
+  if (!std::isfinite(v) || (errno == ERANGE && std::fabs(v) > 1.0)) return FieldStatus::bad;
+  value = v;
+  return FieldStatus::ok;
+}
+
+bool is_comment_line(std::string_view line) {
+  if (line.empty()) return false;
+  if (line[0] == '$') return true;
+  if (line[0] != '*') return false;
+  if (line.size() == 1) return true;
+  char c = line[1];
+  return c == ' ' || c == '-' || c == '*' || c == '=' || c == '\r';
+}
+
+bool is_keyword_line(std::string_view line) {
+  return line.size() >= 2 && line[0] == '*' &&
+         ((line[1] >= 'A' && line[1] <= 'Z') || (line[1] >= 'a' && line[1] <= 'z'));
+}
+
+bool DeckFile::load(const std::string& path, Diagnostics& diag) {
+  name_ = path;
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    Location loc;
+    loc.file = path;
+    diag.add(3003, loc, std::string("cannot open the input deck: ") + std::strerror(errno));
+    return false;
+  }
+  in.seekg(0, std::ios::end);
+  std::streamoff size = in.tellg();
+  in.seekg(0, std::ios::beg);
+  if (size < 0 || static_cast<std::size_t>(size) > kMaxBytes) {
+    Location loc;
+    loc.file = path;
+    diag.add(3006, loc, "larger than 1 GiB");
+    return false;
+  }
+  std::string content(static_cast<std::size_t>(size), '\0');
+  in.read(content.data(), size);
+  if (!in) {
+    Location loc;
+    loc.file = path;
+    diag.add(3003, loc, "read error");
+    return false;
+  }
+  load_from_string(path, content);
+  return true;
+}
+
+void DeckFile::load_from_string(const std::string& name, std::string_view content) {
+  name_ = name;
+  lines_.clear();
+  pos_ = 0;
+  int number = 0;
+  std::size_t start = 0;
+  while (start < content.size()) {
+    std::size_t nl = content.find('\n', start);
+    std::size_t end = nl == std::string_view::npos ? content.size() : nl;
+    std::string_view l = content.substr(start, end - start);
+    if (!l.empty() && l.back() == '\r') l.remove_suffix(1);
+    lines_.push_back({++number, std::string(l)});
+    if (nl == std::string_view::npos) break;
+    start = nl + 1;
+  }
+}
+
+const DeckLine* DeckFile::peek_card() {
+  while (pos_ < lines_.size() && is_comment_line(lines_[pos_].text)) ++pos_;
+  return pos_ < lines_.size() ? &lines_[pos_] : nullptr;
+}
+
+const DeckLine* DeckFile::next_card() {
+  const DeckLine* l = peek_card();
+  if (l) ++pos_;
+  return l;
+}
+
+bool DeckFile::at_end() { return peek_card() == nullptr; }
+
+Card::Card(const std::string& file, const DeckLine& line, std::string card_name,
+           Diagnostics& diag)
+    : file_(file), line_(&line), card_name_(std::move(card_name)), diag_(diag) {
+  const std::string& t = line.text;
+  for (std::size_t k = 0; k < t.size(); ++k) {
+    unsigned char c = static_cast<unsigned char>(t[k]);
+    if (c == '\t') {
+      error(1011, int(k) + 1, int(k) + 1, nullptr, {}, false);
+      break;
+    }
+    if (c < 32 || c >= 127) {
+      error(1012, int(k) + 1, int(k) + 1, nullptr, "byte " + std::to_string(int(c)), false);
+      break;
+    }
+  }
+  if (t.size() > 80 && !trim(std::string_view(t).substr(80)).empty()) {
+    Location loc = where(81, int(t.size()));
+    loc.found = t.substr(80);
+    loc.show_found = true;
+    diag_.add(1010, loc);
+    had_error_ = true;
+  }
+}
+
+std::string Card::a(int c1, int c2) const {
+  const std::string& t = line_->text;
+  std::string out;
+  for (int c = c1; c <= c2; ++c) {
+    std::size_t k = static_cast<std::size_t>(c - 1);
+    out += k < t.size() ? t[k] : ' ';
+  }
+  return out;
+}
+
+bool Card::blank(int c1, int c2) const { return trim(a(c1, c2)).empty(); }
+
+Location Card::where(int c1, int c2, const char* field) const {
+  Location loc;
+  loc.file = file_;
+  loc.line = line_->number;
+  loc.card = card_name_;
+  if (field) loc.field = field;
+  loc.col_first = c1;
+  loc.col_last = c2;
+  return loc;
+}
+
+void Card::error(int id, int c1, int c2, const char* field, std::string detail,
+                 bool show_found) {
+  Location loc = where(c1, c2, field);
+  if (show_found && c1 > 0) {
+    loc.found = std::string(trim(a(c1, c2)));
+    loc.show_found = true;
+  }
+  diag_.add(id, loc, std::move(detail));
+  if (message_def(id).severity == Severity::error) had_error_ = true;
+}
+
+long long Card::i(int c1, int c2, const char* field, long long def) {
+  long long v = def;
+  FieldStatus st = parse_fortran_int(a(c1, c2), v);
+  if (st == FieldStatus::blank) return def;
+  if (st == FieldStatus::bad) {
+    error(1001, c1, c2, field);
+    return def;
+  }
+  return v;
+}
+
+double Card::e(int c1, int c2, const char* field, double def) {
+  double v = def;
+  FieldStatus st = parse_fortran_real(a(c1, c2), v);
+  if (st == FieldStatus::blank) return def;
+  if (st == FieldStatus::bad) {
+    error(1002, c1, c2, field);
+    return def;
+  }
+  return v;
+}
+
+}  // namespace impact3d

@@ -1,0 +1,86 @@
+#pragma once
+// The one catalog of numbered messages.  Every message a user or a script can see comes from
+// here; numbers never change meaning (scripts grep for them).  The catalog itself and the
+// rendering rules are documented in README.md ("Messages").
+//
+//   1000-1099  card reading (fields, columns, files)
+//   1100-1199  unsupported features switched on in the deck
+//   1200-1299  model checks (ids, references, counts, geometry, materials)
+//   2000-2099  input warnings
+//   3000-3099  command line and files
+//   4000-4099  run-time errors (error termination)
+//   5000-5099  run-time information (sense switches, output)
+
+#include <string>
+#include <string_view>
+#include <vector>
+#include <ostream>
+
+namespace impact3d {
+
+enum class Severity { info, warning, error };
+
+struct MessageDef {
+  int id;
+  Severity severity;
+  const char* text;  // short, fixed description
+};
+
+// Looks up a message by number; unknown numbers abort (a programming error).
+const MessageDef& message_def(int id);
+// The whole catalog, sorted by number (for --help-messages and the documentation test).
+const std::vector<MessageDef>& message_catalog();
+
+// Where in a deck a message points.  Empty/zero members are left out of the rendered text.
+struct Location {
+  std::string file;
+  int line = 0;            // 1-based line in the file
+  std::string card;        // e.g. "control card 6", "material 2 card 3", "node card for node 417"
+  std::string field;       // e.g. "termination time"
+  int col_first = 0;       // 1-based inclusive columns
+  int col_last = 0;
+  std::string found;       // the text found in the field (shown quoted), if relevant
+  bool show_found = false;
+};
+
+struct Diagnostic {
+  int id;
+  Severity severity;
+  Location where;
+  std::string detail;  // specifics appended to the catalog text
+};
+
+// Renders one diagnostic on one line:
+//   FILE:LINE: error 1003: CARD, field FIELD (cols A-B): TEXT: DETAIL [found "X"]
+std::string render(const Diagnostic& d);
+
+// Collects diagnostics; the input phase never stops at the first error.
+class Diagnostics {
+ public:
+  void add(int id, Location where, std::string detail = {});
+  int error_count() const { return errors_; }
+  int warning_count() const { return warnings_; }
+  const std::vector<Diagnostic>& all() const { return list_; }
+  void print(std::ostream& os) const;
+  bool has(int id) const;
+  // Bound on stored messages, so a garbage file cannot use unbounded memory.
+  static constexpr int kMaxStored = 1000;
+  int suppressed() const { return suppressed_; }
+
+ private:
+  std::vector<Diagnostic> list_;
+  int errors_ = 0, warnings_ = 0, suppressed_ = 0;
+};
+
+// Exit codes of impact3d and postimpact (documented in the README; scripts depend on them).
+namespace exit_code {
+constexpr int ok = 0;
+constexpr int input_error = 2;       // the deck has errors (nothing was run or written to g=)
+constexpr int usage_error = 3;       // bad command line
+constexpr int file_error = 4;        // a file cannot be opened, read or written
+constexpr int error_termination = 5; // the run stopped: negative volume, non-finite value...
+constexpr int stopped_by_signal = 6; // SIGINT/SIGTERM: dump written, stopped as asked (sw1)
+constexpr int internal_error = 9;    // a bug: please report
+}  // namespace exit_code
+
+}  // namespace impact3d

@@ -1,0 +1,61 @@
+#include "impact3d/contact/stonewall.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace impact3d {
+
+namespace {
+// One node against one wall.  Returns the impulse the node received (added to *imp).
+inline void apply_wall_to_node(State& s, int i, const double p[3], const double n[3],
+                               double fric, double dt, double imp[3], double& dke) {
+  const std::size_t k = std::size_t(i);
+  const double mass = s.mass[k];
+  if (mass <= 0) return;
+  const double d = (s.x[k] - p[0]) * n[0] + (s.y[k] - p[1]) * n[1] + (s.z[k] - p[2]) * n[2];
+  const double vn = s.vx[k] * n[0] + s.vy[k] * n[1] + s.vz[k] * n[2];
+  if (d + dt * vn >= 0) return;  // stays on the body's side
+  const double vn_new = std::max(vn, -std::max(d, 0.0) / dt);
+  const double dvn = vn_new - vn;  // >= 0
+  double dv[3] = {dvn * n[0], dvn * n[1], dvn * n[2]};
+  if (fric > 0) {
+    double vt[3] = {s.vx[k] - vn * n[0], s.vy[k] - vn * n[1], s.vz[k] - vn * n[2]};
+    double vt_mag = std::sqrt(vt[0] * vt[0] + vt[1] * vt[1] + vt[2] * vt[2]);
+    if (vt_mag > 0) {
+      // stick removes the tangential velocity; Coulomb limits its change to fric * dvn
+      double dvt = fric >= 1 ? vt_mag : std::min(vt_mag, fric * dvn);
+      for (int a = 0; a < 3; ++a) dv[a] -= dvt * vt[a] / vt_mag;
+    }
+  }
+  const double v2_old = s.vx[k] * s.vx[k] + s.vy[k] * s.vy[k] + s.vz[k] * s.vz[k];
+  s.vx[k] += dv[0];
+  s.vy[k] += dv[1];
+  s.vz[k] += dv[2];
+  const double v2_new = s.vx[k] * s.vx[k] + s.vy[k] * s.vy[k] + s.vz[k] * s.vz[k];
+  dke += 0.5 * mass * (v2_old - v2_new);
+  for (int a = 0; a < 3; ++a) imp[a] += mass * dv[a];
+}
+}  // namespace
+
+void apply_stonewalls_to_nodes(const Model& m, State& s, double dt) {
+  for (std::size_t w = 0; w < m.walls.size(); ++w) {
+    const StoneWall& sw = m.walls[w];
+    double n[3] = {sw.head[0] - sw.tail[0], sw.head[1] - sw.tail[1], sw.head[2] - sw.tail[2]};
+    const double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    for (double& c : n) c /= len;
+    const double p[3] = {sw.tail[0], sw.tail[1], sw.tail[2]};
+    double imp[3] = {0, 0, 0};
+    double dke = 0;
+    // serial, in node order: the sums are the same for any thread count
+    if (sw.nodes.empty()) {
+      for (int i = 0; i < s.nn; ++i) apply_wall_to_node(s, i, p, n, sw.friction, dt, imp, dke);
+    } else {
+      for (int i : sw.nodes) apply_wall_to_node(s, i, p, n, sw.friction, dt, imp, dke);
+    }
+    // force on the wall = - impulse given to the nodes / dt
+    for (int a = 0; a < 3; ++a) s.wall_force[w][std::size_t(a)] = -imp[a] / dt;
+    s.wall_work += dke;
+  }
+}
+
+}  // namespace impact3d

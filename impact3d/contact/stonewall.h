@@ -1,0 +1,15 @@
+#pragma once
+// Rigid walls (DYNA3D stonewalls): infinite planes; a node that would cross its wall in this
+// step has its normal velocity reduced so it ends on the wall (no rebound: the momentum goes
+// into the wall), with optional stick or Coulomb friction.
+
+#include "impact3d/model/model.h"
+#include "impact3d/model/state.h"
+
+namespace impact3d {
+
+// Applies every wall to the velocities v^{n+1/2} (positions x^n, step dt).  Books the force on
+// each wall (s.wall_force) and the kinetic energy the walls take out (s.wall_work).
+void apply_stonewalls_to_nodes(const Model& m, State& s, double dt);
+
+}  // namespace impact3d

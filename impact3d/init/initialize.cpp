@@ -1,0 +1,171 @@
+#include "impact3d/init/initialize.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "impact3d/element/hexahedron.h"
+
+namespace impact3d {
+
+namespace {
+
+void init_nodes(const Model& m, State& s) {
+  const int nn = m.num_nodes();
+  s.nn = nn;
+  s.x = m.x; s.y = m.y; s.z = m.z;
+  s.x0 = m.x; s.y0 = m.y; s.z0 = m.z;
+  for (auto* v : {&s.vx, &s.vy, &s.vz, &s.ax, &s.ay, &s.az, &s.fx, &s.fy, &s.fz, &s.fext_x,
+                  &s.fext_y, &s.fext_z, &s.mass})
+    v->assign(std::size_t(nn), 0.0);
+  s.fix.assign(std::size_t(nn), 0);
+  for (int i = 0; i < nn; ++i) {
+    int c = m.bc[std::size_t(i)];
+    s.fix[std::size_t(i)] = uint8_t((bc_fixes_x(c) ? 1 : 0) | (bc_fixes_y(c) ? 2 : 0) | (bc_fixes_z(c) ? 4 : 0));
+  }
+  s.rigid_of_node.assign(std::size_t(nn), -1);
+}
+
+void init_materials(const Model& m, State& s) {
+  s.mats.resize(m.materials.size());
+  for (std::size_t k = 0; k < m.materials.size(); ++k) {
+    const MaterialData& d = m.materials[k];
+    MaterialConstants& c = s.mats[k];
+    c.type = d.type;
+    c.rho = d.rho;
+    c.E = d.E;
+    c.nu = d.nu;
+    c.sigma_y = d.sigma_y;
+    c.E_tan = d.E_tan;
+    c.beta = d.beta;
+    c.initially_elastic = d.initially_elastic;
+    derive_material_constants(c);
+  }
+}
+
+void init_elements(const Model& m, State& s) {
+  const int ne = m.num_hexes();
+  s.ne = ne;
+  s.conn = m.hex_nodes;
+  s.mat = m.hex_material;
+  s.rigid_elem.assign(std::size_t(ne), 0);
+  for (auto* v : {&s.vol0, &s.vol, &s.mass_e, &s.eps_p, &s.q, &s.ie_e, &s.hg_e, &s.bv_e, &s.dt_e,
+                  &s.de_ie, &s.de_hg, &s.de_bv})
+    v->assign(std::size_t(ne), 0.0);
+  s.sig.assign(std::size_t(6) * ne, 0.0);
+  s.back.assign(std::size_t(6) * ne, 0.0);
+  s.hgs.assign(std::size_t(12) * ne, 0.0);
+  s.cfx.assign(std::size_t(8) * ne, 0.0);
+  s.cfy.assign(std::size_t(8) * ne, 0.0);
+  s.cfz.assign(std::size_t(8) * ne, 0.0);
+  s.yielded.assign(std::size_t(ne), 0);
+  for (int e = 0; e < ne; ++e) {
+    double x[8], y[8], z[8];
+    for (int j = 0; j < 8; ++j) {
+      int n = s.conn[std::size_t(e)][std::size_t(j)];
+      x[j] = s.x[std::size_t(n)];
+      y[j] = s.y[std::size_t(n)];
+      z[j] = s.z[std::size_t(n)];
+    }
+    double v = calc_hex_volume(x, y, z);
+    s.vol0[std::size_t(e)] = s.vol[std::size_t(e)] = v;
+    const MaterialConstants& mc = s.mats[std::size_t(s.mat[std::size_t(e)])];
+    s.mass_e[std::size_t(e)] = mc.rho * v;
+    s.rigid_elem[std::size_t(e)] = mc.type == 20;
+    // Lumped mass: rho V0 / 8 to each corner (a repeated node of a degenerate element gets
+    // its share once per corner).
+    for (int j = 0; j < 8; ++j) s.mass[std::size_t(s.conn[std::size_t(e)][std::size_t(j)])] += mc.rho * v / 8;
+  }
+  // node -> corner map, in increasing (element, corner) order
+  s.corner_start.assign(std::size_t(s.nn) + 1, 0);
+  for (int e = 0; e < ne; ++e)
+    for (int j = 0; j < 8; ++j) ++s.corner_start[std::size_t(s.conn[std::size_t(e)][std::size_t(j)]) + 1];
+  for (int i = 0; i < s.nn; ++i) s.corner_start[std::size_t(i) + 1] += s.corner_start[std::size_t(i)];
+  s.corner_list.assign(std::size_t(8) * ne, 0);
+  std::vector<int> fill(s.corner_start.begin(), s.corner_start.end() - 1);
+  for (int e = 0; e < ne; ++e)
+    for (int j = 0; j < 8; ++j)
+      s.corner_list[std::size_t(fill[std::size_t(s.conn[std::size_t(e)][std::size_t(j)])]++)] = 8 * e + j;
+}
+
+void init_velocities(const Model& m, State& s) {
+  for (const auto& iv : m.init_velocities) {
+    if (iv.first == 0) {
+      std::fill(s.vx.begin(), s.vx.end(), iv.v[0]);
+      std::fill(s.vy.begin(), s.vy.end(), iv.v[1]);
+      std::fill(s.vz.begin(), s.vz.end(), iv.v[2]);
+    } else {
+      for (int n = iv.first; n <= iv.last; n += iv.increment) {
+        s.vx[std::size_t(n - 1)] = iv.v[0];
+        s.vy[std::size_t(n - 1)] = iv.v[1];
+        s.vz[std::size_t(n - 1)] = iv.v[2];
+      }
+    }
+  }
+  // constrained components start at rest
+  for (int i = 0; i < s.nn; ++i) {
+    if (s.fix[std::size_t(i)] & 1) s.vx[std::size_t(i)] = 0;
+    if (s.fix[std::size_t(i)] & 2) s.vy[std::size_t(i)] = 0;
+    if (s.fix[std::size_t(i)] & 4) s.vz[std::size_t(i)] = 0;
+  }
+}
+
+void init_rigid_bodies(State& s) {
+  for (std::size_t k = 0; k < s.mats.size(); ++k) {
+    if (s.mats[k].type != 20) continue;
+    RigidBody rb;
+    rb.material = int(k);
+    for (int e = 0; e < s.ne; ++e)
+      if (s.mat[std::size_t(e)] == int(k))
+        for (int n : s.conn[std::size_t(e)]) rb.nodes.push_back(n);
+    std::sort(rb.nodes.begin(), rb.nodes.end());
+    rb.nodes.erase(std::unique(rb.nodes.begin(), rb.nodes.end()), rb.nodes.end());
+    if (rb.nodes.empty()) continue;
+    // mass properties from the lumped masses of the body's nodes (elements of other materials
+    // sharing a node add their share: the node moves with the body)
+    double mx = 0, my = 0, mz = 0, px = 0, py = 0, pz = 0;
+    for (int n : rb.nodes) {
+      double mn = s.mass[std::size_t(n)];
+      rb.mass += mn;
+      mx += mn * s.x[std::size_t(n)];
+      my += mn * s.y[std::size_t(n)];
+      mz += mn * s.z[std::size_t(n)];
+      px += mn * s.vx[std::size_t(n)];
+      py += mn * s.vy[std::size_t(n)];
+      pz += mn * s.vz[std::size_t(n)];
+    }
+    rb.com = {mx / rb.mass, my / rb.mass, mz / rb.mass};
+    rb.vcom = {px / rb.mass, py / rb.mass, pz / rb.mass};
+    std::array<double, 9> I{};
+    std::array<double, 3> L{};
+    for (int n : rb.nodes) {
+      double mn = s.mass[std::size_t(n)];
+      double r[3] = {s.x[std::size_t(n)] - rb.com[0], s.y[std::size_t(n)] - rb.com[1], s.z[std::size_t(n)] - rb.com[2]};
+      double v[3] = {s.vx[std::size_t(n)] - rb.vcom[0], s.vy[std::size_t(n)] - rb.vcom[1], s.vz[std::size_t(n)] - rb.vcom[2]};
+      double rr = r[0] * r[0] + r[1] * r[1] + r[2] * r[2];
+      for (int a = 0; a < 3; ++a)
+        for (int b = 0; b < 3; ++b) I[std::size_t(3 * a + b)] += mn * ((a == b ? rr : 0) - r[a] * r[b]);
+      L[0] += mn * (r[1] * v[2] - r[2] * v[1]);
+      L[1] += mn * (r[2] * v[0] - r[0] * v[2]);
+      L[2] += mn * (r[0] * v[1] - r[1] * v[0]);
+      rb.r0.insert(rb.r0.end(), {r[0], r[1], r[2]});
+    }
+    rb.inertia0 = I;
+    rb.ang_mom = L;
+    int idx = int(s.rigid.size());
+    for (int n : rb.nodes) s.rigid_of_node[std::size_t(n)] = idx;
+    s.rigid.push_back(std::move(rb));
+  }
+}
+
+}  // namespace
+
+void initialize_state(const Model& m, State& s) {
+  init_nodes(m, s);
+  init_materials(m, s);
+  init_elements(m, s);
+  init_velocities(m, s);
+  init_rigid_bodies(s);
+  s.wall_force.assign(m.walls.size(), {0, 0, 0});
+}
+
+}  // namespace impact3d

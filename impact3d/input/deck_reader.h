@@ -1,0 +1,25 @@
+#pragma once
+// The input phase ("starter"): read a deck into a Model and check it, reporting every error in
+// one pass through the message catalog.
+
+#include <string>
+
+#include "common/cards.h"
+#include "common/messages.h"
+#include "impact3d/model/model.h"
+
+namespace impact3d {
+
+// Reads a DYNA3D fixed-format deck (title card, control cards 2-9, materials, nodes, solids,
+// time-history blocks, load curves, stonewalls, initial velocities, sliding interfaces).
+// Field-level checks are done while reading; returns false if any error was reported.
+bool read_dyna3d_deck(DeckFile& deck, Model& model, Diagnostics& diag);
+
+// Cross-reference and geometry checks on a model that read without errors: element volumes,
+// interface segments on element faces, unused materials and nodes.  Returns false on error.
+bool check_model(const Model& model, Diagnostics& diag);
+
+// Reads and checks a deck file: load + read + check.  Returns false on any error.
+bool read_and_check_deck(const std::string& path, Model& model, Diagnostics& diag);
+
+}  // namespace impact3d

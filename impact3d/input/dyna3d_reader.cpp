@@ -1,0 +1,711 @@
+// DYNA3D fixed-format deck reader.  The layout is documented card by card in
+// docs/deck-format.md; every field read here names its card, field and columns in messages.
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "impact3d/input/deck_reader.h"
+
+namespace impact3d {
+
+namespace {
+
+struct EndOfDeck {};   // thrown when the deck ends while cards are still expected
+struct TooManyErrors {};
+
+class Dyna3dReader {
+ public:
+  Dyna3dReader(DeckFile& deck, Model& model, Diagnostics& diag)
+      : deck_(deck), m_(model), diag_(diag) {}
+
+  void read() {
+    read_title();
+    if (stop_) return;
+    read_control_cards();
+    if (stop_) return;
+    read_materials();
+    read_nodes();
+    read_solids();
+    read_time_history_blocks();
+    read_load_curves();
+    read_stonewalls();
+    read_initial_velocities();
+    read_sliding_interfaces();
+    if (const DeckLine* l = deck_.peek_card()) {
+      Location loc;
+      loc.file = deck_.name();
+      loc.line = l->number;
+      loc.found = l->text;
+      loc.show_found = true;
+      int left = 0;
+      while (deck_.next_card()) ++left;
+      diag_.add(1005, loc, std::to_string(left) + " card(s) after the sliding interfaces");
+    }
+  }
+
+ private:
+  DeckFile& deck_;
+  Model& m_;
+  Diagnostics& diag_;
+  bool stop_ = false;
+  int idw_ = 8;  // width of id fields: 8 large, 5 small
+
+  Card next(const std::string& card_name, const std::string& expected = {}) {
+    if (diag_.error_count() > 500) {
+      Location loc;
+      loc.file = deck_.name();
+      diag_.add(1013, loc);
+      throw TooManyErrors{};
+    }
+    const DeckLine* l = deck_.next_card();
+    if (!l) {
+      Location loc;
+      loc.file = deck_.name();
+      loc.line = deck_.last_line_number();
+      loc.card = card_name;
+      diag_.add(1004, loc, expected.empty() ? "the deck ends before this card" : expected);
+      throw EndOfDeck{};
+    }
+    return Card(deck_.name(), *l, card_name, diag_);
+  }
+
+  // Remaining non-comment lines, to bound counts before allocating.
+  long remaining_cards() {
+    long n = 0;
+    for (const auto& l : deck_.lines())
+      if (&l >= deck_.peek_card() && !is_comment_line(l.text)) ++n;
+    return deck_.peek_card() ? n : 0;
+  }
+
+  void read_title() {
+    Card c = next("title card");
+    m_.title = c.a(1, 72);
+    while (!m_.title.empty() && m_.title.back() == ' ') m_.title.pop_back();
+    std::string digits = c.a(73, 74);
+    std::string large = c.a(76, 80);
+    for (auto& ch : large) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+    bool is_large = large.find("large") != std::string::npos;
+    if (is_large && digits == "10") {
+      c.error(1101, 73, 80, "format flag", "\"10 large\" free-format control cards are not supported; use \"88 large\"");
+      stop_ = true;
+      return;
+    }
+    if (!is_large && !c.blank(76, 80)) {
+      c.error(1006, 76, 80, "format flag", "expected \"large\" or blank");
+    }
+    m_.large_format = is_large;
+    idw_ = is_large ? 8 : 5;
+    if (is_keyword_line(c.a(1, 80))) {
+      c.error(1101, 1, 72, "title", "this looks like an LS-DYNA keyword deck (*KEYWORD); only the DYNA3D fixed format is read");
+      stop_ = true;
+    }
+  }
+
+  void require_zero(Card& c, int c1, int c2, const char* field, const char* feature) {
+    long long v = c.i(c1, c2, field, 0);
+    if (v != 0) c.error(1102, c1, c2, field, feature);
+  }
+
+  void read_control_cards() {
+    ControlData& k = m_.control;
+    {
+      Card c = next("control card 2");
+      if (m_.large_format) {
+        k.nmmat = int(c.i(1, 5, "NMMAT"));
+        k.numnp = int(c.i(6, 15, "NUMNP"));
+        k.numelh = int(c.i(16, 25, "NUMELH"));
+        require_zero(c, 26, 35, "NUMELB", "beam elements");
+        require_zero(c, 36, 45, "NUMELS", "shell elements");
+        require_zero(c, 46, 55, "NUMELT", "thick shell elements");
+        k.interface_segments_out = int(c.i(56, 65, "interface segments"));
+        k.interface_out_interval = c.e(66, 75, "interface output interval");
+      } else {
+        k.nmmat = int(c.i(1, 5, "NMMAT"));
+        k.numnp = int(c.i(6, 10, "NUMNP"));
+        k.numelh = int(c.i(11, 15, "NUMELH"));
+        require_zero(c, 16, 20, "NUMELB", "beam elements");
+        require_zero(c, 21, 25, "NUMELS", "shell elements");
+        require_zero(c, 26, 30, "NUMELT", "thick shell elements");
+        k.interface_segments_out = int(c.i(31, 35, "interface segments"));
+        k.interface_out_interval = c.e(36, 45, "interface output interval");
+      }
+      if (k.nmmat < 1) c.error(1003, 1, 5, "NMMAT", "at least 1 material");
+      int w = m_.large_format ? 10 : 5;
+      if (k.numnp < 1) c.error(1003, 6, 5 + w, "NUMNP", "at least 1 node");
+      if (k.numelh < 1) c.error(1003, 6 + w, 5 + 2 * w, "NUMELH", "at least 1 solid element");
+      if (k.interface_out_interval < 0) c.error(1221, 66, 75, "interface output interval");
+      // Counts cannot exceed what the file holds: bound them before anything is allocated.
+      long avail = remaining_cards();
+      if (k.numnp > avail) {
+        c.error(1205, 6, 5 + w, "NUMNP", "the deck has only " + std::to_string(avail) + " cards left");
+        k.numnp = 0;
+      }
+      if (k.numelh > avail) {
+        c.error(1205, 6 + w, 5 + 2 * w, "NUMELH", "the deck has only " + std::to_string(avail) + " cards left");
+        k.numelh = 0;
+      }
+      if (k.nmmat > avail / 8 + 1) {
+        c.error(1205, 1, 5, "NMMAT", "the deck cannot hold that many 8-card material sets");
+        k.nmmat = 0;
+      }
+      k.nmmat = std::max(k.nmmat, 0);
+      k.numnp = std::max(k.numnp, 0);
+      k.numelh = std::max(k.numelh, 0);
+    }
+    {
+      Card c = next("control card 3");
+      k.node_th_blocks = int(c.i(1, 5, "node time-history blocks"));
+      k.solid_th_blocks = int(c.i(6, 10, "solid time-history blocks"));
+      require_zero(c, 11, 15, "beam time-history blocks", "beam time histories");
+      require_zero(c, 16, 20, "shell time-history blocks", "shell time histories");
+      require_zero(c, 21, 25, "thick shell time-history blocks", "thick shell time histories");
+      k.report_interval = int(c.i(26, 30, "report interval", 100));
+      if (k.report_interval == 0) k.report_interval = 100;
+      k.reaction_print_flag = int(c.i(31, 35, "reaction-force print flag"));
+      require_zero(c, 36, 40, "discrete-element print flag", "discrete elements");
+      require_zero(c, 41, 45, "element deletion flag", "element deletion / SAND database");
+      if (k.node_th_blocks < 0) c.error(1003, 1, 5, "node time-history blocks", "must not be negative");
+      if (k.solid_th_blocks < 0) c.error(1003, 6, 10, "solid time-history blocks", "must not be negative");
+      if (k.report_interval < 0) c.error(1003, 26, 30, "report interval", "must not be negative");
+      long avail = remaining_cards();
+      if (k.node_th_blocks > avail) { c.error(1205, 1, 5, "node time-history blocks"); k.node_th_blocks = 0; }
+      if (k.solid_th_blocks > avail) { c.error(1205, 6, 10, "solid time-history blocks"); k.solid_th_blocks = 0; }
+      k.node_th_blocks = std::max(k.node_th_blocks, 0);
+      k.solid_th_blocks = std::max(k.solid_th_blocks, 0);
+    }
+    {
+      Card c = next("control card 4");
+      require_zero(c, 1, 10, "sliding boundary planes", "sliding boundary planes");
+      require_zero(c, 11, 15, "sliding planes with failure", "sliding planes with failure");
+      require_zero(c, 16, 20, "density-versus-depth points", "density versus depth");
+      require_zero(c, 21, 25, "Brode function flag", "Brode function");
+      require_zero(c, 26, 30, "rigid-body merge cards", "rigid-body merging");
+      require_zero(c, 36, 40, "force cross-sections", "force cross-sections");
+      c.e(41, 50, "cross-section output interval");
+    }
+    {
+      Card c = next("control card 5");
+      k.numlc = int(c.i(1, 5, "NUMLC"));
+      require_zero(c, 6, 10, "concentrated nodal loads", "concentrated nodal loads");
+      require_zero(c, 11, 15, "pressure-loaded sides", "pressure loads");
+      require_zero(c, 16, 20, "velocity/acceleration boundary cards", "prescribed velocity/acceleration boundary conditions");
+      k.num_walls = int(c.i(21, 25, "stonewalls"));
+      require_zero(c, 26, 30, "nodal constraint cards", "nodal constraints");
+      k.num_init_velocity_cards = int(c.i(31, 35, "initial-velocity cards"));
+      k.num_interfaces = int(c.i(36, 40, "sliding interfaces"));
+      const char* names[] = {"base acceleration x", "base acceleration y", "base acceleration z",
+                             "angular velocity x", "angular velocity y", "angular velocity z",
+                             "momentum deposit", "detonation points"};
+      const char* features[] = {"base accelerations", "base accelerations", "base accelerations",
+                                "angular velocities", "angular velocities", "angular velocities",
+                                "momentum deposition", "detonation (high explosives)"};
+      for (int f = 0; f < 8; ++f) require_zero(c, 41 + 5 * f, 45 + 5 * f, names[f], features[f]);
+      long avail = remaining_cards();
+      auto bound = [&](int& v, int c1, const char* field) {
+        if (v < 0) { c.error(1003, c1, c1 + 4, field, "must not be negative"); v = 0; }
+        if (v > avail) { c.error(1205, c1, c1 + 4, field, "the deck has only " + std::to_string(avail) + " cards left"); v = 0; }
+      };
+      bound(k.numlc, 1, "NUMLC");
+      bound(k.num_walls, 21, "stonewalls");
+      bound(k.num_init_velocity_cards, 31, "initial-velocity cards");
+      bound(k.num_interfaces, 36, "sliding interfaces");
+    }
+    {
+      Card c = next("control card 6");
+      k.end_time = c.e(1, 10, "termination time");
+      if (!(k.end_time > 0)) c.error(1214, 1, 10, "termination time");
+      k.th_interval = c.e(11, 20, "time-history interval");
+      k.plot_interval = c.e(21, 30, "plot interval");
+      if (k.th_interval < 0) c.error(1221, 11, 20, "time-history interval");
+      if (k.plot_interval < 0) c.error(1221, 21, 30, "plot interval");
+      if (k.th_interval == 0) k.th_interval = k.end_time / 1000;
+      if (k.plot_interval == 0) k.plot_interval = k.end_time / 20;
+      k.restart_dump_cycles = int(c.i(31, 35, "restart dump cycles"));
+      k.running_restart_cycles = int(c.i(36, 40, "running restart cycles"));
+      if (k.restart_dump_cycles < 0) c.error(1003, 31, 35, "restart dump cycles", "must not be negative");
+      if (k.running_restart_cycles < 0) c.error(1003, 36, 40, "running restart cycles", "must not be negative");
+      k.initial_dt = c.e(41, 50, "initial time step");
+      if (k.initial_dt < 0) c.error(1003, 41, 50, "initial time step", "must not be negative");
+      k.penalty_scale = c.e(51, 60, "penalty scale factor", 0.10);
+      if (k.penalty_scale == 0) k.penalty_scale = 0.10;
+      if (k.penalty_scale < 0) c.error(1003, 51, 60, "penalty scale factor", "must be positive");
+      require_zero(c, 61, 65, "thermal option", "thermal effects");
+      k.viscosity_flag = int(c.i(66, 70, "default viscosity flag"));
+      k.tssf = c.e(71, 80, "time-step scale factor", 0.90);
+      if (k.tssf == 0) k.tssf = 0.90;
+      if (!(k.tssf > 0 && k.tssf <= 1)) c.error(1215, 71, 80, "time-step scale factor");
+    }
+    {
+      Card c = next("control card 7");
+      const char* names[] = {"joints", "rigid bodies with extra nodes", "shell-solid interfaces",
+                             "tie-breaking shell slidelines", "tied node sets with failure",
+                             "time-step load curve", "springs/dampers/masses",
+                             "rigid bodies with inertia", "shell strain dump",
+                             "deformable-rigid switching", "mass damping sets",
+                             "Hughes-Liu update", "shell thickness change", "shell formulation",
+                             "non-reflecting boundary segments"};
+      for (int f = 0; f < 15; ++f) require_zero(c, 1 + 5 * f, 5 + 5 * f, names[f], names[f]);
+    }
+    {
+      Card c = next("control card 8");
+      require_zero(c, 1, 5, "point-constraint nodes", "point constraints");
+      require_zero(c, 6, 10, "constraint coordinate systems", "constraint coordinate systems");
+      k.min_step_factor = c.e(11, 20, "minimum step factor");
+      if (k.min_step_factor < 0 || k.min_step_factor >= 1)
+        c.error(1003, 11, 20, "minimum step factor", "must be in [0, 1)");
+      for (int f = 0; f < 5; ++f) c.i(21 + 5 * f, 25 + 5 * f, "integration rule / relaxation field");
+      for (int f = 0; f < 3; ++f) c.e(46 + 10 * f, 55 + 10 * f, "dynamic-relaxation field");
+      c.i(76, 80, "shell time-step option");
+    }
+    {
+      Card c = next("control card 9");
+      c.i(1, 5, "plane-stress plasticity option");
+      c.i(6, 10, "printout flag");
+      require_zero(c, 11, 15, "1-D slidelines", "1-D slidelines");
+      c.i(16, 20, "relaxation database flag");
+      double rayleigh = c.e(21, 30, "Rayleigh coefficient");
+      if (rayleigh != 0) c.error(1102, 21, 30, "Rayleigh coefficient", "Rayleigh damping");
+      require_zero(c, 31, 35, "materials with Rayleigh damping", "Rayleigh damping");
+      require_zero(c, 36, 40, "materials with initial rotation", "initial rotation");
+      require_zero(c, 41, 45, "materials with body force", "body forces");
+    }
+  }
+
+  void read_materials() {
+    int n = m_.control.nmmat;
+    m_.materials.assign(static_cast<std::size_t>(n), MaterialData{});
+    std::vector<int> first_line(static_cast<std::size_t>(n), 0);
+    for (int s = 1; s <= n; ++s) {
+      std::string set = "material set " + std::to_string(s);
+      Card c1 = next(set + " card 1", "expected " + std::to_string(n) + " material sets (control card 2 NMMAT)");
+      MaterialData md;
+      md.line = c1.line();
+      md.number = int(c1.i(1, 5, "material number"));
+      std::string name = "material " + std::to_string(md.number);
+      bool number_ok = true;
+      if (md.number < 1 || md.number > n) {
+        c1.error(1201, 1, 5, "material number", "must be 1.." + std::to_string(n) + " (NMMAT)");
+        number_ok = false;
+      } else if (first_line[md.number - 1] != 0) {
+        c1.error(1200, 1, 5, "material number", "already defined on line " + std::to_string(first_line[md.number - 1]));
+        number_ok = false;
+      }
+      md.type = int(c1.i(6, 10, "material type"));
+      if (md.type != 1 && md.type != 3 && md.type != 20)
+        c1.error(1103, 6, 10, "material type", "supported: 1 elastic, 3 elastic-plastic, 20 rigid");
+      md.rho = c1.e(11, 20, "density");
+      if (!(md.rho > 0)) c1.error(1207, 11, 20, "density");
+      long long eos = c1.i(21, 25, "EOS type");
+      if (eos != 0) c1.error(1102, 21, 25, "EOS type", "equations of state");
+      md.hourglass_type = int(c1.i(26, 30, "hourglass type", 1));
+      if (md.hourglass_type == 0) md.hourglass_type = 1;
+      if (md.hourglass_type < 1 || md.hourglass_type > 5)
+        c1.error(1006, 26, 30, "hourglass type", "1 viscous (DYNA3D), 2/3 Flanagan-Belytschko viscous, 4/5 stiffness");
+      md.hourglass_coef = c1.e(31, 40, "hourglass coefficient", 0.10);
+      if (c1.blank(31, 40) || md.hourglass_coef == 0) md.hourglass_coef = 0.10;
+      if (md.hourglass_coef < 0) c1.error(1220, 31, 40, "hourglass coefficient");
+      md.bulk_type = int(c1.i(41, 45, "bulk viscosity type", 1));
+      if (md.bulk_type == 0) md.bulk_type = 1;
+      if (md.bulk_type != 1) c1.error(1006, 41, 45, "bulk viscosity type", "only 1 (standard)");
+      md.q1 = c1.e(46, 55, "quadratic bulk viscosity Q1", 1.5);
+      if (c1.blank(46, 55)) md.q1 = 1.5;
+      md.q2 = c1.e(56, 65, "linear bulk viscosity Q2", 0.06);
+      if (c1.blank(56, 65)) md.q2 = 0.06;
+      if (md.q1 < 0) c1.error(1220, 46, 55, "quadratic bulk viscosity Q1");
+      if (md.q2 < 0) c1.error(1220, 56, 65, "linear bulk viscosity Q2");
+      long long et = c1.i(66, 70, "element type");
+      if (et != 0 && et != 1) c1.error(1102, 66, 70, "element type", "only solids (0 or 1)");
+      c1.i(71, 75, "unused");
+      long long ef = c1.i(76, 80, "element formulation");
+      if (ef != 0 && ef != 1) c1.error(1102, 76, 80, "element formulation", "only the one-point hexahedron (0 or 1)");
+
+      Card c2 = next(name + " card 2 (title)");
+      md.title = c2.a(1, 80);
+      while (!md.title.empty() && md.title.back() == ' ') md.title.pop_back();
+
+      std::vector<Card> cards;
+      for (int k = 3; k <= 8; ++k) cards.push_back(next(name + " card " + std::to_string(k)));
+      bool lower_blank = true;
+      for (int k = 1; k < 6; ++k) lower_blank = lower_blank && cards[std::size_t(k)].blank(1, 10);
+      double p[6] = {0, 0, 0, 0, 0, 0};
+      if (lower_blank && !cards[0].blank(11, 80)) {
+        md.packed = true;
+        const char* names[] = {"E", "nu", "yield stress", "tangent modulus", "beta", "initially elastic flag"};
+        for (int f = 0; f < 6; ++f) p[f] = cards[0].e(1 + 10 * f, 10 + 10 * f, names[f]);
+        Location loc = cards[0].where(1, 80);
+        diag_.add(2001, loc);
+      } else {
+        const char* names[] = {"E", "nu", "yield stress", "tangent modulus", "beta", "initially elastic flag"};
+        for (int k = 0; k < 6; ++k) {
+          p[k] = cards[std::size_t(k)].e(1, 10, names[k]);
+          if (!cards[std::size_t(k)].blank(11, 80))
+            diag_.add(2006, cards[std::size_t(k)].where(11, 80, "columns 11-80"), "one parameter per card, in columns 1-10");
+        }
+      }
+      md.E = p[0];
+      md.nu = p[1];
+      Card& cE = cards[0];
+      Card& cnu = md.packed ? cards[0] : cards[1];
+      int nu_c1 = md.packed ? 11 : 1;
+      if (!(md.E > 0)) cE.error(1208, 1, 10, "E");
+      if (!(md.nu >= 0 && md.nu < 0.5)) cnu.error(1209, nu_c1, nu_c1 + 9, "nu");
+      if (md.type == 3) {
+        md.sigma_y = p[2];
+        md.E_tan = p[3];
+        md.beta = p[4];
+        md.initially_elastic = p[5] != 0;
+        auto at = [&](int k) -> std::pair<Card*, int> {
+          return md.packed ? std::make_pair(&cards[0], 1 + 10 * k) : std::make_pair(&cards[std::size_t(k)], 1);
+        };
+        if (md.sigma_y < 0) { auto [c, col] = at(2); c->error(1211, col, col + 9, "yield stress"); }
+        if (!(md.E_tan >= 0 && md.E_tan < md.E)) { auto [c, col] = at(3); c->error(1210, col, col + 9, "tangent modulus"); }
+        if (!(md.beta >= 0 && md.beta <= 1)) { auto [c, col] = at(4); c->error(1212, col, col + 9, "beta"); }
+        if (p[5] != 0 && p[5] != 1) { auto [c, col] = at(5); c->error(1006, col, col + 9, "initially elastic flag", "0 or 1"); }
+      } else {
+        for (int k = 2; k < 6; ++k) {
+          if (p[k] != 0) {
+            auto& c = md.packed ? cards[0] : cards[std::size_t(k)];
+            int col = md.packed ? 1 + 10 * k : 1;
+            diag_.add(2006, c.where(col, col + 9, "parameter"), "not used by material type " + std::to_string(md.type));
+          }
+        }
+      }
+      if (number_ok) {
+        first_line[md.number - 1] = md.line;
+        m_.materials[md.number - 1] = md;
+      }
+    }
+    for (int k = 0; k < n; ++k) {
+      if (first_line[k] == 0 && n > 0) {
+        Location loc;
+        loc.file = deck_.name();
+        diag_.add(1204, loc, "material " + std::to_string(k + 1) + " is never defined");
+      }
+    }
+  }
+
+  void read_nodes() {
+    int n = m_.control.numnp;
+    m_.x.assign(std::size_t(n), 0.0);
+    m_.y.assign(std::size_t(n), 0.0);
+    m_.z.assign(std::size_t(n), 0.0);
+    m_.bc.assign(std::size_t(n), 0);
+    std::vector<int> seen(std::size_t(n), 0);
+    const bool L = m_.large_format;
+    const int i1 = 1, i2 = L ? 8 : 5, b1 = i2 + 1, b2 = i2 + 5;
+    const int x1 = b2 + 1, y1 = x1 + 20, z1 = y1 + 20, r1 = z1 + 20;
+    int rotational = 0, rot_line = 0;
+    for (int k = 0; k < n; ++k) {
+      Card c = next("node card " + std::to_string(k + 1) + " of " + std::to_string(n),
+                    "expected " + std::to_string(n) + " node cards (control card 2 NUMNP), found " + std::to_string(k));
+      int id = int(c.i(i1, i2, "node number"));
+      c.set_name("node card for node " + std::to_string(id));
+      int code = int(c.i(b1, b2, "boundary code"));
+      double x = c.e(x1, x1 + 19, "x");
+      double y = c.e(y1, y1 + 19, "y");
+      double z = c.e(z1, z1 + 19, "z");
+      int rc = int(c.i(r1, r1 + 4, "rotational code"));
+      if (code < 0 || code > 7) c.error(1216, b1, b2, "boundary code");
+      if (rc < 0 || rc > 7) c.error(1216, r1, r1 + 4, "rotational code");
+      else if (rc != 0) { ++rotational; if (!rot_line) rot_line = c.line(); }
+      if (id < 1 || id > n) {
+        c.error(1201, i1, i2, "node number", "must be 1.." + std::to_string(n) + " (NUMNP)");
+        continue;
+      }
+      if (seen[std::size_t(id - 1)]) {
+        c.error(1200, i1, i2, "node number", "node " + std::to_string(id) + " already defined on line " + std::to_string(seen[std::size_t(id - 1)]));
+        continue;
+      }
+      seen[std::size_t(id - 1)] = c.line();
+      m_.x[std::size_t(id - 1)] = x;
+      m_.y[std::size_t(id - 1)] = y;
+      m_.z[std::size_t(id - 1)] = z;
+      m_.bc[std::size_t(id - 1)] = (code >= 0 && code <= 7) ? code : 0;
+    }
+    if (rotational) {
+      Location loc;
+      loc.file = deck_.name();
+      loc.line = rot_line;
+      diag_.add(2005, loc, std::to_string(rotational) + " node(s)");
+    }
+    report_missing(seen, "node");
+  }
+
+  void report_missing(const std::vector<int>& seen, const char* what) {
+    int missing = 0;
+    std::string list;
+    for (std::size_t k = 0; k < seen.size(); ++k) {
+      if (!seen[k]) {
+        if (missing < 10) list += (missing ? ", " : "") + std::to_string(k + 1);
+        ++missing;
+      }
+    }
+    if (missing) {
+      Location loc;
+      loc.file = deck_.name();
+      diag_.add(1204, loc, std::to_string(missing) + " " + what + " number(s) never defined: " + list + (missing > 10 ? ", ..." : ""));
+    }
+  }
+
+  void read_solids() {
+    int n = m_.control.numelh;
+    m_.hex_nodes.assign(std::size_t(n), std::array<int, 8>{});
+    m_.hex_material.assign(std::size_t(n), 0);
+    std::vector<int> seen(std::size_t(n), 0);
+    const int w = idw_;
+    for (int k = 0; k < n; ++k) {
+      Card c = next("solid element card " + std::to_string(k + 1) + " of " + std::to_string(n),
+                    "expected " + std::to_string(n) + " solid element cards (control card 2 NUMELH), found " + std::to_string(k));
+      int id = int(c.i(1, w, "element number"));
+      c.set_name("solid element card for element " + std::to_string(id));
+      Card& e = c;
+      int mat = int(c.i(w + 1, w + 5, "material number"));
+      std::array<int, 8> nodes{};
+      bool ok = true;
+      for (int j = 0; j < 8; ++j) {
+        int c1 = w + 6 + j * w;
+        std::string fname = "node n" + std::to_string(j + 1);
+        int nid = int(c.i(c1, c1 + w - 1, fname.c_str()));
+        if (nid < 1 || nid > m_.control.numnp) {
+          e.error(1202, c1, c1 + w - 1, fname.c_str(), "nodes are 1.." + std::to_string(m_.control.numnp));
+          ok = false;
+        }
+        nodes[std::size_t(j)] = nid - 1;
+      }
+      if (mat < 1 || mat > m_.control.nmmat) {
+        e.error(1203, w + 1, w + 5, "material number", "materials are 1.." + std::to_string(m_.control.nmmat));
+        ok = false;
+      }
+      if (ok && !valid_node_pattern(nodes)) {
+        e.error(1222, w + 6, w + 5 + 8 * w, "nodes n1-n8");
+        ok = false;
+      }
+      if (id < 1 || id > n) {
+        c.error(1201, 1, w, "element number", "must be 1.." + std::to_string(n) + " (NUMELH)");
+        continue;
+      }
+      if (seen[std::size_t(id - 1)]) {
+        c.error(1200, 1, w, "element number", "element " + std::to_string(id) + " already defined on line " + std::to_string(seen[std::size_t(id - 1)]));
+        continue;
+      }
+      seen[std::size_t(id - 1)] = c.line();
+      if (!ok) nodes.fill(-1);
+      m_.hex_nodes[std::size_t(id - 1)] = nodes;
+      m_.hex_material[std::size_t(id - 1)] = ok ? mat - 1 : -1;
+    }
+    report_missing(seen, "solid element");
+  }
+
+  // Hexahedron (8 distinct), wedge (n5=n6, n7=n8), tetrahedron (n3=n4, n5=n6=n7=n8, or the
+  // NIKE3D/LS-DYNA form n4=n5=n6=n7=n8).
+  static bool valid_node_pattern(const std::array<int, 8>& n) {
+    std::array<int, 8> s = n;
+    std::sort(s.begin(), s.end());
+    int distinct = int(std::unique(s.begin(), s.end()) - s.begin());
+    if (distinct == 8) return true;
+    if (distinct == 6 && n[4] == n[5] && n[6] == n[7]) return true;
+    if (distinct == 6 && n[2] == n[3] && n[6] == n[7]) return true;
+    if (distinct == 4 && n[2] == n[3] && n[4] == n[5] && n[5] == n[6] && n[6] == n[7]) return true;
+    if (distinct == 4 && n[3] == n[4] && n[4] == n[5] && n[5] == n[6] && n[6] == n[7]) return true;
+    return false;
+  }
+
+  int read_id(Card& c, int c1, const char* field, int limit, int id_error) {
+    int v = int(c.i(c1, c1 + idw_ - 1, field));
+    if (v < 1 || v > limit) {
+      c.error(id_error, c1, c1 + idw_ - 1, field, "must be 1.." + std::to_string(limit));
+      return -1;
+    }
+    return v;
+  }
+
+  void read_time_history_blocks() {
+    for (int which = 0; which < 2; ++which) {
+      int nb = which == 0 ? m_.control.node_th_blocks : m_.control.solid_th_blocks;
+      int limit = which == 0 ? m_.control.numnp : m_.control.numelh;
+      const char* what = which == 0 ? "node" : "solid";
+      for (int b = 0; b < nb; ++b) {
+        Card c = next(std::string(what) + " time-history block " + std::to_string(b + 1),
+                      "expected " + std::to_string(nb) + " " + what + " time-history blocks (control card 3)");
+        int err = which == 0 ? 1202 : 1201;
+        int first = read_id(c, 1, "first", limit, err);
+        int last = c.blank(1 + idw_, 2 * idw_) ? first : read_id(c, 1 + idw_, "last", limit, err);
+        if (first > 0 && last > 0) {
+          if (last < first) c.error(1003, 1 + idw_, 2 * idw_, "last", "must not be below first");
+          else (which == 0 ? m_.node_th_blocks : m_.solid_th_blocks).push_back({first, last});
+        }
+      }
+    }
+  }
+
+  void read_load_curves() {
+    for (int k = 0; k < m_.control.numlc; ++k) {
+      Card c = next("load curve " + std::to_string(k + 1) + " header card",
+                    "expected " + std::to_string(m_.control.numlc) + " load curves (control card 5 NUMLC)");
+      LoadCurve lc;
+      lc.number = int(c.i(1, 5, "curve number"));
+      int npts = int(c.i(6, 10, "NPTS"));
+      if (lc.number < 1 || lc.number > m_.control.numlc)
+        c.error(1201, 1, 5, "curve number", "must be 1.." + std::to_string(m_.control.numlc));
+      for (const auto& o : m_.load_curves)
+        if (o.number == lc.number) c.error(1200, 1, 5, "curve number");
+      long avail = remaining_cards();
+      if (npts < 2 || npts > avail) {
+        c.error(1003, 6, 10, "NPTS", npts < 2 ? "at least 2 points" : "more points than cards left in the deck");
+        npts = std::clamp(npts, 0, int(avail));
+      }
+      for (int p = 0; p < npts; ++p) {
+        Card pc = next("load curve " + std::to_string(lc.number) + " point " + std::to_string(p + 1));
+        double t = pc.e(1, 10, "time");
+        double f = pc.e(11, 20, "value");
+        if (!lc.t.empty() && !(t > lc.t.back())) pc.error(1217, 1, 10, "time");
+        lc.t.push_back(t);
+        lc.f.push_back(f);
+      }
+      m_.load_curves.push_back(std::move(lc));
+      Location loc;
+      loc.file = deck_.name();
+      loc.line = c.line();
+      loc.card = c.name();
+      diag_.add(2004, loc, "no supported feature uses load curves yet");
+    }
+  }
+
+  void read_node_list(std::vector<int>& out, int count, const std::string& what) {
+    int per = m_.large_format ? 10 : 16;
+    int cards = (count + per - 1) / per;
+    int k = 0;
+    for (int cc = 0; cc < cards; ++cc) {
+      Card c = next(what + " node card " + std::to_string(cc + 1));
+      for (int f = 0; f < per && k < count; ++f, ++k) {
+        int c1 = 1 + f * idw_;
+        int id = read_id(c, c1, "node", m_.control.numnp, 1202);
+        if (id > 0) out.push_back(id - 1);
+      }
+    }
+  }
+
+  void read_stonewalls() {
+    for (int w = 0; w < m_.control.num_walls; ++w) {
+      std::string name = "stonewall " + std::to_string(w + 1);
+      Card c = next(name + " card 1", "expected " + std::to_string(m_.control.num_walls) + " stonewalls (control card 5)");
+      StoneWall sw;
+      sw.line = c.line();
+      int nsn = int(c.i(1, 5, "NSN"));
+      c.i(6, 10, "unused");
+      const char* names[] = {"XT", "YT", "ZT", "XH", "YH", "ZH"};
+      for (int f = 0; f < 3; ++f) sw.tail[std::size_t(f)] = c.e(11 + 10 * f, 20 + 10 * f, names[f]);
+      for (int f = 0; f < 3; ++f) sw.head[std::size_t(f)] = c.e(41 + 10 * f, 50 + 10 * f, names[3 + f]);
+      sw.friction = c.e(71, 80, "FRIC");
+      double dx = sw.head[0] - sw.tail[0], dy = sw.head[1] - sw.tail[1], dz = sw.head[2] - sw.tail[2];
+      double len = std::sqrt(dx * dx + dy * dy + dz * dz);
+      double scale = 0;
+      for (int f = 0; f < 3; ++f) scale = std::max({scale, std::fabs(sw.head[std::size_t(f)]), std::fabs(sw.tail[std::size_t(f)])});
+      if (!(len > 1e-12 * scale) || len == 0) c.error(1213, 11, 70, "XT-ZH", {}, false);
+      if (!(sw.friction >= 0 && sw.friction <= 1)) c.error(1219, 71, 80, "FRIC");
+      if (nsn < 0 || nsn > m_.control.numnp) {
+        c.error(1003, 1, 5, "NSN", "0 (all nodes) to NUMNP");
+        nsn = 0;
+      }
+      read_node_list(sw.nodes, nsn, name);
+      m_.walls.push_back(std::move(sw));
+    }
+  }
+
+  void read_initial_velocities() {
+    int n = m_.control.num_init_velocity_cards;
+    for (int k = 0; k < n; ++k) {
+      Card c = next("initial-velocity card " + std::to_string(k + 1),
+                    "expected " + std::to_string(n) + " initial-velocity cards (control card 5)");
+      InitialVelocity iv;
+      iv.first = int(c.i(1, 8, "first node"));
+      iv.v[0] = c.e(9, 18, "vx");
+      iv.v[1] = c.e(19, 28, "vy");
+      iv.v[2] = c.e(29, 38, "vz");
+      iv.last = c.blank(39, 46) ? iv.first : int(c.i(39, 46, "last node"));
+      iv.increment = int(c.i(47, 51, "increment", 1));
+      if (iv.increment == 0) iv.increment = 1;
+      bool ok = true;
+      int nn = m_.control.numnp;
+      if (iv.first < 0 || iv.first > nn) { c.error(1202, 1, 8, "first node", "0 (all nodes) or 1.." + std::to_string(nn)); ok = false; }
+      if (iv.first != 0 && (iv.last < 1 || iv.last > nn)) { c.error(1202, 39, 46, "last node", "1.." + std::to_string(nn)); ok = false; }
+      if (iv.increment < 0) { c.error(1003, 47, 51, "increment", "must be positive"); ok = false; }
+      if (ok && iv.first != 0 && iv.last < iv.first) { c.error(1223, 39, 46, "last node"); ok = false; }
+      if (ok) m_.init_velocities.push_back(iv);
+    }
+  }
+
+  void read_segments(std::vector<std::array<int, 4>>& out, int count, const std::string& what) {
+    for (int s = 0; s < count; ++s) {
+      Card c = next(what + " segment card " + std::to_string(s + 1) + " of " + std::to_string(count));
+      c.i(1, idw_, "segment number");
+      std::array<int, 4> seg{};
+      bool ok = true;
+      for (int j = 0; j < 4; ++j) {
+        std::string f = "node n" + std::to_string(j + 1);
+        int id = read_id(c, 1 + idw_ * (j + 1), f.c_str(), m_.control.numnp, 1202);
+        if (id < 1) ok = false;
+        seg[std::size_t(j)] = id - 1;
+      }
+      if (ok) out.push_back(seg);
+    }
+  }
+
+  void read_sliding_interfaces() {
+    int n = m_.control.num_interfaces;
+    std::vector<std::array<int, 2>> counts;
+    for (int k = 0; k < n; ++k) {
+      Card c = next("sliding interface " + std::to_string(k + 1) + " control card",
+                    "expected " + std::to_string(n) + " sliding interface control cards (control card 5)");
+      SlidingInterface si;
+      si.line = c.line();
+      int nss = int(c.i(1, 8, "NSS"));
+      int nms = int(c.i(9, 16, "NMS"));
+      si.type = int(c.i(17, 20, "type"));
+      if (si.type != 3) c.error(1104, 17, 20, "type", "only type 3 (sliding with impact, separation and friction)");
+      si.fs = c.e(21, 30, "static friction");
+      si.fd = c.e(31, 40, "dynamic friction");
+      si.decay = c.e(41, 50, "decay coefficient");
+      si.penalty_scale = c.e(51, 60, "penalty scale factor");
+      si.stiffness_method = int(c.i(61, 65, "stiffness method"));
+      int one_pass = int(c.i(66, 70, "one-pass flag"));
+      si.symmetric = one_pass == 0;
+      if (si.fs < 0) c.error(1219, 21, 30, "static friction");
+      if (si.fd < 0) c.error(1219, 31, 40, "dynamic friction");
+      if (si.decay < 0) c.error(1003, 41, 50, "decay coefficient", "must not be negative");
+      if (si.penalty_scale < 0) c.error(1003, 51, 60, "penalty scale factor", "must not be negative");
+      if (si.stiffness_method != 0 && si.stiffness_method != 1) c.error(1006, 61, 65, "stiffness method", "0 DYNA3D or 1 IMPACT-3D maximum stable");
+      if (one_pass != 0 && one_pass != 1) c.error(1006, 66, 70, "one-pass flag", "0 or 1");
+      long avail = remaining_cards();
+      if (nss < 1 || nss > avail) { c.error(1003, 1, 8, "NSS", "1 to the cards left in the deck"); nss = 0; }
+      if (nms < 1 || nms > avail) { c.error(1003, 9, 16, "NMS", "1 to the cards left in the deck"); nms = 0; }
+      counts.push_back({nss, nms});
+      m_.interfaces.push_back(std::move(si));
+    }
+    for (int k = 0; k < n; ++k) {
+      std::string name = "sliding interface " + std::to_string(k + 1);
+      read_segments(m_.interfaces[std::size_t(k)].slave, counts[std::size_t(k)][0], name + " slave");
+      read_segments(m_.interfaces[std::size_t(k)].master, counts[std::size_t(k)][1], name + " master");
+    }
+  }
+
+  friend bool impact3d::read_dyna3d_deck(DeckFile&, Model&, Diagnostics&);
+};
+
+}  // namespace
+
+bool read_dyna3d_deck(DeckFile& deck, Model& model, Diagnostics& diag) {
+  model.deck_file = deck.name();
+  Dyna3dReader r(deck, model, diag);
+  try {
+    r.read();
+  } catch (const EndOfDeck&) {
+  } catch (const TooManyErrors&) {
+  }
+  return diag.error_count() == 0;
+}
+
+}  // namespace impact3d

@@ -1,0 +1,121 @@
+// Model checks that need the whole model: element volumes, interface segments on element
+// faces, unused materials and nodes, initial-velocity ranges.  Every problem is reported.
+
+#include <algorithm>
+#include <cstdio>
+#include <array>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "impact3d/element/hexahedron.h"
+#include "impact3d/input/deck_reader.h"
+
+namespace impact3d {
+
+namespace {
+// Faces of the hexahedron (0-based local nodes), counter-clockwise seen from outside.
+constexpr int kHexFaces[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4},
+                                 {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
+
+std::array<int, 4> face_key(std::array<int, 4> f) {
+  std::sort(f.begin(), f.end());
+  // collapse repeated nodes (triangular faces of wedges/tetrahedra): keep unique, pad with -1
+  auto end = std::unique(f.begin(), f.end());
+  for (auto it = end; it != f.end(); ++it) *it = -1;
+  return f;
+}
+}  // namespace
+
+bool check_model(const Model& m, Diagnostics& diag) {
+  const int before = diag.error_count();
+  Location file_loc;
+  file_loc.file = m.deck_file;
+
+  // element volumes
+  int bad_volumes = 0;
+  for (int e = 0; e < m.num_hexes(); ++e) {
+    const auto& n = m.hex_nodes[std::size_t(e)];
+    if (n[0] < 0) continue;  // already reported
+    double x[8], y[8], z[8];
+    for (int j = 0; j < 8; ++j) {
+      x[j] = m.x[std::size_t(n[std::size_t(j)])];
+      y[j] = m.y[std::size_t(n[std::size_t(j)])];
+      z[j] = m.z[std::size_t(n[std::size_t(j)])];
+    }
+    double v = calc_hex_volume(x, y, z);
+    if (!(v > 0)) {
+      Location loc = file_loc;
+      loc.card = "solid element " + std::to_string(e + 1);
+      char buf[64];
+      std::snprintf(buf, sizeof buf, "volume %.6g", v);
+      diag.add(1206, loc, buf);
+      ++bad_volumes;
+    }
+  }
+
+  // nodes and materials used
+  std::vector<char> node_used(std::size_t(m.num_nodes()), 0);
+  std::vector<char> mat_used(m.materials.size(), 0);
+  std::set<std::array<int, 4>> faces;
+  for (int e = 0; e < m.num_hexes(); ++e) {
+    const auto& n = m.hex_nodes[std::size_t(e)];
+    if (n[0] < 0) continue;
+    for (int j = 0; j < 8; ++j) node_used[std::size_t(n[std::size_t(j)])] = 1;
+    int mat = m.hex_material[std::size_t(e)];
+    if (mat >= 0 && mat < int(mat_used.size())) mat_used[std::size_t(mat)] = 1;
+    for (const auto& f : kHexFaces)
+      faces.insert(face_key({n[std::size_t(f[0])], n[std::size_t(f[1])], n[std::size_t(f[2])], n[std::size_t(f[3])]}));
+  }
+  for (std::size_t k = 0; k < mat_used.size(); ++k) {
+    if (!mat_used[k] && m.materials[k].number != 0) {
+      Location loc = file_loc;
+      loc.line = m.materials[k].line;
+      loc.card = "material " + std::to_string(k + 1);
+      diag.add(2002, loc);
+    }
+  }
+  int unused_nodes = 0;
+  std::string first_unused;
+  for (std::size_t k = 0; k < node_used.size(); ++k) {
+    if (!node_used[k]) {
+      if (unused_nodes < 10) first_unused += (unused_nodes ? ", " : "") + std::to_string(k + 1);
+      ++unused_nodes;
+    }
+  }
+  if (unused_nodes && m.num_hexes() > 0)
+    diag.add(2003, file_loc, std::to_string(unused_nodes) + " node(s): " + first_unused + (unused_nodes > 10 ? ", ..." : ""));
+
+  // interface segments must be element faces
+  for (std::size_t i = 0; i < m.interfaces.size(); ++i) {
+    const auto& si = m.interfaces[i];
+    for (int side = 0; side < 2; ++side) {
+      const auto& segs = side == 0 ? si.slave : si.master;
+      for (std::size_t s = 0; s < segs.size(); ++s) {
+        if (!faces.count(face_key(segs[s]))) {
+          Location loc = file_loc;
+          loc.card = "sliding interface " + std::to_string(i + 1) + (side == 0 ? " slave" : " master") +
+                     " segment " + std::to_string(s + 1);
+          diag.add(1218, loc, "nodes " + std::to_string(segs[s][0] + 1) + " " + std::to_string(segs[s][1] + 1) + " " +
+                                  std::to_string(segs[s][2] + 1) + " " + std::to_string(segs[s][3] + 1));
+        }
+      }
+    }
+  }
+  (void)bad_volumes;
+  return diag.error_count() == before;
+}
+
+bool read_and_check_deck(const std::string& path, Model& model, Diagnostics& diag) {
+  DeckFile deck;
+  if (!deck.load(path, diag)) return false;
+  bool ok = read_dyna3d_deck(deck, model, diag);
+  // Cross checks only make sense when the arrays are complete; they still run when only
+  // field-level errors occurred, so that all problems are reported in one pass.
+  if (model.num_nodes() == model.control.numnp && model.num_hexes() == model.control.numelh &&
+      !diag.has(1004) && !diag.has(1013))
+    ok = check_model(model, diag) && ok;
+  return ok && diag.error_count() == 0;
+}
+
+}  // namespace impact3d

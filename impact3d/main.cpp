@@ -1,0 +1,141 @@
+// impact3d: the driver.  Reads the command line (DYNA3D/LS-DYNA style name=value words), runs
+// the input phase (read and check the whole deck), then the solver.
+
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <iostream>
+#include <string>
+
+#include "common/messages.h"
+#include "impact3d/input/deck_reader.h"
+#include "impact3d/output/printed_output.h"
+#include "impact3d/solve/run.h"
+#include "version.h"
+
+using namespace impact3d;
+
+namespace {
+
+const char* kUsage =
+    "usage: impact3d i=DECK [o=PRINTED] [g=PLOTDB] [d=DUMP] [r=RESTART] [ncpu=N] [--check]\n"
+    "       impact3d --help | --version | --messages\n"
+    "\n"
+    "  i=DECK     input deck (DYNA3D fixed format)\n"
+    "  o=FILE     printed output file (default d3hsp)\n"
+    "  g=FILE     plot database root name (default d3plot)\n"
+    "  d=FILE     restart dump name (default d3dump)\n"
+    "  r=FILE     restart from this dump\n"
+    "  ncpu=N     number of threads (default: OMP_NUM_THREADS or all cores); results do not\n"
+    "             depend on it\n"
+    "  --check    read and check the deck only; print the summary; write nothing else\n"
+    "  --messages list the message catalog\n"
+    "\n"
+    "exit codes: 0 normal termination, 2 input errors, 3 bad command line, 4 file error,\n"
+    "            5 error termination, 6 stopped by signal, 9 internal error\n";
+
+void print_banner(std::ostream& os) {
+  os << " IMPACT-3D " << IMPACT3D_VERSION
+     << "  explicit finite elements for impact (DYNA3D lineage)\n";
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  RunOptions opt;
+  bool check_only = false;
+  Diagnostics cmd;
+  for (int a = 1; a < argc; ++a) {
+    std::string arg = argv[a];
+    auto value = [&](const char* prefix) -> const char* {
+      std::size_t n = std::strlen(prefix);
+      return arg.compare(0, n, prefix) == 0 ? argv[a] + n : nullptr;
+    };
+    if (arg == "--help" || arg == "-h") {
+      std::cout << kUsage;
+      return exit_code::ok;
+    } else if (arg == "--version") {
+      std::cout << "impact3d " << IMPACT3D_VERSION << "\n";
+      return exit_code::ok;
+    } else if (arg == "--messages") {
+      for (const auto& m : message_catalog())
+        std::cout << m.id << " "
+                  << (m.severity == Severity::error ? "error" : m.severity == Severity::warning ? "warning" : "info")
+                  << " " << m.text << "\n";
+      return exit_code::ok;
+    } else if (arg == "--check") {
+      check_only = true;
+    } else if (const char* v = value("i=")) {
+      opt.deck = v;
+    } else if (const char* v = value("o=")) {
+      opt.printed = v;
+    } else if (const char* v = value("g=")) {
+      opt.plot = v;
+    } else if (const char* v = value("d=")) {
+      opt.dump = v;
+    } else if (const char* v = value("r=")) {
+      opt.restart = v;
+    } else if (const char* v = value("ncpu=")) {
+      char* end = nullptr;
+      long n = std::strtol(v, &end, 10);
+      if (!*v || *end || n < 1 || n > 1024) {
+        Location loc;
+        loc.found = arg;
+        loc.show_found = true;
+        cmd.add(3005, loc, "ncpu must be a positive integer");
+      } else {
+        opt.threads = int(n);
+      }
+    } else {
+      Location loc;
+      loc.found = arg;
+      loc.show_found = true;
+      cmd.add(3001, loc);
+    }
+  }
+  if (opt.deck.empty() && opt.restart.empty()) cmd.add(3002, Location{});
+  if (cmd.error_count()) {
+    for (const auto& d : cmd.all()) std::cerr << "impact3d: " << render(d) << "\n";
+    std::cerr << kUsage;
+    return exit_code::usage_error;
+  }
+
+  print_banner(std::cout);
+  Model model;
+  Diagnostics diag;
+  bool ok = read_and_check_deck(opt.deck, model, diag);
+
+  // The printed output file gets the echo and all messages; the terminal gets the messages.
+  std::ofstream printed;
+  if (!check_only) {
+    printed.open(opt.printed);
+    if (!printed) {
+      Location loc;
+      loc.file = opt.printed;
+      Diagnostic d{3004, Severity::error, loc, std::strerror(errno)};
+      std::cerr << "impact3d: " << render(d) << "\n";
+      return exit_code::file_error;
+    }
+    print_banner(printed);
+  }
+  diag.print(std::cerr);
+  if (!ok) {
+    if (printed) diag.print(printed);
+    std::cout << "\n " << diag.error_count() << " input error(s), " << diag.warning_count()
+              << " warning(s) in " << opt.deck << "\n";
+    std::cout << "\n E r r o r   t e r m i n a t i o n   (input errors)\n";
+    if (printed)
+      printed << "\n " << diag.error_count() << " input error(s)\n\n E r r o r   t e r m i n a t i o n   (input errors)\n";
+    // Also report 3003 (cannot open) as a file error rather than an input error.
+    if (diag.has(3003) || diag.has(3006)) return exit_code::file_error;
+    return exit_code::input_error;
+  }
+  if (check_only) {
+    write_model_summary(std::cout, model);
+    std::cout << " input check: 0 errors, " << diag.warning_count() << " warning(s)\n";
+    return exit_code::ok;
+  }
+  write_model_summary(printed, model);
+  if (diag.warning_count()) diag.print(printed);
+  return run_simulation(model, opt, printed);
+}

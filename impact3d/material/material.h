@@ -1,0 +1,55 @@
+#pragma once
+// Per-element constitutive updates (Jaumann rate, Voigt order xx yy zz xy yz zx, tensor shears).
+// One function per material type; each is a small per-element update called from the element
+// loop.
+
+namespace impact3d {
+
+// Constants derived once at initialization from the deck's values.
+struct MaterialConstants {
+  int type = 0;        // 1 elastic, 3 elastic-plastic, 20 rigid
+  double rho = 0;      // initial density
+  double E = 0, nu = 0;
+  double G = 0, K = 0, lambda = 0;
+  double sigma_y = 0;  // initial yield stress (type 3)
+  double E_tan = 0;    // tangent modulus (type 3)
+  double beta = 0;     // 1 isotropic, 0 kinematic hardening
+  double E_p = 0;      // plastic hardening modulus E E_tan / (E - E_tan)
+  double c = 0;        // dilatational wave speed sqrt((K + 4G/3)/rho)
+  bool initially_elastic = false;  // the seed's fast path (type 3)
+};
+
+// Fill G, K, lambda, E_p, c from type, rho, E, nu, sigma_y, E_tan, beta.  When E is not given
+// (E <= 0) but G and K are (the oblique-rod deck), E and nu are filled from them first.
+// E_p = 0 (perfect plasticity) when E_tan <= 0 or E_tan >= E.
+void derive_material_constants(MaterialConstants& m);
+
+// sigma <- sigma + dt (W sigma - sigma W)  (rotation of the old stress by the spin).
+void rotate_stress_jaumann(double sig[6], const double w[3], double dt);
+
+// Type 1: sigma += dt (lambda trD I + 2 G D).  Call rotate_stress_jaumann first.
+void update_stress_elastic(const MaterialConstants& m, const double d[6], double dt,
+                           double sig[6]);
+
+// Per-element history of the elastic-plastic material.
+struct PlasticState {
+  double* back;   // back stress alpha[6] (kinematic part)
+  double* eps_p;  // effective plastic strain
+  unsigned char* yielded;  // 0 until first yield (the "initially elastic" fast path switch)
+};
+
+// Type 3: elastic trial (after rotation of sig and back stress by the caller), von Mises yield
+// on xi = s - alpha, yield stress sigma_y + beta E_p eps_p, radial return
+// d eps_p = f / (3G + E_p), s -= 2 G d eps_p n, back stress += (1 - beta) (2/3) E_p d eps_p n,
+// with n = d(vm)/d(sigma) = 3 xi / (2 vm(xi)) the flow direction (so that in uniaxial stress the
+// back stress component alpha_xx grows by (2/3) E_p d eps_p; the plain unit tensor xi/|xi| would
+// be sqrt(3/2) too small).
+// Returns the plastic strain increment (0 when elastic).
+double update_stress_elastic_plastic(const MaterialConstants& m, const double d[6], double dt,
+                                     double sig[6], double back[6], double& eps_p,
+                                     unsigned char& yielded);
+
+// Von Mises stress sqrt(3/2 s:s) of a Voigt stress (tensor shears).
+double calc_von_mises(const double sig[6]);
+
+}  // namespace impact3d

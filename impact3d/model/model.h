@@ -1,0 +1,109 @@
+#pragma once
+// Model: what the deck says, in the deck's own numbering, after the input phase has read and
+// checked it.  Nodes and solids are numbered 1..NUMNP and 1..NUMELH in the deck (each number
+// once, any order); the arrays here are indexed by number - 1.  Element node references are
+// 0-based node indices.
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace impact3d {
+
+struct ControlData {
+  // card 2
+  int nmmat = 0, numnp = 0, numelh = 0;
+  int interface_segments_out = 0;
+  double interface_out_interval = 0;
+  // card 3
+  int node_th_blocks = 0, solid_th_blocks = 0;
+  int report_interval = 100;  // cycles between run-log lines
+  int reaction_print_flag = 0;
+  // card 5
+  int numlc = 0, num_walls = 0, num_init_velocity_cards = 0, num_interfaces = 0;
+  // card 6
+  double end_time = 0;
+  double th_interval = 0;    // time-history output interval (0 -> end_time / 1000)
+  double plot_interval = 0;  // plot-state interval (0 -> end_time / 20)
+  int restart_dump_cycles = 0, running_restart_cycles = 0;
+  double initial_dt = 0;     // 0 = computed
+  double penalty_scale = 0.10;
+  int viscosity_flag = 0;
+  double tssf = 0.90;
+  // card 8
+  double min_step_factor = 0;  // error termination when dt < factor * dt0 (0 = no check)
+};
+
+struct MaterialData {
+  int number = 0;
+  int type = 0;          // 1 elastic, 3 elastic-plastic, 20 rigid
+  double rho = 0;
+  int hourglass_type = 1;
+  double hourglass_coef = 0.10;
+  int bulk_type = 1;
+  double q1 = 1.5;       // quadratic bulk viscosity
+  double q2 = 0.06;      // linear bulk viscosity
+  std::string title;
+  double E = 0, nu = 0, sigma_y = 0, E_tan = 0, beta = 0;
+  bool initially_elastic = false;
+  bool packed = false;   // parameters were read 8 per card
+  int line = 0;          // line of card 1, for messages
+};
+
+struct StoneWall {
+  std::array<double, 3> tail{}, head{};
+  double friction = 0;   // 0 frictionless, 1 stick, between Coulomb
+  std::vector<int> nodes;  // 0-based; empty = all nodes
+  int line = 0;
+};
+
+struct InitialVelocity {
+  int first = 0, last = 0, increment = 1;  // deck node numbers; first = 0 means all nodes
+  std::array<double, 3> v{};
+};
+
+struct SlidingInterface {
+  int type = 3;
+  double fs = 0, fd = 0, decay = 0;
+  double penalty_scale = 0;   // 0 -> control penalty_scale
+  int stiffness_method = 0;   // 0 DYNA3D mu K A^2 / V, 1 IMPACT-3D maximum stable
+  bool symmetric = true;
+  std::vector<std::array<int, 4>> slave, master;  // 0-based nodes
+  int line = 0;
+};
+
+struct LoadCurve {
+  int number = 0;
+  std::vector<double> t, f;
+};
+
+struct Model {
+  std::string title;
+  std::string deck_file;
+  bool large_format = true;
+  ControlData control;
+  std::vector<MaterialData> materials;  // indexed by material number - 1
+
+  // nodes (index = node number - 1)
+  std::vector<double> x, y, z;
+  std::vector<int> bc;       // 0-7 displacement code
+  // solids (index = element number - 1)
+  std::vector<std::array<int, 8>> hex_nodes;  // 0-based node indices
+  std::vector<int> hex_material;              // 0-based material index
+
+  std::vector<std::array<int, 2>> node_th_blocks, solid_th_blocks;  // deck numbers, inclusive
+  std::vector<LoadCurve> load_curves;
+  std::vector<StoneWall> walls;
+  std::vector<InitialVelocity> init_velocities;
+  std::vector<SlidingInterface> interfaces;
+
+  int num_nodes() const { return static_cast<int>(x.size()); }
+  int num_hexes() const { return static_cast<int>(hex_nodes.size()); }
+};
+
+// Which translational components a boundary-condition code 0-7 fixes.
+inline bool bc_fixes_x(int code) { return code == 1 || code == 4 || code == 6 || code == 7; }
+inline bool bc_fixes_y(int code) { return code == 2 || code == 4 || code == 5 || code == 7; }
+inline bool bc_fixes_z(int code) { return code == 3 || code == 5 || code == 6 || code == 7; }
+
+}  // namespace impact3d

@@ -1,0 +1,85 @@
+#pragma once
+// State: the struct-of-arrays data the cycle loop works on.  Allocated once at initialization;
+// nothing is allocated per cycle.
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "impact3d/material/material.h"
+
+namespace impact3d {
+
+struct RigidBody {
+  int material = -1;            // 0-based material index
+  std::vector<int> nodes;       // 0-based node indices (sorted)
+  double mass = 0;
+  std::array<double, 3> com{}, vcom{};      // centre of mass, its velocity
+  std::array<double, 9> inertia0{};         // inertia about the COM in the initial configuration
+  std::array<double, 9> rot{1, 0, 0, 0, 1, 0, 0, 0, 1};  // rotation from initial configuration
+  std::array<double, 3> omega{};            // angular velocity
+  std::array<double, 3> ang_mom{};          // angular momentum
+  std::vector<double> r0;                   // 3 per node: initial position relative to the COM
+};
+
+struct State {
+  int nn = 0, ne = 0;
+  // nodes
+  std::vector<double> x, y, z;        // current coordinates x^n
+  std::vector<double> x0, y0, z0;     // initial coordinates
+  std::vector<double> vx, vy, vz;     // velocities v^{n-1/2} before the update, v^{n+1/2} after
+  std::vector<double> ax, ay, az;     // accelerations a^n
+  std::vector<double> fx, fy, fz;     // net nodal force (external - internal)
+  std::vector<double> fext_x, fext_y, fext_z;  // external forces (walls, contact) this cycle
+  std::vector<double> mass;
+  std::vector<uint8_t> fix;           // bit 0 x, bit 1 y, bit 2 z
+  std::vector<int> rigid_of_node;     // -1 or rigid-body index
+  // node -> element corners, CSR in increasing (element, corner) order: fixed summation order
+  std::vector<int> corner_start, corner_list;
+
+  // elements
+  std::vector<std::array<int, 8>> conn;
+  std::vector<int> mat;                // 0-based material index
+  std::vector<uint8_t> rigid_elem;     // 1 if the element is rigid (no internal forces)
+  std::vector<double> vol0, vol;       // initial and current volume
+  std::vector<double> mass_e;          // element mass rho0 * V0
+  std::vector<double> sig;             // 6 per element: xx yy zz xy yz zx
+  std::vector<double> back;            // 6 per element: back stress
+  std::vector<double> eps_p;           // effective plastic strain
+  std::vector<uint8_t> yielded;
+  std::vector<double> hgs;             // 12 per element: hourglass stiffness resultants
+  std::vector<double> q;               // bulk viscosity
+  std::vector<double> cfx, cfy, cfz;   // 8 per element: corner internal forces
+  std::vector<double> ie_e;            // internal energy per element (stress work)
+  std::vector<double> hg_e;            // hourglass energy per element
+  std::vector<double> bv_e;            // bulk viscosity energy per element
+  std::vector<double> dt_e;            // element time step
+  std::vector<double> de_ie, de_hg, de_bv;  // energy increments of this cycle (scratch)
+
+  std::vector<MaterialConstants> mats;
+  std::vector<RigidBody> rigid;
+
+  // time integration
+  double time = 0;
+  int cycle = 0;
+  double dt_half = 0;       // dt^{n-1/2}: the step that led to the current positions
+  double dt_next = 0;       // dt^{n+1/2}
+  int dt_elem = -1;         // element controlling the step (0-based)
+  double dt0 = 0;           // first step (for the minimum step check)
+
+  // energies (accumulated)
+  double kinetic = 0, internal = 0, hourglass = 0, bulk_viscous = 0;
+  double wall_work = 0, contact = 0, external_work = 0;
+  double initial_total = 0;
+  std::vector<std::array<double, 3>> wall_force;  // force on each wall this cycle
+
+  double total_energy() const {
+    return kinetic + internal + hourglass + bulk_viscous + wall_work + contact;
+  }
+  double energy_ratio() const {
+    double ref = initial_total + external_work;
+    return ref != 0 ? total_energy() / ref : 1.0;
+  }
+};
+
+}  // namespace impact3d

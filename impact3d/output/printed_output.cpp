@@ -1,0 +1,156 @@
+#include "impact3d/output/printed_output.h"
+
+#include <cmath>
+#include <cstdio>
+#include <set>
+
+namespace impact3d {
+
+namespace {
+std::string fmt(const char* f, double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, f, v);
+  return buf;
+}
+const char* material_type_name(int t) {
+  switch (t) {
+    case 1: return "elastic";
+    case 3: return "elastic-plastic (linear hardening)";
+    case 20: return "rigid";
+  }
+  return "unknown";
+}
+const char* hourglass_name(int t) {
+  switch (t) {
+    case 1: return "DYNA3D viscous";
+    case 2: return "Flanagan-Belytschko viscous";
+    case 3: return "Flanagan-Belytschko viscous (exact volume)";
+    case 4: return "Flanagan-Belytschko stiffness";
+    case 5: return "Flanagan-Belytschko stiffness (exact volume)";
+  }
+  return "unknown";
+}
+}  // namespace
+
+void write_counts(std::ostream& os, const Model& m) {
+  std::set<int> used;
+  for (int mat : m.hex_material) used.insert(mat);
+  os << "     number of nodes ...................... " << m.num_nodes() << "\n"
+     << "     number of solid elements ............. " << m.num_hexes() << "\n"
+     << "     number of materials .................. " << m.materials.size() << "\n"
+     << "     number of rigid walls ................ " << m.walls.size() << "\n"
+     << "     number of sliding interfaces ......... " << m.interfaces.size() << "\n"
+     << "     number of load curves ................ " << m.load_curves.size() << "\n"
+     << "     number of initial-velocity cards ..... " << m.init_velocities.size() << "\n"
+     << "     node / solid time-history blocks ..... " << m.node_th_blocks.size() << " / "
+     << m.solid_th_blocks.size() << "\n";
+}
+
+void write_model_summary(std::ostream& os, const Model& m) {
+  const ControlData& k = m.control;
+  os << "\n title: " << m.title << "\n"
+     << " deck:  " << m.deck_file << " (DYNA3D fixed format, "
+     << (m.large_format ? "large" : "small") << " fields)\n"
+     << " units: as the deck gives them (consistent set; SI: m, kg, s, Pa)\n\n"
+     << " c o n t r o l   i n f o r m a t i o n\n\n";
+  write_counts(os, m);
+  os << "     termination time ..................... " << fmt("%.6e", k.end_time) << " (time)\n"
+     << "     plot-state interval .................. " << fmt("%.6e", k.plot_interval) << " (time)\n"
+     << "     time-history interval ................ " << fmt("%.6e", k.th_interval) << " (time)\n"
+     << "     restart dump every ................... " << k.restart_dump_cycles << " cycles (0 = none)\n"
+     << "     initial time step .................... "
+     << (k.initial_dt > 0 ? fmt("%.6e", k.initial_dt) : std::string("computed")) << "\n"
+     << "     time-step scale factor ............... " << fmt("%.4f", k.tssf) << "\n"
+     << "     sliding-interface penalty scale ...... " << fmt("%.4f", k.penalty_scale) << "\n"
+     << "     run-log interval ..................... " << k.report_interval << " cycles\n"
+     << "     minimum step factor .................. " << fmt("%.4g", k.min_step_factor) << "\n\n"
+     << " m a t e r i a l s\n\n";
+  for (const auto& md : m.materials) {
+    double G = md.E / (2 * (1 + md.nu));
+    double K = md.E / (3 * (1 - 2 * md.nu));
+    double c = std::sqrt((K + 4 * G / 3) / md.rho);
+    os << "   material " << md.number << ": " << material_type_name(md.type) << " (type " << md.type << ")"
+       << (md.title.empty() ? "" : "  \"" + md.title + "\"") << "\n"
+       << "     density .............................. " << fmt("%.6e", md.rho) << " (mass/volume)\n"
+       << "     Young's modulus E .................... " << fmt("%.6e", md.E) << " (stress)\n"
+       << "     Poisson's ratio ...................... " << fmt("%.4f", md.nu) << "\n"
+       << "     bulk modulus K (derived) ............. " << fmt("%.6e", K) << " (stress)\n"
+       << "     shear modulus G (derived) ............ " << fmt("%.6e", G) << " (stress)\n"
+       << "     dilatational wave speed (derived) .... " << fmt("%.6e", c) << " (length/time)\n";
+    if (md.type == 3) {
+      double Ep = md.E * md.E_tan / (md.E - md.E_tan);
+      os << "     yield stress ......................... " << fmt("%.6e", md.sigma_y) << " (stress)\n"
+         << "     tangent modulus ...................... " << fmt("%.6e", md.E_tan) << " (stress)\n"
+         << "     plastic hardening modulus (derived) .. " << fmt("%.6e", Ep) << " (stress)\n"
+         << "     hardening beta ....................... " << fmt("%.3f", md.beta)
+         << (md.beta == 1 ? " (isotropic)" : md.beta == 0 ? " (kinematic)" : " (mixed)") << "\n"
+         << "     initially elastic fast path .......... " << (md.initially_elastic ? "yes" : "no") << "\n";
+    }
+    os << "     hourglass control .................... type " << md.hourglass_type << " ("
+       << hourglass_name(md.hourglass_type) << "), coefficient " << fmt("%.4g", md.hourglass_coef) << "\n"
+       << "     bulk viscosity Q1 (quadratic) ........ " << fmt("%.4g", md.q1) << "\n"
+       << "     bulk viscosity Q2 (linear) ........... " << fmt("%.4g", md.q2) << "\n";
+    if (md.packed) os << "     (parameters read packed, 8 per card, from card 3)\n";
+    os << "\n";
+  }
+  if (!m.walls.empty()) {
+    os << " r i g i d   w a l l s\n\n";
+    for (std::size_t w = 0; w < m.walls.size(); ++w) {
+      const auto& sw = m.walls[w];
+      double n[3] = {sw.head[0] - sw.tail[0], sw.head[1] - sw.tail[1], sw.head[2] - sw.tail[2]};
+      double l = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+      char buf[256];
+      std::snprintf(buf, sizeof buf,
+                    "   wall %zu: point (%.6g, %.6g, %.6g), normal (%.6f, %.6f, %.6f), ", w + 1,
+                    sw.tail[0], sw.tail[1], sw.tail[2], n[0] / l, n[1] / l, n[2] / l);
+      os << buf
+         << (sw.friction == 0 ? std::string("frictionless")
+             : sw.friction == 1 ? std::string("stick")
+                                : "Coulomb friction " + fmt("%.4g", sw.friction))
+         << ", nodes: " << (sw.nodes.empty() ? std::string("all") : std::to_string(sw.nodes.size()))
+         << "\n";
+    }
+    os << "\n";
+  }
+  if (!m.interfaces.empty()) {
+    os << " s l i d i n g   i n t e r f a c e s\n\n";
+    for (std::size_t i = 0; i < m.interfaces.size(); ++i) {
+      const auto& si = m.interfaces[i];
+      os << "   interface " << i + 1 << ": type " << si.type << " (sliding with impact and separation), "
+         << si.slave.size() << " slave / " << si.master.size() << " master segments\n"
+         << "     friction static/dynamic/decay ........ " << fmt("%.4g", si.fs) << " / "
+         << fmt("%.4g", si.fd) << " / " << fmt("%.4g", si.decay) << "\n"
+         << "     penalty stiffness .................... "
+         << (si.stiffness_method == 0 ? "DYNA3D mu K A^2 / V, mu = " +
+                                            fmt("%.4g", si.penalty_scale > 0 ? si.penalty_scale : m.control.penalty_scale)
+                                      : std::string("IMPACT-3D maximum stable, alpha = 1 - TSSF^2"))
+         << "\n"
+         << "     treatment ............................ " << (si.symmetric ? "symmetric (two passes)" : "one pass")
+         << "\n";
+    }
+    os << "\n";
+  }
+  if (!m.init_velocities.empty()) {
+    os << " i n i t i a l   v e l o c i t i e s\n\n";
+    for (const auto& iv : m.init_velocities) {
+      char buf[200];
+      if (iv.first == 0)
+        std::snprintf(buf, sizeof buf, "   all nodes: (%.6g, %.6g, %.6g) (length/time)\n", iv.v[0], iv.v[1], iv.v[2]);
+      else
+        std::snprintf(buf, sizeof buf, "   nodes %d to %d step %d: (%.6g, %.6g, %.6g) (length/time)\n", iv.first,
+                      iv.last, iv.increment, iv.v[0], iv.v[1], iv.v[2]);
+      os << buf;
+    }
+    os << "\n";
+  }
+  if (!m.node_th_blocks.empty() || !m.solid_th_blocks.empty()) {
+    os << " t i m e   h i s t o r i e s\n\n";
+    for (const auto& b : m.node_th_blocks) os << "   nodes " << b[0] << " to " << b[1] << "\n";
+    for (const auto& b : m.solid_th_blocks) os << "   solids " << b[0] << " to " << b[1] << "\n";
+    os << "\n";
+  }
+}
+
+void write_diagnostics(std::ostream& os, const Diagnostics& diag) { diag.print(os); }
+
+}  // namespace impact3d

@@ -1,0 +1,44 @@
+#pragma once
+// The engine: the explicit cycle on a State.  run_simulation (run.h) drives it with output;
+// tests drive it directly.
+
+#include <string>
+
+#include "impact3d/model/model.h"
+#include "impact3d/model/state.h"
+
+namespace impact3d {
+
+enum class StepStatus { ok, finished, negative_volume, non_finite, dt_too_small };
+
+class Engine {
+ public:
+  explicit Engine(const Model& m);
+  // Initialization and the element pass at t = 0 (first time step).
+  StepStatus initialize();
+  // One cycle: nodal forces -> accelerations -> velocities (rigid bodies, constraints, walls)
+  // -> positions -> element processing at the new time -> next step.
+  StepStatus step();
+  // Runs until the termination time or an error.
+  StepStatus run_to_end();
+
+  const State& state() const { return s_; }
+  State& state() { return s_; }
+  const Model& model() const { return m_; }
+  bool finished() const { return s_.time >= m_.control.end_time * (1 - 1e-12); }
+  // Element (0-based) behind the last error, and a description.
+  int error_element() const { return error_elem_; }
+
+  // Energy diagnostics
+  double kinetic_energy_of_material(int mat) const;
+
+ private:
+  StepStatus process_elements();
+  void calc_kinetic_energy();
+
+  const Model& m_;
+  State s_;
+  int error_elem_ = -1;
+};
+
+}  // namespace impact3d

@@ -1,0 +1,94 @@
+#include "impact3d/solve/rigid_body.h"
+
+#include <Eigen/Dense>
+#include <cmath>
+
+namespace impact3d {
+
+namespace {
+using Mat3 = Eigen::Matrix3d;
+using Vec3 = Eigen::Vector3d;
+
+Mat3 to_mat(const std::array<double, 9>& a) {
+  Mat3 m;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) m(i, j) = a[std::size_t(3 * i + j)];
+  return m;
+}
+void from_mat(const Mat3& m, std::array<double, 9>& a) {
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) a[std::size_t(3 * i + j)] = m(i, j);
+}
+
+// Angular velocity from angular momentum with the current inertia R I0 R^T (pseudo-inverse,
+// so a body whose nodes are collinear still works).
+Vec3 calc_omega(const RigidBody& rb) {
+  Mat3 R = to_mat(rb.rot);
+  Mat3 I = R * to_mat(rb.inertia0) * R.transpose();
+  Vec3 L(rb.ang_mom[0], rb.ang_mom[1], rb.ang_mom[2]);
+  Eigen::SelfAdjointEigenSolver<Mat3> es(I);
+  Vec3 lam = es.eigenvalues();
+  double tol = 1e-12 * std::max(lam.maxCoeff(), 0.0);
+  Vec3 inv;
+  for (int k = 0; k < 3; ++k) inv(k) = lam(k) > tol ? 1.0 / lam(k) : 0.0;
+  return es.eigenvectors() * inv.asDiagonal() * es.eigenvectors().transpose() * L;
+}
+
+Mat3 rotation_of(const Vec3& phi) {
+  double a = phi.norm();
+  if (a == 0) return Mat3::Identity();
+  return Eigen::AngleAxisd(a, phi / a).toRotationMatrix();
+}
+}  // namespace
+
+void update_rigid_body_velocities(State& s, double dt_n, double dt_next) {
+  (void)dt_next;
+  for (RigidBody& rb : s.rigid) {
+    Vec3 F = Vec3::Zero(), M = Vec3::Zero();
+    Vec3 c(rb.com[0], rb.com[1], rb.com[2]);
+    unsigned fixed = 0;
+    for (int n : rb.nodes) {
+      const std::size_t k = std::size_t(n);
+      Vec3 f(s.fx[k], s.fy[k], s.fz[k]);
+      Vec3 r = Vec3(s.x[k], s.y[k], s.z[k]) - c;
+      F += f;
+      M += r.cross(f);
+      fixed |= s.fix[k];
+    }
+    for (int a = 0; a < 3; ++a) {
+      rb.vcom[std::size_t(a)] += dt_n * F(a) / rb.mass;
+      if (fixed & (1u << a)) rb.vcom[std::size_t(a)] = 0;  // a fixed node fixes that translation
+      rb.ang_mom[std::size_t(a)] += dt_n * M(a);
+    }
+    Vec3 w = calc_omega(rb);
+    for (int a = 0; a < 3; ++a) rb.omega[std::size_t(a)] = w(a);
+    Vec3 vc(rb.vcom[0], rb.vcom[1], rb.vcom[2]);
+    for (int n : rb.nodes) {
+      const std::size_t k = std::size_t(n);
+      Vec3 r = Vec3(s.x[k], s.y[k], s.z[k]) - c;
+      Vec3 v = vc + w.cross(r);
+      s.vx[k] = v(0);
+      s.vy[k] = v(1);
+      s.vz[k] = v(2);
+    }
+  }
+}
+
+void update_rigid_body_positions(State& s, double dt_next) {
+  for (RigidBody& rb : s.rigid) {
+    Vec3 w(rb.omega[0], rb.omega[1], rb.omega[2]);
+    Mat3 R = rotation_of(w * dt_next) * to_mat(rb.rot);
+    from_mat(R, rb.rot);
+    for (int a = 0; a < 3; ++a) rb.com[std::size_t(a)] += dt_next * rb.vcom[std::size_t(a)];
+    Vec3 c(rb.com[0], rb.com[1], rb.com[2]);
+    for (std::size_t j = 0; j < rb.nodes.size(); ++j) {
+      const std::size_t k = std::size_t(rb.nodes[j]);
+      Vec3 x = c + R * Vec3(rb.r0[3 * j], rb.r0[3 * j + 1], rb.r0[3 * j + 2]);
+      s.x[k] = x(0);
+      s.y[k] = x(1);
+      s.z[k] = x(2);
+    }
+  }
+}
+
+}  // namespace impact3d

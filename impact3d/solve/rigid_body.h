@@ -1,0 +1,15 @@
+#pragma once
+// Rigid bodies (material type 20): every node of the body moves with the body's translation
+// and rotation; mass and inertia come from the lumped masses of its nodes.
+
+#include "impact3d/model/state.h"
+
+namespace impact3d {
+
+// After the velocity update: integrate each body's momentum and angular momentum from the net
+// nodal forces (s.fx/fy/fz) over dt_n, then set its nodes' velocities to the rigid field.
+void update_rigid_body_velocities(State& s, double dt_n, double dt_next);
+// After the position update: place the body's nodes from its centre and rotation (no drift).
+void update_rigid_body_positions(State& s, double dt_next);
+
+}  // namespace impact3d

@@ -1,0 +1,24 @@
+#pragma once
+// The engine: initialization, the explicit cycle loop and output, for a checked Model.
+
+#include <ostream>
+#include <string>
+
+#include "impact3d/model/model.h"
+
+namespace impact3d {
+
+struct RunOptions {
+  std::string deck;
+  std::string printed = "d3hsp";
+  std::string plot = "d3plot";
+  std::string dump = "d3dump";
+  std::string restart;
+  int threads = 0;          // 0 = OpenMP default
+  bool quiet = false;       // no run log on stdout (tests)
+};
+
+// Runs the model to its termination time.  Returns an exit code (common/messages.h).
+int run_simulation(const Model& model, const RunOptions& opt, std::ostream& printed);
+
+}  // namespace impact3d
