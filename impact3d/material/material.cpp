@@ -1,0 +1,100 @@
+// Per-element constitutive updates; see material.h.  Small straight-line functions on the
+// caller's arrays: no heap, no globals, no exceptions (called inside the OpenMP element loop).
+
+#include "impact3d/material/material.h"
+
+#include <cmath>
+
+namespace impact3d {
+
+void derive_material_constants(MaterialConstants& m) {
+  // Decks give either E and nu, or (the oblique-rod aluminium) G and K: complete whichever.
+  if (m.E <= 0.0 && m.G > 0.0 && m.K > 0.0) {
+    m.E = 9.0 * m.K * m.G / (3.0 * m.K + m.G);
+    m.nu = (3.0 * m.K - 2.0 * m.G) / (2.0 * (3.0 * m.K + m.G));
+  }
+  m.G = m.E / (2.0 * (1.0 + m.nu));
+  m.K = m.E / (3.0 * (1.0 - 2.0 * m.nu));
+  m.lambda = m.K - 2.0 * m.G / 3.0;
+  m.E_p = (m.E_tan > 0.0 && m.E_tan < m.E) ? m.E * m.E_tan / (m.E - m.E_tan) : 0.0;
+  m.c = m.rho > 0.0 ? std::sqrt((m.K + 4.0 * m.G / 3.0) / m.rho) : 0.0;
+}
+
+void rotate_stress_jaumann(double sig[6], const double w[3], double dt) {
+  // W = [[0, wxy, -wzx], [-wxy, 0, wyz], [wzx, -wyz, 0]].  Since sigma W = -(W sigma)^T,
+  // W sigma - sigma W = M + M^T with M = W sigma.
+  const double wxy = w[0] * dt, wyz = w[1] * dt, wzx = w[2] * dt;
+  const double sxx = sig[0], syy = sig[1], szz = sig[2];
+  const double sxy = sig[3], syz = sig[4], szx = sig[5];
+  // Rows of M = W sigma (only the entries needed for the symmetric part).
+  const double mxx = wxy * sxy - wzx * szx;
+  const double myy = -wxy * sxy + wyz * syz;
+  const double mzz = wzx * szx - wyz * syz;
+  const double mxy = wxy * syy - wzx * syz;
+  const double myx = -wxy * sxx + wyz * szx;
+  const double myz = -wxy * szx + wyz * szz;
+  const double mzy = wzx * sxy - wyz * syy;
+  const double mzx = wzx * sxx - wyz * sxy;
+  const double mxz = wxy * syz - wzx * szz;
+  sig[0] = sxx + 2.0 * mxx;
+  sig[1] = syy + 2.0 * myy;
+  sig[2] = szz + 2.0 * mzz;
+  sig[3] = sxy + mxy + myx;
+  sig[4] = syz + myz + mzy;
+  sig[5] = szx + mzx + mxz;
+}
+
+void update_stress_elastic(const MaterialConstants& m, const double d[6], double dt,
+                           double sig[6]) {
+  const double g2 = 2.0 * m.G * dt;
+  const double lt = m.lambda * dt * (d[0] + d[1] + d[2]);
+  sig[0] += lt + g2 * d[0];
+  sig[1] += lt + g2 * d[1];
+  sig[2] += lt + g2 * d[2];
+  sig[3] += g2 * d[3];
+  sig[4] += g2 * d[4];
+  sig[5] += g2 * d[5];
+}
+
+double update_stress_elastic_plastic(const MaterialConstants& m, const double d[6], double dt,
+                                     double sig[6], double back[6], double& eps_p,
+                                     unsigned char& yielded) {
+  update_stress_elastic(m, d, dt, sig);  // elastic trial
+  const double p = (sig[0] + sig[1] + sig[2]) * (1.0 / 3.0);
+  // xi = s - alpha
+  double xi[6];
+  xi[0] = sig[0] - p - back[0];
+  xi[1] = sig[1] - p - back[1];
+  xi[2] = sig[2] - p - back[2];
+  xi[3] = sig[3] - back[3];
+  xi[4] = sig[4] - back[4];
+  xi[5] = sig[5] - back[5];
+  const double xx = xi[0] * xi[0] + xi[1] * xi[1] + xi[2] * xi[2] +
+                    2.0 * (xi[3] * xi[3] + xi[4] * xi[4] + xi[5] * xi[5]);
+  const double vm = std::sqrt(1.5 * xx);
+  const double sy = m.sigma_y + m.beta * m.E_p * eps_p;
+  const double f = vm - sy;
+  if (f <= 0.0) return 0.0;
+  yielded = 1;
+  const double deps = f / (3.0 * m.G + m.E_p);
+  // Flow direction n = d(vm)/d(sigma) = 3 xi / (2 vm): s -= 2 G deps n, alpha += (1 - beta)
+  // (2/3) E_p deps n.
+  const double rs = 3.0 * m.G * deps / vm;
+  const double ra = (1.0 - m.beta) * m.E_p * deps / vm;
+  for (int k = 0; k < 6; ++k) {
+    sig[k] -= rs * xi[k];
+    back[k] += ra * xi[k];
+  }
+  eps_p += deps;
+  return deps;
+}
+
+double calc_von_mises(const double sig[6]) {
+  const double p = (sig[0] + sig[1] + sig[2]) * (1.0 / 3.0);
+  const double sx = sig[0] - p, sy = sig[1] - p, sz = sig[2] - p;
+  const double ss = sx * sx + sy * sy + sz * sz +
+                    2.0 * (sig[3] * sig[3] + sig[4] * sig[4] + sig[5] * sig[5]);
+  return std::sqrt(1.5 * ss);
+}
+
+}  // namespace impact3d
