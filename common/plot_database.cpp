@@ -1,0 +1,930 @@
+// Plot state database (d3plot family) writer and reader.  See plot_database.h and
+// shared/spec/plot-database.md.
+#include "common/plot_database.h"
+
+#include <algorithm>
+#include <bit>
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <ctime>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+#include <system_error>
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+namespace impact3d {
+
+namespace {
+
+constexpr double kEndMarker = -999999.0;
+constexpr int kTitleRecordBytes = 72;
+constexpr bool kHostBig = (std::endian::native == std::endian::big);
+
+std::string errno_text(int e) { return std::generic_category().message(e); }
+
+// ---------------------------------------------------------------------------------------------
+// Encoding (writer): little-endian words of 4 or 8 bytes.
+
+void put_bytes(std::vector<char>& b, const void* p, int n) {
+    const char* c = static_cast<const char*>(p);
+    if (kHostBig) {
+        for (int k = n - 1; k >= 0; --k) b.push_back(c[k]);
+    } else {
+        b.insert(b.end(), c, c + n);
+    }
+}
+
+void put_int(std::vector<char>& b, int ws, std::int64_t v) {
+    if (ws == 4) {
+        const std::int32_t x = static_cast<std::int32_t>(v);
+        put_bytes(b, &x, 4);
+    } else {
+        put_bytes(b, &v, 8);
+    }
+}
+
+void put_real(std::vector<char>& b, int ws, double v) {
+    if (ws == 4) {
+        // values beyond the float range become +-inf explicitly (the plain cast would be UB)
+        const float x = (std::isfinite(v) && std::fabs(v) > std::numeric_limits<float>::max())
+                            ? (v > 0 ? std::numeric_limits<float>::infinity() : -std::numeric_limits<float>::infinity())
+                            : static_cast<float>(v);
+        put_bytes(b, &x, 4);
+    } else {
+        put_bytes(b, &v, 8);
+    }
+}
+
+// Text, blank padded / truncated to exactly nbytes.
+void put_text(std::vector<char>& b, const std::string& s, std::size_t nbytes) {
+    for (std::size_t k = 0; k < nbytes; ++k) b.push_back(k < s.size() ? s[k] : ' ');
+}
+
+// ---------------------------------------------------------------------------------------------
+// Decoding (reader): bounds-checked views of a byte buffer that came from a file.
+
+std::string trim_right(std::string s) {
+    while (!s.empty() && (s.back() == ' ' || s.back() == '\0')) s.pop_back();
+    return s;
+}
+
+class Cursor {
+public:
+    Cursor(const char* data, std::int64_t size, std::string file, std::int64_t base, int ws,
+           bool swap)
+        : data_(data), size_(size), file_(std::move(file)), base_(base), ws_(ws), swap_(swap) {}
+
+    std::int64_t pos() const { return pos_; }
+    void seek(std::int64_t p) { pos_ = p; }
+    std::int64_t remaining() const { return size_ - pos_; }
+    bool has(std::int64_t nbytes) const { return nbytes >= 0 && pos_ <= size_ && nbytes <= size_ - pos_; }
+
+    [[noreturn]] void fail(const std::string& what, std::int64_t nbytes) const {
+        std::ostringstream os;
+        os << "plot database " << file_ << ": truncated or corrupt at byte offset " << (base_ + pos_)
+           << ": expected " << what;
+        if (nbytes >= 0) os << " (" << nbytes << " bytes)";
+        os << ", but the file has " << (base_ + size_) << " bytes";
+        throw std::runtime_error(os.str());
+    }
+    void need(std::int64_t nbytes, const std::string& what) const {
+        if (!has(nbytes)) fail(what, nbytes);
+    }
+    // Bytes needed for nwords words (overflow-safe); throws if not present.
+    void need_words(std::int64_t nwords, const std::string& what) const {
+        if (nwords < 0 || nwords > (std::numeric_limits<std::int64_t>::max() / 8)) fail(what, -1);
+        need(nwords * ws_, what);
+    }
+
+    std::int64_t i(const char* what) {
+        need(ws_, what);
+        std::int64_t v;
+        if (ws_ == 4) {
+            std::int32_t x;
+            load(&x, 4);
+            v = x;
+        } else {
+            load(&v, 8);
+        }
+        return v;
+    }
+    double r(const char* what) {
+        need(ws_, what);
+        if (ws_ == 4) {
+            float x;
+            load(&x, 4);
+            return x;
+        }
+        double x;
+        load(&x, 8);
+        return x;
+    }
+    std::string text(std::int64_t nbytes, const char* what) {
+        need(nbytes, what);
+        std::string s(data_ + pos_, data_ + pos_ + nbytes);
+        pos_ += nbytes;
+        return s;
+    }
+    void skip_words(std::int64_t nwords, const char* what) {
+        need_words(nwords, what);
+        pos_ += nwords * ws_;
+    }
+    std::int64_t abs_offset() const { return base_ + pos_; }
+    const std::string& file() const { return file_; }
+
+private:
+    void load(void* dst, int n) {
+        char tmp[8];
+        std::memcpy(tmp, data_ + pos_, n);
+        if (swap_) std::reverse(tmp, tmp + n);
+        std::memcpy(dst, tmp, n);
+        pos_ += n;
+    }
+    const char* data_;
+    std::int64_t size_;
+    std::string file_;
+    std::int64_t base_;
+    int ws_;
+    bool swap_;
+    std::int64_t pos_ = 0;
+};
+
+std::vector<char> read_whole_file(const std::string& path) {
+    std::error_code ec;
+    const auto st = std::filesystem::status(path, ec);
+    if (ec || !std::filesystem::exists(st))
+        throw std::runtime_error("plot database " + path + ": cannot open: " +
+                                 (ec ? ec.message() : std::string("no such file")));
+    if (!std::filesystem::is_regular_file(st))
+        throw std::runtime_error("plot database " + path + ": not a regular file");
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw std::runtime_error("plot database " + path + ": cannot open: " + errno_text(errno));
+    in.seekg(0, std::ios::end);
+    const std::streamoff size = in.tellg();
+    if (size < 0) throw std::runtime_error("plot database " + path + ": cannot determine the file size");
+    in.seekg(0);
+    std::vector<char> data(static_cast<std::size_t>(size));
+    if (size > 0 && !in.read(data.data(), size))
+        throw std::runtime_error("plot database " + path + ": read error");
+    return data;
+}
+
+std::int64_t file_size_or(const std::string& path, std::int64_t dflt) {
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec) || ec) return dflt;
+    const auto s = std::filesystem::file_size(path, ec);
+    return ec ? dflt : static_cast<std::int64_t>(s);
+}
+
+// Reads exactly n bytes at offset; throws with file and offset otherwise.
+std::vector<char> read_range(const std::string& path, std::int64_t offset, std::int64_t n,
+                             const std::string& what) {
+    const std::int64_t size = file_size_or(path, -1);
+    if (size < 0) throw std::runtime_error("plot database " + path + ": cannot open (needed for " + what + ")");
+    if (offset < 0 || n < 0 || offset > size || n > size - offset) {
+        std::ostringstream os;
+        os << "plot database " << path << ": truncated at byte offset " << offset << ": expected "
+           << what << " (" << n << " bytes), but the file has " << size << " bytes";
+        throw std::runtime_error(os.str());
+    }
+    std::ifstream in(path, std::ios::binary);
+    std::vector<char> buf(static_cast<std::size_t>(n));
+    if (!in || !in.seekg(offset) || (n > 0 && !in.read(buf.data(), n))) {
+        std::ostringstream os;
+        os << "plot database " << path << ": read error at byte offset " << offset << " reading " << what;
+        throw std::runtime_error(os.str());
+    }
+    return buf;
+}
+
+// Overflow-checked arithmetic for sizes computed from (possibly corrupt) control words.
+std::int64_t checked_mul(std::int64_t a, std::int64_t b, const std::string& file) {
+    std::int64_t r;
+    if (a < 0 || b < 0 || __builtin_mul_overflow(a, b, &r) || r > (std::int64_t{1} << 56))
+        throw std::runtime_error("plot database " + file + ": implausible control words (size overflow)");
+    return r;
+}
+std::int64_t checked_add(std::int64_t a, std::int64_t b, const std::string& file) {
+    std::int64_t r;
+    if (__builtin_add_overflow(a, b, &r) || r > (std::int64_t{1} << 56))
+        throw std::runtime_error("plot database " + file + ": implausible control words (size overflow)");
+    return r;
+}
+
+bool detect_word_size(const std::vector<char>& d, int ws, bool swap) {
+    const std::size_t off = 14u * static_cast<unsigned>(ws);
+    if (d.size() < off + ws) return false;
+    char tmp[8];
+    std::memcpy(tmp, d.data() + off, ws);
+    if (swap) std::reverse(tmp, tmp + ws);
+    double v;
+    if (ws == 4) {
+        float f;
+        std::memcpy(&f, tmp, 4);
+        v = f;
+    } else {
+        std::memcpy(&v, tmp, 8);
+    }
+    return v > 900.0 && v < 1000.0;
+}
+
+PlotControl parse_control(const std::vector<char>& d, const std::string& path) {
+    PlotControl c;
+    bool found = false;
+    const std::pair<int, bool> tries[4] = {{4, false}, {8, false}, {4, true}, {8, true}};
+    for (const auto& [ws, swap] : tries) {
+        if (detect_word_size(d, ws, swap)) {
+            c.word_size = ws;
+            c.byte_swapped = (swap != kHostBig);
+            found = true;
+            break;
+        }
+    }
+    if (!found) {
+        std::ostringstream os;
+        if (d.size() < 64 * 4)
+            os << "plot database " << path << ": truncated at byte offset " << d.size()
+               << ": expected the 64 control words (at least 256 bytes)";
+        else
+            os << "plot database " << path << ": not a d3plot file: the VERSION control word (word 14, "
+               << "byte offset 56 or 112) is not a value in (900, 1000) as a 4- or 8-byte float in "
+               << "either byte order";
+        throw std::runtime_error(os.str());
+    }
+    const bool swap = c.byte_swapped != kHostBig;
+    Cursor cur(d.data(), static_cast<std::int64_t>(d.size()), path, 0, c.word_size, swap);
+    cur.need_words(64, "the 64 control words");
+    c.title = trim_right(cur.text(10 * c.word_size, "title"));
+    std::int64_t w[64] = {};
+    for (int k = 10; k < 64; ++k) {
+        if (k == 13) {
+            cur.skip_words(1, "release");
+        } else if (k == 14) {
+            c.version = cur.r("version");
+        } else {
+            w[k] = cur.i("control word");
+        }
+    }
+    c.runtime = w[10]; c.filetype = w[11]; c.source_version = w[12];
+    c.ndim = w[15]; c.numnp = w[16]; c.icode = w[17]; c.nglbv = w[18];
+    c.it = w[19]; c.iu = w[20]; c.iv = w[21]; c.ia = w[22];
+    c.nel8 = w[23]; c.nummat8 = w[24]; c.numds = w[25]; c.numst = w[26]; c.nv3d = w[27];
+    c.nel2 = w[28]; c.nummat2 = w[29]; c.nv1d = w[30];
+    c.nel4 = w[31]; c.nummat4 = w[32]; c.nv2d = w[33];
+    c.neiph = w[34]; c.neips = w[35]; c.maxint = w[36]; c.nmsph = w[37]; c.ngpsph = w[38];
+    c.narbs = w[39]; c.nelt = w[40]; c.nummatt = w[41]; c.nv3dt = w[42];
+    c.ioshl = {w[43], w[44], w[45], w[46]};
+    c.ialemat = w[47]; c.ncfdv1 = w[48]; c.ncfdv2 = w[49]; c.nadapt = w[50]; c.nmmat = w[51];
+    c.numfluid = w[52]; c.inn = w[53]; c.npefg = w[54]; c.nel48 = w[55]; c.idtdt = w[56];
+    c.extra = w[57];
+    return c;
+}
+
+[[noreturn]] void unsupported(const std::string& path, const std::string& what) {
+    throw std::runtime_error("plot database " + path + ": unsupported d3plot content: " + what +
+                             " (this reader handles 8-node solids only)");
+}
+
+// ---------------------------------------------------------------------------------------------
+// POSIX file output with errno-carrying errors.
+
+[[noreturn]] void io_fail(const std::string& op, const std::string& file, int e, std::int64_t offset = -1) {
+    std::ostringstream os;
+    os << "plot database: " << op << " " << file;
+    if (offset >= 0) os << " at byte offset " << offset;
+    os << " failed: " << errno_text(e);
+    throw std::runtime_error(os.str());
+}
+
+void pwrite_all(int fd, const char* p, std::size_t n, std::int64_t off, const std::string& file) {
+    while (n > 0) {
+        const ssize_t r = ::pwrite(fd, p, n, static_cast<off_t>(off));
+        if (r < 0) {
+            if (errno == EINTR) continue;
+            io_fail("write to", file, errno, off);
+        }
+        if (r == 0) {
+            std::ostringstream os;
+            os << "plot database: write to " << file << " at byte offset " << off
+               << " failed: short write (0 of " << n << " bytes written)";
+            throw std::runtime_error(os.str());
+        }
+        p += r;
+        n -= static_cast<std::size_t>(r);
+        off += r;
+    }
+}
+
+void fsync_or_throw(int fd, const std::string& file) {
+    while (::fsync(fd) != 0) {
+        if (errno == EINTR) continue;
+        io_fail("fsync of", file, errno);
+    }
+}
+
+std::string parent_dir(const std::string& path) {
+    const std::filesystem::path p(path);
+    const auto parent = p.parent_path();
+    return parent.empty() ? std::string(".") : parent.string();
+}
+
+void fsync_dir_best_effort(const std::string& dir) {
+    const int dfd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    if (dfd < 0) return;
+    (void)::fsync(dfd);
+    ::close(dfd);
+}
+
+bool all_digits(const std::string& s) {
+    return !s.empty() && std::all_of(s.begin(), s.end(), [](char ch) { return ch >= '0' && ch <= '9'; });
+}
+
+template <class T>
+void check_size(const std::vector<T>& v, std::size_t n, const char* what, bool allow_empty) {
+    if (v.size() == n || (allow_empty && v.empty())) return;
+    std::ostringstream os;
+    os << "PlotWriter: " << what << " has " << v.size() << " entries, expected " << n
+       << (allow_empty ? " (or none)" : "");
+    throw std::invalid_argument(os.str());
+}
+
+}  // namespace
+
+// =============================================================================================
+// PlotWriter
+
+PlotWriter::~PlotWriter() { close(); }
+
+void PlotWriter::close() noexcept {
+    if (fd_ >= 0) ::close(fd_);
+    fd_ = -1;
+    root_written_ = false;
+}
+
+std::string PlotWriter::member_name(const std::string& root_path, int member) {
+    if (member <= 0) return root_path;
+    char num[16];
+    std::snprintf(num, sizeof num, "%02d", member);
+    return root_path + num;
+}
+
+void PlotWriter::open(const std::string& root_path, const PlotGeometry& g, int word_size,
+                      std::int64_t member_size_limit_words) {
+    close();
+    if (word_size != 4 && word_size != 8)
+        throw std::invalid_argument("PlotWriter: word size must be 4 or 8, got " + std::to_string(word_size));
+    if (member_size_limit_words < 1)
+        throw std::invalid_argument("PlotWriter: member size limit must be positive");
+    if (g.x0.size() % 3 != 0) throw std::invalid_argument("PlotWriter: x0 size is not a multiple of 3");
+    const std::size_t numnp = g.x0.size() / 3;
+    const std::size_t nel8 = g.hex_material.size();
+    const int nmat = g.num_materials;
+    if (numnp > 100000000u || nel8 > 100000000u) throw std::invalid_argument("PlotWriter: model too large");
+    if (nmat < 0 || (nel8 > 0 && nmat < 1))
+        throw std::invalid_argument("PlotWriter: num_materials must be >= 1 when there are solids");
+    check_size(g.hex_nodes, 8 * nel8, "hex_nodes", false);
+    check_size(g.node_user_ids, numnp, "node_user_ids", true);
+    check_size(g.hex_user_ids, nel8, "hex_user_ids", true);
+    check_size(g.part_titles, static_cast<std::size_t>(nmat), "part_titles", true);
+    check_size(g.part_user_ids, static_cast<std::size_t>(nmat), "part_user_ids", true);
+    for (std::size_t k = 0; k < g.hex_nodes.size(); ++k)
+        if (g.hex_nodes[k] < 0 || static_cast<std::size_t>(g.hex_nodes[k]) >= numnp)
+            throw std::invalid_argument("PlotWriter: hex " + std::to_string(k / 8) + " node index " +
+                                        std::to_string(g.hex_nodes[k]) + " out of range");
+    for (std::size_t e = 0; e < nel8; ++e)
+        if (g.hex_material[e] < 1 || g.hex_material[e] > nmat)
+            throw std::invalid_argument("PlotWriter: hex " + std::to_string(e) + " material " +
+                                        std::to_string(g.hex_material[e]) + " not in 1.." + std::to_string(nmat));
+    for (std::size_t p = 1; p < g.part_user_ids.size(); ++p)
+        if (g.part_user_ids[p] <= g.part_user_ids[p - 1])
+            throw std::invalid_argument("PlotWriter: part_user_ids must be strictly ascending");
+
+    ws_ = word_size;
+    limit_words_ = member_size_limit_words;
+    numnp_ = static_cast<int>(numnp);
+    nel8_ = static_cast<int>(nel8);
+    nmmat_ = nmat;
+    nglbv_ = 6 + 7 * static_cast<std::int64_t>(nmat);
+    // time, globals, coords + vel + acc, 7 words per solid, one deletion flag per solid
+    state_words_ = 1 + nglbv_ + 9 * static_cast<std::int64_t>(numnp) + 8 * static_cast<std::int64_t>(nel8);
+    root_ = root_path;
+    x0_ = g.x0;
+    members_ = 0;
+    states_in_member_ = 0;
+    states_written_ = 0;
+    marker_pos_ = 0;
+
+    // Remove stale family members of an earlier run, so no reader continues into them.
+    const std::string dir = parent_dir(root_path);
+    const std::string base = std::filesystem::path(root_path).filename().string();
+    {
+        std::error_code ec;
+        std::vector<std::filesystem::path> stale;
+        for (std::filesystem::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
+            const std::string name = it->path().filename().string();
+            if (name.size() <= base.size() || name.compare(0, base.size(), base) != 0) continue;
+            std::string rest = name.substr(base.size());
+            if (rest.size() > 4 && rest.compare(rest.size() - 4, 4, ".tmp") == 0) rest.resize(rest.size() - 4);
+            if (all_digits(rest)) stale.push_back(it->path());
+        }
+        for (const auto& p : stale) {
+            std::error_code rec;
+            std::filesystem::remove(p, rec);
+            if (rec) throw std::runtime_error("plot database: cannot remove stale family member " + p.string() +
+                                              ": " + rec.message());
+        }
+    }
+
+    // ---- root file
+    const int ws = ws_;
+    std::vector<char> b;
+    std::string title40 = g.title;
+    put_text(b, title40, 10u * ws);
+    for (int k = 10; k < 64; ++k) {
+        std::int64_t v = 0;
+        switch (k) {
+            case 10: v = static_cast<std::int64_t>(std::time(nullptr)) & 0x7fffffff; break;
+            case 11: v = 1; break;        // FILETYPE d3plot
+            case 15: v = 4; break;        // NDIM
+            case 16: v = numnp_; break;   // NUMNP
+            case 17: v = 6; break;        // ICODE
+            case 18: v = nglbv_; break;   // NGLBV
+            case 20: case 21: case 22: v = 1; break;  // IU IV IA
+            case 23: v = nel8_; break;    // NEL8
+            case 24: v = nmmat_; break;   // NUMMAT8
+            case 27: v = 7; break;        // NV3D = 7 + NEIPH
+            case 36: v = -10003; break;   // MAXINT: element deletion flags
+            case 39: v = 16 + numnp_ + nel8_ + 3 * static_cast<std::int64_t>(nmmat_); break;  // NARBS
+            case 43: case 44: case 45: case 46: v = 1000; break;  // IOSHL
+            case 51: v = nmmat_; break;   // NMMAT
+            default: v = 0;
+        }
+        if (k == 13) put_text(b, "R960", static_cast<std::size_t>(ws));
+        else if (k == 14) put_real(b, ws, 960.0);
+        else put_int(b, ws, v);
+    }
+    for (double x : g.x0) put_real(b, ws, x);
+    for (std::size_t e = 0; e < nel8; ++e) {
+        for (int k = 0; k < 8; ++k) put_int(b, ws, g.hex_nodes[8 * e + k] + 1);
+        put_int(b, ws, g.hex_material[e]);
+    }
+    // NARBS section, NSORT < 0 variant (16-word header + part id arrays)
+    std::vector<int> pids = g.part_user_ids;
+    if (pids.empty())
+        for (int p = 1; p <= nmat; ++p) pids.push_back(p);
+    {
+        const std::int64_t nsort = 100;
+        const std::int64_t nsrh = nsort + numnp_, nsrb = nsrh + nel8_, nsrs = nsrb, nsrt = nsrs;
+        const std::int64_t nsrma = nsrt, nsrmu = nsrma + nmat, nsrmp = nsrmu + nmat;
+        const std::int64_t hdr[16] = {-nsort, nsrh, nsrb, nsrs, nsrt, numnp_, nel8_, 0, 0, 0,
+                                      nsrma, nsrmu, nsrmp, nmat, 0, nmat};
+        for (std::int64_t v : hdr) put_int(b, ws, v);
+        for (std::size_t n = 0; n < numnp; ++n)
+            put_int(b, ws, g.node_user_ids.empty() ? static_cast<std::int64_t>(n + 1) : g.node_user_ids[n]);
+        for (std::size_t e = 0; e < nel8; ++e)
+            put_int(b, ws, g.hex_user_ids.empty() ? static_cast<std::int64_t>(e + 1) : g.hex_user_ids[e]);
+        for (int p : pids) put_int(b, ws, p);   // NORDER (ascending)
+        for (int p : pids) put_int(b, ws, p);   // NSRMU (input order)
+        for (int p = 1; p <= nmat; ++p) put_int(b, ws, p);  // NSRMP (cross reference)
+    }
+    put_real(b, ws, kEndMarker);
+    // titles: 90001 part titles first (VTK expects it right after the marker), then 90000
+    put_int(b, ws, 90001);
+    put_int(b, ws, nmat);
+    for (int p = 0; p < nmat; ++p) {
+        put_int(b, ws, pids[p]);
+        put_text(b, g.part_titles.empty() ? "part " + std::to_string(pids[p]) : g.part_titles[p],
+                 kTitleRecordBytes);
+    }
+    put_int(b, ws, 90000);
+    put_text(b, g.title, kTitleRecordBytes);
+    put_real(b, ws, kEndMarker);
+
+    const int fd = ::open(root_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+    if (fd < 0) io_fail("open of", root_path, errno);
+    try {
+        pwrite_all(fd, b.data(), b.size(), 0, root_path);
+        fsync_or_throw(fd, root_path);
+    } catch (...) {
+        ::close(fd);
+        throw;
+    }
+    if (::close(fd) != 0) io_fail("close of", root_path, errno);
+    fsync_dir_best_effort(dir);
+    root_written_ = true;
+}
+
+void PlotWriter::write_state(const PlotState& s) {
+    if (!root_written_) throw std::logic_error("PlotWriter::write_state: database not open");
+    const std::size_t nm = static_cast<std::size_t>(nmmat_);
+    const std::size_t nn = static_cast<std::size_t>(numnp_);
+    const std::size_t ne = static_cast<std::size_t>(nel8_);
+    check_size(s.mat_internal_energy, nm, "mat_internal_energy", true);
+    check_size(s.mat_kinetic_energy, nm, "mat_kinetic_energy", true);
+    check_size(s.mat_momentum, 3 * nm, "mat_momentum", true);
+    check_size(s.mat_mass, nm, "mat_mass", true);
+    check_size(s.mat_hourglass_energy, nm, "mat_hourglass_energy", true);
+    check_size(s.coords, 3 * nn, "coords", true);
+    check_size(s.vel, 3 * nn, "vel", true);
+    check_size(s.acc, 3 * nn, "acc", true);
+    check_size(s.stress, 6 * ne, "stress", true);
+    check_size(s.eps, ne, "eps", true);
+    check_size(s.alive, ne, "alive", true);
+
+    const int ws = ws_;
+    std::vector<char> b;
+    b.reserve(static_cast<std::size_t>((state_words_ + 1) * ws));
+    auto put_vec = [&](const std::vector<double>& v, std::size_t n) {
+        if (v.empty())
+            for (std::size_t k = 0; k < n; ++k) put_real(b, ws, 0.0);
+        else
+            for (double x : v) put_real(b, ws, x);
+    };
+    put_real(b, ws, s.time);
+    put_real(b, ws, s.kinetic_energy);
+    put_real(b, ws, s.internal_energy);
+    put_real(b, ws, s.total_energy);
+    for (double v : s.velocity) put_real(b, ws, v);
+    put_vec(s.mat_internal_energy, nm);
+    put_vec(s.mat_kinetic_energy, nm);
+    put_vec(s.mat_momentum, 3 * nm);
+    put_vec(s.mat_mass, nm);
+    put_vec(s.mat_hourglass_energy, nm);
+    if (s.coords.empty()) put_vec(x0_, 3 * nn);
+    else put_vec(s.coords, 3 * nn);
+    put_vec(s.vel, 3 * nn);
+    put_vec(s.acc, 3 * nn);
+    for (std::size_t e = 0; e < ne; ++e) {
+        for (int k = 0; k < 6; ++k) put_real(b, ws, s.stress.empty() ? 0.0 : s.stress[6 * e + k]);
+        put_real(b, ws, s.eps.empty() ? 0.0 : s.eps[e]);
+    }
+    for (std::size_t e = 0; e < ne; ++e) put_real(b, ws, (s.alive.empty() || s.alive[e]) ? 1.0 : 0.0);
+    if (static_cast<std::int64_t>(b.size()) != state_words_ * ws)
+        throw std::logic_error("PlotWriter: internal error: state size mismatch");
+
+    const bool fits = fd_ >= 0 && (marker_pos_ / ws + state_words_ + 1 <= limit_words_);
+    if (fits) append_to_member(b);
+    else start_member(b);
+    ++states_written_;
+}
+
+// New member: written completely under a temporary name, fsync'ed, then renamed into place, so
+// that a reader never sees a partly written member.
+void PlotWriter::start_member(const std::vector<char>& buf) {
+    const int m = members_ + 1;
+    const std::string name = member_name(root_, m);
+    const std::string tmp = name + ".tmp";
+    const int fd = ::open(tmp.c_str(), O_RDWR | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+    if (fd < 0) io_fail("open of", tmp, errno);
+    try {
+        std::vector<char> all(buf);
+        put_real(all, ws_, kEndMarker);
+        pwrite_all(fd, all.data(), all.size(), 0, tmp);
+        fsync_or_throw(fd, tmp);
+        if (::rename(tmp.c_str(), name.c_str()) != 0) io_fail("rename to " + name + " of", tmp, errno);
+    } catch (...) {
+        ::close(fd);
+        ::unlink(tmp.c_str());
+        throw;
+    }
+    fsync_dir_best_effort(parent_dir(name));
+    if (fd_ >= 0) ::close(fd_);
+    fd_ = fd;
+    members_ = m;
+    states_in_member_ = 1;
+    marker_pos_ = static_cast<std::int64_t>(buf.size());
+}
+
+// Append to the current member: body + new marker after the old marker first, then the time word
+// over the old marker (the commit).  Until the commit the old marker ends the member.
+void PlotWriter::append_to_member(const std::vector<char>& buf) {
+    const std::string name = member_name(root_, members_);
+    const std::int64_t off = marker_pos_;
+    std::vector<char> tail(buf.begin() + ws_, buf.end());
+    put_real(tail, ws_, kEndMarker);
+    try {
+        pwrite_all(fd_, tail.data(), tail.size(), off + ws_, name);
+        fsync_or_throw(fd_, name);
+    } catch (...) {
+        if (::ftruncate(fd_, static_cast<off_t>(off + ws_)) == 0) (void)::fsync(fd_);
+        throw;
+    }
+    try {
+        pwrite_all(fd_, buf.data(), static_cast<std::size_t>(ws_), off, name);
+        fsync_or_throw(fd_, name);
+    } catch (...) {
+        std::vector<char> mk;
+        put_real(mk, ws_, kEndMarker);
+        (void)::pwrite(fd_, mk.data(), mk.size(), static_cast<off_t>(off));
+        if (::ftruncate(fd_, static_cast<off_t>(off + ws_)) == 0) (void)::fsync(fd_);
+        throw;
+    }
+    marker_pos_ += static_cast<std::int64_t>(buf.size());
+    ++states_in_member_;
+}
+
+// =============================================================================================
+// PlotReader
+
+PlotControl PlotReader::read_control(const std::string& root_path) {
+    const std::int64_t size = file_size_or(root_path, -1);
+    if (size < 0) throw std::runtime_error("plot database " + root_path + ": cannot open: no such regular file");
+    const std::vector<char> head = read_range(root_path, 0, std::min<std::int64_t>(size, 64 * 8), "control words");
+    return parse_control(head, root_path);
+}
+
+void PlotReader::open(const std::string& root_path) {
+    root_ = root_path;
+    ctl_ = PlotControl{};
+    geom_ = PlotGeometry{};
+    states_.clear();
+    state_bytes_ = 0;
+    static_end_ = 0;
+    num_members_ = 0;
+
+    const std::vector<char> d = read_whole_file(root_path);
+    const std::string& f = root_path;
+    PlotControl c = parse_control(d, f);
+    const int ws = c.word_size;
+    const bool swap = c.byte_swapped != kHostBig;
+
+    // ---- what this reader supports
+    const std::int64_t ft = c.filetype > 1000 ? c.filetype - 1000 : c.filetype;
+    if (ft != 1) unsupported(f, "FILETYPE " + std::to_string(c.filetype) + " is not a d3plot (1)");
+    if (c.filetype > 1000 && ws == 4) unsupported(f, "64-bit user ids in a 4-byte file (FILETYPE > 1000)");
+    if (c.ndim != 4) unsupported(f, "NDIM " + std::to_string(c.ndim) + " (only 4 is supported)");
+    auto bad_count = [&](std::int64_t v, const char* name) {
+        if (v < 0 || v > std::numeric_limits<std::int32_t>::max())
+            throw std::runtime_error("plot database " + f + ": implausible control word " + name + " = " +
+                                     std::to_string(v));
+    };
+    if (c.nel8 < 0) unsupported(f, "10-node tetrahedra (NEL8 < 0)");
+    bad_count(c.numnp, "NUMNP");
+    bad_count(c.nel8, "NEL8");
+    bad_count(c.nglbv, "NGLBV");
+    bad_count(c.nummat8, "NUMMAT8");
+    bad_count(c.nmmat, "NMMAT");
+    bad_count(c.narbs, "NARBS");
+    bad_count(c.neiph, "NEIPH");
+    bad_count(c.extra, "EXTRA");
+    if (c.nel4 != 0) unsupported(f, std::to_string(c.nel4) + " shells (NEL4)");
+    if (c.nel2 != 0) unsupported(f, std::to_string(c.nel2) + " beams (NEL2)");
+    if (c.nelt != 0) unsupported(f, std::to_string(c.nelt) + " thick shells (NELT)");
+    if (c.nel48 != 0) unsupported(f, std::to_string(c.nel48) + " 8-node shells (NEL48)");
+    if (c.nmsph != 0 || c.ngpsph != 0) unsupported(f, "SPH data (NMSPH/NGPSPH)");
+    if (c.ialemat != 0 || c.numfluid != 0) unsupported(f, "ALE data (IALEMAT/NUMFLUID)");
+    if (c.npefg != 0) unsupported(f, "airbag particle data (NPEFG)");
+    if (c.ncfdv1 != 0 || c.ncfdv2 != 0) unsupported(f, "CFD node data (NCFDV1/NCFDV2)");
+    if (c.nadapt != 0) unsupported(f, "adaptive meshing (NADAPT)");
+    if (c.idtdt != 0) unsupported(f, "IDTDT " + std::to_string(c.idtdt) + " (extra node/strain data)");
+    if (c.it != 0 && c.it != 1) unsupported(f, "IT " + std::to_string(c.it) + " (only IT 0 or 1)");
+    for (std::int64_t flag : {c.iu, c.iv, c.ia})
+        if (flag != 0 && flag != 1) throw std::runtime_error("plot database " + f + ": implausible IU/IV/IA flag " +
+                                                             std::to_string(flag));
+    if (c.nv3d != 7 + c.neiph)
+        unsupported(f, "NV3D " + std::to_string(c.nv3d) + " != 7 + NEIPH (" + std::to_string(c.neiph) +
+                           "): solid integration-point output");
+
+    Cursor cur(d.data(), static_cast<std::int64_t>(d.size()), f, 0, ws, swap);
+    cur.seek(64 * ws);
+    if (c.extra > 0) {
+        cur.need_words(c.extra, "the EXTRA control words");
+        for (std::int64_t k = 0; k < c.extra; ++k)
+            if (cur.i("EXTRA control word") != 0)
+                unsupported(f, "non-zero EXTRA control word " + std::to_string(64 + k));
+    }
+    const std::int64_t nparts = c.nmmat > 0 ? c.nmmat : c.nummat8;
+    const std::int64_t numnp = c.numnp, nel8 = c.nel8;
+
+    PlotGeometry g;
+    g.title = c.title;
+    // ---- geometry
+    cur.need_words(checked_mul(3, numnp, f), "initial coordinates of " + std::to_string(numnp) + " nodes");
+    g.x0.resize(static_cast<std::size_t>(3 * numnp));
+    for (auto& x : g.x0) x = cur.r("coordinate");
+    cur.need_words(checked_mul(9, nel8, f), "connectivity of " + std::to_string(nel8) + " solids");
+    g.hex_nodes.resize(static_cast<std::size_t>(8 * nel8));
+    g.hex_material.resize(static_cast<std::size_t>(nel8));
+    for (std::int64_t e = 0; e < nel8; ++e) {
+        for (int k = 0; k < 8; ++k) {
+            const std::int64_t n = cur.i("solid node");
+            if (n < 1 || n > numnp) {
+                cur.seek(cur.pos() - ws);
+                cur.fail("a node number in 1.." + std::to_string(numnp) + " for solid " + std::to_string(e + 1) +
+                             ", found " + std::to_string(n),
+                         -1);
+            }
+            g.hex_nodes[static_cast<std::size_t>(8 * e + k)] = static_cast<int>(n - 1);
+        }
+        const std::int64_t m = cur.i("solid material");
+        if (m < 1 || m > nparts) {
+            cur.seek(cur.pos() - ws);
+            cur.fail("a material number in 1.." + std::to_string(nparts) + " for solid " + std::to_string(e + 1) +
+                         ", found " + std::to_string(m),
+                     -1);
+        }
+        g.hex_material[static_cast<std::size_t>(e)] = static_cast<int>(m);
+    }
+    g.num_materials = static_cast<int>(nparts);
+
+    // ---- NARBS user-id section
+    if (c.narbs > 0) {
+        cur.need_words(c.narbs, "the user-id (NARBS) section of " + std::to_string(c.narbs) + " words");
+        const std::int64_t start = cur.pos();
+        const std::int64_t nsort = cur.i("NSORT");
+        const std::int64_t hdr = nsort < 0 ? 16 : 10;
+        const std::int64_t ids = checked_add(hdr, checked_add(numnp, nel8, f), f);
+        if (ids > c.narbs)
+            cur.fail("a user-id section of at least " + std::to_string(ids) + " words (NARBS = " +
+                         std::to_string(c.narbs) + ")",
+                     -1);
+        cur.seek(start + hdr * ws);
+        auto to_int = [&](std::int64_t v) {
+            return static_cast<int>(std::clamp<std::int64_t>(v, std::numeric_limits<int>::min(),
+                                                             std::numeric_limits<int>::max()));
+        };
+        g.node_user_ids.resize(static_cast<std::size_t>(numnp));
+        for (auto& id : g.node_user_ids) id = to_int(cur.i("user node id"));
+        g.hex_user_ids.resize(static_cast<std::size_t>(nel8));
+        for (auto& id : g.hex_user_ids) id = to_int(cur.i("user solid id"));
+        if (nsort < 0 && ids + 3 * nparts <= c.narbs) {
+            cur.skip_words(nparts, "NORDER");
+            g.part_user_ids.resize(static_cast<std::size_t>(nparts));
+            for (auto& id : g.part_user_ids) id = to_int(cur.i("user part id"));
+        }
+        cur.seek(start + c.narbs * ws);
+    } else {
+        for (std::int64_t n = 1; n <= numnp; ++n) g.node_user_ids.push_back(static_cast<int>(n));
+        for (std::int64_t e = 1; e <= nel8; ++e) g.hex_user_ids.push_back(static_cast<int>(e));
+    }
+    if (g.part_user_ids.empty() && nparts <= cur.remaining() + 1000000)
+        for (std::int64_t p = 1; p <= nparts; ++p) g.part_user_ids.push_back(static_cast<int>(p));
+    static_end_ = cur.pos();
+
+    // ---- marker, title records, marker
+    if (cur.has(ws) && cur.r("end marker") == kEndMarker) {
+        while (cur.has(ws)) {
+            const std::int64_t at = cur.pos();
+            const std::int64_t code = cur.i("title record code");
+            if (code == 90001) {
+                const std::int64_t nprop = cur.i("number of part titles");
+                if (nprop < 0 || nprop > cur.remaining()) {
+                    cur.seek(at + ws);
+                    cur.fail("a plausible number of part titles, found " + std::to_string(nprop), -1);
+                }
+                cur.need(checked_mul(nprop, ws + kTitleRecordBytes, f),
+                         std::to_string(nprop) + " part title records");
+                std::vector<std::string> titles;
+                for (std::int64_t p = 0; p < nprop; ++p) {
+                    cur.i("part id");
+                    titles.push_back(trim_right(cur.text(kTitleRecordBytes, "part title")));
+                }
+                g.part_titles = std::move(titles);
+            } else if (code == 90000) {
+                g.title = trim_right(cur.text(kTitleRecordBytes, "model title record"));
+            } else {
+                break;  // end marker, contact titles (90002), padding, ...: done
+            }
+        }
+    }
+
+    // ---- state size and family scan
+    std::int64_t nodal = checked_mul(numnp, c.it + 3 * (c.iu + c.iv + c.ia), f);
+    std::int64_t words = checked_add(1 + c.nglbv, nodal, f);
+    words = checked_add(words, checked_mul(nel8, c.nv3d, f), f);
+    if (c.maxint < -10000) words = checked_add(words, nel8, f);
+    else if (c.maxint < 0) words = checked_add(words, numnp, f);
+    state_bytes_ = checked_mul(words, ws, f);
+    ctl_ = c;
+    geom_ = std::move(g);
+
+    auto word_at = [&](const char* p) {
+        char tmp[8];
+        std::memcpy(tmp, p, ws);
+        if (swap) std::reverse(tmp, tmp + ws);
+        if (ws == 4) {
+            float x;
+            std::memcpy(&x, tmp, 4);
+            return static_cast<double>(x);
+        }
+        double x;
+        std::memcpy(&x, tmp, 8);
+        return x;
+    };
+    // Root file: states may follow the static part directly (old layouts); a marker ends them.
+    {
+        std::int64_t pos = static_end_;
+        const std::int64_t size = static_cast<std::int64_t>(d.size());
+        while (pos + ws <= size) {
+            const double t = word_at(d.data() + pos);
+            if (t == kEndMarker || state_bytes_ > size - pos) break;
+            states_.push_back({0, pos, t});
+            pos += state_bytes_;
+        }
+    }
+    for (int m = 1;; ++m) {
+        const std::string name = PlotWriter::member_name(root_, m);
+        const std::int64_t size = file_size_or(name, -1);
+        if (size < 0) break;
+        num_members_ = m;
+        std::ifstream in(name, std::ios::binary);
+        if (!in) throw std::runtime_error("plot database " + name + ": cannot open");
+        std::int64_t pos = 0;
+        bool partial = false;
+        while (pos + ws <= size) {
+            char w[8];
+            if (!in.seekg(pos) || !in.read(w, ws)) {
+                std::ostringstream os;
+                os << "plot database " << name << ": read error at byte offset " << pos;
+                throw std::runtime_error(os.str());
+            }
+            const double t = word_at(w);
+            if (t == kEndMarker) break;
+            if (state_bytes_ > size - pos) {
+                partial = true;
+                break;
+            }
+            states_.push_back({m, pos, t});
+            pos += state_bytes_;
+        }
+        if (partial && file_size_or(PlotWriter::member_name(root_, m + 1), -1) >= 0) {
+            std::ostringstream os;
+            os << "plot database " << name << ": truncated at byte offset " << pos
+               << ": expected a complete state of " << state_bytes_ << " bytes, but the file has " << size
+               << " bytes and is not the last family member";
+            throw std::runtime_error(os.str());
+        }
+        // (a partial trailing state in the last member is what a killed run leaves: ignored)
+    }
+}
+
+double PlotReader::time(int i) const {
+    if (i < 0 || i >= num_states()) throw std::out_of_range("PlotReader::time: no state " + std::to_string(i));
+    return states_[static_cast<std::size_t>(i)].time;
+}
+
+PlotState PlotReader::state(int i) const {
+    if (i < 0 || i >= num_states()) throw std::out_of_range("PlotReader::state: no state " + std::to_string(i));
+    const StateLoc& loc = states_[static_cast<std::size_t>(i)];
+    const std::string name = PlotWriter::member_name(root_, loc.member);
+    const std::vector<char> buf = read_range(name, loc.offset, state_bytes_, "state " + std::to_string(i));
+    const PlotControl& c = ctl_;
+    const int ws = c.word_size;
+    Cursor cur(buf.data(), static_cast<std::int64_t>(buf.size()), name, loc.offset, ws, c.byte_swapped != kHostBig);
+
+    PlotState s;
+    s.time = cur.r("time");
+    std::vector<double> glob(static_cast<std::size_t>(c.nglbv));
+    for (auto& v : glob) v = cur.r("global");
+    if (glob.size() >= 1) s.kinetic_energy = glob[0];
+    if (glob.size() >= 2) s.internal_energy = glob[1];
+    if (glob.size() >= 3) s.total_energy = glob[2];
+    for (std::size_t k = 0; k < 3; ++k)
+        if (glob.size() >= 4 + k) s.velocity[k] = glob[3 + k];
+    const std::size_t nm = static_cast<std::size_t>(geom_.num_materials);
+    if (glob.size() >= 6 + 7 * nm) {
+        auto it = glob.begin() + 6;
+        auto take = [&](std::vector<double>& v, std::size_t n) {
+            v.assign(it, it + static_cast<std::ptrdiff_t>(n));
+            it += static_cast<std::ptrdiff_t>(n);
+        };
+        take(s.mat_internal_energy, nm);
+        take(s.mat_kinetic_energy, nm);
+        take(s.mat_momentum, 3 * nm);
+        take(s.mat_mass, nm);
+        take(s.mat_hourglass_energy, nm);
+    }
+    const std::size_t nn = static_cast<std::size_t>(c.numnp), ne = static_cast<std::size_t>(c.nel8);
+    auto read_vec = [&](std::vector<double>& v, std::size_t n, const char* what) {
+        v.resize(n);
+        for (auto& x : v) x = cur.r(what);
+    };
+    if (c.iu) read_vec(s.coords, 3 * nn, "current coordinates");
+    if (c.it) cur.skip_words(static_cast<std::int64_t>(nn), "temperatures");
+    if (c.iv) read_vec(s.vel, 3 * nn, "velocities");
+    if (c.ia) read_vec(s.acc, 3 * nn, "accelerations");
+    s.stress.resize(6 * ne);
+    s.eps.resize(ne);
+    for (std::size_t e = 0; e < ne; ++e) {
+        for (int k = 0; k < 6; ++k) s.stress[6 * e + k] = cur.r("solid stress");
+        s.eps[e] = cur.r("solid effective plastic strain");
+        cur.skip_words(c.neiph, "solid history variables");
+    }
+    s.alive.assign(ne, 1);
+    if (c.maxint < -10000) {
+        for (std::size_t e = 0; e < ne; ++e) s.alive[e] = cur.r("element deletion flag") != 0.0 ? 1 : 0;
+    } else if (c.maxint < 0) {
+        cur.skip_words(static_cast<std::int64_t>(nn), "node deletion flags");
+    }
+    return s;
+}
+
+}  // namespace impact3d

@@ -1,0 +1,167 @@
+// Plot state database (d3plot family: DYNA3D / TAURUS / LS-DYNA "plot" files), solids only.
+//
+// Layout written (see shared/spec/plot-database.md, section 8, the recipe that VTK's
+// vtkLSDynaReader and lasso-python both read):
+//   d3plot      64 control words, initial coordinates, hex connectivity + material, the NARBS
+//               user-id section, -999999.0, the 90001 part-title record, the 90000 title record,
+//               -999999.0.  No states.
+//   d3plot01,   k >= 1 complete states each, then -999999.0.  A state never straddles two
+//   d3plot02 .. members; a new member is started before member_size_limit_words would be crossed.
+// Words are 4 bytes (int32/float32) or 8 bytes (int64/float64), little-endian.
+//
+// Crash safety: every write_state() is durable (fsync) when it returns, and at every moment of a
+// run the family on disk reads as "all committed states, then a marker":
+//   * appending to a member: the new state's body (all words but its time word) and a new end
+//     marker are written after the old end marker and fsync'ed; then the time word is written over
+//     the old marker and fsync'ed (a single aligned word is the commit point);
+//   * a new member is written to "<name>.tmp", fsync'ed and renamed into place.
+// A run killed at any moment therefore leaves every completed state readable by this reader and
+// by VTK.  PlotReader additionally ignores an incomplete trailing state at the end of the last
+// member.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace impact3d {
+
+// Static model description (root file).
+struct PlotGeometry {
+    std::string title;                     // model title (40 chars in control words, 72 in 90000 record)
+    int num_materials = 0;                 // NMMAT = NUMMAT8 (parts)
+    std::vector<double> x0;                // 3*numnp initial coordinates, x y z per node
+    std::vector<int> node_user_ids;        // numnp user node ids, or empty (= 1..numnp)
+    std::vector<int> hex_nodes;            // 8*numelh, 0-based node indices, LS-DYNA hex order
+    std::vector<int> hex_material;         // numelh, 1-based material number (1..num_materials)
+    std::vector<int> hex_user_ids;         // numelh user element ids, or empty (= 1..numelh)
+    std::vector<std::string> part_titles;  // num_materials titles (<= 72 chars), or empty ("part N")
+    std::vector<int> part_user_ids;        // num_materials user part ids, strictly ascending, or empty (= 1..n)
+
+    int num_nodes() const { return static_cast<int>(x0.size() / 3); }
+    int num_hexes() const { return static_cast<int>(hex_material.size()); }
+};
+
+// One output time.  Global words are written in the spec's NGLBV = 6 + 7*NMMAT order:
+//   kinetic, internal, total energy, velocity x y z (whole model),
+//   mat_internal_energy[NMMAT], mat_kinetic_energy[NMMAT], mat_momentum[3*NMMAT] (x y z per
+//   material, interleaved), mat_mass[NMMAT], mat_hourglass_energy[NMMAT].
+// For the writer, every per-material / per-node / per-solid vector may be left empty (written as
+// zeros; alive: all alive); otherwise it must have exactly the stated size.
+struct PlotState {
+    double time = 0.0;
+    double kinetic_energy = 0.0;
+    double internal_energy = 0.0;
+    double total_energy = 0.0;
+    std::array<double, 3> velocity{};          // x/y/z velocity of the whole model
+    std::vector<double> mat_internal_energy;   // NMMAT
+    std::vector<double> mat_kinetic_energy;    // NMMAT
+    std::vector<double> mat_momentum;          // 3*NMMAT, x y z per material
+    std::vector<double> mat_mass;              // NMMAT
+    std::vector<double> mat_hourglass_energy;  // NMMAT
+    std::vector<double> coords;                // 3*numnp current coordinates (x+u, not displacements)
+    std::vector<double> vel;                   // 3*numnp
+    std::vector<double> acc;                   // 3*numnp (reader: empty if the file has IA = 0)
+    std::vector<double> stress;                // 6*numelh: xx yy zz xy yz zx per solid
+    std::vector<double> eps;                   // numelh effective plastic strain
+    std::vector<unsigned char> alive;          // numelh element deletion flags, 1 = alive, 0 = deleted
+};
+
+// Control words of a d3plot root file, as read (any LS-DYNA d3plot, not only ours).
+struct PlotControl {
+    int word_size = 0;          // 4 or 8
+    bool byte_swapped = false;  // file is big-endian
+    std::string title;          // words 0-9, trailing blanks removed
+    std::int64_t runtime = 0, filetype = 0, source_version = 0;
+    double version = 0.0;       // word 14
+    std::int64_t ndim = 0, numnp = 0, icode = 0, nglbv = 0, it = 0, iu = 0, iv = 0, ia = 0;
+    std::int64_t nel8 = 0, nummat8 = 0, numds = 0, numst = 0, nv3d = 0;
+    std::int64_t nel2 = 0, nummat2 = 0, nv1d = 0, nel4 = 0, nummat4 = 0, nv2d = 0;
+    std::int64_t neiph = 0, neips = 0, maxint = 0, nmsph = 0, ngpsph = 0, narbs = 0;
+    std::int64_t nelt = 0, nummatt = 0, nv3dt = 0;
+    std::array<std::int64_t, 4> ioshl{};
+    std::int64_t ialemat = 0, ncfdv1 = 0, ncfdv2 = 0, nadapt = 0, nmmat = 0, numfluid = 0;
+    std::int64_t inn = 0, npefg = 0, nel48 = 0, idtdt = 0, extra = 0;
+};
+
+class PlotWriter {
+public:
+    static constexpr std::int64_t kDefaultMemberSizeLimitWords = 7LL * 512 * 512;
+
+    PlotWriter() = default;
+    ~PlotWriter();  // closes (never throws)
+    PlotWriter(const PlotWriter&) = delete;
+    PlotWriter& operator=(const PlotWriter&) = delete;
+
+    // Writes the root file (durably) and removes stale family members "<root><digits>" (and
+    // "<root><digits>.tmp") left in the same directory by an earlier run.  Throws
+    // std::invalid_argument for an inconsistent geometry or word_size not 4/8, std::runtime_error
+    // (file name + errno text) for I/O errors.
+    void open(const std::string& root_path, const PlotGeometry& geometry, int word_size = 4,
+              std::int64_t member_size_limit_words = kDefaultMemberSizeLimitWords);
+
+    // Appends one state to d3plot01, d3plot02, ... and fsyncs.  Throws std::invalid_argument for
+    // wrong vector sizes, std::logic_error if not open, std::runtime_error for I/O errors
+    // (states written before stay intact and readable; the writer stays usable).
+    void write_state(const PlotState& state);
+
+    void close() noexcept;
+    bool is_open() const { return root_written_; }
+
+    int word_size() const { return ws_; }
+    std::int64_t state_words() const { return state_words_; }  // words per state record
+    int num_states_written() const { return states_written_; }
+    int num_members() const { return members_; }                // state files written so far
+    static std::string member_name(const std::string& root_path, int member);  // 0 = root
+
+private:
+    void start_member(const std::vector<char>& buf);
+    void append_to_member(const std::vector<char>& buf);
+
+    std::string root_;
+    std::vector<double> x0_;      // initial coordinates (written when a state has no coords)
+    int ws_ = 4;
+    std::int64_t limit_words_ = kDefaultMemberSizeLimitWords;
+    int numnp_ = 0, nel8_ = 0, nmmat_ = 0;
+    std::int64_t nglbv_ = 0, state_words_ = 0;
+    bool root_written_ = false;
+    int fd_ = -1;                 // current member
+    int members_ = 0;             // number of state members created
+    int states_in_member_ = 0;
+    std::int64_t marker_pos_ = 0; // byte offset of the end marker in the current member
+    int states_written_ = 0;
+};
+
+class PlotReader {
+public:
+    // Reads only the 64 control words of any d3plot root file (word size and byte order detected
+    // as VTK does).  Throws std::runtime_error (file, byte offset, what was expected).
+    static PlotControl read_control(const std::string& root_path);
+
+    // Reads control words, geometry, user ids and titles, then scans the family for states.
+    // Refuses (std::runtime_error with a clear message) databases with features this reader does
+    // not support: shells, beams, thick shells, tets, SPH, ALE, extra/Gauss-point solid data,...
+    // Never crashes on truncated or corrupt input: every read is bounds-checked.  An incomplete
+    // trailing state at the end of the last member (a killed run) is ignored.
+    void open(const std::string& root_path);
+
+    const PlotControl& control() const { return ctl_; }
+    const PlotGeometry& geometry() const { return geom_; }
+    int num_states() const { return static_cast<int>(states_.size()); }
+    double time(int i) const;     // time of state i (from the scan)
+    PlotState state(int i) const; // throws std::out_of_range / std::runtime_error
+    int num_members() const { return num_members_; }  // state files found (d3plot01 ...)
+
+private:
+    struct StateLoc { int member; std::int64_t offset; double time; };
+    std::string root_;
+    PlotControl ctl_;
+    PlotGeometry geom_;
+    std::vector<StateLoc> states_;
+    std::int64_t state_bytes_ = 0;
+    std::int64_t static_end_ = 0;  // byte offset in the root file where state scanning starts
+    int num_members_ = 0;
+};
+
+}  // namespace impact3d
