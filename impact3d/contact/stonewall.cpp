@@ -27,12 +27,14 @@ inline void apply_wall_to_node(State& s, int i, const double p[3], const double 
       for (int a = 0; a < 3; ++a) dv[a] -= dvt * vt[a] / vt_mag;
     }
   }
-  const double v2_old = s.vx[k] * s.vx[k] + s.vy[k] * s.vy[k] + s.vz[k] * s.vz[k];
   s.vx[k] += dv[0];
   s.vy[k] += dv[1];
   s.vz[k] += dv[2];
-  const double v2_new = s.vx[k] * s.vx[k] + s.vy[k] * s.vy[k] + s.vz[k] * s.vz[k];
-  dke += 0.5 * mass * (v2_old - v2_new);
+  // Work of the wall impulse on the mean velocity (v^{n-1/2} + v^{n+1/2}) / 2: the form that
+  // balances the central-difference kinetic energy.  A node resting on the wall takes none.
+  const double vmx = 0.5 * (s.vx_old[k] + s.vx[k]), vmy = 0.5 * (s.vy_old[k] + s.vy[k]),
+               vmz = 0.5 * (s.vz_old[k] + s.vz[k]);
+  dke -= mass * (dv[0] * vmx + dv[1] * vmy + dv[2] * vmz);
   for (int a = 0; a < 3; ++a) imp[a] += mass * dv[a];
 }
 }  // namespace

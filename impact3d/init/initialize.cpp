@@ -14,7 +14,7 @@ void init_nodes(const Model& m, State& s) {
   s.nn = nn;
   s.x = m.x; s.y = m.y; s.z = m.z;
   s.x0 = m.x; s.y0 = m.y; s.z0 = m.z;
-  for (auto* v : {&s.vx, &s.vy, &s.vz, &s.ax, &s.ay, &s.az, &s.fx, &s.fy, &s.fz, &s.fext_x,
+  for (auto* v : {&s.vx, &s.vy, &s.vz, &s.ax, &s.ay, &s.az, &s.vx_old, &s.vy_old, &s.vz_old, &s.fx, &s.fy, &s.fz, &s.fext_x,
                   &s.fext_y, &s.fext_z, &s.mass})
     v->assign(std::size_t(nn), 0.0);
   s.fix.assign(std::size_t(nn), 0);

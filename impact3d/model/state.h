@@ -29,6 +29,7 @@ struct State {
   std::vector<double> x0, y0, z0;     // initial coordinates
   std::vector<double> vx, vy, vz;     // velocities v^{n-1/2} before the update, v^{n+1/2} after
   std::vector<double> ax, ay, az;     // accelerations a^n
+  std::vector<double> vx_old, vy_old, vz_old;  // v^{n-1/2} kept during the cycle (energy books)
   std::vector<double> fx, fy, fz;     // net nodal force (external - internal)
   std::vector<double> fext_x, fext_y, fext_z;  // external forces (walls, contact) this cycle
   std::vector<double> mass;

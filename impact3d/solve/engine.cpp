@@ -96,6 +96,9 @@ StepStatus Engine::step() {
     s.ax[k] = s.fx[k] * inv_m;
     s.ay[k] = s.fy[k] * inv_m;
     s.az[k] = s.fz[k] * inv_m;
+    s.vx_old[k] = s.vx[k];
+    s.vy_old[k] = s.vy[k];
+    s.vz_old[k] = s.vz[k];
     const uint8_t f = s.fix[k];
     if (f & 1) s.ax[k] = 0;
     if (f & 2) s.ay[k] = 0;
