@@ -13,6 +13,7 @@
 #include <string>
 
 #include "common/messages.h"
+#include "impact3d/output/plot_output.h"
 #include "impact3d/solve/engine.h"
 
 namespace impact3d {
@@ -84,11 +85,48 @@ int run_simulation(const Model& model, const RunOptions& opt, std::ostream& prin
     log.line(buf);
     log.line("    cycle         time          dt  element  e-ratio   elapsed  remaining(s)");
   }
+  // plot states: t = 0, every plot interval, the end (and the last state of an error)
+  PlotOutput plot;
+  const double plot_dt = model.control.plot_interval;
+  double next_plot = 0;
+  auto write_plot = [&]() -> bool {
+    try {
+      plot.write(model, s);
+    } catch (const std::exception& ex) {
+      Diagnostic d{4004, Severity::error, Location{opt.plot, 0, {}, {}, 0, 0, {}, false}, ex.what()};
+      log.line(render(d));
+      std::cerr << "impact3d: " << render(d) << "\n";
+      return false;
+    }
+    next_plot = (std::floor(s.time / plot_dt + 1e-9) + 1) * plot_dt;
+    return true;
+  };
+  try {
+    plot.open(model, opt.plot);
+  } catch (const std::exception& ex) {
+    Diagnostic d{3004, Severity::error, Location{opt.plot, 0, {}, {}, 0, 0, {}, false}, ex.what()};
+    log.line(render(d));
+    std::cerr << "impact3d: " << render(d) << "\n";
+    return exit_code::file_error;
+  }
+  bool plot_ok = st != StepStatus::ok || write_plot();
   const int report = std::max(1, model.control.report_interval);
-  while (st == StepStatus::ok) {
+  while (st == StepStatus::ok && plot_ok) {
     st = engine.step();
     if (s.cycle % report == 0 || st != StepStatus::ok)
       log.line(format_cycle_line(s, elapsed(), model.control.end_time));
+    if (st == StepStatus::ok && s.time >= next_plot * (1 - 1e-9)) plot_ok = write_plot();
+  }
+  // the final state (normal end) or the last state reached (error termination)
+  if (plot_ok && plot.last_time() != s.time) plot_ok = write_plot();
+  {
+    char buf[200];
+    std::snprintf(buf, sizeof buf, "\n plot database %s: %d state(s) written", opt.plot.c_str(), plot.states_written());
+    log.line(buf);
+  }
+  if (!plot_ok) {
+    log.line("\n E r r o r   t e r m i n a t i o n   (plot database write failed)");
+    return exit_code::file_error;
   }
   const double cpu = elapsed();
   log.line("\n energies at the end (time " + std::to_string(s.time) + "):\n" + energy_report(s));

@@ -1,0 +1,87 @@
+#include "impact3d/output/plot_output.h"
+
+namespace impact3d {
+
+PlotGeometry make_plot_geometry(const Model& m) {
+  PlotGeometry g;
+  g.title = m.title;
+  g.num_materials = int(m.materials.size());
+  g.x0.resize(std::size_t(3) * m.num_nodes());
+  for (int i = 0; i < m.num_nodes(); ++i) {
+    g.x0[std::size_t(3 * i)] = m.x[std::size_t(i)];
+    g.x0[std::size_t(3 * i + 1)] = m.y[std::size_t(i)];
+    g.x0[std::size_t(3 * i + 2)] = m.z[std::size_t(i)];
+  }
+  g.hex_nodes.resize(std::size_t(8) * m.num_hexes());
+  g.hex_material.resize(std::size_t(m.num_hexes()));
+  for (int e = 0; e < m.num_hexes(); ++e) {
+    for (int j = 0; j < 8; ++j) g.hex_nodes[std::size_t(8 * e + j)] = m.hex_nodes[std::size_t(e)][std::size_t(j)];
+    g.hex_material[std::size_t(e)] = m.hex_material[std::size_t(e)] + 1;
+  }
+  for (const auto& md : m.materials)
+    g.part_titles.push_back(md.title.empty() ? "material " + std::to_string(md.number) : md.title.substr(0, 72));
+  return g;
+}
+
+void fill_plot_state(const Model& m, const State& s, PlotState& ps) {
+  const std::size_t nn = std::size_t(s.nn), ne = std::size_t(s.ne), nm = m.materials.size();
+  ps.time = s.time;
+  ps.kinetic_energy = s.kinetic;
+  ps.internal_energy = s.internal;
+  ps.total_energy = s.total_energy();
+  ps.coords.resize(3 * nn);
+  ps.vel.resize(3 * nn);
+  ps.acc.resize(3 * nn);
+  double p[3] = {0, 0, 0}, mass = 0;
+  for (std::size_t i = 0; i < nn; ++i) {
+    ps.coords[3 * i] = s.x[i];
+    ps.coords[3 * i + 1] = s.y[i];
+    ps.coords[3 * i + 2] = s.z[i];
+    ps.vel[3 * i] = s.vx[i];
+    ps.vel[3 * i + 1] = s.vy[i];
+    ps.vel[3 * i + 2] = s.vz[i];
+    ps.acc[3 * i] = s.ax[i];
+    ps.acc[3 * i + 1] = s.ay[i];
+    ps.acc[3 * i + 2] = s.az[i];
+    p[0] += s.mass[i] * s.vx[i];
+    p[1] += s.mass[i] * s.vy[i];
+    p[2] += s.mass[i] * s.vz[i];
+    mass += s.mass[i];
+  }
+  for (int a = 0; a < 3; ++a) ps.velocity[std::size_t(a)] = mass > 0 ? p[a] / mass : 0;
+  ps.stress.assign(s.sig.begin(), s.sig.end());
+  ps.eps.assign(s.eps_p.begin(), s.eps_p.end());
+  ps.alive.assign(ne, 1);
+  // per-material books from element-lumped masses (exact split of nodal mass by material)
+  ps.mat_internal_energy.assign(nm, 0.0);
+  ps.mat_kinetic_energy.assign(nm, 0.0);
+  ps.mat_momentum.assign(3 * nm, 0.0);
+  ps.mat_mass.assign(nm, 0.0);
+  ps.mat_hourglass_energy.assign(nm, 0.0);
+  for (std::size_t e = 0; e < ne; ++e) {
+    const std::size_t k = std::size_t(s.mat[e]);
+    ps.mat_internal_energy[k] += s.ie_e[e];
+    ps.mat_hourglass_energy[k] += s.hg_e[e];
+    ps.mat_mass[k] += s.mass_e[e];
+    const double mc = s.mass_e[e] / 8;
+    for (int n : s.conn[e]) {
+      const std::size_t i = std::size_t(n);
+      ps.mat_kinetic_energy[k] += 0.5 * mc * (s.vx[i] * s.vx[i] + s.vy[i] * s.vy[i] + s.vz[i] * s.vz[i]);
+      ps.mat_momentum[3 * k] += mc * s.vx[i];
+      ps.mat_momentum[3 * k + 1] += mc * s.vy[i];
+      ps.mat_momentum[3 * k + 2] += mc * s.vz[i];
+    }
+  }
+}
+
+void PlotOutput::open(const Model& m, const std::string& root, int word_size) {
+  writer_.open(root, make_plot_geometry(m), word_size);
+}
+
+void PlotOutput::write(const Model& m, const State& s) {
+  fill_plot_state(m, s, ps_);
+  writer_.write_state(ps_);
+  last_time_ = s.time;
+}
+
+}  // namespace impact3d

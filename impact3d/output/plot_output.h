@@ -1,0 +1,33 @@
+#pragma once
+// Plot states of a run into the d3plot family (common/plot_database): geometry from the Model,
+// states from the State (current coordinates, velocities, accelerations, stresses, plastic
+// strain, global and per-material energies).
+
+#include <memory>
+#include <string>
+
+#include "common/plot_database.h"
+#include "impact3d/model/model.h"
+#include "impact3d/model/state.h"
+
+namespace impact3d {
+
+PlotGeometry make_plot_geometry(const Model& m);
+// Fills a PlotState (sized once by the caller and reused: no allocation per state).
+void fill_plot_state(const Model& m, const State& s, PlotState& ps);
+
+class PlotOutput {
+ public:
+  // Opens the family; throws std::runtime_error on I/O errors.
+  void open(const Model& m, const std::string& root, int word_size = 4);
+  void write(const Model& m, const State& s);
+  int states_written() const { return writer_.num_states_written(); }
+  double last_time() const { return last_time_; }
+
+ private:
+  PlotWriter writer_;
+  PlotState ps_;
+  double last_time_ = -1;
+};
+
+}  // namespace impact3d
