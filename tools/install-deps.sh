@@ -1,0 +1,17 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages IMPACT-3D needs to build, run and test, if any is missing.
+set -euo pipefail
+PKGS=(g++ cmake make libeigen3-dev zlib1g-dev libgtest-dev libgmock-dev libbenchmark-dev
+      libpng-dev libfreetype-dev fonts-dejavu-core libosmesa6-dev
+      python3 python3-vtk9 python3-numpy)
+missing=()
+for p in "${PKGS[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  SUDO=""
+  [ "$(id -u)" -ne 0 ] && SUDO="sudo"
+  echo "installing: ${missing[*]}"
+  $SUDO apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi
