@@ -74,7 +74,9 @@ inline ElemOut calc_forces_for_elem(const Model& m, State& s, int e) {
       update_stress_elastic(mc, d, dt, sig);
     } else {
       double* back = &s.back[6 * E];
-      rotate_stress_jaumann(back, w, dt);
+      // The seed's "initially elastic" path: until an element first yields its back stress is
+      // exactly zero, so its rotation is skipped; the yield check still runs every cycle.
+      if (!(mc.initially_elastic && !s.yielded[E])) rotate_stress_jaumann(back, w, dt);
       update_stress_elastic_plastic(mc, d, dt, sig, back, s.eps_p[E], s.yielded[E]);
     }
     // stress work (trapezoid in stress, midpoint volume)

@@ -68,6 +68,7 @@ StepStatus Engine::process_elements() {
 
 StepStatus Engine::initialize() {
   initialize_state(m_, s_);
+  contact_.initialize(m_, s_);
   s_.dt_half = 0;
   calc_kinetic_energy();
   StepStatus st = process_elements();
@@ -87,8 +88,15 @@ StepStatus Engine::step() {
   const double dt_next = s.dt_next;
   const double dt_n = s.cycle == 0 ? 0.5 * dt_next : 0.5 * (s.dt_half + dt_next);
 
-  sum_forces_for_nodes(s);
   const int nn = s.nn;
+  // external forces at x^n: contact penalty forces (walls act on velocities below)
+  if (!contact_.empty()) {
+    std::fill(s.fext_x.begin(), s.fext_x.end(), 0.0);
+    std::fill(s.fext_y.begin(), s.fext_y.end(), 0.0);
+    std::fill(s.fext_z.begin(), s.fext_z.end(), 0.0);
+    contact_.apply(m_, s, dt_next);
+  }
+  sum_forces_for_nodes(s);
 #pragma omp parallel for schedule(static)
   for (int i = 0; i < nn; ++i) {
     const std::size_t k = std::size_t(i);

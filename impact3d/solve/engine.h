@@ -6,6 +6,7 @@
 
 #include "impact3d/model/model.h"
 #include "impact3d/model/state.h"
+#include "impact3d/contact/sliding_interface.h"
 
 namespace impact3d {
 
@@ -38,6 +39,7 @@ class Engine {
 
   const Model& m_;
   State s_;
+  SlidingInterfaces contact_;
   int error_elem_ = -1;
 };
 

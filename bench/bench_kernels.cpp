@@ -1,0 +1,131 @@
+// Micro-benchmarks of the element kernels and the whole cycle on the seed's Taylor bar.
+//   build/bench/impact3d_bench [--benchmark_filter=REGEX]
+// Numbers go in README.md ("Performance") with the machine and the command.
+
+#include <benchmark/benchmark.h>
+#include <omp.h>
+
+#include <cstdlib>
+#include <stdexcept>
+
+#include "common/messages.h"
+#include "impact3d/element/hexahedron.h"
+#include "impact3d/input/deck_reader.h"
+#include "impact3d/material/material.h"
+#include "impact3d/solve/element_processing.h"
+#include "impact3d/solve/engine.h"
+
+using namespace impact3d;
+
+namespace {
+
+const Model& taylor_model() {
+  static Model m;
+  static bool loaded = false;
+  if (!loaded) {
+    Diagnostics d;
+    if (!read_and_check_deck(IMPACT3D_SOURCE_DIR "/decks/taylor_bar.dyn", m, d))
+      throw std::runtime_error("cannot read the Taylor bar deck");
+    loaded = true;
+  }
+  return m;
+}
+
+void distorted_hex(double x[8], double y[8], double z[8]) {
+  const double X[8] = {0, 1, 1, 0, 0, 1, 1, 0}, Y[8] = {0, 0, 1, 1, 0, 0, 1, 1},
+               Z[8] = {0, 0, 0, 0, 1, 1, 1, 1};
+  for (int j = 0; j < 8; ++j) {
+    x[j] = X[j] + 0.05 * Y[j] * Z[j];
+    y[j] = Y[j] + 0.03 * X[j];
+    z[j] = Z[j] * (1 + 0.02 * X[j]);
+  }
+}
+
+void BM_CalcHexVolumeDerivatives(benchmark::State& st) {
+  double x[8], y[8], z[8], dx[8], dy[8], dz[8];
+  distorted_hex(x, y, z);
+  for (auto _ : st) {
+    benchmark::DoNotOptimize(calc_hex_volume_derivatives(x, y, z, dx, dy, dz));
+    benchmark::ClobberMemory();
+  }
+}
+BENCHMARK(BM_CalcHexVolumeDerivatives);
+
+void BM_CalcHexHourglassForce(benchmark::State& st) {
+  double x[8], y[8], z[8], dx[8], dy[8], dz[8], vx[8], vy[8], vz[8], fx[8] = {}, fy[8] = {},
+      fz[8] = {}, hgs[12] = {};
+  distorted_hex(x, y, z);
+  double v = calc_hex_volume_derivatives(x, y, z, dx, dy, dz);
+  for (int j = 0; j < 8; ++j) { vx[j] = 0.1 * j; vy[j] = 0.01 * j * j; vz[j] = -0.2 * (j % 3); }
+  HourglassInput in{int(st.range(0)), 0.1, 8930, 4500, 4.3e10, v, 1e-8};
+  for (auto _ : st) {
+    benchmark::DoNotOptimize(
+        calc_hex_hourglass_force(in, x, y, z, dx, dy, dz, vx, vy, vz, hgs, fx, fy, fz));
+    benchmark::ClobberMemory();
+  }
+}
+BENCHMARK(BM_CalcHexHourglassForce)->Arg(1)->Arg(3)->Arg(5);
+
+void BM_UpdateStressElasticPlastic(benchmark::State& st) {
+  MaterialConstants m;
+  m.type = 3; m.rho = 8930; m.E = 117e9; m.nu = 0.35; m.sigma_y = 4e8; m.E_tan = 1e8; m.beta = 1;
+  derive_material_constants(m);
+  double d[6] = {-1e3, 4e2, 5e2, 1e2, 0, -3e1}, w[3] = {10, 0, 5};
+  double sig[6] = {}, back[6] = {}, eps = 0;
+  unsigned char y = 0;
+  for (auto _ : st) {
+    rotate_stress_jaumann(sig, w, 1e-8);
+    benchmark::DoNotOptimize(update_stress_elastic_plastic(m, d, 1e-8, sig, back, eps, y));
+  }
+}
+BENCHMARK(BM_UpdateStressElasticPlastic);
+
+// The whole element pass (kinematics, stress, forces, hourglass, time step) over the Taylor bar
+// after 2000 cycles (plastic, deformed).  Items = elements.
+void BM_CalcForcesForElems_TaylorBar(benchmark::State& st) {
+  omp_set_num_threads(int(st.range(0)));
+  Engine eng(taylor_model());
+  eng.initialize();
+  for (int c = 0; c < 2000; ++c) eng.step();
+  State saved = eng.state();
+  for (auto _ : st) {
+    st.PauseTiming();
+    eng.state() = saved;
+    st.ResumeTiming();
+    benchmark::DoNotOptimize(calc_forces_for_elems(eng.model(), eng.state()));
+  }
+  st.SetItemsProcessed(st.iterations() * eng.state().ne);
+}
+BENCHMARK(BM_CalcForcesForElems_TaylorBar)->Arg(1)->Arg(2)->Unit(benchmark::kMicrosecond);
+
+// A full cycle (nodal update, wall, element pass).  Items = element-cycles.
+void BM_Cycle_TaylorBar(benchmark::State& st) {
+  omp_set_num_threads(int(st.range(0)));
+  Engine eng(taylor_model());
+  eng.initialize();
+  const State initial = eng.state();
+  for (auto _ : st) {
+    if (eng.step() != StepStatus::ok) {
+      st.PauseTiming();
+      eng.state() = initial;
+      st.ResumeTiming();
+    }
+  }
+  st.SetItemsProcessed(st.iterations() * eng.state().ne);
+}
+BENCHMARK(BM_Cycle_TaylorBar)->Arg(1)->Arg(2)->Unit(benchmark::kMicrosecond);
+
+// The whole Taylor bar run to 80 us (no output files).
+void BM_TaylorBarWholeRun(benchmark::State& st) {
+  omp_set_num_threads(int(st.range(0)));
+  for (auto _ : st) {
+    Engine eng(taylor_model());
+    benchmark::DoNotOptimize(eng.run_to_end());
+    st.counters["cycles"] = eng.state().cycle;
+  }
+}
+BENCHMARK(BM_TaylorBarWholeRun)->Arg(1)->Arg(2)->Unit(benchmark::kSecond)->Iterations(1);
+
+}  // namespace
+
+BENCHMARK_MAIN();
