@@ -197,6 +197,14 @@ Location Card::where(int c1, int c2, const char* field) const {
 
 void Card::error(int id, int c1, int c2, const char* field, std::string detail,
                  bool show_found) {
+  if (id != 1001 && id != 1002 && c1 > 0) {
+    for (const auto& b : bad_fields_) {
+      if (b.first == c1 && b.second == c2) {
+        if (message_def(id).severity == Severity::error) had_error_ = true;
+        return;
+      }
+    }
+  }
   Location loc = where(c1, c2, field);
   if (show_found && c1 > 0) {
     loc.found = std::string(trim(a(c1, c2)));
@@ -212,6 +220,7 @@ long long Card::i(int c1, int c2, const char* field, long long def) {
   if (st == FieldStatus::blank) return def;
   if (st == FieldStatus::bad) {
     error(1001, c1, c2, field);
+    bad_fields_.emplace_back(c1, c2);
     return def;
   }
   return v;
@@ -223,6 +232,7 @@ double Card::e(int c1, int c2, const char* field, double def) {
   if (st == FieldStatus::blank) return def;
   if (st == FieldStatus::bad) {
     error(1002, c1, c2, field);
+    bad_fields_.emplace_back(c1, c2);
     return def;
   }
   return v;

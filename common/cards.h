@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "common/messages.h"
@@ -71,6 +72,8 @@ class Card {
   bool had_error() const { return had_error_; }
 
   Location where(int c1 = 0, int c2 = 0, const char* field = nullptr) const;
+  // Reports message id for columns [c1, c2].  A message about a field that already failed to
+  // parse (1001/1002 on the same columns) is not reported again.
   void error(int id, int c1, int c2, const char* field, std::string detail = {},
              bool show_found = true);
   int line() const { return line_->number; }
@@ -84,6 +87,9 @@ class Card {
   std::string card_name_;
   Diagnostics& diag_;
   bool had_error_ = false;
+  // Columns of the fields that failed to parse (1001/1002): a later check of the same field
+  // (range, reference) would only repeat the error about the default value, so it is not shown.
+  std::vector<std::pair<int, int>> bad_fields_;
 };
 
 }  // namespace impact3d

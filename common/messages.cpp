@@ -125,8 +125,23 @@ std::string render(const Diagnostic& d) {
   if (!d.detail.empty()) s += ": " + d.detail;
   if (w.show_found) {
     std::string f = w.found;
-    if (f.size() > 40) f = f.substr(0, 40) + "...";
-    s += " [found \"" + f + "\"]";
+    bool cut = f.size() > 40;
+    if (cut) f.resize(40);
+    // Control and non-ASCII bytes (tabs, binary garbage) are shown as \xNN so that the message
+    // stays one printable line.
+    std::string shown;
+    for (char ch : f) {
+      unsigned char c = static_cast<unsigned char>(ch);
+      if (c < 32 || c >= 127) {
+        char buf[8];
+        std::snprintf(buf, sizeof buf, "\\x%02X", c);
+        shown += buf;
+      } else {
+        shown += ch;
+      }
+    }
+    if (cut) shown += "...";
+    s += " [found \"" + shown + "\"]";
   }
   return s;
 }

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -136,7 +137,10 @@ class Dyna3dReader {
       int w = m_.large_format ? 10 : 5;
       if (k.numnp < 1) c.error(1003, 6, 5 + w, "NUMNP", "at least 1 node");
       if (k.numelh < 1) c.error(1003, 6 + w, 5 + 2 * w, "NUMELH", "at least 1 solid element");
-      if (k.interface_out_interval < 0) c.error(1221, 66, 75, "interface output interval");
+      if (k.interface_out_interval < 0) {
+        if (m_.large_format) c.error(1221, 66, 75, "interface output interval");
+        else c.error(1221, 36, 45, "interface output interval");
+      }
       // Counts cannot exceed what the file holds: bound them before anything is allocated.
       long avail = remaining_cards();
       if (k.numnp > avail) {
@@ -389,9 +393,12 @@ class Dyna3dReader {
 
   void read_nodes() {
     int n = m_.control.numnp;
-    m_.x.assign(std::size_t(n), 0.0);
-    m_.y.assign(std::size_t(n), 0.0);
-    m_.z.assign(std::size_t(n), 0.0);
+    // Nodes never defined (reported as 1204) keep NaN coordinates: the volume check skips the
+    // elements that use them instead of reporting a second, misleading error.
+    const double undefined = std::numeric_limits<double>::quiet_NaN();
+    m_.x.assign(std::size_t(n), undefined);
+    m_.y.assign(std::size_t(n), undefined);
+    m_.z.assign(std::size_t(n), undefined);
     m_.bc.assign(std::size_t(n), 0);
     std::vector<int> seen(std::size_t(n), 0);
     const bool L = m_.large_format;
@@ -452,8 +459,13 @@ class Dyna3dReader {
 
   void read_solids() {
     int n = m_.control.numelh;
-    m_.hex_nodes.assign(std::size_t(n), std::array<int, 8>{});
-    m_.hex_material.assign(std::size_t(n), 0);
+    // Elements never defined (reported as 1204) keep node -1, so that the model checks skip
+    // them instead of computing the volume of a degenerate element at node 1.
+    std::array<int, 8> undefined;
+    undefined.fill(-1);
+    m_.hex_nodes.assign(std::size_t(n), undefined);
+    m_.hex_material.assign(std::size_t(n), -1);
+    m_.hex_line.assign(std::size_t(n), 0);
     std::vector<int> seen(std::size_t(n), 0);
     const int w = idw_;
     for (int k = 0; k < n; ++k) {
@@ -493,6 +505,8 @@ class Dyna3dReader {
       }
       seen[std::size_t(id - 1)] = c.line();
       if (!ok) nodes.fill(-1);
+      else canonical_node_pattern(nodes);
+      m_.hex_line[std::size_t(id - 1)] = c.line();
       m_.hex_nodes[std::size_t(id - 1)] = nodes;
       m_.hex_material[std::size_t(id - 1)] = ok ? mat - 1 : -1;
     }
@@ -511,6 +525,15 @@ class Dyna3dReader {
     if (distinct == 4 && n[2] == n[3] && n[4] == n[5] && n[5] == n[6] && n[6] == n[7]) return true;
     if (distinct == 4 && n[3] == n[4] && n[4] == n[5] && n[5] == n[6] && n[6] == n[7]) return true;
     return false;
+  }
+
+  // The tetrahedron form n1,n2,n3,n4,n4,n4,n4,n4 (NIKE3D/LS-DYNA) spans, as a trilinear
+  // hexahedron, only half the tetrahedron's volume (the collapsed face n1-n4 is not planar).
+  // Store it as the DYNA3D form n1,n2,n3,n3,n4,n4,n4,n4: same base n1-n2-n3 and apex n4, whose
+  // trilinear volume is the exact tetrahedron volume.
+  static void canonical_node_pattern(std::array<int, 8>& n) {
+    if (n[2] != n[3] && n[3] == n[4] && n[4] == n[5] && n[5] == n[6] && n[6] == n[7])
+      n = {n[0], n[1], n[2], n[2], n[3], n[3], n[3], n[3]};
   }
 
   int read_id(Card& c, int c1, const char* field, int limit, int id_error) {
@@ -638,7 +661,8 @@ class Dyna3dReader {
     }
   }
 
-  void read_segments(std::vector<std::array<int, 4>>& out, int count, const std::string& what) {
+  void read_segments(std::vector<std::array<int, 4>>& out, std::vector<int>& lines, int count,
+                     const std::string& what) {
     for (int s = 0; s < count; ++s) {
       Card c = next(what + " segment card " + std::to_string(s + 1) + " of " + std::to_string(count));
       c.i(1, idw_, "segment number");
@@ -650,7 +674,10 @@ class Dyna3dReader {
         if (id < 1) ok = false;
         seg[std::size_t(j)] = id - 1;
       }
-      if (ok) out.push_back(seg);
+      if (ok) {
+        out.push_back(seg);
+        lines.push_back(c.line());
+      }
     }
   }
 
@@ -687,8 +714,9 @@ class Dyna3dReader {
     }
     for (int k = 0; k < n; ++k) {
       std::string name = "sliding interface " + std::to_string(k + 1);
-      read_segments(m_.interfaces[std::size_t(k)].slave, counts[std::size_t(k)][0], name + " slave");
-      read_segments(m_.interfaces[std::size_t(k)].master, counts[std::size_t(k)][1], name + " master");
+      SlidingInterface& si = m_.interfaces[std::size_t(k)];
+      read_segments(si.slave, si.slave_line, counts[std::size_t(k)][0], name + " slave");
+      read_segments(si.master, si.master_line, counts[std::size_t(k)][1], name + " master");
     }
   }
 

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <array>
+#include <cmath>
 #include <set>
 #include <string>
 #include <vector>
@@ -38,14 +39,18 @@ bool check_model(const Model& m, Diagnostics& diag) {
     const auto& n = m.hex_nodes[std::size_t(e)];
     if (n[0] < 0) continue;  // already reported
     double x[8], y[8], z[8];
+    bool defined = true;
     for (int j = 0; j < 8; ++j) {
       x[j] = m.x[std::size_t(n[std::size_t(j)])];
       y[j] = m.y[std::size_t(n[std::size_t(j)])];
       z[j] = m.z[std::size_t(n[std::size_t(j)])];
+      defined = defined && std::isfinite(x[j]) && std::isfinite(y[j]) && std::isfinite(z[j]);
     }
+    if (!defined) continue;  // uses a node that was never defined (reported as 1204)
     double v = calc_hex_volume(x, y, z);
     if (!(v > 0)) {
       Location loc = file_loc;
+      if (std::size_t(e) < m.hex_line.size()) loc.line = m.hex_line[std::size_t(e)];
       loc.card = "solid element " + std::to_string(e + 1);
       char buf[64];
       std::snprintf(buf, sizeof buf, "volume %.6g", v);
@@ -94,6 +99,8 @@ bool check_model(const Model& m, Diagnostics& diag) {
       for (std::size_t s = 0; s < segs.size(); ++s) {
         if (!faces.count(face_key(segs[s]))) {
           Location loc = file_loc;
+          const auto& lines = side == 0 ? si.slave_line : si.master_line;
+          if (s < lines.size()) loc.line = lines[s];
           loc.card = "sliding interface " + std::to_string(i + 1) + (side == 0 ? " slave" : " master") +
                      " segment " + std::to_string(s + 1);
           diag.add(1218, loc, "nodes " + std::to_string(segs[s][0] + 1) + " " + std::to_string(segs[s][1] + 1) + " " +

@@ -69,6 +69,7 @@ struct SlidingInterface {
   int stiffness_method = 0;   // 0 DYNA3D mu K A^2 / V, 1 IMPACT-3D maximum stable
   bool symmetric = true;
   std::vector<std::array<int, 4>> slave, master;  // 0-based nodes
+  std::vector<int> slave_line, master_line;       // deck line of each segment card (messages)
   int line = 0;
 };
 
@@ -90,6 +91,7 @@ struct Model {
   // solids (index = element number - 1)
   std::vector<std::array<int, 8>> hex_nodes;  // 0-based node indices
   std::vector<int> hex_material;              // 0-based material index
+  std::vector<int> hex_line;                  // deck line of each solid card, 0 = not read
 
   std::vector<std::array<int, 2>> node_th_blocks, solid_th_blocks;  // deck numbers, inclusive
   std::vector<LoadCurve> load_curves;
