@@ -6,6 +6,7 @@ namespace impact3d {
 // interfaces, so apply() is never reached with interfaces present.
 struct SlidingInterfaces::Impl {
   int count = 0;
+  std::vector<std::array<double, 3>> forces;
 };
 
 SlidingInterfaces::SlidingInterfaces() : impl_(std::make_unique<Impl>()) {}
@@ -18,6 +19,10 @@ void SlidingInterfaces::initialize(const Model& m, const State&) {
 }
 
 void SlidingInterfaces::apply(const Model&, State&, double) {}
+
+const std::vector<std::array<double, 3>>& SlidingInterfaces::interface_forces() const {
+  return impl_->forces;
+}
 
 bool SlidingInterfaces::empty() const { return impl_->count == 0; }
 

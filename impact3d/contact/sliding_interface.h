@@ -2,7 +2,9 @@
 // Sliding interfaces (DYNA3D type 3): penalty contact between master and slave surfaces of
 // hexahedron faces, the seed's method (shared/spec/physics.md section 5).
 
+#include <array>
 #include <memory>
+#include <vector>
 
 #include "impact3d/model/model.h"
 #include "impact3d/model/state.h"
@@ -23,6 +25,8 @@ class SlidingInterfaces {
   // taken (dt^{n+1/2}).  The result must not depend on the thread count.
   void apply(const Model& m, State& s, double dt);
   bool empty() const;
+  // Resultant force on the master side of each interface at the last apply() (for rcforc).
+  const std::vector<std::array<double, 3>>& interface_forces() const;
 
  private:
   struct Impl;
