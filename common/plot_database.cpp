@@ -7,6 +7,7 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <ctime>
 #include <filesystem>
@@ -363,6 +364,63 @@ void check_size(const std::vector<T>& v, std::size_t n, const char* what, bool a
 
 PlotWriter::~PlotWriter() { close(); }
 
+// RUNTIME (word 10): seconds since 1970, or SOURCE_DATE_EPOCH when set (reproducible files for
+// regression suites that compare databases byte for byte).
+static std::int64_t run_time_word() {
+    if (const char* e = std::getenv("SOURCE_DATE_EPOCH")) {
+        char* end = nullptr;
+        long long v = std::strtoll(e, &end, 10);
+        if (end != e && *end == '\0' && v >= 0) return v & 0x7fffffff;
+    }
+    return static_cast<std::int64_t>(std::time(nullptr)) & 0x7fffffff;
+}
+
+// Restart: keep the root file and the first keep_states states of an existing family (laid out
+// by the same member rule as write_state), drop everything after them, and continue appending.
+void PlotWriter::resume_members(int keep) {
+    if (file_size_or(root_, -1) < 0)
+        throw std::runtime_error("plot database " + root_ + ": cannot resume: the root file is missing");
+    const std::int64_t per = std::max<std::int64_t>(1, (limit_words_ - 1) / state_words_);
+    const int members = keep == 0 ? 0 : static_cast<int>((keep + per - 1) / per);
+    const int in_last = keep == 0 ? 0 : static_cast<int>(keep - (members - 1) * per);
+    // every kept member must exist and hold its states
+    for (int m = 1; m <= members; ++m) {
+        const std::int64_t need = (m < members ? per : in_last) * state_words_ * ws_;
+        if (file_size_or(member_name(root_, m), -1) < need + ws_)
+            throw std::runtime_error("plot database " + member_name(root_, m) +
+                                     ": cannot resume: fewer states than the restart dump expects");
+    }
+    // remove later members (and temporaries) so no reader continues into them
+    for (int m = members + 1;; ++m) {
+        const std::string name = member_name(root_, m);
+        std::error_code ec;
+        std::filesystem::remove(name + ".tmp", ec);
+        if (!std::filesystem::exists(name, ec)) break;
+        std::filesystem::remove(name, ec);
+        if (ec) throw std::runtime_error("plot database: cannot remove " + name + ": " + ec.message());
+    }
+    members_ = members;
+    states_in_member_ = in_last;
+    states_written_ = keep;
+    marker_pos_ = static_cast<std::int64_t>(in_last) * state_words_ * ws_;
+    root_written_ = true;
+    if (members == 0) return;
+    const std::string name = member_name(root_, members);
+    const int fd = ::open(name.c_str(), O_RDWR | O_CLOEXEC);
+    if (fd < 0) io_fail("open of", name, errno);
+    std::vector<char> mk;
+    put_real(mk, ws_, kEndMarker);
+    try {
+        pwrite_all(fd, mk.data(), mk.size(), marker_pos_, name);
+        if (::ftruncate(fd, static_cast<off_t>(marker_pos_ + ws_)) != 0) io_fail("truncate of", name, errno);
+        fsync_or_throw(fd, name);
+    } catch (...) {
+        ::close(fd);
+        throw;
+    }
+    fd_ = fd;
+}
+
 void PlotWriter::close() noexcept {
     if (fd_ >= 0) ::close(fd_);
     fd_ = -1;
@@ -378,6 +436,17 @@ std::string PlotWriter::member_name(const std::string& root_path, int member) {
 
 void PlotWriter::open(const std::string& root_path, const PlotGeometry& g, int word_size,
                       std::int64_t member_size_limit_words) {
+    open_impl(root_path, g, word_size, member_size_limit_words, -1);
+}
+
+void PlotWriter::resume(const std::string& root_path, const PlotGeometry& g, int word_size,
+                        std::int64_t member_size_limit_words, int keep_states) {
+    if (keep_states < 0) throw std::invalid_argument("PlotWriter::resume: keep_states must be >= 0");
+    open_impl(root_path, g, word_size, member_size_limit_words, keep_states);
+}
+
+void PlotWriter::open_impl(const std::string& root_path, const PlotGeometry& g, int word_size,
+                           std::int64_t member_size_limit_words, int keep_states) {
     close();
     if (word_size != 4 && word_size != 8)
         throw std::invalid_argument("PlotWriter: word size must be 4 or 8, got " + std::to_string(word_size));
@@ -422,8 +491,13 @@ void PlotWriter::open(const std::string& root_path, const PlotGeometry& g, int w
     states_written_ = 0;
     marker_pos_ = 0;
 
-    // Remove stale family members of an earlier run, so no reader continues into them.
     const std::string dir = parent_dir(root_path);
+    if (keep_states >= 0) {
+        resume_members(keep_states);
+        return;
+    }
+    // Remove stale family members of an earlier run, so no reader continues into them.
+
     const std::string base = std::filesystem::path(root_path).filename().string();
     {
         std::error_code ec;
@@ -451,7 +525,7 @@ void PlotWriter::open(const std::string& root_path, const PlotGeometry& g, int w
     for (int k = 10; k < 64; ++k) {
         std::int64_t v = 0;
         switch (k) {
-            case 10: v = static_cast<std::int64_t>(std::time(nullptr)) & 0x7fffffff; break;
+            case 10: v = run_time_word(); break;
             case 11: v = 1; break;        // FILETYPE d3plot
             case 15: v = 4; break;        // NDIM
             case 16: v = numnp_; break;   // NUMNP

@@ -101,6 +101,13 @@ public:
     void open(const std::string& root_path, const PlotGeometry& geometry, int word_size = 4,
               std::int64_t member_size_limit_words = kDefaultMemberSizeLimitWords);
 
+    // Restart: the same as open() for a family that already holds at least keep_states states
+    // written with the same geometry, word size and member limit: keeps the root and those
+    // states, removes what follows them, and appends after them.  Throws std::runtime_error
+    // when the family is missing or shorter.
+    void resume(const std::string& root_path, const PlotGeometry& geometry, int word_size,
+                std::int64_t member_size_limit_words, int keep_states);
+
     // Appends one state to d3plot01, d3plot02, ... and fsyncs.  Throws std::invalid_argument for
     // wrong vector sizes, std::logic_error if not open, std::runtime_error for I/O errors
     // (states written before stay intact and readable; the writer stays usable).
@@ -116,6 +123,9 @@ public:
     static std::string member_name(const std::string& root_path, int member);  // 0 = root
 
 private:
+    void open_impl(const std::string& root_path, const PlotGeometry& geometry, int word_size,
+                   std::int64_t member_size_limit_words, int keep_states);
+    void resume_members(int keep_states);
     void start_member(const std::vector<char>& buf);
     void append_to_member(const std::vector<char>& buf);
 

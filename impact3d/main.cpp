@@ -5,11 +5,13 @@
 #include <cstring>
 #include <fstream>
 #include <iostream>
+#include <iterator>
 #include <string>
 
 #include "common/messages.h"
 #include "impact3d/input/deck_reader.h"
 #include "impact3d/output/printed_output.h"
+#include "impact3d/output/restart_dump.h"
 #include "impact3d/solve/run.h"
 #include "version.h"
 
@@ -18,14 +20,17 @@ using namespace impact3d;
 namespace {
 
 const char* kUsage =
-    "usage: impact3d i=DECK [o=PRINTED] [g=PLOTDB] [d=DUMP] [r=RESTART] [ncpu=N] [--check]\n"
+    "usage: impact3d i=DECK [o=PRINTED] [g=PLOTDB] [d=DUMP] [ncpu=N] [plotwords=4|8] [--check]\n"
+    "       impact3d r=DUMP [o=PRINTED] [g=PLOTDB] [d=DUMP] [ncpu=N]\n"
     "       impact3d --help | --version | --messages\n"
     "\n"
     "  i=DECK     input deck (DYNA3D fixed format)\n"
     "  o=FILE     printed output file (default d3hsp)\n"
     "  g=FILE     plot database root name (default d3plot)\n"
-    "  d=FILE     restart dump name (default d3dump)\n"
-    "  r=FILE     restart from this dump\n"
+    "  d=FILE     restart dump root: dumps are FILE01, FILE02, ... (default d3dump)\n"
+    "  r=FILE     restart from this dump (the deck is inside it; o= and g= default to the\n"
+    "             names of the run that wrote it)\n"
+    "  plotwords=N  4 (default) or 8 byte words in the plot and time-history databases\n"
     "  ncpu=N     number of threads (default: OMP_NUM_THREADS or all cores); results do not\n"
     "             depend on it\n"
     "  --check    read and check the deck only; print the summary; write nothing else\n"
@@ -44,6 +49,7 @@ void print_banner(std::ostream& os) {
 int main(int argc, char** argv) {
   RunOptions opt;
   bool check_only = false;
+  bool printed_given = false, plot_given = false;
   Diagnostics cmd;
   for (int a = 1; a < argc; ++a) {
     std::string arg = argv[a];
@@ -69,12 +75,23 @@ int main(int argc, char** argv) {
       opt.deck = v;
     } else if (const char* v = value("o=")) {
       opt.printed = v;
+      printed_given = true;
     } else if (const char* v = value("g=")) {
       opt.plot = v;
+      plot_given = true;
     } else if (const char* v = value("d=")) {
       opt.dump = v;
     } else if (const char* v = value("r=")) {
       opt.restart = v;
+    } else if (const char* v = value("plotwords=")) {
+      if (std::string(v) == "4" || std::string(v) == "8") {
+        opt.plot_word_size = v[0] - '0';
+      } else {
+        Location loc;
+        loc.found = arg;
+        loc.show_found = true;
+        cmd.add(3005, loc, "plotwords must be 4 or 8");
+      }
     } else if (const char* v = value("ncpu=")) {
       char* end = nullptr;
       long n = std::strtol(v, &end, 10);
@@ -103,12 +120,41 @@ int main(int argc, char** argv) {
   print_banner(std::cout);
   Model model;
   Diagnostics diag;
-  bool ok = read_and_check_deck(opt.deck, model, diag);
+  bool ok = false;
+  if (!opt.restart.empty()) {
+    // restart: the deck text travels inside the dump
+    DumpHeader h;
+    try {
+      h = read_restart_dump_header(opt.restart);
+    } catch (const std::exception& ex) {
+      Location loc;
+      loc.file = opt.restart;
+      Diagnostic d{4005, Severity::error, loc, ex.what()};
+      std::cerr << "impact3d: " << render(d) << "\n";
+      std::cout << "\n E r r o r   t e r m i n a t i o n   (restart dump is invalid)\n";
+      return exit_code::file_error;
+    }
+    if (!printed_given) opt.printed = h.printed;
+    if (!plot_given) opt.plot = h.plot_root;
+    opt.plot_word_size = h.plot_word_size;
+    opt.deck = h.deck_name;
+    opt.deck_text = h.deck_text;
+    DeckFile deck;
+    deck.load_from_string(h.deck_name, h.deck_text);
+    ok = read_dyna3d_deck(deck, model, diag);
+    if (ok) ok = check_model(model, diag);
+  } else {
+    ok = read_and_check_deck(opt.deck, model, diag);
+    if (ok && !check_only) {
+      std::ifstream in(opt.deck, std::ios::binary);
+      opt.deck_text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    }
+  }
 
   // The printed output file gets the echo and all messages; the terminal gets the messages.
   std::ofstream printed;
   if (!check_only) {
-    printed.open(opt.printed);
+    printed.open(opt.printed, opt.restart.empty() ? std::ios::out : std::ios::app);
     if (!printed) {
       Location loc;
       loc.file = opt.printed;
@@ -135,7 +181,7 @@ int main(int argc, char** argv) {
     std::cout << " input check: 0 errors, " << diag.warning_count() << " warning(s)\n";
     return exit_code::ok;
   }
-  write_model_summary(printed, model);
+  if (opt.restart.empty()) write_model_summary(printed, model);
   if (diag.warning_count()) diag.print(printed);
   return run_simulation(model, opt, printed);
 }

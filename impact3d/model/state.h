@@ -74,6 +74,23 @@ struct State {
   double initial_total = 0;
   std::vector<std::array<double, 3>> wall_force;  // force on each wall this cycle
 
+  // Every field that changes during the run, for restart dumps: a dump restores these on top
+  // of a State built by initialize_state from the same Model, and the run goes on bit for bit.
+  // A new dynamic field must be added here (the restart test catches a missing one).
+  template <class V>
+  void visit_dynamic_fields(V&& v) {
+    v(x); v(y); v(z); v(vx); v(vy); v(vz); v(ax); v(ay); v(az);
+    v(vx_old); v(vy_old); v(vz_old); v(fx); v(fy); v(fz); v(fext_x); v(fext_y); v(fext_z);
+    v(vol); v(sig); v(back); v(eps_p); v(yielded); v(hgs); v(q); v(cfx); v(cfy); v(cfz);
+    v(ie_e); v(hg_e); v(bv_e); v(dt_e); v(de_ie); v(de_hg); v(de_bv);
+    v(time); v(cycle); v(dt_half); v(dt_next); v(dt_elem); v(dt0);
+    v(kinetic); v(internal); v(hourglass); v(bulk_viscous); v(wall_work); v(contact);
+    v(external_work); v(initial_total); v(wall_force);
+    for (RigidBody& rb : rigid) {
+      v(rb.com); v(rb.vcom); v(rb.rot); v(rb.omega); v(rb.ang_mom);
+    }
+  }
+
   double total_energy() const {
     return kinetic + internal + hourglass + bulk_viscous + wall_work + contact;
   }

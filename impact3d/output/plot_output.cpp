@@ -78,6 +78,11 @@ void PlotOutput::open(const Model& m, const std::string& root, int word_size) {
   writer_.open(root, make_plot_geometry(m), word_size);
 }
 
+void PlotOutput::resume(const Model& m, const std::string& root, int word_size, int keep_states) {
+  writer_.resume(root, make_plot_geometry(m), word_size, PlotWriter::kDefaultMemberSizeLimitWords,
+                 keep_states);
+}
+
 void PlotOutput::write(const Model& m, const State& s) {
   fill_plot_state(m, s, ps_);
   writer_.write_state(ps_);

@@ -20,6 +20,8 @@ class PlotOutput {
  public:
   // Opens the family; throws std::runtime_error on I/O errors.
   void open(const Model& m, const std::string& root, int word_size = 4);
+  // Restart: keeps the first keep_states states of the existing family and appends after them.
+  void resume(const Model& m, const std::string& root, int word_size, int keep_states);
   void write(const Model& m, const State& s);
   int states_written() const { return writer_.num_states_written(); }
   double last_time() const { return last_time_; }

@@ -30,6 +30,9 @@ class Engine {
   // Element (0-based) behind the last error, and a description.
   int error_element() const { return error_elem_; }
 
+  // Resultant force on each sliding interface (master side) at the last cycle.
+  const std::vector<std::array<double, 3>>& interface_forces() const { return contact_.interface_forces(); }
+
   // Energy diagnostics
   double kinetic_energy_of_material(int mat) const;
 

@@ -1,31 +1,72 @@
-// run_simulation: drives the Engine with the run log (stdout and the printed file), output
-// triggers and the termination messages.
+// run_simulation: drives the Engine with the run log (stdout and the printed file), the output
+// schedule (plot states, time histories, restart dumps), the sense switches (signals) and the
+// termination messages.
 
 #include "impact3d/solve/run.h"
 
 #include <omp.h>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
+#include <csignal>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <string>
 
 #include "common/messages.h"
+#include "impact3d/output/history_output.h"
 #include "impact3d/output/plot_output.h"
+#include "impact3d/output/restart_dump.h"
 #include "impact3d/solve/engine.h"
 
 namespace impact3d {
 
 namespace {
 
+// Sense switches (DYNA3D sw1, sw2, sw4): set by signal handlers, polled once per cycle.
+volatile std::sig_atomic_t g_stop = 0;        // SIGINT, SIGTERM: dump + plot state, stop
+volatile std::sig_atomic_t g_status = 0;      // SIGUSR1: print time, cycle, step, remaining
+volatile std::sig_atomic_t g_plot_now = 0;    // SIGUSR2: write a plot state now
+extern "C" void on_stop_signal(int) { g_stop = 1; }
+extern "C" void on_status_signal(int) { g_status = 1; }
+extern "C" void on_plot_signal(int) { g_plot_now = 1; }
+
+class SenseSwitches {
+ public:
+  SenseSwitches() {
+    g_stop = 0;
+    g_status = 0;
+    g_plot_now = 0;
+    struct sigaction sa {};
+    sigemptyset(&sa.sa_mask);
+    sa.sa_handler = on_stop_signal;
+    sigaction(SIGINT, &sa, &old_int_);
+    sigaction(SIGTERM, &sa, &old_term_);
+    sa.sa_handler = on_status_signal;
+    sigaction(SIGUSR1, &sa, &old_usr1_);
+    sa.sa_handler = on_plot_signal;
+    sigaction(SIGUSR2, &sa, &old_usr2_);
+  }
+  ~SenseSwitches() {
+    sigaction(SIGINT, &old_int_, nullptr);
+    sigaction(SIGTERM, &old_term_, nullptr);
+    sigaction(SIGUSR1, &old_usr1_, nullptr);
+    sigaction(SIGUSR2, &old_usr2_, nullptr);
+  }
+
+ private:
+  struct sigaction old_int_ {}, old_term_ {}, old_usr1_ {}, old_usr2_ {};
+};
+
 class RunLog {
  public:
   RunLog(std::ostream& printed, bool quiet) : printed_(printed), quiet_(quiet) {}
   void line(const std::string& s) {
     if (!quiet_) std::cout << s << '\n' << std::flush;
-    printed_ << s << '\n';
+    printed_ << s << '\n' << std::flush;
   }
 
  private:
@@ -33,9 +74,10 @@ class RunLog {
   bool quiet_;
 };
 
-std::string format_cycle_line(const State& s, double elapsed, double end_time) {
+std::string format_cycle_line(const State& s, double elapsed, double start_time, double end_time) {
   char buf[200];
-  double remaining = s.time > 0 ? elapsed * (end_time - s.time) / s.time : 0;
+  const double done = s.time - start_time;
+  double remaining = done > 0 ? elapsed * (end_time - s.time) / done : 0;
   std::snprintf(buf, sizeof buf, " %8d %12.5e %11.4e %8d %9.5f %9.2f %9.2f", s.cycle, s.time,
                 s.dt_next, s.dt_elem + 1, s.energy_ratio(), elapsed, remaining);
   return buf;
@@ -59,6 +101,17 @@ std::string energy_report(const State& s) {
   return buf;
 }
 
+std::string parent_or_dot(const std::string& path) {
+  std::string p = std::filesystem::path(path).parent_path().string();
+  return p.empty() ? "." : p;
+}
+
+std::string numbered(const std::string& root, int k) {
+  char buf[16];
+  std::snprintf(buf, sizeof buf, "%02d", k);
+  return root + buf;
+}
+
 }  // namespace
 
 int run_simulation(const Model& model, const RunOptions& opt, std::ostream& printed) {
@@ -75,60 +128,163 @@ int run_simulation(const Model& model, const RunOptions& opt, std::ostream& prin
   auto elapsed = [&] {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   };
+  auto file_error = [&](int id, const std::string& file, const std::string& what) {
+    Diagnostic d{id, Severity::error, Location{file, 0, {}, {}, 0, 0, {}, false}, what};
+    log.line(render(d));
+    std::cerr << "impact3d: " << render(d) << "\n";
+  };
+
   Engine engine(model);
   StepStatus st = engine.initialize();
-  const State& s = engine.state();
+  State& s = engine.state();
+  const bool restarting = !opt.restart.empty();
+  DumpHeader dump;
+  if (restarting) {
+    try {
+      dump = read_restart_dump_header(opt.restart);
+      read_restart_dump_state(opt.restart, s);
+    } catch (const std::exception& ex) {
+      file_error(4005, opt.restart, ex.what());
+      log.line("\n E r r o r   t e r m i n a t i o n   (restart dump is invalid)");
+      return exit_code::file_error;
+    }
+    st = engine.finished() ? StepStatus::finished : StepStatus::ok;
+  }
+  OutputCursor cur = restarting ? dump.cursor : OutputCursor{};
+  const double start_time = s.time;
   {
-    char buf[200];
-    std::snprintf(buf, sizeof buf, "\n threads: %d\n first time step %.5e (element %d)\n",
-                  omp_get_max_threads(), s.dt_next, s.dt_elem + 1);
+    char buf[300];
+    if (restarting)
+      std::snprintf(buf, sizeof buf, "\n restart from %s at cycle %d, time %.6e\n threads: %d\n",
+                    opt.restart.c_str(), s.cycle, s.time, omp_get_max_threads());
+    else
+      std::snprintf(buf, sizeof buf, "\n threads: %d\n first time step %.5e (element %d)\n",
+                    omp_get_max_threads(), s.dt_next, s.dt_elem + 1);
     log.line(buf);
     log.line("    cycle         time          dt  element  e-ratio   elapsed  remaining(s)");
   }
-  // plot states: t = 0, every plot interval, the end (and the last state of an error)
-  PlotOutput plot;
+
+  // ---- outputs
   const double plot_dt = model.control.plot_interval;
-  double next_plot = 0;
-  auto write_plot = [&]() -> bool {
+  const double th_dt = model.control.th_interval;
+  const int word_size = opt.plot_word_size;
+  PlotOutput plot;
+  HistoryOutput history;
+  const std::string out_dir = parent_or_dot(opt.printed);
+  try {
+    if (restarting) plot.resume(model, opt.plot, word_size, cur.plot_states);
+    else plot.open(model, opt.plot, word_size);
+    history.open(model, out_dir, out_dir + "/d3thdt", word_size, restarting, cur.ascii_bytes,
+                 cur.history_states);
+  } catch (const std::exception& ex) {
+    file_error(3004, opt.plot, ex.what());
+    log.line("\n E r r o r   t e r m i n a t i o n   (cannot write the output files)");
+    return exit_code::file_error;
+  }
+  bool out_ok = true;
+  int scheduled_plot_states = cur.plot_states;  // states a restart keeps (not sense-switch extras)
+  auto write_plot = [&](bool scheduled) {
     try {
       plot.write(model, s);
     } catch (const std::exception& ex) {
-      Diagnostic d{4004, Severity::error, Location{opt.plot, 0, {}, {}, 0, 0, {}, false}, ex.what()};
-      log.line(render(d));
-      std::cerr << "impact3d: " << render(d) << "\n";
+      file_error(4004, opt.plot, ex.what());
+      out_ok = false;
+      return;
+    }
+    if (scheduled) {
+      cur.next_plot = (std::floor(s.time / plot_dt + 1e-9) + 1) * plot_dt;
+      scheduled_plot_states = plot.states_written();
+    }
+  };
+  double last_history_time = -1;
+  auto write_history = [&] {
+    last_history_time = s.time;
+    try {
+      const double ns = s.cycle > 0 ? 1e9 * elapsed() / (double(s.cycle) * std::max(1, s.ne)) : 0;
+      history.write(model, s, engine.interface_forces(), ns);
+      history.flush();
+    } catch (const std::exception& ex) {
+      file_error(4004, out_dir, ex.what());
+      out_ok = false;
+      return;
+    }
+    cur.next_history = (std::floor(s.time / th_dt + 1e-9) + 1) * th_dt;
+  };
+  auto write_dump = [&](const std::string& path) -> bool {
+    DumpHeader h;
+    h.deck_name = model.deck_file;
+    h.deck_text = opt.deck_text;
+    h.plot_root = opt.plot;
+    h.printed = opt.printed;
+    h.plot_word_size = word_size;
+    h.cursor = cur;
+    h.cursor.plot_states = scheduled_plot_states;
+    h.cursor.history_states = history.thdt_states();
+    history.current_sizes(h.cursor.ascii_bytes);
+    try {
+      write_restart_dump(path, h, s);
+    } catch (const std::exception& ex) {
+      file_error(3004, path, ex.what());
       return false;
     }
-    next_plot = (std::floor(s.time / plot_dt + 1e-9) + 1) * plot_dt;
+    char buf[300];
+    std::snprintf(buf, sizeof buf, " restart dump %s written at cycle %d, time %.6e", path.c_str(), s.cycle, s.time);
+    log.line(buf);
     return true;
   };
-  try {
-    plot.open(model, opt.plot);
-  } catch (const std::exception& ex) {
-    Diagnostic d{3004, Severity::error, Location{opt.plot, 0, {}, {}, 0, 0, {}, false}, ex.what()};
-    log.line(render(d));
-    std::cerr << "impact3d: " << render(d) << "\n";
-    return exit_code::file_error;
+
+  if (!restarting && st == StepStatus::ok) {
+    write_plot(true);
+    write_history();
   }
-  bool plot_ok = st != StepStatus::ok || write_plot();
+
+  SenseSwitches switches;
   const int report = std::max(1, model.control.report_interval);
-  while (st == StepStatus::ok && plot_ok) {
+  const int dump_every = model.control.restart_dump_cycles;
+  const int running_every = model.control.running_restart_cycles;
+  bool stopped = false;
+  while (st == StepStatus::ok && out_ok) {
     st = engine.step();
     if (s.cycle % report == 0 || st != StepStatus::ok)
-      log.line(format_cycle_line(s, elapsed(), model.control.end_time));
-    if (st == StepStatus::ok && s.time >= next_plot * (1 - 1e-9)) plot_ok = write_plot();
+      log.line(format_cycle_line(s, elapsed(), start_time, model.control.end_time));
+    if (st != StepStatus::ok) break;
+    if (s.time >= cur.next_plot * (1 - 1e-9)) write_plot(true);
+    if (s.time >= cur.next_history * (1 - 1e-9)) write_history();
+    if (g_plot_now) {
+      g_plot_now = 0;
+      write_plot(false);
+      log.line(" plot state written on request (SIGUSR2, sense switch sw4)");
+    }
+    if (g_status) {
+      g_status = 0;
+      std::string l = format_cycle_line(s, elapsed(), start_time, model.control.end_time);
+      log.line(" status (SIGUSR1, sense switch sw2):");
+      log.line("    cycle         time          dt  element  e-ratio   elapsed  remaining(s)");
+      log.line(l);
+    }
+    if (dump_every > 0 && s.cycle % dump_every == 0)
+      out_ok = write_dump(numbered(opt.dump, ++cur.dumps_written)) && out_ok;
+    if (running_every > 0 && s.cycle % running_every == 0)
+      out_ok = write_dump(parent_or_dot(opt.dump) + "/runrsf") && out_ok;
+    if (g_stop) {
+      g_stop = 0;
+      stopped = true;
+      log.line(render(Diagnostic{5001, Severity::info, Location{}, "at cycle " + std::to_string(s.cycle)}));
+      out_ok = write_dump(numbered(opt.dump, ++cur.dumps_written)) && out_ok;
+      write_plot(false);
+      break;
+    }
   }
   // the final state (normal end) or the last state reached (error termination)
-  if (plot_ok && plot.last_time() != s.time) plot_ok = write_plot();
+  if (out_ok && !stopped && plot.last_time() != s.time) write_plot(true);
+  if (out_ok && !stopped && st == StepStatus::finished && last_history_time != s.time) write_history();
+  history.flush();
+  const double cpu = elapsed();
   {
     char buf[200];
     std::snprintf(buf, sizeof buf, "\n plot database %s: %d state(s) written", opt.plot.c_str(), plot.states_written());
     log.line(buf);
   }
-  if (!plot_ok) {
-    log.line("\n E r r o r   t e r m i n a t i o n   (plot database write failed)");
-    return exit_code::file_error;
-  }
-  const double cpu = elapsed();
   log.line("\n energies at the end (time " + std::to_string(s.time) + "):\n" + energy_report(s));
   {
     // summary of the final shape: extents and the largest plastic strain
@@ -141,13 +297,23 @@ int run_simulation(const Model& model, const RunOptions& opt, std::ostream& prin
     for (int e = 1; e < s.ne; ++e)
       if (s.eps_p[std::size_t(e)] > s.eps_p[std::size_t(emax)]) emax = e;
     char buf[400];
+    const int cycles_here = s.cycle;
     std::snprintf(buf, sizeof buf,
                   "\n final extents: x [%.6e, %.6e]  y [%.6e, %.6e]  z [%.6e, %.6e]\n"
                   " maximum effective plastic strain %.5f in element %d\n"
                   " cycles %d, elapsed %.3f s (%.3f us per element-cycle)",
                   lo[0], hi[0], lo[1], hi[1], lo[2], hi[2], s.ne ? s.eps_p[std::size_t(emax)] : 0.0,
-                  emax + 1, s.cycle, cpu, s.cycle && s.ne ? 1e6 * cpu / (double(s.cycle) * s.ne) : 0.0);
+                  emax + 1, cycles_here, cpu, s.cycle && s.ne ? 1e6 * cpu / (double(s.cycle) * s.ne) : 0.0);
     log.line(buf);
+  }
+  if (!out_ok) {
+    log.line("\n E r r o r   t e r m i n a t i o n   (output write failed)");
+    return exit_code::file_error;
+  }
+  if (stopped) {
+    log.line("\n E r r o r   t e r m i n a t i o n   (stopped by signal: restart with r=" +
+             numbered(opt.dump, cur.dumps_written) + ")");
+    return exit_code::stopped_by_signal;
   }
   if (st == StepStatus::finished) {
     log.line("\n N o r m a l   t e r m i n a t i o n");

@@ -15,6 +15,8 @@ struct RunOptions {
   std::string dump = "d3dump";
   std::string restart;
   int threads = 0;          // 0 = OpenMP default
+  int plot_word_size = 4;   // 4 or 8 byte words in the plot and time-history databases
+  std::string deck_text;    // the deck's content, kept in restart dumps
   bool quiet = false;       // no run log on stdout (tests)
 };
 

@@ -1,0 +1,249 @@
+#include "impact3d/output/history_output.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <stdexcept>
+
+#include "impact3d/material/material.h"
+#include "version.h"
+
+namespace impact3d {
+
+namespace {
+enum { kGlstat, kMatsum, kRwforc, kRcforc, kNodout, kElout };
+const char* kNames[HistoryOutput::kNumAscii] = {"glstat", "matsum", "rwforc", "rcforc", "nodout", "elout"};
+
+[[noreturn]] void fail(const std::string& what, const std::string& file) {
+  throw std::runtime_error(what + " " + file + ": " + std::strerror(errno));
+}
+}  // namespace
+
+const char* HistoryOutput::ascii_name(int k) { return kNames[k]; }
+
+HistoryOutput::~HistoryOutput() {
+  for (FILE*& f : files_)
+    if (f) std::fclose(f);
+}
+
+void HistoryOutput::open(const Model& m, const std::string& dir, const std::string& thdt_root,
+                         int word_size, bool resume, const std::uint64_t* ascii_bytes,
+                         int thdt_states) {
+  dir_ = dir.empty() ? "." : dir;
+  th_nodes_.clear();
+  th_solids_.clear();
+  for (const auto& b : m.node_th_blocks)
+    for (int n = b[0]; n <= b[1]; ++n) th_nodes_.push_back(n - 1);
+  for (const auto& b : m.solid_th_blocks)
+    for (int e = b[0]; e <= b[1]; ++e) th_solids_.push_back(e - 1);
+  bool want[kNumAscii] = {true, true, !m.walls.empty(), !m.interfaces.empty(), !th_nodes_.empty(),
+                          !th_solids_.empty()};
+  for (int k = 0; k < kNumAscii; ++k) {
+    if (!want[k]) continue;
+    const std::string path = dir_ + "/" + kNames[k];
+    if (resume) {
+      if (::truncate(path.c_str(), static_cast<off_t>(ascii_bytes[k])) != 0) fail("cannot cut back", path);
+      files_[k] = std::fopen(path.c_str(), "ab");
+    } else {
+      files_[k] = std::fopen(path.c_str(), "wb");
+    }
+    if (!files_[k]) fail("cannot open", path);
+    if (!resume) {
+      std::fprintf(files_[k], " %s   IMPACT-3D %s\n %s\n\n", kNames[k], IMPACT3D_VERSION, m.title.c_str());
+      if (k == kRwforc)
+        std::fprintf(files_[k], " r i g i d   w a l l   f o r c e s  (force on the wall, global axes)\n"
+                                "        time  wall#   normal-force        x-force        y-force        z-force\n");
+      if (k == kRcforc)
+        std::fprintf(files_[k], " r e s u l t a n t   i n t e r f a c e   f o r c e s  (force on the master side)\n"
+                                "        time  interface#        x-force        y-force        z-force\n");
+    }
+  }
+  // binary time histories: the solids' nodes plus the listed nodes, in deck order
+  if (!th_nodes_.empty() || !th_solids_.empty()) {
+    thdt_node_of_.assign(std::size_t(m.num_nodes()), -1);
+    std::vector<int> nodes = th_nodes_;
+    for (int e : th_solids_)
+      for (int n : m.hex_nodes[std::size_t(e)]) nodes.push_back(n);
+    std::sort(nodes.begin(), nodes.end());
+    nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+    subset_nodes_ = nodes;
+    for (std::size_t k = 0; k < nodes.size(); ++k) thdt_node_of_[std::size_t(nodes[k])] = int(k);
+    PlotGeometry g;
+    g.title = m.title;
+    g.num_materials = int(m.materials.size());
+    for (int n : nodes) {
+      g.x0.insert(g.x0.end(), {m.x[std::size_t(n)], m.y[std::size_t(n)], m.z[std::size_t(n)]});
+      g.node_user_ids.push_back(n + 1);
+    }
+    for (int e : th_solids_) {
+      for (int n : m.hex_nodes[std::size_t(e)]) g.hex_nodes.push_back(thdt_node_of_[std::size_t(n)]);
+      g.hex_material.push_back(m.hex_material[std::size_t(e)] + 1);
+      g.hex_user_ids.push_back(e + 1);
+    }
+    for (const auto& md : m.materials)
+      g.part_titles.push_back(md.title.empty() ? "material " + std::to_string(md.number) : md.title.substr(0, 72));
+    thdt_ = std::make_unique<PlotWriter>();
+    if (resume)
+      thdt_->resume(thdt_root, g, word_size, PlotWriter::kDefaultMemberSizeLimitWords, thdt_states);
+    else
+      thdt_->open(thdt_root, g, word_size);
+  }
+}
+
+void HistoryOutput::write(const Model& m, const State& s,
+                          const std::vector<std::array<double, 3>>& contact_forces,
+                          double cpu_per_zone_ns) {
+  const std::size_t nm = m.materials.size();
+  // per-material books (element-lumped masses: the exact split of the nodal masses)
+  std::vector<double> ie(nm, 0), ke(nm, 0), hg(nm, 0), mass(nm, 0), mom(3 * nm, 0);
+  for (int e = 0; e < s.ne; ++e) {
+    const std::size_t k = std::size_t(s.mat[std::size_t(e)]);
+    ie[k] += s.ie_e[std::size_t(e)];
+    hg[k] += s.hg_e[std::size_t(e)];
+    mass[k] += s.mass_e[std::size_t(e)];
+    const double mc = s.mass_e[std::size_t(e)] / 8;
+    for (int n : s.conn[std::size_t(e)]) {
+      const std::size_t i = std::size_t(n);
+      ke[k] += 0.5 * mc * (s.vx[i] * s.vx[i] + s.vy[i] * s.vy[i] + s.vz[i] * s.vz[i]);
+      mom[3 * k] += mc * s.vx[i];
+      mom[3 * k + 1] += mc * s.vy[i];
+      mom[3 * k + 2] += mc * s.vz[i];
+    }
+  }
+  double mtot = 0, p[3] = {0, 0, 0};
+  for (std::size_t k = 0; k < nm; ++k) {
+    mtot += mass[k];
+    for (int a = 0; a < 3; ++a) p[a] += mom[3 * k + std::size_t(a)];
+  }
+  if (FILE* f = files_[kGlstat]) {
+    std::fprintf(f,
+                 "\n dt of cycle %9d is controlled by solid %9d\n\n"
+                 " time...........................  %12.5E\n"
+                 " time step......................  %12.5E\n"
+                 " kinetic energy.................  %12.5E\n"
+                 " internal energy................  %12.5E\n"
+                 " hourglass energy ..............  %12.5E\n"
+                 " bulk viscosity energy..........  %12.5E\n"
+                 " sliding interface energy.......  %12.5E\n"
+                 " rigid wall energy..............  %12.5E\n"
+                 " external work..................  %12.5E\n"
+                 " total energy...................  %12.5E\n"
+                 " total energy / initial energy..  %12.5E\n"
+                 " global x velocity..............  %12.5E\n"
+                 " global y velocity..............  %12.5E\n"
+                 " global z velocity..............  %12.5E\n",
+                 s.cycle, s.dt_elem + 1, s.time, s.dt_next, s.kinetic, s.internal, s.hourglass,
+                 s.bulk_viscous, s.contact, s.wall_work, s.external_work, s.total_energy(),
+                 s.energy_ratio(), mtot > 0 ? p[0] / mtot : 0, mtot > 0 ? p[1] / mtot : 0,
+                 mtot > 0 ? p[2] / mtot : 0);
+  (void)cpu_per_zone_ns;  // kept out of the file: the tables are bit-reproducible
+  }
+  if (FILE* f = files_[kMatsum]) {
+    std::fprintf(f, "\n time = %12.5E\n", s.time);
+    for (std::size_t k = 0; k < nm; ++k) {
+      std::fprintf(f,
+                   " mat.#=%5d   inten=  %12.4E  kinen=  %12.4E  hgeng=  %12.4E  mass=  %12.4E\n"
+                   "               x-mom=  %12.4E  y-mom=  %12.4E  z-mom=  %12.4E\n",
+                   m.materials[k].number, ie[k], ke[k], hg[k], mass[k], mom[3 * k], mom[3 * k + 1],
+                   mom[3 * k + 2]);
+    }
+  }
+  if (FILE* f = files_[kRwforc]) {
+    for (std::size_t w = 0; w < m.walls.size(); ++w) {
+      const auto& sw = m.walls[w];
+      double n[3] = {sw.head[0] - sw.tail[0], sw.head[1] - sw.tail[1], sw.head[2] - sw.tail[2]};
+      const double l = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+      const auto& F = s.wall_force[w];
+      // normal force: the push of the body on the wall, positive in compression
+      const double fn = -(F[0] * n[0] + F[1] * n[1] + F[2] * n[2]) / l;
+      // (+ 0.0 turns a negative zero into zero)
+      std::fprintf(f, " %12.5E %5zu %14.6E %14.6E %14.6E %14.6E\n", s.time, w + 1, fn + 0.0, F[0] + 0.0,
+                   F[1] + 0.0, F[2] + 0.0);
+    }
+  }
+  if (FILE* f = files_[kRcforc]) {
+    for (std::size_t i = 0; i < contact_forces.size(); ++i)
+      std::fprintf(f, " %12.5E %11zu %14.6E %14.6E %14.6E\n", s.time, i + 1, contact_forces[i][0],
+                   contact_forces[i][1], contact_forces[i][2]);
+  }
+  if (FILE* f = files_[kNodout]) {
+    std::fprintf(f,
+                 "\n n o d a l   p r i n t   o u t   f o r   t i m e   s t e p %8d   ( at time %12.5E )\n"
+                 " nodal point   x-disp       y-disp       z-disp       x-vel        y-vel        z-vel"
+                 "        x-accl       y-accl       z-accl       x-coor       y-coor       z-coor\n",
+                 s.cycle, s.time);
+    for (int n : th_nodes_) {
+      const std::size_t i = std::size_t(n);
+      std::fprintf(f, "%10d %12.4E %12.4E %12.4E %12.4E %12.4E %12.4E %12.4E %12.4E %12.4E %12.4E %12.4E %12.4E\n",
+                   n + 1, s.x[i] - s.x0[i], s.y[i] - s.y0[i], s.z[i] - s.z0[i], s.vx[i], s.vy[i], s.vz[i],
+                   s.ax[i], s.ay[i], s.az[i], s.x[i], s.y[i], s.z[i]);
+    }
+  }
+  if (FILE* f = files_[kElout]) {
+    std::fprintf(f,
+                 "\n e l e m e n t   s t r e s s   c a l c u l a t i o n s   f o r   t i m e   s t e p %8d   ( at time %12.5E )\n"
+                 "  element  materl     sig-xx       sig-yy       sig-zz       sig-xy       sig-yz       sig-zx"
+                 "     pressure    von-mises   eff-plastic\n",
+                 s.cycle, s.time);
+    for (int e : th_solids_) {
+      const double* sg = &s.sig[6 * std::size_t(e)];
+      std::fprintf(f, "%9d %7d %12.4E %12.4E %12.4E %12.4E %12.4E %12.4E %12.4E %12.4E %12.4E\n", e + 1,
+                   m.materials[std::size_t(s.mat[std::size_t(e)])].number, sg[0], sg[1], sg[2], sg[3], sg[4],
+                   sg[5], -(sg[0] + sg[1] + sg[2]) / 3, calc_von_mises(sg), s.eps_p[std::size_t(e)]);
+    }
+  }
+  for (FILE* f : files_)
+    if (f && std::ferror(f)) throw std::runtime_error("write error on a time-history file in " + dir_);
+  if (thdt_) {
+    const std::size_t ns = subset_nodes_.size(), nsol = th_solids_.size();
+    ps_.time = s.time;
+    ps_.kinetic_energy = s.kinetic;
+    ps_.internal_energy = s.internal;
+    ps_.total_energy = s.total_energy();
+    for (int a = 0; a < 3; ++a) ps_.velocity[std::size_t(a)] = mtot > 0 ? p[a] / mtot : 0;
+    ps_.mat_internal_energy = ie;
+    ps_.mat_kinetic_energy = ke;
+    ps_.mat_momentum = mom;
+    ps_.mat_mass = mass;
+    ps_.mat_hourglass_energy = hg;
+    ps_.coords.resize(3 * ns);
+    ps_.vel.resize(3 * ns);
+    ps_.acc.resize(3 * ns);
+    for (std::size_t k = 0; k < ns; ++k) {
+      const std::size_t i = std::size_t(subset_nodes_[k]);
+      ps_.coords[3 * k] = s.x[i]; ps_.coords[3 * k + 1] = s.y[i]; ps_.coords[3 * k + 2] = s.z[i];
+      ps_.vel[3 * k] = s.vx[i]; ps_.vel[3 * k + 1] = s.vy[i]; ps_.vel[3 * k + 2] = s.vz[i];
+      ps_.acc[3 * k] = s.ax[i]; ps_.acc[3 * k + 1] = s.ay[i]; ps_.acc[3 * k + 2] = s.az[i];
+    }
+    ps_.stress.resize(6 * nsol);
+    ps_.eps.resize(nsol);
+    ps_.alive.assign(nsol, 1);
+    for (std::size_t k = 0; k < nsol; ++k) {
+      const std::size_t e = std::size_t(th_solids_[k]);
+      for (int c = 0; c < 6; ++c) ps_.stress[6 * k + std::size_t(c)] = s.sig[6 * e + std::size_t(c)];
+      ps_.eps[k] = s.eps_p[e];
+    }
+    thdt_->write_state(ps_);
+  }
+}
+
+void HistoryOutput::current_sizes(std::uint64_t out[kNumAscii]) const {
+  for (int k = 0; k < kNumAscii; ++k) {
+    out[k] = 0;
+    if (files_[k]) {
+      std::fflush(files_[k]);
+      long pos = std::ftell(files_[k]);
+      out[k] = pos > 0 ? std::uint64_t(pos) : 0;
+    }
+  }
+}
+
+void HistoryOutput::flush() {
+  for (FILE* f : files_)
+    if (f) std::fflush(f);
+}
+
+}  // namespace impact3d

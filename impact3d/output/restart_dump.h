@@ -1,0 +1,44 @@
+#pragma once
+// Restart dumps (d=, default d3dump): the deck text, the output schedule and every dynamic
+// field of the State, with a format version and a CRC-32 checksum.  A damaged or foreign dump
+// is refused with a message saying what is wrong.
+
+#include <cstdint>
+#include <string>
+
+#include "impact3d/model/state.h"
+
+namespace impact3d {
+
+// Where the outputs stood when the dump was written, so a restart continues them exactly.
+struct OutputCursor {
+  double next_plot = 0;        // time of the next scheduled plot state
+  double next_history = 0;     // time of the next time-history output
+  int plot_states = 0;         // plot states to keep in the family on restart
+  int history_states = 0;      // time-history (d3thdt) states to keep
+  int dumps_written = 0;       // numbered dumps written so far
+  std::uint64_t ascii_bytes[8] = {};  // sizes of the ASCII history files (glstat, ...)
+};
+
+struct DumpHeader {
+  std::string deck_name;       // the deck file as given on the first run
+  std::string deck_text;       // its complete content (the model is rebuilt from it)
+  std::string plot_root;       // g= of the run that wrote the dump
+  std::string printed;         // o= of that run
+  int plot_word_size = 4;
+  OutputCursor cursor;
+};
+
+constexpr std::uint32_t kDumpVersion = 1;
+
+// Writes the dump atomically (temporary file, fsync, rename).  Throws std::runtime_error.
+void write_restart_dump(const std::string& path, const DumpHeader& h, State& s);
+
+// Reads the header (deck text, cursor) of a dump, after checking magic, version, size and
+// checksum.  Throws std::runtime_error naming the file and the problem.
+DumpHeader read_restart_dump_header(const std::string& path);
+
+// Restores the dynamic fields into a State built from the same model (sizes must match).
+void read_restart_dump_state(const std::string& path, State& s);
+
+}  // namespace impact3d
