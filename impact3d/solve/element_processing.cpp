@@ -88,10 +88,17 @@ inline ElemOut calc_forces_for_elem(const Model& m, State& s, int e) {
   s.vol[E] = v;
   const double rho = mc.rho * s.vol0[E] / v;
 
-  // bulk viscosity (compression only), from the midpoint strain rate
+  // bulk viscosity (compression only), from the midpoint strain rate.  Its work over this step
+  // is booked like the stress work (trapezoid): the q of the previous cycle acted in the forces
+  // over this step, the new one acts over the next.  Booking q^{n+1} trD^{n+1/2} alone counts
+  // as dissipated the work of a q that never acted in this interval: behind a front the strain
+  // rate alternates in sign from step to step and q only exists in the compressive half, so
+  // that form books energy no force removed (a 1-D elastic column on a wall showed twice its
+  // kinetic energy as bulk viscous energy).
+  const double q_old = s.q[E];
   const double q = calc_bulk_viscosity(rho, mc.c, v, trd, md.q1, md.q2);
   s.q[E] = q;
-  s.de_bv[E] = -q * trd * vm * dt;
+  s.de_bv[E] = -0.5 * (q_old + q) * trd * vm * dt;
 
   // stress divergence with sigma - q I, at x^n
   double se[6] = {sig[0] - q, sig[1] - q, sig[2] - q, sig[3], sig[4], sig[5]};
