@@ -1,0 +1,373 @@
+#include "postimpact/command_file.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "postimpact/history.h"
+#include "postimpact/png_io.h"
+
+namespace postimpact {
+
+namespace {
+
+bool to_int(const std::string& s, int& v) {
+    if (s.empty()) return false;
+    std::size_t pos = 0;
+    try { v = std::stoi(s, &pos); } catch (...) { return false; }
+    return pos == s.size();
+}
+
+bool to_double(const std::string& s, double& v) {
+    if (s.empty()) return false;
+    std::size_t pos = 0;
+    try { v = std::stod(s, &pos); } catch (...) { return false; }
+    return pos == s.size() && std::isfinite(v);
+}
+
+bool on_off(const std::string& s, bool& v) {
+    if (s == "on" || s == "yes" || s == "true" || s == "1") { v = true; return true; }
+    if (s == "off" || s == "no" || s == "false" || s == "0") { v = false; return true; }
+    return false;
+}
+
+std::string with_ext(const std::string& path, const std::string& ext) {
+    std::filesystem::path p(path);
+    if (p.extension().empty()) p += ext;
+    return p.string();
+}
+
+}  // namespace
+
+std::vector<std::string> split_command(const std::string& line) {
+    std::vector<std::string> w;
+    std::string cur;
+    bool in_quotes = false, have = false;
+    for (char c : line) {
+        if (in_quotes) {
+            if (c == '"') in_quotes = false;
+            else cur += c;
+            continue;
+        }
+        if (c == '#') break;
+        if (c == '"') { in_quotes = true; have = true; continue; }
+        if (c == ' ' || c == '\t' || c == '\r' || c == '\n') {
+            if (have) { w.push_back(cur); cur.clear(); have = false; }
+            continue;
+        }
+        cur += c;
+        have = true;
+    }
+    if (in_quotes) throw CommandError("unterminated quoted string");
+    if (have) w.push_back(cur);
+    return w;
+}
+
+Session::Session(std::ostream& log) : log_(log) {}
+Session::~Session() = default;
+
+Database& Session::db(const std::string& cmd) {
+    if (!db_) throw CommandError(cmd + ": no database open (open PATH, or give it on the command line)");
+    return *db_;
+}
+
+Renderer& Session::renderer() {
+    if (!renderer_) renderer_ = std::make_unique<Renderer>();
+    return *renderer_;
+}
+
+const Font& Session::font() {
+    if (!font_) font_ = std::make_unique<Font>(font_path_);
+    return *font_;
+}
+
+std::string Session::out_path(const std::string& name) const {
+    std::filesystem::path p(name);
+    if (p.is_absolute() || outdir_.empty()) return p.string();
+    return (std::filesystem::path(outdir_) / p).string();
+}
+
+void Session::wrote(const std::string& path) {
+    written_.push_back(path);
+    ++actions_;
+    log_ << "wrote " << path << "\n";
+}
+
+int Session::parse_state(const std::string& s, const std::string& cmd) {
+    Database& d = db(cmd);
+    const int n = d.num_states();
+    if (n == 0) throw CommandError(cmd + ": the database has no states");
+    if (s == "first") return 0;
+    if (s == "last") return n - 1;
+    if (s == "middle") return (n - 1) / 2;
+    int k = 0;
+    if (to_int(s, k)) {
+        if (k < 0) k = n + 1 + k;  // -1 = last
+        if (k < 1 || k > n)
+            throw CommandError(cmd + ": state " + s + " out of range (1.." + std::to_string(n) + ")");
+        return k - 1;
+    }
+    const auto eq = s.find('=');
+    double t = 0;
+    if (eq != std::string::npos && (s.substr(0, eq) == "t" || s.substr(0, eq) == "time") && to_double(s.substr(eq + 1), t)) {
+        int best = 0;
+        for (int i = 1; i < n; ++i)
+            if (std::fabs(d.time(i) - t) < std::fabs(d.time(best) - t)) best = i;
+        return best;
+    }
+    throw CommandError(cmd + ": expected a state (number, first, middle, last, t=TIME), found '" + s + "'");
+}
+
+std::vector<int> Session::parse_states(const std::vector<std::string>& w, std::size_t from, const std::string& cmd) {
+    Database& d = db(cmd);
+    const int n = d.num_states();
+    std::vector<int> out;
+    if (from >= w.size()) {  // default: five states from first to last
+        const int k = std::min(n, 5);
+        for (int i = 0; i < k; ++i) out.push_back(k == 1 ? n - 1 : static_cast<int>(std::lround(static_cast<double>(i) * (n - 1) / (k - 1))));
+        return out;
+    }
+    if (w[from] == "all") {
+        for (int i = 0; i < n; ++i) out.push_back(i);
+        return out;
+    }
+    if (w[from] == "every" || w[from] == "count") {
+        int k = 0;
+        if (from + 1 >= w.size() || !to_int(w[from + 1], k) || k < 1)
+            throw CommandError(cmd + ": " + w[from] + " needs a positive number");
+        if (w[from] == "every") {
+            for (int i = 0; i < n; i += k) out.push_back(i);
+            if (out.back() != n - 1) out.push_back(n - 1);
+        } else {
+            k = std::min(k, n);
+            for (int i = 0; i < k; ++i) out.push_back(k == 1 ? n - 1 : static_cast<int>(std::lround(static_cast<double>(i) * (n - 1) / (k - 1))));
+        }
+        return out;
+    }
+    for (std::size_t i = from; i < w.size(); ++i) {
+        // "a:b" ranges (1-based, inclusive)
+        const auto colon = w[i].find(':');
+        if (colon != std::string::npos) {
+            const int a = parse_state(w[i].substr(0, colon), cmd), b = parse_state(w[i].substr(colon + 1), cmd);
+            for (int k = a; k <= b; ++k) out.push_back(k);
+            continue;
+        }
+        out.push_back(parse_state(w[i], cmd));
+    }
+    return out;
+}
+
+void Session::execute_line(const std::string& line, const std::string& where) {
+    std::vector<std::string> w;
+    try {
+        w = split_command(line);
+    } catch (const CommandError& e) {
+        throw CommandError(where.empty() ? e.what() : where + ": " + e.what());
+    }
+    if (!w.empty()) execute(w, where);
+}
+
+void Session::execute(const std::vector<std::string>& w, const std::string& where) {
+    const std::string& c = w.at(0);
+    const std::size_t na = w.size() - 1;
+    auto need = [&](std::size_t lo, std::size_t hi, const char* usage) {
+        if (na < lo || na > hi) throw CommandError(c + ": usage: " + usage);
+    };
+    try {
+        if (c == "open" || c == "database") {
+            need(1, 1, "open PATH");
+            db_ = std::make_unique<Database>(w[1]);
+            state_ = -1;
+            log_ << "opened " << w[1] << ": " << db_->geometry().num_nodes() << " nodes, "
+                 << db_->geometry().num_hexes() << " solids, " << db_->num_states() << " states\n";
+        } else if (c == "outdir") {
+            need(1, 1, "outdir DIR");
+            outdir_ = w[1];
+            std::filesystem::create_directories(outdir_);
+        } else if (c == "size" || c == "plotsize") {
+            need(1, 2, "size W H (or WxH)");
+            int W = 0, H = 0;
+            bool ok = false;
+            if (na == 2) ok = to_int(w[1], W) && to_int(w[2], H);
+            else if (auto x = w[1].find('x'); x != std::string::npos) ok = to_int(w[1].substr(0, x), W) && to_int(w[1].substr(x + 1), H);
+            if (!ok || W < 64 || H < 64 || W > 8192 || H > 8192) throw CommandError(c + ": expected a width and a height in 64..8192");
+            if (c == "size") { ps_.width = W; ps_.height = H; }
+            else { plot_w_ = W; plot_h_ = H; }
+        } else if (c == "view") {
+            need(1, 2, "view NAME | view AZIMUTH ELEVATION");
+            if (na == 1) {
+                if (!named_view(w[1], ps_.view))
+                    throw CommandError("view: unknown view '" + w[1] + "' (iso front back left right top bottom +x -x +y -y +z -z, or AZ EL)");
+            } else {
+                double az = 0, el = 0;
+                if (!to_double(w[1], az) || !to_double(w[2], el) || el < -90 || el > 90)
+                    throw CommandError("view: expected azimuth and elevation in degrees (elevation -90..90)");
+                ps_.view.azimuth = az;
+                ps_.view.elevation = el;
+            }
+        } else if (c == "up") {
+            need(1, 1, "up x|y|z");
+            if (w[1] == "x") ps_.view.up = 0;
+            else if (w[1] == "y") ps_.view.up = 1;
+            else if (w[1] == "z") ps_.view.up = 2;
+            else throw CommandError("up: expected x, y or z");
+        } else if (c == "mirror") {
+            need(1, 1, "mirror none|x|y|z|xy|xz|yz|xyz");
+            try { ps_.mirror = parse_mirror(w[1]); } catch (const std::invalid_argument& e) { throw CommandError(e.what()); }
+        } else if (c == "fringe") {
+            need(1, 1, "fringe QUANTITY|none|material");
+            Quantity q;
+            if (w[1] != "none" && w[1] != "material" && !find_quantity(w[1], q))
+                throw CommandError("fringe: unknown quantity '" + w[1] + "' (none material " + quantity_keys() + ")");
+            ps_.fringe = (w[1] == "none" || w[1] == "material") ? w[1] : q.key;
+        } else if (c == "range") {
+            need(1, 2, "range auto | range MIN MAX");
+            if (na == 1 && w[1] == "auto") ps_.range_auto = true;
+            else {
+                double lo = 0, hi = 0;
+                if (na != 2 || !to_double(w[1], lo) || !to_double(w[2], hi) || !(hi > lo))
+                    throw CommandError("range: expected auto or MIN MAX with MIN < MAX");
+                ps_.range_auto = false;
+                ps_.range_lo = lo;
+                ps_.range_hi = hi;
+            }
+        } else if (c == "bands") {
+            need(1, 1, "bands N");
+            int n = 0;
+            if (!to_int(w[1], n) || n < 2 || n > 64) throw CommandError("bands: expected 2..64");
+            ps_.bands = n;
+        } else if (c == "supersample") {
+            need(1, 1, "supersample N");
+            int n = 0;
+            if (!to_int(w[1], n) || n < 1 || n > 4) throw CommandError("supersample: expected 1..4");
+            ps_.supersample = n;
+        } else if (c == "average" || c == "edges" || c == "legend" || c == "triad") {
+            need(1, 1, "on|off");
+            bool v = false;
+            if (!on_off(w[1], v)) throw CommandError(c + ": expected on or off");
+            (c == "average" ? ps_.average : c == "edges" ? ps_.edges : c == "legend" ? ps_.legend : ps_.triad) = v;
+        } else if (c == "units") {
+            need(1, 1, "units si|none");
+            if (w[1] == "si" || w[1] == "SI") ps_.units.si = true;
+            else if (w[1] == "none") ps_.units.si = false;
+            else throw CommandError("units: expected si or none");
+        } else if (c == "scale") {
+            need(1, 1, "scale FACTOR");
+            double f = 0;
+            if (!to_double(w[1], f)) throw CommandError("scale: expected a number");
+            ps_.deform_scale = f;
+        } else if (c == "font") {
+            need(1, 1, "font PATH");
+            font_path_ = w[1];
+            font_ = std::make_unique<Font>(font_path_);
+        } else if (c == "title") {
+            if (na == 0) throw CommandError("title: usage: title TEXT | title auto");
+            if (na == 1 && w[1] == "auto") ps_.title.clear();
+            else {
+                std::string t;
+                for (std::size_t i = 1; i < w.size(); ++i) t += (i > 1 ? " " : "") + w[i];
+                ps_.title = t;
+            }
+        } else if (c == "state") {
+            need(1, 1, "state N|first|middle|last|t=TIME");
+            state_ = parse_state(w[1], c);
+        } else if (c == "picture") {
+            need(1, 2, "picture FILE [STATE]");
+            Database& d = db(c);
+            const int si = na == 2 ? parse_state(w[2], c) : (state_ >= 0 ? state_ : d.num_states() - 1);
+            if (d.num_states() == 0) throw CommandError("picture: the database has no states");
+            const std::string path = out_path(with_ext(w[1], ".png"));
+            write_png(path, make_picture(d, {si}, ps_, renderer(), font()));
+            wrote(path);
+        } else if (c == "sequence") {
+            if (na < 1) throw CommandError("sequence: usage: sequence FILE [STATES...|all|every K|count N]");
+            Database& d = db(c);
+            const std::vector<int> st = parse_states(w, 2, c);
+            if (st.size() > 16) throw CommandError("sequence: at most 16 states side by side (frames makes an animation)");
+            const std::string path = out_path(with_ext(w[1], ".png"));
+            write_png(path, make_picture(d, st, ps_, renderer(), font()));
+            wrote(path);
+        } else if (c == "frames") {
+            if (na < 1) throw CommandError("frames: usage: frames PREFIX [STATES...|all|every K|count N]");
+            Database& d = db(c);
+            const std::vector<int> st = na == 1 ? parse_states({"frames", "x", "all"}, 2, c) : parse_states(w, 2, c);
+            int k = 0;
+            for (int si : st) {
+                char num[16];
+                std::snprintf(num, sizeof num, "%04d", ++k);
+                const std::string path = out_path(w[1] + num + ".png");
+                write_png(path, make_picture(d, {si}, ps_, renderer(), font(), st));
+                wrote(path);
+            }
+        } else if (c == "history") {
+            if (na < 2) throw CommandError("history: usage: history FILE energy | global VARS | material ID VARS | node ID VARS | element ID VARS ...");
+            Database& d = db(c);
+            std::vector<HistoryCurve> curves;
+            try {
+                curves = parse_history(std::vector<std::string>(w.begin() + 2, w.end()), d);
+            } catch (const std::invalid_argument& e) {
+                throw CommandError(e.what());
+            }
+            const HistoryData h = extract_history(d, curves);
+            const std::string png = out_path(with_ext(w[1], ".png"));
+            std::filesystem::path csv(png);
+            csv.replace_extension(".csv");
+            std::string title = ps_.title.empty() ? d.geometry().title : ps_.title;
+            while (!title.empty() && title.back() == ' ') title.pop_back();
+            write_png(png, plot_history(h, title, ps_.units, plot_w_, plot_h_, font()));
+            wrote(png);
+            write_csv(csv.string(), h, ps_.units);
+            written_.push_back(csv.string());
+            log_ << "wrote " << csv.string() << "\n";
+        } else if (c == "echo") {
+            for (std::size_t i = 1; i < w.size(); ++i) log_ << (i > 1 ? " " : "") << w[i];
+            log_ << "\n";
+        } else if (c == "default") {
+            need(0, 0, "default");
+            default_set();
+        } else {
+            throw CommandError("unknown command '" + c + "'");
+        }
+    } catch (const CommandError& e) {
+        throw CommandError(where.empty() ? e.what() : where + ": " + e.what());
+    } catch (const std::exception& e) {
+        throw CommandError((where.empty() ? "" : where + ": ") + c + ": " + e.what());
+    }
+}
+
+void Session::run_text(const std::string& text, const std::string& name) {
+    std::istringstream in(text);
+    std::string line;
+    int ln = 0;
+    while (std::getline(in, line)) {
+        ++ln;
+        execute_line(line, name + ":" + std::to_string(ln));
+    }
+}
+
+void Session::run_file(const std::string& path) {
+    std::ifstream f(path);
+    if (!f) throw CommandError("cannot read command file " + path);
+    std::stringstream ss;
+    ss << f.rdbuf();
+    run_text(ss.str(), path);
+}
+
+void Session::default_set() {
+    Database& d = db("default");
+    const std::string saved_fringe = ps_.fringe;
+    ps_.fringe = "eps";
+    if (d.num_states() > 0) {
+        execute({"picture", "eps_first", "first"}, "default");
+        execute({"picture", "eps_middle", "middle"}, "default");
+        execute({"picture", "eps_last", "last"}, "default");
+        execute({"sequence", "eps_sequence"}, "default");
+        execute({"history", "energies", "energy"}, "default");
+    }
+    ps_.fringe = saved_fringe;
+}
+
+}  // namespace postimpact

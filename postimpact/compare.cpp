@@ -1,0 +1,253 @@
+#include "postimpact/compare.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <memory>
+#include <sstream>
+#include <stdexcept>
+#include <vector>
+
+#include "postimpact/database.h"
+
+namespace postimpact {
+
+const char* const Tolerances::kFields[7] = {"time", "coords", "vel", "acc", "stress", "eps", "energy"};
+
+Tolerance Tolerances::get(const std::string& f) const {
+    if (auto it = field.find(f); it != field.end()) return it->second;
+    if (auto it = field.find("default"); it != field.end()) return it->second;
+    return {};
+}
+
+Tolerances Tolerances::parse(const std::string& text, const std::string& name) {
+    Tolerances t;
+    std::istringstream in(text);
+    std::string line;
+    int ln = 0;
+    auto fail = [&](const std::string& msg) {
+        throw std::runtime_error(name + ":" + std::to_string(ln) + ": " + msg);
+    };
+    auto num = [&](const std::string& s) {
+        std::size_t pos = 0;
+        double v = 0;
+        try { v = std::stod(s, &pos); } catch (...) { pos = 0; }
+        if (pos != s.size() || !(v >= 0) || !std::isfinite(v)) fail("expected a non-negative number, found '" + s + "'");
+        return v;
+    };
+    while (std::getline(in, line)) {
+        ++ln;
+        if (auto h = line.find('#'); h != std::string::npos) line.erase(h);
+        std::istringstream ls(line);
+        std::vector<std::string> w;
+        for (std::string s; ls >> s;) w.push_back(s);
+        if (w.empty()) continue;
+        const std::string& f = w[0];
+        const bool known = f == "default" || std::any_of(std::begin(kFields), std::end(kFields), [&](const char* k) { return f == k; });
+        if (!known) fail("unknown field '" + f + "' (time coords vel acc stress eps energy default)");
+        Tolerance tol;
+        bool have_rel = false, have_abs = false;
+        std::vector<std::string> pos;
+        for (std::size_t i = 1; i < w.size(); ++i) {
+            const auto eq = w[i].find('=');
+            if (eq == std::string::npos) { pos.push_back(w[i]); continue; }
+            const std::string k = w[i].substr(0, eq), v = w[i].substr(eq + 1);
+            if (k == "rel") { tol.rel = num(v); have_rel = true; }
+            else if (k == "abs") { tol.abs = num(v); have_abs = true; }
+            else fail("expected rel= or abs=, found '" + w[i] + "'");
+        }
+        if (!pos.empty() && (have_rel || have_abs)) fail("mixes positional and rel=/abs= values");
+        if (pos.size() > 2) fail("too many values (FIELD REL ABS)");
+        if (pos.size() >= 1) tol.rel = num(pos[0]);
+        if (pos.size() == 2) tol.abs = num(pos[1]);
+        if (pos.empty() && !have_rel && !have_abs) fail("no tolerance given for '" + f + "'");
+        t.field[f] = tol;
+    }
+    return t;
+}
+
+Tolerances Tolerances::read(const std::string& path) {
+    std::ifstream f(path);
+    if (!f) throw std::runtime_error("cannot read tolerance file " + path);
+    std::stringstream ss;
+    ss << f.rdbuf();
+    return parse(ss.str(), path);
+}
+
+namespace {
+
+struct Diff {
+    double ratio = 0;  // |d| / allowed (inf when allowed = 0)
+    double a = 0, b = 0, absd = 0, reld = 0;
+    int state = 0;
+    int id = 0;        // user id (node / element / material), 0 for scalars
+    std::string what;  // "node", "elem", "" ...
+    std::string comp;  // "x", "sxx", ...
+};
+
+struct FieldStats {
+    std::string name;
+    Tolerance tol;
+    long long compared = 0, outside = 0;
+    Diff max_abs, max_rel;
+    std::vector<Diff> worst;
+};
+
+void add(FieldStats& fs, const Diff& d0, std::size_t keep) {
+    Diff d = d0;
+    d.absd = std::fabs(d.a - d.b);
+    const double mag = std::max(std::fabs(d.a), std::fabs(d.b));
+    d.reld = mag > 0 ? d.absd / mag : 0.0;
+    const bool nan = std::isnan(d.a) != std::isnan(d.b);
+    if (std::isnan(d.a) && std::isnan(d.b)) d.absd = 0, d.reld = 0;
+    const double allowed = fs.tol.abs + fs.tol.rel * mag;
+    ++fs.compared;
+    if (fs.compared == 1 || d.absd > fs.max_abs.absd) fs.max_abs = d;
+    if (fs.compared == 1 || d.reld > fs.max_rel.reld) fs.max_rel = d;
+    const bool out = nan || d.absd > allowed;
+    if (!out) return;
+    ++fs.outside;
+    d.ratio = nan ? INFINITY : (allowed > 0 ? d.absd / allowed : INFINITY);
+    fs.worst.push_back(d);
+    if (fs.worst.size() > 4 * keep + 16) {
+        std::stable_sort(fs.worst.begin(), fs.worst.end(), [](const Diff& x, const Diff& y) {
+            return x.ratio > y.ratio || (x.ratio == y.ratio && x.absd > y.absd);
+        });
+        fs.worst.resize(keep);
+    }
+}
+
+std::string g(double v) {
+    char b[32];
+    std::snprintf(b, sizeof b, "%.6g", v);
+    return b;
+}
+
+std::string where(const Diff& d, Database& db) {
+    std::string s = "state " + std::to_string(d.state + 1) + " (t " + g(db.time(d.state)) + ")";
+    if (!d.what.empty()) s += " " + d.what + " " + std::to_string(d.id);
+    if (!d.comp.empty()) s += " " + d.comp;
+    return s;
+}
+
+}  // namespace
+
+int compare_databases(const std::string& pa, const std::string& pb, const CompareOptions& opt,
+                      std::ostream& out) {
+    std::unique_ptr<Database> A, B;
+    try {
+        A = std::make_unique<Database>(pa);
+        B = std::make_unique<Database>(pb);
+    } catch (const std::exception& e) {
+        out << "compare: cannot open: " << e.what() << "\n";
+        return 2;
+    }
+    const auto& ga = A->geometry();
+    const auto& gb = B->geometry();
+    out << "compare: A = " << pa << " (" << A->num_states() << " states)\n"
+        << "         B = " << pb << " (" << B->num_states() << " states)\n";
+    if (ga.num_nodes() != gb.num_nodes() || ga.num_hexes() != gb.num_hexes() || ga.num_materials != gb.num_materials) {
+        out << "compare: the meshes differ: A has " << ga.num_nodes() << " nodes, " << ga.num_hexes()
+            << " solids, " << ga.num_materials << " materials; B has " << gb.num_nodes() << ", "
+            << gb.num_hexes() << ", " << gb.num_materials << "\nresult: NOT COMPARABLE\n";
+        return 2;
+    }
+    if (ga.hex_nodes != gb.hex_nodes)
+        out << "compare: warning: the element connectivities differ\n";
+    const std::size_t keep = static_cast<std::size_t>(std::max(opt.report, 0));
+    std::vector<FieldStats> fs;
+    for (const char* f : Tolerances::kFields) fs.push_back(FieldStats{f, opt.tol.get(f), 0, 0, {}, {}, {}});
+    auto F = [&](const char* n) -> FieldStats& {
+        for (auto& x : fs)
+            if (x.name == n) return x;
+        return fs[0];
+    };
+    const char* xyz[3] = {"x", "y", "z"};
+    const char* sc[6] = {"sxx", "syy", "szz", "sxy", "syz", "szx"};
+    const int ns = std::min(A->num_states(), B->num_states());
+    for (int i = 0; i < ns; ++i) {
+        const impact3d::PlotState sa = A->state(i);  // copies: the cache may be trimmed
+        const impact3d::PlotState sb = B->state(i);
+        add(F("time"), Diff{0, sa.time, sb.time, 0, 0, i, 0, "", ""}, keep);
+        auto nodal = [&](const char* field, const std::vector<double>& a, const std::vector<double>& b) {
+            if (a.empty() || b.empty() || a.size() != b.size()) return;
+            for (std::size_t k = 0; k < a.size(); ++k)
+                add(F(field), Diff{0, a[k], b[k], 0, 0, i, A->node_id(static_cast<int>(k / 3)), "node", xyz[k % 3]}, keep);
+        };
+        nodal("coords", sa.coords, sb.coords);
+        nodal("vel", sa.vel, sb.vel);
+        nodal("acc", sa.acc, sb.acc);
+        if (sa.stress.size() == sb.stress.size())
+            for (std::size_t k = 0; k < sa.stress.size(); ++k)
+                add(F("stress"), Diff{0, sa.stress[k], sb.stress[k], 0, 0, i, A->element_id(static_cast<int>(k / 6)), "elem", sc[k % 6]}, keep);
+        if (sa.eps.size() == sb.eps.size())
+            for (std::size_t k = 0; k < sa.eps.size(); ++k)
+                add(F("eps"), Diff{0, sa.eps[k], sb.eps[k], 0, 0, i, A->element_id(static_cast<int>(k)), "elem", ""}, keep);
+        add(F("energy"), Diff{0, sa.kinetic_energy, sb.kinetic_energy, 0, 0, i, 0, "", "kinetic"}, keep);
+        add(F("energy"), Diff{0, sa.internal_energy, sb.internal_energy, 0, 0, i, 0, "", "internal"}, keep);
+        add(F("energy"), Diff{0, sa.total_energy, sb.total_energy, 0, 0, i, 0, "", "total"}, keep);
+        auto mat = [&](const char* comp, const std::vector<double>& a, const std::vector<double>& b) {
+            if (a.size() != b.size()) return;
+            for (std::size_t k = 0; k < a.size(); ++k)
+                add(F("energy"), Diff{0, a[k], b[k], 0, 0, i, static_cast<int>(k + 1), "material", comp}, keep);
+        };
+        mat("internal", sa.mat_internal_energy, sb.mat_internal_energy);
+        mat("kinetic", sa.mat_kinetic_energy, sb.mat_kinetic_energy);
+        mat("hourglass", sa.mat_hourglass_energy, sb.mat_hourglass_energy);
+        // element deletion flags must agree
+        if (sa.alive != sb.alive && !(sa.alive.empty() || sb.alive.empty())) {
+            for (std::size_t k = 0; k < sa.alive.size(); ++k)
+                if (sa.alive[k] != sb.alive[k])
+                    add(F("eps"), Diff{0, static_cast<double>(sa.alive[k]), static_cast<double>(sb.alive[k]), 0, 0, i,
+                                       A->element_id(static_cast<int>(k)), "elem", "alive"}, keep);
+        }
+    }
+    char line[512];
+    out << "\n";
+    std::snprintf(line, sizeof line, "%-7s %10s %10s  %12s  %12s  %10s  %s\n", "field", "rel tol", "abs tol",
+                  "max |a-b|", "max rel", "outside", "largest absolute difference at");
+    out << line;
+    long long outside = 0;
+    std::vector<std::pair<std::string, Diff>> all_worst;
+    for (auto& f : fs) {
+        if (f.compared == 0) {
+            std::snprintf(line, sizeof line, "%-7s %10s %10s  %12s  %12s  %10s\n", f.name.c_str(), g(f.tol.rel).c_str(),
+                          g(f.tol.abs).c_str(), "-", "-", "-");
+            out << line;
+            continue;
+        }
+        outside += f.outside;
+        std::snprintf(line, sizeof line, "%-7s %10s %10s  %12s  %12s  %10lld  %s\n", f.name.c_str(), g(f.tol.rel).c_str(),
+                      g(f.tol.abs).c_str(), g(f.max_abs.absd).c_str(), g(f.max_rel.reld).c_str(), f.outside,
+                      f.max_abs.absd > 0 ? where(f.max_abs, *A).c_str() : "");
+        out << line;
+        for (const auto& d : f.worst) all_worst.emplace_back(f.name, d);
+    }
+    std::stable_sort(all_worst.begin(), all_worst.end(), [](const auto& x, const auto& y) {
+        return x.second.ratio > y.second.ratio || (x.second.ratio == y.second.ratio && x.second.absd > y.second.absd);
+    });
+    if (!all_worst.empty() && keep > 0) {
+        out << "\nlargest differences outside tolerance (|a-b| / allowed, worst first):\n";
+        for (std::size_t k = 0; k < std::min(keep, all_worst.size()); ++k) {
+            const auto& [name, d] = all_worst[k];
+            std::snprintf(line, sizeof line, "  %-7s %s: a %s  b %s  |a-b| %s  rel %s  x%s\n", name.c_str(),
+                          where(d, *A).c_str(), g(d.a).c_str(), g(d.b).c_str(), g(d.absd).c_str(), g(d.reld).c_str(),
+                          std::isinf(d.ratio) ? "inf" : g(d.ratio).c_str());
+            out << line;
+        }
+    }
+    int rc = 0;
+    out << "\n";
+    if (A->num_states() != B->num_states()) {
+        out << "states: A has " << A->num_states() << ", B has " << B->num_states() << " (the first " << ns
+            << " compared)\n";
+        rc = 1;
+    }
+    if (outside > 0) rc = 1;
+    if (rc == 0) out << "result: SAME within tolerance (" << ns << " states)\n";
+    else out << "result: DIFFERENT (" << outside << " values outside tolerance)\n";
+    return rc;
+}
+
+}  // namespace postimpact

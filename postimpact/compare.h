@@ -1,0 +1,38 @@
+// postimpact compare A B: state-by-state comparison of two plot databases with relative and
+// absolute tolerances per field.
+#pragma once
+
+#include <map>
+#include <ostream>
+#include <string>
+
+namespace postimpact {
+
+struct Tolerance {
+    double rel = 0.0;  // relative to the larger magnitude of the two values
+    double abs = 0.0;  // absolute
+};
+
+// Fields: time, coords, vel, acc, stress, eps, energy (kinetic, internal, total, and the
+// per-material energies).  A value passes when |a - b| <= abs + rel * max(|a|, |b|).
+struct Tolerances {
+    std::map<std::string, Tolerance> field;
+    Tolerance get(const std::string& f) const;
+    // File: one "FIELD REL ABS" (or "FIELD rel=R abs=A") per line, '#' comments, FIELD one of
+    // the fields above or "default".  Throws std::runtime_error (file:line: message).
+    static Tolerances read(const std::string& path);
+    static Tolerances parse(const std::string& text, const std::string& name = "tolerances");
+    static const char* const kFields[7];
+};
+
+struct CompareOptions {
+    Tolerances tol;
+    int report = 10;  // largest out-of-tolerance differences listed
+};
+
+// Returns 0 when every compared value is within tolerance and the databases have the same
+// states, 1 when not, 2 when they cannot be compared (unreadable, different mesh sizes).
+int compare_databases(const std::string& a, const std::string& b, const CompareOptions& opt,
+                      std::ostream& out);
+
+}  // namespace postimpact

@@ -1,0 +1,58 @@
+#include "postimpact/database.h"
+
+namespace postimpact {
+
+Database::Database(const std::string& root) : root_(root) {
+    reader_.open(root);
+    const auto& g = reader_.geometry();
+    for (std::size_t i = 0; i < g.node_user_ids.size(); ++i) node_lookup_.emplace(g.node_user_ids[i], static_cast<int>(i));
+    for (std::size_t i = 0; i < g.hex_user_ids.size(); ++i) elem_lookup_.emplace(g.hex_user_ids[i], static_cast<int>(i));
+}
+
+const impact3d::PlotState& Database::state(int i) {
+    if (auto it = cache_.find(i); it != cache_.end()) return it->second;
+    impact3d::PlotState s = reader_.state(i);
+    const std::size_t bytes = 8 * (s.coords.size() + s.vel.size() + s.acc.size() + s.stress.size() + s.eps.size());
+    if (cache_bytes_ + bytes > (std::size_t{1} << 30)) {  // keep the cache under 1 GiB
+        cache_.clear();
+        cache_bytes_ = 0;
+    }
+    cache_bytes_ += bytes;
+    return cache_.emplace(i, std::move(s)).first->second;
+}
+
+int Database::node_id(int index) const {
+    const auto& g = reader_.geometry();
+    return g.node_user_ids.empty() ? index + 1 : g.node_user_ids[index];
+}
+
+int Database::element_id(int index) const {
+    const auto& g = reader_.geometry();
+    return g.hex_user_ids.empty() ? index + 1 : g.hex_user_ids[index];
+}
+
+int Database::node_index(int id) const {
+    const auto& g = reader_.geometry();
+    if (g.node_user_ids.empty()) return (id >= 1 && id <= g.num_nodes()) ? id - 1 : -1;
+    auto it = node_lookup_.find(id);
+    return it == node_lookup_.end() ? -1 : it->second;
+}
+
+int Database::element_index(int id) const {
+    const auto& g = reader_.geometry();
+    if (g.hex_user_ids.empty()) return (id >= 1 && id <= g.num_hexes()) ? id - 1 : -1;
+    auto it = elem_lookup_.find(id);
+    return it == elem_lookup_.end() ? -1 : it->second;
+}
+
+std::string Database::part_name(int material) const {
+    const auto& g = reader_.geometry();
+    if (material >= 1 && material <= static_cast<int>(g.part_titles.size())) {
+        std::string t = g.part_titles[material - 1];
+        while (!t.empty() && t.back() == ' ') t.pop_back();
+        if (!t.empty()) return t;
+    }
+    return "part " + std::to_string(material);
+}
+
+}  // namespace postimpact

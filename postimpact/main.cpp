@@ -1,0 +1,148 @@
+// postimpact: offscreen post-processor of IMPACT-3D plot databases (d3plot family).
+// Usage: README.md, section POST-IMPACT, and `postimpact --help`.
+#include <cstring>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "postimpact/command_file.h"
+#include "postimpact/compare.h"
+#include "postimpact/quantities.h"
+#include "version.h"
+
+namespace {
+
+const char* kUsage =
+    "usage: postimpact [DATABASE] [OPTIONS]        pictures and time histories\n"
+    "       postimpact compare A B [--tol FILE] [--report N]\n"
+    "\n"
+    "DATABASE is the root file of a d3plot family (d3plot).  With no -c/-e/-o/--sequence/\n"
+    "--frames/--history option the default set is written: eps_first.png, eps_middle.png,\n"
+    "eps_last.png (effective plastic strain), eps_sequence.png, energies.png + energies.csv.\n"
+    "Options apply in order, as the commands of a command file (README.md, POST-IMPACT):\n"
+    "  -c, --commands FILE    run a command file\n"
+    "  -e, --exec 'COMMAND'   run one command (e.g. -e 'history v.png node 1333 vz')\n"
+    "  -o FILE                picture of the current state\n"
+    "  --sequence FILE        the states side by side (--states first selects them)\n"
+    "  --states S,S,..        states for --sequence/--frames (numbers from 1, first,\n"
+    "                         middle, last, t=TIME, A:B, all, every K, count N)\n"
+    "  --frames PREFIX        numbered frames PREFIX0001.png ... for an animation\n"
+    "  --history FILE         energies (PNG + CSV)\n"
+    "  -d, --outdir DIR       directory of the files written\n"
+    "  --state S              current state (default: last)\n"
+    "  --fringe Q             none, material, or a quantity (default eps)\n"
+    "  --view V               iso (default), front, back, left, right, top, bottom,\n"
+    "                         +x -x +y -y +z -z, or AZ,EL in degrees\n"
+    "  --up x|y|z             axis shown upward (default z)\n"
+    "  --mirror M             reflect across coordinate planes: x, y, z, xy, ... none\n"
+    "  --range auto|MIN,MAX   fringe range     --bands N     number of colour bands\n"
+    "  --size WxH             picture size (1600x1200)    --plotsize WxH (1200x800)\n"
+    "  --title TEXT           --units si|none   --scale F (displacement magnification)\n"
+    "  --no-edges  --no-average  --no-legend  --no-triad   --font PATH.ttf\n"
+    "  -h, --help   --version\n"
+    "compare: --tol FILE (lines 'FIELD REL ABS', FIELD time coords vel acc stress eps\n"
+    "energy default; without it values must be equal), --report N (10).\n"
+    "Exit status: 0 done (compare: same within tolerance), 1 compare: different,\n"
+    "2 usage, input or rendering error.\n";
+
+int run_compare(int argc, char** argv) {
+    std::vector<std::string> pos;
+    postimpact::CompareOptions opt;
+    for (int i = 2; i < argc; ++i) {
+        const std::string a = argv[i];
+        if ((a == "--tol" || a == "--tolerances" || a == "-t") && i + 1 < argc) {
+            opt.tol = postimpact::Tolerances::read(argv[++i]);
+        } else if (a == "--report" && i + 1 < argc) {
+            opt.report = std::stoi(argv[++i]);
+        } else if (!a.empty() && a[0] == '-') {
+            std::cerr << "postimpact compare: unknown option " << a << "\n" << kUsage;
+            return 2;
+        } else {
+            pos.push_back(a);
+        }
+    }
+    if (pos.size() != 2) {
+        std::cerr << "postimpact compare: expected two databases\n" << kUsage;
+        return 2;
+    }
+    return postimpact::compare_databases(pos[0], pos[1], opt, std::cout);
+}
+
+std::vector<std::string> split_commas(const std::string& s) {
+    std::vector<std::string> out;
+    std::string cur;
+    for (char c : s) {
+        if (c == ',') { out.push_back(cur); cur.clear(); }
+        else cur += c;
+    }
+    out.push_back(cur);
+    return out;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    if (argc >= 2 && std::strcmp(argv[1], "compare") == 0) {
+        try {
+            return run_compare(argc, argv);
+        } catch (const std::exception& e) {
+            std::cerr << "postimpact compare: " << e.what() << "\n";
+            return 2;
+        }
+    }
+    postimpact::Session s(std::cout);
+    bool explicit_actions = false;
+    std::vector<std::string> states;  // for --sequence / --frames
+    try {
+        for (int i = 1; i < argc; ++i) {
+            const std::string a = argv[i];
+            auto value = [&]() -> std::string {
+                if (i + 1 >= argc) throw postimpact::CommandError("option " + a + " needs a value");
+                return argv[++i];
+            };
+            auto cmd = [&](std::vector<std::string> w) { s.execute(w, "option " + a); };
+            if (a == "-h" || a == "--help") { std::cout << kUsage; return 0; }
+            if (a == "--version") { std::cout << "postimpact (IMPACT-3D " << IMPACT3D_VERSION << ")\n"; return 0; }
+            if (a == "-c" || a == "--commands") { s.run_file(value()); explicit_actions = true; }
+            else if (a == "-e" || a == "--exec") { s.execute_line(value(), "option -e"); explicit_actions = true; }
+            else if (a == "-o") { cmd({"picture", value()}); explicit_actions = true; }
+            else if (a == "--states") states = split_commas(value());
+            else if (a == "--sequence" || a == "--frames") {
+                std::vector<std::string> w{a.substr(2), value()};
+                w.insert(w.end(), states.begin(), states.end());
+                if (a == "--frames" && states.empty()) w.push_back("all");
+                cmd(w);
+                explicit_actions = true;
+            } else if (a == "--history") { cmd({"history", value(), "energy"}); explicit_actions = true; }
+            else if (a == "-d" || a == "--outdir") cmd({"outdir", value()});
+            else if (a == "--title" || a == "--font") cmd({a.substr(2), value()});
+            else if (a == "--no-edges" || a == "--no-average" || a == "--no-legend" || a == "--no-triad") cmd({a.substr(5), "off"});
+            else if (a == "--state" || a == "--fringe" || a == "--view" || a == "--up" || a == "--mirror" ||
+                     a == "--range" || a == "--bands" || a == "--size" || a == "--plotsize" || a == "--units" ||
+                     a == "--scale" || a == "--supersample") {
+                std::vector<std::string> w{a.substr(2)};
+                for (const auto& v : split_commas(value())) w.push_back(v);
+                cmd(w);
+            } else if (!a.empty() && a[0] == '-') {
+                std::cerr << "postimpact: unknown option " << a << "\n" << kUsage;
+                return 2;
+            } else if (!s.has_database()) {
+                cmd({"open", a});
+            } else {
+                std::cerr << "postimpact: unexpected argument " << a << "\n" << kUsage;
+                return 2;
+            }
+        }
+        if (!explicit_actions) {
+            if (!s.has_database()) {
+                std::cerr << "postimpact: no database given\n" << kUsage;
+                return 2;
+            }
+            s.default_set();
+        }
+    } catch (const std::exception& e) {
+        std::cerr << "postimpact: " << e.what() << "\n";
+        return 2;
+    }
+    return 0;
+}
