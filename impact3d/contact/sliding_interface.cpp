@@ -1,29 +1,464 @@
 #include "impact3d/contact/sliding_interface.h"
 
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <utility>
+
+#include "impact3d/contact/contact_kernels.h"
+
+// Type-3 sliding interfaces (shared/spec/physics.md section 5, seed part II).
+//
+// Each interface has two surfaces (0 slave, 1 master) and one or two passes: pass 0 puts the
+// slave nodes against the master segments, pass 1 (symmetric treatment, seed fig. 4) the master
+// nodes against the slave segments.  A pass, every cycle:
+//   1. bucket grid of its segments, boxes grown by the largest penetration a segment accepts
+//      (rebuilt every cycle: O(segments));
+//   2. per node (OpenMP, each node writes only its own slot): the candidate segments are those
+//      of the node's cell whose grown box holds the node, taken in segment order; the closest
+//      point over them (contact_kernels); penetration p = -gap when 0 < p <= p_max; penalty
+//      F = k p n plus Coulomb friction;
+//   3. serial scatter in node order: F on the node, -F N_A on the segment's nodes.
+// The candidate set does not depend on the grid (the box test decides), so the forces depend
+// only on the positions, velocities and dt: same bits for any thread count and any rebuild
+// schedule.  Nothing is allocated in apply().
+
 namespace impact3d {
 
-// Placeholder until the contact engine lands (issue 5): run.cpp refuses decks with sliding
-// interfaces, so apply() is never reached with interfaces present.
-struct SlidingInterfaces::Impl {
-  int count = 0;
-  std::vector<std::array<double, 3>> forces;
+namespace {
+
+constexpr double kInteriorTol = 0.01;  // xi/eta tolerance beyond the square (rim round-off)
+constexpr double kDepthFactor = 0.5;   // p_max = 0.5 * thickness V/A of the segment's element
+
+// One surface: its segments and per-segment constants.
+struct Surface {
+  std::vector<std::array<int, 4>> seg;
+  std::vector<std::uint8_t> boundary;  // bit e: edge e is on the surface's rim
+  std::vector<double> k0;              // DYNA3D stiffness mu K A^2 / V (initial geometry)
+  std::vector<double> pmax;            // largest accepted penetration
+  std::vector<int> nodes;              // sorted, unique
 };
+
+// Bucket grid over the segments of one surface.
+struct Grid {
+  std::vector<double> box;  // 6 per segment: lo xyz, hi xyz (grown)
+  std::vector<int> cell_start, cursor, entries;
+  int max_cells = 0;
+  int dim[3] = {0, 0, 0};
+  double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0}, h = 1;
+};
+
+// Result of one node in one pass.
+struct Hit {
+  int seg = -1;
+  double N[4] = {0, 0, 0, 0};
+  double f[3] = {0, 0, 0};   // total force on the node (normal + friction)
+  double fn = 0, pen = 0;
+  int evaluations = 0;
+};
+
+struct Pass {
+  int node_side = 0, seg_side = 1;
+  Grid grid;
+  std::vector<Hit> hits;  // one per node of surface node_side
+};
+
+struct Interface {
+  Surface surf[2];
+  Pass pass[2];
+  int npass = 2;
+  int method = 0;
+  double mu = 0.1, fs = 0, fd = 0, decay = 0;
+  bool symmetric = true;
+};
+
+void seg_coords(const State& s, const std::array<int, 4>& sg, double X[4][3]) {
+  for (int a = 0; a < 4; ++a) {
+    const std::size_t k = std::size_t(sg[std::size_t(a)]);
+    X[a][0] = s.x[k];
+    X[a][1] = s.y[k];
+    X[a][2] = s.z[k];
+  }
+}
+
+// The hexahedron that has all the segment's nodes (-1 if none).
+int element_of_segment(const State& s, const std::array<int, 4>& sg) {
+  const int n0 = sg[0];
+  for (int c = s.corner_start[std::size_t(n0)]; c < s.corner_start[std::size_t(n0) + 1]; ++c) {
+    const int e = s.corner_list[std::size_t(c)] / 8;
+    const auto& hn = s.conn[std::size_t(e)];
+    bool all = true;
+    for (int a = 1; a < 4 && all; ++a) all = std::find(hn.begin(), hn.end(), sg[std::size_t(a)]) != hn.end();
+    if (all) return e;
+  }
+  return -1;
+}
+
+void build_surface(const State& s, const std::vector<std::array<int, 4>>& segs, double mu,
+                   Surface& sf) {
+  sf.seg = segs;
+  const std::size_t ns = segs.size();
+  sf.boundary.assign(ns, 0);
+  sf.k0.assign(ns, 0.0);
+  sf.pmax.assign(ns, 0.0);
+  // rim edges: used by one segment only (a collapsed edge of a triangle is skipped)
+  std::map<std::pair<int, int>, int> edge_count;
+  for (const auto& sg : segs)
+    for (int e = 0; e < 4; ++e) {
+      const int a = sg[std::size_t(e)], b = sg[std::size_t((e + 1) % 4)];
+      if (a != b) ++edge_count[{std::min(a, b), std::max(a, b)}];
+    }
+  for (std::size_t j = 0; j < ns; ++j) {
+    const auto& sg = segs[j];
+    for (int e = 0; e < 4; ++e) {
+      const int a = sg[std::size_t(e)], b = sg[std::size_t((e + 1) % 4)];
+      if (a != b && edge_count[{std::min(a, b), std::max(a, b)}] == 1)
+        sf.boundary[j] = std::uint8_t(sf.boundary[j] | (1u << e));
+    }
+    double X[4][3];
+    seg_coords(s, sg, X);
+    const double area = contact::segment_area(X);
+    const int el = element_of_segment(s, sg);
+    double vol = 0, K = 0;
+    if (el >= 0) {
+      vol = s.vol0[std::size_t(el)];
+      K = s.mats[std::size_t(s.mat[std::size_t(el)])].K;
+    }
+    sf.k0[j] = contact::dyna3d_stiffness(mu, K, area, vol);
+    const double thick = (el >= 0 && area > 0) ? vol / area : std::sqrt(area);
+    sf.pmax[j] = kDepthFactor * thick;
+    for (int n : sg) sf.nodes.push_back(n);
+  }
+  std::sort(sf.nodes.begin(), sf.nodes.end());
+  sf.nodes.erase(std::unique(sf.nodes.begin(), sf.nodes.end()), sf.nodes.end());
+}
+
+void allocate_grid(std::size_t nseg, Grid& g) {
+  g.box.assign(6 * nseg, 0.0);
+  g.max_cells = int(4 * nseg + 64);
+  g.cell_start.assign(std::size_t(g.max_cells) + 1, 0);
+  g.cursor.assign(std::size_t(g.max_cells), 0);
+  g.entries.assign(8 * nseg, 0);
+}
+
+inline int cell_coord(const Grid& g, int a, double v) {
+  return std::clamp(int(std::floor((v - g.lo[a]) / g.h)), 0, g.dim[a] - 1);
+}
+
+// Grown boxes of the segments at the current positions, then the grid (counting sort, segments
+// in increasing order in every cell).
+void rebuild_grid(const State& s, const Surface& sf, Grid& g) {
+  const std::size_t ns = sf.seg.size();
+  double hmax = 0;
+  for (int a = 0; a < 3; ++a) {
+    g.lo[a] = 1e300;
+    g.hi[a] = -1e300;
+  }
+  for (std::size_t j = 0; j < ns; ++j) {
+    double X[4][3];
+    seg_coords(s, sf.seg[j], X);
+    double lo[3], hi[3];
+    for (int a = 0; a < 3; ++a) {
+      lo[a] = std::min({X[0][a], X[1][a], X[2][a], X[3][a]});
+      hi[a] = std::max({X[0][a], X[1][a], X[2][a], X[3][a]});
+    }
+    double ext = 0;
+    for (int a = 0; a < 3; ++a) ext = std::max(ext, hi[a] - lo[a]);
+    // the interior tolerance extends the patch by tol * (half its size) at most
+    const double grow = sf.pmax[j] + kInteriorTol * ext;
+    for (int a = 0; a < 3; ++a) {
+      double* b = &g.box[6 * j];
+      b[a] = lo[a] - grow;
+      b[3 + a] = hi[a] + grow;
+      g.lo[a] = std::min(g.lo[a], b[a]);
+      g.hi[a] = std::max(g.hi[a], b[3 + a]);
+      hmax = std::max(hmax, b[3 + a] - b[a]);
+    }
+  }
+  g.h = hmax > 0 ? hmax : 1.0;
+  for (;;) {
+    long cells = 1;
+    for (int a = 0; a < 3; ++a) {
+      g.dim[a] = int(std::min((g.hi[a] - g.lo[a]) / g.h, 1e6)) + 1;
+      cells *= g.dim[a];
+    }
+    if (cells <= g.max_cells) break;
+    g.h *= 1.25;
+  }
+  const int ncell = g.dim[0] * g.dim[1] * g.dim[2];
+  std::fill(g.cell_start.begin(), g.cell_start.begin() + ncell + 1, 0);
+  auto for_cells = [&](std::size_t j, auto&& fn) {
+    const double* b = &g.box[6 * j];
+    int c0[3], c1[3];
+    for (int a = 0; a < 3; ++a) {
+      c0[a] = cell_coord(g, a, b[a]);
+      c1[a] = cell_coord(g, a, b[3 + a]);
+    }
+    for (int k = c0[2]; k <= c1[2]; ++k)
+      for (int jj = c0[1]; jj <= c1[1]; ++jj)
+        for (int i = c0[0]; i <= c1[0]; ++i) fn(i + g.dim[0] * (jj + g.dim[1] * k));
+  };
+  for (std::size_t j = 0; j < ns; ++j) for_cells(j, [&](int c) { ++g.cell_start[std::size_t(c) + 1]; });
+  for (int c = 0; c < ncell; ++c) g.cell_start[std::size_t(c) + 1] += g.cell_start[std::size_t(c)];
+  std::copy(g.cell_start.begin(), g.cell_start.begin() + ncell, g.cursor.begin());
+  for (std::size_t j = 0; j < ns; ++j)
+    for_cells(j, [&](int c) { g.entries[std::size_t(g.cursor[std::size_t(c)]++)] = int(j); });
+}
+
+inline bool in_box(const double* b, const double p[3]) {
+  return p[0] >= b[0] && p[0] <= b[3] && p[1] >= b[1] && p[1] <= b[4] && p[2] >= b[2] &&
+         p[2] <= b[5];
+}
+
+}  // namespace
+
+struct SlidingInterfaces::Impl {
+  std::vector<Interface> ifaces;
+  std::vector<std::array<double, 3>> forces;
+  std::vector<int> contact_nodes;    // union of all surface nodes, sorted
+  std::vector<double> cur, prev;     // 3 per node: contact force this cycle / last cycle
+  std::vector<double> vpred;         // 3 per node: predicted v^{n+1/2} of the last cycle
+  double prev_dtn = 0;
+  bool has_prev = false;
+  double tssf = 0.9;
+  double max_pen = 0;
+  SearchStats stats;
+
+  void node_pass(const Model& m, const State& s, Interface& in, Pass& ps, double dt);
+};
+
+// Step 2 of a pass: every node of the pass against the segments (parallel, per-node slots).
+void SlidingInterfaces::Impl::node_pass(const Model&, const State& s, Interface& in, Pass& ps,
+                                        double dt) {
+  const Surface& nodes_sf = in.surf[ps.node_side];
+  const Surface& segs = in.surf[ps.seg_side];
+  const Grid& g = ps.grid;
+  const int nn = int(nodes_sf.nodes.size());
+  const double alpha_tssf = tssf;
+#pragma omp parallel for schedule(static)
+  for (int q = 0; q < nn; ++q) {
+    Hit& hit = ps.hits[std::size_t(q)];
+    hit = Hit{};
+    const int node = nodes_sf.nodes[std::size_t(q)];
+    const std::size_t k = std::size_t(node);
+    const double p[3] = {s.x[k], s.y[k], s.z[k]};
+    if (p[0] < g.lo[0] || p[0] > g.hi[0] || p[1] < g.lo[1] || p[1] > g.hi[1] || p[2] < g.lo[2] ||
+        p[2] > g.hi[2])
+      continue;
+    const int c = cell_coord(g, 0, p[0]) + g.dim[0] * (cell_coord(g, 1, p[1]) + g.dim[1] * cell_coord(g, 2, p[2]));
+    int best = -1;
+    contact::SegmentHit bh;
+    for (int e = g.cell_start[std::size_t(c)]; e < g.cell_start[std::size_t(c) + 1]; ++e) {
+      const int j = g.entries[std::size_t(e)];
+      if (!in_box(&g.box[6 * std::size_t(j)], p)) continue;
+      const auto& sg = segs.seg[std::size_t(j)];
+      if (sg[0] == node || sg[1] == node || sg[2] == node || sg[3] == node) continue;
+      double X[4][3];
+      seg_coords(s, sg, X);
+      ++hit.evaluations;
+      contact::SegmentHit h = contact::closest_point_on_segment(X, p, segs.boundary[std::size_t(j)], kInteriorTol);
+      if (!h.valid) continue;
+      // nearest point; at equal distance a face point before an edge point, then the lower
+      // segment (the order of the candidates is the segment order)
+      const double key = h.dist * (h.on_edge ? 1 + 1e-9 : 1.0);
+      const double best_key = best < 0 ? 0.0 : bh.dist * (bh.on_edge ? 1 + 1e-9 : 1.0);
+      if (best < 0 || key < best_key) {
+        best = j;
+        bh = h;
+      }
+    }
+    if (best < 0) continue;
+    const double pen = -bh.gap;
+    if (!(pen > 0) || pen > segs.pmax[std::size_t(best)]) continue;
+    double N[4];
+    contact::shape4(bh.xi, bh.eta, N);
+    double kpen;
+    if (in.method == 0) {
+      kpen = segs.k0[std::size_t(best)];
+    } else {
+      int a_near = 0;
+      for (int a = 1; a < 4; ++a)
+        if (N[a] > N[a_near]) a_near = a;
+      const int nm = segs.seg[std::size_t(best)][std::size_t(a_near)];
+      kpen = contact::max_stable_stiffness(alpha_tssf, dt, s.mass[k], s.mass[std::size_t(nm)],
+                                           in.symmetric);
+    }
+    const double fn = kpen * pen;
+    hit.seg = best;
+    for (int a = 0; a < 4; ++a) hit.N[a] = N[a];
+    hit.fn = fn;
+    hit.pen = pen;
+    for (int i = 0; i < 3; ++i) hit.f[i] = fn * bh.n[i];
+    if (in.fs > 0 || in.fd > 0) {
+      const auto& sg = segs.seg[std::size_t(best)];
+      double vrel[3] = {s.vx[k], s.vy[k], s.vz[k]};
+      double inv_meff = s.mass[k] > 0 ? 1.0 / s.mass[k] : 0.0;
+      for (int a = 0; a < 4; ++a) {
+        const std::size_t ka = std::size_t(sg[std::size_t(a)]);
+        vrel[0] -= N[a] * s.vx[ka];
+        vrel[1] -= N[a] * s.vy[ka];
+        vrel[2] -= N[a] * s.vz[ka];
+        if (s.mass[ka] > 0) inv_meff += N[a] * N[a] / s.mass[ka];
+      }
+      const double vn = vrel[0] * bh.n[0] + vrel[1] * bh.n[1] + vrel[2] * bh.n[2];
+      const double vt[3] = {vrel[0] - vn * bh.n[0], vrel[1] - vn * bh.n[1], vrel[2] - vn * bh.n[2]};
+      const double mu = contact::friction_coefficient(in.fs, in.fd, in.decay,
+                                                      std::sqrt(vt[0] * vt[0] + vt[1] * vt[1] + vt[2] * vt[2]));
+      double ft[3];
+      contact::friction_force(mu, fn, bh.n, vrel, inv_meff, dt, ft);
+      for (int i = 0; i < 3; ++i) hit.f[i] += ft[i];
+    }
+  }
+}
 
 SlidingInterfaces::SlidingInterfaces() : impl_(std::make_unique<Impl>()) {}
 SlidingInterfaces::~SlidingInterfaces() = default;
 SlidingInterfaces::SlidingInterfaces(SlidingInterfaces&&) noexcept = default;
 SlidingInterfaces& SlidingInterfaces::operator=(SlidingInterfaces&&) noexcept = default;
 
-void SlidingInterfaces::initialize(const Model& m, const State&) {
-  impl_->count = int(m.interfaces.size());
+void SlidingInterfaces::initialize(const Model& m, const State& s) {
+  Impl& im = *impl_;
+  im = Impl{};
+  im.tssf = m.control.tssf;
+  im.ifaces.resize(m.interfaces.size());
+  for (std::size_t i = 0; i < m.interfaces.size(); ++i) {
+    const SlidingInterface& d = m.interfaces[i];
+    Interface& in = im.ifaces[i];
+    in.method = d.stiffness_method;
+    in.mu = d.penalty_scale > 0 ? d.penalty_scale : m.control.penalty_scale;
+    in.fs = d.fs;
+    in.fd = d.fd;
+    in.decay = d.decay;
+    in.symmetric = d.symmetric;
+    in.npass = d.symmetric ? 2 : 1;
+    build_surface(s, d.slave, in.mu, in.surf[0]);
+    build_surface(s, d.master, in.mu, in.surf[1]);
+    for (int p = 0; p < in.npass; ++p) {
+      Pass& ps = in.pass[p];
+      ps.node_side = p == 0 ? 0 : 1;
+      ps.seg_side = 1 - ps.node_side;
+      allocate_grid(in.surf[ps.seg_side].seg.size(), ps.grid);
+      ps.hits.assign(in.surf[ps.node_side].nodes.size(), Hit{});
+    }
+    for (int sd = 0; sd < 2; ++sd)
+      im.contact_nodes.insert(im.contact_nodes.end(), in.surf[sd].nodes.begin(), in.surf[sd].nodes.end());
+  }
+  std::sort(im.contact_nodes.begin(), im.contact_nodes.end());
+  im.contact_nodes.erase(std::unique(im.contact_nodes.begin(), im.contact_nodes.end()), im.contact_nodes.end());
+  im.forces.assign(m.interfaces.size(), {0.0, 0.0, 0.0});
+  im.cur.assign(3 * std::size_t(s.nn), 0.0);
+  im.prev.assign(3 * std::size_t(s.nn), 0.0);
+  im.vpred.assign(3 * std::size_t(s.nn), 0.0);
 }
 
-void SlidingInterfaces::apply(const Model&, State&, double) {}
+void SlidingInterfaces::apply(const Model& m, State& s, double dt) {
+  Impl& im = *impl_;
+  if (im.ifaces.empty()) return;
+  // 1. the rest of the previous cycle's work: its forces were booked on a predicted
+  //    v^{n+1/2}; the difference to the velocity reached (rigid bodies, walls) is booked now
+  if (im.has_prev) {
+    double w = 0;
+    for (int n : im.contact_nodes) {
+      const std::size_t k = std::size_t(n);
+      w += im.prev[3 * k] * (s.vx[k] - im.vpred[3 * k]) +
+           im.prev[3 * k + 1] * (s.vy[k] - im.vpred[3 * k + 1]) +
+           im.prev[3 * k + 2] * (s.vz[k] - im.vpred[3 * k + 2]);
+    }
+    s.contact -= 0.5 * im.prev_dtn * w;
+  }
+  for (int n : im.contact_nodes)
+    for (int a = 0; a < 3; ++a) im.cur[3 * std::size_t(n) + std::size_t(a)] = 0.0;
+  im.max_pen = 0;
+  im.stats = SearchStats{};
+  // 2. every interface, every pass
+  for (std::size_t i = 0; i < im.ifaces.size(); ++i) {
+    Interface& in = im.ifaces[i];
+    std::array<double, 3> fres{0.0, 0.0, 0.0};
+    for (int p = 0; p < in.npass; ++p) {
+      Pass& ps = in.pass[p];
+      const Surface& nodes_sf = in.surf[ps.node_side];
+      const Surface& segs = in.surf[ps.seg_side];
+      if (segs.seg.empty()) continue;
+      rebuild_grid(s, segs, ps.grid);
+      im.node_pass(m, s, in, ps, dt);
+      // 3. scatter in node order
+      const double sign = ps.node_side == 0 ? 1.0 : -1.0;  // force on the slave side
+      for (std::size_t q = 0; q < nodes_sf.nodes.size(); ++q) {
+        const Hit& h = ps.hits[q];
+        ++im.stats.nodes;
+        im.stats.evaluations += h.evaluations;
+        if (h.seg < 0) continue;
+        ++im.stats.contacts;
+        im.max_pen = std::max(im.max_pen, h.pen);
+        const std::size_t k = std::size_t(nodes_sf.nodes[q]);
+        double fa[4][3];
+        contact::distribute_force(h.f, h.N, fa);
+        for (int a = 0; a < 3; ++a) im.cur[3 * k + std::size_t(a)] += h.f[a];
+        const auto& sg = segs.seg[std::size_t(h.seg)];
+        for (int b = 0; b < 4; ++b) {
+          const std::size_t kb = std::size_t(sg[std::size_t(b)]);
+          for (int a = 0; a < 3; ++a) im.cur[3 * kb + std::size_t(a)] += fa[b][a];
+        }
+        for (int a = 0; a < 3; ++a) fres[std::size_t(a)] += sign * h.f[a];
+      }
+    }
+    im.forces[i] = fres;
+  }
+  for (int n : im.contact_nodes) {
+    const std::size_t k = std::size_t(n);
+    s.fext_x[k] += im.cur[3 * k];
+    s.fext_y[k] += im.cur[3 * k + 1];
+    s.fext_z[k] += im.cur[3 * k + 2];
+  }
+  // 4. contact energy: the work of this cycle's forces on the mean velocity
+  //    (v^{n-1/2} + v^{n+1/2}) / 2 over dt_n, the form that balances the central-difference
+  //    kinetic energy.  v^{n+1/2} is predicted as the engine will compute it (same operations,
+  //    same bits) from the corner forces already at hand; for a free node it is exact.
+  const double dtn = s.cycle == 0 ? 0.5 * dt : 0.5 * (s.dt_half + dt);
+  double w = 0;
+  for (int n : im.contact_nodes) {
+    const std::size_t k = std::size_t(n);
+    double fx = 0, fy = 0, fz = 0;
+    for (int c = s.corner_start[k]; c < s.corner_start[k + 1]; ++c) {
+      const std::size_t cc = std::size_t(s.corner_list[std::size_t(c)]);
+      fx += s.cfx[cc];
+      fy += s.cfy[cc];
+      fz += s.cfz[cc];
+    }
+    const double inv_m = s.mass[k] > 0 ? 1.0 / s.mass[k] : 0.0;
+    double ax = (s.fext_x[k] - fx) * inv_m, ay = (s.fext_y[k] - fy) * inv_m,
+           az = (s.fext_z[k] - fz) * inv_m;
+    if (s.fix[k] & 1) ax = 0;
+    if (s.fix[k] & 2) ay = 0;
+    if (s.fix[k] & 4) az = 0;
+    double* vp = &im.vpred[3 * k];
+    vp[0] = s.vx[k] + dtn * ax;
+    vp[1] = s.vy[k] + dtn * ay;
+    vp[2] = s.vz[k] + dtn * az;
+    w += im.cur[3 * k] * 0.5 * (s.vx[k] + vp[0]) + im.cur[3 * k + 1] * 0.5 * (s.vy[k] + vp[1]) +
+         im.cur[3 * k + 2] * 0.5 * (s.vz[k] + vp[2]);
+  }
+  s.contact -= dtn * w;
+  im.prev.swap(im.cur);
+  im.prev_dtn = dtn;
+  im.has_prev = true;
+}
+
+bool SlidingInterfaces::empty() const { return impl_->ifaces.empty(); }
 
 const std::vector<std::array<double, 3>>& SlidingInterfaces::interface_forces() const {
   return impl_->forces;
 }
-
-bool SlidingInterfaces::empty() const { return impl_->count == 0; }
+double SlidingInterfaces::max_penetration() const { return impl_->max_pen; }
+SlidingInterfaces::SearchStats SlidingInterfaces::search_stats() const { return impl_->stats; }
+SlidingInterfaces::RestartData SlidingInterfaces::restart_data() const {
+  return {impl_->prev, impl_->vpred, impl_->prev_dtn, impl_->has_prev};
+}
+void SlidingInterfaces::restore(const RestartData& d) {
+  impl_->prev = d.forces;
+  impl_->vpred = d.vpred;
+  impl_->prev_dtn = d.dtn;
+  impl_->has_prev = d.has;
+}
 
 }  // namespace impact3d

@@ -3,7 +3,9 @@
 // hexahedron faces, the seed's method (shared/spec/physics.md section 5).
 
 #include <array>
+#include <array>
 #include <memory>
+#include <vector>
 #include <vector>
 
 #include "impact3d/model/model.h"
@@ -25,8 +27,33 @@ class SlidingInterfaces {
   // taken (dt^{n+1/2}).  The result must not depend on the thread count.
   void apply(const Model& m, State& s, double dt);
   bool empty() const;
-  // Resultant force on the master side of each interface at the last apply() (for rcforc).
+
+  // Resultant force on the slave side of each interface in the last apply() (the master side
+  // takes the opposite): normal and friction parts of both passes.  For the interface-force
+  // file.
   const std::vector<std::array<double, 3>>& interface_forces() const;
+  // Largest penetration (over all interfaces and both passes) found in the last apply().
+  double max_penetration() const;
+  // Search statistics of the last apply(): nodes searched, (node, segment) closest-point
+  // evaluations, nodes in contact.  The evaluations grow linearly with the nodes.
+  struct SearchStats {
+    long nodes = 0, evaluations = 0, contacts = 0;
+  };
+  SearchStats search_stats() const;
+
+  // Contact energy (s.contact) is the work of the contact forces on the mean velocity
+  // (v^{n-1/2} + v^{n+1/2}) / 2 over dt_n, booked in apply() with v^{n+1/2} predicted from the
+  // corner forces; where the engine changes a velocity afterwards (rigid bodies, walls) the
+  // difference is booked in the next apply().  A restart dump must carry this small state
+  // (3 doubles per node twice, dt_n, a flag) for the energy books to go on bit for bit; the
+  // forces themselves depend only on the State.
+  struct RestartData {
+    std::vector<double> forces, vpred;  // 3 per node
+    double dtn = 0;
+    bool has = false;
+  };
+  RestartData restart_data() const;
+  void restore(const RestartData& d);
 
  private:
   struct Impl;

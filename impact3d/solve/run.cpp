@@ -117,13 +117,6 @@ std::string numbered(const std::string& root, int k) {
 int run_simulation(const Model& model, const RunOptions& opt, std::ostream& printed) {
   if (opt.threads > 0) omp_set_num_threads(opt.threads);
   RunLog log(printed, opt.quiet);
-  if (!model.interfaces.empty()) {
-    Diagnostic d{1102, Severity::error, Location{model.deck_file, model.interfaces[0].line, "sliding interface 1", {}, 0, 0, {}, false},
-                 "sliding interfaces are read and checked, but the contact engine is not in this version"};
-    log.line(render(d));
-    log.line("\n E r r o r   t e r m i n a t i o n   (unsupported feature)");
-    return exit_code::input_error;
-  }
   const auto t0 = std::chrono::steady_clock::now();
   auto elapsed = [&] {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
