@@ -6,6 +6,7 @@
 //   1000-1099  card reading (fields, columns, files)
 //   1100-1199  unsupported features switched on in the deck
 //   1200-1299  model checks (ids, references, counts, geometry, materials)
+//   1300-1399  LS-DYNA keyword decks (keywords, includes, references between keywords)
 //   2000-2099  input warnings
 //   3000-3099  command line and files
 //   4000-4099  run-time errors (error termination)

@@ -10,6 +10,7 @@
 
 #include "common/messages.h"
 #include "impact3d/input/deck_reader.h"
+#include "impact3d/input/deck_writer.h"
 #include "impact3d/output/printed_output.h"
 #include "impact3d/output/restart_dump.h"
 #include "impact3d/solve/run.h"
@@ -24,7 +25,7 @@ const char* kUsage =
     "       impact3d r=DUMP [o=PRINTED] [g=PLOTDB] [d=DUMP] [ncpu=N]\n"
     "       impact3d --help | --version | --messages\n"
     "\n"
-    "  i=DECK     input deck (DYNA3D fixed format)\n"
+    "  i=DECK     input deck: DYNA3D fixed format or LS-DYNA keyword (chosen by content)\n"
     "  o=FILE     printed output file (default d3hsp)\n"
     "  g=FILE     plot database root name (default d3plot)\n"
     "  d=FILE     restart dump root: dumps are FILE01, FILE02, ... (default d3dump)\n"
@@ -34,6 +35,9 @@ const char* kUsage =
     "  ncpu=N     number of threads (default: OMP_NUM_THREADS or all cores); results do not\n"
     "             depend on it\n"
     "  --check    read and check the deck only; print the summary; write nothing else\n"
+    "  --lenient-keywords  unsupported LS-DYNA keywords are warnings, not errors\n"
+    "  --write-keyword=FILE, --write-fixed=FILE  convert: write the deck read as an LS-DYNA\n"
+    "             keyword / DYNA3D fixed-format deck; nothing is run\n"
     "  --messages list the message catalog\n"
     "\n"
     "exit codes: 0 normal termination, 2 input errors, 3 bad command line, 4 file error,\n"
@@ -49,6 +53,8 @@ void print_banner(std::ostream& os) {
 int main(int argc, char** argv) {
   RunOptions opt;
   bool check_only = false;
+  InputOptions input_opt;
+  std::string write_keyword, write_fixed;
   bool printed_given = false, plot_given = false;
   Diagnostics cmd;
   for (int a = 1; a < argc; ++a) {
@@ -70,6 +76,14 @@ int main(int argc, char** argv) {
                   << " " << m.text << "\n";
       return exit_code::ok;
     } else if (arg == "--check") {
+      check_only = true;
+    } else if (arg == "--lenient-keywords") {
+      input_opt.lenient_keywords = true;
+    } else if (const char* v = value("--write-keyword=")) {
+      write_keyword = v;
+      check_only = true;
+    } else if (const char* v = value("--write-fixed=")) {
+      write_fixed = v;
       check_only = true;
     } else if (const char* v = value("i=")) {
       opt.deck = v;
@@ -144,7 +158,7 @@ int main(int argc, char** argv) {
     ok = read_dyna3d_deck(deck, model, diag);
     if (ok) ok = check_model(model, diag);
   } else {
-    ok = read_and_check_deck(opt.deck, model, diag);
+    ok = read_and_check_deck(opt.deck, model, diag, input_opt);
     if (ok && !check_only) {
       std::ifstream in(opt.deck, std::ios::binary);
       opt.deck_text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
@@ -176,6 +190,8 @@ int main(int argc, char** argv) {
     if (diag.has(3003) || diag.has(3006)) return exit_code::file_error;
     return exit_code::input_error;
   }
+  if (!write_keyword.empty() || !write_fixed.empty())
+    return write_converted_decks(model, write_keyword, write_fixed, std::cout);
   if (check_only) {
     write_model_summary(std::cout, model);
     std::cout << " input check: 0 errors, " << diag.warning_count() << " warning(s)\n";

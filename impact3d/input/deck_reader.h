@@ -22,4 +22,15 @@ bool check_model(const Model& model, Diagnostics& diag);
 // Reads and checks a deck file: load + read + check.  Returns false on any error.
 bool read_and_check_deck(const std::string& path, Model& model, Diagnostics& diag);
 
+// Input options (command line).
+struct InputOptions {
+  bool lenient_keywords = false;  // unsupported LS-DYNA keywords are warnings, not errors
+};
+bool read_and_check_deck(const std::string& path, Model& model, Diagnostics& diag,
+                         const InputOptions& options);
+
+// Reads a loaded deck with the reader its content calls for: an LS-DYNA keyword deck
+// (is_keyword_deck in keyword_reader.h) or a DYNA3D fixed-format deck.  No model checks.
+bool read_deck(DeckFile& deck, Model& model, Diagnostics& diag, const InputOptions& options = {});
+
 }  // namespace impact3d

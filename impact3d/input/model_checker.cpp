@@ -114,9 +114,14 @@ bool check_model(const Model& m, Diagnostics& diag) {
 }
 
 bool read_and_check_deck(const std::string& path, Model& model, Diagnostics& diag) {
+  return read_and_check_deck(path, model, diag, InputOptions{});
+}
+
+bool read_and_check_deck(const std::string& path, Model& model, Diagnostics& diag,
+                         const InputOptions& options) {
   DeckFile deck;
   if (!deck.load(path, diag)) return false;
-  bool ok = read_dyna3d_deck(deck, model, diag);
+  bool ok = read_deck(deck, model, diag, options);  // fixed format or keyword, by content
   // Cross checks only make sense when the arrays are complete; they still run when only
   // field-level errors occurred, so that all problems are reported in one pass.
   if (model.num_nodes() == model.control.numnp && model.num_hexes() == model.control.numelh &&

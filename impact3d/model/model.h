@@ -92,6 +92,9 @@ struct Model {
   std::vector<std::array<int, 8>> hex_nodes;  // 0-based node indices
   std::vector<int> hex_material;              // 0-based material index
   std::vector<int> hex_line;                  // deck line of each solid card, 0 = not read
+  // Ids in the deck when they are not 1..N (keyword decks have arbitrary sparse ids and are
+  // renumbered 1..N in increasing id order); empty = identity.
+  std::vector<int> node_user_id, hex_user_id;
 
   std::vector<std::array<int, 2>> node_th_blocks, solid_th_blocks;  // deck numbers, inclusive
   std::vector<LoadCurve> load_curves;

@@ -1,0 +1,599 @@
+// Keyword and fixed-format deck writers, and the model comparison used by the round-trip
+// tests and the converter.
+
+#include "impact3d/input/deck_writer.h"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+#include "common/cards.h"
+
+namespace impact3d {
+
+namespace {
+
+// Shortest text that reads back as exactly v (Fortran style: exponent without '+' and leading
+// zeros, always a decimal point).
+std::string shortest(double v) {
+  if (v == 0) return std::signbit(v) ? "-0.0" : "0.0";
+  char buf[64];
+  auto r = std::to_chars(buf, buf + sizeof buf, v);
+  std::string s(buf, r.ptr);
+  std::string mant = s, exp;
+  std::size_t e = s.find('e');
+  if (e != std::string::npos) {
+    mant = s.substr(0, e);
+    std::string ex = s.substr(e + 1);
+    bool neg = !ex.empty() && ex[0] == '-';
+    if (!ex.empty() && (ex[0] == '+' || ex[0] == '-')) ex.erase(0, 1);
+    while (ex.size() > 1 && ex[0] == '0') ex.erase(0, 1);
+    exp = std::string("e") + (neg ? "-" : "") + ex;
+  }
+  if (mant.find('.') == std::string::npos) mant += ".0";
+  return mant + exp;
+}
+
+bool reads_back(const std::string& s, double v) {
+  double r = 0;
+  return parse_fortran_real(s, r) == FieldStatus::ok && r == v;
+}
+
+// The most exact text of v in at most w characters; exact tells whether it reads back as v.
+std::string fit(double v, int w, bool& exact) {
+  std::string s = shortest(v);
+  if (int(s.size()) <= w) {
+    exact = true;
+    return s;
+  }
+  for (int p = 16; p >= 0; --p) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.*e", p, v);
+    std::string t = shortest(std::strtod(buf, nullptr));
+    if (int(t.size()) <= w) {
+      exact = reads_back(t, v);
+      return t;
+    }
+  }
+  exact = false;
+  return std::string(std::size_t(w), '*');
+}
+
+// ------------------------------------------------------------------ keyword cards
+struct KField {
+  std::string text;
+  int width;
+};
+
+// One keyword card: fixed columns (right-justified) when every value fits, else comma free
+// format (always exact).
+std::string kcard(const std::vector<KField>& f) {
+  bool fits = true;
+  for (const auto& x : f) fits = fits && int(x.text.size()) <= x.width;
+  std::string out;
+  if (fits) {
+    for (const auto& x : f) out += std::string(std::size_t(x.width) - x.text.size(), ' ') + x.text;
+  } else {
+    for (std::size_t k = 0; k < f.size(); ++k) out += (k ? "," : "") + f[k].text;
+  }
+  while (!out.empty() && out.back() == ' ') out.pop_back();
+  return out;
+}
+KField I(long long v, int w = 10) { return {std::to_string(v), w}; }
+KField R(double v, int w = 10) { return {shortest(v), w}; }
+KField B(int w = 10) { return {"", w}; }
+
+class KeywordWriter {
+ public:
+  KeywordWriter(std::ostream& os, const Model& m, std::vector<std::string>* notes) : os_(os), m_(m), notes_(notes) {}
+
+  void write() {
+    const ControlData& k = m_.control;
+    os_ << "*KEYWORD\n";
+    os_ << "$ written by IMPACT-3D (impact3d --write-keyword); layout: README.md \"Keyword decks\"\n";
+    os_ << "*TITLE\n" << m_.title << "\n";
+    os_ << "*CONTROL_TERMINATION\n$#  endtim    endcyc     dtmin\n"
+        << kcard({R(k.end_time), I(0), R(k.min_step_factor)}) << "\n";
+    os_ << "*CONTROL_TIMESTEP\n$#  dtinit    tssfac\n" << kcard({R(k.initial_dt), R(k.tssf)}) << "\n";
+    os_ << "*CONTROL_CONTACT\n$#  slsfac\n" << kcard({R(k.penalty_scale)}) << "\n";
+    os_ << "*CONTROL_OUTPUT\n$#   npopt    neecho    nrefup    iaccop     opifs    ipnint    ikedit\n"
+        << kcard({B(), B(), B(), B(), B(), B(), I(k.report_interval)}) << "\n";
+    os_ << "*DATABASE_BINARY_D3PLOT\n$#      dt\n" << kcard({R(k.plot_interval)}) << "\n";
+    for (const char* n : {"NODOUT", "ELOUT", "GLSTAT"})
+      os_ << "*DATABASE_" << n << "\n$#      dt\n" << kcard({R(k.th_interval)}) << "\n";
+    if (k.interface_out_interval > 0)
+      os_ << "*DATABASE_NCFORC\n$#      dt\n" << kcard({R(k.interface_out_interval)}) << "\n";
+    if (k.reaction_print_flag != 0) {
+      os_ << "*DATABASE_SPCFORC\n$#      dt\n" << kcard({R(k.th_interval)}) << "\n";
+    }
+    if (k.restart_dump_cycles > 0) os_ << "*DATABASE_BINARY_D3DUMP\n$#    cycl\n" << kcard({I(k.restart_dump_cycles)}) << "\n";
+    if (k.running_restart_cycles > 0) os_ << "*DATABASE_BINARY_RUNRSF\n$#    cycl\n" << kcard({I(k.running_restart_cycles)}) << "\n";
+    // IMPACT-3D fields with no LS-DYNA equivalent travel in *COMMENT, which LS-DYNA ignores
+    std::string extra;
+    if (k.interface_segments_out != 0) extra += "IMPACT-3D INTERFACE_SEGMENTS " + std::to_string(k.interface_segments_out) + "\n";
+    if (k.viscosity_flag != 0) extra += "IMPACT-3D VISCOSITY_FLAG " + std::to_string(k.viscosity_flag) + "\n";
+    if (k.reaction_print_flag > 1) extra += "IMPACT-3D REACTION_PRINT_FLAG " + std::to_string(k.reaction_print_flag) + "\n";
+    for (std::size_t j = 0; j < m_.materials.size(); ++j)
+      if (m_.materials[j].initially_elastic) extra += "IMPACT-3D INITIALLY_ELASTIC PART " + std::to_string(j + 1) + "\n";
+    if (!extra.empty()) os_ << "*COMMENT\n" << extra;
+    for (const auto& b : m_.node_th_blocks) history(b, false);
+    for (const auto& b : m_.solid_th_blocks) history(b, true);
+    materials();
+    nodes();
+    elements();
+    curves();
+    walls();
+    velocities();
+    interfaces();
+    os_ << "*END\n";
+  }
+
+ private:
+  std::ostream& os_;
+  const Model& m_;
+  std::vector<std::string>* notes_;
+  int next_node_set_ = 1, next_segment_set_ = 1;
+
+  void note(const std::string& s) {
+    if (notes_) notes_->push_back(s);
+  }
+  int nid(int idx) const { return m_.node_user_id.empty() ? idx + 1 : m_.node_user_id[std::size_t(idx)]; }
+  int eid(int idx) const { return m_.hex_user_id.empty() ? idx + 1 : m_.hex_user_id[std::size_t(idx)]; }
+
+  void history(const std::array<int, 2>& b, bool solid) {
+    os_ << (solid ? "*DATABASE_HISTORY_SOLID\n$#     eid\n" : "*DATABASE_HISTORY_NODE\n$#     nid\n");
+    std::vector<KField> f;
+    for (int n = b[0]; n <= b[1]; ++n) {
+      f.push_back(I(solid ? eid(n - 1) : nid(n - 1)));
+      if (f.size() == 8) { os_ << kcard(f) << "\n"; f.clear(); }
+    }
+    if (!f.empty()) os_ << kcard(f) << "\n";
+  }
+
+  void materials() {
+    os_ << "*SECTION_SOLID\n$#   secid    elform\n" << kcard({I(1), I(1)}) << "\n";
+    for (std::size_t k = 0; k < m_.materials.size(); ++k) {
+      const MaterialData& md = m_.materials[k];
+      int id = int(k) + 1;
+      os_ << "*PART\n$# title\n" << md.title << "\n";
+      os_ << "$#     pid     secid       mid     eosid      hgid\n" << kcard({I(id), I(1), I(id), I(0), I(id)}) << "\n";
+      if (md.type == 1) {
+        os_ << "*MAT_ELASTIC\n$#     mid        ro         e        pr\n"
+            << kcard({I(id), R(md.rho), R(md.E), R(md.nu)}) << "\n";
+      } else if (md.type == 3) {
+        os_ << "*MAT_PLASTIC_KINEMATIC\n$#     mid        ro         e        pr      sigy      etan      beta\n"
+            << kcard({I(id), R(md.rho), R(md.E), R(md.nu), R(md.sigma_y), R(md.E_tan), R(md.beta)}) << "\n"
+            << "$#     src       srp        fs        vp\n" << kcard({R(0), R(0), R(0), R(0)}) << "\n";
+      } else if (md.type == 20) {
+        os_ << "*MAT_RIGID\n$#     mid        ro         e        pr\n"
+            << kcard({I(id), R(md.rho), R(md.E), R(md.nu)}) << "\n"
+            << "$#     cmo      con1      con2\n" << kcard({R(0), R(0), R(0)}) << "\n"
+            << "$#lco or a1\n\n";
+      } else {
+        note("material " + std::to_string(id) + ": type " + std::to_string(md.type) + " cannot be written");
+      }
+      if (md.bulk_type != 1) note("material " + std::to_string(id) + ": bulk viscosity type " + std::to_string(md.bulk_type) + " written as 1");
+      os_ << "*HOURGLASS\n$#    hgid       ihq        qm       ibq        q1        q2\n"
+          << kcard({I(id), I(md.hourglass_type), R(md.hourglass_coef), I(0), R(md.q1), R(md.q2)}) << "\n";
+    }
+  }
+
+  void nodes() {
+    os_ << "*NODE\n$#   nid               x               y               z      tc      rc\n";
+    for (int n = 0; n < m_.num_nodes(); ++n)
+      os_ << kcard({I(nid(n), 8), R(m_.x[std::size_t(n)], 16), R(m_.y[std::size_t(n)], 16), R(m_.z[std::size_t(n)], 16),
+                    I(m_.bc[std::size_t(n)], 8), I(0, 8)})
+          << "\n";
+  }
+
+  void elements() {
+    os_ << "*ELEMENT_SOLID\n$#   eid     pid      n1      n2      n3      n4      n5      n6      n7      n8\n";
+    for (int e = 0; e < m_.num_hexes(); ++e) {
+      std::vector<KField> f = {I(eid(e), 8), I(m_.hex_material[std::size_t(e)] + 1, 8)};
+      for (int v : m_.hex_nodes[std::size_t(e)]) f.push_back(I(v >= 0 ? nid(v) : 0, 8));
+      os_ << kcard(f) << "\n";
+    }
+  }
+
+  void curves() {
+    for (const LoadCurve& lc : m_.load_curves) {
+      os_ << "*DEFINE_CURVE\n$#    lcid      sidr       sfa       sfo      offa      offo\n" << kcard({I(lc.number)}) << "\n";
+      os_ << "$#                a1                  o1\n";
+      for (std::size_t p = 0; p < lc.t.size(); ++p) os_ << kcard({R(lc.t[p], 20), R(lc.f[p], 20)}) << "\n";
+    }
+  }
+
+  int node_set(const std::vector<int>& nodes) {
+    int sid = next_node_set_++;
+    os_ << "*SET_NODE_LIST\n$#     sid\n" << kcard({I(sid)}) << "\n$#    nid1      nid2      nid3      nid4      nid5      nid6      nid7      nid8\n";
+    std::vector<KField> f;
+    for (int n : nodes) {
+      f.push_back(I(nid(n)));
+      if (f.size() == 8) { os_ << kcard(f) << "\n"; f.clear(); }
+    }
+    if (!f.empty()) os_ << kcard(f) << "\n";
+    return sid;
+  }
+
+  void walls() {
+    for (const StoneWall& w : m_.walls) {
+      int sid = w.nodes.empty() ? 0 : node_set(w.nodes);
+      os_ << "*RIGIDWALL_PLANAR\n$#    nsid\n" << kcard({I(sid)}) << "\n"
+          << "$#      xt        yt        zt        xh        yh        zh      fric\n"
+          << kcard({R(w.tail[0]), R(w.tail[1]), R(w.tail[2]), R(w.head[0]), R(w.head[1]), R(w.head[2]), R(w.friction)}) << "\n";
+    }
+  }
+
+  void velocities() {
+    int nn = m_.num_nodes();
+    for (const InitialVelocity& iv : m_.init_velocities) {
+      if (iv.first == 0) {
+        os_ << "*INITIAL_VELOCITY\n$#    nsid\n" << kcard({I(0)}) << "\n$#      vx        vy        vz\n"
+            << kcard({R(iv.v[0]), R(iv.v[1]), R(iv.v[2])}) << "\n";
+        continue;
+      }
+      int inc = std::max(1, iv.increment);
+      std::vector<int> nodes;
+      for (int n = iv.first; n <= iv.last && n <= nn; n += inc) nodes.push_back(n - 1);
+      if (nodes.empty()) continue;
+      if (nodes.back() + 1 != iv.last || (nodes.size() == 1 && iv.increment != 1))
+        note("initial velocity of nodes " + std::to_string(iv.first) + "-" + std::to_string(iv.last) + " by " +
+             std::to_string(iv.increment) + " written as its node list (same velocities, range normalized)");
+      if (nodes.size() == 1) {
+        os_ << "*INITIAL_VELOCITY_NODE\n$#     nid        vx        vy        vz\n"
+            << kcard({I(nid(nodes[0])), R(iv.v[0]), R(iv.v[1]), R(iv.v[2])}) << "\n";
+      } else {
+        int sid = node_set(nodes);
+        os_ << "*INITIAL_VELOCITY\n$#    nsid\n" << kcard({I(sid)}) << "\n$#      vx        vy        vz\n"
+            << kcard({R(iv.v[0]), R(iv.v[1]), R(iv.v[2])}) << "\n";
+      }
+    }
+  }
+
+  int segment_set(const std::vector<std::array<int, 4>>& segs) {
+    int sid = next_segment_set_++;
+    os_ << "*SET_SEGMENT\n$#     sid\n" << kcard({I(sid)}) << "\n$#      n1        n2        n3        n4\n";
+    for (const auto& s : segs) os_ << kcard({I(nid(s[0])), I(nid(s[1])), I(nid(s[2])), I(nid(s[3]))}) << "\n";
+    return sid;
+  }
+
+  // SFSA with SFSA * SLSFAC == penalty_scale exactly.
+  double scale_factor(double ps, double slsfac) {
+    double s = ps / slsfac;
+    for (int k = 0; k < 8 && s * slsfac != ps; ++k) s = std::nextafter(s, s * slsfac < ps ? INFINITY : -INFINITY);
+    if (s * slsfac != ps) note("sliding interface penalty scale " + shortest(ps) + " written as SFSA " + shortest(s) + " (rounded)");
+    return s;
+  }
+
+  void interfaces() {
+    for (const SlidingInterface& si : m_.interfaces) {
+      int a = segment_set(si.slave), b = segment_set(si.master);
+      if (si.type != 3) note("sliding interface type " + std::to_string(si.type) + " written as type 3");
+      os_ << (si.symmetric ? "*CONTACT_SURFACE_TO_SURFACE\n" : "*CONTACT_NODES_TO_SURFACE\n");
+      os_ << "$#   surfa     surfb  surfatyp  surfbtyp\n" << kcard({I(a), I(b), I(0), I(0)}) << "\n";
+      os_ << "$#      fs        fd        dc\n" << kcard({R(si.fs), R(si.fd), R(si.decay)}) << "\n";
+      double s = si.penalty_scale == 0 ? 1.0 : scale_factor(si.penalty_scale, m_.control.penalty_scale);
+      if (si.penalty_scale != 0 && s == 1.0) note("sliding interface penalty scale equal to the control value: written as the default");
+      os_ << "$#    sfsa      sfsb\n" << kcard({R(s), R(s)}) << "\n";
+      os_ << "$#    soft\n" << kcard({I(si.stiffness_method)}) << "\n";
+    }
+  }
+};
+
+// ------------------------------------------------------------------ fixed-format cards
+class FixedLine {
+ public:
+  explicit FixedLine(std::vector<std::string>* notes, std::string what) : notes_(notes), what_(std::move(what)) {}
+  FixedLine& i(int c1, int c2, long long v) {
+    std::string s = std::to_string(v);
+    if (int(s.size()) > c2 - c1 + 1) {
+      if (notes_) notes_->push_back(what_ + ": " + s + " does not fit columns " + std::to_string(c1) + "-" + std::to_string(c2));
+      s = std::string(std::size_t(c2 - c1 + 1), '*');
+    }
+    return put(c1, c2, s);
+  }
+  FixedLine& r(int c1, int c2, double v) {
+    bool exact = true;
+    std::string s = fit(v, c2 - c1 + 1, exact);
+    if (!exact && notes_) notes_->push_back(what_ + ": " + shortest(v) + " rounded to " + s + " (columns " + std::to_string(c1) + "-" + std::to_string(c2) + ")");
+    return put(c1, c2, s);
+  }
+  FixedLine& a(int c1, int c2, const std::string& s) {
+    std::string t = s.substr(0, std::size_t(c2 - c1 + 1));
+    if (t.size() < s.size() && notes_) notes_->push_back(what_ + ": text cut to " + std::to_string(c2 - c1 + 1) + " characters");
+    if (int(line_.size()) < c2) line_.resize(std::size_t(c2), ' ');
+    for (std::size_t k = 0; k < t.size(); ++k) line_[std::size_t(c1 - 1) + k] = t[k];
+    return *this;
+  }
+  std::string str() const {
+    std::string s = line_;
+    while (!s.empty() && s.back() == ' ') s.pop_back();
+    return s;
+  }
+
+ private:
+  FixedLine& put(int /*c1*/, int c2, const std::string& s) {
+    if (int(line_.size()) < c2) line_.resize(std::size_t(c2), ' ');
+    int start = c2 - int(s.size()) + 1;
+    for (std::size_t k = 0; k < s.size(); ++k) line_[std::size_t(start - 1) + k] = s[k];
+    return *this;
+  }
+  std::vector<std::string>* notes_;
+  std::string what_;
+  std::string line_;
+};
+
+}  // namespace
+
+void write_keyword_deck(std::ostream& os, const Model& m, std::vector<std::string>* notes) {
+  KeywordWriter(os, m, notes).write();
+}
+
+void write_fixed_deck(std::ostream& os, const Model& m, std::vector<std::string>* notes) {
+  const ControlData& k = m.control;
+  auto L = [&](const std::string& what) { return FixedLine(notes, what); };
+  if (!m.node_user_id.empty() || !m.hex_user_id.empty())
+    if (notes) notes->push_back("node and element ids renumbered 1..N (the fixed format needs 1..N)");
+  os << L("title card").a(1, 72, m.title).a(73, 80, "88 large").str() << "\n";
+  os << "*----- written by IMPACT-3D (impact3d --write-fixed); layout: README.md \"Deck format\"\n";
+  os << "*----- CONTROL CARD #2: counts\n";
+  os << L("control card 2").i(1, 5, int(m.materials.size())).i(6, 15, m.num_nodes()).i(16, 25, m.num_hexes())
+            .i(26, 35, 0).i(36, 45, 0).i(46, 55, 0).i(56, 65, k.interface_segments_out).r(66, 75, k.interface_out_interval).str() << "\n";
+  os << "*----- CONTROL CARD #3\n";
+  os << L("control card 3").i(1, 5, int(m.node_th_blocks.size())).i(6, 10, int(m.solid_th_blocks.size()))
+            .i(11, 15, 0).i(16, 20, 0).i(21, 25, 0).i(26, 30, k.report_interval).i(31, 35, k.reaction_print_flag)
+            .i(36, 40, 0).i(41, 45, 0).str() << "\n";
+  os << "*----- CONTROL CARD #4\n";
+  os << L("control card 4").i(1, 10, 0).i(11, 15, 0).i(16, 20, 0).i(21, 25, 0).i(26, 30, 0).a(31, 35, "e20.0").i(36, 40, 0).str() << "\n";
+  os << "*----- CONTROL CARD #5\n";
+  {
+    FixedLine c = L("control card 5");
+    c.i(1, 5, int(m.load_curves.size())).i(6, 10, 0).i(11, 15, 0).i(16, 20, 0).i(21, 25, int(m.walls.size()))
+        .i(26, 30, 0).i(31, 35, int(m.init_velocities.size())).i(36, 40, int(m.interfaces.size()));
+    for (int f = 0; f < 8; ++f) c.i(41 + 5 * f, 45 + 5 * f, 0);
+    os << c.str() << "\n";
+  }
+  os << "*----- CONTROL CARD #6\n";
+  os << L("control card 6").r(1, 10, k.end_time).r(11, 20, k.th_interval).r(21, 30, k.plot_interval)
+            .i(31, 35, k.restart_dump_cycles).i(36, 40, k.running_restart_cycles).r(41, 50, k.initial_dt)
+            .r(51, 60, k.penalty_scale).i(61, 65, 0).i(66, 70, k.viscosity_flag).r(71, 80, k.tssf).str() << "\n";
+  os << "*----- CONTROL CARD #7\n";
+  {
+    FixedLine c = L("control card 7");
+    for (int f = 0; f < 15; ++f) c.i(1 + 5 * f, 5 + 5 * f, 0);
+    os << c.str() << "\n";
+  }
+  os << "*----- CONTROL CARD #8\n";
+  os << L("control card 8").i(1, 5, 0).i(6, 10, 0).r(11, 20, k.min_step_factor).str() << "\n";
+  os << "*----- CONTROL CARD #9\n";
+  os << L("control card 9").i(1, 5, 0).i(6, 10, 0).i(11, 15, 0).i(16, 20, 0).str() << "\n";
+  os << "*----- MATERIALS\n";
+  for (std::size_t j = 0; j < m.materials.size(); ++j) {
+    const MaterialData& md = m.materials[j];
+    std::string what = "material " + std::to_string(j + 1);
+    os << L(what + " card 1").i(1, 5, int(j) + 1).i(6, 10, md.type).r(11, 20, md.rho).i(21, 25, 0)
+              .i(26, 30, md.hourglass_type).r(31, 40, md.hourglass_coef).i(41, 45, md.bulk_type)
+              .r(46, 55, md.q1).r(56, 65, md.q2).i(66, 70, 0).i(76, 80, 0).str() << "\n";
+    os << L(what + " title").a(1, 80, md.title).str() << "\n";
+    std::vector<double> p = {md.E, md.nu};
+    if (md.type == 3) p.insert(p.end(), {md.sigma_y, md.E_tan, md.beta, md.initially_elastic ? 1.0 : 0.0});
+    for (int c = 0; c < 6; ++c) {
+      if (c < int(p.size())) os << L(what + " card " + std::to_string(c + 3)).r(1, 10, p[std::size_t(c)]).str() << "\n";
+      else os << "\n";
+    }
+  }
+  os << "*----- NODES\n";
+  for (int n = 0; n < m.num_nodes(); ++n)
+    os << L("node " + std::to_string(n + 1)).i(1, 8, n + 1).i(9, 13, m.bc[std::size_t(n)]).r(14, 33, m.x[std::size_t(n)])
+              .r(34, 53, m.y[std::size_t(n)]).r(54, 73, m.z[std::size_t(n)]).i(74, 78, 0).str() << "\n";
+  os << "*----- SOLID ELEMENTS\n";
+  for (int e = 0; e < m.num_hexes(); ++e) {
+    FixedLine c = L("solid " + std::to_string(e + 1));
+    c.i(1, 8, e + 1).i(9, 13, m.hex_material[std::size_t(e)] + 1);
+    for (int j = 0; j < 8; ++j) c.i(14 + 8 * j, 21 + 8 * j, m.hex_nodes[std::size_t(e)][std::size_t(j)] + 1);
+    os << c.str() << "\n";
+  }
+  os << "*----- TIME-HISTORY BLOCKS\n";
+  for (const auto& b : m.node_th_blocks) os << L("node time-history block").i(1, 8, b[0]).i(9, 16, b[1]).str() << "\n";
+  for (const auto& b : m.solid_th_blocks) os << L("solid time-history block").i(1, 8, b[0]).i(9, 16, b[1]).str() << "\n";
+  if (!m.load_curves.empty()) os << "*----- LOAD CURVES\n";
+  for (std::size_t c = 0; c < m.load_curves.size(); ++c) {
+    const LoadCurve& lc = m.load_curves[c];
+    os << L("load curve").i(1, 5, int(c) + 1).i(6, 10, int(lc.t.size())).str() << "\n";
+    for (std::size_t p = 0; p < lc.t.size(); ++p) os << L("load curve point").r(1, 10, lc.t[p]).r(11, 20, lc.f[p]).str() << "\n";
+  }
+  if (!m.walls.empty()) os << "*----- STONEWALLS\n";
+  for (const StoneWall& w : m.walls) {
+    os << L("stonewall").i(1, 5, int(w.nodes.size())).r(11, 20, w.tail[0]).r(21, 30, w.tail[1]).r(31, 40, w.tail[2])
+              .r(41, 50, w.head[0]).r(51, 60, w.head[1]).r(61, 70, w.head[2]).r(71, 80, w.friction).str() << "\n";
+    for (std::size_t j = 0; j < w.nodes.size(); j += 10) {
+      FixedLine c = L("stonewall nodes");
+      for (std::size_t q = j; q < std::min(j + 10, w.nodes.size()); ++q) c.i(1 + 8 * int(q - j), 8 + 8 * int(q - j), w.nodes[q] + 1);
+      os << c.str() << "\n";
+    }
+  }
+  if (!m.init_velocities.empty()) os << "*----- INITIAL VELOCITIES\n";
+  for (const InitialVelocity& iv : m.init_velocities)
+    os << L("initial velocity").i(1, 8, iv.first).r(9, 18, iv.v[0]).r(19, 28, iv.v[1]).r(29, 38, iv.v[2])
+              .i(39, 46, iv.last).i(47, 51, iv.increment).str() << "\n";
+  if (!m.interfaces.empty()) os << "*----- SLIDING INTERFACES\n";
+  for (const SlidingInterface& si : m.interfaces)
+    os << L("sliding interface").i(1, 8, int(si.slave.size())).i(9, 16, int(si.master.size())).i(17, 20, si.type)
+              .r(21, 30, si.fs).r(31, 40, si.fd).r(41, 50, si.decay).r(51, 60, si.penalty_scale)
+              .i(61, 65, si.stiffness_method).i(66, 70, si.symmetric ? 0 : 1).str() << "\n";
+  for (const SlidingInterface& si : m.interfaces) {
+    for (int side = 0; side < 2; ++side) {
+      const auto& segs = side == 0 ? si.slave : si.master;
+      for (std::size_t s = 0; s < segs.size(); ++s) {
+        FixedLine c = L("segment");
+        c.i(1, 8, int(s) + 1);
+        for (int j = 0; j < 4; ++j) c.i(9 + 8 * j, 16 + 8 * j, segs[s][std::size_t(j)] + 1);
+        os << c.str() << "\n";
+      }
+    }
+  }
+  os << "*----- END OF DECK\n";
+}
+
+bool write_deck_file(const std::string& path, const Model& m, bool keyword, Diagnostics& diag,
+                     std::vector<std::string>* notes) {
+  std::ostringstream text;
+  if (keyword) write_keyword_deck(text, m, notes);
+  else write_fixed_deck(text, m, notes);
+  std::ofstream out(path, std::ios::binary);
+  out << text.str();
+  out.close();
+  if (!out) {
+    Location loc;
+    loc.file = path;
+    diag.add(3004, loc, std::strerror(errno));
+    return false;
+  }
+  return true;
+}
+
+int write_converted_decks(const Model& m, const std::string& keyword_path, const std::string& fixed_path,
+                          std::ostream& log) {
+  Diagnostics diag;
+  for (int k = 0; k < 2; ++k) {
+    const std::string& path = k == 0 ? keyword_path : fixed_path;
+    if (path.empty()) continue;
+    std::vector<std::string> notes;
+    if (!write_deck_file(path, m, k == 0, diag, &notes)) {
+      diag.print(log);
+      return exit_code::file_error;
+    }
+    log << " wrote " << (k == 0 ? "keyword" : "fixed-format") << " deck " << path << "\n";
+    for (const auto& n : notes) log << "   note: " << n << "\n";
+  }
+  return exit_code::ok;
+}
+
+std::vector<std::string> model_differences(const Model& a, const Model& b, int max_lines) {
+  std::vector<std::string> out;
+  auto diff = [&](const std::string& what, const std::string& va, const std::string& vb) {
+    if (int(out.size()) < max_lines) out.push_back(what + ": " + va + " vs " + vb);
+  };
+  auto D = [&](const std::string& what, double x, double y) {
+    if (!(x == y) && !(std::isnan(x) && std::isnan(y))) diff(what, shortest(x), shortest(y));
+  };
+  auto N = [&](const std::string& what, long long x, long long y) {
+    if (x != y) diff(what, std::to_string(x), std::to_string(y));
+  };
+  if (a.title != b.title) diff("title", "\"" + a.title + "\"", "\"" + b.title + "\"");
+  const ControlData &ka = a.control, &kb = b.control;
+  N("NMMAT", ka.nmmat, kb.nmmat);
+  N("NUMNP", ka.numnp, kb.numnp);
+  N("NUMELH", ka.numelh, kb.numelh);
+  N("interface segments out", ka.interface_segments_out, kb.interface_segments_out);
+  D("interface output interval", ka.interface_out_interval, kb.interface_out_interval);
+  N("node time-history blocks", ka.node_th_blocks, kb.node_th_blocks);
+  N("solid time-history blocks", ka.solid_th_blocks, kb.solid_th_blocks);
+  N("report interval", ka.report_interval, kb.report_interval);
+  N("reaction print flag", ka.reaction_print_flag, kb.reaction_print_flag);
+  N("NUMLC", ka.numlc, kb.numlc);
+  N("stonewalls", ka.num_walls, kb.num_walls);
+  N("initial-velocity cards", ka.num_init_velocity_cards, kb.num_init_velocity_cards);
+  N("sliding interfaces", ka.num_interfaces, kb.num_interfaces);
+  D("end time", ka.end_time, kb.end_time);
+  D("time-history interval", ka.th_interval, kb.th_interval);
+  D("plot interval", ka.plot_interval, kb.plot_interval);
+  N("restart dump cycles", ka.restart_dump_cycles, kb.restart_dump_cycles);
+  N("running restart cycles", ka.running_restart_cycles, kb.running_restart_cycles);
+  D("initial time step", ka.initial_dt, kb.initial_dt);
+  D("penalty scale", ka.penalty_scale, kb.penalty_scale);
+  N("viscosity flag", ka.viscosity_flag, kb.viscosity_flag);
+  D("TSSF", ka.tssf, kb.tssf);
+  D("minimum step factor", ka.min_step_factor, kb.min_step_factor);
+  N("materials", long(a.materials.size()), long(b.materials.size()));
+  for (std::size_t k = 0; k < std::min(a.materials.size(), b.materials.size()); ++k) {
+    const MaterialData &x = a.materials[k], &y = b.materials[k];
+    std::string w = "material " + std::to_string(k + 1) + " ";
+    N(w + "number", x.number, y.number);
+    N(w + "type", x.type, y.type);
+    D(w + "rho", x.rho, y.rho);
+    N(w + "hourglass type", x.hourglass_type, y.hourglass_type);
+    D(w + "hourglass coefficient", x.hourglass_coef, y.hourglass_coef);
+    N(w + "bulk type", x.bulk_type, y.bulk_type);
+    D(w + "Q1", x.q1, y.q1);
+    D(w + "Q2", x.q2, y.q2);
+    if (x.title != y.title) diff(w + "title", x.title, y.title);
+    D(w + "E", x.E, y.E);
+    D(w + "nu", x.nu, y.nu);
+    D(w + "sigma_y", x.sigma_y, y.sigma_y);
+    D(w + "E_tan", x.E_tan, y.E_tan);
+    D(w + "beta", x.beta, y.beta);
+    N(w + "initially elastic", x.initially_elastic, y.initially_elastic);
+  }
+  N("nodes", a.num_nodes(), b.num_nodes());
+  for (int n = 0; n < std::min(a.num_nodes(), b.num_nodes()); ++n) {
+    std::string w = "node " + std::to_string(n + 1) + " ";
+    D(w + "x", a.x[std::size_t(n)], b.x[std::size_t(n)]);
+    D(w + "y", a.y[std::size_t(n)], b.y[std::size_t(n)]);
+    D(w + "z", a.z[std::size_t(n)], b.z[std::size_t(n)]);
+    N(w + "bc", a.bc[std::size_t(n)], b.bc[std::size_t(n)]);
+  }
+  if (a.node_user_id != b.node_user_id) diff("node ids", std::to_string(a.node_user_id.size()), std::to_string(b.node_user_id.size()));
+  if (a.hex_user_id != b.hex_user_id) diff("element ids", std::to_string(a.hex_user_id.size()), std::to_string(b.hex_user_id.size()));
+  N("solids", a.num_hexes(), b.num_hexes());
+  for (int e = 0; e < std::min(a.num_hexes(), b.num_hexes()); ++e) {
+    std::string w = "solid " + std::to_string(e + 1) + " ";
+    N(w + "material", a.hex_material[std::size_t(e)], b.hex_material[std::size_t(e)]);
+    for (int j = 0; j < 8; ++j)
+      N(w + "node " + std::to_string(j + 1), a.hex_nodes[std::size_t(e)][std::size_t(j)], b.hex_nodes[std::size_t(e)][std::size_t(j)]);
+  }
+  auto blocks = [&](const char* w, const std::vector<std::array<int, 2>>& x, const std::vector<std::array<int, 2>>& y) {
+    if (x != y) diff(w, std::to_string(x.size()) + " block(s)", std::to_string(y.size()) + " block(s), or other ranges");
+  };
+  blocks("node time-history blocks", a.node_th_blocks, b.node_th_blocks);
+  blocks("solid time-history blocks", a.solid_th_blocks, b.solid_th_blocks);
+  N("load curves", long(a.load_curves.size()), long(b.load_curves.size()));
+  for (std::size_t c = 0; c < std::min(a.load_curves.size(), b.load_curves.size()); ++c) {
+    const LoadCurve &x = a.load_curves[c], &y = b.load_curves[c];
+    N("load curve " + std::to_string(c + 1) + " number", x.number, y.number);
+    if (x.t != y.t || x.f != y.f) diff("load curve " + std::to_string(c + 1), "points", "other points");
+  }
+  N("walls", long(a.walls.size()), long(b.walls.size()));
+  for (std::size_t w = 0; w < std::min(a.walls.size(), b.walls.size()); ++w) {
+    const StoneWall &x = a.walls[w], &y = b.walls[w];
+    std::string s = "wall " + std::to_string(w + 1) + " ";
+    for (int q = 0; q < 3; ++q) {
+      D(s + "tail", x.tail[std::size_t(q)], y.tail[std::size_t(q)]);
+      D(s + "head", x.head[std::size_t(q)], y.head[std::size_t(q)]);
+    }
+    D(s + "friction", x.friction, y.friction);
+    if (x.nodes != y.nodes) diff(s + "nodes", std::to_string(x.nodes.size()), std::to_string(y.nodes.size()));
+  }
+  N("initial velocities", long(a.init_velocities.size()), long(b.init_velocities.size()));
+  for (std::size_t v = 0; v < std::min(a.init_velocities.size(), b.init_velocities.size()); ++v) {
+    const InitialVelocity &x = a.init_velocities[v], &y = b.init_velocities[v];
+    std::string s = "initial velocity " + std::to_string(v + 1) + " ";
+    N(s + "first", x.first, y.first);
+    if (x.first != 0) {
+      N(s + "last", x.last, y.last);
+      N(s + "increment", x.increment, y.increment);
+    }
+    for (int q = 0; q < 3; ++q) D(s + "v", x.v[std::size_t(q)], y.v[std::size_t(q)]);
+  }
+  N("sliding interfaces", long(a.interfaces.size()), long(b.interfaces.size()));
+  for (std::size_t i = 0; i < std::min(a.interfaces.size(), b.interfaces.size()); ++i) {
+    const SlidingInterface &x = a.interfaces[i], &y = b.interfaces[i];
+    std::string s = "interface " + std::to_string(i + 1) + " ";
+    N(s + "type", x.type, y.type);
+    D(s + "fs", x.fs, y.fs);
+    D(s + "fd", x.fd, y.fd);
+    D(s + "decay", x.decay, y.decay);
+    D(s + "penalty scale", x.penalty_scale, y.penalty_scale);
+    N(s + "stiffness method", x.stiffness_method, y.stiffness_method);
+    N(s + "symmetric", x.symmetric, y.symmetric);
+    if (x.slave != y.slave) diff(s + "slave segments", std::to_string(x.slave.size()), std::to_string(y.slave.size()));
+    if (x.master != y.master) diff(s + "master segments", std::to_string(x.master.size()), std::to_string(y.master.size()));
+  }
+  return out;
+}
+
+}  // namespace impact3d
