@@ -150,11 +150,26 @@ SegmentHit closest_point_on_segment(const SegX& X, const double p[3], std::uint8
       best_d2 = d2;
     }
   }
-  // on the rim of the surface: off the surface
   const bool bnd = (boundary_edges >> best_e) & 1;
   const bool bnd_prev = (boundary_edges >> ((best_e + 3) % 4)) & 1;
   const bool bnd_next = (boundary_edges >> ((best_e + 1) % 4)) & 1;
-  if (bnd || (best_t == 0 && bnd_prev) || (best_t == 1 && bnd_next)) return h;
+  if (bnd || (best_t == 0 && bnd_prev) || (best_t == 1 && bnd_next)) {
+    // beyond the rim of the surface (a free edge or a symmetry plane, where the mirrored
+    // neighbour is not modelled): the face extended, i.e. the normal of the clamped point,
+    // accepted only for a node that is deeper below the face than it is beyond the rim
+    h.xi = std::clamp(xi, -1.0, 1.0);
+    h.eta = std::clamp(eta, -1.0, 1.0);
+    double a[3], b[3];
+    segment_point(X, h.xi, h.eta, h.xp, a, b);
+    segment_normal(X, h.xi, h.eta, h.n);
+    const double e[3] = {p[0] - h.xp[0], p[1] - h.xp[1], p[2] - h.xp[2]};
+    h.gap = dot(e, h.n);
+    h.dist = norm(e);
+    const double lat[3] = {e[0] - h.gap * h.n[0], e[1] - h.gap * h.n[1], e[2] - h.gap * h.n[2]};
+    h.on_edge = true;
+    h.valid = h.gap < 0 && norm(lat) <= -h.gap;
+    return h;
+  }
   h.valid = true;
   h.on_edge = true;
   edge_param(best_e, best_t, h.xi, h.eta);

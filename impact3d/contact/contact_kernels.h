@@ -50,10 +50,13 @@ struct SegmentHit {
 // projection still counts as interior (round-off at the rim of a surface).
 //  - projection inside the square (+ tol): x_p on the patch, n the patch normal there, gap
 //    along n (the Newton point, seed fig. 2);
-//  - otherwise the nearest point on the four (straight) edges; on a boundary edge: not valid;
-//    on an interior edge or corner (where the normal jumps) the normal is the unit offset
-//    x_node - x_p, signed by the side of the segment the node is on: a node in a concave corner
-//    is pushed straight out, a node outside a convex edge gets no force.
+//  - otherwise the nearest point on the four (straight) edges.  On an interior edge or corner
+//    (where the normal jumps) the normal is the unit offset x_node - x_p, signed by the side of
+//    the segment the node is on: a node in a concave corner is pushed straight out, a node
+//    outside a convex edge gets no force.  Beyond a boundary edge (the rim of the surface: a
+//    free edge, or a symmetry plane whose mirrored neighbour is not modelled) the face is
+//    extended: x_p the clamped projection, n its normal, valid only for a node below the face
+//    by more than it is beyond the rim (|lateral offset| <= -gap).
 SegmentHit closest_point_on_segment(const SegX& X, const double p[3], std::uint8_t boundary_edges,
                                     double tol);
 

@@ -100,10 +100,17 @@ TEST(ContactKernels, EdgesAndCorners) {
     EXPECT_NEAR(h.eta, 1.0, 1e-14);
     EXPECT_NEAR(h.gap, -0.3, 1e-14);
   }
-  // beyond a rim edge of the surface (bit 1: edge 1 at x = 1): off the surface
+  // beyond a rim edge of the surface (bit 1: edge 1 at x = 1): off the surface when further
+  // beyond the rim than below the face; the face extended (gap along +z) when deeper
   {
-    const double p[3] = {1.3, 0.5, -0.4};
+    const double p[3] = {1.5, 0.5, -0.4};
     EXPECT_FALSE(closest_point_on_segment(X, p, 0b0010, 0.01).valid);
+    const double p2[3] = {1.3, 0.5, -0.4};
+    const SegmentHit h2 = closest_point_on_segment(X, p2, 0b0010, 0.01);
+    ASSERT_TRUE(h2.valid);
+    EXPECT_NEAR(h2.gap, -0.4, 1e-14);
+    EXPECT_NEAR(h2.n[2], 1.0, 1e-14);
+    EXPECT_EQ(h2.xi, 1.0);
     // within the rim tolerance it is still a face contact
     const double q[3] = {1.004, 0.5, -0.01};
     const SegmentHit h = closest_point_on_segment(X, q, 0b0010, 0.01);
