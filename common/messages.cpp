@@ -65,7 +65,7 @@ const std::vector<MessageDef> kCatalog = {
     {1311, S::error, "required keyword missing"},
     {1312, S::error, "keyword option not supported"},
     {1313, S::warning, "keyword given more than once: the last one is used"},
-    {1314, S::error, "contact surface is empty"},
+    {1314, S::error, "set or contact surface is empty"},
     {1315, S::warning, "part without solid elements ignored"},
     {1316, S::error, "the keyword ends before a required card"},
     // 2000-2099: input warnings

@@ -261,6 +261,7 @@ struct RContact {
   double sfsa = 1;
   int soft = 0;
   Ref ref;
+  std::string keyword;
 };
 struct RWall {
   int nsid = 0;
@@ -291,9 +292,11 @@ Location loc_of(const Ref& r, const std::string& card, const char* field = nullp
   if (r.line) loc.line = r.line->number;
   loc.card = card;
   if (field) loc.field = field;
-  loc.col_first = r.c1;
-  loc.col_last = r.c2;
-  if (found && r.line && r.c1 > 0) {
+  if (field) {  // columns only with a field
+    loc.col_first = r.c1;
+    loc.col_last = r.c2;
+  }
+  if (found && field && r.line && r.c1 > 0) {
     const std::string& t = r.line->text;
     if (std::size_t(r.c1 - 1) < t.size())
       loc.found = std::string(trim_sv(std::string_view(t).substr(std::size_t(r.c1 - 1), std::size_t(r.c2 - r.c1 + 1))));
@@ -1224,6 +1227,7 @@ class KeywordReader {
     if (k >= b.data.size()) { missing_card(b, "card 1"); return; }
     RContact ct;
     ct.symmetric = symmetric;
+    ct.keyword = b.keyword;
     KCard c = card(b, k, "card 1", W(b, 8));
     ct.ref = c.ref(0);
     ct.a.id = int(c.i(0, "SURFA"));
@@ -1813,8 +1817,9 @@ class KeywordReader {
     }
   }
 
-  void resolve_side(const RSide& side, bool slave, std::vector<std::array<int, 4>>& out, std::vector<int>& lines) {
-    std::string card = "*CONTACT";
+  void resolve_side(const RSide& side, bool slave, const std::string& card, std::vector<std::array<int, 4>>& out,
+                    std::vector<int>& lines) {
+    const int errors_before = diag_.error_count();
     const char* field = slave ? "SURFA" : "SURFB";
     if (side.type == 0) {
       auto it = seg_sets_.find(side.id);
@@ -1849,7 +1854,8 @@ class KeywordReader {
         exterior_faces({}, &mark, out, lines);
       }
     }
-    if (out.empty() && (side.type == 0 || side.type == 2 || side.type == 3 || side.type == 4))
+    if (out.empty() && diag_.error_count() == errors_before &&
+        (side.type == 0 || side.type == 2 || side.type == 3 || side.type == 4))
       err(1314, side.id_ref, card, field, "no segments");
   }
 
@@ -1864,8 +1870,8 @@ class KeywordReader {
       si.stiffness_method = c.soft;
       si.symmetric = c.symmetric;
       si.line = c.ref.line ? c.ref.line->number : 0;
-      resolve_side(c.a, true, si.slave, si.slave_line);
-      resolve_side(c.b, false, si.master, si.master_line);
+      resolve_side(c.a, true, c.keyword, si.slave, si.slave_line);
+      resolve_side(c.b, false, c.keyword, si.master, si.master_line);
       m_.interfaces.push_back(std::move(si));
     }
     m_.control.num_interfaces = int(m_.interfaces.size());

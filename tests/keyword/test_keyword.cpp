@@ -621,3 +621,75 @@ TEST(KeywordRun, TaylorBarKeywordTwinRunsBitwiseTheSame) {
   EXPECT_TRUE(sa.vx == sb.vx && sa.vy == sb.vy && sa.vz == sb.vz);
   EXPECT_TRUE(sa.sig == sb.sig && sa.eps_p == sb.eps_p);
 }
+
+// ---------------------------------------------------------------------------- real-world layout
+
+// A deck laid out as pydyna's test deck mech.k (written by LS-PrePost): multi-card
+// *CONTROL_CONTACT, bulk viscosity TYPE -2, ASCII databases with BINARY/IOOPT, *PART with a
+// blank heading, a "$# cid title" comment line in a contact without _ID, *RIGIDWALL_PLANAR_ID
+// with DEATH 0.0 and RWKSF 0.0 (defaults), abutting "0.01.000000E8", *SET_PART_LIST with SOLVER
+// "MECH" and trailing zeros; plus shells and an airbag, which IMPACT-3D does not support.
+TEST(KeywordRealWorld, MechStyleDeckIsRefusedWithTheList) {
+  const std::string deck =
+      "*KEYWORD\n"
+      "*CONTROL_ACCURACY\n$#     osu       inn    pidosu      iacc     exacc\n         1         4         0         1       0.0\n"
+      "*CONTROL_BULK_VISCOSITY\n$#      q1        q2      type     btype    tstype\n       1.5      0.06        -2         0         0\n"
+      "*CONTROL_CONTACT\n$#  slsfac    rwpnal    islchk    shlthk    penopt    thkchg     orien    enmass\n"
+      "       0.0       1.0         0         0         0         0         1         0\n"
+      "$#  usrstr    usrfrc     nsbcs    interm     xpene     ssthk      ecdt   tiedprj\n"
+      "         0         0         0         0       0.0         0         0         0\n"
+      "*CONTROL_HOURGLASS\n$#     ihq        qh\n         2       0.0\n"
+      "*CONTROL_TERMINATION\n$#  endtim    endcyc     dtmin    endeng    endmas     nosol\n"
+      "      0.03         0       0.0       0.01.000000E8         0\n"
+      "*DATABASE_GLSTAT\n$#      dt    binary      lcur     ioopt\n2.00000E-4         1         0         1\n"
+      "*DATABASE_BINARY_D3PLOT\n$#      dt      lcdt      beam     npltc    psetid\n5.00000E-4         0         0         0         0\n"
+      "*DATABASE_EXTENT_BINARY\n$#   neiph     neips    maxint    strflg\n         0         0         3         0\n"
+      "*CONTACT_NODES_TO_SURFACE\n$#     cid                                                                 title\n"
+      "$#   surfa     surfb  surfatyp  surfbtyp   saboxid   sbboxid      sapr      sbpr\n"
+      "         3         2         3         3         0         0         0         0\n"
+      "$#      fs        fd        dc        vc       vdc    penchk        bt        dt\n"
+      "       0.5       0.5       0.0       0.0       0.0         0       0.0       0.0\n"
+      "$#    sfsa      sfsb      sast      sbst     sfsat     sfsbt       fsf       vsf\n"
+      "       1.0       1.0       0.0       0.0       1.0       1.0       1.0       1.0\n"
+      "*PART\n$#                                                                         title\n\n"
+      "$#     pid     secid       mid     eosid      hgid      grav    adpopt      tmid\n"
+      "         1         0         0         0         0         0         0         0\n"
+      "*RIGIDWALL_PLANAR_ID\n$#      id                                                                 title\n"
+      "         1                                                                     \n"
+      "$#    nsid    nsidex     boxid    offset     birth     death     rwksf\n"
+      "         0         0         0       0.0       0.0       0.0       0.0\n"
+      "$#      xt        yt        zt        xh        yh        zh      fric      wvel\n"
+      "       0.0       0.0       0.0       0.0       1.0       0.0       0.5       0.0\n"
+      "*DEFINE_CURVE\n$#    lcid      sidr       sfa       sfo      offa      offo    dattyp     lcint\n"
+      "         1         0       1.0       1.0       0.0       0.0         0         0\n"
+      "$#                a1                  o1\n                 0.0                 0.0\n               0.032                26.0\n"
+      "*AIRBAG_SIMPLE_AIRBAG_MODEL\n$#     sid    sidtyp\n         1         1\n"
+      "*SET_PART_LIST\n$#     sid       da1       da2       da3       da4    solver\n         1                                        MECH\n"
+      "$#    pid1      pid2      pid3      pid4      pid5      pid6      pid7      pid8\n"
+      "         3         0         0         0         0         0         0         0\n"
+      "*ELEMENT_SHELL\n$#   eid     pid      n1      n2      n3      n4      n5      n6      n7      n8\n"
+      "       1       1       1       3       4       2       0       0       0       0\n"
+      "*NODE\n$#   nid               x               y               z      tc      rc\n"
+      "       1             0.0             0.0             0.0       0       0\n"
+      "       2            16.0             0.0             0.0       0       0\n"
+      "*END\n";
+  Read r = read_text(deck);
+  EXPECT_FALSE(r.ok);
+  std::vector<std::string> refused;
+  for (const auto& d : r.d.all())
+    if (d.id == 1301 && d.where.line > 0) refused.push_back(d.where.card);
+  EXPECT_EQ(refused, (std::vector<std::string>{"*CONTROL_ACCURACY", "*AIRBAG_SIMPLE_AIRBAG_MODEL", "*ELEMENT_SHELL"}))
+      << r.messages();
+  // the supported keywords read without field errors
+  EXPECT_EQ(r.count(1001) + r.count(1002) + r.count(1006), 0) << r.messages();
+  EXPECT_EQ(r.m.control.end_time, 0.03);
+  EXPECT_EQ(r.m.control.plot_interval, 5.0e-4);
+  EXPECT_EQ(r.m.control.th_interval, 2.0e-4);
+  EXPECT_EQ(r.m.control.penalty_scale, 0.1);  // SLSFAC 0.0 -> default
+  ASSERT_EQ(r.m.walls.size(), 1u);
+  EXPECT_EQ(r.m.walls[0].friction, 0.5);
+  ASSERT_EQ(r.m.load_curves.size(), 1u);
+  EXPECT_EQ(r.m.load_curves[0].t[1], 0.032);
+  EXPECT_EQ(r.count(1311), 1);  // no solid elements
+  EXPECT_EQ(r.count(1315), 1);  // the shell part
+}
