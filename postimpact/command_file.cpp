@@ -1,6 +1,8 @@
 #include "postimpact/command_file.h"
 
 #include <algorithm>
+#include <chrono>
+#include <ctime>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -86,14 +88,30 @@ const Font& Session::font() {
 
 std::string Session::out_path(const std::string& name) const {
     std::filesystem::path p(name);
-    if (p.is_absolute() || outdir_.empty()) return p.string();
-    return (std::filesystem::path(outdir_) / p).string();
+    if (!p.is_absolute() && !outdir_.empty()) p = std::filesystem::path(outdir_) / p;
+    if (p.has_parent_path()) std::filesystem::create_directories(p.parent_path());  // frames anim/f_
+    return p.string();
 }
+
+namespace {
+double wall_now() {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+double cpu_now() { return static_cast<double>(std::clock()) / CLOCKS_PER_SEC; }
+}  // namespace
 
 void Session::wrote(const std::string& path) {
     written_.push_back(path);
     ++actions_;
-    log_ << "wrote " << path << "\n";
+    log_ << "wrote " << path;
+    if (timing_) {
+        char b[96];
+        std::snprintf(b, sizeof b, "  (%.3f s wall, %.3f s cpu)", wall_now() - t0_wall_, cpu_now() - t0_cpu_);
+        log_ << b;
+    }
+    log_ << "\n";
+    t0_wall_ = wall_now();
+    t0_cpu_ = cpu_now();
 }
 
 int Session::parse_state(const std::string& s, const std::string& cmd) {
@@ -176,6 +194,8 @@ void Session::execute(const std::vector<std::string>& w, const std::string& wher
     auto need = [&](std::size_t lo, std::size_t hi, const char* usage) {
         if (na < lo || na > hi) throw CommandError(c + ": usage: " + usage);
     };
+    t0_wall_ = wall_now();
+    t0_cpu_ = cpu_now();
     try {
         if (c == "open" || c == "database") {
             need(1, 1, "open PATH");
@@ -244,6 +264,9 @@ void Session::execute(const std::vector<std::string>& w, const std::string& wher
             int n = 0;
             if (!to_int(w[1], n) || n < 1 || n > 4) throw CommandError("supersample: expected 1..4");
             ps_.supersample = n;
+        } else if (c == "timing") {
+            need(1, 1, "timing on|off");
+            if (!on_off(w[1], timing_)) throw CommandError("timing: expected on or off");
         } else if (c == "average" || c == "edges" || c == "legend" || c == "triad") {
             need(1, 1, "on|off");
             bool v = false;

@@ -62,6 +62,8 @@ private:
     int state_ = -1;  // current state (0-based); -1: last
     std::string outdir_;
     int plot_w_ = 1200, plot_h_ = 800;
+    bool timing_ = false;
+    double t0_wall_ = 0, t0_cpu_ = 0;  // start of the current action
     int actions_ = 0;
     std::vector<std::string> written_;
 };

@@ -39,6 +39,7 @@ const char* kUsage =
     "  --size WxH             picture size (1600x1200)    --plotsize WxH (1200x800)\n"
     "  --title TEXT           --units si|none   --scale F (displacement magnification)\n"
     "  --no-edges  --no-average  --no-legend  --no-triad   --font PATH.ttf\n"
+    "  --timing               print the time each file took\n"
     "  -h, --help   --version\n"
     "compare: --tol FILE (lines 'FIELD REL ABS', FIELD time coords vel acc stress eps\n"
     "energy default; without it values must be equal), --report N (10).\n"
@@ -116,6 +117,7 @@ int main(int argc, char** argv) {
             } else if (a == "--history") { cmd({"history", value(), "energy"}); explicit_actions = true; }
             else if (a == "-d" || a == "--outdir") cmd({"outdir", value()});
             else if (a == "--title" || a == "--font") cmd({a.substr(2), value()});
+            else if (a == "--timing") cmd({"timing", "on"});
             else if (a == "--no-edges" || a == "--no-average" || a == "--no-legend" || a == "--no-triad") cmd({a.substr(5), "off"});
             else if (a == "--state" || a == "--fringe" || a == "--view" || a == "--up" || a == "--mirror" ||
                      a == "--range" || a == "--bands" || a == "--size" || a == "--plotsize" || a == "--units" ||

@@ -56,7 +56,7 @@ Image Renderer::render(int width, int height, const std::vector<RenderPanel>& pa
     const int ss = std::max(1, style.supersample);
     const int W = width * ss, H = height * ss;
     Impl& m = *impl_;
-    m.buffer.assign(4 * static_cast<std::size_t>(W) * H, 0);
+    m.buffer.resize(4 * static_cast<std::size_t>(W) * H);  // every pixel is cleared below
     if (!OSMesaMakeCurrent(m.ctx, m.buffer.data(), GL_UNSIGNED_BYTE, W, H))
         throw std::runtime_error("OSMesa: cannot bind a " + std::to_string(W) + "x" + std::to_string(H) + " buffer");
     OSMesaPixelStore(OSMESA_Y_UP, 0);  // row 0 of the buffer = top of the picture
@@ -188,12 +188,29 @@ Image Renderer::render(int width, int height, const std::vector<RenderPanel>& pa
     }
     glFinish();
 
+    // box-filter the supersampled buffer straight into the output image (alpha: opaque)
     Image img;
-    img.width = W;
-    img.height = H;
-    img.rgba = m.buffer;
-    for (std::size_t i = 3; i < img.rgba.size(); i += 4) img.rgba[i] = 255;
-    return ss > 1 ? img.downsample(ss) : img;
+    img.width = width;
+    img.height = height;
+    img.rgba.resize(4 * static_cast<std::size_t>(width) * height);
+    const std::uint8_t* src = m.buffer.data();
+    const std::size_t row = 4 * static_cast<std::size_t>(W);
+    const unsigned n = static_cast<unsigned>(ss * ss);
+    for (int y = 0; y < height; ++y) {
+        std::uint8_t* d = &img.rgba[4 * static_cast<std::size_t>(y) * width];
+        for (int x = 0; x < width; ++x, d += 4) {
+            unsigned r = 0, g = 0, b = 0;
+            for (int j = 0; j < ss; ++j) {
+                const std::uint8_t* p = src + (static_cast<std::size_t>(y) * ss + j) * row + 4 * static_cast<std::size_t>(x) * ss;
+                for (int i = 0; i < ss; ++i, p += 4) { r += p[0]; g += p[1]; b += p[2]; }
+            }
+            d[0] = static_cast<std::uint8_t>((r + n / 2) / n);
+            d[1] = static_cast<std::uint8_t>((g + n / 2) / n);
+            d[2] = static_cast<std::uint8_t>((b + n / 2) / n);
+            d[3] = 255;
+        }
+    }
+    return img;
 }
 
 }  // namespace postimpact
