@@ -3,9 +3,7 @@
 // hexahedron faces, the seed's method (shared/spec/physics.md section 5).
 
 #include <array>
-#include <array>
 #include <memory>
-#include <vector>
 #include <vector>
 
 #include "impact3d/model/model.h"

@@ -130,12 +130,18 @@ std::vector<char> read_checked(const std::string& path, std::size_t& payload_sta
 
 }  // namespace
 
-void write_restart_dump(const std::string& path, const DumpHeader& h, State& s) {
+void write_restart_dump(const std::string& path, const DumpHeader& h, State& s,
+                        const SlidingInterfaces::RestartData& contact) {
   Writer w;
   write_header_fields(w, h);
   std::uint64_t nn = std::uint64_t(s.nn), ne = std::uint64_t(s.ne), nr = s.rigid.size();
   w(nn); w(ne); w(nr);
   s.visit_dynamic_fields(w);
+  w(contact.forces);
+  w(contact.vpred);
+  w(contact.dtn);
+  std::uint8_t has = contact.has ? 1 : 0;
+  w(has);
   std::vector<char> out(kHeaderBytes, 0);
   std::memcpy(out.data(), kMagic, sizeof kMagic);
   std::uint32_t version = kDumpVersion;
@@ -181,7 +187,8 @@ DumpHeader read_restart_dump_header(const std::string& path) {
   return h;
 }
 
-void read_restart_dump_state(const std::string& path, State& s) {
+void read_restart_dump_state(const std::string& path, State& s,
+                             SlidingInterfaces::RestartData& contact) {
   std::size_t start = 0;
   std::vector<char> b = read_checked(path, start);
   Reader r(b, start, path);
@@ -192,6 +199,18 @@ void read_restart_dump_state(const std::string& path, State& s) {
   if (nn != std::uint64_t(s.nn) || ne != std::uint64_t(s.ne) || nr != s.rigid.size())
     r.fail("model size differs from the deck (" + std::to_string(nn) + " nodes, " + std::to_string(ne) + " solids)");
   s.visit_dynamic_fields(r);
+  // contact arrays: their sizes are whatever the dump says (empty without interfaces)
+  for (auto* v : {&contact.forces, &contact.vpred}) {
+    std::uint64_t n = 0;
+    r.raw(&n, sizeof n);
+    if (n != 0 && n != 3 * std::uint64_t(s.nn)) r.fail("contact array of unexpected size");
+    v->assign(std::size_t(n), 0.0);
+    for (auto& e : *v) r(e);
+  }
+  r(contact.dtn);
+  std::uint8_t has = 0;
+  r(has);
+  contact.has = has != 0;
   if (r.pos() != b.size()) r.fail("unexpected data after the state");
 }
 

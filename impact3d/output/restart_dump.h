@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <string>
 
+#include "impact3d/contact/sliding_interface.h"
 #include "impact3d/model/state.h"
 
 namespace impact3d {
@@ -32,13 +33,16 @@ struct DumpHeader {
 constexpr std::uint32_t kDumpVersion = 1;
 
 // Writes the dump atomically (temporary file, fsync, rename).  Throws std::runtime_error.
-void write_restart_dump(const std::string& path, const DumpHeader& h, State& s);
+// The contact state (energy books of the sliding interfaces) travels with the State.
+void write_restart_dump(const std::string& path, const DumpHeader& h, State& s,
+                        const SlidingInterfaces::RestartData& contact);
 
 // Reads the header (deck text, cursor) of a dump, after checking magic, version, size and
 // checksum.  Throws std::runtime_error naming the file and the problem.
 DumpHeader read_restart_dump_header(const std::string& path);
 
 // Restores the dynamic fields into a State built from the same model (sizes must match).
-void read_restart_dump_state(const std::string& path, State& s);
+void read_restart_dump_state(const std::string& path, State& s,
+                             SlidingInterfaces::RestartData& contact);
 
 }  // namespace impact3d

@@ -30,6 +30,7 @@ class Engine {
   // Element (0-based) behind the last error, and a description.
   int error_element() const { return error_elem_; }
 
+  SlidingInterfaces& contact() { return contact_; }
   // Resultant force on each sliding interface (master side) at the last cycle.
   const std::vector<std::array<double, 3>>& interface_forces() const { return contact_.interface_forces(); }
 

@@ -135,7 +135,9 @@ int run_simulation(const Model& model, const RunOptions& opt, std::ostream& prin
   if (restarting) {
     try {
       dump = read_restart_dump_header(opt.restart);
-      read_restart_dump_state(opt.restart, s);
+      SlidingInterfaces::RestartData cd;
+      read_restart_dump_state(opt.restart, s, cd);
+      engine.contact().restore(cd);
     } catch (const std::exception& ex) {
       file_error(4005, opt.restart, ex.what());
       log.line("\n E r r o r   t e r m i n a t i o n   (restart dump is invalid)");
@@ -215,7 +217,7 @@ int run_simulation(const Model& model, const RunOptions& opt, std::ostream& prin
     h.cursor.history_states = history.thdt_states();
     history.current_sizes(h.cursor.ascii_bytes);
     try {
-      write_restart_dump(path, h, s);
+      write_restart_dump(path, h, s, engine.contact().restart_data());
     } catch (const std::exception& ex) {
       file_error(3004, path, ex.what());
       return false;
