@@ -155,7 +155,7 @@ int main(int argc, char** argv) {
     opt.deck_text = h.deck_text;
     DeckFile deck;
     deck.load_from_string(h.deck_name, h.deck_text);
-    ok = read_dyna3d_deck(deck, model, diag);
+    ok = read_deck(deck, model, diag, input_opt);  // fixed format or keyword, by content
     if (ok) ok = check_model(model, diag);
   } else {
     ok = read_and_check_deck(opt.deck, model, diag, input_opt);
