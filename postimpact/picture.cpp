@@ -256,8 +256,10 @@ Image make_picture(Database& db, const std::vector<int>& states, const PictureSe
 
     // ---- axis triad, bottom left
     if (ps.triad) {
+        // in the legend column when there is one (it never covers the model), else bottom left
         const int len = unit * 2;
-        const int ox = margin + len + unit / 2, oy = H - margin - len - caption;
+        const int ox = show_legend ? W - legend_w / 2 - margin / 2 : margin + len + unit / 2;
+        const int oy = H - margin - len - caption;
         const char* names[3] = {"x", "y", "z"};
         const Rgb cols[3] = {{200, 30, 30}, {30, 150, 30}, {30, 60, 210}};
         for (int a = 0; a < 3; ++a) {
