@@ -53,9 +53,6 @@ const std::vector<MessageDef> kCatalog = {
     {1224, S::error, "rigid-body material used together with a non-rigid material in one element set"},
     // 1300-1399: LS-DYNA keyword decks
     {1301, S::error, "keyword not supported by IMPACT-3D (impact3d --lenient-keywords turns this into a warning)"},
-    {1302, S::warning, "keyword not supported by IMPACT-3D: ignored (--lenient-keywords)"},
-    {1303, S::warning, "keyword read but ignored (no effect in IMPACT-3D)"},
-    {1304, S::warning, "the deck does not start with *KEYWORD"},
     {1305, S::error, "data line before the first keyword"},
     {1306, S::error, "include file cannot be read"},
     {1307, S::error, "include files nested too deeply or including themselves"},
@@ -64,9 +61,7 @@ const std::vector<MessageDef> kCatalog = {
     {1310, S::error, "reference to an undefined definition"},
     {1311, S::error, "required keyword missing"},
     {1312, S::error, "keyword option not supported"},
-    {1313, S::warning, "keyword given more than once: the last one is used"},
     {1314, S::error, "set or contact surface is empty"},
-    {1315, S::warning, "part without solid elements ignored"},
     {1316, S::error, "the keyword ends before a required card"},
     // 2000-2099: input warnings
     {2001, S::warning, "material parameters read as packed (8 per card) from card 3"},
@@ -75,6 +70,11 @@ const std::vector<MessageDef> kCatalog = {
     {2004, S::warning, "load curve not used"},
     {2005, S::warning, "rotational boundary code ignored (solids have no rotations)"},
     {2006, S::warning, "field ignored by IMPACT-3D"},
+    {2007, S::warning, "keyword not supported by IMPACT-3D: ignored (--lenient-keywords)"},
+    {2008, S::warning, "keyword read but ignored (no effect in IMPACT-3D)"},
+    {2009, S::warning, "the deck does not start with *KEYWORD"},
+    {2010, S::warning, "keyword given more than once: the last one is used"},
+    {2011, S::warning, "part without solid elements ignored"},
     // 3000-3099: command line and files
     {3001, S::error, "unknown command-line argument"},
     {3002, S::error, "no input deck given (use i=deck)"},

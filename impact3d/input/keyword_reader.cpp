@@ -385,7 +385,7 @@ class KeywordReader {
         Location loc;
         loc.file = main_.name();
         loc.line = l.number;
-        diag_.add(1304, loc, "LS-DYNA requires *KEYWORD as the first line; read anyway");
+        diag_.add(2009, loc, "LS-DYNA requires *KEYWORD as the first line; read anyway");
       }
       return;
     }
@@ -564,7 +564,7 @@ class KeywordReader {
       loc.file = b.kw.file->name();
       loc.line = b.kw.line->number;
       loc.card = b.keyword;
-      diag_.add(1313, loc, "also given at " + at(it->second));
+      diag_.add(2010, loc, "also given at " + at(it->second));
     }
     Ref r;
     r.file = b.kw.file;
@@ -705,7 +705,7 @@ class KeywordReader {
         loc.file = b.kw.file->name();
         loc.line = b.kw.line->number;
         loc.card = b.keyword;
-        diag_.add(1303, loc, n == "CONTROL_ENERGY" ? "IMPACT-3D always computes all energies" : "IMPACT-3D writes its fixed set of plot variables");
+        diag_.add(2008, loc, n == "CONTROL_ENERGY" ? "IMPACT-3D always computes all energies" : "IMPACT-3D writes its fixed set of plot variables");
       } else if (n == "DATABASE_HISTORY_NODE" || n == "DATABASE_HISTORY_SOLID") {
         RHistory h;
         h.solid = n == "DATABASE_HISTORY_SOLID";
@@ -1318,13 +1318,13 @@ class KeywordReader {
       loc.file = b->kw.file->name();
       loc.line = b->kw.line->number;
       loc.card = b->keyword;
-      diag_.add(opt_.lenient ? 1302 : 1301, loc);
+      diag_.add(opt_.lenient ? 2007 : 1301, loc);
     }
     std::string list;
     for (const auto& [n, c] : count) list += (list.empty() ? "*" : ", *") + n + (c > 1 ? " (" + std::to_string(c) + "x)" : "");
     Location loc;
     loc.file = main_.name();
-    diag_.add(opt_.lenient ? 1302 : 1301, loc, std::to_string(unsupported_.size()) + " keyword block(s): " + list);
+    diag_.add(opt_.lenient ? 2007 : 1301, loc, std::to_string(unsupported_.size()) + " keyword block(s): " + list);
   }
 
   // ---------------------------------------------------------------- pass 3: resolve
@@ -1492,7 +1492,7 @@ class KeywordReader {
       auto mit = mats_.find(p.mid);
       if (!used && (sit == sections_.end() || mit == mats_.end())) {
         Location loc = loc_of(p.ref, card, "PID");
-        diag_.add(1315, loc, "no *ELEMENT_SOLID uses it and its section or material is not a supported solid one");
+        diag_.add(2011, loc, "no *ELEMENT_SOLID uses it and its section or material is not a supported solid one");
         continue;
       }
       MaterialData md;

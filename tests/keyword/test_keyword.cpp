@@ -434,8 +434,8 @@ TEST(KeywordUnsupported, ListedInOnePassOrWarnedWhenLenient) {
 
   Read lenient = read_text(deck, true);
   EXPECT_TRUE(lenient.ok) << lenient.messages();
-  EXPECT_EQ(lenient.count(1302), 5);
-  EXPECT_EQ(lenient.count(1315), 1);  // the shell part is left out
+  EXPECT_EQ(lenient.count(2007), 5);
+  EXPECT_EQ(lenient.count(2011), 1);  // the shell part is left out
   EXPECT_EQ(lenient.m.materials.size(), 1u);
 }
 
@@ -691,5 +691,5 @@ TEST(KeywordRealWorld, MechStyleDeckIsRefusedWithTheList) {
   ASSERT_EQ(r.m.load_curves.size(), 1u);
   EXPECT_EQ(r.m.load_curves[0].t[1], 0.032);
   EXPECT_EQ(r.count(1311), 1);  // no solid elements
-  EXPECT_EQ(r.count(1315), 1);  // the shell part
+  EXPECT_EQ(r.count(2011), 1);  // the shell part
 }
