@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <utility>
 
 #include "impact3d/contact/contact_kernels.h"
+#include "impact3d/element/hexahedron.h"
 
 // Type-3 sliding interfaces (shared/spec/physics.md section 5, seed part II).
 //
@@ -28,7 +30,7 @@ namespace impact3d {
 namespace {
 
 constexpr double kInteriorTol = 0.01;  // xi/eta tolerance beyond the square (rim round-off)
-constexpr double kDepthFactor = 0.5;   // p_max = 0.5 * thickness V/A of the segment's element
+constexpr double kDepthFactor = 0.5;   // p_max = 0.5 * min(thickness V/A, sqrt(A)) of the segment
 
 // One surface: its segments and per-segment constants.
 struct Surface {
@@ -125,8 +127,10 @@ void build_surface(const State& s, const std::vector<std::array<int, 4>>& segs, 
       K = s.mats[std::size_t(s.mat[std::size_t(el)])].K;
     }
     sf.k0[j] = contact::dyna3d_stiffness(mu, K, area, vol);
+    // deeper than half the element or half the segment's width: not a contact of this segment
+    // (it keeps the grown boxes, and so the search, proportional to the segments)
     const double thick = (el >= 0 && area > 0) ? vol / area : std::sqrt(area);
-    sf.pmax[j] = kDepthFactor * thick;
+    sf.pmax[j] = kDepthFactor * std::min(thick, std::sqrt(area));
     for (int n : sg) sf.nodes.push_back(n);
   }
   std::sort(sf.nodes.begin(), sf.nodes.end());
@@ -210,6 +214,32 @@ inline bool in_box(const double* b, const double p[3]) {
          p[2] <= b[5];
 }
 
+// The step of the maximum stable stiffness: TSSF x the smallest element step l / c without the
+// bulk-viscosity term (DYNA3D's step drops by ~6% whenever an element compresses, Q = C1 c, and
+// a stiffness following those jumps, k ~ 1/dt^2, pumps energy into the springs: loaded at one
+// k, unloaded at another).  It is >= the engine's step, so the stiffness stays <= the seed's
+// k(dt), and it varies smoothly with the geometry.  Minimum: the same for any thread count.
+double elastic_step(const State& s, double tssf) {
+  double dtmin = std::numeric_limits<double>::max();
+#pragma omp parallel for schedule(static) reduction(min : dtmin)
+  for (int e = 0; e < s.ne; ++e) {
+    const std::size_t E = std::size_t(e);
+    if (s.rigid_elem[E]) continue;
+    const double c = s.mats[std::size_t(s.mat[E])].c;
+    if (!(c > 0)) continue;
+    double x[8], y[8], z[8];
+    for (int a = 0; a < 8; ++a) {
+      const std::size_t n = std::size_t(s.conn[E][std::size_t(a)]);
+      x[a] = s.x[n];
+      y[a] = s.y[n];
+      z[a] = s.z[n];
+    }
+    const double amax = calc_hex_max_face_area(x, y, z);
+    if (amax > 0) dtmin = std::min(dtmin, s.vol[E] / amax / c);
+  }
+  return tssf * dtmin;
+}
+
 }  // namespace
 
 struct SlidingInterfaces::Impl {
@@ -221,15 +251,16 @@ struct SlidingInterfaces::Impl {
   double prev_dtn = 0;
   bool has_prev = false;
   double tssf = 0.9;
+  bool any_max_stable = false;
   double max_pen = 0;
   SearchStats stats;
 
-  void node_pass(const Model& m, const State& s, Interface& in, Pass& ps, double dt);
+  void node_pass(const Model& m, const State& s, Interface& in, Pass& ps, double dt, double dt_k);
 };
 
 // Step 2 of a pass: every node of the pass against the segments (parallel, per-node slots).
 void SlidingInterfaces::Impl::node_pass(const Model&, const State& s, Interface& in, Pass& ps,
-                                        double dt) {
+                                        double dt, double dt_k) {
   const Surface& nodes_sf = in.surf[ps.node_side];
   const Surface& segs = in.surf[ps.seg_side];
   const Grid& g = ps.grid;
@@ -280,7 +311,7 @@ void SlidingInterfaces::Impl::node_pass(const Model&, const State& s, Interface&
       for (int a = 1; a < 4; ++a)
         if (N[a] > N[a_near]) a_near = a;
       const int nm = segs.seg[std::size_t(best)][std::size_t(a_near)];
-      kpen = contact::max_stable_stiffness(alpha_tssf, dt, s.mass[k], s.mass[std::size_t(nm)],
+      kpen = contact::max_stable_stiffness(alpha_tssf, dt_k, s.mass[k], s.mass[std::size_t(nm)],
                                            in.symmetric);
     }
     const double fn = kpen * pen;
@@ -331,6 +362,7 @@ void SlidingInterfaces::initialize(const Model& m, const State& s) {
     in.decay = d.decay;
     in.symmetric = d.symmetric;
     in.npass = d.symmetric ? 2 : 1;
+    im.any_max_stable = im.any_max_stable || in.method == 1;
     build_surface(s, d.slave, in.mu, in.surf[0]);
     build_surface(s, d.master, in.mu, in.surf[1]);
     for (int p = 0; p < in.npass; ++p) {
@@ -370,6 +402,7 @@ void SlidingInterfaces::apply(const Model& m, State& s, double dt) {
     for (int a = 0; a < 3; ++a) im.cur[3 * std::size_t(n) + std::size_t(a)] = 0.0;
   im.max_pen = 0;
   im.stats = SearchStats{};
+  const double dt_k = im.any_max_stable ? std::max(dt, elastic_step(s, im.tssf)) : dt;
   // 2. every interface, every pass
   for (std::size_t i = 0; i < im.ifaces.size(); ++i) {
     Interface& in = im.ifaces[i];
@@ -380,7 +413,7 @@ void SlidingInterfaces::apply(const Model& m, State& s, double dt) {
       const Surface& segs = in.surf[ps.seg_side];
       if (segs.seg.empty()) continue;
       rebuild_grid(s, segs, ps.grid);
-      im.node_pass(m, s, in, ps, dt);
+      im.node_pass(m, s, in, ps, dt, dt_k);
       // 3. scatter in node order
       const double sign = ps.node_side == 0 ? 1.0 : -1.0;  // force on the slave side
       for (std::size_t q = 0; q < nodes_sf.nodes.size(); ++q) {
