@@ -1,5 +1,6 @@
 #include "impact3d/output/history_output.h"
 
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -45,6 +46,14 @@ void HistoryOutput::open(const Model& m, const std::string& dir, const std::stri
     if (!want[k]) continue;
     const std::string path = dir_ + "/" + kNames[k];
     if (resume) {
+      // a file shorter than the dump recorded cannot be continued (truncate would pad it with
+      // zero bytes)
+      struct stat st {};
+      if (::stat(path.c_str(), &st) != 0) fail("cannot cut back", path);
+      if (static_cast<std::uint64_t>(st.st_size) < ascii_bytes[k])
+        throw std::runtime_error("cannot resume " + path + ": " + std::to_string(st.st_size) +
+                                 " bytes, shorter than the " + std::to_string(ascii_bytes[k]) +
+                                 " bytes the restart dump expects");
       if (::truncate(path.c_str(), static_cast<off_t>(ascii_bytes[k])) != 0) fail("cannot cut back", path);
       files_[k] = std::fopen(path.c_str(), "ab");
     } else {

@@ -30,7 +30,8 @@ struct DumpHeader {
   OutputCursor cursor;
 };
 
-constexpr std::uint32_t kDumpVersion = 1;
+// 1: first format; 2: the sliding interfaces' restart data after the State.
+constexpr std::uint32_t kDumpVersion = 2;
 
 // Writes the dump atomically (temporary file, fsync, rename).  Throws std::runtime_error.
 // The contact state (energy books of the sliding interfaces) travels with the State.
