@@ -55,7 +55,7 @@ int main(int argc, char** argv) {
   bool check_only = false;
   InputOptions input_opt;
   std::string write_keyword, write_fixed;
-  bool printed_given = false, plot_given = false;
+  bool printed_given = false, plot_given = false, dump_given = false;
   Diagnostics cmd;
   for (int a = 1; a < argc; ++a) {
     std::string arg = argv[a];
@@ -95,6 +95,7 @@ int main(int argc, char** argv) {
       plot_given = true;
     } else if (const char* v = value("d=")) {
       opt.dump = v;
+      dump_given = true;
     } else if (const char* v = value("r=")) {
       opt.restart = v;
     } else if (const char* v = value("plotwords=")) {
@@ -150,6 +151,7 @@ int main(int argc, char** argv) {
     }
     if (!printed_given) opt.printed = h.printed;
     if (!plot_given) opt.plot = h.plot_root;
+    if (!dump_given && !h.dump_root.empty()) opt.dump = h.dump_root;
     opt.plot_word_size = h.plot_word_size;
     opt.deck = h.deck_name;
     opt.deck_text = h.deck_text;

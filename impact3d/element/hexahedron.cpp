@@ -260,10 +260,9 @@ double calc_hex_hourglass_force(const HourglassInput& in, const double x[8], con
   return add_hourglass_forces(g, hgs, vx, vy, vz, fx, fy, fz);
 }
 
-double calc_bulk_viscosity(double rho, double c, double volume, double trace_d, double q1,
+double calc_bulk_viscosity(double rho, double c, double l, double trace_d, double q1,
                            double q2) {
   if (trace_d >= 0.0) return 0.0;
-  const double l = std::cbrt(volume);
   return rho * l * (q1 * l * trace_d * trace_d - q2 * c * trace_d);
 }
 

@@ -57,10 +57,14 @@ double calc_hex_hourglass_force(const HourglassInput& in, const double x[8], con
                                 const double vz[8], double hgs[12], double fx[8], double fy[8],
                                 double fz[8]);
 
-// Bulk (artificial) viscosity, compression only: l = V^(1/3),
+// Bulk (artificial) viscosity, compression only:
 // q = rho * l * (q1 * l * trD^2 - q2 * c * trD) when trD < 0, else 0.
-double calc_bulk_viscosity(double rho, double c, double volume, double trace_d, double q1,
-                           double q2);
+// l is the element's characteristic length, the same V / A_max as the time step uses: the step
+// formula below is the stable step of a viscous element of that length, so the two must agree.
+// (V^(1/3), as in the DYNA3D manuals, is several times V / A_max on a crushed element, and the
+// damping it gives then outruns the step: the flattened elements at the axis of a refined
+// Taylor bar went unstable with it.  For a cube the two are equal.)
+double calc_bulk_viscosity(double rho, double c, double l, double trace_d, double q1, double q2);
 
 // Element critical time step l / (Q + sqrt(Q^2 + c^2)), l = V / A_max,
 // Q = q2 c + q1 l |trD| in compression, else 0.

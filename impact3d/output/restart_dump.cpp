@@ -89,6 +89,7 @@ void write_header_fields(Writer& w, const DumpHeader& h) {
   w(h.deck_text);
   w(h.plot_root);
   w(h.printed);
+  w(h.dump_root);
   w(h.plot_word_size);
   const OutputCursor& c = h.cursor;
   w(c.next_plot); w(c.next_history); w(c.plot_states); w(c.history_states); w(c.dumps_written);
@@ -100,6 +101,7 @@ void read_header_fields(Reader& r, DumpHeader& h) {
   r(h.deck_text);
   r(h.plot_root);
   r(h.printed);
+  r(h.dump_root);
   r(h.plot_word_size);
   OutputCursor& c = h.cursor;
   r(c.next_plot); r(c.next_history); r(c.plot_states); r(c.history_states); r(c.dumps_written);

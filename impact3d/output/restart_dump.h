@@ -26,12 +26,13 @@ struct DumpHeader {
   std::string deck_text;       // its complete content (the model is rebuilt from it)
   std::string plot_root;       // g= of the run that wrote the dump
   std::string printed;         // o= of that run
+  std::string dump_root;       // d= of that run
   int plot_word_size = 4;
   OutputCursor cursor;
 };
 
-// 1: first format; 2: the sliding interfaces' restart data after the State.
-constexpr std::uint32_t kDumpVersion = 2;
+// 1: first format; 2: the sliding interfaces' restart data after the State; 3: d= in the header.
+constexpr std::uint32_t kDumpVersion = 3;
 
 // Writes the dump atomically (temporary file, fsync, rename).  Throws std::runtime_error.
 // The contact state (energy books of the sliding interfaces) travels with the State.

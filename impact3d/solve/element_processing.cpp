@@ -96,7 +96,8 @@ inline ElemOut calc_forces_for_elem(const Model& m, State& s, int e) {
   // that form books energy no force removed (a 1-D elastic column on a wall showed twice its
   // kinetic energy as bulk viscous energy).
   const double q_old = s.q[E];
-  const double q = calc_bulk_viscosity(rho, mc.c, v, trd, md.q1, md.q2);
+  const double amax = calc_hex_max_face_area(x, y, z);
+  const double q = calc_bulk_viscosity(rho, mc.c, v / amax, trd, md.q1, md.q2);
   s.q[E] = q;
   s.de_bv[E] = -0.5 * (q_old + q) * trd * vm * dt;
 
@@ -111,7 +112,6 @@ inline ElemOut calc_forces_for_elem(const Model& m, State& s, int e) {
   s.de_hg[E] = hg_power * dt;
 
   // element time step
-  const double amax = calc_hex_max_face_area(x, y, z);
   out.dt = calc_hex_time_step(v, amax, mc.c, trd, md.q1, md.q2);
   s.dt_e[E] = out.dt;
   if (!std::isfinite(sig[0] + sig[1] + sig[2] + sig[3] + sig[4] + sig[5] + cfx[0] + cfy[0] + cfz[0]))

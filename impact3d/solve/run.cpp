@@ -169,16 +169,23 @@ int run_simulation(const Model& model, const RunOptions& opt, std::ostream& prin
   try {
     if (restarting) plot.resume(model, opt.plot, word_size, cur.plot_states);
     else plot.open(model, opt.plot, word_size);
+  } catch (const std::exception& ex) {
+    file_error(3004, opt.plot, ex.what());
+    log.line("\n E r r o r   t e r m i n a t i o n   (cannot write the output files)");
+    return exit_code::file_error;
+  }
+  try {
     history.open(model, out_dir, out_dir + "/d3thdt", word_size, restarting, cur.ascii_bytes,
                  cur.history_states);
   } catch (const std::exception& ex) {
-    file_error(3004, opt.plot, ex.what());
+    file_error(3004, out_dir, ex.what());
     log.line("\n E r r o r   t e r m i n a t i o n   (cannot write the output files)");
     return exit_code::file_error;
   }
   bool out_ok = true;
   int scheduled_plot_states = cur.plot_states;  // states a restart keeps (not sense-switch extras)
   auto write_plot = [&](bool scheduled) {
+    if (!scheduled && plot.last_time() == s.time) return;  // a state at this time exists
     try {
       plot.write(model, s);
     } catch (const std::exception& ex) {
@@ -210,6 +217,7 @@ int run_simulation(const Model& model, const RunOptions& opt, std::ostream& prin
     h.deck_name = model.deck_file;
     h.deck_text = opt.deck_text;
     h.plot_root = opt.plot;
+    h.dump_root = opt.dump;
     h.printed = opt.printed;
     h.plot_word_size = word_size;
     h.cursor = cur;
@@ -245,7 +253,9 @@ int run_simulation(const Model& model, const RunOptions& opt, std::ostream& prin
     if (st != StepStatus::ok) break;
     if (s.time >= cur.next_plot * (1 - 1e-9)) write_plot(true);
     if (s.time >= cur.next_history * (1 - 1e-9)) write_history();
-    if (g_plot_now) {
+    // (a request that lands on a cycle that has just written a state waits one cycle, so the
+    // extra state never repeats a time)
+    if (g_plot_now && plot.last_time() != s.time) {
       g_plot_now = 0;
       write_plot(false);
       log.line(" plot state written on request (SIGUSR2, sense switch sw4)");

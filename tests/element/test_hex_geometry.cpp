@@ -295,13 +295,13 @@ TEST(HexStressForce, ResultantAndVirial) {
 }
 
 TEST(HexBulkViscosity, ClosedForm) {
-  const double rho = 8930.0, c = 4500.0, V = 8.0, q1 = 1.5, q2 = 0.06;
+  const double rho = 8930.0, c = 4500.0, l = 2.0, q1 = 1.5, q2 = 0.06;
   // Rigid motion / expansion: trD >= 0 gives q = 0 exactly.
-  EXPECT_EQ(calc_bulk_viscosity(rho, c, V, 0.0, q1, q2), 0.0);
-  EXPECT_EQ(calc_bulk_viscosity(rho, c, V, 3.0, q1, q2), 0.0);
+  EXPECT_EQ(calc_bulk_viscosity(rho, c, l, 0.0, q1, q2), 0.0);
+  EXPECT_EQ(calc_bulk_viscosity(rho, c, l, 3.0, q1, q2), 0.0);
   // Compression trD = -100: l = 2, q = rho l (q1 l trD^2 - q2 c trD)
   //   = 8930 * 2 * (1.5 * 2 * 1e4 + 0.06 * 4500 * 100) = 8930 * 2 * 57000.  Relative 1e-14.
-  const double q = calc_bulk_viscosity(rho, c, V, -100.0, q1, q2);
+  const double q = calc_bulk_viscosity(rho, c, l, -100.0, q1, q2);
   EXPECT_NEAR(q, 8930.0 * 2.0 * 57000.0, 8930.0 * 2.0 * 57000.0 * 1e-14);
 }
 
