@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "impact3d/input/deck_reader.h"
+#include "impact3d/input/element_shapes.h"
 
 namespace impact3d {
 
@@ -491,7 +492,7 @@ class Dyna3dReader {
         e.error(1203, w + 1, w + 5, "material number", "materials are 1.." + std::to_string(m_.control.nmmat));
         ok = false;
       }
-      if (ok && !valid_node_pattern(nodes)) {
+      if (ok && !is_valid_solid_node_pattern(nodes)) {
         e.error(1222, w + 6, w + 5 + 8 * w, "nodes n1-n8");
         ok = false;
       }
@@ -505,7 +506,7 @@ class Dyna3dReader {
       }
       seen[std::size_t(id - 1)] = c.line();
       if (!ok) nodes.fill(-1);
-      else canonical_node_pattern(nodes);
+      else make_canonical_solid_node_pattern(nodes);
       m_.hex_line[std::size_t(id - 1)] = c.line();
       m_.hex_nodes[std::size_t(id - 1)] = nodes;
       m_.hex_material[std::size_t(id - 1)] = ok ? mat - 1 : -1;
@@ -513,28 +514,6 @@ class Dyna3dReader {
     report_missing(seen, "solid element");
   }
 
-  // Hexahedron (8 distinct), wedge (n5=n6, n7=n8), tetrahedron (n3=n4, n5=n6=n7=n8, or the
-  // NIKE3D/LS-DYNA form n4=n5=n6=n7=n8).
-  static bool valid_node_pattern(const std::array<int, 8>& n) {
-    std::array<int, 8> s = n;
-    std::sort(s.begin(), s.end());
-    int distinct = int(std::unique(s.begin(), s.end()) - s.begin());
-    if (distinct == 8) return true;
-    if (distinct == 6 && n[4] == n[5] && n[6] == n[7]) return true;
-    if (distinct == 6 && n[2] == n[3] && n[6] == n[7]) return true;
-    if (distinct == 4 && n[2] == n[3] && n[4] == n[5] && n[5] == n[6] && n[6] == n[7]) return true;
-    if (distinct == 4 && n[3] == n[4] && n[4] == n[5] && n[5] == n[6] && n[6] == n[7]) return true;
-    return false;
-  }
-
-  // The tetrahedron form n1,n2,n3,n4,n4,n4,n4,n4 (NIKE3D/LS-DYNA) spans, as a trilinear
-  // hexahedron, only half the tetrahedron's volume (the collapsed face n1-n4 is not planar).
-  // Store it as the DYNA3D form n1,n2,n3,n3,n4,n4,n4,n4: same base n1-n2-n3 and apex n4, whose
-  // trilinear volume is the exact tetrahedron volume.
-  static void canonical_node_pattern(std::array<int, 8>& n) {
-    if (n[2] != n[3] && n[3] == n[4] && n[4] == n[5] && n[5] == n[6] && n[6] == n[7])
-      n = {n[0], n[1], n[2], n[2], n[3], n[3], n[3], n[3]};
-  }
 
   int read_id(Card& c, int c1, const char* field, int limit, int id_error) {
     int v = int(c.i(c1, c1 + idw_ - 1, field));

@@ -9,6 +9,7 @@
 #include "impact3d/input/keyword_reader.h"
 
 #include "impact3d/input/deck_reader.h"
+#include "impact3d/input/element_shapes.h"
 
 #include <algorithm>
 #include <array>
@@ -1443,14 +1444,14 @@ class KeywordReader {
       } else {
         part_elems_[std::size_t(pit->second)].push_back(int(k));
       }
-      if (ok && !valid_node_pattern(n)) {
+      if (ok && !is_valid_solid_node_pattern(n)) {
         Ref r = e.node_ref[0];
         r.c2 = e.node_ref[7].c2;
         err(1222, r, card, "N1-N8");
         ok = false;
       }
       if (ok) {
-        canonical_node_pattern(n);
+        make_canonical_solid_node_pattern(n);
         m_.hex_nodes[k] = n;
         m_.hex_material[k] = -2 - pit->second;  // part index, replaced by the material index
       }
@@ -1464,22 +1465,6 @@ class KeywordReader {
     }
   }
 
-  // Same shapes as the fixed-format reader: hexahedron, wedge, tetrahedron.
-  static bool valid_node_pattern(const std::array<int, 8>& n) {
-    std::array<int, 8> s = n;
-    std::sort(s.begin(), s.end());
-    int distinct = int(std::unique(s.begin(), s.end()) - s.begin());
-    if (distinct == 8) return true;
-    if (distinct == 6 && n[4] == n[5] && n[6] == n[7]) return true;
-    if (distinct == 6 && n[2] == n[3] && n[6] == n[7]) return true;
-    if (distinct == 4 && n[2] == n[3] && n[4] == n[5] && n[5] == n[6] && n[6] == n[7]) return true;
-    if (distinct == 4 && n[3] == n[4] && n[4] == n[5] && n[5] == n[6] && n[6] == n[7]) return true;
-    return false;
-  }
-  static void canonical_node_pattern(std::array<int, 8>& n) {
-    if (n[2] != n[3] && n[3] == n[4] && n[4] == n[5] && n[5] == n[6] && n[6] == n[7])
-      n = {n[0], n[1], n[2], n[2], n[3], n[3], n[3], n[3]};
-  }
 
   void resolve_materials() {
     part_material_.assign(parts_.size(), -1);
