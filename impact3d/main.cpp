@@ -21,7 +21,7 @@ using namespace impact3d;
 namespace {
 
 const char* kUsage =
-    "usage: impact3d i=DECK [o=PRINTED] [g=PLOTDB] [d=DUMP] [ncpu=N] [plotwords=4|8] [--check]\n"
+    "usage: impact3d i=DECK [o=PRINTED] [g=PLOTDB] [d=DUMP] [ncpu=N] [plotwords=4|8] [x=N] [--check]\n"
     "       impact3d r=DUMP [o=PRINTED] [g=PLOTDB] [d=DUMP] [ncpu=N]\n"
     "       impact3d --help | --version | --messages\n"
     "\n"
@@ -32,6 +32,7 @@ const char* kUsage =
     "  r=FILE     restart from this dump (the deck is inside it; o= and g= default to the\n"
     "             names of the run that wrote it)\n"
     "  plotwords=N  4 (default) or 8 byte words in the plot and time-history databases\n"
+    "  x=N        plot database family members of at most N x 512 x 512 words (default 7)\n"
     "  ncpu=N     number of threads (default: OMP_NUM_THREADS or all cores); results do not\n"
     "             depend on it\n"
     "  --check    read and check the deck only; print the summary; write nothing else\n"
@@ -107,6 +108,17 @@ int main(int argc, char** argv) {
         loc.show_found = true;
         cmd.add(3005, loc, "plotwords must be 4 or 8");
       }
+    } else if (const char* v = value("x=")) {
+      char* end = nullptr;
+      long n = std::strtol(v, &end, 10);
+      if (!*v || *end || n < 1 || n > 1024) {
+        Location loc;
+        loc.found = arg;
+        loc.show_found = true;
+        cmd.add(3005, loc, "x must be an integer 1-1024 (member size in units of 512 x 512 words)");
+      } else {
+        opt.member_size_factor = int(n);
+      }
     } else if (const char* v = value("ncpu=")) {
       char* end = nullptr;
       long n = std::strtol(v, &end, 10);
@@ -153,6 +165,7 @@ int main(int argc, char** argv) {
     if (!plot_given) opt.plot = h.plot_root;
     if (!dump_given && !h.dump_root.empty()) opt.dump = h.dump_root;
     opt.plot_word_size = h.plot_word_size;
+    opt.member_size_factor = h.member_size_factor;
     opt.deck = h.deck_name;
     opt.deck_text = h.deck_text;
     DeckFile deck;

@@ -74,13 +74,14 @@ void fill_plot_state(const Model& m, const State& s, PlotState& ps) {
   }
 }
 
-void PlotOutput::open(const Model& m, const std::string& root, int word_size) {
-  writer_.open(root, make_plot_geometry(m), word_size);
+void PlotOutput::open(const Model& m, const std::string& root, int word_size,
+                      std::int64_t member_words) {
+  writer_.open(root, make_plot_geometry(m), word_size, member_words);
 }
 
-void PlotOutput::resume(const Model& m, const std::string& root, int word_size, int keep_states) {
-  writer_.resume(root, make_plot_geometry(m), word_size, PlotWriter::kDefaultMemberSizeLimitWords,
-                 keep_states);
+void PlotOutput::resume(const Model& m, const std::string& root, int word_size,
+                        std::int64_t member_words, int keep_states) {
+  writer_.resume(root, make_plot_geometry(m), word_size, member_words, keep_states);
 }
 
 void PlotOutput::write(const Model& m, const State& s) {

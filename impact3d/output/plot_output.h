@@ -19,9 +19,12 @@ void fill_plot_state(const Model& m, const State& s, PlotState& ps);
 class PlotOutput {
  public:
   // Opens the family; throws std::runtime_error on I/O errors.
-  void open(const Model& m, const std::string& root, int word_size = 4);
+  // member_words: size limit of a family member in words (LS-DYNA's x= times 512 x 512).
+  void open(const Model& m, const std::string& root, int word_size = 4,
+            std::int64_t member_words = PlotWriter::kDefaultMemberSizeLimitWords);
   // Restart: keeps the first keep_states states of the existing family and appends after them.
-  void resume(const Model& m, const std::string& root, int word_size, int keep_states);
+  void resume(const Model& m, const std::string& root, int word_size, std::int64_t member_words,
+              int keep_states);
   void write(const Model& m, const State& s);
   int states_written() const { return writer_.num_states_written(); }
   double last_time() const { return last_time_; }

@@ -91,6 +91,7 @@ void write_header_fields(Writer& w, const DumpHeader& h) {
   w(h.printed);
   w(h.dump_root);
   w(h.plot_word_size);
+  w(h.member_size_factor);
   const OutputCursor& c = h.cursor;
   w(c.next_plot); w(c.next_history); w(c.plot_states); w(c.history_states); w(c.dumps_written);
   for (auto b : c.ascii_bytes) w(b);
@@ -103,6 +104,7 @@ void read_header_fields(Reader& r, DumpHeader& h) {
   r(h.printed);
   r(h.dump_root);
   r(h.plot_word_size);
+  r(h.member_size_factor);
   OutputCursor& c = h.cursor;
   r(c.next_plot); r(c.next_history); r(c.plot_states); r(c.history_states); r(c.dumps_written);
   for (auto& b : c.ascii_bytes) r(b);

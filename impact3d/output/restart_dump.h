@@ -28,11 +28,13 @@ struct DumpHeader {
   std::string printed;         // o= of that run
   std::string dump_root;       // d= of that run
   int plot_word_size = 4;
+  int member_size_factor = 7;  // x= of that run
   OutputCursor cursor;
 };
 
-// 1: first format; 2: the sliding interfaces' restart data after the State; 3: d= in the header.
-constexpr std::uint32_t kDumpVersion = 3;
+// 1: first format; 2: the sliding interfaces' restart data after the State; 3: d= in the header;
+// 4: x= in the header.
+constexpr std::uint32_t kDumpVersion = 4;
 
 // Writes the dump atomically (temporary file, fsync, rename).  Throws std::runtime_error.
 // The contact state (energy books of the sliding interfaces) travels with the State.

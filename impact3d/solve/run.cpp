@@ -167,8 +167,9 @@ int run_simulation(const Model& model, const RunOptions& opt, std::ostream& prin
   HistoryOutput history;
   const std::string out_dir = parent_or_dot(opt.printed);
   try {
-    if (restarting) plot.resume(model, opt.plot, word_size, cur.plot_states);
-    else plot.open(model, opt.plot, word_size);
+    const std::int64_t member_words = std::int64_t(opt.member_size_factor) * 512 * 512;
+    if (restarting) plot.resume(model, opt.plot, word_size, member_words, cur.plot_states);
+    else plot.open(model, opt.plot, word_size, member_words);
   } catch (const std::exception& ex) {
     file_error(3004, opt.plot, ex.what());
     log.line("\n E r r o r   t e r m i n a t i o n   (cannot write the output files)");
@@ -220,6 +221,7 @@ int run_simulation(const Model& model, const RunOptions& opt, std::ostream& prin
     h.dump_root = opt.dump;
     h.printed = opt.printed;
     h.plot_word_size = word_size;
+    h.member_size_factor = opt.member_size_factor;
     h.cursor = cur;
     h.cursor.plot_states = scheduled_plot_states;
     h.cursor.history_states = history.thdt_states();

@@ -16,6 +16,7 @@ struct RunOptions {
   std::string restart;
   int threads = 0;          // 0 = OpenMP default
   int plot_word_size = 4;   // 4 or 8 byte words in the plot and time-history databases
+  int member_size_factor = 7;  // x=: family member size limit, in units of 512 x 512 words
   std::string deck_text;    // the deck's content, kept in restart dumps
   bool quiet = false;       // no run log on stdout (tests)
 };
