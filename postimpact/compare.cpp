@@ -44,8 +44,17 @@ Tolerances Tolerances::parse(const std::string& text, const std::string& name) {
         for (std::string s; ls >> s;) w.push_back(s);
         if (w.empty()) continue;
         const std::string& f = w[0];
-        const bool known = f == "default" || std::any_of(std::begin(kFields), std::end(kFields), [&](const char* k) { return f == k; });
-        if (!known) fail("unknown field '" + f + "' (time coords vel acc stress eps energy default)");
+        auto is_field = [](const std::string& x) {
+            return x == "default" || x == "cycles" ||
+                   std::any_of(std::begin(kFields), std::end(kFields), [&](const char* k) { return x == k; });
+        };
+        auto is_key = [](const std::string& x) {
+            return !x.empty() && std::all_of(x.begin(), x.end(), [](char c) {
+                return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_';
+            });
+        };
+        const bool known = is_field(f) || (f.rfind("summary.", 0) == 0 && is_key(f.substr(8)));
+        if (!known) fail("unknown field '" + f + "' (time coords vel acc stress eps energy cycles default, summary.FIELD, summary.KEY)");
         Tolerance tol;
         bool have_rel = false, have_abs = false;
         std::vector<std::string> pos;

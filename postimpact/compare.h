@@ -19,7 +19,9 @@ struct Tolerances {
     std::map<std::string, Tolerance> field;
     Tolerance get(const std::string& f) const;
     // File: one "FIELD REL ABS" (or "FIELD rel=R abs=A") per line, '#' comments, FIELD one of
-    // the fields above or "default".  Throws std::runtime_error (file:line: message).
+    // the fields above, "default", or for compare-summary only (summary.h) "cycles",
+    // "summary.FIELD" and "summary.KEY" (a summary key).
+    // Throws std::runtime_error (file:line: message).
     static Tolerances read(const std::string& path);
     static Tolerances parse(const std::string& text, const std::string& name = "tolerances");
     static const char* const kFields[7];

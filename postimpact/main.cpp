@@ -1,6 +1,7 @@
 // postimpact: offscreen post-processor of IMPACT-3D plot databases (d3plot family).
 // Usage: README.md, section POST-IMPACT, and `postimpact --help`.
 #include <cstring>
+#include <fstream>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -8,6 +9,7 @@
 #include "postimpact/command_file.h"
 #include "postimpact/compare.h"
 #include "postimpact/quantities.h"
+#include "postimpact/summary.h"
 #include "version.h"
 
 namespace {
@@ -15,6 +17,8 @@ namespace {
 const char* kUsage =
     "usage: postimpact [DATABASE] [OPTIONS]        pictures and time histories\n"
     "       postimpact compare A B [--tol FILE] [--report N]\n"
+    "       postimpact summary DATABASE [--printed FILE] [-o FILE]\n"
+    "       postimpact compare-summary A.txt B.txt [--tol FILE]\n"
     "\n"
     "DATABASE is the root file of a d3plot family (d3plot).  With no -c/-e/-o/--sequence/\n"
     "--frames/--history option the default set is written: eps_first.png, eps_middle.png,\n"
@@ -43,7 +47,11 @@ const char* kUsage =
     "  -h, --help   --version\n"
     "compare: --tol FILE (lines 'FIELD REL ABS', FIELD time coords vel acc stress eps\n"
     "energy default; without it values must be equal), --report N (10).\n"
-    "Exit status: 0 done (compare: same within tolerance), 1 compare: different,\n"
+    "summary: 'key value' lines (final length, radius, extents, max plastic strain,\n"
+    "energies, cycle count read from --printed FILE, default d3hsp beside DATABASE).\n"
+    "compare-summary: two summaries with the tolerances of --tol FILE (lines summary.KEY,\n"
+    "summary.FIELD, FIELD, default, most specific first; field cycles too).\n"
+    "Exit status: 0 done (compare, compare-summary: same within tolerance), 1 different,\n"
     "2 usage, input or rendering error.\n";
 
 int run_compare(int argc, char** argv) {
@@ -69,6 +77,59 @@ int run_compare(int argc, char** argv) {
     return postimpact::compare_databases(pos[0], pos[1], opt, std::cout);
 }
 
+int run_summary(int argc, char** argv) {
+    std::string db, printed, output;
+    for (int i = 2; i < argc; ++i) {
+        const std::string a = argv[i];
+        if (a == "--printed" && i + 1 < argc) printed = argv[++i];
+        else if (a == "-o" && i + 1 < argc) output = argv[++i];
+        else if ((!a.empty() && a[0] == '-') || !db.empty()) {
+            std::cerr << "postimpact summary: unexpected argument " << a << "\n" << kUsage;
+            return 2;
+        } else db = a;
+    }
+    if (db.empty()) {
+        std::cerr << "postimpact summary: no database given\n" << kUsage;
+        return 2;
+    }
+    const postimpact::Summary s = postimpact::summarize(db, printed);
+    if (output.empty()) {
+        postimpact::write_summary(s, std::cout);
+        return 0;
+    }
+    std::ofstream f(output);
+    postimpact::write_summary(s, f);
+    f.close();
+    if (!f) {
+        std::cerr << "postimpact summary: cannot write " << output << "\n";
+        return 2;
+    }
+    return 0;
+}
+
+int run_compare_summary(int argc, char** argv) {
+    std::vector<std::string> pos;
+    postimpact::Tolerances tol;
+    for (int i = 2; i < argc; ++i) {
+        const std::string a = argv[i];
+        if ((a == "--tol" || a == "--tolerances" || a == "-t") && i + 1 < argc) {
+            tol = postimpact::Tolerances::read(argv[++i]);
+        } else if (!a.empty() && a[0] == '-') {
+            std::cerr << "postimpact compare-summary: unknown option " << a << "\n" << kUsage;
+            return 2;
+        } else {
+            pos.push_back(a);
+        }
+    }
+    if (pos.size() != 2) {
+        std::cerr << "postimpact compare-summary: expected two summary files\n" << kUsage;
+        return 2;
+    }
+    const auto a = postimpact::read_summary(pos[0]);
+    const auto b = postimpact::read_summary(pos[1]);
+    return postimpact::compare_summaries(a, b, tol, std::cout, pos[0], pos[1]);
+}
+
 std::vector<std::string> split_commas(const std::string& s) {
     std::vector<std::string> out;
     std::string cur;
@@ -88,6 +149,15 @@ int main(int argc, char** argv) {
             return run_compare(argc, argv);
         } catch (const std::exception& e) {
             std::cerr << "postimpact compare: " << e.what() << "\n";
+            return 2;
+        }
+    }
+    if (argc >= 2 && (std::strcmp(argv[1], "summary") == 0 || std::strcmp(argv[1], "compare-summary") == 0)) {
+        const bool summary = std::strcmp(argv[1], "summary") == 0;
+        try {
+            return summary ? run_summary(argc, argv) : run_compare_summary(argc, argv);
+        } catch (const std::exception& e) {
+            std::cerr << "postimpact " << argv[1] << ": " << e.what() << "\n";
             return 2;
         }
     }
