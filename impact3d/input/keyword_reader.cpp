@@ -1879,6 +1879,7 @@ bool is_keyword_deck(const DeckFile& deck) {
 bool read_keyword_deck(DeckFile& deck, Model& model, Diagnostics& diag, const KeywordOptions& options) {
   model.deck_file = deck.name();
   model.large_format = true;
+  model.keyword_deck = true;
   const int before = diag.error_count();
   KeywordReader r(deck, model, diag, options);
   r.read();

@@ -82,6 +82,7 @@ struct Model {
   std::string title;
   std::string deck_file;
   bool large_format = true;
+  bool keyword_deck = false;  // read from an LS-DYNA keyword deck
   ControlData control;
   std::vector<MaterialData> materials;  // indexed by material number - 1
 

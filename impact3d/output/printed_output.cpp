@@ -49,8 +49,10 @@ void write_counts(std::ostream& os, const Model& m) {
 void write_model_summary(std::ostream& os, const Model& m) {
   const ControlData& k = m.control;
   os << "\n title: " << m.title << "\n"
-     << " deck:  " << m.deck_file << " (DYNA3D fixed format, "
-     << (m.large_format ? "large" : "small") << " fields)\n"
+     << " deck:  " << m.deck_file
+     << (m.keyword_deck ? std::string(" (LS-DYNA keyword format)")
+                        : std::string(" (DYNA3D fixed format, ") + (m.large_format ? "large" : "small") + " fields)")
+     << "\n"
      << " units: as the deck gives them (consistent set; SI: m, kg, s, Pa)\n\n"
      << " c o n t r o l   i n f o r m a t i o n\n\n";
   write_counts(os, m);
