@@ -481,7 +481,10 @@ void PlotWriter::open_impl(const std::string& root_path, const PlotGeometry& g, 
     numnp_ = static_cast<int>(numnp);
     nel8_ = static_cast<int>(nel8);
     nmmat_ = nmat;
-    nglbv_ = 6 + 7 * static_cast<std::int64_t>(nmat);
+    if (g.num_rigid_walls < 0 || g.num_rigid_walls > 100000)
+        throw std::invalid_argument("PlotWriter: implausible number of rigid walls");
+    nrw_ = g.num_rigid_walls;
+    nglbv_ = 6 + 7 * static_cast<std::int64_t>(nmat) + nrw_;
     // time, globals, coords + vel + acc, 7 words per solid, one deletion flag per solid
     state_words_ = 1 + nglbv_ + 9 * static_cast<std::int64_t>(numnp) + 8 * static_cast<std::int64_t>(nel8);
     root_ = root_path;
@@ -606,6 +609,7 @@ void PlotWriter::write_state(const PlotState& s) {
     check_size(s.mat_momentum, 3 * nm, "mat_momentum", true);
     check_size(s.mat_mass, nm, "mat_mass", true);
     check_size(s.mat_hourglass_energy, nm, "mat_hourglass_energy", true);
+    check_size(s.rigid_wall_forces, static_cast<std::size_t>(nrw_), "rigid_wall_forces", true);
     check_size(s.coords, 3 * nn, "coords", true);
     check_size(s.vel, 3 * nn, "vel", true);
     check_size(s.acc, 3 * nn, "acc", true);
@@ -632,6 +636,7 @@ void PlotWriter::write_state(const PlotState& s) {
     put_vec(s.mat_momentum, 3 * nm);
     put_vec(s.mat_mass, nm);
     put_vec(s.mat_hourglass_energy, nm);
+    put_vec(s.rigid_wall_forces, static_cast<std::size_t>(nrw_));
     if (s.coords.empty()) put_vec(x0_, 3 * nn);
     else put_vec(s.coords, 3 * nn);
     put_vec(s.vel, 3 * nn);
@@ -808,6 +813,10 @@ void PlotReader::open(const std::string& root_path) {
         g.hex_material[static_cast<std::size_t>(e)] = static_cast<int>(m);
     }
     g.num_materials = static_cast<int>(nparts);
+    {
+        const std::int64_t extra_globals = c.nglbv - 6 - 7 * nparts;
+        g.num_rigid_walls = extra_globals > 0 ? static_cast<int>(extra_globals) : 0;
+    }
 
     // ---- NARBS user-id section
     if (c.narbs > 0) {
@@ -975,6 +984,7 @@ PlotState PlotReader::state(int i) const {
         take(s.mat_momentum, 3 * nm);
         take(s.mat_mass, nm);
         take(s.mat_hourglass_energy, nm);
+        s.rigid_wall_forces.assign(it, glob.end());
     }
     const std::size_t nn = static_cast<std::size_t>(c.numnp), ne = static_cast<std::size_t>(c.nel8);
     auto read_vec = [&](std::vector<double>& v, std::size_t n, const char* what) {

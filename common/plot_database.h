@@ -31,6 +31,9 @@ namespace impact3d {
 struct PlotGeometry {
     std::string title;                     // model title (40 chars in control words, 72 in 90000 record)
     int num_materials = 0;                 // NMMAT = NUMMAT8 (parts)
+    // Rigid walls: one global word each after the per-part block (the normal force, as LS-DYNA
+    // writes for VERSION < 971).  The reader infers it from NGLBV.
+    int num_rigid_walls = 0;
     std::vector<double> x0;                // 3*numnp initial coordinates, x y z per node
     std::vector<int> node_user_ids;        // numnp user node ids, or empty (= 1..numnp)
     std::vector<int> hex_nodes;            // 8*numelh, 0-based node indices, LS-DYNA hex order
@@ -60,6 +63,7 @@ struct PlotState {
     std::vector<double> mat_momentum;          // 3*NMMAT, x y z per material
     std::vector<double> mat_mass;              // NMMAT
     std::vector<double> mat_hourglass_energy;  // NMMAT
+    std::vector<double> rigid_wall_forces;     // num_rigid_walls normal forces
     std::vector<double> coords;                // 3*numnp current coordinates (x+u, not displacements)
     std::vector<double> vel;                   // 3*numnp
     std::vector<double> acc;                   // 3*numnp (reader: empty if the file has IA = 0)
@@ -133,7 +137,7 @@ private:
     std::vector<double> x0_;      // initial coordinates (written when a state has no coords)
     int ws_ = 4;
     std::int64_t limit_words_ = kDefaultMemberSizeLimitWords;
-    int numnp_ = 0, nel8_ = 0, nmmat_ = 0;
+    int numnp_ = 0, nel8_ = 0, nmmat_ = 0, nrw_ = 0;
     std::int64_t nglbv_ = 0, state_words_ = 0;
     bool root_written_ = false;
     int fd_ = -1;                 // current member

@@ -1,11 +1,14 @@
 #include "impact3d/output/plot_output.h"
 
+#include <cmath>
+
 namespace impact3d {
 
 PlotGeometry make_plot_geometry(const Model& m) {
   PlotGeometry g;
   g.title = m.title;
   g.num_materials = int(m.materials.size());
+  g.num_rigid_walls = int(m.walls.size());
   g.x0.resize(std::size_t(3) * m.num_nodes());
   for (int i = 0; i < m.num_nodes(); ++i) {
     g.x0[std::size_t(3 * i)] = m.x[std::size_t(i)];
@@ -49,6 +52,15 @@ void fill_plot_state(const Model& m, const State& s, PlotState& ps) {
     mass += s.mass[i];
   }
   for (int a = 0; a < 3; ++a) ps.velocity[std::size_t(a)] = mass > 0 ? p[a] / mass : 0;
+  // rigid-wall normal force: the push of the body on the wall, positive in compression (as rwforc)
+  ps.rigid_wall_forces.resize(m.walls.size());
+  for (std::size_t w = 0; w < m.walls.size(); ++w) {
+    const auto& sw = m.walls[w];
+    const double n[3] = {sw.head[0] - sw.tail[0], sw.head[1] - sw.tail[1], sw.head[2] - sw.tail[2]};
+    const double l = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    const auto& F = s.wall_force[w];
+    ps.rigid_wall_forces[w] = -(F[0] * n[0] + F[1] * n[1] + F[2] * n[2]) / l + 0.0;
+  }
   ps.stress.assign(s.sig.begin(), s.sig.end());
   ps.eps.assign(s.eps_p.begin(), s.eps_p.end());
   ps.alive.assign(ne, 1);

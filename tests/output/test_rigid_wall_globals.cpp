@@ -1,0 +1,40 @@
+// Rigid-wall normal forces travel in the plot database's globals (one word per wall after the
+// per-part block, as LS-DYNA writes for VERSION < 971), and come back through our reader.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "common/plot_database.h"
+
+using namespace impact3d;
+
+TEST(PlotGlobals, RigidWallForcesRoundTrip) {
+  const std::string dir = std::string(IMPACT3D_BINARY_DIR) + "/test_rigid_wall_globals";
+  std::filesystem::create_directories(dir);
+  PlotGeometry g;
+  g.title = "one hex, two walls";
+  g.num_materials = 1;
+  g.num_rigid_walls = 2;
+  g.x0 = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0, 0, 1, 1, 0, 1, 1, 1, 1, 0, 1, 1};
+  g.hex_nodes = {0, 1, 2, 3, 4, 5, 6, 7};
+  g.hex_material = {1};
+  for (int ws : {4, 8}) {
+    PlotWriter w;
+    w.open(dir + "/d3plot", g, ws);
+    PlotState s;
+    s.time = 1.5e-6;
+    s.rigid_wall_forces = {1234.5, -0.25};
+    w.write_state(s);
+    w.close();
+    PlotReader r;
+    r.open(dir + "/d3plot");
+    EXPECT_EQ(r.control().nglbv, 6 + 7 + 2);
+    EXPECT_EQ(r.geometry().num_rigid_walls, 2);
+    ASSERT_EQ(r.num_states(), 1);
+    const PlotState back = r.state(0);
+    ASSERT_EQ(back.rigid_wall_forces.size(), 2u);
+    // exact in 8-byte words; float rounding (relative 6e-8) in 4-byte words
+    EXPECT_NEAR(back.rigid_wall_forces[0], 1234.5, ws == 8 ? 0.0 : 1234.5 * 6e-8);
+    EXPECT_NEAR(back.rigid_wall_forces[1], -0.25, ws == 8 ? 0.0 : 0.25 * 6e-8);
+  }
+}
