@@ -246,11 +246,29 @@ Image make_picture(Database& db, const std::vector<int>& states, const PictureSe
     } else if (show_legend && is_material) {
         const int lx = W - legend_w - margin / 2;
         int y = area_y + unit;
+        const int tx = lx + unit * 3 / 2, text_w = W - margin / 2 - tx;
         for (int m = 1; m <= g.num_materials; ++m) {
             img.fill_rect(lx, y, lx + unit, y + unit, material_color(m));
             img.rect_outline(lx, y, lx + unit, y + unit, kBlack);
-            font.draw(img, lx + unit * 3 / 2, y + unit - 3, db.part_name(m), label_px, kText);
-            y += unit * 3 / 2;
+            // the part name, wrapped on words to the legend column (long titles were cut off)
+            std::vector<std::string> lines;
+            std::string cur, word;
+            for (char c : db.part_name(m) + " ") {
+                if (c != ' ') { word += c; continue; }
+                if (word.empty()) continue;
+                const std::string trial = cur.empty() ? word : cur + " " + word;
+                if (!cur.empty() && font.measure(trial, label_px) > text_w) { lines.push_back(cur); cur = word; }
+                else cur = trial;
+                word.clear();
+            }
+            if (!cur.empty()) lines.push_back(cur);
+            const int line_h = font.ascent(label_px) + font.descent(label_px) + 2;
+            int ty = y + unit - 3;
+            for (const auto& l : lines) {
+                font.draw(img, tx, ty, l, label_px, kText);
+                ty += line_h;
+            }
+            y += std::max(unit * 3 / 2, unit + line_h * (static_cast<int>(lines.size()) - 1) + unit / 2);
         }
     }
 

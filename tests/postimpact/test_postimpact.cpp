@@ -403,6 +403,43 @@ TEST(Render, SequenceAndRangeAndNoFringe) {
     EXPECT_THROW(make_picture(db, {4}, ps, r, font), std::invalid_argument);
 }
 
+TEST(Render, MaterialLegendWrapsLongPartNames) {
+    // a part title longer than the legend column is wrapped on words, not cut at the edge
+    TempDir d;
+    PlotGeometry g = block(2, 1, 1, 1e-3);
+    g.num_materials = 2;
+    g.hex_material = {1, 2};
+    g.part_titles = {"copper, initially elastic, body 1 (lower) with a long title",
+                     "copper, initially elastic, body 2 (upper) with a long title"};
+    impact3d::PlotWriter w;
+    w.open(d.str("d3plot"), g);
+    w.write_state(bar_state(g, 0, 1));
+    w.close();
+    Database db(d.str("d3plot"));
+    Renderer r;
+    Font font;
+    PictureSettings ps;
+    ps.width = 800;
+    ps.height = 600;
+    ps.fringe = "material";
+    ps.triad = false;
+    const Image img = make_picture(db, {0}, ps, r, font);
+    const int unit = std::max(8, std::min(ps.width, ps.height * 4 / 3) / 60);
+    int text_rows = 0;  // rows with text ink in the legend column, right of the swatches
+    for (int y = 0; y < img.height; ++y) {
+        bool ink = false;
+        for (int x = img.width - ps.width / 6 + unit; x < img.width; ++x) {
+            const Rgb p = img.get(x, y);
+            if (x >= img.width - unit / 2) {
+                EXPECT_EQ(p, (Rgb{255, 255, 255})) << "x " << x << " y " << y;
+            }
+            ink = ink || (p.r < 128 && p.g < 128 && p.b < 128);
+        }
+        text_rows += ink;
+    }
+    EXPECT_GT(text_rows, 4 * (unit * 3 / 4));  // two names of at least two lines each
+}
+
 // ------------------------------------------------------------------------------------------
 // Time histories
 
