@@ -1,5 +1,5 @@
 // The seed's third example (decks/crossed_cylinders.dyn, fig. 15-17): two copper half-cylinders,
-// axes crossed, +50 / -50 m/s, quarter model, one symmetric type-3 interface, 40 us (they have
+// axes crossed, +50 / -50 m/s, quarter model, one symmetric type-3 interface, 50 us (they have
 // separated by then).  Both stiffness choices: the deck's (1, maximum stable) and DYNA3D's (0);
 // the printed numbers are the README's comparison.
 

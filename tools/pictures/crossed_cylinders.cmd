@@ -11,7 +11,7 @@ view 30 25
 fringe material
 picture crossed_cylinders_initial.png first
 
-# fig. 17: final state (40 us, bodies separated) with the effective plastic strain
+# fig. 17: final state (50 us, bodies separated) with the effective plastic strain
 fringe eps
 picture crossed_cylinders_final.png last
 
