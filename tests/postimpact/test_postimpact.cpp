@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -570,4 +571,45 @@ TEST(Commands, DefaultSet) {
     for (const char* f : {"eps_first.png", "eps_middle.png", "eps_last.png", "eps_sequence.png", "energies.png", "energies.csv"})
         EXPECT_TRUE(fs::exists(fs::path(d.str("def")) / f)) << f;
     EXPECT_NE(log.str().find("eps_last.png"), std::string::npos);
+}
+
+// ------------------------------------------------------------------------------------------
+// Golden image: a small picture compared with a stored one, with a tolerance for the few
+// pixels that another Mesa/FreeType version may shade differently (edges, glyph antialiasing).
+// To rewrite the golden image after an intended change of the pictures:
+//   IMPACT3D_UPDATE_GOLDEN=1 build/tests/test_postimpact --gtest_filter=Render.GoldenImage
+TEST(Render, GoldenImage) {
+    TempDir d;
+    Database db(write_bar(d));
+    Renderer r;
+    Font font;
+    PictureSettings ps;
+    ps.width = 320;
+    ps.height = 240;
+    ps.mirror = parse_mirror("xy");
+    const Image img = make_picture(db, {db.num_states() - 1}, ps, r, font);
+    const std::string golden = std::string(IMPACT3D_SOURCE_DIR) + "/tests/postimpact/golden/quarter_bar_eps_320x240.png";
+    if (std::getenv("IMPACT3D_UPDATE_GOLDEN")) {
+        fs::create_directories(fs::path(golden).parent_path());
+        write_png(golden, img);
+        GTEST_SKIP() << "golden image rewritten: " << golden;
+    }
+    ASSERT_TRUE(fs::exists(golden)) << golden;
+    const Image ref = read_png(golden);
+    ASSERT_EQ(ref.width, img.width);
+    ASSERT_EQ(ref.height, img.height);
+    // Tolerances: a pixel "differs" when a channel is off by more than 24 (of 255); at most
+    // 0.5% of the pixels may differ and the mean absolute channel difference must stay below 1.
+    long differ = 0;
+    double sum = 0;
+    for (int y = 0; y < img.height; ++y)
+        for (int x = 0; x < img.width; ++x) {
+            const Rgb a = img.get(x, y), b = ref.get(x, y);
+            const int dr = std::abs(a.r - b.r), dg = std::abs(a.g - b.g), db2 = std::abs(a.b - b.b);
+            sum += dr + dg + db2;
+            if (std::max({dr, dg, db2}) > 24) ++differ;
+        }
+    const double npx = double(img.width) * img.height;
+    EXPECT_LE(differ, 0.005 * npx) << differ << " pixels differ from " << golden;
+    EXPECT_LT(sum / (3 * npx), 1.0);
 }
