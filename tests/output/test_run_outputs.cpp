@@ -891,11 +891,12 @@ TEST_F(RunOutputs, SigintDumpRestartsToTheUninterruptedResults) {
   ASSERT_NE(k, std::string::npos) << out;
   const std::string dump = out.substr(k + key.size(), out.find(')', k) - k - key.size());
   ASSERT_TRUE(fs::exists(d / dump)) << dump;
-  // the stop wrote a plot state at the dump's time, after the scheduled ones
+  // the stop wrote a plot state at the dump's time, after the scheduled ones (or the signal
+  // landed on a cycle that had just written one: then that state serves, no time repeats)
   {
     PlotReader r;
     ASSERT_NO_THROW(r.open((d / "d3plot").string()));
-    EXPECT_GE(r.num_states(), 3);
+    EXPECT_GE(r.num_states(), 2);
     const std::string w = " restart dump " + dump + " written at cycle ";
     const std::size_t q = out.rfind(w);
     ASSERT_NE(q, std::string::npos) << out;
