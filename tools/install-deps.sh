@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages IMPACT-3D needs to build, run and test, if any is missing.
 set -euo pipefail
-PKGS=(g++ cmake make libeigen3-dev zlib1g-dev libgtest-dev libgmock-dev libbenchmark-dev
-      libpng-dev libfreetype-dev fonts-dejavu-core libosmesa6-dev
+PKGS=(g++ cmake make pkg-config libeigen3-dev zlib1g-dev libgtest-dev libgmock-dev libbenchmark-dev
+      libpng-dev libfreetype-dev fonts-dejavu-core libosmesa6-dev libgl-dev
       python3 python3-vtk9 python3-numpy)
 missing=()
 for p in "${PKGS[@]}"; do
