@@ -51,7 +51,7 @@ bool check_model(const Model& m, Diagnostics& diag) {
     if (!(v > 0)) {
       Location loc = file_loc;
       if (std::size_t(e) < m.hex_line.size()) loc.line = m.hex_line[std::size_t(e)];
-      loc.card = "solid element " + std::to_string(e + 1);
+      loc.card = "solid element " + std::to_string(m.hex_id(e));
       char buf[64];
       std::snprintf(buf, sizeof buf, "volume %.6g", v);
       diag.add(1206, loc, buf);
@@ -84,7 +84,7 @@ bool check_model(const Model& m, Diagnostics& diag) {
   std::string first_unused;
   for (std::size_t k = 0; k < node_used.size(); ++k) {
     if (!node_used[k]) {
-      if (unused_nodes < 10) first_unused += (unused_nodes ? ", " : "") + std::to_string(k + 1);
+      if (unused_nodes < 10) first_unused += (unused_nodes ? ", " : "") + std::to_string(m.node_id(int(k)));
       ++unused_nodes;
     }
   }
@@ -103,8 +103,8 @@ bool check_model(const Model& m, Diagnostics& diag) {
           if (s < lines.size()) loc.line = lines[s];
           loc.card = "sliding interface " + std::to_string(i + 1) + (side == 0 ? " slave" : " master") +
                      " segment " + std::to_string(s + 1);
-          diag.add(1218, loc, "nodes " + std::to_string(segs[s][0] + 1) + " " + std::to_string(segs[s][1] + 1) + " " +
-                                  std::to_string(segs[s][2] + 1) + " " + std::to_string(segs[s][3] + 1));
+          diag.add(1218, loc, "nodes " + std::to_string(m.node_id(segs[s][0])) + " " + std::to_string(m.node_id(segs[s][1])) + " " +
+                                  std::to_string(m.node_id(segs[s][2])) + " " + std::to_string(m.node_id(segs[s][3])));
         }
       }
     }

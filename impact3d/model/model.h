@@ -104,6 +104,9 @@ struct Model {
   std::vector<SlidingInterface> interfaces;
 
   int num_nodes() const { return static_cast<int>(x.size()); }
+  // The deck's number of node i / solid e (0-based indices): what every message and output shows.
+  int node_id(int i) const { return node_user_id.empty() ? i + 1 : node_user_id[std::size_t(i)]; }
+  int hex_id(int e) const { return hex_user_id.empty() ? e + 1 : hex_user_id[std::size_t(e)]; }
   int num_hexes() const { return static_cast<int>(hex_nodes.size()); }
 };
 

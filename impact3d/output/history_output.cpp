@@ -85,12 +85,12 @@ void HistoryOutput::open(const Model& m, const std::string& dir, const std::stri
     g.num_materials = int(m.materials.size());
     for (int n : nodes) {
       g.x0.insert(g.x0.end(), {m.x[std::size_t(n)], m.y[std::size_t(n)], m.z[std::size_t(n)]});
-      g.node_user_ids.push_back(n + 1);
+      g.node_user_ids.push_back(m.node_id(n));
     }
     for (int e : th_solids_) {
       for (int n : m.hex_nodes[std::size_t(e)]) g.hex_nodes.push_back(thdt_node_of_[std::size_t(n)]);
       g.hex_material.push_back(m.hex_material[std::size_t(e)] + 1);
-      g.hex_user_ids.push_back(e + 1);
+      g.hex_user_ids.push_back(m.hex_id(e));
     }
     for (const auto& md : m.materials)
       g.part_titles.push_back(md.title.empty() ? "material " + std::to_string(md.number) : md.title.substr(0, 72));
@@ -144,7 +144,7 @@ void HistoryOutput::write(const Model& m, const State& s,
                  " global x velocity..............  %12.5E\n"
                  " global y velocity..............  %12.5E\n"
                  " global z velocity..............  %12.5E\n",
-                 s.cycle, s.dt_elem + 1, s.time, s.dt_next, s.kinetic, s.internal, s.hourglass,
+                 s.cycle, s.dt_elem >= 0 ? m.hex_id(s.dt_elem) : 0, s.time, s.dt_next, s.kinetic, s.internal, s.hourglass,
                  s.bulk_viscous, s.contact, s.wall_work, s.external_work, s.total_energy(),
                  s.energy_ratio(), mtot > 0 ? p[0] / mtot : 0, mtot > 0 ? p[1] / mtot : 0,
                  mtot > 0 ? p[2] / mtot : 0);
@@ -187,7 +187,7 @@ void HistoryOutput::write(const Model& m, const State& s,
     for (int n : th_nodes_) {
       const std::size_t i = std::size_t(n);
       std::fprintf(f, "%10d %12.4E %12.4E %12.4E %12.4E %12.4E %12.4E %12.4E %12.4E %12.4E %12.4E %12.4E %12.4E\n",
-                   n + 1, s.x[i] - s.x0[i], s.y[i] - s.y0[i], s.z[i] - s.z0[i], s.vx[i], s.vy[i], s.vz[i],
+                   m.node_id(n), s.x[i] - s.x0[i], s.y[i] - s.y0[i], s.z[i] - s.z0[i], s.vx[i], s.vy[i], s.vz[i],
                    s.ax[i], s.ay[i], s.az[i], s.x[i], s.y[i], s.z[i]);
     }
   }
@@ -199,9 +199,9 @@ void HistoryOutput::write(const Model& m, const State& s,
                  s.cycle, s.time);
     for (int e : th_solids_) {
       const double* sg = &s.sig[6 * std::size_t(e)];
-      std::fprintf(f, "%9d %7d %12.4E %12.4E %12.4E %12.4E %12.4E %12.4E %12.4E %12.4E %12.4E\n", e + 1,
+      std::fprintf(f, "%9d %7d %12.4E %12.4E %12.4E %12.4E %12.4E %12.4E %12.4E %12.4E %12.4E\n", m.hex_id(e),
                    m.materials[std::size_t(s.mat[std::size_t(e)])].number, sg[0], sg[1], sg[2], sg[3], sg[4],
-                   sg[5], -(sg[0] + sg[1] + sg[2]) / 3, calc_von_mises(sg), s.eps_p[std::size_t(e)]);
+                   sg[5], -(sg[0] + sg[1] + sg[2]) / 3 + 0.0, calc_von_mises(sg), s.eps_p[std::size_t(e)]);
     }
   }
   for (FILE* f : files_)

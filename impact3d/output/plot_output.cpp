@@ -23,6 +23,9 @@ PlotGeometry make_plot_geometry(const Model& m) {
   }
   for (const auto& md : m.materials)
     g.part_titles.push_back(md.title.empty() ? "material " + std::to_string(md.number) : md.title.substr(0, 72));
+  // the deck's numbers (NARBS section), so readers show them
+  if (!m.node_user_id.empty()) g.node_user_ids = m.node_user_id;
+  if (!m.hex_user_id.empty()) g.hex_user_ids = m.hex_user_id;
   return g;
 }
 

@@ -74,12 +74,13 @@ class RunLog {
   bool quiet_;
 };
 
-std::string format_cycle_line(const State& s, double elapsed, double start_time, double end_time) {
+std::string format_cycle_line(const Model& m, const State& s, double elapsed, double start_time,
+                              double end_time) {
   char buf[200];
   const double done = s.time - start_time;
   double remaining = done > 0 ? elapsed * (end_time - s.time) / done : 0;
   std::snprintf(buf, sizeof buf, " %8d %12.5e %11.4e %8d %9.5f %9.2f %9.2f", s.cycle, s.time,
-                s.dt_next, s.dt_elem + 1, s.energy_ratio(), elapsed, remaining);
+                s.dt_next, s.dt_elem >= 0 ? m.hex_id(s.dt_elem) : 0, s.energy_ratio(), elapsed, remaining);
   return buf;
 }
 
@@ -154,7 +155,7 @@ int run_simulation(const Model& model, const RunOptions& opt, std::ostream& prin
                     opt.restart.c_str(), s.cycle, s.time, omp_get_max_threads());
     else
       std::snprintf(buf, sizeof buf, "\n threads: %d\n first time step %.5e (element %d)\n",
-                    omp_get_max_threads(), s.dt_next, s.dt_elem + 1);
+                    omp_get_max_threads(), s.dt_next, s.dt_elem >= 0 ? model.hex_id(s.dt_elem) : 0);
     log.line(buf);
     log.line("    cycle         time          dt  element  e-ratio   elapsed  remaining(s)");
   }
@@ -251,7 +252,7 @@ int run_simulation(const Model& model, const RunOptions& opt, std::ostream& prin
   while (st == StepStatus::ok && out_ok) {
     st = engine.step();
     if (s.cycle % report == 0 || st != StepStatus::ok)
-      log.line(format_cycle_line(s, elapsed(), start_time, model.control.end_time));
+      log.line(format_cycle_line(model, s, elapsed(), start_time, model.control.end_time));
     if (st != StepStatus::ok) break;
     if (s.time >= cur.next_plot * (1 - 1e-9)) write_plot(true);
     if (s.time >= cur.next_history * (1 - 1e-9)) write_history();
@@ -264,7 +265,7 @@ int run_simulation(const Model& model, const RunOptions& opt, std::ostream& prin
     }
     if (g_status) {
       g_status = 0;
-      std::string l = format_cycle_line(s, elapsed(), start_time, model.control.end_time);
+      std::string l = format_cycle_line(model, s, elapsed(), start_time, model.control.end_time);
       log.line(" status (SIGUSR1, sense switch sw2):");
       log.line("    cycle         time          dt  element  e-ratio   elapsed  remaining(s)");
       log.line(l);
@@ -310,7 +311,7 @@ int run_simulation(const Model& model, const RunOptions& opt, std::ostream& prin
                   " maximum effective plastic strain %.5f in element %d\n"
                   " cycles %d, elapsed %.3f s (%.3f us per element-cycle)",
                   lo[0], hi[0], lo[1], hi[1], lo[2], hi[2], s.ne ? s.eps_p[std::size_t(emax)] : 0.0,
-                  emax + 1, cycles_here, cpu, s.cycle && s.ne ? 1e6 * cpu / (double(s.cycle) * s.ne) : 0.0);
+                  s.ne ? model.hex_id(emax) : 0, cycles_here, cpu, s.cycle && s.ne ? 1e6 * cpu / (double(s.cycle) * s.ne) : 0.0);
     log.line(buf);
   }
   if (!out_ok) {
@@ -332,20 +333,20 @@ int run_simulation(const Model& model, const RunOptions& opt, std::ostream& prin
   switch (st) {
     case StepStatus::negative_volume:
       msg = 4001;
-      std::snprintf(buf, sizeof buf, "solid element %d at cycle %d, time %.6e", engine.error_element() + 1, s.cycle, s.time);
+      std::snprintf(buf, sizeof buf, "solid element %d at cycle %d, time %.6e", model.hex_id(engine.error_element()), s.cycle, s.time);
       why = buf;
       break;
     case StepStatus::non_finite:
       msg = 4002;
       std::snprintf(buf, sizeof buf, "%s%d at cycle %d, time %.6e",
                     engine.error_element() >= 0 ? "solid element " : "kinetic energy; element ",
-                    engine.error_element() + 1, s.cycle, s.time);
+                    engine.error_element() >= 0 ? model.hex_id(engine.error_element()) : 0, s.cycle, s.time);
       why = buf;
       break;
     default:
       msg = 4003;
       std::snprintf(buf, sizeof buf, "dt %.4e below %.4g x first step, element %d, cycle %d, time %.6e",
-                    s.dt_next, model.control.min_step_factor, s.dt_elem + 1, s.cycle, s.time);
+                    s.dt_next, model.control.min_step_factor, s.dt_elem >= 0 ? model.hex_id(s.dt_elem) : 0, s.cycle, s.time);
       why = buf;
       break;
   }
