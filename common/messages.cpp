@@ -75,6 +75,7 @@ const std::vector<MessageDef> kCatalog = {
     {2009, S::warning, "the deck does not start with *KEYWORD"},
     {2010, S::warning, "keyword given more than once: the last one is used"},
     {2011, S::warning, "part without solid elements ignored"},
+    {2012, S::warning, "stonewalls do not act on rigid-body nodes (use a sliding interface for a rigid body)"},
     // 3000-3099: command line and files
     {3001, S::error, "unknown command-line argument"},
     {3002, S::error, "no input deck given (use i=deck)"},

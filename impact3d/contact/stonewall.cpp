@@ -11,7 +11,7 @@ inline void apply_wall_to_node(State& s, int i, const double p[3], const double 
                                double fric, double dt, double imp[3], double& dke) {
   const std::size_t k = std::size_t(i);
   const double mass = s.mass[k];
-  if (mass <= 0) return;
+  if (mass <= 0 || s.rigid_of_node[k] >= 0) return;  // rigid bodies: warning 2012 at input
   const double d = (s.x[k] - p[0]) * n[0] + (s.y[k] - p[1]) * n[1] + (s.z[k] - p[2]) * n[2];
   const double vn = s.vx[k] * n[0] + s.vy[k] * n[1] + s.vz[k] * n[2];
   if (d + dt * vn >= 0) return;  // stays on the body's side

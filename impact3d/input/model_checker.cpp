@@ -91,6 +91,17 @@ bool check_model(const Model& m, Diagnostics& diag) {
   if (unused_nodes && m.num_hexes() > 0)
     diag.add(2003, file_loc, std::to_string(unused_nodes) + " node(s): " + first_unused + (unused_nodes > 10 ? ", ..." : ""));
 
+  // stonewalls act on deformable nodes only (the rigid-body update would overwrite the
+  // impulse of a single node): say so when the two meet
+  bool has_rigid = false;
+  for (const auto& md : m.materials) has_rigid = has_rigid || md.type == 20;
+  if (has_rigid && !m.walls.empty()) {
+    Location loc = file_loc;
+    loc.line = m.walls[0].line;
+    loc.card = "stonewall 1";
+    diag.add(2012, loc);
+  }
+
   // interface segments must be element faces
   for (std::size_t i = 0; i < m.interfaces.size(); ++i) {
     const auto& si = m.interfaces[i];
