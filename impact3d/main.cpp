@@ -6,6 +6,7 @@
 #include <fstream>
 #include <iostream>
 #include <iterator>
+#include <sstream>
 #include <string>
 
 #include "common/messages.h"
@@ -44,6 +45,25 @@ const char* kUsage =
     "exit codes: 0 normal termination, 2 input errors, 3 bad command line, 4 file error,\n"
     "            5 error termination, 6 stopped by signal, 9 internal error\n";
 
+// The deck text a restart dump carries.  A fixed-format deck is its own file.  A keyword deck may
+// pull in *INCLUDE files or need --lenient-keywords, so the dump gets the model written back as
+// one keyword deck instead, after checking that it reads back as the same model (if it did not,
+// the original text is kept: a restart then needs the include files in place).
+std::string self_contained_deck_text(const std::string& path, const Model& model) {
+  std::ifstream in(path, std::ios::binary);
+  std::string original((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (!model.keyword_deck) return original;
+  std::ostringstream os;
+  write_keyword_deck(os, model);
+  DeckFile back;
+  back.load_from_string(path, os.str());
+  Model again;
+  Diagnostics d;
+  if (!read_deck(back, again, d, InputOptions{})) return original;
+  again.deck_file = model.deck_file;
+  return model_differences(model, again).empty() ? os.str() : original;
+}
+
 void print_banner(std::ostream& os) {
   os << " IMPACT-3D " << IMPACT3D_VERSION
      << "  explicit finite elements for impact (DYNA3D lineage)\n";
@@ -56,7 +76,8 @@ int main(int argc, char** argv) {
   bool check_only = false;
   InputOptions input_opt;
   std::string write_keyword, write_fixed;
-  bool printed_given = false, plot_given = false, dump_given = false;
+  bool printed_given = false, plot_given = false, dump_given = false, words_given = false,
+       x_given = false;
   Diagnostics cmd;
   for (int a = 1; a < argc; ++a) {
     std::string arg = argv[a];
@@ -102,6 +123,7 @@ int main(int argc, char** argv) {
     } else if (const char* v = value("plotwords=")) {
       if (std::string(v) == "4" || std::string(v) == "8") {
         opt.plot_word_size = v[0] - '0';
+        words_given = true;
       } else {
         Location loc;
         loc.found = arg;
@@ -118,6 +140,7 @@ int main(int argc, char** argv) {
         cmd.add(3005, loc, "x must be an integer 1-1024 (member size in units of 512 x 512 words)");
       } else {
         opt.member_size_factor = int(n);
+        x_given = true;
       }
     } else if (const char* v = value("ncpu=")) {
       char* end = nullptr;
@@ -161,6 +184,15 @@ int main(int argc, char** argv) {
       std::cout << "\n E r r o r   t e r m i n a t i o n   (restart dump is invalid)\n";
       return exit_code::file_error;
     }
+    if (words_given || x_given) {
+      Location loc;
+      loc.found = words_given ? "plotwords=" : "x=";
+      loc.show_found = true;
+      Diagnostic d{3005, Severity::error, loc,
+                   "plotwords= and x= cannot change on a restart: the plot database continues"};
+      std::cerr << "impact3d: " << render(d) << "\n";
+      return exit_code::usage_error;
+    }
     if (!printed_given) opt.printed = h.printed;
     if (!plot_given) opt.plot = h.plot_root;
     if (!dump_given && !h.dump_root.empty()) opt.dump = h.dump_root;
@@ -174,10 +206,7 @@ int main(int argc, char** argv) {
     if (ok) ok = check_model(model, diag);
   } else {
     ok = read_and_check_deck(opt.deck, model, diag, input_opt);
-    if (ok && !check_only) {
-      std::ifstream in(opt.deck, std::ios::binary);
-      opt.deck_text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-    }
+    if (ok && !check_only) opt.deck_text = self_contained_deck_text(opt.deck, model);
   }
 
   // The printed output file gets the echo and all messages; the terminal gets the messages.

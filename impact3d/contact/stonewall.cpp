@@ -39,7 +39,7 @@ inline void apply_wall_to_node(State& s, int i, const double p[3], const double 
 }
 }  // namespace
 
-void apply_stonewalls_to_nodes(const Model& m, State& s, double dt) {
+void apply_stonewalls_to_nodes(const Model& m, State& s, double dt, double dt_n) {
   for (std::size_t w = 0; w < m.walls.size(); ++w) {
     const StoneWall& sw = m.walls[w];
     double n[3] = {sw.head[0] - sw.tail[0], sw.head[1] - sw.tail[1], sw.head[2] - sw.tail[2]};
@@ -55,7 +55,7 @@ void apply_stonewalls_to_nodes(const Model& m, State& s, double dt) {
       for (int i : sw.nodes) apply_wall_to_node(s, i, p, n, sw.friction, dt, imp, dke);
     }
     // force on the wall = - impulse given to the nodes / dt
-    for (int a = 0; a < 3; ++a) s.wall_force[w][std::size_t(a)] = -imp[a] / dt;
+    for (int a = 0; a < 3; ++a) s.wall_force[w][std::size_t(a)] = -imp[a] / dt_n;
     s.wall_work += dke;
   }
 }

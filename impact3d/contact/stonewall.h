@@ -8,8 +8,10 @@
 
 namespace impact3d {
 
-// Applies every wall to the velocities v^{n+1/2} (positions x^n, step dt).  Books the force on
-// each wall (s.wall_force) and the kinetic energy the walls take out (s.wall_work).
-void apply_stonewalls_to_nodes(const Model& m, State& s, double dt);
+// Applies every wall to the velocities v^{n+1/2} (positions x^n; dt_next the step about to be
+// taken, for the crossing test).  Books the force on each wall, impulse / dt_n with dt_n the
+// step the velocity jump belongs to (s.wall_force), and the energy the walls take out
+// (s.wall_work).
+void apply_stonewalls_to_nodes(const Model& m, State& s, double dt_next, double dt_n);
 
 }  // namespace impact3d

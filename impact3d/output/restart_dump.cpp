@@ -4,6 +4,7 @@
 #include <unistd.h>
 #include <zlib.h>
 
+#include <algorithm>
 #include <array>
 #include <cerrno>
 #include <cstring>
@@ -15,6 +16,18 @@
 namespace impact3d {
 
 namespace {
+
+// CRC-32 of any length (zlib's crc32 takes 32-bit lengths: fold in chunks).
+std::uint32_t crc32_of(const char* p, std::size_t n) {
+  uLong c = crc32(0L, Z_NULL, 0);
+  while (n > 0) {
+    const std::size_t k = std::min<std::size_t>(n, std::size_t(1) << 30);
+    c = crc32(c, reinterpret_cast<const Bytef*>(p), static_cast<uInt>(k));
+    p += k;
+    n -= k;
+  }
+  return static_cast<std::uint32_t>(c);
+}
 
 constexpr char kMagic[16] = {'I', 'M', 'P', 'A', 'C', 'T', '3', 'D', '-', 'D', 'U', 'M', 'P', 0, 0, 0};
 // header: magic(16) version(4) reserved(4) payload size(8) crc32(4) reserved(4) = 40 bytes
@@ -125,9 +138,7 @@ std::vector<char> read_checked(const std::string& path, std::size_t& payload_sta
     throw std::runtime_error("restart dump " + path + ": format version " + std::to_string(version) + ", this impact3d reads version " + std::to_string(kDumpVersion));
   if (size != b.size() - kHeaderBytes)
     throw std::runtime_error("restart dump " + path + ": truncated or extended: header says " + std::to_string(size) + " payload bytes, file has " + std::to_string(b.size() - kHeaderBytes));
-  uLong c = crc32(0L, Z_NULL, 0);
-  c = crc32(c, reinterpret_cast<const Bytef*>(b.data() + kHeaderBytes), static_cast<uInt>(size));
-  if (static_cast<std::uint32_t>(c) != crc) throw std::runtime_error("restart dump " + path + ": checksum mismatch: the dump is damaged");
+  if (crc32_of(b.data() + kHeaderBytes, std::size_t(size)) != crc) throw std::runtime_error("restart dump " + path + ": checksum mismatch: the dump is damaged");
   payload_start = kHeaderBytes;
   return b;
 }
@@ -150,9 +161,7 @@ void write_restart_dump(const std::string& path, const DumpHeader& h, State& s,
   std::memcpy(out.data(), kMagic, sizeof kMagic);
   std::uint32_t version = kDumpVersion;
   std::uint64_t size = w.buf.size();
-  uLong c = crc32(0L, Z_NULL, 0);
-  c = crc32(c, reinterpret_cast<const Bytef*>(w.buf.data()), static_cast<uInt>(w.buf.size()));
-  std::uint32_t crc = static_cast<std::uint32_t>(c);
+  std::uint32_t crc = crc32_of(w.buf.data(), w.buf.size());
   std::memcpy(out.data() + 16, &version, 4);
   std::memcpy(out.data() + 24, &size, 8);
   std::memcpy(out.data() + 32, &crc, 4);

@@ -114,8 +114,9 @@ inline ElemOut calc_forces_for_elem(const Model& m, State& s, int e) {
   // element time step
   out.dt = calc_hex_time_step(v, amax, mc.c, trd, md.q1, md.q2);
   s.dt_e[E] = out.dt;
-  if (!std::isfinite(sig[0] + sig[1] + sig[2] + sig[3] + sig[4] + sig[5] + cfx[0] + cfy[0] + cfz[0]))
-    out.non_finite = true;
+  double check = sig[0] + sig[1] + sig[2] + sig[3] + sig[4] + sig[5];
+  for (int j = 0; j < 8; ++j) check += cfx[j] + cfy[j] + cfz[j];
+  if (!std::isfinite(check)) out.non_finite = true;
   return out;
 }
 

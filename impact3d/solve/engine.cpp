@@ -116,7 +116,7 @@ StepStatus Engine::step() {
     s.vz[k] += dt_n * s.az[k];
   }
   if (!s.rigid.empty()) update_rigid_body_velocities(s, dt_n, dt_next);
-  if (!m_.walls.empty()) apply_stonewalls_to_nodes(m_, s, dt_next);
+  if (!m_.walls.empty()) apply_stonewalls_to_nodes(m_, s, dt_next, dt_n);
 #pragma omp parallel for schedule(static)
   for (int i = 0; i < nn; ++i) {
     const std::size_t k = std::size_t(i);

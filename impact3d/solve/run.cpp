@@ -172,15 +172,18 @@ int run_simulation(const Model& model, const RunOptions& opt, std::ostream& prin
     if (restarting) plot.resume(model, opt.plot, word_size, member_words, cur.plot_states);
     else plot.open(model, opt.plot, word_size, member_words);
   } catch (const std::exception& ex) {
-    file_error(3004, opt.plot, ex.what());
-    log.line("\n E r r o r   t e r m i n a t i o n   (cannot write the output files)");
+    // on a restart the family must be there to continue: a missing or short one is a restart
+    // problem (4006), not a write failure
+    file_error(restarting ? 4006 : 3004, opt.plot, ex.what());
+    log.line(restarting ? "\n E r r o r   t e r m i n a t i o n   (the plot database does not match the restart dump)"
+                        : "\n E r r o r   t e r m i n a t i o n   (cannot write the output files)");
     return exit_code::file_error;
   }
   try {
     history.open(model, out_dir, out_dir + "/d3thdt", word_size, restarting, cur.ascii_bytes,
                  cur.history_states);
   } catch (const std::exception& ex) {
-    file_error(3004, out_dir, ex.what());
+    file_error(restarting ? 4006 : 3004, out_dir, ex.what());
     log.line("\n E r r o r   t e r m i n a t i o n   (cannot write the output files)");
     return exit_code::file_error;
   }

@@ -654,7 +654,7 @@ TEST_F(RunOutputs, RunningRestartDumpAndShortenedHistoryFile) {
   fs::resize_file(b / "glstat", 100);
   RunResult rs = run_impact3d(b, {"r=d3dump01"}, "restart_short");
   EXPECT_EQ(rs.code, 4) << describe(rs);
-  EXPECT_NE(rs.err.find("error 3004"), std::string::npos) << describe(rs);
+  EXPECT_NE(rs.err.find("error 4006"), std::string::npos) << describe(rs);
   EXPECT_NE(rs.err.find("glstat"), std::string::npos) << describe(rs);
   EXPECT_EQ(slurp(b / "glstat").find('\0'), std::string::npos) << "glstat padded with zero bytes";
   // a missing plot family member
@@ -662,7 +662,7 @@ TEST_F(RunOutputs, RunningRestartDumpAndShortenedHistoryFile) {
   fs::remove(b / "d3plot01");
   RunResult rp = run_impact3d(b, {"r=d3dump01"}, "restart_noplot");
   EXPECT_EQ(rp.code, 4) << describe(rp);
-  EXPECT_NE(rp.err.find("error 3004"), std::string::npos) << describe(rp);
+  EXPECT_NE(rp.err.find("error 4006"), std::string::npos) << describe(rp);
   EXPECT_NE(rp.err.find("d3plot01"), std::string::npos) << describe(rp);
 }
 
