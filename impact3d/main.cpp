@@ -2,6 +2,7 @@
 // the input phase (read and check the whole deck), then the solver.
 
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <iostream>
@@ -64,6 +65,15 @@ std::string self_contained_deck_text(const std::string& path, const Model& model
   return model_differences(model, again).empty() ? os.str() : original;
 }
 
+// A whole-word integer in [lo, hi] (command-line values); false if it is not one.
+bool parse_count(const char* text, long lo, long hi, int& out) {
+  char* end = nullptr;
+  const long n = std::strtol(text, &end, 10);
+  if (!*text || *end || n < lo || n > hi) return false;
+  out = int(n);
+  return true;
+}
+
 void print_banner(std::ostream& os) {
   os << " IMPACT-3D " << IMPACT3D_VERSION
      << "  explicit finite elements for impact (DYNA3D lineage)\n";
@@ -81,6 +91,12 @@ int main(int argc, char** argv) {
   Diagnostics cmd;
   for (int a = 1; a < argc; ++a) {
     std::string arg = argv[a];
+    auto bad_value = [&](const char* why) {
+      Location loc;
+      loc.found = arg;
+      loc.show_found = true;
+      cmd.add(3005, loc, why);
+    };
     auto value = [&](const char* prefix) -> const char* {
       std::size_t n = std::strlen(prefix);
       return arg.compare(0, n, prefix) == 0 ? argv[a] + n : nullptr;
@@ -121,38 +137,18 @@ int main(int argc, char** argv) {
     } else if (const char* v = value("r=")) {
       opt.restart = v;
     } else if (const char* v = value("plotwords=")) {
-      if (std::string(v) == "4" || std::string(v) == "8") {
-        opt.plot_word_size = v[0] - '0';
+      int n = 0;
+      if (parse_count(v, 4, 8, n) && (n == 4 || n == 8)) {
+        opt.plot_word_size = n;
         words_given = true;
       } else {
-        Location loc;
-        loc.found = arg;
-        loc.show_found = true;
-        cmd.add(3005, loc, "plotwords must be 4 or 8");
+        bad_value("plotwords must be 4 or 8");
       }
     } else if (const char* v = value("x=")) {
-      char* end = nullptr;
-      long n = std::strtol(v, &end, 10);
-      if (!*v || *end || n < 1 || n > 1024) {
-        Location loc;
-        loc.found = arg;
-        loc.show_found = true;
-        cmd.add(3005, loc, "x must be an integer 1-1024 (member size in units of 512 x 512 words)");
-      } else {
-        opt.member_size_factor = int(n);
-        x_given = true;
-      }
+      if (parse_count(v, 1, 1024, opt.member_size_factor)) x_given = true;
+      else bad_value("x must be an integer 1-1024 (member size in units of 512 x 512 words)");
     } else if (const char* v = value("ncpu=")) {
-      char* end = nullptr;
-      long n = std::strtol(v, &end, 10);
-      if (!*v || *end || n < 1 || n > 1024) {
-        Location loc;
-        loc.found = arg;
-        loc.show_found = true;
-        cmd.add(3005, loc, "ncpu must be a positive integer");
-      } else {
-        opt.threads = int(n);
-      }
+      if (!parse_count(v, 1, 1024, opt.threads)) bad_value("ncpu must be an integer 1-1024");
     } else {
       Location loc;
       loc.found = arg;
