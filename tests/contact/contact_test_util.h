@@ -14,6 +14,7 @@
 #include "impact3d/input/deck_reader.h"
 #include "impact3d/model/model.h"
 #include "impact3d/model/state.h"
+#include "../support/box_mesh.h"
 
 namespace contact_test {
 
@@ -30,11 +31,7 @@ inline Model read_deck(const std::string& name) {
   return m;
 }
 
-struct ScopedThreads {
-  int saved;
-  explicit ScopedThreads(int n) : saved(omp_get_max_threads()) { omp_set_num_threads(n); }
-  ~ScopedThreads() { omp_set_num_threads(saved); }
-};
+using test_support::ScopedThreads;
 
 inline MaterialData copper(int number) {
   MaterialData m;
@@ -47,56 +44,9 @@ inline MaterialData copper(int number) {
   return m;
 }
 
-// A box of nx*ny*nz hexahedra appended to the model (material index mat, 0-based).  Node
-// (i, j, k) -> first_node + i + (nx+1)(j + (ny+1) k).
-struct Box {
-  int nx = 1, ny = 1, nz = 1;
-  double lx = 1, ly = 1, lz = 1;
-  double x0 = 0, y0 = 0, z0 = 0;
-  int first_node = 0, first_elem = 0;
-  int node(int i, int j, int k) const { return first_node + i + (nx + 1) * (j + (ny + 1) * k); }
-  int num_nodes() const { return (nx + 1) * (ny + 1) * (nz + 1); }
-  // Faces as segments, counter-clockwise seen from outside: bottom (z = z0) and top.
-  std::vector<std::array<int, 4>> bottom() const {
-    std::vector<std::array<int, 4>> f;
-    for (int j = 0; j < ny; ++j)
-      for (int i = 0; i < nx; ++i)
-        f.push_back({node(i, j, 0), node(i, j + 1, 0), node(i + 1, j + 1, 0), node(i + 1, j, 0)});
-    return f;
-  }
-  std::vector<std::array<int, 4>> top() const {
-    std::vector<std::array<int, 4>> f;
-    for (int j = 0; j < ny; ++j)
-      for (int i = 0; i < nx; ++i)
-        f.push_back({node(i, j, nz), node(i + 1, j, nz), node(i + 1, j + 1, nz), node(i, j + 1, nz)});
-    return f;
-  }
-};
+using test_support::add_box;
+using test_support::Box;
 
-inline Box add_box(Model& m, Box b, int mat, int bc = 0) {
-  b.first_node = m.num_nodes();
-  b.first_elem = m.num_hexes();
-  for (int k = 0; k <= b.nz; ++k)
-    for (int j = 0; j <= b.ny; ++j)
-      for (int i = 0; i <= b.nx; ++i) {
-        m.x.push_back(b.x0 + b.lx * i / b.nx);
-        m.y.push_back(b.y0 + b.ly * j / b.ny);
-        m.z.push_back(b.z0 + b.lz * k / b.nz);
-        m.bc.push_back(bc);
-      }
-  for (int k = 0; k < b.nz; ++k)
-    for (int j = 0; j < b.ny; ++j)
-      for (int i = 0; i < b.nx; ++i) {
-        m.hex_nodes.push_back({b.node(i, j, k), b.node(i + 1, j, k), b.node(i + 1, j + 1, k),
-                               b.node(i, j + 1, k), b.node(i, j, k + 1), b.node(i + 1, j, k + 1),
-                               b.node(i + 1, j + 1, k + 1), b.node(i, j + 1, k + 1)});
-        m.hex_material.push_back(mat);
-        m.hex_line.push_back(0);
-      }
-  m.control.numnp = m.num_nodes();
-  m.control.numelh = m.num_hexes();
-  return b;
-}
 
 inline void set_velocity(Model& m, const Box& b, double vx, double vy, double vz) {
   impact3d::InitialVelocity iv;

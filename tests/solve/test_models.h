@@ -12,6 +12,7 @@
 
 #include "impact3d/model/model.h"
 #include "impact3d/model/state.h"
+#include "../support/box_mesh.h"
 
 namespace solve_test {
 
@@ -54,39 +55,16 @@ inline Elastic elastic_of(const MaterialData& m) {
 // A box [x0, x0+lx] x [y0, y0+ly] x [z0, z0+lz] of nx*ny*nz hexahedra of one material.
 // Node (i, j, k) has index i + (nx+1) (j + (ny+1) k); element (i, j, k) has index
 // i + nx (j + ny k).  Faces 1-2-3-4 at z_k, 5-6-7-8 at z_{k+1} (positive volume).
-struct Box {
-  int nx = 1, ny = 1, nz = 1;
-  double lx = 1, ly = 1, lz = 1;
-  double x0 = 0, y0 = 0, z0 = 0;
-  int node(int i, int j, int k) const { return i + (nx + 1) * (j + (ny + 1) * k); }
-  int elem(int i, int j, int k) const { return i + nx * (j + ny * k); }
-  int num_nodes() const { return (nx + 1) * (ny + 1) * (nz + 1); }
-};
+using test_support::Box;
 
 inline Model make_box_model(const Box& b, const MaterialData& mat, double end_time,
                             int bc_code = 0) {
   Model m;
   m.title = "programmatic box";
   m.materials = {mat};
-  for (int k = 0; k <= b.nz; ++k)
-    for (int j = 0; j <= b.ny; ++j)
-      for (int i = 0; i <= b.nx; ++i) {
-        m.x.push_back(b.x0 + b.lx * i / b.nx);
-        m.y.push_back(b.y0 + b.ly * j / b.ny);
-        m.z.push_back(b.z0 + b.lz * k / b.nz);
-        m.bc.push_back(bc_code);
-      }
-  for (int k = 0; k < b.nz; ++k)
-    for (int j = 0; j < b.ny; ++j)
-      for (int i = 0; i < b.nx; ++i) {
-        m.hex_nodes.push_back({b.node(i, j, k), b.node(i + 1, j, k), b.node(i + 1, j + 1, k),
-                               b.node(i, j + 1, k), b.node(i, j, k + 1), b.node(i + 1, j, k + 1),
-                               b.node(i + 1, j + 1, k + 1), b.node(i, j + 1, k + 1)});
-        m.hex_material.push_back(0);
-      }
+  test_support::add_box(m, b, 0, bc_code);
+  m.hex_line.clear();
   m.control.nmmat = 1;
-  m.control.numnp = m.num_nodes();
-  m.control.numelh = m.num_hexes();
   m.control.end_time = end_time;
   return m;
 }
@@ -122,19 +100,7 @@ inline void add_floor_wall(Model& m) {
   m.control.num_walls = int(m.walls.size());
 }
 
-// Sets the OpenMP thread count for the scope.  The small models of these tests run a few
-// microseconds per cycle: on a shared 2-core machine two spinning threads cost far more than
-// they save, so most tests run on one thread (the determinism test compares 1 and 2).
-class ScopedThreads {
- public:
-  explicit ScopedThreads(int n) : old_(omp_get_max_threads()) { omp_set_num_threads(n); }
-  ~ScopedThreads() { omp_set_num_threads(old_); }
-  ScopedThreads(const ScopedThreads&) = delete;
-  ScopedThreads& operator=(const ScopedThreads&) = delete;
-
- private:
-  int old_;
-};
+using test_support::ScopedThreads;
 
 // Reductions over the State.
 inline std::array<double, 3> momentum(const State& s) {
