@@ -172,6 +172,19 @@ int wait_for_states(pid_t pid, const fs::path& root, int n, int* exited, double 
   }
 }
 
+// Waits until the running child's plot database holds n states; on failure (the child exited
+// or the time ran out) kills the child and says why.
+::testing::AssertionResult reached_states(pid_t pid, const fs::path& root, int n) {
+  int exited = -1;
+  const int seen = wait_for_states(pid, root, n, &exited);
+  if (seen > 0) return ::testing::AssertionSuccess();
+  if (seen == 0) {
+    ::kill(pid, SIGKILL);
+    wait_exit(pid);
+  }
+  return ::testing::AssertionFailure() << "the run never showed " << n << " plot states (exit " << exited << ")";
+}
+
 // ------------------------------------------------------------------ decks
 
 struct Card6 {
@@ -818,15 +831,7 @@ TEST_F(RunOutputs, EightByteWordsHoldTheFourByteValues) {
 TEST_F(RunOutputs, SigkillLeavesOnlyCompleteStates) {
   const fs::path d = fresh_dir("sigkill");
   const pid_t pid = spawn(d, {"i=" + kDecks + "/taylor_bar.dyn"}, "run");
-  int exited = -1;
-  const int seen = wait_for_states(pid, d / "d3plot", 3, &exited);
-  if (seen <= 0) {
-    if (seen == 0) {
-      ::kill(pid, SIGKILL);
-      wait_exit(pid);
-    }
-    FAIL() << "the run never showed 3 plot states (exit " << exited << ")";
-  }
+  ASSERT_TRUE(reached_states(pid, d / "d3plot", 3));
   ASSERT_EQ(::kill(pid, SIGKILL), 0);
   EXPECT_EQ(wait_exit(pid), 128 + SIGKILL);
   for (const char* root : {"d3plot", "d3thdt"}) {
@@ -869,15 +874,7 @@ TEST_F(RunOutputs, SigintDumpRestartsToTheUninterruptedResults) {
   const fs::path d = fresh_dir("sigint");
   spit(d / "deck.dyn", short_taylor());
   const pid_t pid = spawn(d, {"i=deck.dyn"}, "run");
-  int exited = -1;
-  const int seen = wait_for_states(pid, d / "d3plot", 2, &exited);
-  if (seen <= 0) {
-    if (seen == 0) {
-      ::kill(pid, SIGKILL);
-      wait_exit(pid);
-    }
-    FAIL() << "the run never showed 2 plot states (exit " << exited << ")";
-  }
+  ASSERT_TRUE(reached_states(pid, d / "d3plot", 2));
   ASSERT_EQ(::kill(pid, SIGINT), 0);
   const int code = wait_exit(pid);
   const std::string out = slurp(d / "run.out"), hsp = slurp(d / "d3hsp");
@@ -915,15 +912,7 @@ TEST_F(RunOutputs, SigtermStopsWithADump) {
   const fs::path d = fresh_dir("sigterm");
   spit(d / "deck.dyn", short_taylor());
   const pid_t pid = spawn(d, {"i=deck.dyn"}, "run");
-  int exited = -1;
-  const int seen = wait_for_states(pid, d / "d3plot", 2, &exited);
-  if (seen <= 0) {
-    if (seen == 0) {
-      ::kill(pid, SIGKILL);
-      wait_exit(pid);
-    }
-    FAIL() << "the run never showed 2 plot states (exit " << exited << ")";
-  }
+  ASSERT_TRUE(reached_states(pid, d / "d3plot", 2));
   ASSERT_EQ(::kill(pid, SIGTERM), 0);
   EXPECT_EQ(wait_exit(pid), 6) << slurp(d / "run.out");
   EXPECT_NE(slurp(d / "d3hsp").find("sense switch sw1"), std::string::npos);
@@ -936,15 +925,7 @@ TEST_F(RunOutputs, Sigusr1StatusAndSigusr2ExtraPlotState) {
   const fs::path d = fresh_dir("sigusr");
   spit(d / "deck.dyn", short_taylor());
   const pid_t pid = spawn(d, {"i=deck.dyn"}, "run");
-  int exited = -1;
-  const int seen = wait_for_states(pid, d / "d3plot", 2, &exited);
-  if (seen <= 0) {
-    if (seen == 0) {
-      ::kill(pid, SIGKILL);
-      wait_exit(pid);
-    }
-    FAIL() << "the run never showed 2 plot states (exit " << exited << ")";
-  }
+  ASSERT_TRUE(reached_states(pid, d / "d3plot", 2));
   ASSERT_EQ(::kill(pid, SIGUSR1), 0);
   // one switch per cycle poll: let the status be seen before the plot request
   std::this_thread::sleep_for(std::chrono::milliseconds(20));
