@@ -146,3 +146,46 @@ TEST(Robustness, TwoThousandMutatedDecks) {
   EXPECT_LT(seconds, 10.0);
   std::printf("robustness: %d accepted, %d refused, %.2f s\n", accepted, refused, seconds);
 }
+
+// The same for the LS-DYNA keyword reader (picked by content through read_deck): a small
+// sparse-id deck and the first 300 lines of the keyword Taylor bar.
+TEST(Robustness, TwoThousandMutatedKeywordDecks) {
+  const std::string small = read_text(source_path("tests/output/sparse_ids.k"));
+  ASSERT_FALSE(small.empty());
+  auto taylor_lines = split_lines(read_text(source_path("decks/keyword/taylor_bar.k")));
+  ASSERT_GE(taylor_lines.size(), 300u);
+  taylor_lines.resize(300);
+  const std::string taylor = join_lines(taylor_lines);
+
+  Rng rng(0x5EED0F1234ABCDEFULL);
+  int accepted = 0, refused = 0;
+  for (int k = 0; k < 2000; ++k) {
+    const std::string text = mutate((k % 2 == 0) ? small : taylor, rng);
+    Model m;
+    Diagnostics diag;
+    bool ok = false;
+    try {
+      DeckFile deck;
+      deck.load_from_string("mutant.k", text);
+      ok = read_deck(deck, m, diag, InputOptions{});
+      if (ok) ok = check_model(m, diag);
+    } catch (const std::exception& e) {
+      ADD_FAILURE() << "mutation " << k << " threw " << e.what() << "\n" << text;
+      continue;
+    } catch (...) {
+      ADD_FAILURE() << "mutation " << k << " threw\n" << text;
+      continue;
+    }
+    if (ok) {
+      ++accepted;
+      EXPECT_EQ(diag.error_count(), 0) << "mutation " << k;
+    } else {
+      ++refused;
+      EXPECT_GE(diag.error_count(), 1) << "mutation " << k << " refused without an error\n" << text;
+    }
+    for (const auto& d : diag.all()) render(d);  // every message number is in the catalog
+  }
+  EXPECT_EQ(accepted + refused, 2000);
+  EXPECT_GT(refused, 1000);  // the truncated Taylor bar has no *END and misses most nodes' elements
+  std::printf("keyword robustness: %d accepted, %d refused\n", accepted, refused);
+}
