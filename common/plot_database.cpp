@@ -286,6 +286,7 @@ PlotControl parse_control(const std::vector<char>& d, const std::string& path) {
     c.ialemat = w[47]; c.ncfdv1 = w[48]; c.ncfdv2 = w[49]; c.nadapt = w[50]; c.nmmat = w[51];
     c.numfluid = w[52]; c.inn = w[53]; c.npefg = w[54]; c.nel48 = w[55]; c.idtdt = w[56];
     c.extra = w[57];
+    c.nintf = w[63];
     return c;
 }
 
@@ -484,7 +485,10 @@ void PlotWriter::open_impl(const std::string& root_path, const PlotGeometry& g, 
     if (g.num_rigid_walls < 0 || g.num_rigid_walls > 100000)
         throw std::invalid_argument("PlotWriter: implausible number of rigid walls");
     nrw_ = g.num_rigid_walls;
-    nglbv_ = 6 + 7 * static_cast<std::int64_t>(nmat) + nrw_;
+    if (g.num_interfaces < 0 || g.num_interfaces > 100000)
+        throw std::invalid_argument("PlotWriter: implausible number of sliding interfaces");
+    nif_ = g.num_interfaces;
+    nglbv_ = 6 + 7 * static_cast<std::int64_t>(nmat) + nrw_ + 3 * static_cast<std::int64_t>(nif_);
     // time, globals, coords + vel + acc, 7 words per solid, one deletion flag per solid
     state_words_ = 1 + nglbv_ + 9 * static_cast<std::int64_t>(numnp) + 8 * static_cast<std::int64_t>(nel8);
     root_ = root_path;
@@ -542,6 +546,7 @@ void PlotWriter::open_impl(const std::string& root_path, const PlotGeometry& g, 
             case 39: v = 16 + numnp_ + nel8_ + 3 * static_cast<std::int64_t>(nmmat_); break;  // NARBS
             case 43: case 44: case 45: case 46: v = 1000; break;  // IOSHL
             case 51: v = nmmat_; break;   // NMMAT
+            case 63: v = nif_; break;     // IMPACT-3D: sliding interfaces in the globals
             default: v = 0;
         }
         if (k == 13) put_text(b, "R960", static_cast<std::size_t>(ws));
@@ -610,6 +615,7 @@ void PlotWriter::write_state(const PlotState& s) {
     check_size(s.mat_mass, nm, "mat_mass", true);
     check_size(s.mat_hourglass_energy, nm, "mat_hourglass_energy", true);
     check_size(s.rigid_wall_forces, static_cast<std::size_t>(nrw_), "rigid_wall_forces", true);
+    check_size(s.interface_forces, 3 * static_cast<std::size_t>(nif_), "interface_forces", true);
     check_size(s.coords, 3 * nn, "coords", true);
     check_size(s.vel, 3 * nn, "vel", true);
     check_size(s.acc, 3 * nn, "acc", true);
@@ -637,6 +643,7 @@ void PlotWriter::write_state(const PlotState& s) {
     put_vec(s.mat_mass, nm);
     put_vec(s.mat_hourglass_energy, nm);
     put_vec(s.rigid_wall_forces, static_cast<std::size_t>(nrw_));
+    put_vec(s.interface_forces, 3 * static_cast<std::size_t>(nif_));
     if (s.coords.empty()) put_vec(x0_, 3 * nn);
     else put_vec(s.coords, 3 * nn);
     put_vec(s.vel, 3 * nn);
@@ -814,8 +821,12 @@ void PlotReader::open(const std::string& root_path) {
     }
     g.num_materials = static_cast<int>(nparts);
     {
+        // after the per-part block: NUMRW rigid-wall words, then 3 words per sliding interface
+        // (control word 63, ours); a word 63 that does not fit is not ours: all are walls.
         const std::int64_t extra_globals = c.nglbv - 6 - 7 * nparts;
-        g.num_rigid_walls = extra_globals > 0 ? static_cast<int>(extra_globals) : 0;
+        const std::int64_t nif = (c.nintf > 0 && 3 * c.nintf <= extra_globals) ? c.nintf : 0;
+        g.num_interfaces = static_cast<int>(nif);
+        g.num_rigid_walls = extra_globals > 0 ? static_cast<int>(extra_globals - 3 * nif) : 0;
     }
 
     // ---- NARBS user-id section
@@ -984,7 +995,9 @@ PlotState PlotReader::state(int i) const {
         take(s.mat_momentum, 3 * nm);
         take(s.mat_mass, nm);
         take(s.mat_hourglass_energy, nm);
-        s.rigid_wall_forces.assign(it, glob.end());
+        const std::size_t nif = 3 * static_cast<std::size_t>(geom_.num_interfaces);
+        s.rigid_wall_forces.assign(it, glob.end() - static_cast<std::ptrdiff_t>(nif));
+        s.interface_forces.assign(glob.end() - static_cast<std::ptrdiff_t>(nif), glob.end());
     }
     const std::size_t nn = static_cast<std::size_t>(c.numnp), ne = static_cast<std::size_t>(c.nel8);
     auto read_vec = [&](std::vector<double>& v, std::size_t n, const char* what) {

@@ -34,6 +34,11 @@ struct PlotGeometry {
     // Rigid walls: one global word each after the per-part block (the normal force, as LS-DYNA
     // writes for VERSION < 971).  The reader infers it from NGLBV.
     int num_rigid_walls = 0;
+    // Sliding interfaces (IMPACT-3D): three global words each after the rigid-wall words, the x y z
+    // resultant force on the interface's slave side (as in rcforc).  Their count is control word
+    // 63 (zero in LS-DYNA d3plot files); readers that do not know it count the words as further
+    // rigid walls (lasso) or skip them with the other globals (VTK).
+    int num_interfaces = 0;
     std::vector<double> x0;                // 3*numnp initial coordinates, x y z per node
     std::vector<int> node_user_ids;        // numnp user node ids, or empty (= 1..numnp)
     std::vector<int> hex_nodes;            // 8*numelh, 0-based node indices, LS-DYNA hex order
@@ -46,10 +51,12 @@ struct PlotGeometry {
     int num_hexes() const { return static_cast<int>(hex_material.size()); }
 };
 
-// One output time.  Global words are written in the spec's NGLBV = 6 + 7*NMMAT order:
+// One output time.  Global words are written in the spec's NGLBV = 6 + 7*NMMAT + NUMRW order,
+// then the interface words (NGLBV = 6 + 7*NMMAT + NUMRW + 3*NINTF):
 //   kinetic, internal, total energy, velocity x y z (whole model),
 //   mat_internal_energy[NMMAT], mat_kinetic_energy[NMMAT], mat_momentum[3*NMMAT] (x y z per
-//   material, interleaved), mat_mass[NMMAT], mat_hourglass_energy[NMMAT].
+//   material, interleaved), mat_mass[NMMAT], mat_hourglass_energy[NMMAT],
+//   rigid_wall_forces[NUMRW], interface_forces[3*NINTF].
 // For the writer, every per-material / per-node / per-solid vector may be left empty (written as
 // zeros; alive: all alive); otherwise it must have exactly the stated size.
 struct PlotState {
@@ -64,6 +71,7 @@ struct PlotState {
     std::vector<double> mat_mass;              // NMMAT
     std::vector<double> mat_hourglass_energy;  // NMMAT
     std::vector<double> rigid_wall_forces;     // num_rigid_walls normal forces
+    std::vector<double> interface_forces;      // 3*num_interfaces: x y z force on the slave side
     std::vector<double> coords;                // 3*numnp current coordinates (x+u, not displacements)
     std::vector<double> vel;                   // 3*numnp
     std::vector<double> acc;                   // 3*numnp (reader: empty if the file has IA = 0)
@@ -87,6 +95,7 @@ struct PlotControl {
     std::array<std::int64_t, 4> ioshl{};
     std::int64_t ialemat = 0, ncfdv1 = 0, ncfdv2 = 0, nadapt = 0, nmmat = 0, numfluid = 0;
     std::int64_t inn = 0, npefg = 0, nel48 = 0, idtdt = 0, extra = 0;
+    std::int64_t nintf = 0;     // word 63: IMPACT-3D sliding interfaces in the globals (0 elsewhere)
 };
 
 class PlotWriter {
@@ -137,7 +146,7 @@ private:
     std::vector<double> x0_;      // initial coordinates (written when a state has no coords)
     int ws_ = 4;
     std::int64_t limit_words_ = kDefaultMemberSizeLimitWords;
-    int numnp_ = 0, nel8_ = 0, nmmat_ = 0, nrw_ = 0;
+    int numnp_ = 0, nel8_ = 0, nmmat_ = 0, nrw_ = 0, nif_ = 0;
     std::int64_t nglbv_ = 0, state_words_ = 0;
     bool root_written_ = false;
     int fd_ = -1;                 // current member

@@ -389,6 +389,14 @@ void Session::default_set() {
         execute({"picture", "eps_last", "last"}, "default");
         execute({"sequence", "eps_sequence"}, "default");
         execute({"history", "energies", "energy"}, "default");
+        // contact forces: every rigid wall's normal force and every interface's resultant
+        const auto& g = d.geometry();
+        if (g.num_rigid_walls + g.num_interfaces > 0) {
+            std::vector<std::string> h = {"history", "forces"};
+            for (int w = 1; w <= g.num_rigid_walls; ++w) h.insert(h.end(), {"wall", std::to_string(w), "fn"});
+            for (int i = 1; i <= g.num_interfaces; ++i) h.insert(h.end(), {"interface", std::to_string(i), "fm"});
+            execute(h, "default");
+        }
     }
     ps_.fringe = saved_fringe;
 }

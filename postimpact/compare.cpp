@@ -13,7 +13,7 @@
 
 namespace postimpact {
 
-const char* const Tolerances::kFields[7] = {"time", "coords", "vel", "acc", "stress", "eps", "energy"};
+const char* const Tolerances::kFields[8] = {"time", "coords", "vel", "acc", "stress", "eps", "energy", "force"};
 
 Tolerance Tolerances::get(const std::string& f) const {
     if (auto it = field.find(f); it != field.end()) return it->second;
@@ -54,7 +54,7 @@ Tolerances Tolerances::parse(const std::string& text, const std::string& name) {
             });
         };
         const bool known = is_field(f) || (f.rfind("summary.", 0) == 0 && is_key(f.substr(8)));
-        if (!known) fail("unknown field '" + f + "' (time coords vel acc stress eps energy cycles default, summary.FIELD, summary.KEY)");
+        if (!known) fail("unknown field '" + f + "' (time coords vel acc stress eps energy force cycles default, summary.FIELD, summary.KEY)");
         Tolerance tol;
         bool have_rel = false, have_abs = false;
         std::vector<std::string> pos;
@@ -162,6 +162,12 @@ int compare_databases(const std::string& pa, const std::string& pb, const Compar
             << gb.num_hexes() << ", " << gb.num_materials << "\nresult: NOT COMPARABLE\n";
         return 2;
     }
+    if (ga.num_rigid_walls != gb.num_rigid_walls || ga.num_interfaces != gb.num_interfaces) {
+        out << "compare: the global blocks differ: A has " << ga.num_rigid_walls << " rigid-wall and "
+            << ga.num_interfaces << " interface force(s); B has " << gb.num_rigid_walls << " and "
+            << gb.num_interfaces << "\nresult: NOT COMPARABLE\n";
+        return 2;
+    }
     if (ga.hex_nodes != gb.hex_nodes)
         out << "compare: warning: the element connectivities differ\n";
     const std::size_t keep = static_cast<std::size_t>(std::max(opt.report, 0));
@@ -204,6 +210,13 @@ int compare_databases(const std::string& pa, const std::string& pb, const Compar
         mat("internal", sa.mat_internal_energy, sb.mat_internal_energy);
         mat("kinetic", sa.mat_kinetic_energy, sb.mat_kinetic_energy);
         mat("hourglass", sa.mat_hourglass_energy, sb.mat_hourglass_energy);
+        // rigid-wall normal forces and interface resultant forces (the same counts: checked above)
+        if (sa.rigid_wall_forces.size() == sb.rigid_wall_forces.size())
+            for (std::size_t k = 0; k < sa.rigid_wall_forces.size(); ++k)
+                add(F("force"), Diff{0, sa.rigid_wall_forces[k], sb.rigid_wall_forces[k], 0, 0, i, static_cast<int>(k + 1), "wall", "normal"}, keep);
+        if (sa.interface_forces.size() == sb.interface_forces.size())
+            for (std::size_t k = 0; k < sa.interface_forces.size(); ++k)
+                add(F("force"), Diff{0, sa.interface_forces[k], sb.interface_forces[k], 0, 0, i, static_cast<int>(k / 3 + 1), "interface", xyz[k % 3]}, keep);
         // element deletion flags must agree
         if (sa.alive != sb.alive && !(sa.alive.empty() || sb.alive.empty())) {
             for (std::size_t k = 0; k < sa.alive.size(); ++k)

@@ -22,6 +22,8 @@ bool is_int(const std::string& s) {
 
 const char* kGlobalVars[] = {"ke", "ie", "te", "vx", "vy", "vz"};
 const char* kMaterialVars[] = {"ie", "ke", "hg", "mass", "mx", "my", "mz"};
+const char* kWallVars[] = {"fn"};
+const char* kInterfaceVars[] = {"fx", "fy", "fz", "fm"};
 
 template <std::size_t N>
 bool in(const std::string& w, const char* const (&list)[N]) {
@@ -32,9 +34,10 @@ std::string var_label(const HistoryCurve& c, const Database& db) {
     static const std::pair<const char*, const char*> names[] = {
         {"ke", "kinetic energy"}, {"ie", "internal energy"}, {"te", "total energy"},
         {"hg", "hourglass energy"}, {"mass", "mass"}, {"mx", "momentum x"}, {"my", "momentum y"},
-        {"mz", "momentum z"}, {"vx", "velocity x"}, {"vy", "velocity y"}, {"vz", "velocity z"}};
+        {"mz", "momentum z"}, {"vx", "velocity x"}, {"vy", "velocity y"}, {"vz", "velocity z"},
+        {"fn", "normal force"}, {"fx", "force x"}, {"fy", "force y"}, {"fz", "force z"}, {"fm", "force"}};
     std::string v = c.var;
-    if (c.kind == HistoryCurve::Kind::Global || c.kind == HistoryCurve::Kind::Material)
+    if (c.kind != HistoryCurve::Kind::Node && c.kind != HistoryCurve::Kind::Element)
         for (const auto& [k, n] : names)
             if (v == k) v = n;
     switch (c.kind) {
@@ -46,6 +49,8 @@ std::string var_label(const HistoryCurve& c, const Database& db) {
         case HistoryCurve::Kind::Material: return v + ", " + db.part_name(c.id);
         case HistoryCurve::Kind::Node: return "node " + std::to_string(c.id) + " " + v;
         case HistoryCurve::Kind::Element: return "elem " + std::to_string(c.id) + " " + v;
+        case HistoryCurve::Kind::Wall: return "wall " + std::to_string(c.id) + " " + v;
+        case HistoryCurve::Kind::Interface: return "interface " + std::to_string(c.id) + " " + v;
     }
     return v;
 }
@@ -56,6 +61,7 @@ Dim var_dim(const HistoryCurve& c) {
         find_quantity(c.var, q);
         return q.dim;
     }
+    if (c.kind == HistoryCurve::Kind::Wall || c.kind == HistoryCurve::Kind::Interface) return Dim::Force;
     if (c.var == "vx" || c.var == "vy" || c.var == "vz") return Dim::Velocity;
     if (c.var == "mass") return Dim::Mass;
     if (c.var == "mx" || c.var == "my" || c.var == "mz") return Dim::Momentum;
@@ -87,6 +93,22 @@ std::vector<HistoryCurve> parse_history(const std::vector<std::string>& w, const
             const std::size_t first = i;
             while (i < w.size() && in(w[i], kGlobalVars)) out.push_back({HistoryCurve::Kind::Global, 0, w[i++]});
             if (i == first) throw std::invalid_argument("global: expected ke ie te vx vy vz" + (i < w.size() ? ", found '" + w[i] + "'" : std::string()));
+        } else if (g == "wall" || g == "interface") {
+            const bool wall = g == "wall";
+            const int n = wall ? db.geometry().num_rigid_walls : db.geometry().num_interfaces;
+            if (i + 1 >= w.size() || !is_int(w[i + 1]))
+                throw std::invalid_argument(g + ": expected a number" + (i + 1 < w.size() ? ", found '" + w[i + 1] + "'" : std::string()));
+            const int id = std::stoi(w[i + 1]);
+            if (id < 1 || id > n)
+                throw std::invalid_argument(g + " " + std::to_string(id) + " does not exist in this database (" +
+                                            (n > 0 ? "1.." + std::to_string(n) : std::string("it has none")) + ")");
+            i += 2;
+            const HistoryCurve::Kind kind = wall ? HistoryCurve::Kind::Wall : HistoryCurve::Kind::Interface;
+            const std::size_t first = i;
+            while (i < w.size() && (wall ? in(w[i], kWallVars) : in(w[i], kInterfaceVars))) out.push_back({kind, id, w[i++]});
+            if (i == first)
+                throw std::invalid_argument(g + " " + std::to_string(id) + ": expected " + (wall ? "fn" : "fx fy fz fm") +
+                                            (i < w.size() ? ", found '" + w[i] + "'" : std::string()));
         } else if (g == "material" || g == "node" || g == "element" || g == "elem") {
             if (i + 1 >= w.size() || !is_int(w[i + 1]))
                 throw std::invalid_argument(g + ": expected an id" + (i + 1 < w.size() ? ", found '" + w[i + 1] + "'" : std::string()));
@@ -121,7 +143,7 @@ std::vector<HistoryCurve> parse_history(const std::vector<std::string>& w, const
                 throw std::invalid_argument(g + " " + std::to_string(id) + ": expected a variable" +
                                             (i < w.size() ? ", found '" + w[i] + "'" : std::string()));
         } else {
-            throw std::invalid_argument("history: expected energy, global, material, node or element, found '" + g + "'");
+            throw std::invalid_argument("history: expected energy, global, material, node, element, wall or interface, found '" + g + "'");
         }
     }
     if (out.empty()) throw std::invalid_argument("history: no curve");
@@ -163,6 +185,18 @@ HistoryData extract_history(Database& db, const std::vector<HistoryCurve>& curve
                     else if (c.var == "my") v = at(st.mat_momentum, 3 * m + 1);
                     else if (c.var == "mz") v = at(st.mat_momentum, 3 * m + 2);
                     break;
+                case HistoryCurve::Kind::Wall:
+                    v = at(st.rigid_wall_forces, m);
+                    break;
+                case HistoryCurve::Kind::Interface: {
+                    const double f[3] = {at(st.interface_forces, 3 * m), at(st.interface_forces, 3 * m + 1),
+                                         at(st.interface_forces, 3 * m + 2)};
+                    if (c.var == "fx") v = f[0];
+                    else if (c.var == "fy") v = f[1];
+                    else if (c.var == "fz") v = f[2];
+                    else v = std::sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]);
+                    break;
+                }
                 case HistoryCurve::Kind::Node:
                 case HistoryCurve::Kind::Element: {
                     Quantity q;
@@ -230,7 +264,7 @@ Image plot_group(const HistoryData& h, const std::vector<std::size_t>& idx, cons
     static const std::pair<Dim, const char*> names[] = {
         {Dim::Energy, "Energy"}, {Dim::Stress, "Stress"}, {Dim::Strain, "Strain"},
         {Dim::Length, "Displacement"}, {Dim::Velocity, "Velocity"}, {Dim::Acceleration, "Acceleration"},
-        {Dim::Mass, "Mass"}, {Dim::Momentum, "Momentum"}, {Dim::Time, "Time"}, {Dim::None, "Value"}};
+        {Dim::Mass, "Mass"}, {Dim::Momentum, "Momentum"}, {Dim::Force, "Force"}, {Dim::Time, "Time"}, {Dim::None, "Value"}};
     sp.ylabel = "Value";
     for (const auto& [d, n] : names)
         if (d == dim) sp.ylabel = n;

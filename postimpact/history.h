@@ -12,14 +12,15 @@
 namespace postimpact {
 
 struct HistoryCurve {
-    enum class Kind { Global, Material, Node, Element } kind = Kind::Global;
-    int id = 0;           // user node / element id, or material number
+    enum class Kind { Global, Material, Node, Element, Wall, Interface } kind = Kind::Global;
+    int id = 0;           // user node / element id, material, rigid-wall or interface number
     std::string var;      // global: ke ie te vx vy vz; material: ie ke hg mass mx my mz;
+                          // wall: fn (normal force); interface: fx fy fz fm (slave side);
                           // node / element: a quantity key (quantities.h)
 };
 
 // Parses curve groups:  energy | global VAR.. | material ID VAR.. | node ID VAR.. |
-// element ID VAR..  ("energy": kinetic, internal, total and the hourglass energy of every
+// element ID VAR.. | wall N fn | interface N fx|fy|fz|fm..  ("energy": kinetic, internal, total and the hourglass energy of every
 // material, plus per-material internal/kinetic energy when there are several).  Throws
 // std::invalid_argument with the offending word.
 std::vector<HistoryCurve> parse_history(const std::vector<std::string>& words, const Database& db);

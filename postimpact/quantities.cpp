@@ -147,6 +147,7 @@ std::string base_unit_name(Dim d, const Units& u) {
         case Dim::Energy: return "J";
         case Dim::Mass: return "kg";
         case Dim::Momentum: return "kg m/s";
+        case Dim::Force: return "N";
         case Dim::Strain:
         case Dim::None: return "";
     }
@@ -157,7 +158,7 @@ DisplayUnit display_unit(Dim d, double max_abs, const Units& u) {
     DisplayUnit du;
     du.name = base_unit_name(d, u);
     if (!u.si) return du;
-    const bool prefixable = d == Dim::Time || d == Dim::Length || d == Dim::Stress || d == Dim::Energy;
+    const bool prefixable = d == Dim::Time || d == Dim::Length || d == Dim::Stress || d == Dim::Energy || d == Dim::Force;
     if (!prefixable || !(max_abs > 0) || !std::isfinite(max_abs)) return du;
     struct P { double f; const char* p; };
     static const P kPrefix[] = {{1e-9, "G"}, {1e-6, "M"}, {1e-3, "k"}, {1.0, ""},
@@ -166,6 +167,7 @@ DisplayUnit display_unit(Dim d, double max_abs, const Units& u) {
         if (d == Dim::Length && (p.f < 1.0 || p.f > 1e3)) continue;  // m or mm
         if (d == Dim::Time && p.f < 1.0) continue;                   // s, ms, µs, ns
         if (d == Dim::Stress && p.f > 1.0) continue;                 // Pa, kPa, MPa, GPa
+        if (d == Dim::Force && p.f > 1.0) continue;                  // N, kN, MN, GN
         const double v = max_abs * p.f;
         if (v >= 1.0 && v < 1000.0) {
             du.factor = p.f;

@@ -9,7 +9,7 @@
 
 namespace postimpact {
 
-enum class Dim { None, Time, Length, Velocity, Acceleration, Stress, Energy, Strain, Mass, Momentum };
+enum class Dim { None, Time, Length, Velocity, Acceleration, Stress, Energy, Strain, Mass, Momentum, Force };
 
 struct Quantity {
     std::string key;     // command name: eps, vm, pressure, sxx, ..., disp, dx, vel, vz, ...

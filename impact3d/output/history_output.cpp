@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "impact3d/material/material.h"
+#include "impact3d/output/plot_output.h"
 #include "version.h"
 
 namespace impact3d {
@@ -66,7 +67,7 @@ void HistoryOutput::open(const Model& m, const std::string& dir, const std::stri
         std::fprintf(files_[k], " r i g i d   w a l l   f o r c e s  (force on the wall, global axes)\n"
                                 "        time  wall#   normal-force        x-force        y-force        z-force\n");
       if (k == kRcforc)
-        std::fprintf(files_[k], " r e s u l t a n t   i n t e r f a c e   f o r c e s  (force on the master side)\n"
+        std::fprintf(files_[k], " r e s u l t a n t   i n t e r f a c e   f o r c e s  (force on the slave side; the master side carries the opposite)\n"
                                 "        time  interface#        x-force        y-force        z-force\n");
     }
   }
@@ -83,6 +84,8 @@ void HistoryOutput::open(const Model& m, const std::string& dir, const std::stri
     PlotGeometry g;
     g.title = m.title;
     g.num_materials = int(m.materials.size());
+    g.num_rigid_walls = int(m.walls.size());
+    g.num_interfaces = int(m.interfaces.size());
     for (int n : nodes) {
       g.x0.insert(g.x0.end(), {m.x[std::size_t(n)], m.y[std::size_t(n)], m.z[std::size_t(n)]});
       g.node_user_ids.push_back(m.node_id(n));
@@ -106,27 +109,14 @@ void HistoryOutput::write(const Model& m, const State& s,
                           const std::vector<std::array<double, 3>>& contact_forces,
                           double cpu_per_zone_ns) {
   const std::size_t nm = m.materials.size();
-  // per-material books (element-lumped masses: the exact split of the nodal masses)
-  std::vector<double> ie(nm, 0), ke(nm, 0), hg(nm, 0), mass(nm, 0), mom(3 * nm, 0);
-  for (int e = 0; e < s.ne; ++e) {
-    const std::size_t k = std::size_t(s.mat[std::size_t(e)]);
-    ie[k] += s.ie_e[std::size_t(e)];
-    hg[k] += s.hg_e[std::size_t(e)];
-    mass[k] += s.mass_e[std::size_t(e)];
-    const double mc = s.mass_e[std::size_t(e)] / 8;
-    for (int n : s.conn[std::size_t(e)]) {
-      const std::size_t i = std::size_t(n);
-      ke[k] += 0.5 * mc * (s.vx[i] * s.vx[i] + s.vy[i] * s.vy[i] + s.vz[i] * s.vz[i]);
-      mom[3 * k] += mc * s.vx[i];
-      mom[3 * k + 1] += mc * s.vy[i];
-      mom[3 * k + 2] += mc * s.vz[i];
-    }
-  }
-  double mtot = 0, p[3] = {0, 0, 0};
-  for (std::size_t k = 0; k < nm; ++k) {
-    mtot += mass[k];
-    for (int a = 0; a < 3; ++a) p[a] += mom[3 * k + std::size_t(a)];
-  }
+  // the global block (energies, per-material books, wall and interface forces): the same
+  // numbers as the plot database's, for glstat, matsum and the d3thdt family
+  fill_plot_globals(m, s, contact_forces, ps_);
+  const auto& ie = ps_.mat_internal_energy;
+  const auto& ke = ps_.mat_kinetic_energy;
+  const auto& hg = ps_.mat_hourglass_energy;
+  const auto& mass = ps_.mat_mass;
+  const auto& mom = ps_.mat_momentum;
   if (FILE* f = files_[kGlstat]) {
     std::fprintf(f,
                  "\n dt of cycle %9d is controlled by solid %9d\n\n"
@@ -146,8 +136,7 @@ void HistoryOutput::write(const Model& m, const State& s,
                  " global z velocity..............  %12.5E\n",
                  s.cycle, s.dt_elem >= 0 ? m.hex_id(s.dt_elem) : 0, s.time, s.dt_next, s.kinetic, s.internal, s.hourglass,
                  s.bulk_viscous, s.contact, s.wall_work, s.external_work, s.total_energy(),
-                 s.energy_ratio(), mtot > 0 ? p[0] / mtot : 0, mtot > 0 ? p[1] / mtot : 0,
-                 mtot > 0 ? p[2] / mtot : 0);
+                 s.energy_ratio(), ps_.velocity[0], ps_.velocity[1], ps_.velocity[2]);
   (void)cpu_per_zone_ns;  // kept out of the file: the tables are bit-reproducible
   }
   if (FILE* f = files_[kMatsum]) {
@@ -208,16 +197,6 @@ void HistoryOutput::write(const Model& m, const State& s,
     if (f && std::ferror(f)) throw std::runtime_error("write error on a time-history file in " + dir_);
   if (thdt_) {
     const std::size_t ns = subset_nodes_.size(), nsol = th_solids_.size();
-    ps_.time = s.time;
-    ps_.kinetic_energy = s.kinetic;
-    ps_.internal_energy = s.internal;
-    ps_.total_energy = s.total_energy();
-    for (int a = 0; a < 3; ++a) ps_.velocity[std::size_t(a)] = mtot > 0 ? p[a] / mtot : 0;
-    ps_.mat_internal_energy = ie;
-    ps_.mat_kinetic_energy = ke;
-    ps_.mat_momentum = mom;
-    ps_.mat_mass = mass;
-    ps_.mat_hourglass_energy = hg;
     ps_.coords.resize(3 * ns);
     ps_.vel.resize(3 * ns);
     ps_.acc.resize(3 * ns);

@@ -9,6 +9,7 @@ PlotGeometry make_plot_geometry(const Model& m) {
   g.title = m.title;
   g.num_materials = int(m.materials.size());
   g.num_rigid_walls = int(m.walls.size());
+  g.num_interfaces = int(m.interfaces.size());
   g.x0.resize(std::size_t(3) * m.num_nodes());
   for (int i = 0; i < m.num_nodes(); ++i) {
     g.x0[std::size_t(3 * i)] = m.x[std::size_t(i)];
@@ -29,44 +30,12 @@ PlotGeometry make_plot_geometry(const Model& m) {
   return g;
 }
 
-void fill_plot_state(const Model& m, const State& s, PlotState& ps) {
-  const std::size_t nn = std::size_t(s.nn), ne = std::size_t(s.ne), nm = m.materials.size();
+void fill_plot_globals(const Model& m, const State& s, const InterfaceForces& iface, PlotState& ps) {
+  const std::size_t ne = std::size_t(s.ne), nm = m.materials.size();
   ps.time = s.time;
   ps.kinetic_energy = s.kinetic;
   ps.internal_energy = s.internal;
   ps.total_energy = s.total_energy();
-  ps.coords.resize(3 * nn);
-  ps.vel.resize(3 * nn);
-  ps.acc.resize(3 * nn);
-  double p[3] = {0, 0, 0}, mass = 0;
-  for (std::size_t i = 0; i < nn; ++i) {
-    ps.coords[3 * i] = s.x[i];
-    ps.coords[3 * i + 1] = s.y[i];
-    ps.coords[3 * i + 2] = s.z[i];
-    ps.vel[3 * i] = s.vx[i];
-    ps.vel[3 * i + 1] = s.vy[i];
-    ps.vel[3 * i + 2] = s.vz[i];
-    ps.acc[3 * i] = s.ax[i];
-    ps.acc[3 * i + 1] = s.ay[i];
-    ps.acc[3 * i + 2] = s.az[i];
-    p[0] += s.mass[i] * s.vx[i];
-    p[1] += s.mass[i] * s.vy[i];
-    p[2] += s.mass[i] * s.vz[i];
-    mass += s.mass[i];
-  }
-  for (int a = 0; a < 3; ++a) ps.velocity[std::size_t(a)] = mass > 0 ? p[a] / mass : 0;
-  // rigid-wall normal force: the push of the body on the wall, positive in compression (as rwforc)
-  ps.rigid_wall_forces.resize(m.walls.size());
-  for (std::size_t w = 0; w < m.walls.size(); ++w) {
-    const auto& sw = m.walls[w];
-    const double n[3] = {sw.head[0] - sw.tail[0], sw.head[1] - sw.tail[1], sw.head[2] - sw.tail[2]};
-    const double l = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-    const auto& F = s.wall_force[w];
-    ps.rigid_wall_forces[w] = -(F[0] * n[0] + F[1] * n[1] + F[2] * n[2]) / l + 0.0;
-  }
-  ps.stress.assign(s.sig.begin(), s.sig.end());
-  ps.eps.assign(s.eps_p.begin(), s.eps_p.end());
-  ps.alive.assign(ne, 1);
   // per-material books from element-lumped masses (exact split of nodal mass by material)
   ps.mat_internal_energy.assign(nm, 0.0);
   ps.mat_kinetic_energy.assign(nm, 0.0);
@@ -87,6 +56,49 @@ void fill_plot_state(const Model& m, const State& s, PlotState& ps) {
       ps.mat_momentum[3 * k + 2] += mc * s.vz[i];
     }
   }
+  // whole-model velocity: total momentum over total mass
+  double mtot = 0, p[3] = {0, 0, 0};
+  for (std::size_t k = 0; k < nm; ++k) {
+    mtot += ps.mat_mass[k];
+    for (std::size_t a = 0; a < 3; ++a) p[a] += ps.mat_momentum[3 * k + a];
+  }
+  for (std::size_t a = 0; a < 3; ++a) ps.velocity[a] = mtot > 0 ? p[a] / mtot : 0;
+  // rigid-wall normal force: the push of the body on the wall, positive in compression (as rwforc)
+  ps.rigid_wall_forces.resize(m.walls.size());
+  for (std::size_t w = 0; w < m.walls.size(); ++w) {
+    const auto& sw = m.walls[w];
+    const double n[3] = {sw.head[0] - sw.tail[0], sw.head[1] - sw.tail[1], sw.head[2] - sw.tail[2]};
+    const double l = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    const auto& F = s.wall_force[w];
+    ps.rigid_wall_forces[w] = -(F[0] * n[0] + F[1] * n[1] + F[2] * n[2]) / l + 0.0;
+  }
+  // sliding interfaces: resultant force on the slave side, x y z (as rcforc); zero before the
+  // first contact pass
+  ps.interface_forces.assign(3 * m.interfaces.size(), 0.0);
+  for (std::size_t i = 0; i < m.interfaces.size() && i < iface.size(); ++i)
+    for (std::size_t a = 0; a < 3; ++a) ps.interface_forces[3 * i + a] = iface[i][a] + 0.0;
+}
+
+void fill_plot_state(const Model& m, const State& s, const InterfaceForces& iface, PlotState& ps) {
+  const std::size_t nn = std::size_t(s.nn), ne = std::size_t(s.ne);
+  fill_plot_globals(m, s, iface, ps);
+  ps.coords.resize(3 * nn);
+  ps.vel.resize(3 * nn);
+  ps.acc.resize(3 * nn);
+  for (std::size_t i = 0; i < nn; ++i) {
+    ps.coords[3 * i] = s.x[i];
+    ps.coords[3 * i + 1] = s.y[i];
+    ps.coords[3 * i + 2] = s.z[i];
+    ps.vel[3 * i] = s.vx[i];
+    ps.vel[3 * i + 1] = s.vy[i];
+    ps.vel[3 * i + 2] = s.vz[i];
+    ps.acc[3 * i] = s.ax[i];
+    ps.acc[3 * i + 1] = s.ay[i];
+    ps.acc[3 * i + 2] = s.az[i];
+  }
+  ps.stress.assign(s.sig.begin(), s.sig.end());
+  ps.eps.assign(s.eps_p.begin(), s.eps_p.end());
+  ps.alive.assign(ne, 1);
 }
 
 void PlotOutput::open(const Model& m, const std::string& root, int word_size,
@@ -99,8 +111,8 @@ void PlotOutput::resume(const Model& m, const std::string& root, int word_size,
   writer_.resume(root, make_plot_geometry(m), word_size, member_words, keep_states);
 }
 
-void PlotOutput::write(const Model& m, const State& s) {
-  fill_plot_state(m, s, ps_);
+void PlotOutput::write(const Model& m, const State& s, const InterfaceForces& iface) {
+  fill_plot_state(m, s, iface, ps_);
   writer_.write_state(ps_);
   last_time_ = s.time;
 }

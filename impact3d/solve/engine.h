@@ -31,7 +31,7 @@ class Engine {
   int error_element() const { return error_elem_; }
 
   SlidingInterfaces& contact() { return contact_; }
-  // Resultant force on each sliding interface (master side) at the last cycle.
+  // Resultant force on each sliding interface (slave side; the master side carries the opposite) at the last cycle.
   const std::vector<std::array<double, 3>>& interface_forces() const { return contact_.interface_forces(); }
 
   // Energy diagnostics

@@ -192,7 +192,7 @@ int run_simulation(const Model& model, const RunOptions& opt, std::ostream& prin
   auto write_plot = [&](bool scheduled) {
     if (!scheduled && plot.last_time() == s.time) return;  // a state at this time exists
     try {
-      plot.write(model, s);
+      plot.write(model, s, engine.interface_forces());
     } catch (const std::exception& ex) {
       file_error(4004, opt.plot, ex.what());
       out_ok = false;

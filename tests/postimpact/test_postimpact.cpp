@@ -471,6 +471,75 @@ TEST(History, EnergiesNodesElementsAndCsv) {
     EXPECT_THROW(parse_history({"wobble"}, db), std::invalid_argument);
 }
 
+// A bar database with one rigid wall and one sliding interface: the wall pushes with 100 s N
+// and the interface carries (3 s, -4 s, 12 s) N at state s (|F| = 13 s).
+std::string write_bar_with_forces(const TempDir& d, const std::string& name, double scale = 1.0) {
+    PlotGeometry g = block(2, 2, 6, 1e-3);
+    g.num_rigid_walls = 1;
+    g.num_interfaces = 1;
+    impact3d::PlotWriter w;
+    const std::string root = d.str(name);
+    w.open(root, g);
+    for (int s = 0; s < 4; ++s) {
+        PlotState st = bar_state(g, s, 4);
+        st.rigid_wall_forces = {100.0 * s * scale};
+        st.interface_forces = {3.0 * s, -4.0 * s, 12.0 * s};
+        w.write_state(st);
+    }
+    return root;
+}
+
+TEST(History, RigidWallAndInterfaceForces) {
+    TempDir d;
+    Database db(write_bar_with_forces(d, "d3plot"));
+    const auto curves = parse_history({"wall", "1", "fn", "interface", "1", "fx", "fy", "fz", "fm"}, db);
+    ASSERT_EQ(curves.size(), 5u);
+    const HistoryData h = extract_history(db, curves);
+    ASSERT_EQ(h.time.size(), 4u);
+    EXPECT_EQ(h.series[0].y[3], 300.0);
+    EXPECT_EQ(h.series[1].y[2], 6.0);
+    EXPECT_EQ(h.series[2].y[2], -8.0);
+    EXPECT_EQ(h.series[3].y[2], 24.0);
+    EXPECT_DOUBLE_EQ(h.series[4].y[3], 39.0);  // |(9, -12, 36)|
+    EXPECT_EQ(h.series[0].name, "wall 1 normal force");
+    EXPECT_EQ(h.series[4].name, "interface 1 force");
+    const std::string csv = d.str("f.csv");
+    write_csv(csv, h, Units{});
+    std::ifstream f(csv);
+    std::string head;
+    std::getline(f, head);
+    EXPECT_NE(head.find("wall 1 normal force (N)"), std::string::npos) << head;
+    EXPECT_THROW(parse_history({"wall", "2", "fn"}, db), std::invalid_argument);
+    EXPECT_THROW(parse_history({"interface", "1"}, db), std::invalid_argument);
+    EXPECT_THROW(parse_history({"interface", "1", "fn"}, db), std::invalid_argument);
+    // the default set adds forces.png / forces.csv when there are walls or interfaces
+    std::ostringstream log;
+    Session s(log);
+    s.execute({"open", d.str("d3plot")});
+    s.execute({"outdir", d.str("def")});
+    s.execute({"size", "320", "240"});
+    s.default_set();
+    for (const char* name : {"forces.png", "forces.csv", "energies.csv"})
+        EXPECT_TRUE(fs::exists(fs::path(d.str("def")) / name)) << name;
+}
+
+TEST(Compare, ForcesAreComparedAndTheirCountsMustAgree) {
+    TempDir d;
+    const std::string a = write_bar_with_forces(d, "a"), b = write_bar_with_forces(d, "b", 1.001);
+    std::ostringstream o1;
+    EXPECT_EQ(compare_databases(a, b, {}, o1), 1) << o1.str();
+    EXPECT_NE(o1.str().find("wall 1 normal"), std::string::npos) << o1.str();
+    CompareOptions loose;
+    loose.tol = Tolerances::parse("force 2e-3 0\ndefault 0 0\n");
+    std::ostringstream o2;
+    EXPECT_EQ(compare_databases(a, b, loose, o2), 0) << o2.str();
+    // a database without the force words is not comparable
+    const std::string c = write_bar(d, "c", 4);
+    std::ostringstream o3;
+    EXPECT_EQ(compare_databases(a, c, {}, o3), 2) << o3.str();
+    EXPECT_NE(o3.str().find("global blocks differ"), std::string::npos) << o3.str();
+}
+
 // ------------------------------------------------------------------------------------------
 // compare
 
