@@ -150,16 +150,12 @@ void HistoryOutput::write(const Model& m, const State& s,
     }
   }
   if (FILE* f = files_[kRwforc]) {
+    // normal force (the push of the body on the wall, positive in compression): the global word
     for (std::size_t w = 0; w < m.walls.size(); ++w) {
-      const auto& sw = m.walls[w];
-      double n[3] = {sw.head[0] - sw.tail[0], sw.head[1] - sw.tail[1], sw.head[2] - sw.tail[2]};
-      const double l = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
       const auto& F = s.wall_force[w];
-      // normal force: the push of the body on the wall, positive in compression
-      const double fn = -(F[0] * n[0] + F[1] * n[1] + F[2] * n[2]) / l;
       // (+ 0.0 turns a negative zero into zero)
-      std::fprintf(f, " %12.5E %5zu %14.6E %14.6E %14.6E %14.6E\n", s.time, w + 1, fn + 0.0, F[0] + 0.0,
-                   F[1] + 0.0, F[2] + 0.0);
+      std::fprintf(f, " %12.5E %5zu %14.6E %14.6E %14.6E %14.6E\n", s.time, w + 1, ps_.rigid_wall_forces[w],
+                   F[0] + 0.0, F[1] + 0.0, F[2] + 0.0);
     }
   }
   if (FILE* f = files_[kRcforc]) {
