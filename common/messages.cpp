@@ -94,6 +94,7 @@ const std::vector<MessageDef> kCatalog = {
     {5001, S::info, "stop requested by signal (sense switch sw1): dump and plot state written"},
     {5002, S::info, "status requested (sense switch sw2)"},
     {5003, S::info, "plot state requested (sense switch sw4)"},
+    {5004, S::info, "solid element failed (effective plastic strain reached the failure strain) and is deleted"},
 };
 }  // namespace
 

@@ -38,6 +38,11 @@ void init_materials(const Model& m, State& s) {
     c.E_tan = d.E_tan;
     c.beta = d.beta;
     c.initially_elastic = d.initially_elastic;
+    if (d.type == 3 && d.rate_c > 0 && d.rate_p > 0) {
+      c.rate_c = d.rate_c;
+      c.rate_inv_p = 1.0 / d.rate_p;
+    }
+    if (d.type == 3 && d.fail_strain > 0) c.fail_strain = d.fail_strain;
     derive_material_constants(c);
   }
 }
@@ -58,6 +63,9 @@ void init_elements(const Model& m, State& s) {
   s.cfy.assign(std::size_t(8) * ne, 0.0);
   s.cfz.assign(std::size_t(8) * ne, 0.0);
   s.yielded.assign(std::size_t(ne), 0);
+  s.failed.assign(std::size_t(ne), 0);
+  s.newly_failed.clear();
+  s.newly_failed.reserve(std::size_t(ne));
   for (int e = 0; e < ne; ++e) {
     double x[8], y[8], z[8];
     for (int j = 0; j < 8; ++j) {

@@ -167,7 +167,7 @@ class KeywordWriter {
       } else if (md.type == 3) {
         os_ << "*MAT_PLASTIC_KINEMATIC\n$#     mid        ro         e        pr      sigy      etan      beta\n"
             << kcard({I(id), R(md.rho), R(md.E), R(md.nu), R(md.sigma_y), R(md.E_tan), R(md.beta)}) << "\n"
-            << "$#     src       srp        fs        vp\n" << kcard({R(0), R(0), R(0), R(0)}) << "\n";
+            << "$#     src       srp        fs        vp\n" << kcard({R(md.rate_c), R(md.rate_p), R(md.fail_strain), R(0)}) << "\n";
       } else if (md.type == 20) {
         os_ << "*MAT_RIGID\n$#     mid        ro         e        pr\n"
             << kcard({I(id), R(md.rho), R(md.E), R(md.nu)}) << "\n"
@@ -382,7 +382,12 @@ void write_fixed_deck(std::ostream& os, const Model& m, std::vector<std::string>
     std::vector<double> p = {md.E, md.nu};
     if (md.type == 3) p.insert(p.end(), {md.sigma_y, md.E_tan, md.beta, md.initially_elastic ? 1.0 : 0.0});
     for (int c = 0; c < 6; ++c) {
-      if (c < int(p.size())) os << L(what + " card " + std::to_string(c + 3)).r(1, 10, p[std::size_t(c)]).str() << "\n";
+      FixedLine line = L(what + " card " + std::to_string(c + 3));
+      if (c < int(p.size())) line.r(1, 10, p[std::size_t(c)]);
+      // type 3 card 8 columns 11-40: Cowper-Symonds C, P and the failure plastic strain
+      if (c == 5 && md.type == 3 && (md.rate_c != 0 || md.rate_p != 0 || md.fail_strain != 0))
+        line.r(11, 20, md.rate_c).r(21, 30, md.rate_p).r(31, 40, md.fail_strain);
+      if (c < int(p.size()) || line.str().find_first_not_of(' ') != std::string::npos) os << line.str() << "\n";
       else os << "\n";
     }
   }
@@ -528,6 +533,9 @@ std::vector<std::string> model_differences(const Model& a, const Model& b, int m
     D(w + "E_tan", x.E_tan, y.E_tan);
     D(w + "beta", x.beta, y.beta);
     N(w + "initially elastic", x.initially_elastic, y.initially_elastic);
+    D(w + "strain-rate C", x.rate_c, y.rate_c);
+    D(w + "strain-rate P", x.rate_p, y.rate_p);
+    D(w + "failure strain", x.fail_strain, y.fail_strain);
   }
   N("nodes", a.num_nodes(), b.num_nodes());
   for (int n = 0; n < std::min(a.num_nodes(), b.num_nodes()); ++n) {

@@ -346,8 +346,11 @@ class Dyna3dReader {
         const char* names[] = {"E", "nu", "yield stress", "tangent modulus", "beta", "initially elastic flag"};
         for (int k = 0; k < 6; ++k) {
           p[k] = cards[std::size_t(k)].e(1, 10, names[k]);
-          if (!cards[std::size_t(k)].blank(11, 80))
-            diag_.add(2006, cards[std::size_t(k)].where(11, 80, "columns 11-80"), "one parameter per card, in columns 1-10");
+          // type 3 card 8 carries the rate and failure parameters in columns 11-40 (below)
+          const int from = (k == 5 && md.type == 3) ? 41 : 11;
+          if (!cards[std::size_t(k)].blank(from, 80))
+            diag_.add(2006, cards[std::size_t(k)].where(from, 80, from == 11 ? "columns 11-80" : "columns 41-80"),
+                      "one parameter per card, in columns 1-10");
         }
       }
       md.E = p[0];
@@ -369,6 +372,15 @@ class Dyna3dReader {
         if (!(md.E_tan >= 0 && md.E_tan < md.E)) { auto [c, col] = at(3); c->error(1210, col, col + 9, "tangent modulus"); }
         if (!(md.beta >= 0 && md.beta <= 1)) { auto [c, col] = at(4); c->error(1212, col, col + 9, "beta"); }
         if (p[5] != 0 && p[5] != 1) { auto [c, col] = at(5); c->error(1006, col, col + 9, "initially elastic flag", "0 or 1"); }
+        // card 8 columns 11-40 (IMPACT-3D choice, the order of LS-DYNA's *MAT_003 card 2):
+        // Cowper-Symonds C and P, failure plastic strain
+        Card& c8 = cards[5];
+        md.rate_c = c8.e(11, 20, "strain-rate parameter C");
+        md.rate_p = c8.e(21, 30, "strain-rate parameter P");
+        md.fail_strain = c8.e(31, 40, "failure plastic strain");
+        if (md.rate_c < 0) c8.error(1003, 11, 20, "strain-rate parameter C", "must not be negative (0: no strain-rate effect)");
+        if (md.rate_c > 0 && !(md.rate_p > 0)) c8.error(1003, 21, 30, "strain-rate parameter P", "must be positive when C is given");
+        if (md.fail_strain < 0) c8.error(1003, 31, 40, "failure plastic strain", "must not be negative (0: no failure)");
       } else {
         for (int k = 2; k < 6; ++k) {
           if (p[k] != 0) {

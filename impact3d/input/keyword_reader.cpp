@@ -232,6 +232,7 @@ struct RSection {
 struct RMat {
   int type = 0;
   double rho = 0, E = 0, nu = 0, sy = 0, etan = 0, beta = 0;
+  double src = 0, srp = 0, fs = 0;  // *MAT_003 card 2
   std::string title;
   Ref ref;
 };
@@ -947,11 +948,14 @@ class KeywordReader {
       if (!(m.beta >= 0 && m.beta <= 1)) c.error(1212, 6, "BETA");
       if (start + 1 < b.data.size()) {
         KCard c2 = card(b, start + 1, "material " + std::to_string(mid) + " card 2", W(b, 4));
-        if (c2.r(0, "SRC") != 0) c2.error(1102, 0, "SRC", "strain-rate effects (Cowper-Symonds)");
-        if (c2.r(1, "SRP") != 0) c2.error(1102, 1, "SRP", "strain-rate effects (Cowper-Symonds)");
-        double fs = c2.r(2, "FS");
-        if (fs != 0 && fs < 1e19) c2.error(1102, 2, "FS", "failure strain (element erosion)");
-        c2.r(3, "VP");
+        m.src = c2.r(0, "SRC");
+        m.srp = c2.r(1, "SRP");
+        m.fs = c2.r(2, "FS");
+        if (m.src < 0) c2.error(1003, 0, "SRC", "must not be negative (0: no strain-rate effect)");
+        if (m.src > 0 && !(m.srp > 0)) c2.error(1003, 1, "SRP", "must be positive when SRC is given");
+        if (m.fs < 0) c2.error(1003, 2, "FS", "must not be negative (0 or >= 1e19: no failure)");
+        if (m.fs >= 1e19) m.fs = 0;  // LS-DYNA's default 1e20: never
+        if (c2.r(3, "VP") != 0) c2.error(1102, 3, "VP", "the viscoplastic rate formulation (VP = 1); VP = 0 scales the yield stress");
       }
     } else {
       c.r(4, "N");
@@ -1504,6 +1508,11 @@ class KeywordReader {
         md.sigma_y = r.sy;
         md.E_tan = r.etan;
         md.beta = r.beta;
+        if (r.type == 3) {
+          md.rate_c = r.src;
+          md.rate_p = r.srp;
+          md.fail_strain = r.fs;
+        }
         md.initially_elastic = r.type == 3 && initially_elastic_.count(p.pid) > 0;
       }
       if (p.eosid != 0) err(1102, p.eos_ref, card, "EOSID", "equations of state");

@@ -72,11 +72,20 @@ double update_stress_elastic_plastic(const MaterialConstants& m, const double d[
   const double xx = xi[0] * xi[0] + xi[1] * xi[1] + xi[2] * xi[2] +
                     2.0 * (xi[3] * xi[3] + xi[4] * xi[4] + xi[5] * xi[5]);
   const double vm = std::sqrt(1.5 * xx);
-  const double sy = m.sigma_y + m.beta * m.E_p * eps_p;
+  double sy = m.sigma_y + m.beta * m.E_p * eps_p;
+  double rate_factor = 1.0;
+  if (m.rate_c > 0.0) {
+    const double rate = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2] +
+                                  2.0 * (d[3] * d[3] + d[4] * d[4] + d[5] * d[5]));
+    rate_factor = 1.0 + std::pow(rate / m.rate_c, m.rate_inv_p);
+    sy *= rate_factor;
+  }
   const double f = vm - sy;
   if (f <= 0.0) return 0.0;
   yielded = 1;
-  const double deps = f / (3.0 * m.G + m.E_p);
+  // (without rate effects the plain form, so rate-free results keep their bits)
+  const double deps = m.rate_c > 0.0 ? f / (3.0 * m.G + (1.0 - m.beta) * m.E_p + rate_factor * m.beta * m.E_p)
+                                     : f / (3.0 * m.G + m.E_p);
   // Flow direction n = d(vm)/d(sigma) = 3 xi / (2 vm): s -= 2 G deps n, alpha += (1 - beta)
   // (2/3) E_p deps n.
   const double rs = 3.0 * m.G * deps / vm;

@@ -16,6 +16,9 @@ struct MaterialConstants {
   double beta = 0;     // 1 isotropic, 0 kinematic hardening
   double E_p = 0;      // plastic hardening modulus E E_tan / (E - E_tan)
   double c = 0;        // dilatational wave speed sqrt((K + 4G/3)/rho)
+  double rate_c = 0;   // Cowper-Symonds C (type 3; 0 = no strain-rate effect)
+  double rate_inv_p = 0;  // 1 / P
+  double fail_strain = 0;  // effective plastic strain at which a solid fails (0 = never)
   bool initially_elastic = false;  // the seed's fast path (type 3)
 };
 
@@ -39,8 +42,12 @@ struct PlasticState {
 };
 
 // Type 3: elastic trial (after rotation of sig and back stress by the caller), von Mises yield
-// on xi = s - alpha, yield stress sigma_y + beta E_p eps_p, radial return
-// d eps_p = f / (3G + E_p), s -= 2 G d eps_p n, back stress += (1 - beta) (2/3) E_p d eps_p n,
+// on xi = s - alpha, yield stress sigma_y + beta E_p eps_p, times the Cowper-Symonds factor
+// R = 1 + (rate / C)^(1/P) when C > 0, with rate = sqrt(D:D) the strain-rate norm (the LS-DYNA
+// manual's definition for *MAT_PLASTIC_KINEMATIC, VP = 0: the yield stress is scaled), radial
+// return
+// d eps_p = f / (3G + E_p) (with rate scaling f / (3G + (1 - beta) E_p + R beta E_p), so that
+// the returned stress lies on the scaled surface), s -= 2 G d eps_p n, back stress += (1 - beta) (2/3) E_p d eps_p n,
 // with n = d(vm)/d(sigma) = 3 xi / (2 vm(xi)) the flow direction (so that in uniaxial stress the
 // back stress component alpha_xx grows by (2/3) E_p d eps_p; the plain unit tensor xi/|xi| would
 // be sqrt(3/2) too small).

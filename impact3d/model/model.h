@@ -45,6 +45,10 @@ struct MaterialData {
   double q2 = 0.06;      // linear bulk viscosity
   std::string title;
   double E = 0, nu = 0, sigma_y = 0, E_tan = 0, beta = 0;
+  // type 3: Cowper-Symonds strain-rate scaling of the yield stress, 1 + (rate / C)^(1/P)
+  // (C = 0: none), and the effective plastic strain at which a solid fails and is deleted
+  // (0: never)
+  double rate_c = 0, rate_p = 0, fail_strain = 0;
   bool initially_elastic = false;
   bool packed = false;   // parameters were read 8 per card
   int line = 0;          // line of card 1, for messages

@@ -48,6 +48,8 @@ struct State {
   std::vector<double> back;            // 6 per element: back stress
   std::vector<double> eps_p;           // effective plastic strain
   std::vector<uint8_t> yielded;
+  std::vector<uint8_t> failed;         // 1: failed (deleted) solid; 2 during the cycle it fails
+  std::vector<int> newly_failed;       // solids that failed in the last cycle, in element order
   std::vector<double> hgs;             // 12 per element: hourglass stiffness resultants
   std::vector<double> q;               // bulk viscosity
   std::vector<double> cfx, cfy, cfz;   // 8 per element: corner internal forces
@@ -81,7 +83,7 @@ struct State {
   void visit_dynamic_fields(V&& v) {
     v(x); v(y); v(z); v(vx); v(vy); v(vz); v(ax); v(ay); v(az);
     v(vx_old); v(vy_old); v(vz_old); v(fx); v(fy); v(fz); v(fext_x); v(fext_y); v(fext_z);
-    v(vol); v(sig); v(back); v(eps_p); v(yielded); v(hgs); v(q); v(cfx); v(cfy); v(cfz);
+    v(vol); v(sig); v(back); v(eps_p); v(yielded); v(failed); v(hgs); v(q); v(cfx); v(cfy); v(cfz);
     v(ie_e); v(hg_e); v(bv_e); v(dt_e); v(de_ie); v(de_hg); v(de_bv);
     v(time); v(cycle); v(dt_half); v(dt_next); v(dt_elem); v(dt0);
     v(kinetic); v(internal); v(hourglass); v(bulk_viscous); v(wall_work); v(contact);

@@ -204,9 +204,10 @@ void HistoryOutput::write(const Model& m, const State& s,
     }
     ps_.stress.resize(6 * nsol);
     ps_.eps.resize(nsol);
-    ps_.alive.assign(nsol, 1);
+    ps_.alive.resize(nsol);
     for (std::size_t k = 0; k < nsol; ++k) {
       const std::size_t e = std::size_t(th_solids_[k]);
+      ps_.alive[k] = s.failed[e] ? 0 : 1;
       for (int c = 0; c < 6; ++c) ps_.stress[6 * k + std::size_t(c)] = s.sig[6 * e + std::size_t(c)];
       ps_.eps[k] = s.eps_p[e];
     }

@@ -98,7 +98,8 @@ void fill_plot_state(const Model& m, const State& s, const InterfaceForces& ifac
   }
   ps.stress.assign(s.sig.begin(), s.sig.end());
   ps.eps.assign(s.eps_p.begin(), s.eps_p.end());
-  ps.alive.assign(ne, 1);
+  ps.alive.resize(ne);
+  for (std::size_t e = 0; e < ne; ++e) ps.alive[e] = s.failed[e] ? 0 : 1;  // deleted solids: 0
 }
 
 void PlotOutput::open(const Model& m, const std::string& root, int word_size,

@@ -87,6 +87,11 @@ void write_model_summary(std::ostream& os, const Model& m) {
          << "     hardening beta ....................... " << fmt("%.3f", md.beta)
          << (md.beta == 1 ? " (isotropic)" : md.beta == 0 ? " (kinematic)" : " (mixed)") << "\n"
          << "     initially elastic fast path .......... " << (md.initially_elastic ? "yes" : "no") << "\n";
+      if (md.rate_c > 0)
+        os << "     strain-rate factor (Cowper-Symonds) .. 1 + (rate/C)^(1/P), C " << fmt("%.6e", md.rate_c)
+           << " (1/time), P " << fmt("%.4g", md.rate_p) << "\n";
+      if (md.fail_strain > 0)
+        os << "     failure plastic strain (deletion) .... " << fmt("%.6e", md.fail_strain) << "\n";
     }
     os << "     hourglass control .................... type " << md.hourglass_type << " ("
        << hourglass_name(md.hourglass_type) << "), coefficient " << fmt("%.4g", md.hourglass_coef) << "\n"

@@ -30,7 +30,7 @@ inline ElemOut calc_forces_for_elem(const Model& m, State& s, int e) {
   double* cfy = &s.cfy[8 * E];
   double* cfz = &s.cfz[8 * E];
   s.de_ie[E] = s.de_hg[E] = s.de_bv[E] = 0;
-  if (s.rigid_elem[E]) {
+  if (s.rigid_elem[E] || s.failed[E]) {  // rigid, or failed and deleted: no internal forces
     for (int j = 0; j < 8; ++j) cfx[j] = cfy[j] = cfz[j] = 0;
     out.dt = std::numeric_limits<double>::infinity();
     s.dt_e[E] = out.dt;
@@ -84,6 +84,18 @@ inline ElemOut calc_forces_for_elem(const Model& m, State& s, int e) {
     for (int k = 0; k < 3; ++k) pw += 0.5 * (old[k] + sig[k]) * d[k];
     for (int k = 3; k < 6; ++k) pw += (old[k] + sig[k]) * d[k];  // 2 * 0.5 for shear pairs
     s.de_ie[E] = pw * vm * dt;
+    // failure: the element is deleted once its plastic strain reaches the failure strain; its
+    // stress work up to now stays in the internal energy, its mass stays on the nodes
+    if (mc.fail_strain > 0 && s.eps_p[E] >= mc.fail_strain) {
+      s.failed[E] = 2;
+      for (int k = 0; k < 6; ++k) sig[k] = 0;
+      s.q[E] = 0;
+      for (int j = 0; j < 8; ++j) cfx[j] = cfy[j] = cfz[j] = 0;
+      s.vol[E] = v;
+      out.dt = std::numeric_limits<double>::infinity();
+      s.dt_e[E] = out.dt;
+      return out;
+    }
   }
   s.vol[E] = v;
   const double rho = mc.rho * s.vol0[E] / v;

@@ -39,8 +39,13 @@ StepStatus Engine::process_elements() {
   ElementLoopResult r = calc_forces_for_elems(m_, s_);
   // energy increments, summed serially in element order (same bits for any thread count)
   double die = 0, dhg = 0, dbv = 0;
+  s_.newly_failed.clear();
   for (int e = 0; e < s_.ne; ++e) {
     const std::size_t k = std::size_t(e);
+    if (s_.failed[k] == 2) {  // failed in this pass: listed in element order (any thread count)
+      s_.failed[k] = 1;
+      s_.newly_failed.push_back(e);
+    }
     s_.ie_e[k] += s_.de_ie[k];
     s_.hg_e[k] += s_.de_hg[k];
     s_.bv_e[k] += s_.de_bv[k];

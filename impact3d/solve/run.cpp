@@ -254,6 +254,12 @@ int run_simulation(const Model& model, const RunOptions& opt, std::ostream& prin
   bool stopped = false;
   while (st == StepStatus::ok && out_ok) {
     st = engine.step();
+    for (int e : s.newly_failed) {
+      char fb[200];
+      std::snprintf(fb, sizeof fb, "solid element %d at cycle %d, time %.6e, effective plastic strain %.6e",
+                    model.hex_id(e), s.cycle, s.time, s.eps_p[std::size_t(e)]);
+      log.line(render(Diagnostic{5004, Severity::info, Location{}, fb}));
+    }
     if (s.cycle % report == 0 || st != StepStatus::ok)
       log.line(format_cycle_line(model, s, elapsed(), start_time, model.control.end_time));
     if (st != StepStatus::ok) break;

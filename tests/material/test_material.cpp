@@ -386,3 +386,55 @@ TEST(MaterialJaumann, MatchesMatrixProducts) {
   EXPECT_NEAR(s[5], R[2][0], 1e-15);
   EXPECT_NEAR(R[0][1], R[1][0], 1e-15);  // the result is symmetric
 }
+
+// Cowper-Symonds strain-rate scaling (type 3, C > 0): in pure shear at a constant strain rate
+// the von Mises stress of a perfectly plastic material settles on sigma_y (1 + (rate/C)^(1/P))
+// with rate = sqrt(D:D) = sqrt(2) d_xy; with hardening the returned stress lies on the scaled
+// surface R (sigma_y + beta E_p eps_p) (consistency of the modified return).
+TEST(MaterialPlastic, CowperSymondsScalesTheYieldStress) {
+  for (double rate : {10.0, 1e3, 4e4}) {
+    MaterialConstants m = metal(1.0);
+    m.E_tan = 0.0;
+    derive_material_constants(m);
+    m.rate_c = 40.4;  // the classic mild-steel constants, 1/s
+    m.rate_inv_p = 1.0 / 5.0;
+    const double dxy = rate / std::sqrt(2.0);
+    const double d[6] = {0, 0, 0, dxy, 0, 0};
+    State s;
+    const double dt = 1e-7;  // shear strain increment dxy dt per step
+    for (int k = 0; k < 4000; ++k) step(m, s, d, dt);
+    ASSERT_GT(s.eps_p, 0.0) << rate;
+    const double expected = m.sigma_y * (1.0 + std::pow(rate / 40.4, 0.2));
+    EXPECT_NEAR(calc_von_mises(s.sig), expected, 1e-12 * expected) << "rate " << rate;
+  }
+  // hardening (mixed, beta = 0.5): on the scaled surface after every plastic step
+  MaterialConstants m = metal(0.5);
+  m.rate_c = 100.0;
+  m.rate_inv_p = 1.0 / 4.0;
+  const double d[6] = {2e3, -1e3, -1e3, 500.0, 0, 0};
+  const double rate = std::sqrt(2e3 * 2e3 + 2 * 1e3 * 1e3 + 2 * 500.0 * 500.0);
+  const double R = 1.0 + std::pow(rate / 100.0, 0.25);
+  State s;
+  int plastic = 0;
+  for (int k = 0; k < 200; ++k) {
+    if (step(m, s, d, 1e-6) > 0) {
+      ++plastic;
+      double xi[6];
+      const double p = (s.sig[0] + s.sig[1] + s.sig[2]) / 3;
+      for (int c = 0; c < 6; ++c) xi[c] = s.sig[c] - (c < 3 ? p : 0.0) - s.back[c];
+      const double sy = R * (m.sigma_y + m.beta * m.E_p * s.eps_p);
+      EXPECT_NEAR(calc_von_mises(xi), sy, 1e-12 * sy) << "step " << k;
+    }
+  }
+  EXPECT_GT(plastic, 50);
+  // C = 0: no rate effect whatever the rate (the rate-free path)
+  MaterialConstants plain = metal(1.0);
+  State a, b;
+  MaterialConstants zero = plain;
+  zero.rate_inv_p = 0.25;  // P given but C = 0: ignored
+  for (int k = 0; k < 100; ++k) {
+    step(plain, a, d, 1e-6);
+    step(zero, b, d, 1e-6);
+  }
+  for (int c = 0; c < 6; ++c) EXPECT_EQ(a.sig[c], b.sig[c]);
+}
