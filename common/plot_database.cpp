@@ -499,31 +499,6 @@ void PlotWriter::open_impl(const std::string& root_path, const PlotGeometry& g, 
     marker_pos_ = 0;
 
     const std::string dir = parent_dir(root_path);
-    if (keep_states >= 0) {
-        resume_members(keep_states);
-        return;
-    }
-    // Remove stale family members of an earlier run, so no reader continues into them.
-
-    const std::string base = std::filesystem::path(root_path).filename().string();
-    {
-        std::error_code ec;
-        std::vector<std::filesystem::path> stale;
-        for (std::filesystem::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
-            const std::string name = it->path().filename().string();
-            if (name.size() <= base.size() || name.compare(0, base.size(), base) != 0) continue;
-            std::string rest = name.substr(base.size());
-            if (rest.size() > 4 && rest.compare(rest.size() - 4, 4, ".tmp") == 0) rest.resize(rest.size() - 4);
-            if (all_digits(rest)) stale.push_back(it->path());
-        }
-        for (const auto& p : stale) {
-            std::error_code rec;
-            std::filesystem::remove(p, rec);
-            if (rec) throw std::runtime_error("plot database: cannot remove stale family member " + p.string() +
-                                              ": " + rec.message());
-        }
-    }
-
     // ---- root file
     const int ws = ws_;
     std::vector<char> b;
@@ -589,6 +564,41 @@ void PlotWriter::open_impl(const std::string& root_path, const PlotGeometry& g, 
     put_int(b, ws, 90000);
     put_text(b, g.title, kTitleRecordBytes);
     put_real(b, ws, kEndMarker);
+
+    if (keep_states >= 0) {
+        // the family must be this model's: the root file the writer would write now, but for
+        // the run-time word (word 10)
+        const bool exists = file_size_or(root_path, -1) >= 0;  // (missing: resume_members says so)
+        const std::vector<char> old = exists ? read_whole_file(root_path) : std::vector<char>{};
+        const std::size_t rt0 = 10u * static_cast<std::size_t>(ws), rt1 = rt0 + static_cast<std::size_t>(ws);
+        const bool same = old.size() == b.size() && std::equal(old.begin(), old.begin() + static_cast<std::ptrdiff_t>(rt0), b.begin()) &&
+                          std::equal(old.begin() + static_cast<std::ptrdiff_t>(rt1), old.end(), b.begin() + static_cast<std::ptrdiff_t>(rt1));
+        if (exists && !same)
+            throw std::runtime_error("plot database " + root_path + ": cannot resume: the root file does not belong to "
+                                     "this model (control words, geometry, ids or titles differ)");
+        resume_members(keep_states);
+        return;
+    }
+    // Remove stale family members of an earlier run, so no reader continues into them.
+
+    const std::string base = std::filesystem::path(root_path).filename().string();
+    {
+        std::error_code ec;
+        std::vector<std::filesystem::path> stale;
+        for (std::filesystem::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
+            const std::string name = it->path().filename().string();
+            if (name.size() <= base.size() || name.compare(0, base.size(), base) != 0) continue;
+            std::string rest = name.substr(base.size());
+            if (rest.size() > 4 && rest.compare(rest.size() - 4, 4, ".tmp") == 0) rest.resize(rest.size() - 4);
+            if (all_digits(rest)) stale.push_back(it->path());
+        }
+        for (const auto& p : stale) {
+            std::error_code rec;
+            std::filesystem::remove(p, rec);
+            if (rec) throw std::runtime_error("plot database: cannot remove stale family member " + p.string() +
+                                              ": " + rec.message());
+        }
+    }
 
     const int fd = ::open(root_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
     if (fd < 0) io_fail("open of", root_path, errno);

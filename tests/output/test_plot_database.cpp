@@ -303,6 +303,37 @@ TEST(PlotDatabase, ReopenRemovesStaleMembersOfEarlierRun) {
     EXPECT_EQ(read_all(root), 2);
 }
 
+// A restart appends only to a family written for the same model: a root file with other
+// control words, geometry, ids or titles (another deck run in the same folder, or a database
+// of an older layout) is refused, and nothing is changed.
+TEST(PlotDatabase, ResumeRefusesAFamilyOfAnotherModel) {
+    const std::string dir = test_dir("resume_other");
+    const std::string root = write_db(dir, 4, 3, 1);
+    const auto before = slurp(dir + "/d3plot03");
+    PlotGeometry other = tiny_geometry();
+    other.num_rigid_walls = 1;  // one more global word per state
+    {
+        PlotWriter w;
+        try {
+            w.resume(root, other, 4, 1, 2);
+            FAIL() << "resumed a family of another model";
+        } catch (const std::runtime_error& e) {
+            EXPECT_NE(std::string(e.what()).find("does not belong to this model"), std::string::npos) << e.what();
+        }
+    }
+    EXPECT_EQ(slurp(dir + "/d3plot03"), before);  // untouched
+    EXPECT_EQ(read_all(root), 3);
+    other = tiny_geometry();
+    other.title = "another title";
+    PlotWriter w2;
+    EXPECT_THROW(w2.resume(root, other, 4, 1, 2), std::runtime_error);
+    // the same model resumes (the run-time word may differ)
+    PlotWriter w3;
+    w3.resume(root, tiny_geometry(), 4, 1, 2);
+    w3.close();
+    EXPECT_EQ(read_all(root), 2);
+}
+
 // A run killed in the middle of an append leaves the new state's body after the old end marker
 // (the commit word not yet written).  Both this reader and VTK must see only the committed states.
 TEST(PlotDatabase, UncommittedAppendIsInvisible) {
