@@ -51,6 +51,7 @@ const std::vector<MessageDef> kCatalog = {
     {1222, S::error, "element repeats a node in a way that is neither a wedge nor a tetrahedron"},
     {1223, S::error, "initial-velocity node range is empty"},
     {1224, S::error, "rigid-body material used together with a non-rigid material in one element set"},
+    {1225, S::error, "segment nodes do not go around the element face in order (criss-crossed)"},
     // 1300-1399: LS-DYNA keyword decks
     {1301, S::error, "keyword not supported by IMPACT-3D (impact3d --lenient-keywords turns this into a warning)"},
     {1305, S::error, "data line before the first keyword"},
@@ -76,6 +77,7 @@ const std::vector<MessageDef> kCatalog = {
     {2010, S::warning, "keyword given more than once: the last one is used"},
     {2011, S::warning, "part without solid elements ignored"},
     {2012, S::warning, "stonewalls do not act on rigid-body nodes (use a sliding interface for a rigid body)"},
+    {2013, S::warning, "segment node order reversed so that its normal points out of its solid element"},
     // 3000-3099: command line and files
     {3001, S::error, "unknown command-line argument"},
     {3002, S::error, "no input deck given (use i=deck)"},

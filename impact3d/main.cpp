@@ -199,7 +199,10 @@ int main(int argc, char** argv) {
     DeckFile deck;
     deck.load_from_string(h.deck_name, h.deck_text);
     ok = read_deck(deck, model, diag, input_opt);  // fixed format or keyword, by content
-    if (ok) ok = check_model(model, diag);
+    if (ok) {
+      orient_interface_segments(model, diag);  // as read_and_check_deck does
+      ok = check_model(model, diag) && !diag.has(1225);
+    }
   } else {
     ok = read_and_check_deck(opt.deck, model, diag, input_opt);
     if (ok && !check_only) opt.deck_text = self_contained_deck_text(opt.deck, model);

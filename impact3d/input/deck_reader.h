@@ -19,6 +19,12 @@ bool read_dyna3d_deck(DeckFile& deck, Model& model, Diagnostics& diag);
 // interface segments on element faces, unused materials and nodes.  Returns false on error.
 bool check_model(const Model& model, Diagnostics& diag);
 
+// Sliding-interface segments on the exterior face of one solid take that face's outward
+// orientation: a segment given clockwise (seen from outside) is reversed, warning 2013; one
+// whose nodes do not go around the face in order (criss-crossed) is error 1225.  Segments that
+// are not element faces are left to check_model (1218).  read_and_check_deck calls it.
+void orient_interface_segments(Model& model, Diagnostics& diag);
+
 // Reads and checks a deck file: load + read + check.  Returns false on any error.
 bool read_and_check_deck(const std::string& path, Model& model, Diagnostics& diag);
 

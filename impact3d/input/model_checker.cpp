@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <array>
 #include <cmath>
+#include <map>
 #include <set>
 #include <string>
 #include <vector>
@@ -26,7 +27,73 @@ std::array<int, 4> face_key(std::array<int, 4> f) {
   for (auto it = end; it != f.end(); ++it) *it = -1;
   return f;
 }
+// The distinct nodes of a face in their cyclic order (a degenerate face repeats nodes).
+std::vector<int> face_cycle(const std::array<int, 4>& f) {
+  std::vector<int> c;
+  for (int k = 0; k < 4; ++k)
+    if (f[std::size_t(k)] != f[std::size_t((k + 3) % 4)]) c.push_back(f[std::size_t(k)]);
+  if (c.empty()) c.push_back(f[0]);
+  return c;
+}
+
+// a is b rotated (same cyclic order)
+bool same_cycle(const std::vector<int>& a, const std::vector<int>& b) {
+  if (a.size() != b.size()) return false;
+  const std::size_t n = a.size();
+  for (std::size_t r = 0; r < n; ++r) {
+    bool ok = true;
+    for (std::size_t k = 0; k < n && ok; ++k) ok = a[k] == b[(k + r) % n];
+    if (ok) return true;
+  }
+  return false;
+}
 }  // namespace
+
+void orient_interface_segments(Model& m, Diagnostics& diag) {
+  // exterior faces: key -> the outward face (counter-clockwise from outside); faces met twice
+  // are interior (orientation ambiguous: left as given)
+  struct Face { std::array<int, 4> nodes; int count; };
+  std::map<std::array<int, 4>, Face> faces;
+  for (int e = 0; e < m.num_hexes(); ++e) {
+    const auto& n = m.hex_nodes[std::size_t(e)];
+    if (n[0] < 0) continue;
+    for (const auto& f : kHexFaces) {
+      const std::array<int, 4> nodes = {n[std::size_t(f[0])], n[std::size_t(f[1])], n[std::size_t(f[2])], n[std::size_t(f[3])]};
+      auto [it, fresh] = faces.try_emplace(face_key(nodes), Face{nodes, 0});
+      ++it->second.count;
+      (void)fresh;
+    }
+  }
+  Location file_loc;
+  file_loc.file = m.deck_file;
+  for (std::size_t i = 0; i < m.interfaces.size(); ++i) {
+    auto& si = m.interfaces[i];
+    for (int side = 0; side < 2; ++side) {
+      auto& segs = side == 0 ? si.slave : si.master;
+      const auto& lines = side == 0 ? si.slave_line : si.master_line;
+      for (std::size_t s = 0; s < segs.size(); ++s) {
+        auto it = faces.find(face_key(segs[s]));
+        if (it == faces.end() || it->second.count != 1) continue;
+        const std::vector<int> out = face_cycle(it->second.nodes), given = face_cycle(segs[s]);
+        if (same_cycle(given, out)) continue;
+        Location loc = file_loc;
+        if (s < lines.size()) loc.line = lines[s];
+        loc.card = "sliding interface " + std::to_string(i + 1) + (side == 0 ? " slave" : " master") +
+                   " segment " + std::to_string(s + 1);
+        const std::string nodes = "nodes " + std::to_string(m.node_id(segs[s][0])) + " " + std::to_string(m.node_id(segs[s][1])) +
+                                  " " + std::to_string(m.node_id(segs[s][2])) + " " + std::to_string(m.node_id(segs[s][3]));
+        const std::vector<int> reversed(given.rbegin(), given.rend());
+        if (same_cycle(reversed, out)) {
+          const auto g = segs[s];
+          segs[s] = {g[0], g[3], g[2], g[1]};
+          diag.add(2013, loc, nodes);
+        } else {
+          diag.add(1225, loc, nodes);
+        }
+      }
+    }
+  }
+}
 
 bool check_model(const Model& m, Diagnostics& diag) {
   const int before = diag.error_count();
@@ -136,8 +203,10 @@ bool read_and_check_deck(const std::string& path, Model& model, Diagnostics& dia
   // Cross checks only make sense when the arrays are complete; they still run when only
   // field-level errors occurred, so that all problems are reported in one pass.
   if (model.num_nodes() == model.control.numnp && model.num_hexes() == model.control.numelh &&
-      !diag.has(1004) && !diag.has(1013))
-    ok = check_model(model, diag) && ok;
+      !diag.has(1004) && !diag.has(1013)) {
+    orient_interface_segments(model, diag);
+    ok = check_model(model, diag) && ok && !diag.has(1225);
+  }
   return ok && diag.error_count() == 0;
 }
 
