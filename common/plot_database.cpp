@@ -834,7 +834,7 @@ void PlotReader::open(const std::string& root_path) {
         // after the per-part block: NUMRW rigid-wall words, then 3 words per sliding interface
         // (control word 63, ours); a word 63 that does not fit is not ours: all are walls.
         const std::int64_t extra_globals = c.nglbv - 6 - 7 * nparts;
-        const std::int64_t nif = (c.nintf > 0 && 3 * c.nintf <= extra_globals) ? c.nintf : 0;
+        const std::int64_t nif = (c.nintf > 0 && c.nintf <= 100000 && c.nintf <= extra_globals / 3) ? c.nintf : 0;
         g.num_interfaces = static_cast<int>(nif);
         g.num_rigid_walls = extra_globals > 0 ? static_cast<int>(extra_globals - 3 * nif) : 0;
     }

@@ -6,6 +6,7 @@
 #include <cstring>
 #include <fstream>
 #include <iostream>
+#include <new>
 #include <iterator>
 #include <sstream>
 #include <string>
@@ -81,7 +82,9 @@ void print_banner(std::ostream& os) {
 
 }  // namespace
 
-int main(int argc, char** argv) {
+namespace {
+
+int run_main(int argc, char** argv) {
   RunOptions opt;
   bool check_only = false;
   InputOptions input_opt;
@@ -243,4 +246,21 @@ int main(int argc, char** argv) {
   if (opt.restart.empty()) write_model_summary(printed, model);
   if (diag.warning_count()) diag.print(printed);
   return run_simulation(model, opt, printed);
+}
+
+}  // namespace
+
+// Anything that escapes (a bug, or memory exhausted) ends the run with exit code 9 and a line
+// on stderr, never an abort.
+int main(int argc, char** argv) {
+  try {
+    return run_main(argc, argv);
+  } catch (const std::bad_alloc&) {
+    std::cerr << "impact3d: internal error: out of memory\n";
+  } catch (const std::exception& e) {
+    std::cerr << "impact3d: internal error: " << e.what() << "\n";
+  } catch (...) {
+    std::cerr << "impact3d: internal error\n";
+  }
+  return exit_code::internal_error;
 }

@@ -245,6 +245,9 @@ struct RHourglass {
 struct RIdList {  // node set or part set, or history list
   std::vector<int> ids;
   std::vector<Ref> refs;
+  // *SET_NODE_LIST_GENERATE: id ranges BBEG..BEND, kept as ranges (a range may be huge; the
+  // nodes it holds are found in the sorted node ids when the set is resolved)
+  std::vector<std::array<long long, 2>> ranges;
   Ref ref;
 };
 struct RSegSet {
@@ -1148,14 +1151,9 @@ class KeywordReader {
         for (int f = 0; f + 1 < 8; f += 2) {
           long long b1 = d.i(f, "BBEG"), b2 = d.i(f + 1, "BEND");
           if (b1 == 0 && b2 == 0) continue;
-          if (b1 < 1 || b2 < b1 || b2 - b1 > 100000000) { d.error(1003, f + 1, "BEND", "range must be 1 <= BBEG <= BEND"); continue; }
-          // ids in the range that are not nodes are skipped at resolution (marked by ref.c1 < 0)
-          for (long long id = b1; id <= b2; ++id) {
-            s.ids.push_back(int(id));
-            Ref r = d.ref(f);
-            r.c1 = -r.c1;
-            s.refs.push_back(r);
-          }
+          if (b1 < 1 || b2 < b1 || b2 > 2147483647) { d.error(1003, f + 1, "BEND", "range must be 1 <= BBEG <= BEND <= 2147483647"); continue; }
+          // ids in the range that are not nodes are skipped at resolution
+          s.ranges.push_back({b1, b2});
         }
       } else {
         for (int f = 0; f < 8; ++f) {
@@ -1581,10 +1579,14 @@ class KeywordReader {
   // Node set members as 0-based node indices (undefined nodes reported).
   std::vector<int> set_nodes(const RIdList& s, const std::string& card) {
     std::vector<int> out;
+    for (const auto& r : s.ranges) {  // _GENERATE: the nodes whose ids lie in each range
+      auto lo = std::lower_bound(node_ids_.begin(), node_ids_.end(), r[0]);
+      auto hi = std::upper_bound(node_ids_.begin(), node_ids_.end(), r[1]);
+      for (auto it = lo; it < hi; ++it) out.push_back(int(it - node_ids_.begin()));
+    }
     for (std::size_t j = 0; j < s.ids.size(); ++j) {
       int idx = node_index(s.ids[j]);
       if (idx < 0) {
-        if (s.refs[j].c1 < 0) continue;  // _GENERATE range: ids that are not nodes are skipped
         err(1202, s.refs[j], card, "NID", "node " + std::to_string(s.ids[j]) + " is not defined by *NODE");
         continue;
       }

@@ -274,6 +274,32 @@ TEST(KeywordRead, PrePostStyleDeckMapsOntoModel) {
   EXPECT_EQ(m.init_velocities[0].v[0], -2.75e4);
 }
 
+// *SET_NODE_LIST_GENERATE ranges hold the nodes whose ids lie in them, ids that are not nodes
+// skipped; a range may be huge (it is never expanded id by id: a 2e9-id range costs nothing).
+TEST(KeywordRead, NodeListGenerateRangesEvenHugeOnes) {
+  const std::string list = "*SET_NODE_LIST\n"
+                           "$#     sid       da1       da2       da3       da4    solver      \n"
+                           "        20       0.0       0.0       0.0       0.0MECH\n"
+                           "$#    nid1      nid2      nid3      nid4      nid5      nid6      nid7      nid8\n"
+                           "      1001      1004      1007      1010         0         0         0         0\n";
+  std::string deck = prepost_deck();
+  const std::size_t at = deck.find(list);
+  ASSERT_NE(at, std::string::npos);
+  deck.replace(at, list.size(),
+               "*SET_NODE_LIST_GENERATE\n        20\n"
+               "         1      1001      1004      1004      1007      1007      1010      1010\n"
+               "      1013 2000000000\n");
+  Read g = read_text(deck);
+  ASSERT_TRUE(g.ok) << g.messages();
+  Read l = read_text(prepost_deck());
+  ASSERT_TRUE(l.ok);
+  EXPECT_TRUE(model_differences(l.m, g.m).empty()) << join(model_differences(l.m, g.m));
+  deck.replace(deck.find("      1013 2000000000"), 21, "      1013 -5");
+  Read bad = read_text(deck);
+  EXPECT_FALSE(bad.ok);
+  EXPECT_EQ(bad.count(1003), 1) << bad.messages();
+}
+
 TEST(KeywordRead, HourglassKeywordOverridesControl) {
   std::string deck = prepost_deck();
   std::string from = "         7         3        12         0         0         0         0         0\n";

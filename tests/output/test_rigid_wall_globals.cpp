@@ -89,4 +89,17 @@ TEST(PlotGlobals, InterfaceForcesFollowTheWallsAndWord63SaysHowMany) {
   EXPECT_EQ(r.geometry().num_interfaces, 0);
   EXPECT_EQ(r.geometry().num_rigid_walls, 7);
   EXPECT_EQ(r.state(0).rigid_wall_forces.size(), 7u);
+  // a word 63 whose triple overflows 64 bits (3 x 0x5555555555555556 wraps to 2) is not ours
+  // either
+  {
+    std::fstream io(dir + "/d3plot", std::ios::in | std::ios::out | std::ios::binary);
+    const std::int64_t wraps = 0x5555555555555556LL;
+    io.seekp(63 * 8);
+    io.write(reinterpret_cast<const char*>(&wraps), 8);
+  }
+  PlotReader r2;
+  r2.open(dir + "/d3plot");
+  EXPECT_EQ(r2.geometry().num_interfaces, 0);
+  EXPECT_EQ(r2.geometry().num_rigid_walls, 7);
+  EXPECT_EQ(r2.state(0).rigid_wall_forces.size(), 7u);
 }
