@@ -621,7 +621,7 @@ void PlotWriter::write_state(const PlotState& s) {
     const std::size_t ne = static_cast<std::size_t>(nel8_);
     check_size(s.mat_internal_energy, nm, "mat_internal_energy", true);
     check_size(s.mat_kinetic_energy, nm, "mat_kinetic_energy", true);
-    check_size(s.mat_momentum, 3 * nm, "mat_momentum", true);
+    check_size(s.mat_velocity, 3 * nm, "mat_velocity", true);
     check_size(s.mat_mass, nm, "mat_mass", true);
     check_size(s.mat_hourglass_energy, nm, "mat_hourglass_energy", true);
     check_size(s.rigid_wall_forces, static_cast<std::size_t>(nrw_), "rigid_wall_forces", true);
@@ -649,7 +649,7 @@ void PlotWriter::write_state(const PlotState& s) {
     for (double v : s.velocity) put_real(b, ws, v);
     put_vec(s.mat_internal_energy, nm);
     put_vec(s.mat_kinetic_energy, nm);
-    put_vec(s.mat_momentum, 3 * nm);
+    put_vec(s.mat_velocity, 3 * nm);
     put_vec(s.mat_mass, nm);
     put_vec(s.mat_hourglass_energy, nm);
     put_vec(s.rigid_wall_forces, static_cast<std::size_t>(nrw_));
@@ -1002,7 +1002,7 @@ PlotState PlotReader::state(int i) const {
         };
         take(s.mat_internal_energy, nm);
         take(s.mat_kinetic_energy, nm);
-        take(s.mat_momentum, 3 * nm);
+        take(s.mat_velocity, 3 * nm);
         take(s.mat_mass, nm);
         take(s.mat_hourglass_energy, nm);
         const std::size_t nif = 3 * static_cast<std::size_t>(geom_.num_interfaces);

@@ -54,8 +54,9 @@ struct PlotGeometry {
 // One output time.  Global words are written in the spec's NGLBV = 6 + 7*NMMAT + NUMRW order,
 // then the interface words (NGLBV = 6 + 7*NMMAT + NUMRW + 3*NINTF):
 //   kinetic, internal, total energy, velocity x y z (whole model),
-//   mat_internal_energy[NMMAT], mat_kinetic_energy[NMMAT], mat_momentum[3*NMMAT] (x y z per
-//   material, interleaved), mat_mass[NMMAT], mat_hourglass_energy[NMMAT],
+//   mat_internal_energy[NMMAT], mat_kinetic_energy[NMMAT], mat_velocity[3*NMMAT] (the part's
+//   mean velocity, momentum / mass, x y z per material interleaved), mat_mass[NMMAT],
+//   mat_hourglass_energy[NMMAT],
 //   rigid_wall_forces[NUMRW], interface_forces[3*NINTF].
 // For the writer, every per-material / per-node / per-solid vector may be left empty (written as
 // zeros; alive: all alive); otherwise it must have exactly the stated size.
@@ -67,7 +68,7 @@ struct PlotState {
     std::array<double, 3> velocity{};          // x/y/z velocity of the whole model
     std::vector<double> mat_internal_energy;   // NMMAT
     std::vector<double> mat_kinetic_energy;    // NMMAT
-    std::vector<double> mat_momentum;          // 3*NMMAT, x y z per material
+    std::vector<double> mat_velocity;          // 3*NMMAT, x y z mean velocity per material
     std::vector<double> mat_mass;              // NMMAT
     std::vector<double> mat_hourglass_energy;  // NMMAT
     std::vector<double> rigid_wall_forces;     // num_rigid_walls normal forces

@@ -13,7 +13,7 @@
 
 namespace postimpact {
 
-const char* const Tolerances::kFields[8] = {"time", "coords", "vel", "acc", "stress", "eps", "energy", "force"};
+const char* const Tolerances::kFields[9] = {"time", "coords", "vel", "acc", "stress", "eps", "energy", "force", "mass"};
 
 Tolerance Tolerances::get(const std::string& f) const {
     if (auto it = field.find(f); it != field.end()) return it->second;
@@ -54,7 +54,7 @@ Tolerances Tolerances::parse(const std::string& text, const std::string& name) {
             });
         };
         const bool known = is_field(f) || (f.rfind("summary.", 0) == 0 && is_key(f.substr(8)));
-        if (!known) fail("unknown field '" + f + "' (time coords vel acc stress eps energy force cycles default, summary.FIELD, summary.KEY)");
+        if (!known) fail("unknown field '" + f + "' (time coords vel acc stress eps energy force mass cycles default, summary.FIELD, summary.KEY)");
         Tolerance tol;
         bool have_rel = false, have_abs = false;
         std::vector<std::string> pos;
@@ -210,6 +210,15 @@ int compare_databases(const std::string& pa, const std::string& pb, const Compar
         mat("internal", sa.mat_internal_energy, sb.mat_internal_energy);
         mat("kinetic", sa.mat_kinetic_energy, sb.mat_kinetic_energy);
         mat("hourglass", sa.mat_hourglass_energy, sb.mat_hourglass_energy);
+        // model velocity and per-material mean velocities (field vel), per-material masses
+        for (std::size_t k = 0; k < 3; ++k)
+            add(F("vel"), Diff{0, sa.velocity[k], sb.velocity[k], 0, 0, i, 0, "model", xyz[k]}, keep);
+        if (sa.mat_velocity.size() == sb.mat_velocity.size())
+            for (std::size_t k = 0; k < sa.mat_velocity.size(); ++k)
+                add(F("vel"), Diff{0, sa.mat_velocity[k], sb.mat_velocity[k], 0, 0, i, static_cast<int>(k / 3 + 1), "material", xyz[k % 3]}, keep);
+        if (sa.mat_mass.size() == sb.mat_mass.size())
+            for (std::size_t k = 0; k < sa.mat_mass.size(); ++k)
+                add(F("mass"), Diff{0, sa.mat_mass[k], sb.mat_mass[k], 0, 0, i, static_cast<int>(k + 1), "material", ""}, keep);
         // rigid-wall normal forces and interface resultant forces (the same counts: checked above)
         if (sa.rigid_wall_forces.size() == sb.rigid_wall_forces.size())
             for (std::size_t k = 0; k < sa.rigid_wall_forces.size(); ++k)

@@ -24,7 +24,7 @@ struct Tolerances {
     // Throws std::runtime_error (file:line: message).
     static Tolerances read(const std::string& path);
     static Tolerances parse(const std::string& text, const std::string& name = "tolerances");
-    static const char* const kFields[8];
+    static const char* const kFields[9];
 };
 
 struct CompareOptions {

@@ -21,7 +21,7 @@ bool is_int(const std::string& s) {
 }
 
 const char* kGlobalVars[] = {"ke", "ie", "te", "vx", "vy", "vz"};
-const char* kMaterialVars[] = {"ie", "ke", "hg", "mass", "mx", "my", "mz"};
+const char* kMaterialVars[] = {"ie", "ke", "hg", "mass", "mx", "my", "mz", "vx", "vy", "vz"};
 const char* kWallVars[] = {"fn"};
 const char* kInterfaceVars[] = {"fx", "fy", "fz", "fm"};
 
@@ -181,9 +181,12 @@ HistoryData extract_history(Database& db, const std::vector<HistoryCurve>& curve
                     else if (c.var == "ke") v = at(st.mat_kinetic_energy, m);
                     else if (c.var == "hg") v = at(st.mat_hourglass_energy, m);
                     else if (c.var == "mass") v = at(st.mat_mass, m);
-                    else if (c.var == "mx") v = at(st.mat_momentum, 3 * m);
-                    else if (c.var == "my") v = at(st.mat_momentum, 3 * m + 1);
-                    else if (c.var == "mz") v = at(st.mat_momentum, 3 * m + 2);
+                    else if (c.var == "mx") v = at(st.mat_mass, m) * at(st.mat_velocity, 3 * m);
+                    else if (c.var == "my") v = at(st.mat_mass, m) * at(st.mat_velocity, 3 * m + 1);
+                    else if (c.var == "mz") v = at(st.mat_mass, m) * at(st.mat_velocity, 3 * m + 2);
+                    else if (c.var == "vx") v = at(st.mat_velocity, 3 * m);
+                    else if (c.var == "vy") v = at(st.mat_velocity, 3 * m + 1);
+                    else if (c.var == "vz") v = at(st.mat_velocity, 3 * m + 2);
                     break;
                 case HistoryCurve::Kind::Wall:
                     v = at(st.rigid_wall_forces, m);

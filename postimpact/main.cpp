@@ -47,7 +47,7 @@ const char* kUsage =
     "  --timing               print the time each file took\n"
     "  -h, --help   --version\n"
     "compare: --tol FILE (lines 'FIELD REL ABS', FIELD time coords vel acc stress eps\n"
-    "energy force default; without it values must be equal), --report N (10).\n"
+    "energy force mass default; without it values must be equal), --report N (10).\n"
     "summary: 'key value' lines (final length, radius, extents, max plastic strain,\n"
     "energies, cycle count read from --printed FILE, default d3hsp beside DATABASE).\n"
     "compare-summary: two summaries with the tolerances of --tol FILE (lines summary.KEY,\n"

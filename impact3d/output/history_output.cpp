@@ -116,7 +116,7 @@ void HistoryOutput::write(const Model& m, const State& s,
   const auto& ke = ps_.mat_kinetic_energy;
   const auto& hg = ps_.mat_hourglass_energy;
   const auto& mass = ps_.mat_mass;
-  const auto& mom = ps_.mat_momentum;
+  const auto& vel = ps_.mat_velocity;  // matsum prints momentum: mass x mean velocity
   if (FILE* f = files_[kGlstat]) {
     std::fprintf(f,
                  "\n dt of cycle %9d is controlled by solid %9d\n\n"
@@ -145,8 +145,8 @@ void HistoryOutput::write(const Model& m, const State& s,
       std::fprintf(f,
                    " mat.#=%5d   inten=  %12.4E  kinen=  %12.4E  hgeng=  %12.4E  mass=  %12.4E\n"
                    "               x-mom=  %12.4E  y-mom=  %12.4E  z-mom=  %12.4E\n",
-                   m.materials[k].number, ie[k], ke[k], hg[k], mass[k], mom[3 * k], mom[3 * k + 1],
-                   mom[3 * k + 2]);
+                   m.materials[k].number, ie[k], ke[k], hg[k], mass[k], mass[k] * vel[3 * k], mass[k] * vel[3 * k + 1],
+                   mass[k] * vel[3 * k + 2]);
     }
   }
   if (FILE* f = files_[kRwforc]) {

@@ -39,7 +39,7 @@ void fill_plot_globals(const Model& m, const State& s, const InterfaceForces& if
   // per-material books from element-lumped masses (exact split of nodal mass by material)
   ps.mat_internal_energy.assign(nm, 0.0);
   ps.mat_kinetic_energy.assign(nm, 0.0);
-  ps.mat_momentum.assign(3 * nm, 0.0);
+  ps.mat_velocity.assign(3 * nm, 0.0);  // momentum first, divided by the mass below
   ps.mat_mass.assign(nm, 0.0);
   ps.mat_hourglass_energy.assign(nm, 0.0);
   for (std::size_t e = 0; e < ne; ++e) {
@@ -51,17 +51,22 @@ void fill_plot_globals(const Model& m, const State& s, const InterfaceForces& if
     for (int n : s.conn[e]) {
       const std::size_t i = std::size_t(n);
       ps.mat_kinetic_energy[k] += 0.5 * mc * (s.vx[i] * s.vx[i] + s.vy[i] * s.vy[i] + s.vz[i] * s.vz[i]);
-      ps.mat_momentum[3 * k] += mc * s.vx[i];
-      ps.mat_momentum[3 * k + 1] += mc * s.vy[i];
-      ps.mat_momentum[3 * k + 2] += mc * s.vz[i];
+      ps.mat_velocity[3 * k] += mc * s.vx[i];
+      ps.mat_velocity[3 * k + 1] += mc * s.vy[i];
+      ps.mat_velocity[3 * k + 2] += mc * s.vz[i];
     }
   }
   // whole-model velocity: total momentum over total mass
   double mtot = 0, p[3] = {0, 0, 0};
   for (std::size_t k = 0; k < nm; ++k) {
     mtot += ps.mat_mass[k];
-    for (std::size_t a = 0; a < 3; ++a) p[a] += ps.mat_momentum[3 * k + a];
+    for (std::size_t a = 0; a < 3; ++a) p[a] += ps.mat_velocity[3 * k + a];
   }
+  // per material: the mean velocity (what the d3plot layout holds; readers show it as the
+  // part velocity)
+  for (std::size_t k = 0; k < nm; ++k)
+    for (std::size_t a = 0; a < 3; ++a)
+      ps.mat_velocity[3 * k + a] = ps.mat_mass[k] > 0 ? ps.mat_velocity[3 * k + a] / ps.mat_mass[k] : 0.0;
   for (std::size_t a = 0; a < 3; ++a) ps.velocity[a] = mtot > 0 ? p[a] / mtot : 0;
   // rigid-wall normal force: the push of the body on the wall, positive in compression (as rwforc)
   ps.rigid_wall_forces.resize(m.walls.size());

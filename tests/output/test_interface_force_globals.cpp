@@ -131,7 +131,8 @@ TEST(InterfaceForceGlobals, ImpulseAndContactForceFromTheDatabase) {
   double impulse = 0;
   for (std::size_t i = 1; i < t.size(); ++i) impulse += 0.5 * (fz[i] + fz[i - 1]) * (t[i] - t[i - 1]);
   const PlotState first = th.state(0), last = th.state(n - 1);
-  const double dp_bar1 = last.mat_momentum[2] - first.mat_momentum[2];  // part 1 = bar 1 (slave)
+  // part 1 = bar 1 (slave): momentum = mass x mean velocity
+  const double dp_bar1 = last.mat_mass[0] * last.mat_velocity[2] - first.mat_mass[0] * first.mat_velocity[2];
   const double m_bar = kRho * kArea * kL;
   const double c0 = std::sqrt(kE / kRho);
   const double f_exact = kRho * c0 * kV * kArea;  // 1-D: sigma = rho c0 v on the contact face

@@ -69,7 +69,7 @@ PlotState tiny_state(int s, const PlotGeometry& g, bool last = false) {
     for (int p = 0; p < nm; ++p) {
         st.mat_internal_energy.push_back(0.3 * s + p);
         st.mat_kinetic_energy.push_back(0.7 * s + p);
-        for (int k = 0; k < 3; ++k) st.mat_momentum.push_back(0.11 * s * (k + 1) + p);
+        for (int k = 0; k < 3; ++k) st.mat_velocity.push_back(0.11 * s * (k + 1) + p);
         st.mat_mass.push_back(7.85e-3 * (p + 1));
         st.mat_hourglass_energy.push_back(1.0e-4 * s * (p + 1));
     }
@@ -122,7 +122,7 @@ void expect_state(const PlotState& got, const PlotState& want, int ws) {
     for (int k = 0; k < 3; ++k) EXPECT_EQ(got.velocity[k], round_ws(want.velocity[k], ws));
     expect_vec(got.mat_internal_energy, want.mat_internal_energy, ws, "mat_internal_energy");
     expect_vec(got.mat_kinetic_energy, want.mat_kinetic_energy, ws, "mat_kinetic_energy");
-    expect_vec(got.mat_momentum, want.mat_momentum, ws, "mat_momentum");
+    expect_vec(got.mat_velocity, want.mat_velocity, ws, "mat_velocity");
     expect_vec(got.mat_mass, want.mat_mass, ws, "mat_mass");
     expect_vec(got.mat_hourglass_energy, want.mat_hourglass_energy, ws, "mat_hourglass_energy");
     expect_vec(got.coords, want.coords, ws, "coords");
