@@ -11,10 +11,11 @@ namespace postimpact {
 
 namespace {
 
+// A whole-word integer that fits an int (ids: larger ones are "does not exist", not a crash).
 bool is_int(const std::string& s) {
     if (s.empty()) return false;
     std::size_t i = (s[0] == '-' || s[0] == '+') ? 1 : 0;
-    if (i == s.size()) return false;
+    if (i == s.size() || s.size() - i > 9) return false;  // at most 9 digits: fits an int
     for (; i < s.size(); ++i)
         if (s[i] < '0' || s[i] > '9') return false;
     return true;

@@ -1,5 +1,6 @@
 // postimpact: offscreen post-processor of IMPACT-3D plot databases (d3plot family).
 // Usage: README.md, section POST-IMPACT, and `postimpact --help`.
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <iostream>
@@ -63,7 +64,14 @@ int run_compare(int argc, char** argv) {
         if ((a == "--tol" || a == "--tolerances" || a == "-t") && i + 1 < argc) {
             opt.tol = postimpact::Tolerances::read(argv[++i]);
         } else if (a == "--report" && i + 1 < argc) {
-            opt.report = std::stoi(argv[++i]);
+            const char* v = argv[++i];
+            char* end = nullptr;
+            const long n = std::strtol(v, &end, 10);
+            if (*v == '\0' || *end != '\0' || n < 0 || n > 1000000) {
+                std::cerr << "postimpact compare: --report: expected a count 0..1000000, found '" << v << "'\n";
+                return 2;
+            }
+            opt.report = static_cast<int>(n);
         } else if (!a.empty() && a[0] == '-') {
             std::cerr << "postimpact compare: unknown option " << a << "\n" << kUsage;
             return 2;
