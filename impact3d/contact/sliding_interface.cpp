@@ -38,6 +38,7 @@ struct Surface {
   std::vector<std::uint8_t> boundary;  // bit e: edge e is on the surface's rim
   std::vector<double> k0;              // DYNA3D stiffness mu K A^2 / V (initial geometry)
   std::vector<double> pmax;            // largest accepted penetration
+  std::vector<int> elem;               // the solid each segment is a face of (-1: none found)
   std::vector<int> nodes;              // sorted, unique
 };
 
@@ -103,6 +104,7 @@ void build_surface(const State& s, const std::vector<std::array<int, 4>>& segs, 
   sf.boundary.assign(ns, 0);
   sf.k0.assign(ns, 0.0);
   sf.pmax.assign(ns, 0.0);
+  sf.elem.assign(ns, -1);
   // rim edges: used by one segment only (a collapsed edge of a triangle is skipped)
   std::map<std::pair<int, int>, int> edge_count;
   for (const auto& sg : segs)
@@ -121,6 +123,7 @@ void build_surface(const State& s, const std::vector<std::array<int, 4>>& segs, 
     seg_coords(s, sg, X);
     const double area = contact::segment_area(X);
     const int el = element_of_segment(s, sg);
+    sf.elem[j] = el;
     double vol = 0, K = 0;
     if (el >= 0) {
       vol = s.vol0[std::size_t(el)];
@@ -284,6 +287,8 @@ void SlidingInterfaces::Impl::node_pass(const Model&, const State& s, Interface&
       if (!in_box(&g.box[6 * std::size_t(j)], p)) continue;
       const auto& sg = segs.seg[std::size_t(j)];
       if (sg[0] == node || sg[1] == node || sg[2] == node || sg[3] == node) continue;
+      // the face of a failed (deleted) solid no longer exists
+      if (const int el = segs.elem[std::size_t(j)]; el >= 0 && s.failed[std::size_t(el)]) continue;
       double X[4][3];
       seg_coords(s, sg, X);
       ++hit.evaluations;
