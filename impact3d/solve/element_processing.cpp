@@ -88,6 +88,13 @@ inline ElemOut calc_forces_for_elem(const Model& m, State& s, int e) {
     // stress work up to now stays in the internal energy, its mass stays on the nodes
     if (mc.fail_strain > 0 && s.eps_p[E] >= mc.fail_strain) {
       s.failed[E] = 2;
+      // the books as for a stress and viscosity that are zero from now on (trapezoid with a
+      // zero end): only the old stress and q did work over this step
+      double pw0 = 0;
+      for (int k = 0; k < 3; ++k) pw0 += 0.5 * old[k] * d[k];
+      for (int k = 3; k < 6; ++k) pw0 += old[k] * d[k];
+      s.de_ie[E] = pw0 * vm * dt;
+      s.de_bv[E] = -0.5 * s.q[E] * trd * vm * dt;
       for (int k = 0; k < 6; ++k) sig[k] = 0;
       s.q[E] = 0;
       for (int j = 0; j < 8; ++j) cfx[j] = cfy[j] = cfz[j] = 0;

@@ -131,3 +131,48 @@ TEST(CrossedCylinders, SeedExample3BothStiffnessChoices) {
     EXPECT_GT(r.max_pen, 0.0);
   }
 }
+
+// Contact with failing solids: both cylinders strain-rate sensitive (C 40 /s, P 5) and failing
+// at a plastic strain of 0.05, so solids at the contact are deleted and nodes of one body pass
+// where the other's deleted faces were.  Such a node must not be caught from inside by a
+// neighbouring face with a spring of its whole depth (that threw nodes out at ~1400 m/s and
+// made 4% of energy): penetration grows only by the node's approach.  Checked to 30 us: energy
+// ratio within the project's 2% at every cycle (measured: at most 1.25% off, 1.0037 at 50 us;
+// before the fix 1.10 and 1.04), no node faster than twice the impact speed (measured 21 m/s),
+// total momentum zero (1e-9 of one body's), mirror-symmetric failures.
+TEST(CrossedCylinders, FailingSolidsAtTheContactKeepTheEnergyBalance) {
+  ScopedThreads one(1);
+  Model m = read_deck("crossed_cylinders.dyn");
+  for (auto& md : m.materials) {
+    md.rate_c = 40;
+    md.rate_p = 5;
+    md.fail_strain = 0.05;
+  }
+  m.control.end_time = 30e-6;
+  Engine eng(m);
+  ASSERT_EQ(eng.initialize(), StepStatus::ok);
+  const State& s = eng.state();
+  const double mbody = mass_of(s, kBody1, kBody2);
+  double worst = 0;
+  StepStatus st = StepStatus::ok;
+  while (st == StepStatus::ok) {
+    st = eng.step();
+    worst = std::max(worst, std::abs(s.energy_ratio() - 1));
+  }
+  ASSERT_EQ(st, StepStatus::finished);
+  double vmax = 0;
+  for (int i = 0; i < s.nn; ++i) {
+    const std::size_t k = std::size_t(i);
+    vmax = std::max(vmax, std::sqrt(s.vx[k] * s.vx[k] + s.vy[k] * s.vy[k] + s.vz[k] * s.vz[k]));
+  }
+  int failed = 0;
+  for (auto f : s.failed) failed += f != 0;
+  const auto p = momentum(s, 0, kNodes);
+  std::printf("failing crossed cylinders: %d solids failed, max |ratio - 1| %.4g, max speed %.4g m/s, p_z %.3g\n",
+              failed, worst, vmax, p[2]);
+  EXPECT_GT(failed, 0);
+  EXPECT_EQ(failed % 2, 0);  // the mirror image of each failure fails too
+  EXPECT_LT(worst, 0.02);
+  EXPECT_LT(vmax, 2 * kV);
+  EXPECT_LT(std::abs(p[2]), 1e-9 * mbody * kV);
+}
