@@ -79,17 +79,29 @@ Summary summarize(const std::string& root, const std::string& printed) {
     struct Ext {
         double lo[3], hi[3], r;
     };
-    auto extents = [](const std::vector<double>& c) {
+    // nodes of live solids only: a failed (deleted) solid and the nodes only it held are not
+    // part of the shape
+    auto live_nodes = [&](const impact3d::PlotState& st) {
+        std::vector<char> live(static_cast<std::size_t>(geo.num_nodes()), 0);
+        for (int e = 0; e < geo.num_hexes(); ++e)
+            if (st.alive.empty() || st.alive[static_cast<std::size_t>(e)])
+                for (int j = 0; j < 8; ++j) live[static_cast<std::size_t>(geo.hex_nodes[static_cast<std::size_t>(8 * e + j)])] = 1;
+        return live;
+    };
+    auto extents = [&](const impact3d::PlotState& st) {
+        const std::vector<double>& c = st.coords;
+        const std::vector<char> live = live_nodes(st);
         Ext e{};
         for (int a = 0; a < 3; ++a) e.lo[a] = INFINITY, e.hi[a] = -INFINITY;
         e.r = 0;
         for (std::size_t i = 0; i + 2 < c.size(); i += 3) {
+            if (!live[i / 3]) continue;
             for (int a = 0; a < 3; ++a) e.lo[a] = std::min(e.lo[a], c[i + a]), e.hi[a] = std::max(e.hi[a], c[i + a]);
             e.r = std::max(e.r, std::sqrt(c[i] * c[i] + c[i + 1] * c[i + 1]));
         }
         return e;
     };
-    const Ext e0 = extents(first.coords), e1 = extents(last.coords);
+    const Ext e0 = extents(first), e1 = extents(last);
     put("length0", num(e0.hi[2] - e0.lo[2]));
     put("length", num(e1.hi[2] - e1.lo[2]));
     put("radius0", num(e0.r));
@@ -102,10 +114,17 @@ Summary summarize(const std::string& root, const std::string& printed) {
     // Largest effective plastic strain over all states (it never decreases; the last state's).
     double emax = 0;
     int eid = 0;
-    for (std::size_t k = 0; k < last.eps.size(); ++k)
+    int failed = 0;
+    for (std::size_t k = 0; k < last.eps.size(); ++k) {
+        if (!last.alive.empty() && !last.alive[k]) {
+            ++failed;
+            continue;
+        }
         if (last.eps[k] > emax || eid == 0) emax = last.eps[k], eid = db.element_id(static_cast<int>(k));
+    }
     put("max_eps", num(emax));
     put("max_eps_element", std::to_string(eid));
+    if (failed) put("failed_solids", std::to_string(failed));  // (only when there are: older summaries lack it)
     double hg = 0;
     for (double v : last.mat_hourglass_energy) hg += v;
     put("kinetic_energy", num(last.kinetic_energy));
@@ -144,7 +163,7 @@ Summary read_summary(const std::string& path) {
 
 std::string summary_field(const std::string& k) {
     if (k == "title" || k == "max_eps_element") return "";
-    if (k == "states" || k == "nodes" || k == "solids") return "exact";
+    if (k == "states" || k == "nodes" || k == "solids" || k == "failed_solids") return "exact";
     if (k == "time") return "time";
     if (k == "cycles") return "cycles";
     if (k == "max_eps") return "eps";

@@ -1420,6 +1420,7 @@ class KeywordReader {
     m_.hex_nodes.assign(ne, undefined);
     m_.hex_material.assign(ne, -1);
     m_.hex_line.assign(ne, 0);
+    m_.hex_file.assign(ne, -1);
     elem_ids_.resize(ne);
     bool identity = true;
     for (std::size_t k = 0; k < ne; ++k) {
@@ -1427,6 +1428,7 @@ class KeywordReader {
       elem_ids_[k] = e.id;
       identity = identity && e.id == int(k) + 1;
       m_.hex_line[k] = e.ref.line ? e.ref.line->number : 0;
+      m_.hex_file[k] = file_index(e.ref.file);
       std::string card = "*ELEMENT_SOLID element " + std::to_string(e.id);
       bool ok = true;
       std::array<int, 8> n{};
@@ -1764,8 +1766,17 @@ class KeywordReader {
 
   // Exterior faces of the elements of the parts (faces not shared by two of those elements),
   // in element and face order, outward counter-clockwise; triangles as n1 n2 n3 n3.
+  // index of a file in Model::source_files (registered on first use)
+  int file_index(const DeckFile* f) {
+    if (!f) return -1;
+    for (std::size_t k = 0; k < m_.source_files.size(); ++k)
+      if (m_.source_files[k] == f->name()) return int(k);
+    m_.source_files.push_back(f->name());
+    return int(m_.source_files.size()) - 1;
+  }
+
   void exterior_faces(const std::vector<int>& parts, const std::vector<char>* node_filter,
-                      std::vector<std::array<int, 4>>& out, std::vector<int>& lines) {
+                      std::vector<std::array<int, 4>>& out, std::vector<int>& lines, std::vector<int>& files) {
     std::vector<int> elems;
     for (int p : parts) elems.insert(elems.end(), part_elems_[std::size_t(p)].begin(), part_elems_[std::size_t(p)].end());
     if (node_filter) {
@@ -1809,12 +1820,13 @@ class KeywordReader {
         }
         out.push_back(s);
         lines.push_back(m_.hex_line[std::size_t(e)]);
+        files.push_back(m_.hex_file.empty() ? -1 : m_.hex_file[std::size_t(e)]);
       }
     }
   }
 
   void resolve_side(const RSide& side, bool slave, const std::string& card, std::vector<std::array<int, 4>>& out,
-                    std::vector<int>& lines) {
+                    std::vector<int>& lines, std::vector<int>& files) {
     const int errors_before = diag_.error_count();
     const char* field = slave ? "SURFA" : "SURFB";
     if (side.type == 0) {
@@ -1839,15 +1851,16 @@ class KeywordReader {
         if (ok) {
           out.push_back(seg);
           lines.push_back(s.refs[j][0].line ? s.refs[j][0].line->number : 0);
+          files.push_back(file_index(s.refs[j][0].file));
         }
       }
     } else if (side.type == 2 || side.type == 3) {
-      exterior_faces(parts_of(side.type == 2, side.id, side.id_ref, card, field), nullptr, out, lines);
+      exterior_faces(parts_of(side.type == 2, side.id, side.id_ref, card, field), nullptr, out, lines, files);
     } else if (side.type == 4) {
       if (const RIdList* s = find_node_set(side.id, side.id_ref, card, field)) {
         std::vector<char> mark(std::size_t(m_.num_nodes()), 0);
         for (int n : set_nodes(*s, "*SET_NODE_LIST " + std::to_string(side.id))) mark[std::size_t(n)] = 1;
-        exterior_faces({}, &mark, out, lines);
+        exterior_faces({}, &mark, out, lines, files);
       }
     }
     if (out.empty() && diag_.error_count() == errors_before &&
@@ -1866,8 +1879,8 @@ class KeywordReader {
       si.stiffness_method = c.soft;
       si.symmetric = c.symmetric;
       si.line = c.ref.line ? c.ref.line->number : 0;
-      resolve_side(c.a, true, c.keyword, si.slave, si.slave_line);
-      resolve_side(c.b, false, c.keyword, si.master, si.master_line);
+      resolve_side(c.a, true, c.keyword, si.slave, si.slave_line, si.slave_file);
+      resolve_side(c.b, false, c.keyword, si.master, si.master_line, si.master_file);
       m_.interfaces.push_back(std::move(si));
     }
     m_.control.num_interfaces = int(m_.interfaces.size());

@@ -77,6 +77,7 @@ void orient_interface_segments(Model& m, Diagnostics& diag) {
         const std::vector<int> out = face_cycle(it->second.nodes), given = face_cycle(segs[s]);
         if (same_cycle(given, out)) continue;
         Location loc = file_loc;
+        loc.file = m.file_of(side == 0 ? si.slave_file : si.master_file, s);
         if (s < lines.size()) loc.line = lines[s];
         loc.card = "sliding interface " + std::to_string(i + 1) + (side == 0 ? " slave" : " master") +
                    " segment " + std::to_string(s + 1);
@@ -117,6 +118,7 @@ bool check_model(const Model& m, Diagnostics& diag) {
     double v = calc_hex_volume(x, y, z);
     if (!(v > 0)) {
       Location loc = file_loc;
+      loc.file = m.file_of(m.hex_file, std::size_t(e));
       if (std::size_t(e) < m.hex_line.size()) loc.line = m.hex_line[std::size_t(e)];
       loc.card = "solid element " + std::to_string(m.hex_id(e));
       char buf[64];
@@ -178,6 +180,7 @@ bool check_model(const Model& m, Diagnostics& diag) {
         if (!faces.count(face_key(segs[s]))) {
           Location loc = file_loc;
           const auto& lines = side == 0 ? si.slave_line : si.master_line;
+          loc.file = m.file_of(side == 0 ? si.slave_file : si.master_file, s);
           if (s < lines.size()) loc.line = lines[s];
           loc.card = "sliding interface " + std::to_string(i + 1) + (side == 0 ? " slave" : " master") +
                      " segment " + std::to_string(s + 1);

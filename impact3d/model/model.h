@@ -74,6 +74,7 @@ struct SlidingInterface {
   bool symmetric = true;
   std::vector<std::array<int, 4>> slave, master;  // 0-based nodes
   std::vector<int> slave_line, master_line;       // deck line of each segment card (messages)
+  std::vector<int> slave_file, master_file;       // Model::source_files index of that line (empty: the deck)
   int line = 0;
 };
 
@@ -97,6 +98,14 @@ struct Model {
   std::vector<std::array<int, 8>> hex_nodes;  // 0-based node indices
   std::vector<int> hex_material;              // 0-based material index
   std::vector<int> hex_line;                  // deck line of each solid card, 0 = not read
+  std::vector<int> hex_file;                  // source_files index of that line (empty: the deck)
+  std::vector<std::string> source_files;      // include files that lines refer to (keyword decks)
+  // the file a line recorded with index `idx` of `files` is in (messages)
+  const std::string& file_of(const std::vector<int>& files, std::size_t idx) const {
+    if (idx < files.size() && files[idx] >= 0 && std::size_t(files[idx]) < source_files.size())
+      return source_files[std::size_t(files[idx])];
+    return deck_file;
+  }
   // Ids in the deck when they are not 1..N (keyword decks have arbitrary sparse ids and are
   // renumbered 1..N in increasing id order); empty = identity.
   std::vector<int> node_user_id, hex_user_id;

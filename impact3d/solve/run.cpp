@@ -304,15 +304,30 @@ int run_simulation(const Model& model, const RunOptions& opt, std::ostream& prin
   }
   log.line("\n energies at the end (time " + std::to_string(s.time) + "):\n" + energy_report(s));
   {
-    // summary of the final shape: extents and the largest plastic strain
+    // summary of the final shape: extents and the largest plastic strain of the live solids
+    // (failed solids and the nodes only they held are left out)
+    int nfailed = 0;
+    for (auto f : s.failed) nfailed += f != 0;
+    std::vector<char> live(std::size_t(s.nn), nfailed ? 0 : 1);
+    if (nfailed)
+      for (int e = 0; e < s.ne; ++e)
+        if (!s.failed[std::size_t(e)])
+          for (int n : s.conn[std::size_t(e)]) live[std::size_t(n)] = 1;
     double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
     for (int i = 0; i < s.nn; ++i) {
+      if (!live[std::size_t(i)]) continue;
       const double p[3] = {s.x[std::size_t(i)], s.y[std::size_t(i)], s.z[std::size_t(i)]};
       for (int a = 0; a < 3; ++a) { lo[a] = std::min(lo[a], p[a]); hi[a] = std::max(hi[a], p[a]); }
     }
     int emax = 0;
-    for (int e = 1; e < s.ne; ++e)
-      if (s.eps_p[std::size_t(e)] > s.eps_p[std::size_t(emax)]) emax = e;
+    while (emax + 1 < s.ne && s.failed[std::size_t(emax)]) ++emax;
+    for (int e = emax + 1; e < s.ne; ++e)
+      if (!s.failed[std::size_t(e)] && s.eps_p[std::size_t(e)] > s.eps_p[std::size_t(emax)]) emax = e;
+    if (nfailed) {
+      char fb[120];
+      std::snprintf(fb, sizeof fb, "\n failed (deleted) solids: %d of %d (left out of the extents below)", nfailed, s.ne);
+      log.line(fb);
+    }
     char buf[400];
     const int cycles_here = s.cycle;
     std::snprintf(buf, sizeof buf,

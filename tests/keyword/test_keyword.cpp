@@ -437,6 +437,28 @@ TEST(KeywordInclude, NestedRelativePathsAndErrorsNameTheIncludeFile) {
 
 // ---------------------------------------------------------------------------- unsupported
 
+// Segment messages (warning 2013, reversed segment) name the include file the *SET_SEGMENT
+// card is in, with its line there.
+TEST(KeywordInclude, SegmentMessagesNameTheIncludeFile) {
+  fs::path dir = temp_dir("include_segments");
+  std::ifstream in(fs::path(IMPACT3D_SOURCE_DIR) / "decks/keyword/crossed_cylinders.k", std::ios::binary);
+  const std::string deck((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::size_t a = deck.find("*SET_SEGMENT"), b = deck.find("*CONTACT_SURFACE_TO_SURFACE");
+  ASSERT_TRUE(a != std::string::npos && b != std::string::npos && a < b);
+  std::string segs = deck.substr(a, b - a);
+  const std::string first = "        15        34        35        16\n";
+  ASSERT_EQ(segs.find(first), segs.find("$#      n1        n2        n3        n4\n") + 41);
+  segs.replace(segs.find(first), first.size(), "        15        16        35        34\n");  // reversed
+  write_file(dir / "main.k", deck.substr(0, a) + "*INCLUDE\nseg.k\n" + deck.substr(b));
+  write_file(dir / "seg.k", segs + "*END\n");
+  Read r = read_path((dir / "main.k").string());
+  ASSERT_TRUE(r.ok) << r.messages();
+  ASSERT_EQ(r.count(2013), 1) << r.messages();
+  const Diagnostic* w = r.first(2013);
+  EXPECT_NE(w->where.file.find("seg.k"), std::string::npos) << r.messages();
+  EXPECT_EQ(w->where.line, 5) << r.messages();
+}
+
 TEST(KeywordUnsupported, ListedInOnePassOrWarnedWhenLenient) {
   std::string deck = std::string(kPrePostHead) + prepost_nodes() + prepost_elements() +
                      "*CONTROL_SHELL\n$# wrpang\n      20.0\n"

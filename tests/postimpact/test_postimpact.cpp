@@ -29,6 +29,7 @@
 #include "postimpact/plot2d.h"
 #include "postimpact/png_io.h"
 #include "postimpact/quantities.h"
+#include "postimpact/summary.h"
 
 namespace fs = std::filesystem;
 using namespace postimpact;
@@ -521,6 +522,36 @@ TEST(History, RigidWallAndInterfaceForces) {
     s.default_set();
     for (const char* name : {"forces.png", "forces.csv", "energies.csv"})
         EXPECT_TRUE(fs::exists(fs::path(d.str("def")) / name)) << name;
+}
+
+// The summary describes the live mesh: a failed (deleted) solid and the nodes only it held
+// (here element 1's corner node 1, thrown far away) are out of the extents and max_eps, and
+// failed_solids counts them.
+TEST(Summary, LeavesOutFailedSolidsAndTheirOrphanNodes) {
+    TempDir d;
+    PlotGeometry g = block(2, 2, 6, 1e-3);
+    impact3d::PlotWriter w;
+    w.open(d.str("d3plot"), g);
+    PlotState s0 = bar_state(g, 0, 2), s1 = bar_state(g, 1, 2);
+    w.write_state(s0);
+    PlotState s1dead = s1;
+    s1dead.alive.assign(static_cast<std::size_t>(g.num_hexes()), 1);
+    s1dead.alive[0] = 0;
+    s1dead.coords[0] = 1.0;       // node 1 (only element 1 holds it) far away in x
+    s1dead.eps[0] = 99.0;         // and the dead element's strain is out of the maximum
+    w.write_state(s1dead);
+    w.close();
+    impact3d::PlotWriter w2;
+    w2.open(d.str("ref"), g);
+    w2.write_state(s0);
+    w2.write_state(s1);
+    w2.close();
+    const Summary a = summarize(d.str("d3plot"), ""), b = summarize(d.str("ref"), "");
+    ASSERT_TRUE(a.find("failed_solids"));
+    EXPECT_EQ(*a.find("failed_solids"), "1");
+    EXPECT_FALSE(b.find("failed_solids"));
+    EXPECT_EQ(*a.find("xmax"), *b.find("xmax"));
+    EXPECT_NE(*a.find("max_eps"), "99");
 }
 
 TEST(Compare, ForcesAreComparedAndTheirCountsMustAgree) {
