@@ -324,26 +324,26 @@ void SlidingInterfaces::Impl::node_pass(const Model&, const State& s, Interface&
       kpen = contact::max_stable_stiffness(alpha_tssf, dt_k, s.mass[k], s.mass[std::size_t(nm)],
                                            in.symmetric);
     }
+    // velocity of the node relative to the contact point
+    const auto& sg = segs.seg[std::size_t(best)];
+    double vrel[3] = {s.vx[k], s.vy[k], s.vz[k]};
+    for (int a = 0; a < 4; ++a) {
+      const std::size_t ka = std::size_t(sg[std::size_t(a)]);
+      vrel[0] -= N[a] * s.vx[ka];
+      vrel[1] -= N[a] * s.vy[ka];
+      vrel[2] -= N[a] * s.vz[ka];
+    }
     // Penetration can only grow by the node's approach in one step: a node is accepted no
     // deeper than its last cycle's contact force / k (zero for a node not in contact) plus twice
     // its approach in the last step, plus 10% of the largest accepted penetration (the turning
     // of the segment, and nodes that slide in over a segment's edge: 13 um of 353 um in the
-    // crossed cylinders, none refused there).  A node found deeper did not come from outside this segment (it passed
-    // through a deleted face, started inside, or slid under from another segment) and a spring
-    // of that length would throw it out with energy no motion gave it.
-    {
-      const auto& sg = segs.seg[std::size_t(best)];
-      double vrel[3] = {s.vx[k], s.vy[k], s.vz[k]};
-      for (int a = 0; a < 4; ++a) {
-        const std::size_t ka = std::size_t(sg[std::size_t(a)]);
-        vrel[0] -= N[a] * s.vx[ka];
-        vrel[1] -= N[a] * s.vy[ka];
-        vrel[2] -= N[a] * s.vz[ka];
-      }
-      const double approach = -(vrel[0] * bh.n[0] + vrel[1] * bh.n[1] + vrel[2] * bh.n[2]);
-      const double pen_before = kpen > 0 ? prev_force_norm(k) / kpen : 0.0;
-      if (pen > pen_before + 2.0 * std::max(approach, 0.0) * s.dt_half + 0.1 * segs.pmax[std::size_t(best)]) continue;
-    }
+    // crossed cylinders, none refused there).  A node found deeper did not come from outside
+    // this segment (it passed through a deleted face, started inside, or slid under from
+    // another segment) and a spring of that length would throw it out with energy no motion
+    // gave it.
+    const double approach = -(vrel[0] * bh.n[0] + vrel[1] * bh.n[1] + vrel[2] * bh.n[2]);
+    const double pen_before = kpen > 0 ? prev_force_norm(k) / kpen : 0.0;
+    if (pen > pen_before + 2.0 * std::max(approach, 0.0) * s.dt_half + 0.1 * segs.pmax[std::size_t(best)]) continue;
     const double fn = kpen * pen;
     hit.seg = best;
     for (int a = 0; a < 4; ++a) hit.N[a] = N[a];
@@ -351,14 +351,9 @@ void SlidingInterfaces::Impl::node_pass(const Model&, const State& s, Interface&
     hit.pen = pen;
     for (int i = 0; i < 3; ++i) hit.f[i] = fn * bh.n[i];
     if (in.fs > 0 || in.fd > 0) {
-      const auto& sg = segs.seg[std::size_t(best)];
-      double vrel[3] = {s.vx[k], s.vy[k], s.vz[k]};
       double inv_meff = s.mass[k] > 0 ? 1.0 / s.mass[k] : 0.0;
       for (int a = 0; a < 4; ++a) {
         const std::size_t ka = std::size_t(sg[std::size_t(a)]);
-        vrel[0] -= N[a] * s.vx[ka];
-        vrel[1] -= N[a] * s.vy[ka];
-        vrel[2] -= N[a] * s.vz[ka];
         if (s.mass[ka] > 0) inv_meff += N[a] * N[a] / s.mass[ka];
       }
       const double vn = vrel[0] * bh.n[0] + vrel[1] * bh.n[1] + vrel[2] * bh.n[2];
