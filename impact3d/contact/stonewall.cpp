@@ -6,16 +6,17 @@
 namespace impact3d {
 
 namespace {
-// One node against one wall.  Returns the impulse the node received (added to *imp).
-inline void apply_wall_to_node(State& s, int i, const double p[3], const double n[3],
+// One node against one wall moving at vw along its normal (0: fixed).  Returns the impulse the
+// node received (added to *imp).
+inline void apply_wall_to_node(State& s, int i, const double p[3], const double n[3], double vw,
                                double fric, double dt, double imp[3], double& dke) {
   const std::size_t k = std::size_t(i);
   const double mass = s.mass[k];
   if (mass <= 0 || s.rigid_of_node[k] >= 0) return;  // rigid bodies: warning 2012 at input
   const double d = (s.x[k] - p[0]) * n[0] + (s.y[k] - p[1]) * n[1] + (s.z[k] - p[2]) * n[2];
   const double vn = s.vx[k] * n[0] + s.vy[k] * n[1] + s.vz[k] * n[2];
-  if (d + dt * vn >= 0) return;  // stays on the body's side
-  const double vn_new = std::max(vn, -std::max(d, 0.0) / dt);
+  if (d + dt * (vn - vw) >= 0) return;  // stays on the body's side
+  const double vn_new = std::max(vn, vw - std::max(d, 0.0) / dt);
   const double dvn = vn_new - vn;  // >= 0
   double dv[3] = {dvn * n[0], dvn * n[1], dvn * n[2]};
   if (fric > 0) {
@@ -45,19 +46,61 @@ void apply_stonewalls_to_nodes(const Model& m, State& s, double dt, double dt_n)
     double n[3] = {sw.head[0] - sw.tail[0], sw.head[1] - sw.tail[1], sw.head[2] - sw.tail[2]};
     const double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
     for (double& c : n) c /= len;
-    const double p[3] = {sw.tail[0], sw.tail[1], sw.tail[2]};
+    double p[3] = {sw.tail[0], sw.tail[1], sw.tail[2]};  // a point of the wall at time n
     double imp[3] = {0, 0, 0};
     double dke = 0;
+    double vw = 0;
+    if (sw.mass > 0) {
+      // Moving wall: the wall and the nodes it stops reach one normal velocity V (each node
+      // V - gap/dt, so that it ends on the wall), with momentum kept:
+      // M V + sum m (V - g) = M V_old + sum m vn over the nodes that would cross.  Which nodes
+      // cross depends on V: iterate to a fixed set (serial, node order: deterministic).
+      const double V0 = s.wall_vel[w];
+      for (int a = 0; a < 3; ++a) p[a] += s.wall_disp[w] * n[a];
+      double V = V0;
+      auto visit = [&](auto&& f) {
+        if (sw.nodes.empty()) for (int i = 0; i < s.nn; ++i) f(i);
+        else for (int i : sw.nodes) f(i);
+      };
+      for (int it = 0; it < 100; ++it) {
+        double msum = 0, psum = 0;
+        visit([&](int i) {
+          const std::size_t k = std::size_t(i);
+          if (s.mass[k] <= 0 || s.rigid_of_node[k] >= 0) return;
+          const double d = (s.x[k] - p[0]) * n[0] + (s.y[k] - p[1]) * n[1] + (s.z[k] - p[2]) * n[2];
+          const double vn = s.vx[k] * n[0] + s.vy[k] * n[1] + s.vz[k] * n[2];
+          const double g = std::max(d, 0.0) / dt;
+          if (vn < V - g) {
+            msum += s.mass[k];
+            psum += s.mass[k] * (vn + g);
+          }
+        });
+        const double Vn = (sw.mass * V0 + psum) / (sw.mass + msum);
+        if (Vn == V) break;
+        V = Vn;
+      }
+      vw = V;
+    }
     // serial, in node order: the sums are the same for any thread count
     if (sw.nodes.empty()) {
-      for (int i = 0; i < s.nn; ++i) apply_wall_to_node(s, i, p, n, sw.friction, dt, imp, dke);
+      for (int i = 0; i < s.nn; ++i) apply_wall_to_node(s, i, p, n, vw, sw.friction, dt, imp, dke);
     } else {
-      for (int i : sw.nodes) apply_wall_to_node(s, i, p, n, sw.friction, dt, imp, dke);
+      for (int i : sw.nodes) apply_wall_to_node(s, i, p, n, vw, sw.friction, dt, imp, dke);
+    }
+    if (sw.mass > 0) {
+      // the wall takes the opposite normal impulse
+      const double in = imp[0] * n[0] + imp[1] * n[1] + imp[2] * n[2];
+      s.wall_vel[w] -= in / sw.mass;
     }
     // force on the wall = - impulse given to the nodes / dt
     for (int a = 0; a < 3; ++a) s.wall_force[w][std::size_t(a)] = -imp[a] / dt_n;
     s.wall_work += dke;
   }
+}
+
+void update_moving_walls(const Model& m, State& s, double dt) {
+  for (std::size_t w = 0; w < m.walls.size(); ++w)
+    if (m.walls[w].mass > 0) s.wall_disp[w] += dt * s.wall_vel[w];
 }
 
 }  // namespace impact3d

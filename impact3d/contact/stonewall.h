@@ -14,4 +14,9 @@ namespace impact3d {
 // (s.wall_work).
 void apply_stonewalls_to_nodes(const Model& m, State& s, double dt_next, double dt_n);
 
+// Moving walls (mass > 0) translate along their normal with their velocity over the step, like
+// the nodes (x^{n+1} = x^n + dt v^{n+1/2}).  The velocity changes in apply_stonewalls_to_nodes
+// by the opposite of the impulse the wall gives its nodes, so momentum is kept exactly.
+void update_moving_walls(const Model& m, State& s, double dt_next);
+
 }  // namespace impact3d

@@ -222,9 +222,10 @@ class KeywordWriter {
   void walls() {
     for (const StoneWall& w : m_.walls) {
       int sid = w.nodes.empty() ? 0 : node_set(w.nodes);
-      os_ << "*RIGIDWALL_PLANAR\n$#    nsid\n" << kcard({I(sid)}) << "\n"
+      os_ << (w.mass > 0 ? "*RIGIDWALL_PLANAR_MOVING\n" : "*RIGIDWALL_PLANAR\n") << "$#    nsid\n" << kcard({I(sid)}) << "\n"
           << "$#      xt        yt        zt        xh        yh        zh      fric\n"
           << kcard({R(w.tail[0]), R(w.tail[1]), R(w.tail[2]), R(w.head[0]), R(w.head[1]), R(w.head[2]), R(w.friction)}) << "\n";
+      if (w.mass > 0) os_ << "$#    mass        v0\n" << kcard({R(w.mass), R(w.v0)}) << "\n";
     }
   }
 
@@ -413,8 +414,9 @@ void write_fixed_deck(std::ostream& os, const Model& m, std::vector<std::string>
   }
   if (!m.walls.empty()) os << "*----- STONEWALLS\n";
   for (const StoneWall& w : m.walls) {
-    os << L("stonewall").i(1, 5, int(w.nodes.size())).r(11, 20, w.tail[0]).r(21, 30, w.tail[1]).r(31, 40, w.tail[2])
+    os << L("stonewall").i(1, 5, int(w.nodes.size())).i(6, 10, w.mass > 0 ? 1 : 0).r(11, 20, w.tail[0]).r(21, 30, w.tail[1]).r(31, 40, w.tail[2])
               .r(41, 50, w.head[0]).r(51, 60, w.head[1]).r(61, 70, w.head[2]).r(71, 80, w.friction).str() << "\n";
+    if (w.mass > 0) os << L("moving stonewall").r(1, 10, w.mass).r(11, 20, w.v0).str() << "\n";
     for (std::size_t j = 0; j < w.nodes.size(); j += 10) {
       FixedLine c = L("stonewall nodes");
       for (std::size_t q = j; q < std::min(j + 10, w.nodes.size()); ++q) c.i(1 + 8 * int(q - j), 8 + 8 * int(q - j), w.nodes[q] + 1);
@@ -574,6 +576,8 @@ std::vector<std::string> model_differences(const Model& a, const Model& b, int m
       D(s + "head", x.head[std::size_t(q)], y.head[std::size_t(q)]);
     }
     D(s + "friction", x.friction, y.friction);
+    D(s + "mass", x.mass, y.mass);
+    D(s + "V0", x.v0, y.v0);
     if (x.nodes != y.nodes) diff(s + "nodes", std::to_string(x.nodes.size()), std::to_string(y.nodes.size()));
   }
   N("initial velocities", long(a.init_velocities.size()), long(b.init_velocities.size()));

@@ -609,7 +609,8 @@ class Dyna3dReader {
       StoneWall sw;
       sw.line = c.line();
       int nsn = int(c.i(1, 5, "NSN"));
-      c.i(6, 10, "unused");
+      const long long moving = c.i(6, 10, "moving flag");
+      if (moving != 0 && moving != 1) c.error(1006, 6, 10, "moving flag", "0 fixed, 1 moving (a card with MASS and V0 follows)");
       const char* names[] = {"XT", "YT", "ZT", "XH", "YH", "ZH"};
       for (int f = 0; f < 3; ++f) sw.tail[std::size_t(f)] = c.e(11 + 10 * f, 20 + 10 * f, names[f]);
       for (int f = 0; f < 3; ++f) sw.head[std::size_t(f)] = c.e(41 + 10 * f, 50 + 10 * f, names[3 + f]);
@@ -623,6 +624,12 @@ class Dyna3dReader {
       if (nsn < 0 || nsn > m_.control.numnp) {
         c.error(1003, 1, 5, "NSN", "0 (all nodes) to NUMNP");
         nsn = 0;
+      }
+      if (moving == 1) {  // IMPACT-3D choice: card 2, MASS (cols 1-10) and V0 (11-20)
+        Card c2 = next(name + " card 2 (moving wall)", "expected the moving wall's MASS and V0 card");
+        sw.mass = c2.e(1, 10, "MASS");
+        sw.v0 = c2.e(11, 20, "V0");
+        if (!(sw.mass > 0)) c2.error(1003, 1, 10, "MASS", "a moving wall needs a positive mass");
       }
       read_node_list(sw.nodes, nsn, name);
       m_.walls.push_back(std::move(sw));

@@ -202,6 +202,7 @@ struct Block {
   KLine kw;
   bool long_fmt = false, i10 = false;
   bool title_opt = false, id_opt = false;  // _TITLE / _ID option cards
+  bool moving_opt = false;                 // *RIGIDWALL_PLANAR_MOVING: card 3 MASS, V0
   std::vector<KLine> data;
 };
 
@@ -597,7 +598,7 @@ class KeywordReader {
         "SET_PART", "SET_SEGMENT", "SET_NODE_LIST_GENERATE", "CONTACT_SURFACE_TO_SURFACE",
         "CONTACT_AUTOMATIC_SURFACE_TO_SURFACE", "CONTACT_NODES_TO_SURFACE"};
     static const std::set<std::string> with_id = {
-        "RIGIDWALL_PLANAR", "CONTACT_SURFACE_TO_SURFACE", "CONTACT_AUTOMATIC_SURFACE_TO_SURFACE",
+        "RIGIDWALL_PLANAR", "RIGIDWALL_PLANAR_MOVING", "CONTACT_SURFACE_TO_SURFACE", "CONTACT_AUTOMATIC_SURFACE_TO_SURFACE",
         "CONTACT_NODES_TO_SURFACE", "BOUNDARY_SPC_NODE", "BOUNDARY_SPC_SET"};
     if (ends("_TITLE") && titled.count(n.substr(0, n.size() - 6))) {
       title = true;
@@ -623,6 +624,10 @@ class KeywordReader {
   void parse_blocks() {
     for (Block& b : blocks_) {
       std::string n = base_name(b.name, b.title_opt, b.id_opt);
+      if (n == "RIGIDWALL_PLANAR_MOVING") {
+        n = "RIGIDWALL_PLANAR";
+        b.moving_opt = true;
+      }
       b.name = n;
       if (n == "KEYWORD" || n == "INCLUDE") continue;
       if (n == "COMMENT") {
@@ -1220,8 +1225,16 @@ class KeywordReader {
       if (!(len > 1e-12 * scale) || len == 0) c2.error(1213, 0, "XT-ZH");
       if (!(w.w.friction >= 0 && w.w.friction <= 1)) c2.error(1219, 6, "FRIC");
       w.w.line = c.line();
-      walls_.push_back(std::move(w));
       k += 2;
+      if (b.moving_opt) {
+        if (k >= b.data.size()) { missing_card(b, "card 3 (MASS, V0)"); return; }
+        KCard c3 = card(b, k, "card 3", W(b, 2));
+        w.w.mass = c3.r(0, "MASS");
+        w.w.v0 = c3.r(1, "V0");
+        if (!(w.w.mass > 0)) c3.error(1003, 0, "MASS", "a moving wall needs a positive mass");
+        ++k;
+      }
+      walls_.push_back(std::move(w));
     }
   }
 

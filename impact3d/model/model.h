@@ -57,6 +57,9 @@ struct MaterialData {
 struct StoneWall {
   std::array<double, 3> tail{}, head{};
   double friction = 0;   // 0 frictionless, 1 stick, between Coulomb
+  // moving wall (mass > 0): a rigid plate of this mass that translates along its normal, with
+  // initial velocity v0 along the normal (tail -> head); the nodes' impulses act on it
+  double mass = 0, v0 = 0;
   std::vector<int> nodes;  // 0-based; empty = all nodes
   int line = 0;
 };

@@ -75,6 +75,7 @@ struct State {
   double wall_work = 0, contact = 0, external_work = 0;
   double initial_total = 0;
   std::vector<std::array<double, 3>> wall_force;  // force on each wall this cycle
+  std::vector<double> wall_disp, wall_vel;        // moving walls: displacement and velocity along the normal
 
   // Every field that changes during the run, for restart dumps: a dump restores these on top
   // of a State built by initialize_state from the same Model, and the run goes on bit for bit.
@@ -87,7 +88,7 @@ struct State {
     v(ie_e); v(hg_e); v(bv_e); v(dt_e); v(de_ie); v(de_hg); v(de_bv);
     v(time); v(cycle); v(dt_half); v(dt_next); v(dt_elem); v(dt0);
     v(kinetic); v(internal); v(hourglass); v(bulk_viscous); v(wall_work); v(contact);
-    v(external_work); v(initial_total); v(wall_force);
+    v(external_work); v(initial_total); v(wall_force); v(wall_disp); v(wall_vel);
     for (RigidBody& rb : rigid) {
       v(rb.com); v(rb.vcom); v(rb.rot); v(rb.omega); v(rb.ang_mom);
     }

@@ -114,8 +114,9 @@ void write_model_summary(std::ostream& os, const Model& m) {
          << (sw.friction == 0 ? std::string("frictionless")
              : sw.friction == 1 ? std::string("stick")
                                 : "Coulomb friction " + fmt("%.4g", sw.friction))
-         << ", nodes: " << (sw.nodes.empty() ? std::string("all") : std::to_string(sw.nodes.size()))
-         << "\n";
+         << ", nodes: " << (sw.nodes.empty() ? std::string("all") : std::to_string(sw.nodes.size()));
+      if (sw.mass > 0) os << ", moving: mass " << fmt("%.6e", sw.mass) << ", initial velocity " << fmt("%.6e", sw.v0) << " along the normal";
+      os << "\n";
     }
     os << "\n";
   }

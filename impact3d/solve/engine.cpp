@@ -130,6 +130,7 @@ StepStatus Engine::step() {
     s.z[k] += dt_next * s.vz[k];
   }
   if (!s.rigid.empty()) update_rigid_body_positions(s, dt_next);
+  if (!m_.walls.empty()) update_moving_walls(m_, s, dt_next);
   s.time += dt_next;
   s.cycle += 1;
   s.dt_half = dt_next;

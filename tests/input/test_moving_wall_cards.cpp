@@ -1,0 +1,78 @@
+// Moving stonewalls in the input: fixed format card 1 columns 6-10 = 1 and a card with MASS
+// (1-10) and V0 (11-20) (IMPACT-3D choice); *RIGIDWALL_PLANAR_MOVING (and _MOVING_ID) card 3
+// MASS, V0; the converter both ways; errors with card and columns.
+#include <gtest/gtest.h>
+
+#include <sstream>
+#include <string>
+
+#include "impact3d/input/deck_writer.h"
+#include "tests/input/input_test_util.h"
+
+using namespace impact3d;
+using namespace impact3d::testing;
+
+namespace {
+
+const std::string kWall = "    0    00.0000e+000.0000e+00-1.000e-040.0000e+000.0000e+001.0000e+000.0000e+00\n";
+
+std::string tiny_with_wall(const std::string& flag, const std::string& card2) {
+  std::string t = tiny_deck();
+  const std::size_t at = t.find(kWall);
+  EXPECT_NE(at, std::string::npos);
+  std::string wall = kWall;
+  wall.replace(5, 5, flag);
+  return t.replace(at, kWall.size(), wall + card2);
+}
+
+bool read_any(const std::string& text, Model& m, Diagnostics& d, const std::string& name) {
+  DeckFile deck;
+  deck.load_from_string(name, text);
+  return read_deck(deck, m, d, InputOptions{}) && check_model(m, d) && d.error_count() == 0;
+}
+
+}  // namespace
+
+TEST(MovingWallCards, FixedFormatKeywordAndBack) {
+  Model m;
+  Diagnostics d;
+  ASSERT_TRUE(read_string(tiny_with_wall("    1", "1.0000e+02-5.000e+00\n"), m, d)) << all_messages(d);
+  ASSERT_EQ(m.walls.size(), 1u);
+  EXPECT_EQ(m.walls[0].mass, 100.0);
+  EXPECT_EQ(m.walls[0].v0, -5.0);
+  std::ostringstream kw;
+  write_keyword_deck(kw, m);
+  EXPECT_NE(kw.str().find("*RIGIDWALL_PLANAR_MOVING\n"), std::string::npos);
+  Model k;
+  Diagnostics dk;
+  ASSERT_TRUE(read_any(kw.str(), k, dk, "w.k")) << all_messages(dk);
+  EXPECT_TRUE(model_differences(m, k).empty());
+  std::ostringstream fx;
+  write_fixed_deck(fx, k);
+  Model back;
+  Diagnostics db;
+  ASSERT_TRUE(read_any(fx.str(), back, db, "w.dyn")) << all_messages(db);
+  EXPECT_TRUE(model_differences(m, back).empty());
+  // _MOVING_ID: the id card first
+  std::string text = kw.str();
+  text.replace(text.find("*RIGIDWALL_PLANAR_MOVING\n"), 25, "*RIGIDWALL_PLANAR_MOVING_ID\n         7floor\n");
+  Model id;
+  Diagnostics di;
+  ASSERT_TRUE(read_any(text, id, di, "id.k")) << all_messages(di);
+  EXPECT_EQ(id.walls[0].mass, 100.0);
+}
+
+TEST(MovingWallCards, ErrorsNameCardAndColumns) {
+  Model m;
+  Diagnostics d;
+  EXPECT_FALSE(read_string(tiny_with_wall("    1", "0.0000e+00-5.000e+00\n"), m, d));
+  const std::string msg = all_messages(d);
+  EXPECT_TRUE(d.has(1003)) << msg;
+  EXPECT_NE(msg.find("MASS"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("cols 1-10"), std::string::npos) << msg;
+  Model m2;
+  Diagnostics d2;
+  EXPECT_FALSE(read_string(tiny_with_wall("    2", ""), m2, d2));
+  EXPECT_TRUE(d2.has(1006)) << all_messages(d2);
+  EXPECT_NE(all_messages(d2).find("cols 6-10"), std::string::npos) << all_messages(d2);
+}
