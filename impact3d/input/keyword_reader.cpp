@@ -279,6 +279,9 @@ struct RVelocity {       // one initial-velocity definition, in deck order
   int id = 0;
   Ref ref;
   std::array<double, 3> v{};
+  // *INITIAL_VELOCITY_GENERATION: rotation OMEGA about the axis through xc along n (unit)
+  double omega = 0;
+  std::array<double, 3> xc{}, n{};
 };
 struct RSpc {
   bool set = false;
@@ -1108,14 +1111,22 @@ class KeywordReader {
       else if (styp == 2) v.kind = RVelocity::part;
       else if (styp == 3) v.kind = RVelocity::node_set;
       else c.error(1006, 1, "STYP", "1 part set, 2 part, 3 node set");
-      if (c.r(2, "OMEGA") != 0) c.error(1102, 2, "OMEGA", "initial angular velocity");
+      v.omega = c.r(2, "OMEGA");
       v.v = {c.r(3, "VX"), c.r(4, "VY"), c.r(5, "VZ")};
       if (c.i(6, "IVATN") != 0) c.error(1102, 6, "IVATN", "slave parts of rigid bodies");
       if (c.i(7, "ICID") != 0) c.error(1102, 7, "ICID", "local coordinate systems");
       if (k + 1 < b.data.size()) {
         KCard c2 = card(b, k + 1, "card 2", W(b, 8));
-        for (int f = 0; f < 7; ++f) c2.r(f, "XC/YC/ZC/NX/NY/NZ/PHASE");
+        const char* names[] = {"XC", "YC", "ZC", "NX", "NY", "NZ"};
+        for (int f = 0; f < 3; ++f) v.xc[std::size_t(f)] = c2.r(f, names[f]);
+        for (int f = 0; f < 3; ++f) v.n[std::size_t(f)] = c2.r(3 + f, names[3 + f]);
+        if (c2.r(6, "PHASE") != 0) c2.error(2006, 6, "PHASE", "no dynamic relaxation: velocities apply at time 0");
         c2.i(7, "IRIGID");
+        const double len = std::sqrt(v.n[0] * v.n[0] + v.n[1] * v.n[1] + v.n[2] * v.n[2]);
+        if (v.omega != 0 && !(len > 0)) c2.error(1003, 3, "NX", "the rotation axis NX NY NZ must not be zero when OMEGA is given");
+        else if (len > 0) for (double& a : v.n) a /= len;
+      } else if (v.omega != 0) {
+        c.error(1316, 2, "OMEGA", "OMEGA needs card 2 (the axis: XC YC ZC NX NY NZ)");
       }
       if (styp >= 1 && styp <= 3) velocities_.push_back(v);
     }
@@ -1747,6 +1758,21 @@ class KeywordReader {
     }
   }
 
+  // translation v.v plus, with OMEGA, the rotation OMEGA n x (x - xc): node by node
+  void add_generated_velocities(const std::vector<int>& nodes, const RVelocity& v) {
+    if (v.omega == 0) {
+      add_velocity_nodes(nodes, v.v);
+      return;
+    }
+    for (int i : nodes) {
+      const double r[3] = {m_.x[std::size_t(i)] - v.xc[0], m_.y[std::size_t(i)] - v.xc[1], m_.z[std::size_t(i)] - v.xc[2]};
+      const std::array<double, 3> vi = {v.v[0] + v.omega * (v.n[1] * r[2] - v.n[2] * r[1]),
+                                        v.v[1] + v.omega * (v.n[2] * r[0] - v.n[0] * r[2]),
+                                        v.v[2] + v.omega * (v.n[0] * r[1] - v.n[1] * r[0])};
+      add_velocity_nodes({i}, vi);
+    }
+  }
+
   void resolve_velocities() {
     for (const RVelocity& v : velocities_) {
       switch (v.kind) {
@@ -1766,19 +1792,17 @@ class KeywordReader {
         }
         case RVelocity::node_set:
           if (const RIdList* s = find_node_set(v.id, v.ref, "*INITIAL_VELOCITY", "NSID"))
-            add_velocity_nodes(set_nodes(*s, "*SET_NODE_LIST " + std::to_string(v.id)), v.v);
+            add_generated_velocities(set_nodes(*s, "*SET_NODE_LIST " + std::to_string(v.id)), v);
           break;
         case RVelocity::part:
         case RVelocity::part_set:
-          add_velocity_nodes(nodes_of_parts(parts_of(v.kind == RVelocity::part_set, v.id, v.ref, "*INITIAL_VELOCITY_GENERATION", "ID")), v.v);
+          add_generated_velocities(nodes_of_parts(parts_of(v.kind == RVelocity::part_set, v.id, v.ref, "*INITIAL_VELOCITY_GENERATION", "ID")), v);
           break;
       }
     }
     m_.control.num_init_velocity_cards = int(m_.init_velocities.size());
   }
 
-  // Exterior faces of the elements of the parts (faces not shared by two of those elements),
-  // in element and face order, outward counter-clockwise; triangles as n1 n2 n3 n3.
   // index of a file in Model::source_files (registered on first use)
   int file_index(const DeckFile* f) {
     if (!f) return -1;
@@ -1788,6 +1812,8 @@ class KeywordReader {
     return int(m_.source_files.size()) - 1;
   }
 
+  // Exterior faces of the elements of the parts (faces not shared by two of those elements),
+  // in element and face order, outward counter-clockwise; triangles as n1 n2 n3 n3.
   void exterior_faces(const std::vector<int>& parts, const std::vector<char>* node_filter,
                       std::vector<std::array<int, 4>>& out, std::vector<int>& lines, std::vector<int>& files) {
     std::vector<int> elems;
