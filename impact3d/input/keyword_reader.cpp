@@ -68,6 +68,14 @@ struct KLine {
 
 // One data card of a keyword: fields by index, in fixed columns (widths) or, when the line has
 // a comma, by comma-separated tokens.
+// *PARAMETER values, by upper-case name: 'R' real, 'I' integer, 'C' text.
+struct Param {
+  char type = 'R';
+  double value = 0;
+  std::string text;
+};
+using ParamTable = std::map<std::string, Param>;
+
 class KCard {
  public:
   KCard(const KLine& l, std::string card, const std::vector<int>& widths, Diagnostics& diag)
@@ -104,7 +112,28 @@ class KCard {
   }
 
   int fields() const { return int(cols_.size()); }
-  std::string text(int k) const {
+  void set_params(const ParamTable* p) { params_ = p; }
+  // The field's text, with a *PARAMETER reference "&name" or "-&name" replaced by the value
+  // (an undefined name is error 1310; the text is then left as it is, and fails as a number).
+  std::string text(int k, const char* field = nullptr) {
+    std::string t = literal(k);
+    if (!params_ || t.empty()) return t;
+    const bool neg = t[0] == '-' && t.size() > 1 && t[1] == '&';
+    if (t[0] != '&' && !neg) return t;
+    std::string name = t.substr(neg ? 2 : 1);
+    for (char& ch : name) ch = char(std::toupper(static_cast<unsigned char>(ch)));
+    auto it = params_->find(name);
+    if (it == params_->end() || it->second.type == 'C') {
+      error(1310, k, field, it == params_->end() ? "parameter &" + name + " is not defined by *PARAMETER"
+                                                   : "parameter &" + name + " is text, not a number");
+      bad_.push_back(k);
+      return {};
+    }
+    char buf[40];
+    std::snprintf(buf, sizeof buf, "%.17g", neg ? -it->second.value : it->second.value);
+    return buf;
+  }
+  std::string literal(int k) const {
     if (k >= fields()) return {};
     const std::string& t = l_.line->text;
     auto [c1, c2] = cols_[std::size_t(k)];
@@ -118,16 +147,19 @@ class KCard {
     if (std::size_t(c1 - 1) >= t.size()) return {};
     return rtrim(t.substr(std::size_t(c1 - 1), std::size_t(c2 - c1 + 1)));
   }
-  bool blank(int k) const { return text(k).empty(); }
+  bool blank(int k) const { return literal(k).empty(); }
 
   long long i(int k, const char* field, long long def = 0) {
     long long v = def;
-    FieldStatus st = parse_fortran_int(text(k), v);
+    const std::size_t nbad = bad_.size();
+    const std::string t = text(k, field);
+    if (bad_.size() != nbad) return def;  // an undefined parameter (reported)
+    FieldStatus st = parse_fortran_int(t, v);
     if (st == FieldStatus::ok) return v;
     if (st == FieldStatus::bad) {
       // Some tools write integer fields as reals with a zero fraction ("1.", "0.0").
       double r = 0;
-      if (parse_fortran_real(text(k), r) == FieldStatus::ok && r == std::floor(r) &&
+      if (parse_fortran_real(t, r) == FieldStatus::ok && r == std::floor(r) &&
           std::fabs(r) < 2e9)
         return static_cast<long long>(r);
       error(1001, k, field);
@@ -137,7 +169,10 @@ class KCard {
   }
   double r(int k, const char* field, double def = 0.0) {
     double v = def;
-    FieldStatus st = parse_fortran_real(text(k), v);
+    const std::size_t nbad = bad_.size();
+    const std::string t = text(k, field);
+    if (bad_.size() != nbad) return def;  // an undefined parameter (reported)
+    FieldStatus st = parse_fortran_real(t, v);
     if (st == FieldStatus::ok) return v;
     if (st == FieldStatus::bad) {
       error(1002, k, field);
@@ -194,6 +229,7 @@ class KCard {
   bool free_ = false;
   std::vector<std::pair<int, int>> cols_;
   std::vector<int> bad_;
+  const ParamTable* params_ = nullptr;
 };
 
 struct Block {
@@ -332,6 +368,7 @@ class KeywordReader {
     std::vector<std::string> stack;
     check_first_line();
     scan(main_, 0, stack);
+    collect_parameters();
     parse_blocks();
     report_unsupported();
     resolve();
@@ -354,6 +391,7 @@ class KeywordReader {
   std::map<int, RMat> mats_;
   std::map<int, RHourglass> hourglasses_;
   std::map<int, RIdList> node_sets_, part_sets_;
+  ParamTable params_;                    // *PARAMETER values
   std::map<int, RSegSet> seg_sets_;
   std::vector<RContact> contacts_;
   std::vector<RWall> walls_;
@@ -560,7 +598,45 @@ class KeywordReader {
   }
 
   KCard card(const Block& b, std::size_t k, const std::string& what, const std::vector<int>& widths) {
-    return KCard(b.data[k], b.keyword + (what.empty() ? "" : " " + what), widths, diag_);
+    KCard c(b.data[k], b.keyword + (what.empty() ? "" : " " + what), widths, diag_);
+    c.set_params(&params_);
+    return c;
+  }
+
+  // *PARAMETER: cards of four pairs PRMR (10 columns: type R, I or C, then the name) and VAL
+  // (10 columns).  Read before every other keyword, so a reference may come before or after
+  // its definition; a name defined twice is error 1200.
+  void collect_parameters() {
+    for (Block& b : blocks_) {
+      if (b.name != "PARAMETER") continue;
+      for (std::size_t k = 0; k < b.data.size(); ++k) {
+        if (is_blank(b.data[k].line->text)) continue;
+        KCard c(b.data[k], b.keyword, W(b, 8), diag_);  // no substitution inside *PARAMETER
+        for (int f = 0; f + 1 < 8; f += 2) {
+          std::string pr = c.literal(f);
+          if (pr.empty()) continue;
+          const char type = char(std::toupper(static_cast<unsigned char>(pr[0])));
+          std::string name = pr.substr(1);
+          const std::size_t s = name.find_first_not_of(' ');
+          name = s == std::string::npos ? std::string() : name.substr(s);
+          for (char& ch : name) ch = char(std::toupper(static_cast<unsigned char>(ch)));
+          if ((type != 'R' && type != 'I' && type != 'C') || name.empty() || name.find(' ') != std::string::npos) {
+            c.error(1006, f, "PRMR", "a type letter R, I or C followed by the parameter name");
+            continue;
+          }
+          Param p;
+          p.type = type;
+          if (type == 'C') {
+            p.text = c.literal(f + 1);
+          } else if (type == 'I') {
+            p.value = double(c.i(f + 1, "VAL"));
+          } else {
+            p.value = c.r(f + 1, "VAL");
+          }
+          if (!params_.emplace(name, p).second) c.error(1200, f, "PRMR", "parameter " + name + " is defined twice");
+        }
+      }
+    }
   }
 
   // Option cards (_ID / _TITLE) at the start of a block: returns the number of lines used.
@@ -626,6 +702,7 @@ class KeywordReader {
 
   void parse_blocks() {
     for (Block& b : blocks_) {
+      if (b.name == "PARAMETER") continue;  // read first (collect_parameters)
       std::string n = base_name(b.name, b.title_opt, b.id_opt);
       if (n == "RIGIDWALL_PLANAR_MOVING") {
         n = "RIGIDWALL_PLANAR";

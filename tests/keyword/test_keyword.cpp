@@ -357,6 +357,35 @@ TEST(KeywordRead, InitialVelocityGenerationWithOmega) {
   EXPECT_EQ(rb.count(1003), 1) << rb.messages();
 }
 
+// *PARAMETER: R / I values referenced as &name or -&name in any numeric field, before or after
+// their definition, in any case; an undefined name is error 1310 naming the field; a name
+// defined twice is error 1200.
+TEST(KeywordRead, ParametersSubstituteIntoFields) {
+  std::string deck = prepost_deck();
+  const std::string mat = "        127.85000E-9  150000.0      0.34     390.0      90.0       0.0\n";
+  ASSERT_NE(deck.find(mat), std::string::npos);
+  deck.replace(deck.find(mat), mat.size(), "        127.85000E-9      &E        0.34    &sigy      90.0       0.0\n");
+  const std::string vel = "  -2.75E+4       0.0       0.0";
+  ASSERT_NE(deck.find(vel), std::string::npos);
+  deck.replace(deck.find(vel), vel.size(), "     -&V0       0.0       0.0");
+  deck.insert(deck.find("*PART"), "*PARAMETER\n$#   prmr1      val1     prmr2      val2\nR e         150000.0R sigy         390.0\nI v0           27500\n");
+  Read r = read_text(deck);
+  ASSERT_TRUE(r.ok) << r.messages();
+  Read plain = read_text(prepost_deck());
+  ASSERT_TRUE(plain.ok);
+  EXPECT_EQ(join(model_differences(plain.m, r.m)), "");
+  // undefined and duplicated names
+  std::string bad = deck;
+  bad.replace(bad.find("&sigy"), 5, "&sigx");
+  bad.insert(bad.find("*PART"), "*PARAMETER\nR E              1.0\n");
+  Read rb = read_text(bad);
+  EXPECT_FALSE(rb.ok);
+  EXPECT_EQ(rb.count(1310), 1) << rb.messages();
+  EXPECT_NE(rb.messages().find("SIGY"), std::string::npos) << rb.messages();
+  EXPECT_NE(rb.messages().find("&SIGX"), std::string::npos) << rb.messages();
+  EXPECT_EQ(rb.count(1200), 1) << rb.messages();
+}
+
 TEST(KeywordRead, HourglassKeywordOverridesControl) {
   std::string deck = prepost_deck();
   std::string from = "         7         3        12         0         0         0         0         0\n";
