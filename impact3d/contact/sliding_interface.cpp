@@ -58,6 +58,7 @@ struct Hit {
   double f[3] = {0, 0, 0};   // total force on the node (normal + friction)
   double fn = 0, pen = 0;
   int evaluations = 0;
+  bool refused = false;  // deeper than penetration growth allows: not caught
 };
 
 struct Pass {
@@ -343,7 +344,10 @@ void SlidingInterfaces::Impl::node_pass(const Model&, const State& s, Interface&
     // gave it.
     const double approach = -(vrel[0] * bh.n[0] + vrel[1] * bh.n[1] + vrel[2] * bh.n[2]);
     const double pen_before = kpen > 0 ? prev_force_norm(k) / kpen : 0.0;
-    if (pen > pen_before + 2.0 * std::max(approach, 0.0) * s.dt_half + 0.1 * segs.pmax[std::size_t(best)]) continue;
+    if (pen > pen_before + 2.0 * std::max(approach, 0.0) * s.dt_half + 0.1 * segs.pmax[std::size_t(best)]) {
+      hit.refused = true;
+      continue;
+    }
     const double fn = kpen * pen;
     hit.seg = best;
     for (int a = 0; a < 4; ++a) hit.N[a] = N[a];
@@ -445,6 +449,7 @@ void SlidingInterfaces::apply(const Model& m, State& s, double dt) {
         const Hit& h = ps.hits[q];
         ++im.stats.nodes;
         im.stats.evaluations += h.evaluations;
+        im.stats.refused += h.refused ? 1 : 0;
         if (h.seg < 0) continue;
         ++im.stats.contacts;
         im.max_pen = std::max(im.max_pen, h.pen);

@@ -36,6 +36,7 @@ class SlidingInterfaces {
   // evaluations, nodes in contact.  The evaluations grow linearly with the nodes.
   struct SearchStats {
     long nodes = 0, evaluations = 0, contacts = 0;
+    long refused = 0;  // nodes found deeper than penetration growth allows (not caught)
   };
   SearchStats search_stats() const;
 

@@ -38,6 +38,13 @@ inline void apply_wall_to_node(State& s, int i, const double p[3], const double 
   dke -= mass * (dv[0] * vmx + dv[1] * vmy + dv[2] * vmz);
   for (int a = 0; a < 3; ++a) imp[a] += mass * dv[a];
 }
+// The node cannot move along n: each axis n has a component on is fixed (boundary code).
+inline bool held_along(const State& s, std::size_t k, const double n[3]) {
+  const double big = std::max({std::fabs(n[0]), std::fabs(n[1]), std::fabs(n[2])});
+  for (int a = 0; a < 3; ++a)
+    if (std::fabs(n[a]) > 1e-12 * big && !(s.fix[k] & (1u << a))) return false;
+  return true;
+}
 }  // namespace
 
 void apply_stonewalls_to_nodes(const Model& m, State& s, double dt, double dt_n) {
@@ -50,6 +57,7 @@ void apply_stonewalls_to_nodes(const Model& m, State& s, double dt, double dt_n)
     double imp[3] = {0, 0, 0};
     double dke = 0;
     double vw = 0;
+    bool stopped = false;  // a moving wall stopped by a held node
     if (sw.mass > 0) {
       // Moving wall: the wall and the nodes it stops reach one normal velocity V (each node
       // V - gap/dt, so that it ends on the wall), with momentum kept:
@@ -62,11 +70,21 @@ void apply_stonewalls_to_nodes(const Model& m, State& s, double dt, double dt_n)
         if (sw.nodes.empty()) for (int i = 0; i < s.nn; ++i) f(i);
         else for (int i : sw.nodes) f(i);
       };
+      // Nodes held along the normal by their boundary codes (and rigid-body nodes, which walls
+      // skip) are supports, not mass: the wall stops short of crossing a held node (the support
+      // takes the rest of its momentum).
+      double v_stop = INFINITY;
+      visit([&](int i) {
+        const std::size_t k = std::size_t(i);
+        if (s.rigid_of_node[k] >= 0 || !held_along(s, k, n)) return;
+        const double d = (s.x[k] - p[0]) * n[0] + (s.y[k] - p[1]) * n[1] + (s.z[k] - p[2]) * n[2];
+        v_stop = std::min(v_stop, std::max(d, 0.0) / dt);
+      });
       for (int it = 0; it < 100; ++it) {
         double msum = 0, psum = 0;
         visit([&](int i) {
           const std::size_t k = std::size_t(i);
-          if (s.mass[k] <= 0 || s.rigid_of_node[k] >= 0) return;
+          if (s.mass[k] <= 0 || s.rigid_of_node[k] >= 0 || held_along(s, k, n)) return;
           const double d = (s.x[k] - p[0]) * n[0] + (s.y[k] - p[1]) * n[1] + (s.z[k] - p[2]) * n[2];
           const double vn = s.vx[k] * n[0] + s.vy[k] * n[1] + s.vz[k] * n[2];
           const double g = std::max(d, 0.0) / dt;
@@ -79,22 +97,32 @@ void apply_stonewalls_to_nodes(const Model& m, State& s, double dt, double dt_n)
         if (Vn == V) break;
         V = Vn;
       }
-      vw = V;
+      stopped = V > v_stop;
+      vw = stopped ? v_stop : V;
     }
-    // serial, in node order: the sums are the same for any thread count
+    // serial, in node order: the sums are the same for any thread count (a moving wall leaves
+    // its held nodes to their supports)
+    const bool moving = sw.mass > 0;
+    auto apply = [&](int i) {
+      if (moving && held_along(s, std::size_t(i), n)) return;
+      apply_wall_to_node(s, i, p, n, vw, sw.friction, dt, imp, dke);
+    };
     if (sw.nodes.empty()) {
-      for (int i = 0; i < s.nn; ++i) apply_wall_to_node(s, i, p, n, vw, sw.friction, dt, imp, dke);
+      for (int i = 0; i < s.nn; ++i) apply(i);
     } else {
-      for (int i : sw.nodes) apply_wall_to_node(s, i, p, n, vw, sw.friction, dt, imp, dke);
+      for (int i : sw.nodes) apply(i);
     }
-    if (sw.mass > 0) {
-      // the wall takes the opposite normal impulse
+    if (moving) {
+      // the wall takes the opposite normal impulse; stopped by a held node, it moves at vw
       const double in = imp[0] * n[0] + imp[1] * n[1] + imp[2] * n[2];
-      s.wall_vel[w] -= in / sw.mass;
+      s.wall_vel[w] = stopped ? vw : s.wall_vel[w] - in / sw.mass;
+      // a moving wall is an external body: its work on the nodes is external work
+      s.external_work -= dke;
+    } else {
+      s.wall_work += dke;  // the energy a fixed wall takes out
     }
     // force on the wall = - impulse given to the nodes / dt
     for (int a = 0; a < 3; ++a) s.wall_force[w][std::size_t(a)] = -imp[a] / dt_n;
-    s.wall_work += dke;
   }
 }
 

@@ -176,13 +176,8 @@ void initialize_state(const Model& m, State& s) {
   s.wall_force.assign(m.walls.size(), {0, 0, 0});
   s.wall_disp.assign(m.walls.size(), 0.0);
   s.wall_vel.assign(m.walls.size(), 0.0);
-  // a moving wall's kinetic energy is in the rigid-wall energy book from the start, so the
-  // balance covers the energy it brings
-  for (std::size_t w = 0; w < m.walls.size(); ++w) {
-    if (m.walls[w].mass <= 0) continue;
-    s.wall_vel[w] = m.walls[w].v0;
-    s.wall_work += 0.5 * m.walls[w].mass * m.walls[w].v0 * m.walls[w].v0;
-  }
+  for (std::size_t w = 0; w < m.walls.size(); ++w)
+    if (m.walls[w].mass > 0) s.wall_vel[w] = m.walls[w].v0;
 }
 
 }  // namespace impact3d

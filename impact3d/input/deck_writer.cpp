@@ -474,6 +474,18 @@ int write_converted_decks(const Model& m, const std::string& keyword_path, const
       diag.print(log);
       return exit_code::file_error;
     }
+    // an integer (a count, an id) that does not fit its columns makes the deck unreadable: the
+    // file is removed and the conversion fails
+    bool unusable = false;
+    for (const auto& n : notes) unusable = unusable || n.find(" does not fit columns ") != std::string::npos;
+    if (unusable) {
+      std::remove(path.c_str());
+      log << " error: the " << (k == 0 ? "keyword" : "fixed-format") << " deck " << path
+          << " cannot hold this model (not written):\n";
+      for (const auto& n : notes)
+        if (n.find(" does not fit columns ") != std::string::npos) log << "   " << n << "\n";
+      return exit_code::input_error;
+    }
     log << " wrote " << (k == 0 ? "keyword" : "fixed-format") << " deck " << path << "\n";
     for (const auto& n : notes) log << "   note: " << n << "\n";
   }

@@ -625,13 +625,14 @@ class Dyna3dReader {
         c.error(1003, 1, 5, "NSN", "0 (all nodes) to NUMNP");
         nsn = 0;
       }
-      if (moving == 1) {  // IMPACT-3D choice: card 2, MASS (cols 1-10) and V0 (11-20)
+      if (moving != 0) {  // IMPACT-3D choice: card 2, MASS (cols 1-10) and V0 (11-20)
         Card c2 = next(name + " card 2 (moving wall)", "expected the moving wall's MASS and V0 card");
         sw.mass = c2.e(1, 10, "MASS");
         sw.v0 = c2.e(11, 20, "V0");
         if (!(sw.mass > 0)) c2.error(1003, 1, 10, "MASS", "a moving wall needs a positive mass");
       }
       read_node_list(sw.nodes, nsn, name);
+      remove_repeated_nodes(sw.nodes);
       m_.walls.push_back(std::move(sw));
     }
   }

@@ -1806,6 +1806,7 @@ class KeywordReader {
       if (w.nsid != 0) {
         if (const RIdList* s = find_node_set(w.nsid, w.nsid_ref, "*RIGIDWALL_PLANAR", "NSID")) {
           w.w.nodes = set_nodes(*s, "*SET_NODE_LIST " + std::to_string(w.nsid));
+          remove_repeated_nodes(w.w.nodes);
           if (w.w.nodes.empty()) err(1314, w.nsid_ref, "*RIGIDWALL_PLANAR", "NSID", "the node set has no nodes (0 = all nodes)");
         }
       }

@@ -4,6 +4,7 @@
 // once, any order); the arrays here are indexed by number - 1.  Element node references are
 // 0-based node indices.
 
+#include <algorithm>
 #include <array>
 #include <string>
 #include <vector>
@@ -130,5 +131,19 @@ struct Model {
 inline bool bc_fixes_x(int code) { return code == 1 || code == 4 || code == 6 || code == 7; }
 inline bool bc_fixes_y(int code) { return code == 2 || code == 4 || code == 5 || code == 7; }
 inline bool bc_fixes_z(int code) { return code == 3 || code == 5 || code == 6 || code == 7; }
+
+// A node list as a set: later repeats of a node removed, the order of first appearance kept (a
+// wall's nodes are a set: a repeated node must not count twice).
+inline void remove_repeated_nodes(std::vector<int>& nodes) {
+  std::vector<int> out;
+  out.reserve(nodes.size());
+  std::vector<int> sorted = nodes;
+  std::sort(sorted.begin(), sorted.end());
+  if (std::adjacent_find(sorted.begin(), sorted.end()) == sorted.end()) return;  // none
+  std::vector<char> seen(sorted.empty() ? 0 : std::size_t(sorted.back()) + 1, 0);
+  for (int n : nodes)
+    if (n >= 0 && !seen[std::size_t(n)]) seen[std::size_t(n)] = 1, out.push_back(n);
+  nodes.swap(out);
+}
 
 }  // namespace impact3d

@@ -3,6 +3,8 @@
 // MASS, V0; the converter both ways; errors with card and columns.
 #include <gtest/gtest.h>
 
+#include <cstdio>
+#include <fstream>
 #include <sstream>
 #include <string>
 
@@ -75,4 +77,35 @@ TEST(MovingWallCards, ErrorsNameCardAndColumns) {
   EXPECT_FALSE(read_string(tiny_with_wall("    2", ""), m2, d2));
   EXPECT_TRUE(d2.has(1006)) << all_messages(d2);
   EXPECT_NE(all_messages(d2).find("cols 6-10"), std::string::npos) << all_messages(d2);
+}
+
+// A wall's node list is a set: a node listed twice counts once (its mass would otherwise count
+// twice for a moving wall).
+TEST(MovingWallCards, RepeatedWallNodesCountOnce) {
+  std::string wall = kWall;
+  wall.replace(0, 5, "    3");
+  std::string t = tiny_deck();
+  t.replace(t.find(kWall), kWall.size(), wall + "       1       2       1\n");
+  Model m;
+  Diagnostics d;
+  ASSERT_TRUE(read_string(t, m, d)) << all_messages(d);
+  EXPECT_EQ(m.walls[0].nodes, (std::vector<int>{0, 1}));
+}
+
+// A model the fixed format cannot hold (a count beyond its I5 columns) is not written: the
+// converter fails with exit code 2 and leaves no file.
+TEST(MovingWallCards, ConverterRefusesCountsThatDoNotFit) {
+  Model m;
+  Diagnostics d;
+  ASSERT_TRUE(read_string(tiny_deck(), m, d));
+  InitialVelocity iv;
+  iv.first = iv.last = 1;
+  m.init_velocities.assign(100000, iv);
+  m.control.num_init_velocity_cards = 100000;
+  const std::string path = std::string(IMPACT3D_BINARY_DIR) + "/too_many_cards.dyn";
+  std::remove(path.c_str());
+  std::ostringstream log;
+  EXPECT_EQ(write_converted_decks(m, "", path, log), 2) << log.str();
+  EXPECT_NE(log.str().find("does not fit columns"), std::string::npos) << log.str();
+  EXPECT_FALSE(std::ifstream(path).good());
 }

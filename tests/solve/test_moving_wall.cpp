@@ -95,3 +95,34 @@ TEST(MovingWall, BarStrikingAFreeWallOfItsOwnMass) {
   EXPECT_LT(worst_p, 1e-12);
   EXPECT_LT(worst_e, 0.02);
 }
+
+// A node held along the wall's normal by its boundary code is a support, not mass: a heavy
+// wall moving into the bar whose bottom nodes are fixed in z stops at those nodes (it never
+// crosses them) and they stay where they are; the bar gets no momentum from it.
+TEST(MovingWall, StopsAtNodesHeldAlongItsNormal) {
+  ScopedThreads one(1);
+  const MaterialData mat = copper_elastic();
+  const double c0 = std::sqrt(mat.E / mat.rho);
+  Model m = bar_and_wall(0.0, 1.0, 5.0, 0.5 * kL / c0);
+  for (int i = 0; i < m.num_nodes(); ++i)
+    if (m.z[std::size_t(i)] == 0.0) m.bc[std::size_t(i)] = 3;  // z fixed
+  m.walls[0].tail[2] = -1e-5;  // the wall starts 10 um below the bar
+  m.walls[0].head[2] = 1.0 - 1e-5;
+  Engine eng(m);
+  ASSERT_EQ(eng.initialize(), StepStatus::ok);
+  StepStatus st = StepStatus::ok;
+  while (st == StepStatus::ok) st = eng.step();
+  ASSERT_EQ(st, StepStatus::finished);
+  const State& s = eng.state();
+  double pz = 0, zmin = 1;
+  for (int i = 0; i < s.nn; ++i) {
+    pz += s.mass[std::size_t(i)] * s.vz[std::size_t(i)];
+    zmin = std::min(zmin, s.z[std::size_t(i)]);
+  }
+  std::printf("wall stopped by held nodes: wall at %.3g m (gap 1e-5), speed %.3g m/s; bar momentum %.3g\n",
+              -1e-5 + s.wall_disp[0], s.wall_vel[0], pz);
+  EXPECT_EQ(zmin, 0.0);                               // the held nodes did not move
+  EXPECT_LE(-1e-5 + s.wall_disp[0], 1e-15);           // the wall did not cross them
+  EXPECT_EQ(s.wall_vel[0], 0.0);                      // it stopped on them
+  EXPECT_EQ(pz, 0.0);                                 // and pushed nothing
+}
