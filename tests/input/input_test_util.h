@@ -40,6 +40,14 @@ inline bool read_string(const std::string& text, Model& m, Diagnostics& d,
   return ok && d.error_count() == 0;
 }
 
+// Reads deck text of either format (chosen by content, as read_and_check_deck does) and checks
+// the model; true when there is no error.
+inline bool read_any(const std::string& text, Model& m, Diagnostics& d, const std::string& name) {
+  DeckFile deck;
+  deck.load_from_string(name, text);
+  return read_deck(deck, m, d, InputOptions{}) && check_model(m, d) && d.error_count() == 0;
+}
+
 inline std::string all_messages(const Diagnostics& d) {
   std::string s;
   for (const auto& x : d.all()) s += render(x) + "\n";

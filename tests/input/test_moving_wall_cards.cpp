@@ -27,12 +27,6 @@ std::string tiny_with_wall(const std::string& flag, const std::string& card2) {
   return t.replace(at, kWall.size(), wall + card2);
 }
 
-bool read_any(const std::string& text, Model& m, Diagnostics& d, const std::string& name) {
-  DeckFile deck;
-  deck.load_from_string(name, text);
-  return read_deck(deck, m, d, InputOptions{}) && check_model(m, d) && d.error_count() == 0;
-}
-
 }  // namespace
 
 TEST(MovingWallCards, FixedFormatKeywordAndBack) {

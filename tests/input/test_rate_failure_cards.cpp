@@ -23,12 +23,6 @@ std::string tiny_with_card8(const std::string& card8) {
   return t.replace(at, beta.size(), "1.0000e+00\n" + card8 + "\n");
 }
 
-bool read_any(const std::string& text, Model& m, Diagnostics& d, const std::string& name) {
-  DeckFile deck;
-  deck.load_from_string(name, text);
-  return read_deck(deck, m, d, InputOptions{}) && check_model(m, d) && d.error_count() == 0;
-}
-
 }  // namespace
 
 TEST(RateAndFailureCards, FixedFormatCard8Columns11To40) {
