@@ -140,7 +140,14 @@ void write_model_summary(std::ostream& os, const Model& m) {
   }
   if (!m.init_velocities.empty()) {
     os << " i n i t i a l   v e l o c i t i e s\n\n";
+    // (a rotation sets node by node: the echo shows the first 50 and counts the rest)
+    constexpr std::size_t kShown = 50;
+    std::size_t shown = 0;
     for (const auto& iv : m.init_velocities) {
+      if (shown++ == kShown) {
+        os << "   ... and " << (m.init_velocities.size() - kShown) << " more\n";
+        break;
+      }
       char buf[200];
       if (iv.first == 0)
         std::snprintf(buf, sizeof buf, "   all nodes: (%.6g, %.6g, %.6g) (length/time)\n", iv.v[0], iv.v[1], iv.v[2]);
