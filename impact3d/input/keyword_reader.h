@@ -3,7 +3,7 @@
 // long and I10 formats, *INCLUDE) read into the same Model as the DYNA3D fixed-format reader.
 // The supported keywords and the mapping onto the Model are listed in README.md ("Keyword
 // decks").  Every other keyword is an error (1301) listing each one with its file and line, or a
-// warning (1302) with KeywordOptions::lenient.
+// warning (2007) with KeywordOptions::lenient.
 
 #include <string>
 
@@ -14,7 +14,7 @@
 namespace impact3d {
 
 struct KeywordOptions {
-  bool lenient = false;  // unsupported keywords are warnings (1302) instead of errors (1301)
+  bool lenient = false;  // unsupported keywords are warnings (2007) instead of errors (1301)
 };
 
 // True if the deck is an LS-DYNA keyword deck: its first line that is neither blank nor a '$'
