@@ -58,6 +58,12 @@ void apply_stonewalls_to_nodes(const Model& m, State& s, double dt, double dt_n)
     double dke = 0;
     double vw = 0;
     bool stopped = false;  // a moving wall stopped by a held node
+    // the wall's nodes in order (all nodes, or the listed ones): serial, so the sums are the
+    // same for any thread count
+    auto visit = [&](auto&& f) {
+      if (sw.nodes.empty()) for (int i = 0; i < s.nn; ++i) f(i);
+      else for (int i : sw.nodes) f(i);
+    };
     if (sw.mass > 0) {
       // Moving wall: the wall and the nodes it stops reach one normal velocity V (each node
       // V - gap/dt, so that it ends on the wall), with momentum kept:
@@ -66,10 +72,6 @@ void apply_stonewalls_to_nodes(const Model& m, State& s, double dt, double dt_n)
       const double V0 = s.wall_vel[w];
       for (int a = 0; a < 3; ++a) p[a] += s.wall_disp[w] * n[a];
       double V = V0;
-      auto visit = [&](auto&& f) {
-        if (sw.nodes.empty()) for (int i = 0; i < s.nn; ++i) f(i);
-        else for (int i : sw.nodes) f(i);
-      };
       // Nodes held along the normal by their boundary codes (and rigid-body nodes, which walls
       // skip) are supports, not mass: the wall stops short of crossing a held node (the support
       // takes the rest of its momentum).
@@ -100,18 +102,12 @@ void apply_stonewalls_to_nodes(const Model& m, State& s, double dt, double dt_n)
       stopped = V > v_stop;
       vw = stopped ? v_stop : V;
     }
-    // serial, in node order: the sums are the same for any thread count (a moving wall leaves
-    // its held nodes to their supports)
+    // (a moving wall leaves its held nodes to their supports)
     const bool moving = sw.mass > 0;
-    auto apply = [&](int i) {
+    visit([&](int i) {
       if (moving && held_along(s, std::size_t(i), n)) return;
       apply_wall_to_node(s, i, p, n, vw, sw.friction, dt, imp, dke);
-    };
-    if (sw.nodes.empty()) {
-      for (int i = 0; i < s.nn; ++i) apply(i);
-    } else {
-      for (int i : sw.nodes) apply(i);
-    }
+    });
     if (moving) {
       // the wall takes the opposite normal impulse; stopped by a held node, it moves at vw
       const double in = imp[0] * n[0] + imp[1] * n[1] + imp[2] * n[2];
