@@ -2,6 +2,8 @@
 //
 //   impact3d_deckgen OUTDIR [--refine N]          all decks into OUTDIR
 //   impact3d_deckgen --deck NAME [--refine N]     one deck (NAME or NAME.dyn) to stdout
+//   impact3d_deckgen --taylor-bar NHEX             a Taylor bar of about NHEX hexahedra to stdout
+//   ... --keyword                                  the deck as an LS-DYNA keyword deck instead
 //
 // The layout written is the one of README.md (Deck format).  Every number is printed with a fixed
 // printf format, so the output is byte-for-byte deterministic.  --refine N multiplies every
@@ -355,12 +357,13 @@ std::string mm(double v) { return fmt("%.4g", v * 1000.0) + " mm"; }
 // The decks
 // ---------------------------------------------------------------------------------------------
 
-Deck taylor_bar(int N) {
+// The Taylor bar with nc x nc core cells, nr radial ring cells and nl axial layers
+// (nc (nc + 2 nr) nl hexahedra); the shipped deck is nc = nr = 3 N, nl = 36 N.
+Deck taylor_bar_grid(int nc, int nr, int nl) {
   Deck d;
   d.name = "taylor_bar";
   d.title = "Taylor bar, copper, 227 m/s, quarter model, SI units (m kg s Pa)";
   const double r = 3.2e-3, L = 32.4e-3, a = 0.45 * r;
-  const int nc = 3 * N, nr = 3 * N, nl = 36 * N;
   const Section sec = make_section(false, nc, nr, r, a);
   Material m = copper(3);
   m.seed_viscosity = true;
@@ -401,6 +404,22 @@ Deck taylor_bar(int N) {
       "Stonewall z = 0, normal +z, frictionless; all nodes start with vz = -227 m/s.",
       "Viscosities as in the seed: hourglass 0.02, bulk quadratic 1.2, linear 0.06.",
       "80 us: the rigid-body velocity changes sign (rebound starts); 21 plot states."};
+  return d;
+}
+
+Deck taylor_bar(int N) { return taylor_bar_grid(3 * N, 3 * N, 36 * N); }
+
+// A Taylor bar of about nhex hexahedra (--taylor-bar NHEX), for input-phase tests at scale:
+// nc = nr = n core and ring cells, nl layers, n = cbrt(nhex / 36) as in the shipped deck's
+// proportions, nl = nhex / (3 n^2).  The node coordinates are rounded to 10 significant digits,
+// so that the fixed-format deck (E20) and the keyword deck (E16) hold the same numbers.
+Deck taylor_bar_hexes(long nhex) {
+  const int n = std::max(1, static_cast<int>(std::lround(std::cbrt(static_cast<double>(nhex) / 36.0))));
+  const int nl = std::max(1, static_cast<int>(std::lround(static_cast<double>(nhex) / (3.0 * n * n))));
+  Deck d = taylor_bar_grid(n, n, nl);
+  d.name = "taylor_bar_" + std::to_string(d.hex.size());
+  const auto round10 = [](double v) { return std::strtod(fmt("%.9e", v).c_str(), nullptr); };
+  for (auto& p : d.X) p = {round10(p.x), round10(p.y), round10(p.z)};
   return d;
 }
 
@@ -727,8 +746,9 @@ void line(std::string& out, const std::string& s) {
 }
 
 // Notes: consecutive entries are joined into one paragraph ("" ends a paragraph) and wrapped
-// into "* " comment lines of at most 78 columns.
-void comment_block(std::string& out, const std::vector<std::string>& notes) {
+// into "* " comment lines of at most 78 columns ("$ " lines in keyword decks).
+void comment_block(std::string& out, const std::vector<std::string>& notes, char mark = '*') {
+  const std::string m(1, mark);
   std::vector<std::string> paragraphs(1);
   for (const auto& n : notes) {
     if (n.empty()) {
@@ -739,7 +759,7 @@ void comment_block(std::string& out, const std::vector<std::string>& notes) {
     }
   }
   for (const auto& p : paragraphs) {
-    line(out, "*");
+    line(out, m);
     std::string cur;
     std::size_t i = 0;
     while (i < p.size()) {
@@ -747,16 +767,16 @@ void comment_block(std::string& out, const std::vector<std::string>& notes) {
       const std::string word = p.substr(i, j - i);
       if (!word.empty()) {
         if (!cur.empty() && cur.size() + 1 + word.size() > 76) {
-          line(out, "* " + cur);
+          line(out, m + " " + cur);
           cur.clear();
         }
         cur += (cur.empty() ? "" : " ") + word;
       }
       i = j + 1;
     }
-    if (!cur.empty()) line(out, "* " + cur);
+    if (!cur.empty()) line(out, m + " " + cur);
   }
-  line(out, "*");
+  line(out, m);
 }
 
 void banner(std::string& out, const std::string& what) { line(out, "*----- " + what + " -----*"); }
@@ -884,6 +904,118 @@ std::string write_deck(const Deck& d) {
   return out;
 }
 
+// The same model as an LS-DYNA keyword deck (README.md, "Keyword decks"): one *PART per
+// material, *NODE as I8 3E16 I8 I8, *ELEMENT_SOLID in the one-line form (10 I8), reals in the
+// E10 / E16 forms above, so that it reads as the same model as write_deck's.  Decks with
+// sliding interfaces are not written in this form.
+std::string keyword_e16(double v) {
+  if (v == 0.0) v = 0.0;
+  std::string s = fmt("%16.9e", v);
+  if (s.size() != 16) throw std::runtime_error("E16 field overflow: " + s);
+  return s;
+}
+
+std::string write_keyword_deck(const Deck& d) {
+  if (!d.sis.empty()) throw std::runtime_error("--keyword: decks with sliding interfaces are not written as keyword decks");
+  std::string out;
+  line(out, "*KEYWORD");
+  line(out, "$ " + d.name + ".k: written by impact3d_deckgen --keyword (decks/generator).");
+  line(out, "$ Units: SI (m, kg, s, Pa).  Layout: README.md (Keyword decks).");
+  comment_block(out, d.notes, '$');
+  line(out, "*TITLE");
+  line(out, d.title);
+  line(out, "*CONTROL_TERMINATION");
+  line(out, "$#  endtim");
+  line(out, e10(d.t_end));
+  line(out, "*CONTROL_TIMESTEP");
+  line(out, "$#  dtinit    tssfac");
+  line(out, blank(10) + e10(d.tssf));
+  line(out, "*DATABASE_BINARY_D3PLOT");
+  line(out, "$#      dt");
+  line(out, e10(d.dt_plot));
+  line(out, "*DATABASE_NODOUT");
+  line(out, "$#      dt");
+  line(out, e10(d.dt_th));
+  for (int solid = 0; solid < 2; ++solid)
+    for (const auto& b : solid ? d.solid_th : d.node_th) {
+      line(out, solid ? "*DATABASE_HISTORY_SOLID" : "*DATABASE_HISTORY_NODE");
+      std::string c;
+      for (int id = b[0]; id <= b[1]; ++id) {
+        c += i10(id);
+        if (c.size() == 80) {
+          line(out, c);
+          c.clear();
+        }
+      }
+      if (!c.empty()) line(out, c);
+    }
+  line(out, "*SECTION_SOLID");
+  line(out, "$#   secid    elform");
+  line(out, i10(1) + i10(1));
+  for (std::size_t i = 0; i < d.mats.size(); ++i) {
+    const Material& m = d.mats[i];
+    const long long id = static_cast<long long>(i + 1);
+    if (m.type != 1 && m.type != 3) throw std::runtime_error("--keyword: material type not written");
+    line(out, "*PART");
+    line(out, m.title);
+    line(out, "$#     pid     secid       mid     eosid      hgid");
+    line(out, i10(id) + i10(1) + i10(id) + i10(0) + i10(m.seed_viscosity ? id : 0));
+    if (m.type == 3) {
+      line(out, "*MAT_PLASTIC_KINEMATIC");
+      line(out, "$#     mid        ro         e        pr      sigy      etan      beta");
+      line(out, i10(id) + e10(m.rho) + e10(m.E) + e10(m.nu) + e10(m.sigy) + e10(m.etan) + e10(m.beta));
+      if (m.initially_elastic) {
+        line(out, "*COMMENT");
+        line(out, "IMPACT-3D INITIALLY_ELASTIC PART " + std::to_string(id));
+      }
+    } else {
+      line(out, "*MAT_ELASTIC");
+      line(out, "$#     mid        ro         e        pr");
+      line(out, i10(id) + e10(m.rho) + e10(m.E) + e10(m.nu));
+    }
+    if (m.seed_viscosity) {
+      line(out, "*HOURGLASS");
+      line(out, "$#    hgid       ihq        qm       ibq        q1        q2");
+      line(out, i10(id) + i10(1) + e10(0.02) + i10(0) + e10(1.2) + e10(0.06));
+    }
+  }
+  line(out, "*NODE");
+  line(out, "$#   nid               x               y               z      tc      rc");
+  for (std::size_t n = 0; n < d.X.size(); ++n)
+    line(out, i8(static_cast<long long>(n + 1)) + keyword_e16(d.X[n].x) + keyword_e16(d.X[n].y) +
+                  keyword_e16(d.X[n].z) + i8(d.bc[n]) + i8(0));
+  line(out, "*ELEMENT_SOLID");
+  line(out, "$#   eid     pid      n1      n2      n3      n4      n5      n6      n7      n8");
+  for (std::size_t e = 0; e < d.hex.size(); ++e) {
+    std::string c = i8(static_cast<long long>(e + 1)) + i8(d.hex_mat[e]);
+    for (int n : d.hex[e]) c += i8(n);
+    line(out, c);
+  }
+  for (const auto& w : d.walls) {
+    line(out, "*RIGIDWALL_PLANAR");
+    line(out, "$#    nsid");
+    line(out, i10(0));
+    line(out, "$#      xt        yt        zt        xh        yh        zh      fric");
+    line(out, e10(w.tail.x) + e10(w.tail.y) + e10(w.tail.z) + e10(w.head.x) + e10(w.head.y) +
+                  e10(w.head.z) + e10(w.fric));
+  }
+  for (const auto& v : d.vel) {
+    if (v.first == 0) {
+      line(out, "*INITIAL_VELOCITY");
+      line(out, "$#    nsid");
+      line(out, i10(0));
+      line(out, "$#      vx        vy        vz");
+      line(out, e10(v.v.x) + e10(v.v.y) + e10(v.v.z));
+    } else {
+      line(out, "*INITIAL_VELOCITY_NODE");
+      for (int id = v.first; id <= (v.last ? v.last : v.first); ++id)
+        line(out, i10(id) + e10(v.v.x) + e10(v.v.y) + e10(v.v.z));
+    }
+  }
+  line(out, "*END");
+  return out;
+}
+
 using Builder = Deck (*)(int);
 const std::vector<std::pair<std::string, Builder>>& decks() {
   static const std::vector<std::pair<std::string, Builder>> all = {
@@ -899,7 +1031,8 @@ const std::vector<std::pair<std::string, Builder>>& decks() {
 
 int usage() {
   std::cerr << "usage: impact3d_deckgen OUTDIR [--refine N]\n"
-               "       impact3d_deckgen --deck NAME [--refine N] > file\n"
+               "       impact3d_deckgen --deck NAME [--refine N] [--keyword] > file\n"
+               "       impact3d_deckgen --taylor-bar NHEX [--keyword] > file\n"
                "decks:";
   for (const auto& d : decks()) std::cerr << ' ' << d.first;
   std::cerr << '\n';
@@ -911,6 +1044,8 @@ int usage() {
 int main(int argc, char** argv) {
   std::string outdir, deck;
   int refine = 1;
+  long taylor_hexes = 0;
+  bool keyword = false;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--refine" && i + 1 < argc) {
@@ -918,6 +1053,13 @@ int main(int argc, char** argv) {
       const long v = std::strtol(argv[++i], &end, 10);
       if (*end != '\0' || v < 1 || v > 64) return usage();
       refine = static_cast<int>(v);
+    } else if (a == "--taylor-bar" && i + 1 < argc) {
+      char* end = nullptr;
+      const long v = std::strtol(argv[++i], &end, 10);
+      if (*end != '\0' || v < 1 || v > 20000000) return usage();
+      taylor_hexes = v;
+    } else if (a == "--keyword") {
+      keyword = true;
     } else if (a == "--deck" && i + 1 < argc) {
       deck = argv[++i];
       if (deck.size() > 4 && deck.substr(deck.size() - 4) == ".dyn")
@@ -928,12 +1070,20 @@ int main(int argc, char** argv) {
       return usage();
     }
   }
-  if (outdir.empty() == deck.empty()) return usage();
+  if (taylor_hexes > 0 && (!outdir.empty() || !deck.empty() || refine != 1)) return usage();
+  if (taylor_hexes == 0 && outdir.empty() == deck.empty()) return usage();
+  if (keyword && !outdir.empty()) return usage();
+  const auto write = [&](const Deck& d) { return keyword ? write_keyword_deck(d) : write_deck(d); };
   try {
+    if (taylor_hexes > 0) {
+      const std::string text = write(taylor_bar_hexes(taylor_hexes));
+      std::fwrite(text.data(), 1, text.size(), stdout);
+      return std::fflush(stdout) == 0 ? 0 : 1;
+    }
     if (!deck.empty()) {
       for (const auto& [name, build] : decks())
         if (name == deck) {
-          const std::string text = write_deck(build(refine));
+          const std::string text = write(build(refine));
           std::fwrite(text.data(), 1, text.size(), stdout);
           return std::fflush(stdout) == 0 ? 0 : 1;
         }
