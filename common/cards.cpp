@@ -1,11 +1,13 @@
 #include "common/cards.h"
 
 #include <cerrno>
+#include <charconv>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <limits>
+#include <memory>
 
 namespace impact3d {
 
@@ -40,15 +42,26 @@ FieldStatus parse_fortran_int(std::string_view text, long long& value) {
 FieldStatus parse_fortran_real(std::string_view text, double& value) {
   std::string_view s = trim(text);
   if (s.empty()) return FieldStatus::blank;
-  std::string norm;
-  norm.reserve(s.size() + 2);
+  // The number is checked and rewritten into C form ([-]digits[.digits][e[sign]digits]) in a
+  // buffer on the stack; a longer field (free format) goes through a std::string.
+  char stack_buf[72];
+  std::string heap_buf;
+  char* norm = stack_buf;
+  if (s.size() + 2 > sizeof stack_buf) {
+    heap_buf.resize(s.size() + 2);
+    norm = heap_buf.data();
+  }
+  std::size_t n = 0;
   std::size_t p = 0;
-  if (s[p] == '+' || s[p] == '-') norm += s[p++];
+  if (s[p] == '+' || s[p] == '-') {
+    if (s[p] == '-') norm[n++] = '-';  // from_chars takes no '+'; strtod gives the same without
+    ++p;
+  }
   int mant_digits = 0;
-  while (p < s.size() && is_digit(s[p])) { norm += s[p++]; ++mant_digits; }
+  while (p < s.size() && is_digit(s[p])) { norm[n++] = s[p++]; ++mant_digits; }
   if (p < s.size() && s[p] == '.') {
-    norm += s[p++];
-    while (p < s.size() && is_digit(s[p])) { norm += s[p++]; ++mant_digits; }
+    norm[n++] = s[p++];
+    while (p < s.size() && is_digit(s[p])) { norm[n++] = s[p++]; ++mant_digits; }
   }
   if (mant_digits == 0) return FieldStatus::bad;
   if (p < s.size()) {
@@ -59,19 +72,38 @@ FieldStatus parse_fortran_real(std::string_view text, double& value) {
     } else if (c != '+' && c != '-') {
       return FieldStatus::bad;
     }
-    norm += 'e';
-    if (p < s.size() && (s[p] == '+' || s[p] == '-')) norm += s[p++];
+    norm[n++] = 'e';
+    if (p < s.size() && (s[p] == '+' || s[p] == '-')) norm[n++] = s[p++];
     int exp_digits = 0;
-    while (p < s.size() && is_digit(s[p])) { norm += s[p++]; ++exp_digits; }
+    while (p < s.size() && is_digit(s[p])) { norm[n++] = s[p++]; ++exp_digits; }
     if (exp_digits == 0 || exp_digits > 4 || p != s.size()) return FieldStatus::bad;
   }
+  // from_chars and strtod both give the correctly rounded double (round to nearest), so the
+  // bits are the same; what from_chars reports out of range (overflow, underflow) is left to
+  // the strtod rules: overflow is bad, an underflow gives strtod's tiny value or zero.
+  double v = 0.0;
+  const auto [ptr, ec] = std::from_chars(norm, norm + n, v);
+  if (ec == std::errc() && ptr == norm + n && std::isfinite(v)) {
+    value = v;
+    return FieldStatus::ok;
+  }
+  norm[n] = '\0';
   errno = 0;
   char* end = nullptr;
-  double v = std::strtod(norm.c_str(), &end);
-  if (end != norm.c_str() + norm.size()) return FieldStatus::bad;
+  v = std::strtod(norm, &end);
+  if (end != norm + n) return FieldStatus::bad;
   if (!std::isfinite(v) || (errno == ERANGE && std::fabs(v) > 1.0)) return FieldStatus::bad;
   value = v;
   return FieldStatus::ok;
+}
+
+bool is_plain_fixed_card(std::string_view line) {
+  for (char ch : line) {
+    const unsigned char c = static_cast<unsigned char>(ch);
+    if (c < 32 || c >= 127) return false;
+  }
+  if (line.size() > 80 && !trim(line.substr(80)).empty()) return false;
+  return true;
 }
 
 bool is_comment_line(std::string_view line) {
@@ -90,6 +122,11 @@ bool is_keyword_line(std::string_view line) {
 
 bool DeckFile::load(const std::string& path, Diagnostics& diag) {
   name_ = path;
+  text_.reset();
+  size_ = 0;
+  lines_.clear();
+  pos_ = 0;
+  cards_total_ = cards_read_ = 0;
   std::ifstream in(path, std::ios::binary);
   if (!in) {
     Location loc;
@@ -106,32 +143,52 @@ bool DeckFile::load(const std::string& path, Diagnostics& diag) {
     diag.add(3006, loc, "larger than 1 GiB");
     return false;
   }
-  std::string content(static_cast<std::size_t>(size), '\0');
-  in.read(content.data(), size);
+  // one read into one block, not initialised first
+  std::unique_ptr<char[]> text(new char[static_cast<std::size_t>(size) + 1]);
+  in.read(text.get(), size);
   if (!in) {
     Location loc;
     loc.file = path;
     diag.add(3003, loc, "read error");
     return false;
   }
-  load_from_string(path, content);
+  text_ = std::move(text);
+  size_ = static_cast<std::size_t>(size);
+  split_lines();
   return true;
 }
 
 void DeckFile::load_from_string(const std::string& name, std::string_view content) {
   name_ = name;
+  text_.reset(new char[content.size() + 1]);
+  if (!content.empty()) std::memcpy(text_.get(), content.data(), content.size());
+  size_ = content.size();
+  split_lines();
+}
+
+void DeckFile::split_lines() {
   lines_.clear();
   pos_ = 0;
+  cards_total_ = cards_read_ = 0;
+  const char* const text = text_.get();
+  const std::string_view content(text, size_);
+  // count the lines first: one allocation of the right size
+  std::size_t count = 0;
+  for (const char* p = text; (p = static_cast<const char*>(std::memchr(p, '\n', size_ - std::size_t(p - text)))); ++p)
+    ++count;
+  if (size_ > 0 && text[size_ - 1] != '\n') ++count;
+  lines_.reserve(count);
   int number = 0;
   std::size_t start = 0;
   while (start < content.size()) {
-    std::size_t nl = content.find('\n', start);
-    std::size_t end = nl == std::string_view::npos ? content.size() : nl;
+    const char* nlp = static_cast<const char*>(std::memchr(text + start, '\n', size_ - start));
+    std::size_t end = nlp ? std::size_t(nlp - text) : content.size();
     std::string_view l = content.substr(start, end - start);
     if (!l.empty() && l.back() == '\r') l.remove_suffix(1);
-    lines_.push_back({++number, std::string(l)});
-    if (nl == std::string_view::npos) break;
-    start = nl + 1;
+    lines_.push_back({++number, l});
+    if (!is_comment_line(l)) ++cards_total_;
+    if (!nlp) break;
+    start = end + 1;
   }
 }
 
@@ -142,7 +199,10 @@ const DeckLine* DeckFile::peek_card() {
 
 const DeckLine* DeckFile::next_card() {
   const DeckLine* l = peek_card();
-  if (l) ++pos_;
+  if (l) {
+    ++pos_;
+    ++cards_read_;
+  }
   return l;
 }
 
@@ -151,7 +211,7 @@ bool DeckFile::at_end() { return peek_card() == nullptr; }
 Card::Card(const std::string& file, const DeckLine& line, std::string card_name,
            Diagnostics& diag)
     : file_(file), line_(&line), card_name_(std::move(card_name)), diag_(diag) {
-  const std::string& t = line.text;
+  const std::string_view t = line.text;
   for (std::size_t k = 0; k < t.size(); ++k) {
     unsigned char c = static_cast<unsigned char>(t[k]);
     if (c == '\t') {
@@ -163,9 +223,9 @@ Card::Card(const std::string& file, const DeckLine& line, std::string card_name,
       break;
     }
   }
-  if (t.size() > 80 && !trim(std::string_view(t).substr(80)).empty()) {
+  if (t.size() > 80 && !trim(t.substr(80)).empty()) {
     Location loc = where(81, int(t.size()));
-    loc.found = t.substr(80);
+    loc.found = std::string(t.substr(80));
     loc.show_found = true;
     diag_.add(1010, loc);
     had_error_ = true;
@@ -173,16 +233,13 @@ Card::Card(const std::string& file, const DeckLine& line, std::string card_name,
 }
 
 std::string Card::a(int c1, int c2) const {
-  const std::string& t = line_->text;
-  std::string out;
-  for (int c = c1; c <= c2; ++c) {
-    std::size_t k = static_cast<std::size_t>(c - 1);
-    out += k < t.size() ? t[k] : ' ';
-  }
+  if (c2 < c1) return {};
+  std::string out(columns(c1, c2));
+  out.resize(static_cast<std::size_t>(c2 - c1 + 1), ' ');
   return out;
 }
 
-bool Card::blank(int c1, int c2) const { return trim(a(c1, c2)).empty(); }
+bool Card::blank(int c1, int c2) const { return trim(columns(c1, c2)).empty(); }
 
 Location Card::where(int c1, int c2, const char* field) const {
   Location loc;
@@ -207,7 +264,7 @@ void Card::error(int id, int c1, int c2, const char* field, std::string detail,
   }
   Location loc = where(c1, c2, field);
   if (show_found && c1 > 0) {
-    loc.found = std::string(trim(a(c1, c2)));
+    loc.found = std::string(trim(columns(c1, c2)));
     loc.show_found = true;
   }
   diag_.add(id, loc, std::move(detail));
@@ -216,7 +273,7 @@ void Card::error(int id, int c1, int c2, const char* field, std::string detail,
 
 long long Card::i(int c1, int c2, const char* field, long long def) {
   long long v = def;
-  FieldStatus st = parse_fortran_int(a(c1, c2), v);
+  FieldStatus st = parse_fortran_int(columns(c1, c2), v);
   if (st == FieldStatus::blank) return def;
   if (st == FieldStatus::bad) {
     error(1001, c1, c2, field);
@@ -228,7 +285,7 @@ long long Card::i(int c1, int c2, const char* field, long long def) {
 
 double Card::e(int c1, int c2, const char* field, double def) {
   double v = def;
-  FieldStatus st = parse_fortran_real(a(c1, c2), v);
+  FieldStatus st = parse_fortran_real(columns(c1, c2), v);
   if (st == FieldStatus::blank) return def;
   if (st == FieldStatus::bad) {
     error(1002, c1, c2, field);

@@ -5,6 +5,7 @@
 // and columns.
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -19,8 +20,21 @@ enum class FieldStatus { blank, ok, bad };
 // Fortran I-format: optional sign and digits, surrounding blanks allowed, blank = default.
 FieldStatus parse_fortran_int(std::string_view text, long long& value);
 // Fortran E/F/D-format: 1.5, 1.5e3, 1.5E+03, 2.5D-3, 1.0-5, 15, .5; blank = default.
-// Infinite/NaN/overflowing values are bad.
+// Infinite/NaN/overflowing values are bad.  The value is the correctly rounded double of the
+// decimal number (std::from_chars; strtod for what from_chars leaves out of range).
 FieldStatus parse_fortran_real(std::string_view text, double& value);
+
+// The text of columns [c1, c2] (1-based, inclusive) that lies within the line: shorter than
+// the columns, or empty, where the line ends first (the rest counts as blanks).
+inline std::string_view card_columns(std::string_view line, int c1, int c2) {
+  const std::size_t b = static_cast<std::size_t>(c1 - 1);
+  if (b >= line.size()) return {};
+  return line.substr(b, static_cast<std::size_t>(c2 - c1 + 1));
+}
+// True if Card would report nothing about the line itself: printable ASCII only (no tab, no
+// control byte) and nothing but blanks beyond column 80.  The readers' fast paths (cards read
+// without a Card, messages impossible) take only such lines.
+bool is_plain_fixed_card(std::string_view line);
 
 // DYNA3D comment line: '*' in column 1 followed by blank, '-', '*' or end of line; or '$'.
 bool is_comment_line(std::string_view line);
@@ -28,32 +42,48 @@ bool is_comment_line(std::string_view line);
 bool is_keyword_line(std::string_view line);
 
 struct DeckLine {
-  int number = 0;     // 1-based line number in the file
-  std::string text;   // without the line terminator (\n or \r\n)
+  int number = 0;          // 1-based line number in the file
+  std::string_view text;   // without the line terminator (\n or \r\n), in the DeckFile's text
 };
 
-// A whole deck file held as lines.  Reading is bounded (max_bytes) so no input can exhaust
-// memory.
+// A whole deck file: its text in one block, read in one go, and the lines as views into it
+// (no copy per line).  Reading is bounded (max_bytes) so no input can exhaust memory.  The
+// lines stay valid while the DeckFile lives (also when it is moved); it cannot be copied.
 class DeckFile {
  public:
   static constexpr std::size_t kMaxBytes = std::size_t(1) << 30;
+  DeckFile() = default;
+  DeckFile(const DeckFile&) = delete;
+  DeckFile& operator=(const DeckFile&) = delete;
+  DeckFile(DeckFile&&) = default;
+  DeckFile& operator=(DeckFile&&) = default;
+
   // Returns false (and reports 3003/3006) when the file cannot be read.
   bool load(const std::string& path, Diagnostics& diag);
   void load_from_string(const std::string& name, std::string_view content);
 
   const std::string& name() const { return name_; }
   const std::vector<DeckLine>& lines() const { return lines_; }
+  // The whole text as loaded.
+  std::string_view text() const { return {text_.get(), size_}; }
 
   // Sequential access to cards (comment lines skipped).
   const DeckLine* next_card();
   const DeckLine* peek_card();
   bool at_end();
   int last_line_number() const { return lines_.empty() ? 0 : lines_.back().number; }
+  // Cards (lines that are not comments) from the next card to the end of the file.
+  long cards_left() const { return cards_total_ - cards_read_; }
 
  private:
+  void split_lines();
+
   std::string name_;
+  std::unique_ptr<char[]> text_;
+  std::size_t size_ = 0;
   std::vector<DeckLine> lines_;
   std::size_t pos_ = 0;
+  long cards_total_ = 0, cards_read_ = 0;
 };
 
 // One card being read: names the card in messages and reads its fields.
@@ -67,6 +97,8 @@ class Card {
   double e(int c1, int c2, const char* field, double def = 0.0);
   // Raw text of the columns (blank-padded beyond the end of the line).
   std::string a(int c1, int c2) const;
+  // The columns' text within the line (card_columns): no padding, no copy.
+  std::string_view columns(int c1, int c2) const { return card_columns(line_->text, c1, c2); }
   bool blank(int c1, int c2) const;
   // True if a field is bad (for callers that need to know).
   bool had_error() const { return had_error_; }

@@ -75,11 +75,30 @@ class Dyna3dReader {
   }
 
   // Remaining non-comment lines, to bound counts before allocating.
-  long remaining_cards() {
-    long n = 0;
-    for (const auto& l : deck_.lines())
-      if (&l >= deck_.peek_card() && !is_comment_line(l.text)) ++n;
-    return deck_.peek_card() ? n : 0;
+  long remaining_cards() { return deck_.cards_left(); }
+
+  // Fast paths for the bulk cards (nodes, solids): the next card is read without a Card when
+  // it is plain (is_plain_fixed_card) and every field reads and passes its checks, so that no
+  // message can come from it.  Anything else returns false and the card is read again, the
+  // normal way, by the code that reports every problem.
+  const DeckLine* plain_next_card() {
+    if (diag_.error_count() > 500) return nullptr;  // next() stops the reading
+    const DeckLine* l = deck_.peek_card();
+    return l && is_plain_fixed_card(l->text) ? l : nullptr;
+  }
+  static bool fast_int(std::string_view line, int c1, int c2, int& v) {
+    long long x = 0;
+    const FieldStatus st = parse_fortran_int(card_columns(line, c1, c2), x);
+    if (st == FieldStatus::bad) return false;
+    v = st == FieldStatus::ok ? int(x) : 0;
+    return true;
+  }
+  static bool fast_real(std::string_view line, int c1, int c2, double& v) {
+    double x = 0;
+    const FieldStatus st = parse_fortran_real(card_columns(line, c1, c2), x);
+    if (st == FieldStatus::bad) return false;
+    v = st == FieldStatus::ok ? x : 0.0;
+    return true;
   }
 
   void read_title() {
@@ -419,6 +438,23 @@ class Dyna3dReader {
     const int x1 = b2 + 1, y1 = x1 + 20, z1 = y1 + 20, r1 = z1 + 20;
     int rotational = 0, rot_line = 0;
     for (int k = 0; k < n; ++k) {
+      if (const DeckLine* l = plain_next_card()) {
+        const std::string_view t = l->text;
+        int id = 0, code = 0, rc = 0;
+        double x = 0, y = 0, z = 0;
+        if (fast_int(t, i1, i2, id) && fast_int(t, b1, b2, code) && fast_real(t, x1, x1 + 19, x) &&
+            fast_real(t, y1, y1 + 19, y) && fast_real(t, z1, z1 + 19, z) &&
+            fast_int(t, r1, r1 + 4, rc) && code >= 0 && code <= 7 && rc == 0 && id >= 1 &&
+            id <= n && !seen[std::size_t(id - 1)]) {
+          deck_.next_card();
+          seen[std::size_t(id - 1)] = l->number;
+          m_.x[std::size_t(id - 1)] = x;
+          m_.y[std::size_t(id - 1)] = y;
+          m_.z[std::size_t(id - 1)] = z;
+          m_.bc[std::size_t(id - 1)] = code;
+          continue;
+        }
+      }
       Card c = next("node card " + std::to_string(k + 1) + " of " + std::to_string(n),
                     "expected " + std::to_string(n) + " node cards (control card 2 NUMNP), found " + std::to_string(k));
       int id = int(c.i(i1, i2, "node number"));
@@ -482,6 +518,28 @@ class Dyna3dReader {
     std::vector<int> seen(std::size_t(n), 0);
     const int w = idw_;
     for (int k = 0; k < n; ++k) {
+      if (const DeckLine* l = plain_next_card()) {
+        const std::string_view t = l->text;
+        int id = 0, mat = 0;
+        std::array<int, 8> nodes{};
+        bool ok = fast_int(t, 1, w, id) && fast_int(t, w + 1, w + 5, mat) && id >= 1 && id <= n &&
+                  !seen[std::size_t(id - 1)] && mat >= 1 && mat <= m_.control.nmmat;
+        for (int j = 0; j < 8 && ok; ++j) {
+          const int c1 = w + 6 + j * w;
+          ok = fast_int(t, c1, c1 + w - 1, nodes[std::size_t(j)]) && nodes[std::size_t(j)] >= 1 &&
+               nodes[std::size_t(j)] <= m_.control.numnp;
+          --nodes[std::size_t(j)];
+        }
+        if (ok && is_valid_solid_node_pattern(nodes)) {
+          deck_.next_card();
+          seen[std::size_t(id - 1)] = l->number;
+          make_canonical_solid_node_pattern(nodes);
+          m_.hex_line[std::size_t(id - 1)] = l->number;
+          m_.hex_nodes[std::size_t(id - 1)] = nodes;
+          m_.hex_material[std::size_t(id - 1)] = mat - 1;
+          continue;
+        }
+      }
       Card c = next("solid element card " + std::to_string(k + 1) + " of " + std::to_string(n),
                     "expected " + std::to_string(n) + " solid element cards (control card 2 NUMELH), found " + std::to_string(k));
       int id = int(c.i(1, w, "element number"));

@@ -29,7 +29,8 @@ namespace impact3d {
 
 namespace {
 
-std::string upper(std::string s) {
+std::string upper(std::string_view v) {
+  std::string s(v);
   for (auto& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
   return s;
 }
@@ -39,9 +40,9 @@ std::string_view trim_sv(std::string_view s) {
   while (e > b && (s[e - 1] == ' ' || s[e - 1] == '\r')) --e;
   return s.substr(b, e - b);
 }
-std::string rtrim(std::string s) {
-  while (!s.empty() && (s.back() == ' ' || s.back() == '\r')) s.pop_back();
-  return s;
+std::string rtrim(std::string_view s) {
+  while (!s.empty() && (s.back() == ' ' || s.back() == '\r')) s.remove_suffix(1);
+  return std::string(s);
 }
 bool is_blank(std::string_view s) { return trim_sv(s).empty(); }
 
@@ -80,7 +81,7 @@ class KCard {
  public:
   KCard(const KLine& l, std::string card, const std::vector<int>& widths, Diagnostics& diag)
       : l_(l), card_(std::move(card)), diag_(diag) {
-    const std::string& t = l.line->text;
+    const std::string_view t = l.line->text;
     free_ = t.find(',') != std::string::npos;
     if (free_) {
       std::size_t start = 0;
@@ -135,14 +136,14 @@ class KCard {
   }
   std::string literal(int k) const {
     if (k >= fields()) return {};
-    const std::string& t = l_.line->text;
+    const std::string_view t = l_.line->text;
     auto [c1, c2] = cols_[std::size_t(k)];
     if (std::size_t(c1 - 1) >= t.size()) return {};
     return std::string(trim_sv(std::string_view(t).substr(std::size_t(c1 - 1), std::size_t(c2 - c1 + 1))));
   }
   std::string raw(int k) const {  // untrimmed (titles)
     if (k >= fields()) return {};
-    const std::string& t = l_.line->text;
+    const std::string_view t = l_.line->text;
     auto [c1, c2] = cols_[std::size_t(k)];
     if (std::size_t(c1 - 1) >= t.size()) return {};
     return rtrim(t.substr(std::size_t(c1 - 1), std::size_t(c2 - c1 + 1)));
@@ -215,7 +216,7 @@ class KCard {
     loc.col_first = c1;
     loc.col_last = c2;
     if (show_found && c1 > 0) {
-      const std::string& t = l_.line->text;
+      const std::string_view t = l_.line->text;
       if (std::size_t(c1 - 1) < t.size())
         loc.found = std::string(trim_sv(std::string_view(t).substr(std::size_t(c1 - 1), std::size_t(c2 - c1 + 1))));
       loc.show_found = true;
@@ -342,7 +343,7 @@ Location loc_of(const Ref& r, const std::string& card, const char* field = nullp
     loc.col_last = r.c2;
   }
   if (found && field && r.line && r.c1 > 0) {
-    const std::string& t = r.line->text;
+    const std::string_view t = r.line->text;
     if (std::size_t(r.c1 - 1) < t.size())
       loc.found = std::string(trim_sv(std::string_view(t).substr(std::size_t(r.c1 - 1), std::size_t(r.c2 - r.c1 + 1))));
     loc.show_found = true;
@@ -442,13 +443,13 @@ class KeywordReader {
     long cur = -1;
     bool reported_orphan = false;
     for (const DeckLine& l : f.lines()) {
-      const std::string& t = l.text;
+      const std::string_view t = l.text;
       if (!t.empty() && t[0] == '$') continue;
       if (is_keyword_line(t)) {
         close_block(cur, depth, stack);
         cur = -1;
         Block b;
-        std::string first = t.substr(1, t.find_first_of(" \t,", 1) == std::string::npos ? std::string::npos : t.find_first_of(" \t,", 1) - 1);
+        std::string first(t.substr(1, t.find_first_of(" \t,", 1) == std::string::npos ? std::string::npos : t.find_first_of(" \t,", 1) - 1));
         b.keyword = "*" + rtrim(first);
         std::string name = upper(rtrim(first));
         bool lng = global_long_, i10 = global_i10_;
@@ -463,7 +464,7 @@ class KeywordReader {
           std::size_t s = t.find_first_not_of(" \t", p);
           if (s == std::string::npos) break;
           std::size_t e = t.find_first_of(" \t", s);
-          std::string tok = t.substr(s, e == std::string::npos ? std::string::npos : e - s);
+          std::string_view tok = t.substr(s, e == std::string::npos ? std::string::npos : e - s);
           if (tok == "+") lng = true;
           if (tok == "-") lng = false;
           if (tok == "%") i10 = true;
@@ -497,7 +498,7 @@ class KeywordReader {
     close_block(cur, depth, stack);
   }
 
-  void keyword_options(const std::string& t, const DeckFile& f, const DeckLine& l) {
+  void keyword_options(std::string_view t, const DeckFile& f, const DeckLine& l) {
     std::string u = upper(t);
     std::size_t p = u.find_first_of(" \t");
     while (p != std::string::npos && p < u.size()) {
@@ -912,7 +913,7 @@ class KeywordReader {
     std::size_t k = 0;
     while (k < b.data.size()) {
       if (is_blank(b.data[k].line->text)) { ++k; continue; }
-      const std::string& t = b.data[k].line->text;
+      const std::string_view t = b.data[k].line->text;
       bool free = t.find(',') != std::string::npos;
       bool legacy;
       if (free) {

@@ -5,9 +5,9 @@
 #include <cstdio>
 #include <array>
 #include <cmath>
-#include <map>
-#include <set>
+#include <cstdint>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "impact3d/element/hexahedron.h"
@@ -36,6 +36,33 @@ std::vector<int> face_cycle(const std::array<int, 4>& f) {
   return c;
 }
 
+struct FaceKeyHash {
+  std::size_t operator()(const std::array<int, 4>& k) const {
+    std::uint64_t h = 0x9e3779b97f4a7c15ull;
+    for (int v : k) h = (h ^ std::uint32_t(v)) * 0x100000001b3ull + (h >> 29);
+    return std::size_t(h ^ (h >> 32));
+  }
+};
+
+// Calls f(key, nodes) for every face of every defined element, in element and face order.
+template <class F>
+void for_each_element_face(const Model& m, F&& f) {
+  for (int e = 0; e < m.num_hexes(); ++e) {
+    const auto& n = m.hex_nodes[std::size_t(e)];
+    if (n[0] < 0) continue;
+    for (const auto& fc : kHexFaces) {
+      const std::array<int, 4> nodes = {n[std::size_t(fc[0])], n[std::size_t(fc[1])], n[std::size_t(fc[2])], n[std::size_t(fc[3])]};
+      f(face_key(nodes), nodes);
+    }
+  }
+}
+
+bool has_interface_segments(const Model& m) {
+  for (const auto& si : m.interfaces)
+    if (!si.slave.empty() || !si.master.empty()) return true;
+  return false;
+}
+
 // a is b rotated (same cyclic order)
 bool same_cycle(const std::vector<int>& a, const std::vector<int>& b) {
   if (a.size() != b.size()) return false;
@@ -51,19 +78,20 @@ bool same_cycle(const std::vector<int>& a, const std::vector<int>& b) {
 
 void orient_interface_segments(Model& m, Diagnostics& diag) {
   // exterior faces: key -> the outward face (counter-clockwise from outside); faces met twice
-  // are interior (orientation ambiguous: left as given)
+  // are interior (orientation ambiguous: left as given).  Only the faces that are segments
+  // matter: those keys are collected first, then the element faces counted against them (the
+  // first face met gives the nodes).
+  if (!has_interface_segments(m)) return;
   struct Face { std::array<int, 4> nodes; int count; };
-  std::map<std::array<int, 4>, Face> faces;
-  for (int e = 0; e < m.num_hexes(); ++e) {
-    const auto& n = m.hex_nodes[std::size_t(e)];
-    if (n[0] < 0) continue;
-    for (const auto& f : kHexFaces) {
-      const std::array<int, 4> nodes = {n[std::size_t(f[0])], n[std::size_t(f[1])], n[std::size_t(f[2])], n[std::size_t(f[3])]};
-      auto [it, fresh] = faces.try_emplace(face_key(nodes), Face{nodes, 0});
-      ++it->second.count;
-      (void)fresh;
-    }
-  }
+  std::unordered_map<std::array<int, 4>, Face, FaceKeyHash> faces;
+  for (const auto& si : m.interfaces)
+    for (const auto* segs : {&si.slave, &si.master})
+      for (const auto& seg : *segs) faces.try_emplace(face_key(seg), Face{{}, 0});
+  for_each_element_face(m, [&](const std::array<int, 4>& key, const std::array<int, 4>& nodes) {
+    auto it = faces.find(key);
+    if (it == faces.end()) return;
+    if (it->second.count++ == 0) it->second.nodes = nodes;
+  });
   Location file_loc;
   file_loc.file = m.deck_file;
   for (std::size_t i = 0; i < m.interfaces.size(); ++i) {
@@ -73,7 +101,7 @@ void orient_interface_segments(Model& m, Diagnostics& diag) {
       const auto& lines = side == 0 ? si.slave_line : si.master_line;
       for (std::size_t s = 0; s < segs.size(); ++s) {
         auto it = faces.find(face_key(segs[s]));
-        if (it == faces.end() || it->second.count != 1) continue;
+        if (it == faces.end() || it->second.count != 1) continue;  // not a face, or interior
         const std::vector<int> out = face_cycle(it->second.nodes), given = face_cycle(segs[s]);
         if (same_cycle(given, out)) continue;
         Location loc = file_loc;
@@ -131,15 +159,23 @@ bool check_model(const Model& m, Diagnostics& diag) {
   // nodes and materials used
   std::vector<char> node_used(std::size_t(m.num_nodes()), 0);
   std::vector<char> mat_used(m.materials.size(), 0);
-  std::set<std::array<int, 4>> faces;
   for (int e = 0; e < m.num_hexes(); ++e) {
     const auto& n = m.hex_nodes[std::size_t(e)];
     if (n[0] < 0) continue;
     for (int j = 0; j < 8; ++j) node_used[std::size_t(n[std::size_t(j)])] = 1;
     int mat = m.hex_material[std::size_t(e)];
     if (mat >= 0 && mat < int(mat_used.size())) mat_used[std::size_t(mat)] = 1;
-    for (const auto& f : kHexFaces)
-      faces.insert(face_key({n[std::size_t(f[0])], n[std::size_t(f[1])], n[std::size_t(f[2])], n[std::size_t(f[3])]}));
+  }
+  // element faces that are interface segments (only those keys are looked for)
+  std::unordered_map<std::array<int, 4>, bool, FaceKeyHash> faces;
+  if (has_interface_segments(m)) {
+    for (const auto& si : m.interfaces)
+      for (const auto* segs : {&si.slave, &si.master})
+        for (const auto& seg : *segs) faces.try_emplace(face_key(seg), false);
+    for_each_element_face(m, [&](const std::array<int, 4>& key, const std::array<int, 4>&) {
+      auto it = faces.find(key);
+      if (it != faces.end()) it->second = true;
+    });
   }
   for (std::size_t k = 0; k < mat_used.size(); ++k) {
     if (!mat_used[k] && m.materials[k].number != 0) {
@@ -177,7 +213,7 @@ bool check_model(const Model& m, Diagnostics& diag) {
     for (int side = 0; side < 2; ++side) {
       const auto& segs = side == 0 ? si.slave : si.master;
       for (std::size_t s = 0; s < segs.size(); ++s) {
-        if (!faces.count(face_key(segs[s]))) {
+        if (!faces[face_key(segs[s])]) {
           Location loc = file_loc;
           const auto& lines = side == 0 ? si.slave_line : si.master_line;
           loc.file = m.file_of(side == 0 ? si.slave_file : si.master_file, s);
