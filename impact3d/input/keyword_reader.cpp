@@ -233,6 +233,51 @@ class KCard {
   const ParamTable* params_ = nullptr;
 };
 
+Ref field_ref(const KLine& l, const std::vector<int>& widths, int k) {
+  Diagnostics quiet;  // the card was read already: anything about it was reported then
+  return KCard(l, std::string(), widths, quiet).ref(k);
+}
+
+// Fast path for the bulk cards (*NODE, *ELEMENT_SOLID): a card with no comma, no '&'
+// (*PARAMETER reference) and only printable ASCII is read by columns without a KCard when every
+// field reads as a number (or is blank) and passes its checks, so that no message can come from
+// it; anything else is read again, the normal way, by the code that reports every problem.
+bool plain_keyword_card(std::string_view t) {
+  for (char ch : t) {
+    const unsigned char c = static_cast<unsigned char>(ch);
+    if (c < 32 || c >= 127 || c == ',' || c == '&') return false;
+  }
+  return true;
+}
+// Field k (0-based) of a plain card with these widths, as KCard::i / KCard::r read it: blank is 0.
+struct PlainFields {
+  std::string_view t;
+  const std::vector<int>& widths;
+  int c1[20] = {};
+  PlainFields(std::string_view text, const std::vector<int>& w) : t(text), widths(w) {
+    int c = 1;
+    for (std::size_t k = 0; k < w.size() && k < 20; ++k) {
+      c1[k] = c;
+      c += w[k];
+    }
+  }
+  std::string_view field(int k) const { return card_columns(t, c1[k], c1[k] + widths[std::size_t(k)] - 1); }
+  bool i(int k, int& v) const {
+    long long x = 0;
+    const FieldStatus st = parse_fortran_int(field(k), x);
+    if (st == FieldStatus::bad) return false;
+    v = st == FieldStatus::ok ? int(x) : 0;
+    return true;
+  }
+  bool r(int k, double& v) const {
+    double x = 0;
+    const FieldStatus st = parse_fortran_real(field(k), x);
+    if (st == FieldStatus::bad) return false;
+    v = st == FieldStatus::ok ? x : 0.0;
+    return true;
+  }
+};
+
 struct Block {
   std::string name;     // upper case, suffix removed
   std::string keyword;  // as written (for messages)
@@ -243,19 +288,47 @@ struct Block {
   std::vector<KLine> data;
 };
 
-// Raw records, before resolution.
+// Raw records, before resolution.  Nodes and solids are the bulk of a deck: they keep their
+// card (file and line) and the widths it was read with, and find the columns of a field again
+// (field_ref) only when a message needs them.
+
+// The place of field k of a card read with these widths (or at its commas).
+Ref field_ref(const KLine& l, const std::vector<int>& widths, int k);
+
+// *NODE field widths: 0 standard (I8 3E16 I8 I8), 1 long (6 x 20), 2 I10 (I10 3E16 I10 I10).
+const std::vector<int>& node_widths(int format) {
+  static const std::vector<int> w[3] = {{8, 16, 16, 16, 8, 8}, {20, 20, 20, 20, 20, 20}, {10, 16, 16, 16, 10, 10}};
+  return w[format];
+}
+// *ELEMENT_SOLID widths: n fields (2 or 10) of an id width (8, 10 or 20).
+const std::vector<int>& id_widths(int n, int idw) {
+  static const std::vector<int> w[2][3] = {
+      {std::vector<int>(2, 8), std::vector<int>(2, 10), std::vector<int>(2, 20)},
+      {std::vector<int>(10, 8), std::vector<int>(10, 10), std::vector<int>(10, 20)}};
+  return w[n == 2 ? 0 : 1][idw == 8 ? 0 : idw == 10 ? 1 : 2];
+}
+
 struct RNode {
   int id = 0;
+  std::int8_t tc = 0;
+  std::uint8_t format = 0;  // node_widths
   double x = 0, y = 0, z = 0;
-  int tc = 0;
-  Ref ref;  // id field
+  KLine card;
+  Ref ref() const { return field_ref(card, node_widths(format), 0); }  // id field
 };
 struct RElem {
   int id = 0, pid = 0;
   std::array<int, 8> n{};
-  Ref ref;                        // id field
-  Ref pid_ref;
-  std::array<Ref, 8> node_ref;
+  KLine card;                        // EID PID (and N1-N8 in the one-line form)
+  const DeckLine* node_card = nullptr;  // N1-N10 of the two-line form (same file), else null
+  std::uint8_t idw = 8;
+  const std::vector<int>& widths1() const { return id_widths(node_card ? 2 : 10, idw); }
+  Ref ref() const { return field_ref(card, widths1(), 0); }      // id field
+  Ref pid_ref() const { return field_ref(card, widths1(), 1); }
+  Ref node_ref(int j) const {
+    return node_card ? field_ref({card.file, node_card}, id_widths(10, idw), j)
+                     : field_ref(card, widths1(), 2 + j);
+  }
 };
 struct RPart {
   int pid = 0, secid = 0, mid = 0, eosid = 0, hgid = 0;
@@ -881,23 +954,37 @@ class KeywordReader {
   }
 
   void parse_node(const Block& b) {
-    std::vector<int> w = b.long_fmt ? std::vector<int>{20, 20, 20, 20, 20, 20}
-                         : b.i10    ? std::vector<int>{10, 16, 16, 16, 10, 10}
-                                    : std::vector<int>{8, 16, 16, 16, 8, 8};
+    const std::uint8_t format = b.long_fmt ? 1 : b.i10 ? 2 : 0;
+    const std::vector<int>& w = node_widths(format);
     for (std::size_t k = 0; k < b.data.size(); ++k) {
       if (is_blank(b.data[k].line->text)) continue;
+      if (plain_keyword_card(b.data[k].line->text)) {  // fast path (see plain_keyword_card)
+        const PlainFields f(b.data[k].line->text, w);
+        RNode n;
+        int tc = 0, rc = 0;
+        if (f.i(0, n.id) && f.r(1, n.x) && f.r(2, n.y) && f.r(3, n.z) && f.i(4, tc) && f.i(5, rc) &&
+            n.id >= 1 && tc >= 0 && tc <= 7 && rc == 0) {
+          n.tc = std::int8_t(tc);
+          n.format = format;
+          n.card = b.data[k];
+          nodes_.push_back(n);
+          continue;
+        }
+      }
       KCard c = card(b, k, "", w);
       RNode n;
       n.id = int(c.i(0, "NID"));
       c.set_card(b.keyword + " node " + std::to_string(n.id));
-      n.ref = c.ref(0);
+      n.format = format;
+      n.card = b.data[k];
       n.x = c.r(1, "X");
       n.y = c.r(2, "Y");
       n.z = c.r(3, "Z");
-      n.tc = int(c.i(4, "TC"));
+      int tc = int(c.i(4, "TC"));
       int rc = int(c.i(5, "RC"));
       if (n.id < 1) { c.error(1201, 0, "NID", "node ids must be positive"); continue; }
-      if (n.tc < 0 || n.tc > 7) { c.error(1216, 4, "TC"); n.tc = 0; }
+      if (tc < 0 || tc > 7) { c.error(1216, 4, "TC"); tc = 0; }
+      n.tc = std::int8_t(tc);
       if (rc < 0 || rc > 7) c.error(1216, 5, "RC");
       else if (rc != 0) note_rotational(c.ref(5));
       nodes_.push_back(n);
@@ -921,20 +1008,46 @@ class KeywordReader {
       } else {
         legacy = rtrim(t).size() > std::size_t(2 * idw);
       }
+      if (!free && plain_keyword_card(t)) {  // fast path (see plain_keyword_card)
+        RElem e;
+        e.idw = std::uint8_t(idw);
+        e.card = b.data[k];
+        bool ok;
+        if (legacy) {
+          const PlainFields f(t, id_widths(10, idw));
+          ok = f.i(0, e.id) && f.i(1, e.pid);
+          for (int j = 0; j < 8 && ok; ++j) ok = f.i(2 + j, e.n[std::size_t(j)]);
+        } else {
+          ok = k + 1 < b.data.size() && !is_keyword_line(b.data[k + 1].line->text) &&
+               plain_keyword_card(b.data[k + 1].line->text);
+          if (ok) {
+            const PlainFields f1(t, id_widths(2, idw));
+            const PlainFields f2(b.data[k + 1].line->text, id_widths(10, idw));
+            int n9 = 0, n10 = 0;
+            ok = f1.i(0, e.id) && f1.i(1, e.pid) && f2.i(8, n9) && f2.i(9, n10) && n9 == 0 && n10 == 0;
+            for (int j = 0; j < 8 && ok; ++j) ok = f2.i(j, e.n[std::size_t(j)]);
+            e.node_card = b.data[k + 1].line;
+          }
+        }
+        if (ok && e.id >= 1) {
+          elems_.push_back(e);
+          k += legacy ? 1 : 2;
+          continue;
+        }
+      }
       RElem e;
+      e.idw = std::uint8_t(idw);
+      e.card = b.data[k];
       std::vector<int> w1 = legacy ? std::vector<int>(10, idw) : std::vector<int>(2, idw);
       KCard c = card(b, k, "", w1);
       e.id = int(c.i(0, "EID"));
       c.set_card(b.keyword + " element " + std::to_string(e.id));
-      e.ref = c.ref(0);
       e.pid = int(c.i(1, "PID"));
-      e.pid_ref = c.ref(1);
       bool ok = true;
       if (legacy) {
         for (int j = 0; j < 8; ++j) {
           std::string f = "N" + std::to_string(j + 1);
           e.n[std::size_t(j)] = int(c.i(2 + j, f.c_str()));
-          e.node_ref[std::size_t(j)] = c.ref(2 + j);
         }
         ++k;
       } else {
@@ -943,10 +1056,10 @@ class KeywordReader {
           break;
         }
         KCard c2 = card(b, k + 1, "element " + std::to_string(e.id) + " node card", std::vector<int>(10, idw));
+        e.node_card = b.data[k + 1].line;
         for (int j = 0; j < 8; ++j) {
           std::string f = "N" + std::to_string(j + 1);
           e.n[std::size_t(j)] = int(c2.i(j, f.c_str()));
-          e.node_ref[std::size_t(j)] = c2.ref(j);
         }
         for (int j = 8; j < 10; ++j) {
           std::string f = "N" + std::to_string(j + 1);
@@ -1439,7 +1552,10 @@ class KeywordReader {
   std::vector<int> part_material_;     // part index -> material index or -1
   std::vector<std::vector<int>> part_elems_;  // part index -> element indices
 
+  bool node_ids_identity_ = false;  // node_ids_ is 1..N: the index is id - 1
+
   int node_index(int id) const {
+    if (node_ids_identity_) return id >= 1 && id <= int(node_ids_.size()) ? id - 1 : -1;
     auto it = std::lower_bound(node_ids_.begin(), node_ids_.end(), id);
     return it != node_ids_.end() && *it == id ? int(it - node_ids_.begin()) : -1;
   }
@@ -1462,18 +1578,21 @@ class KeywordReader {
   }
 
   void resolve_nodes() {
-    std::vector<std::size_t> order(nodes_.size());
-    for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
-    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return nodes_[a].id < nodes_[b].id; });
+    std::vector<std::uint32_t> order(nodes_.size());
+    for (std::size_t k = 0; k < order.size(); ++k) order[k] = std::uint32_t(k);
+    const auto by_id = [&](std::uint32_t a, std::uint32_t b) { return nodes_[a].id < nodes_[b].id; };
+    if (!std::is_sorted(order.begin(), order.end(), by_id)) std::stable_sort(order.begin(), order.end(), by_id);
     std::vector<const RNode*> kept;
-    for (std::size_t k : order) {
+    kept.reserve(nodes_.size());
+    for (std::uint32_t k : order) {
       const RNode& n = nodes_[k];
       if (!kept.empty() && kept.back()->id == n.id) {
-        err(1200, n.ref, "*NODE node " + std::to_string(n.id), "NID", "node " + std::to_string(n.id) + " also defined at " + at(kept.back()->ref));
+        err(1200, n.ref(), "*NODE node " + std::to_string(n.id), "NID", "node " + std::to_string(n.id) + " also defined at " + at(kept.back()->ref()));
         continue;
       }
       kept.push_back(&n);
     }
+    order = {};
     std::size_t nn = kept.size();
     m_.x.resize(nn);
     m_.y.resize(nn);
@@ -1491,6 +1610,9 @@ class KeywordReader {
     }
     m_.node_user_id.clear();
     if (!identity) m_.node_user_id = node_ids_;
+    node_ids_identity_ = identity;
+    kept = {};
+    nodes_ = {};  // the raw nodes are not needed any more
     if (nn == 0) {
       Location loc;
       loc.file = main_.name();
@@ -1504,18 +1626,21 @@ class KeywordReader {
       if (!fresh) err(1200, parts_[k].ref, "*PART " + std::to_string(parts_[k].pid), "PID", "also defined at " + at(parts_[it->second].ref));
     }
     part_elems_.assign(parts_.size(), {});
-    std::vector<std::size_t> order(elems_.size());
-    for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
-    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return elems_[a].id < elems_[b].id; });
+    std::vector<std::uint32_t> order(elems_.size());
+    for (std::size_t k = 0; k < order.size(); ++k) order[k] = std::uint32_t(k);
+    const auto by_id = [&](std::uint32_t a, std::uint32_t b) { return elems_[a].id < elems_[b].id; };
+    if (!std::is_sorted(order.begin(), order.end(), by_id)) std::stable_sort(order.begin(), order.end(), by_id);
     std::vector<const RElem*> kept;
-    for (std::size_t k : order) {
+    kept.reserve(elems_.size());
+    for (std::uint32_t k : order) {
       const RElem& e = elems_[k];
       if (!kept.empty() && kept.back()->id == e.id) {
-        err(1200, e.ref, "*ELEMENT_SOLID element " + std::to_string(e.id), "EID", "element " + std::to_string(e.id) + " also defined at " + at(kept.back()->ref));
+        err(1200, e.ref(), "*ELEMENT_SOLID element " + std::to_string(e.id), "EID", "element " + std::to_string(e.id) + " also defined at " + at(kept.back()->ref()));
         continue;
       }
       kept.push_back(&e);
     }
+    order = {};
     std::size_t ne = kept.size();
     std::array<int, 8> undefined;
     undefined.fill(-1);
@@ -1525,35 +1650,47 @@ class KeywordReader {
     m_.hex_file.assign(ne, -1);
     elem_ids_.resize(ne);
     bool identity = true;
+    const DeckFile* last_file = nullptr;
+    int last_file_index = -1;
+    int last_pid = 0;
+    auto last_part = part_index_.end();
     for (std::size_t k = 0; k < ne; ++k) {
       const RElem& e = *kept[k];
       elem_ids_[k] = e.id;
       identity = identity && e.id == int(k) + 1;
-      m_.hex_line[k] = e.ref.line ? e.ref.line->number : 0;
-      m_.hex_file[k] = file_index(e.ref.file);
-      std::string card = "*ELEMENT_SOLID element " + std::to_string(e.id);
+      m_.hex_line[k] = e.card.line ? e.card.line->number : 0;
+      if (e.card.file != last_file || !last_file) {
+        last_file = e.card.file;
+        last_file_index = file_index(e.card.file);
+      }
+      m_.hex_file[k] = last_file_index;
+      const auto card = [&] { return "*ELEMENT_SOLID element " + std::to_string(e.id); };
       bool ok = true;
       std::array<int, 8> n{};
       for (int j = 0; j < 8; ++j) {
         int idx = node_index(e.n[std::size_t(j)]);
         if (idx < 0) {
           std::string f = "N" + std::to_string(j + 1);
-          err(1202, e.node_ref[std::size_t(j)], card, f.c_str(), "node " + std::to_string(e.n[std::size_t(j)]) + " is not defined by *NODE");
+          err(1202, e.node_ref(j), card(), f.c_str(), "node " + std::to_string(e.n[std::size_t(j)]) + " is not defined by *NODE");
           ok = false;
         }
         n[std::size_t(j)] = idx;
       }
-      auto pit = part_index_.find(e.pid);
+      if (last_part == part_index_.end() || e.pid != last_pid) {
+        last_part = part_index_.find(e.pid);
+        last_pid = e.pid;
+      }
+      auto pit = last_part;
       if (pit == part_index_.end()) {
-        err(1308, e.pid_ref, card, "PID", "part " + std::to_string(e.pid) + " is not defined by *PART");
+        err(1308, e.pid_ref(), card(), "PID", "part " + std::to_string(e.pid) + " is not defined by *PART");
         ok = false;
       } else {
         part_elems_[std::size_t(pit->second)].push_back(int(k));
       }
       if (ok && !is_valid_solid_node_pattern(n)) {
-        Ref r = e.node_ref[0];
-        r.c2 = e.node_ref[7].c2;
-        err(1222, r, card, "N1-N8");
+        Ref r = e.node_ref(0);
+        r.c2 = e.node_ref(7).c2;
+        err(1222, r, card(), "N1-N8");
         ok = false;
       }
       if (ok) {
@@ -1562,6 +1699,8 @@ class KeywordReader {
         m_.hex_material[k] = -2 - pit->second;  // part index, replaced by the material index
       }
     }
+    kept = {};
+    elems_ = {};  // the raw elements are not needed any more
     m_.hex_user_id.clear();
     if (!identity) m_.hex_user_id = elem_ids_;
     if (ne == 0) {
