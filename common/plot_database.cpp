@@ -798,6 +798,21 @@ void PlotReader::open(const std::string& root_path) {
                 unsupported(f, "non-zero EXTRA control word " + std::to_string(64 + k));
     }
     const std::int64_t nparts = c.nmmat > 0 ? c.nmmat : c.nummat8;
+    {
+        // The part count sizes per-part arrays and loops here and in POST-IMPACT, but nothing in
+        // the root file has to follow from it: checked against the words the whole family holds
+        // (each part has words in every state), so a corrupt count cannot ask for gigabytes.
+        std::int64_t family_bytes = static_cast<std::int64_t>(d.size());
+        for (int m = 1;; ++m) {
+            const std::int64_t s = file_size_or(PlotWriter::member_name(root_path, m), -1);
+            if (s < 0) break;
+            family_bytes += s;
+        }
+        if (nparts > family_bytes / ws)
+            throw std::runtime_error("plot database " + f + ": implausible control words: " +
+                                     std::to_string(nparts) + " parts (NMMAT/NUMMAT8) in a family of " +
+                                     std::to_string(family_bytes) + " bytes");
+    }
     const std::int64_t numnp = c.numnp, nel8 = c.nel8;
 
     PlotGeometry g;

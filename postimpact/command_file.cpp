@@ -142,6 +142,7 @@ int Session::parse_state(const std::string& s, const std::string& cmd) {
 std::vector<int> Session::parse_states(const std::vector<std::string>& w, std::size_t from, const std::string& cmd) {
     Database& d = db(cmd);
     const int n = d.num_states();
+    if (n == 0) throw CommandError(cmd + ": the database has no states");
     std::vector<int> out;
     if (from >= w.size()) {  // default: five states from first to last
         const int k = std::min(n, 5);
@@ -175,6 +176,7 @@ std::vector<int> Session::parse_states(const std::vector<std::string>& w, std::s
         }
         out.push_back(parse_state(w[i], cmd));
     }
+    if (out.empty()) throw CommandError(cmd + ": no states selected (a range A:B needs A <= B)");
     return out;
 }
 
@@ -302,6 +304,7 @@ void Session::execute(const std::vector<std::string>& w, const std::string& wher
             Database& d = db(c);
             const int si = na == 2 ? parse_state(w[2], c) : (state_ >= 0 ? state_ : d.num_states() - 1);
             if (d.num_states() == 0) throw CommandError("picture: the database has no states");
+            if (dry_run_) { d.state(si); return; }
             const std::string path = out_path(with_ext(w[1], ".png"));
             write_png(path, make_picture(d, {si}, ps_, renderer(), font()));
             wrote(path);
@@ -310,6 +313,7 @@ void Session::execute(const std::vector<std::string>& w, const std::string& wher
             Database& d = db(c);
             const std::vector<int> st = parse_states(w, 2, c);
             if (st.size() > 16) throw CommandError("sequence: at most 16 states side by side (frames makes an animation)");
+            if (dry_run_) { for (int si : st) d.state(si); return; }
             const std::string path = out_path(with_ext(w[1], ".png"));
             write_png(path, make_picture(d, st, ps_, renderer(), font()));
             wrote(path);
@@ -317,6 +321,7 @@ void Session::execute(const std::vector<std::string>& w, const std::string& wher
             if (na < 1) throw CommandError("frames: usage: frames PREFIX [STATES...|all|every K|count N]");
             Database& d = db(c);
             const std::vector<int> st = na == 1 ? parse_states({"frames", "x", "all"}, 2, c) : parse_states(w, 2, c);
+            if (dry_run_) { for (int si : st) d.state(si); return; }
             int k = 0;
             for (int si : st) {
                 char num[16];
@@ -335,6 +340,7 @@ void Session::execute(const std::vector<std::string>& w, const std::string& wher
                 throw CommandError(e.what());
             }
             const HistoryData h = extract_history(d, curves);
+            if (dry_run_) return;
             const std::string png = out_path(with_ext(w[1], ".png"));
             std::filesystem::path csv(png);
             csv.replace_extension(".csv");

@@ -39,6 +39,10 @@ public:
     // of five states, and the energies (PNG + CSV).
     void default_set();
 
+    // Dry run: every command is checked and the actions read the states they name (and extract
+    // their histories), but nothing is rendered or written (the command-file fuzz target).
+    void set_dry_run(bool on) { dry_run_ = on; }
+
     bool has_database() const { return db_ != nullptr; }
     int actions() const { return actions_; }  // pictures / plots written so far
     const std::vector<std::string>& written() const { return written_; }
@@ -63,6 +67,7 @@ private:
     std::string outdir_;
     int plot_w_ = 1200, plot_h_ = 800;
     bool timing_ = false;
+    bool dry_run_ = false;
     double t0_wall_ = 0, t0_cpu_ = 0;  // start of the current action
     int actions_ = 0;
     std::vector<std::string> written_;
