@@ -9,7 +9,51 @@
 #include <limits>
 #include <memory>
 
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
+
 namespace impact3d {
+
+namespace {
+constexpr std::size_t kBulkBytes = std::size_t(4) << 20;  // blocks mapped on their own from here
+}
+
+void advise_huge_pages(void* p, std::size_t bytes) {
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+  constexpr std::uintptr_t kHuge = std::uintptr_t(2) << 20;
+  if (!p || bytes < kBulkBytes) return;
+  const std::uintptr_t b = (reinterpret_cast<std::uintptr_t>(p) + kHuge - 1) & ~(kHuge - 1);
+  const std::uintptr_t e = (reinterpret_cast<std::uintptr_t>(p) + bytes) & ~(kHuge - 1);
+  if (e > b) (void)::madvise(reinterpret_cast<void*>(b), e - b, MADV_HUGEPAGE);
+#else
+  (void)p;
+  (void)bytes;
+#endif
+}
+
+void* allocate_bulk(std::size_t bytes) {
+#if defined(__linux__)
+  if (bytes >= kBulkBytes) {
+    void* p = ::mmap(nullptr, bytes, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+    if (p == MAP_FAILED) throw std::bad_alloc();
+    advise_huge_pages(p, bytes);
+    return p;
+  }
+#endif
+  return ::operator new(bytes == 0 ? 1 : bytes);
+}
+
+void free_bulk(void* p, std::size_t bytes) {
+  if (!p) return;
+#if defined(__linux__)
+  if (bytes >= kBulkBytes) {
+    (void)::munmap(p, bytes);
+    return;
+  }
+#endif
+  ::operator delete(p);
+}
 
 namespace {
 std::string_view trim(std::string_view s) {
@@ -122,7 +166,7 @@ bool is_keyword_line(std::string_view line) {
 
 bool DeckFile::load(const std::string& path, Diagnostics& diag) {
   name_ = path;
-  text_.reset();
+  text_ = Text();
   size_ = 0;
   lines_.clear();
   pos_ = 0;
@@ -144,8 +188,8 @@ bool DeckFile::load(const std::string& path, Diagnostics& diag) {
     return false;
   }
   // one read into one block, not initialised first
-  std::unique_ptr<char[]> text(new char[static_cast<std::size_t>(size) + 1]);
-  in.read(text.get(), size);
+  Text text(static_cast<std::size_t>(size) + 1);
+  in.read(text.p, size);
   if (!in) {
     Location loc;
     loc.file = path;
@@ -160,8 +204,8 @@ bool DeckFile::load(const std::string& path, Diagnostics& diag) {
 
 void DeckFile::load_from_string(const std::string& name, std::string_view content) {
   name_ = name;
-  text_.reset(new char[content.size() + 1]);
-  if (!content.empty()) std::memcpy(text_.get(), content.data(), content.size());
+  text_ = Text(content.size() + 1);
+  if (!content.empty()) std::memcpy(text_.p, content.data(), content.size());
   size_ = content.size();
   split_lines();
 }
@@ -170,7 +214,7 @@ void DeckFile::split_lines() {
   lines_.clear();
   pos_ = 0;
   cards_total_ = cards_read_ = 0;
-  const char* const text = text_.get();
+  const char* const text = text_.p;
   const std::string_view content(text, size_);
   // count the lines first: one allocation of the right size
   std::size_t count = 0;

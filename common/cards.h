@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <new>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -16,6 +17,43 @@
 namespace impact3d {
 
 enum class FieldStatus { blank, ok, bad };
+
+// Memory for the bulk arrays of the input phase.  A large block (from 4 MiB) is mapped on its
+// own (mmap) and asks for transparent huge pages: reading a big deck touches hundreds of MB
+// once, 2 MiB pages save most of the page faults (Linux's THP setting "madvise" needs the ask),
+// and the block goes back to the system as soon as it is freed (malloc would keep it in its
+// heap once its mmap threshold has grown).  Smaller blocks come from operator new.
+void* allocate_bulk(std::size_t bytes);
+void free_bulk(void* p, std::size_t bytes);
+// Asks for huge pages on a block that is not written yet (see allocate_bulk; from 4 MiB).
+void advise_huge_pages(void* p, std::size_t bytes);
+
+template <class T>
+struct HugePageAllocator {
+  using value_type = T;
+  HugePageAllocator() = default;
+  template <class U>
+  HugePageAllocator(const HugePageAllocator<U>&) {}
+  T* allocate(std::size_t n) {
+    if (n > std::size_t(-1) / sizeof(T)) throw std::bad_alloc();
+    return static_cast<T*>(allocate_bulk(n * sizeof(T)));
+  }
+  void deallocate(T* p, std::size_t n) { free_bulk(p, n * sizeof(T)); }
+  template <class U>
+  bool operator==(const HugePageAllocator<U>&) const { return true; }
+};
+
+// Makes v hold n default elements in storage advised for huge pages (a fresh block when it
+// must grow), for the bulk arrays of a model.
+template <class V>
+void assign_huge(V& v, std::size_t n, const typename V::value_type& value) {
+  if (v.capacity() < n) {
+    V().swap(v);
+    v.reserve(n);
+    advise_huge_pages(v.data(), n * sizeof(typename V::value_type));
+  }
+  v.assign(n, value);
+}
 
 // Fortran I-format: optional sign and digits, surrounding blanks allowed, blank = default.
 FieldStatus parse_fortran_int(std::string_view text, long long& value);
@@ -63,9 +101,10 @@ class DeckFile {
   void load_from_string(const std::string& name, std::string_view content);
 
   const std::string& name() const { return name_; }
-  const std::vector<DeckLine>& lines() const { return lines_; }
+  using Lines = std::vector<DeckLine, HugePageAllocator<DeckLine>>;
+  const Lines& lines() const { return lines_; }
   // The whole text as loaded.
-  std::string_view text() const { return {text_.get(), size_}; }
+  std::string_view text() const { return {text_.p, size_}; }
 
   // Sequential access to cards (comment lines skipped).
   const DeckLine* next_card();
@@ -79,9 +118,22 @@ class DeckFile {
   void split_lines();
 
   std::string name_;
-  std::unique_ptr<char[]> text_;
+  struct Text {  // the file's text, from allocate_bulk
+    char* p = nullptr;
+    std::size_t bytes = 0;
+    Text() = default;
+    explicit Text(std::size_t n) : p(static_cast<char*>(allocate_bulk(n))), bytes(n) {}
+    Text(Text&& o) noexcept : p(o.p), bytes(o.bytes) { o.p = nullptr; o.bytes = 0; }
+    Text& operator=(Text&& o) noexcept {
+      std::swap(p, o.p);
+      std::swap(bytes, o.bytes);
+      return *this;
+    }
+    ~Text() { if (p) free_bulk(p, bytes); }
+  };
+  Text text_;
   std::size_t size_ = 0;
-  std::vector<DeckLine> lines_;
+  Lines lines_;
   std::size_t pos_ = 0;
   long cards_total_ = 0, cards_read_ = 0;
 };

@@ -428,10 +428,10 @@ class Dyna3dReader {
     // Nodes never defined (reported as 1204) keep NaN coordinates: the volume check skips the
     // elements that use them instead of reporting a second, misleading error.
     const double undefined = std::numeric_limits<double>::quiet_NaN();
-    m_.x.assign(std::size_t(n), undefined);
-    m_.y.assign(std::size_t(n), undefined);
-    m_.z.assign(std::size_t(n), undefined);
-    m_.bc.assign(std::size_t(n), 0);
+    assign_huge(m_.x, std::size_t(n), undefined);
+    assign_huge(m_.y, std::size_t(n), undefined);
+    assign_huge(m_.z, std::size_t(n), undefined);
+    assign_huge(m_.bc, std::size_t(n), 0);
     std::vector<int> seen(std::size_t(n), 0);
     const bool L = m_.large_format;
     const int i1 = 1, i2 = L ? 8 : 5, b1 = i2 + 1, b2 = i2 + 5;
@@ -512,9 +512,9 @@ class Dyna3dReader {
     // them instead of computing the volume of a degenerate element at node 1.
     std::array<int, 8> undefined;
     undefined.fill(-1);
-    m_.hex_nodes.assign(std::size_t(n), undefined);
-    m_.hex_material.assign(std::size_t(n), -1);
-    m_.hex_line.assign(std::size_t(n), 0);
+    assign_huge(m_.hex_nodes, std::size_t(n), undefined);
+    assign_huge(m_.hex_material, std::size_t(n), -1);
+    assign_huge(m_.hex_line, std::size_t(n), 0);
     std::vector<int> seen(std::size_t(n), 0);
     const int w = idw_;
     for (int k = 0; k < n; ++k) {

@@ -46,6 +46,12 @@ std::string rtrim(std::string_view s) {
 }
 bool is_blank(std::string_view s) { return trim_sv(s).empty(); }
 
+// Frees a vector's storage (v = {} would keep it).
+template <class V>
+void release(V& v) {
+  V().swap(v);
+}
+
 // Boundary code 0-7 <-> fixed translational components (bit 0 x, bit 1 y, bit 2 z).
 int bc_bits(int code) {
   return (bc_fixes_x(code) ? 1 : 0) | (bc_fixes_y(code) ? 2 : 0) | (bc_fixes_z(code) ? 4 : 0);
@@ -285,7 +291,7 @@ struct Block {
   bool long_fmt = false, i10 = false;
   bool title_opt = false, id_opt = false;  // _TITLE / _ID option cards
   bool moving_opt = false;                 // *RIGIDWALL_PLANAR_MOVING: card 3 MASS, V0
-  std::vector<KLine> data;
+  std::vector<KLine, HugePageAllocator<KLine>> data;
 };
 
 // Raw records, before resolution.  Nodes and solids are the bulk of a deck: they keep their
@@ -445,6 +451,7 @@ class KeywordReader {
     collect_parameters();
     parse_blocks();
     report_unsupported();
+    for (Block& b : blocks_) release(b.data);  // read: the lines are not needed by block any more
     resolve();
   }
 
@@ -458,8 +465,8 @@ class KeywordReader {
   bool global_long_ = false, global_i10_ = false;
 
   // raw records
-  std::vector<RNode> nodes_;
-  std::vector<RElem> elems_;
+  std::vector<RNode, HugePageAllocator<RNode>> nodes_;
+  std::vector<RElem, HugePageAllocator<RElem>> elems_;
   std::vector<RPart> parts_;
   std::map<int, RSection> sections_;
   std::map<int, RMat> mats_;
@@ -601,7 +608,7 @@ class KeywordReader {
   void close_block(long cur, int depth, std::vector<std::string>& stack) {
     if (cur < 0 || blocks_[std::size_t(cur)].name != "INCLUDE") return;
     // copy: including appends to blocks_
-    std::vector<KLine> data = blocks_[std::size_t(cur)].data;
+    const auto data = blocks_[std::size_t(cur)].data;
     std::string name;
     KLine first{};
     for (const KLine& kl : data) {
@@ -956,6 +963,7 @@ class KeywordReader {
   void parse_node(const Block& b) {
     const std::uint8_t format = b.long_fmt ? 1 : b.i10 ? 2 : 0;
     const std::vector<int>& w = node_widths(format);
+    reserve_for(nodes_, b.data.size());
     for (std::size_t k = 0; k < b.data.size(); ++k) {
       if (is_blank(b.data[k].line->text)) continue;
       if (plain_keyword_card(b.data[k].line->text)) {  // fast path (see plain_keyword_card)
@@ -991,12 +999,19 @@ class KeywordReader {
     }
   }
 
+  // Room for up to `more` records (one per data line at most), growing geometrically.
+  template <class V>
+  static void reserve_for(V& v, std::size_t more) {
+    if (v.capacity() - v.size() < more) v.reserve(std::max(v.size() + more, 2 * v.capacity()));
+  }
+
   void note_rotational(const Ref& r) {
     if (rotational_spc_++ == 0) rotational_ref_ = r;
   }
 
   void parse_element_solid(const Block& b) {
     const int idw = b.long_fmt ? 20 : b.i10 ? 10 : 8;
+    reserve_for(elems_, b.data.size());
     std::size_t k = 0;
     while (k < b.data.size()) {
       if (is_blank(b.data[k].line->text)) { ++k; continue; }
@@ -1592,12 +1607,12 @@ class KeywordReader {
       }
       kept.push_back(&n);
     }
-    order = {};
+    release(order);
     std::size_t nn = kept.size();
-    m_.x.resize(nn);
-    m_.y.resize(nn);
-    m_.z.resize(nn);
-    m_.bc.assign(nn, 0);
+    assign_huge(m_.x, nn, 0.0);
+    assign_huge(m_.y, nn, 0.0);
+    assign_huge(m_.z, nn, 0.0);
+    assign_huge(m_.bc, nn, 0);
     node_ids_.resize(nn);
     bool identity = true;
     for (std::size_t k = 0; k < nn; ++k) {
@@ -1611,8 +1626,8 @@ class KeywordReader {
     m_.node_user_id.clear();
     if (!identity) m_.node_user_id = node_ids_;
     node_ids_identity_ = identity;
-    kept = {};
-    nodes_ = {};  // the raw nodes are not needed any more
+    release(kept);
+    release(nodes_);  // the raw nodes are not needed any more
     if (nn == 0) {
       Location loc;
       loc.file = main_.name();
@@ -1640,14 +1655,14 @@ class KeywordReader {
       }
       kept.push_back(&e);
     }
-    order = {};
+    release(order);
     std::size_t ne = kept.size();
     std::array<int, 8> undefined;
     undefined.fill(-1);
-    m_.hex_nodes.assign(ne, undefined);
-    m_.hex_material.assign(ne, -1);
-    m_.hex_line.assign(ne, 0);
-    m_.hex_file.assign(ne, -1);
+    assign_huge(m_.hex_nodes, ne, undefined);
+    assign_huge(m_.hex_material, ne, -1);
+    assign_huge(m_.hex_line, ne, 0);
+    assign_huge(m_.hex_file, ne, -1);
     elem_ids_.resize(ne);
     bool identity = true;
     const DeckFile* last_file = nullptr;
@@ -1699,8 +1714,8 @@ class KeywordReader {
         m_.hex_material[k] = -2 - pit->second;  // part index, replaced by the material index
       }
     }
-    kept = {};
-    elems_ = {};  // the raw elements are not needed any more
+    release(kept);
+    release(elems_);  // the raw elements are not needed any more
     m_.hex_user_id.clear();
     if (!identity) m_.hex_user_id = elem_ids_;
     if (ne == 0) {
