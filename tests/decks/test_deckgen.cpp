@@ -28,6 +28,7 @@
 #include <unistd.h>
 
 #include "impact3d/input/deck_reader.h"
+#include "impact3d/input/deck_writer.h"
 
 namespace fs = std::filesystem;
 
@@ -556,6 +557,37 @@ TEST(DeckGen, RefineMultipliesElementsByEight) {
   const Deck tb = parse(slurp(t.path / "taylor_bar.dyn"));
   EXPECT_EQ(tb.numnp, 127 * 73);
   expect_symmetry_bc(tb, true, true, "taylor_bar (refine 2)");
+}
+
+// --taylor-bar NHEX: about NHEX hexahedra, positive volumes, symmetry codes; the keyword form
+// (--keyword) reads as the same model as the fixed form.
+TEST(DeckGen, TaylorBarAtRequestedSizeInBothFormats) {
+  TempDir t("taylor_hexes");
+  const fs::path fixed = t.path / "bar.dyn", keyword = t.path / "bar.k";
+  ASSERT_EQ(run(generator() + " --taylor-bar 5000 > " + fixed.string()), 0);
+  ASSERT_EQ(run(generator() + " --taylor-bar 5000 --keyword > " + keyword.string()), 0);
+  const Deck d = parse(slurp(fixed));
+  EXPECT_GT(d.numelh, 4500);
+  EXPECT_LT(d.numelh, 5500);
+  expect_positive_volumes(d, "taylor bar 5000");
+  expect_symmetry_bc(d, true, true, "taylor bar 5000");
+  impact3d::Model a, b;
+  impact3d::Diagnostics da, db;
+  ASSERT_TRUE(impact3d::read_and_check_deck(fixed.string(), a, da));
+  ASSERT_TRUE(impact3d::read_and_check_deck(keyword.string(), b, db));
+  EXPECT_EQ(da.warning_count(), 0);
+  EXPECT_EQ(db.warning_count(), 0);
+  EXPECT_TRUE(b.keyword_deck);
+  EXPECT_EQ(a.num_hexes(), d.numelh);
+  std::string diffs;
+  for (const auto& l : impact3d::model_differences(a, b)) diffs += l + "\n";
+  EXPECT_EQ(diffs, "");
+  // deterministic, and the shipped decks' options are refused together with it
+  const fs::path again = t.path / "again.k";
+  ASSERT_EQ(run(generator() + " --taylor-bar 5000 --keyword > " + again.string()), 0);
+  EXPECT_TRUE(slurp(again) == slurp(keyword));
+  EXPECT_NE(run(generator() + " --taylor-bar 5000 --refine 2 > " + (t.path / "x").string() + " 2>&1"), 0);
+  EXPECT_NE(run(generator() + " --taylor-bar 0 > " + (t.path / "x").string() + " 2>&1"), 0);
 }
 
 }  // namespace

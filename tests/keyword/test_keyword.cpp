@@ -483,6 +483,41 @@ TEST(KeywordRead, LegacyOneLineElementForm) {
   EXPECT_EQ(join(model_differences(a.m, b.m)), "");
 }
 
+// *NODE and *ELEMENT_SOLID cards that are plain (fixed columns, numbers only) are read on a
+// fast path; any other card (a *PARAMETER reference, commas, an integer written as a real, a
+// tab) is read the normal way.  Both give the same model, and the messages of the normal way.
+TEST(KeywordRead, BulkCardsGiveTheSameModelOnEveryPath) {
+  Read base = read_text(prepost_deck());
+  ASSERT_TRUE(base.ok) << base.messages();
+  std::string deck = prepost_deck();
+  const auto replace_line = [&](const std::string& from, const std::string& to) {
+    const std::size_t p = deck.find(from);
+    ASSERT_NE(p, std::string::npos) << from;
+    deck.replace(p, from.size(), to);
+  };
+  char buf[128];
+  std::snprintf(buf, sizeof buf, "%8d%16s%16s%16s%8d%8d", nid(1, 0, 0), "&XONE", "0.0", "0.0", 0, 0);
+  replace_line(node_line(nid(1, 0, 0), 1, 0, 0), buf);
+  replace_line(node_line(nid(2, 0, 0), 2, 0, 0), "1003,2.0,0.0,0.0");
+  std::snprintf(buf, sizeof buf, "%8s%16s%16s%16s%8d%8d", "1004.", "0.0", "1.0", "0.0", 0, 0);
+  replace_line(node_line(nid(0, 1, 0), 0, 1, 0), buf);
+  deck.insert(deck.find("*NODE"), "*PARAMETER\nRXONE           1.0\n");
+  Read mixed = read_text(deck);
+  ASSERT_TRUE(mixed.ok) << mixed.messages();
+  EXPECT_EQ(join(model_differences(base.m, mixed.m)), "");
+
+  // errors on plain cards are reported as the normal way reports them
+  std::string bad = prepost_deck();
+  const std::string n1 = node_line(nid(1, 1, 1), 1, 1, 1);
+  bad.replace(bad.find(n1), n1.size(), n1 + "\n" + n1);  // a node defined twice
+  Read b = read_text(bad);
+  EXPECT_FALSE(b.ok);
+  ASSERT_EQ(b.count(1200), 1) << b.messages();
+  EXPECT_EQ(b.first(1200)->where.col_first, 1);
+  EXPECT_EQ(b.first(1200)->where.col_last, 8);
+  EXPECT_NE(b.messages().find("*NODE node 1011, field \"NID\" (cols 1-8)"), std::string::npos) << b.messages();
+}
+
 // ---------------------------------------------------------------------------- includes
 
 TEST(KeywordInclude, NestedRelativePathsAndErrorsNameTheIncludeFile) {
