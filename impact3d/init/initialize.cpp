@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "impact3d/element/hexahedron.h"
+#include "impact3d/solve/element_groups.h"
 
 namespace impact3d {
 
@@ -53,15 +55,15 @@ void init_elements(const Model& m, State& s) {
   s.conn = m.hex_nodes;
   s.mat = m.hex_material;
   s.rigid_elem.assign(std::size_t(ne), 0);
-  for (auto* v : {&s.vol0, &s.vol, &s.mass_e, &s.eps_p, &s.q, &s.ie_e, &s.hg_e, &s.bv_e, &s.dt_e,
-                  &s.de_ie, &s.de_hg, &s.de_bv})
+  for (auto* v : {&s.vol0, &s.vol, &s.mass_e, &s.eps_p, &s.q, &s.ie_e, &s.hg_e, &s.bv_e, &s.dt_e})
     v->assign(std::size_t(ne), 0.0);
   s.sig.assign(std::size_t(6) * ne, 0.0);
   s.back.assign(std::size_t(6) * ne, 0.0);
   s.hgs.assign(std::size_t(12) * ne, 0.0);
-  s.cfx.assign(std::size_t(8) * ne, 0.0);
-  s.cfy.assign(std::size_t(8) * ne, 0.0);
-  s.cfz.assign(std::size_t(8) * ne, 0.0);
+  build_element_groups(s);
+  s.cfx.assign(std::size_t(8) * s.slot_elem.size(), 0.0);
+  s.cfy.assign(std::size_t(8) * s.slot_elem.size(), 0.0);
+  s.cfz.assign(std::size_t(8) * s.slot_elem.size(), 0.0);
   s.yielded.assign(std::size_t(ne), 0);
   s.failed.assign(std::size_t(ne), 0);
   s.newly_failed.clear();
@@ -78,7 +80,9 @@ void init_elements(const Model& m, State& s) {
     s.vol0[std::size_t(e)] = s.vol[std::size_t(e)] = v;
     const MaterialConstants& mc = s.mats[std::size_t(s.mat[std::size_t(e)])];
     s.mass_e[std::size_t(e)] = mc.rho * v;
-    s.rigid_elem[std::size_t(e)] = mc.type == 20;
+    s.rigid_elem[std::size_t(e)] = hex_kernel_for_material_type(mc.type) == HexKernel::rigid;
+    // rigid solids have no step of their own and never change it
+    if (s.rigid_elem[std::size_t(e)]) s.dt_e[std::size_t(e)] = std::numeric_limits<double>::infinity();
     // Lumped mass: rho V0 / 8 to each corner (a repeated node of a degenerate element gets
     // its share once per corner).
     for (int j = 0; j < 8; ++j) s.mass[std::size_t(s.conn[std::size_t(e)][std::size_t(j)])] += mc.rho * v / 8;
@@ -92,7 +96,7 @@ void init_elements(const Model& m, State& s) {
   std::vector<int> fill(s.corner_start.begin(), s.corner_start.end() - 1);
   for (int e = 0; e < ne; ++e)
     for (int j = 0; j < 8; ++j)
-      s.corner_list[std::size_t(fill[std::size_t(s.conn[std::size_t(e)][std::size_t(j)])]++)] = 8 * e + j;
+      s.corner_list[std::size_t(fill[std::size_t(s.conn[std::size_t(e)][std::size_t(j)])]++)] = int(s.corner_index(e, j));
 }
 
 void init_velocities(const Model& m, State& s) {

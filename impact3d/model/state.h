@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "impact3d/element/hex_block.h"
 #include "impact3d/material/material.h"
 
 namespace impact3d {
@@ -22,6 +23,24 @@ struct RigidBody {
   std::vector<double> r0;                   // 3 per node: initial position relative to the COM
 };
 
+// Element kernels, chosen per group from the material type (one table: element_groups.cpp).
+enum class HexKernel : uint8_t { rigid, elastic, elastic_plastic };
+
+struct ElementGroup {
+  HexKernel kernel = HexKernel::rigid;
+  int material = 0;          // 0-based material index
+  int first_block = 0, num_blocks = 0, num_elems = 0;
+};
+
+// What one block of the element pass hands to the reductions.
+struct BlockResult {
+  double die = 0, dhg = 0, dbv = 0;   // energy increments, summed over the lanes in lane order
+  double dt_min = 0;                   // smallest element step and its element (lowest on ties)
+  int dt_elem = -1;
+  int bad_volume_elem = -1, non_finite_elem = -1;  // lowest such element, or -1
+  int failed_now = 0;                  // solids that failed in this pass
+};
+
 struct State {
   int nn = 0, ne = 0;
   // nodes
@@ -35,8 +54,28 @@ struct State {
   std::vector<double> mass;
   std::vector<uint8_t> fix;           // bit 0 x, bit 1 y, bit 2 z
   std::vector<int> rigid_of_node;     // -1 or rigid-body index
-  // node -> element corners, CSR in increasing (element, corner) order: fixed summation order
+  // node -> element corners, CSR in increasing (element, corner) order: fixed summation order.
+  // The entries are corner indices into cfx/cfy/cfz (corner_index).
   std::vector<int> corner_start, corner_list;
+
+  // Element groups (solve/element_groups.h): the elements of one family, material and
+  // formulation, processed kLanes at a time by one kernel.  Each group fills whole blocks of
+  // kLanes slots (its last block padded); blocks are numbered group after group.
+  std::vector<ElementGroup> groups;
+  std::vector<int> slot_elem;   // element in each slot, -1 for padding
+  std::vector<int> elem_slot;   // slot of each element
+  // per block, written by the element pass and combined in block order (same bits for any
+  // thread count)
+  std::vector<BlockResult> block_results;
+  std::vector<double> chunk_kinetic;  // kinetic energy per chunk of nodes (node_processing.cpp)
+  // Corner j of element e in cfx/cfy/cfz: a block's corner forces are [corner][lane].
+  std::size_t corner_index(int e, int j) const {
+    const std::size_t slot = std::size_t(elem_slot[std::size_t(e)]);
+    return (slot / kLanes) * (8 * kLanes) + std::size_t(j) * kLanes + slot % kLanes;
+  }
+  int corner_element(std::size_t c) const {
+    return slot_elem[(c / (8 * kLanes)) * kLanes + c % kLanes];
+  }
 
   // elements
   std::vector<std::array<int, 8>> conn;
@@ -52,12 +91,11 @@ struct State {
   std::vector<int> newly_failed;       // solids that failed in the last cycle, in element order
   std::vector<double> hgs;             // 12 per element: hourglass stiffness resultants
   std::vector<double> q;               // bulk viscosity
-  std::vector<double> cfx, cfy, cfz;   // 8 per element: corner internal forces
+  std::vector<double> cfx, cfy, cfz;   // 8 per slot: corner internal forces (corner_index)
   std::vector<double> ie_e;            // internal energy per element (stress work)
   std::vector<double> hg_e;            // hourglass energy per element
   std::vector<double> bv_e;            // bulk viscosity energy per element
   std::vector<double> dt_e;            // element time step
-  std::vector<double> de_ie, de_hg, de_bv;  // energy increments of this cycle (scratch)
 
   std::vector<MaterialConstants> mats;
   std::vector<RigidBody> rigid;
@@ -85,7 +123,7 @@ struct State {
     v(x); v(y); v(z); v(vx); v(vy); v(vz); v(ax); v(ay); v(az);
     v(vx_old); v(vy_old); v(vz_old); v(fx); v(fy); v(fz); v(fext_x); v(fext_y); v(fext_z);
     v(vol); v(sig); v(back); v(eps_p); v(yielded); v(failed); v(hgs); v(q); v(cfx); v(cfy); v(cfz);
-    v(ie_e); v(hg_e); v(bv_e); v(dt_e); v(de_ie); v(de_hg); v(de_bv);
+    v(ie_e); v(hg_e); v(bv_e); v(dt_e);
     v(time); v(cycle); v(dt_half); v(dt_next); v(dt_elem); v(dt0);
     v(kinetic); v(internal); v(hourglass); v(bulk_viscous); v(wall_work); v(contact);
     v(external_work); v(initial_total); v(wall_force); v(wall_disp); v(wall_vel);

@@ -1,184 +1,278 @@
 #include "impact3d/solve/element_processing.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
-#include "impact3d/element/hexahedron.h"
-#include "impact3d/material/material.h"
+#include "impact3d/element/hex_block.h"
+#include "impact3d/material/material_block.h"
 
 namespace impact3d {
 
 namespace {
 
-struct ElemOut {
-  double dt = 0;
-  bool bad_volume = false;
-  bool non_finite = false;
+// Below this many blocks the element pass runs on one thread: waking the others costs more
+// than it gains (and on a shared machine much more).
+constexpr int kMinBlocksForThreads = 64;
+// Blocks handed to a thread at a time (dynamic schedule: a thread slowed by another process
+// simply takes fewer; every block writes only its own slots, so the bits do not change).
+constexpr int kBlocksPerChunk = 8;
+
+// What stays the same over a group for one pass.
+struct GroupPass {
+  const MaterialConstants* mc;
+  const MaterialData* md;
+  HexKernel kernel;
+  double dt;      // dt^{n-1/2}: the step from x^{n-1} to x^n
+  double dt_hg;   // step of the hourglass stiffness forms
+  bool with_back; // type 3 with a kinematic part: the back stress is carried
+  bool hg_state;  // hourglass types 4, 5 carry resultants
 };
 
-inline ElemOut calc_forces_for_elem(const Model& m, State& s, int e) {
-  ElemOut out;
-  const std::size_t E = std::size_t(e);
-  const auto& cn = s.conn[E];
-  double x[8], y[8], z[8], vx[8], vy[8], vz[8];
+// Lane l of a block holds element elems[l], or repeats lane 0's element (padding, inactive).
+void gather_hex_block(const State& s, const GroupPass& gp, const int* elems, HexBlock& k) {
+  int e[kLanes];
+  for (int l = 0; l < kLanes; ++l) e[l] = elems[l] >= 0 ? elems[l] : elems[0];
   for (int j = 0; j < 8; ++j) {
-    const std::size_t n = std::size_t(cn[std::size_t(j)]);
-    x[j] = s.x[n]; y[j] = s.y[n]; z[j] = s.z[n];
-    vx[j] = s.vx[n]; vy[j] = s.vy[n]; vz[j] = s.vz[n];
-  }
-  double* cfx = &s.cfx[8 * E];
-  double* cfy = &s.cfy[8 * E];
-  double* cfz = &s.cfz[8 * E];
-  s.de_ie[E] = s.de_hg[E] = s.de_bv[E] = 0;
-  if (s.rigid_elem[E] || s.failed[E]) {  // rigid, or failed and deleted: no internal forces
-    for (int j = 0; j < 8; ++j) cfx[j] = cfy[j] = cfz[j] = 0;
-    out.dt = std::numeric_limits<double>::infinity();
-    s.dt_e[E] = out.dt;
-    return out;
-  }
-  const int mi = s.mat[E];
-  const MaterialConstants& mc = s.mats[std::size_t(mi)];
-  const MaterialData& md = m.materials[std::size_t(mi)];
-  const double dt = s.dt_half;  // step from x^{n-1} to x^n
-
-  // midpoint kinematics: x^{n-1/2} = x^n - dt/2 v^{n-1/2}
-  double xm[8], ym[8], zm[8], bx[8], by[8], bz[8];
-  for (int j = 0; j < 8; ++j) {
-    xm[j] = x[j] - 0.5 * dt * vx[j];
-    ym[j] = y[j] - 0.5 * dt * vy[j];
-    zm[j] = z[j] - 0.5 * dt * vz[j];
-  }
-  const double vm = calc_hex_volume_derivatives(xm, ym, zm, bx, by, bz);
-  double dvdx[8], dvdy[8], dvdz[8];
-  const double v = calc_hex_volume_derivatives(x, y, z, dvdx, dvdy, dvdz);
-  if (!(v > 0) || !(vm > 0)) {
-    out.bad_volume = true;
-    out.dt = 0;
-    s.dt_e[E] = 0;
-    s.vol[E] = v;
-    return out;
-  }
-  const double inv_vm = 1.0 / vm;
-  for (int j = 0; j < 8; ++j) { bx[j] *= inv_vm; by[j] *= inv_vm; bz[j] *= inv_vm; }
-  double d[6], w[3];
-  calc_hex_strain_rate(bx, by, bz, vx, vy, vz, d, w);
-  const double trd = d[0] + d[1] + d[2];
-
-  // stress update sigma^{n-1} -> sigma^n over dt
-  double* sig = &s.sig[6 * E];
-  double old[6];
-  for (int k = 0; k < 6; ++k) old[k] = sig[k];
-  if (dt > 0) {
-    rotate_stress_jaumann(sig, w, dt);
-    if (mc.type == 1) {
-      update_stress_elastic(mc, d, dt, sig);
-    } else {
-      double* back = &s.back[6 * E];
-      // The seed's "initially elastic" path: until an element first yields its back stress is
-      // exactly zero, so its rotation is skipped; the yield check still runs every cycle.
-      if (!(mc.initially_elastic && !s.yielded[E])) rotate_stress_jaumann(back, w, dt);
-      update_stress_elastic_plastic(mc, d, dt, sig, back, s.eps_p[E], s.yielded[E]);
+    for (int l = 0; l < kLanes; ++l) {
+      const std::size_t n = std::size_t(s.conn[std::size_t(e[l])][std::size_t(j)]);
+      k.x[j][l] = s.x[n];
+      k.y[j][l] = s.y[n];
+      k.z[j][l] = s.z[n];
+      k.vx[j][l] = s.vx[n];
+      k.vy[j][l] = s.vy[n];
+      k.vz[j][l] = s.vz[n];
     }
-    // stress work (trapezoid in stress, midpoint volume)
+  }
+  for (int l = 0; l < kLanes; ++l) {
+    const std::size_t E = std::size_t(e[l]);
+    for (int c = 0; c < 6; ++c) k.sig[c][l] = s.sig[6 * E + std::size_t(c)];
+    k.q_old[l] = s.q[E];
+    k.rho[l] = s.vol0[E];  // rho0 V0 / V once V is known
+  }
+  if (gp.kernel == HexKernel::elastic_plastic) {
+    for (int l = 0; l < kLanes; ++l) {
+      const std::size_t E = std::size_t(e[l]);
+      k.eps_p[l] = s.eps_p[E];
+      k.yielded[l] = s.yielded[E];
+      if (gp.with_back)
+        for (int c = 0; c < 6; ++c) k.back[c][l] = s.back[6 * E + std::size_t(c)];
+    }
+  }
+  if (gp.hg_state)
+    for (int l = 0; l < kLanes; ++l)
+      for (int m = 0; m < 12; ++m) k.hgs[m][l] = s.hgs[12 * std::size_t(e[l]) + std::size_t(m)];
+}
+
+// Stress update sigma^{n-1} -> sigma^n over dt and the stress work (trapezoid in stress,
+// midpoint volume).
+void update_stress_block(const GroupPass& gp, HexBlock& k) {
+  for (int c = 0; c < 6; ++c) IMPACT3D_FOR_LANES k.old[c][l] = k.sig[c][l];
+  const double dt = gp.dt;
+  if (!(dt > 0)) {
+    IMPACT3D_FOR_LANES k.de_ie[l] = 0;
+    return;
+  }
+  rotate_stress_jaumann_block(k.sig, k.w, dt);
+  if (gp.kernel == HexKernel::elastic) {
+    update_stress_elastic_block(*gp.mc, k.d, dt, k.sig);
+  } else {
+    // (a back stress that is still zero rotates to zero: the seed's "initially elastic" skip
+    // of that rotation gives the same bits)
+    if (gp.with_back) rotate_stress_jaumann_block(k.back, k.w, dt);
+    if (gp.with_back)
+      update_stress_elastic_plastic_block<true>(*gp.mc, k, dt);
+    else
+      update_stress_elastic_plastic_block<false>(*gp.mc, k, dt);
+  }
+  IMPACT3D_FOR_LANES {
     double pw = 0;
-    for (int k = 0; k < 3; ++k) pw += 0.5 * (old[k] + sig[k]) * d[k];
-    for (int k = 3; k < 6; ++k) pw += (old[k] + sig[k]) * d[k];  // 2 * 0.5 for shear pairs
-    s.de_ie[E] = pw * vm * dt;
-    // failure: the element is deleted once its plastic strain reaches the failure strain; its
-    // stress work up to now stays in the internal energy, its mass stays on the nodes
-    if (mc.fail_strain > 0 && s.eps_p[E] >= mc.fail_strain) {
+    #pragma GCC unroll 16
+    for (int c = 0; c < 3; ++c) pw += 0.5 * (k.old[c][l] + k.sig[c][l]) * k.d[c][l];
+    for (int c = 3; c < 6; ++c) pw += (k.old[c][l] + k.sig[c][l]) * k.d[c][l];  // 2 * 0.5 for shear pairs
+    k.de_ie[l] = pw * k.vm[l] * dt;
+  }
+}
+
+// One block of a deformable group: kinematics, stress, bulk viscosity, forces, hourglass,
+// step.  Results stay in k; store_hex_block writes them.
+void calc_forces_for_hex_block(const GroupPass& gp, HexBlock& k) {
+  const MaterialConstants& mc = *gp.mc;
+  const MaterialData& md = *gp.md;
+  calc_hex_kinematics_block(k, gp.dt);
+  update_stress_block(gp, k);
+  IMPACT3D_FOR_LANES k.rho[l] = mc.rho * k.rho[l] / k.v[l];
+  // Bulk viscosity from the midpoint strain rate; its work over this step is booked like the
+  // stress work (trapezoid): the q of the previous cycle acted in the forces over this step,
+  // the new one acts over the next (see hexahedron.h).
+  calc_hex_bulk_viscosity_block(k, mc.c, md.q1, md.q2);
+  IMPACT3D_FOR_LANES k.de_bv[l] = -0.5 * (k.q_old[l] + k.q[l]) * k.trd[l] * k.vm[l] * gp.dt;
+  calc_hex_stress_force_block(k);
+  if (md.hourglass_coef != 0.0) {
+    calc_hex_hourglass_force_block(k, md.hourglass_type, md.hourglass_coef, mc.c, mc.G, gp.dt_hg);
+    IMPACT3D_FOR_LANES k.de_hg[l] = k.de_hg[l] * gp.dt;
+  } else {
+    IMPACT3D_FOR_LANES k.de_hg[l] = 0;
+  }
+  calc_hex_time_step_block(k, mc.c, md.q1, md.q2);
+}
+
+// Writes lane l's corner forces as zero (failed solids, padding).
+void zero_corner_forces(HexBlock& k, int l) {
+  for (int j = 0; j < 8; ++j) k.fx[j][l] = k.fy[j][l] = k.fz[j][l] = 0;
+}
+
+// Stores a computed block: element state, corner forces, books, and the block's result.
+void store_hex_block(State& s, const GroupPass& gp, const int* elems, const bool* active, int block,
+                     HexBlock& k) {
+  BlockResult r;
+  r.dt_min = std::numeric_limits<double>::infinity();
+  const MaterialConstants& mc = *gp.mc;
+  for (int l = 0; l < kLanes; ++l) {
+    if (!active[l]) {
+      zero_corner_forces(k, l);
+      continue;
+    }
+    const int e = elems[l];
+    const std::size_t E = std::size_t(e);
+    if (!(k.v[l] > 0) || !(k.vm[l] > 0)) {  // the run stops: keep the lane's state as it was
+      if (r.bad_volume_elem < 0) r.bad_volume_elem = e;
+      s.dt_e[E] = 0;
+      s.vol[E] = k.v[l];
+      zero_corner_forces(k, l);
+      continue;
+    }
+    double* sig = &s.sig[6 * E];
+    if (gp.kernel == HexKernel::elastic_plastic) {
+      s.eps_p[E] = k.eps_p[l];
+      s.yielded[E] = k.yielded[l] != 0.0;
+      if (gp.with_back)
+        for (int c = 0; c < 6; ++c) s.back[6 * E + std::size_t(c)] = k.back[c][l];
+    }
+    s.vol[E] = k.v[l];
+    if (gp.dt > 0 && mc.fail_strain > 0 && k.eps_p[l] >= mc.fail_strain) {
+      // Failure: the solid is deleted.  Its stress work up to now stays in the internal
+      // energy, its mass on the nodes; the books as for a stress and viscosity that are zero
+      // from now on (trapezoid with a zero end): only the old stress and q did work.
       s.failed[E] = 2;
-      // the books as for a stress and viscosity that are zero from now on (trapezoid with a
-      // zero end): only the old stress and q did work over this step
+      ++r.failed_now;
       double pw0 = 0;
-      for (int k = 0; k < 3; ++k) pw0 += 0.5 * old[k] * d[k];
-      for (int k = 3; k < 6; ++k) pw0 += old[k] * d[k];
-      s.de_ie[E] = pw0 * vm * dt;
-      s.de_bv[E] = -0.5 * s.q[E] * trd * vm * dt;
-      for (int k = 0; k < 6; ++k) sig[k] = 0;
+      for (int c = 0; c < 3; ++c) pw0 += 0.5 * k.old[c][l] * k.d[c][l];
+      for (int c = 3; c < 6; ++c) pw0 += k.old[c][l] * k.d[c][l];
+      const double die = pw0 * k.vm[l] * gp.dt;
+      const double dbv = -0.5 * s.q[E] * k.trd[l] * k.vm[l] * gp.dt;
+      for (int c = 0; c < 6; ++c) sig[c] = 0;
       s.q[E] = 0;
-      for (int j = 0; j < 8; ++j) cfx[j] = cfy[j] = cfz[j] = 0;
-      s.vol[E] = v;
-      out.dt = std::numeric_limits<double>::infinity();
-      s.dt_e[E] = out.dt;
-      return out;
+      zero_corner_forces(k, l);
+      s.dt_e[E] = std::numeric_limits<double>::infinity();
+      s.ie_e[E] += die;
+      s.bv_e[E] += dbv;
+      r.die += die;
+      r.dbv += dbv;
+      continue;
+    }
+    for (int c = 0; c < 6; ++c) sig[c] = k.sig[c][l];
+    s.q[E] = k.q[l];
+    if (gp.hg_state)
+      for (int m = 0; m < 12; ++m) s.hgs[12 * E + std::size_t(m)] = k.hgs[m][l];
+    s.dt_e[E] = k.dt[l];
+    s.ie_e[E] += k.de_ie[l];
+    s.hg_e[E] += k.de_hg[l];
+    s.bv_e[E] += k.de_bv[l];
+    r.die += k.de_ie[l];
+    r.dhg += k.de_hg[l];
+    r.dbv += k.de_bv[l];
+    if (k.dt[l] < r.dt_min) {  // lanes in increasing element order: the lowest wins ties
+      r.dt_min = k.dt[l];
+      r.dt_elem = e;
+    }
+    double check = sig[0] + sig[1] + sig[2] + sig[3] + sig[4] + sig[5];
+    for (int j = 0; j < 8; ++j) check += k.fx[j][l] + k.fy[j][l] + k.fz[j][l];
+    if (!std::isfinite(check) && r.non_finite_elem < 0) r.non_finite_elem = e;
+  }
+  // the block's corner forces, [corner][lane], in one piece
+  const std::size_t base = std::size_t(block) * 8 * kLanes;
+  for (int j = 0; j < 8; ++j) {
+    IMPACT3D_FOR_LANES {
+      s.cfx[base + std::size_t(j * kLanes + l)] = k.fx[j][l];
+      s.cfy[base + std::size_t(j * kLanes + l)] = k.fy[j][l];
+      s.cfz[base + std::size_t(j * kLanes + l)] = k.fz[j][l];
     }
   }
-  s.vol[E] = v;
-  const double rho = mc.rho * s.vol0[E] / v;
+  s.block_results[std::size_t(block)] = r;
+}
 
-  // bulk viscosity (compression only), from the midpoint strain rate.  Its work over this step
-  // is booked like the stress work (trapezoid): the q of the previous cycle acted in the forces
-  // over this step, the new one acts over the next.  Booking q^{n+1} trD^{n+1/2} alone counts
-  // as dissipated the work of a q that never acted in this interval: behind a front the strain
-  // rate alternates in sign from step to step and q only exists in the compressive half, so
-  // that form books energy no force removed (a 1-D elastic column on a wall showed twice its
-  // kinetic energy as bulk viscous energy).
-  const double q_old = s.q[E];
-  const double amax = calc_hex_max_face_area(x, y, z);
-  const double q = calc_bulk_viscosity(rho, mc.c, v / amax, trd, md.q1, md.q2);
-  s.q[E] = q;
-  s.de_bv[E] = -0.5 * (q_old + q) * trd * vm * dt;
-
-  // stress divergence with sigma - q I, at x^n
-  double se[6] = {sig[0] - q, sig[1] - q, sig[2] - q, sig[3], sig[4], sig[5]};
-  calc_hex_stress_force(se, dvdx, dvdy, dvdz, cfx, cfy, cfz);
-
-  // hourglass control
-  HourglassInput hin{md.hourglass_type, md.hourglass_coef, rho, mc.c, mc.G, v, s.dt_next > 0 ? s.dt_next : dt};
-  const double hg_power =
-      calc_hex_hourglass_force(hin, x, y, z, dvdx, dvdy, dvdz, vx, vy, vz, &s.hgs[12 * E], cfx, cfy, cfz);
-  s.de_hg[E] = hg_power * dt;
-
-  // element time step
-  out.dt = calc_hex_time_step(v, amax, mc.c, trd, md.q1, md.q2);
-  s.dt_e[E] = out.dt;
-  double check = sig[0] + sig[1] + sig[2] + sig[3] + sig[4] + sig[5];
-  for (int j = 0; j < 8; ++j) check += cfx[j] + cfy[j] + cfz[j];
-  if (!std::isfinite(check)) out.non_finite = true;
-  return out;
+void process_hex_block(State& s, const GroupPass& gp, int block) {
+  const int* elems = &s.slot_elem[std::size_t(block) * kLanes];
+  bool active[kLanes];
+  bool any = false;
+  for (int l = 0; l < kLanes; ++l) {
+    active[l] = elems[l] >= 0 && !s.failed[std::size_t(elems[l])];
+    any = any || active[l];
+  }
+  if (!any) {  // every solid of the block has failed: nothing moves it any more
+    BlockResult r;
+    r.dt_min = std::numeric_limits<double>::infinity();
+    s.block_results[std::size_t(block)] = r;
+    return;
+  }
+  HexBlock k;
+  gather_hex_block(s, gp, elems, k);
+  calc_forces_for_hex_block(gp, k);
+  store_hex_block(s, gp, elems, active, block, k);
 }
 
 }  // namespace
 
 ElementLoopResult calc_forces_for_elems(const Model& m, State& s) {
-  const int ne = s.ne;
-  int bad = std::numeric_limits<int>::max();
-  int nonfin = std::numeric_limits<int>::max();
-#pragma omp parallel for schedule(static) reduction(min : bad, nonfin)
-  for (int e = 0; e < ne; ++e) {
-    ElemOut o = calc_forces_for_elem(m, s, e);
-    if (o.bad_volume && e < bad) bad = e;
-    if (o.non_finite && e < nonfin) nonfin = e;
-  }
-  ElementLoopResult r;
-  r.bad_volume_elem = bad == std::numeric_limits<int>::max() ? -1 : bad;
-  r.non_finite_elem = nonfin == std::numeric_limits<int>::max() ? -1 : nonfin;
-  // smallest step, lowest element on ties: a serial scan keeps it deterministic
-  double dtmin = std::numeric_limits<double>::infinity();
-  int arg = -1;
-  for (int e = 0; e < ne; ++e)
-    if (s.dt_e[std::size_t(e)] < dtmin) { dtmin = s.dt_e[std::size_t(e)]; arg = e; }
-  r.dt_min = dtmin;
-  r.dt_elem = arg;
-  return r;
-}
-
-void sum_forces_for_nodes(State& s) {
-  const int nn = s.nn;
-#pragma omp parallel for schedule(static)
-  for (int i = 0; i < nn; ++i) {
-    double fx = 0, fy = 0, fz = 0;
-    for (int k = s.corner_start[std::size_t(i)]; k < s.corner_start[std::size_t(i) + 1]; ++k) {
-      const std::size_t c = std::size_t(s.corner_list[std::size_t(k)]);
-      fx += s.cfx[c];
-      fy += s.cfy[c];
-      fz += s.cfz[c];
+  ElementLoopResult out;
+  for (const ElementGroup& g : s.groups) {
+    if (g.kernel == HexKernel::rigid) {  // rigid solids: no internal forces, no step
+      for (int b = g.first_block; b < g.first_block + g.num_blocks; ++b) {
+        BlockResult r;
+        r.dt_min = std::numeric_limits<double>::infinity();
+        s.block_results[std::size_t(b)] = r;
+      }
+      continue;
     }
-    s.fx[std::size_t(i)] = s.fext_x[std::size_t(i)] - fx;
-    s.fy[std::size_t(i)] = s.fext_y[std::size_t(i)] - fy;
-    s.fz[std::size_t(i)] = s.fext_z[std::size_t(i)] - fz;
+    GroupPass gp;
+    gp.mc = &s.mats[std::size_t(g.material)];
+    gp.md = &m.materials[std::size_t(g.material)];
+    gp.kernel = g.kernel;
+    gp.dt = s.dt_half;
+    gp.dt_hg = s.dt_next > 0 ? s.dt_next : s.dt_half;
+    gp.with_back = g.kernel == HexKernel::elastic_plastic && (1.0 - gp.mc->beta) * gp.mc->E_p != 0.0;
+    gp.hg_state = gp.md->hourglass_type >= 4 && gp.md->hourglass_coef != 0.0;
+    const int b0 = g.first_block, nb = g.num_blocks;
+#pragma omp parallel for schedule(dynamic, kBlocksPerChunk) if (nb >= kMinBlocksForThreads)
+    for (int b = b0; b < b0 + nb; ++b) process_hex_block(s, gp, b);
   }
+  // Reductions in block order (same bits for any thread count and schedule).
+  double die = 0, dhg = 0, dbv = 0;
+  double dtmin = std::numeric_limits<double>::infinity();
+  int arg = -1, bad = -1, nonfin = -1, failed = 0;
+  for (const BlockResult& r : s.block_results) {
+    die += r.die;
+    dhg += r.dhg;
+    dbv += r.dbv;
+    // smallest step, lowest element on ties (blocks go group by group, not in element order)
+    if (r.dt_elem >= 0 && (r.dt_min < dtmin || (r.dt_min == dtmin && (arg < 0 || r.dt_elem < arg)))) {
+      dtmin = r.dt_min;
+      arg = r.dt_elem;
+    }
+    if (r.bad_volume_elem >= 0 && (bad < 0 || r.bad_volume_elem < bad)) bad = r.bad_volume_elem;
+    if (r.non_finite_elem >= 0 && (nonfin < 0 || r.non_finite_elem < nonfin)) nonfin = r.non_finite_elem;
+    failed += r.failed_now;
+  }
+  out.die = die;
+  out.dhg = dhg;
+  out.dbv = dbv;
+  out.bad_volume_elem = bad;
+  out.non_finite_elem = nonfin;
+  out.dt_min = dtmin;
+  out.dt_elem = arg;
+  out.failed_now = failed;
+  return out;
 }
 
 }  // namespace impact3d

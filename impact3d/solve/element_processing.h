@@ -9,15 +9,15 @@ struct ElementLoopResult {
   int non_finite_elem = -1;   // lowest element index with a non-finite stress or force
   double dt_min = 0;          // smallest element time step (before the scale factor)
   int dt_elem = -1;           // its element (lowest index on ties)
+  double die = 0, dhg = 0, dbv = 0;  // energy increments of this pass (block sums in block order)
+  int failed_now = 0;         // solids that failed in this pass (s.failed == 2)
 };
 
-// Element processing at t^n: midpoint kinematics with v^{n-1/2}, stress update over
-// dt^{n-1/2}, bulk viscosity, stress-divergence and hourglass corner forces at x^n, element
-// time steps, and the element energy increments.  One pass per element; no shared writes.
+// Element processing at t^n, group by group and block by block (element_groups.h): midpoint
+// kinematics with v^{n-1/2}, stress update over dt^{n-1/2}, bulk viscosity, stress-divergence
+// and hourglass corner forces at x^n, element time steps, and the element energy books.
+// Blocks write only their own slots; the reductions combine per-block results in block order,
+// so the result has the same bits for any thread count.
 ElementLoopResult calc_forces_for_elems(const Model& m, State& s);
-
-// Sums the corner forces of every node in fixed order into s.fx/fy/fz (as -f_int) and adds
-// the external forces.
-void sum_forces_for_nodes(State& s);
 
 }  // namespace impact3d

@@ -7,20 +7,14 @@
 #include "impact3d/contact/stonewall.h"
 #include "impact3d/init/initialize.h"
 #include "impact3d/solve/element_processing.h"
+#include "impact3d/solve/node_processing.h"
 #include "impact3d/solve/rigid_body.h"
 
 namespace impact3d {
 
 Engine::Engine(const Model& m) : m_(m) {}
 
-void Engine::calc_kinetic_energy() {
-  double ke = 0;
-  for (int i = 0; i < s_.nn; ++i) {
-    const std::size_t k = std::size_t(i);
-    ke += 0.5 * s_.mass[k] * (s_.vx[k] * s_.vx[k] + s_.vy[k] * s_.vy[k] + s_.vz[k] * s_.vz[k]);
-  }
-  s_.kinetic = ke;
-}
+void Engine::calc_kinetic_energy() { calc_kinetic_energy_for_nodes(s_); }
 
 double Engine::kinetic_energy_of_material(int mat) const {
   double ke = 0;
@@ -37,25 +31,17 @@ double Engine::kinetic_energy_of_material(int mat) const {
 
 StepStatus Engine::process_elements() {
   ElementLoopResult r = calc_forces_for_elems(m_, s_);
-  // energy increments, summed serially in element order (same bits for any thread count)
-  double die = 0, dhg = 0, dbv = 0;
   s_.newly_failed.clear();
-  for (int e = 0; e < s_.ne; ++e) {
-    const std::size_t k = std::size_t(e);
-    if (s_.failed[k] == 2) {  // failed in this pass: listed in element order (any thread count)
-      s_.failed[k] = 1;
-      s_.newly_failed.push_back(e);
-    }
-    s_.ie_e[k] += s_.de_ie[k];
-    s_.hg_e[k] += s_.de_hg[k];
-    s_.bv_e[k] += s_.de_bv[k];
-    die += s_.de_ie[k];
-    dhg += s_.de_hg[k];
-    dbv += s_.de_bv[k];
+  if (r.failed_now > 0) {  // failed in this pass: listed in element order (any thread count)
+    for (int e = 0; e < s_.ne; ++e)
+      if (s_.failed[std::size_t(e)] == 2) {
+        s_.failed[std::size_t(e)] = 1;
+        s_.newly_failed.push_back(e);
+      }
   }
-  s_.internal += die;
-  s_.hourglass += dhg;
-  s_.bulk_viscous += dbv;
+  s_.internal += r.die;
+  s_.hourglass += r.dhg;
+  s_.bulk_viscous += r.dbv;
   if (r.bad_volume_elem >= 0) {
     error_elem_ = r.bad_volume_elem;
     return StepStatus::negative_volume;
@@ -93,7 +79,6 @@ StepStatus Engine::step() {
   const double dt_next = s.dt_next;
   const double dt_n = s.cycle == 0 ? 0.5 * dt_next : 0.5 * (s.dt_half + dt_next);
 
-  const int nn = s.nn;
   // external forces at x^n: contact penalty forces (walls act on velocities below)
   if (!contact_.empty()) {
     std::fill(s.fext_x.begin(), s.fext_x.end(), 0.0);
@@ -101,40 +86,25 @@ StepStatus Engine::step() {
     std::fill(s.fext_z.begin(), s.fext_z.end(), 0.0);
     contact_.apply(m_, s, dt_next);
   }
-  sum_forces_for_nodes(s);
-#pragma omp parallel for schedule(static)
-  for (int i = 0; i < nn; ++i) {
-    const std::size_t k = std::size_t(i);
-    const double inv_m = s.mass[k] > 0 ? 1.0 / s.mass[k] : 0.0;
-    s.ax[k] = s.fx[k] * inv_m;
-    s.ay[k] = s.fy[k] * inv_m;
-    s.az[k] = s.fz[k] * inv_m;
-    s.vx_old[k] = s.vx[k];
-    s.vy_old[k] = s.vy[k];
-    s.vz_old[k] = s.vz[k];
-    const uint8_t f = s.fix[k];
-    if (f & 1) s.ax[k] = 0;
-    if (f & 2) s.ay[k] = 0;
-    if (f & 4) s.az[k] = 0;
-    s.vx[k] += dt_n * s.ax[k];
-    s.vy[k] += dt_n * s.ay[k];
-    s.vz[k] += dt_n * s.az[k];
-  }
-  if (!s.rigid.empty()) update_rigid_body_velocities(s, dt_n, dt_next);
-  if (!m_.walls.empty()) apply_stonewalls_to_nodes(m_, s, dt_next, dt_n);
-#pragma omp parallel for schedule(static)
-  for (int i = 0; i < nn; ++i) {
-    const std::size_t k = std::size_t(i);
-    s.x[k] += dt_next * s.vx[k];
-    s.y[k] += dt_next * s.vy[k];
-    s.z[k] += dt_next * s.vz[k];
+  // Without walls or rigid bodies nothing acts on the new velocities before the positions
+  // move: one fused pass over the nodes.
+  NodePass np;
+  np.dt_n = dt_n;
+  np.dt_next = dt_next;
+  np.has_fext = !contact_.empty();
+  np.store_force = !s.rigid.empty();
+  np.update_positions = s.rigid.empty() && m_.walls.empty();
+  update_velocities_for_nodes(s, np);
+  if (!np.update_positions) {
+    if (!s.rigid.empty()) update_rigid_body_velocities(s, dt_n, dt_next);
+    if (!m_.walls.empty()) apply_stonewalls_to_nodes(m_, s, dt_next, dt_n);
+    update_positions_for_nodes(s, dt_next);
   }
   if (!s.rigid.empty()) update_rigid_body_positions(s, dt_next);
   if (!m_.walls.empty()) update_moving_walls(m_, s, dt_next);
   s.time += dt_next;
   s.cycle += 1;
   s.dt_half = dt_next;
-  calc_kinetic_energy();
   StepStatus st = process_elements();
   if (st != StepStatus::ok) return st;
   if (!std::isfinite(s.kinetic)) {

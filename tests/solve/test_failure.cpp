@@ -75,7 +75,7 @@ TEST(ElementFailure, TaylorBarDeletesExactlyTheElementsPastTheFailureStrain) {
       ++failed;
       EXPECT_GE(s.eps_p[k], kFail) << "element " << e + 1;
       for (int c = 0; c < 6; ++c) EXPECT_EQ(s.sig[6 * k + std::size_t(c)], 0.0);
-      for (int j = 0; j < 8; ++j) EXPECT_EQ(s.cfx[8 * k + std::size_t(j)], 0.0);
+      for (int j = 0; j < 8; ++j) EXPECT_EQ(s.cfx[s.corner_index(int(k), j)], 0.0);
     } else {
       EXPECT_LT(s.eps_p[k], kFail) << "element " << e + 1;
     }

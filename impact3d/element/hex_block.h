@@ -1,0 +1,291 @@
+#pragma once
+// The 8-node hexahedron in block form: the kernels of hexahedron.h written for a block of
+// kLanes elements at once, one SIMD lane per element (struct-of-arrays [node][lane]).  Every
+// lane does exactly the scalar kernel's operations in the same order, so a block gives the
+// same bits as the scalar functions element by element (the tests check this), for any SIMD
+// width the compiler picks (AVX-512 takes a block in one instruction per operation, AVX2 in
+// two, SSE2 in four).  Requires IEEE arithmetic without contraction (-ffp-contract=off, set
+// in CMakeLists.txt).
+//
+// The element pass (solve/element_processing.cpp) gathers a block's nodal data into a HexBlock,
+// calls these in turn, and stores the results; see there for the order.
+
+#include <cfloat>
+#include <cmath>
+
+namespace impact3d {
+
+// Elements per block.  Fixed at 8 for every instruction set: the slot layout of the element
+// groups (and with it every sum) does not depend on the machine.
+constexpr int kLanes = 8;
+using Lanes = double[kLanes];
+
+#define IMPACT3D_FOR_LANES _Pragma("omp simd") for (int l = 0; l < kLanes; ++l)
+
+// A block's working set: gathered nodal data and everything derived from it.  About 20 KB,
+// one per thread, reused block after block (stays in L1).
+struct alignas(64) HexBlock {
+  Lanes x[8], y[8], z[8], vx[8], vy[8], vz[8];  // x^n, v^{n-1/2}
+  Lanes bx[8], by[8], bz[8];                    // b = dV/dx / V at the midpoint x^{n-1/2}
+  Lanes dvdx[8], dvdy[8], dvdz[8];              // dV/dx at x^n
+  Lanes fx[8], fy[8], fz[8];                    // corner forces
+  Lanes v, vm, amax, rho;                       // volume at x^n and midpoint, largest face, density
+  Lanes d[6], w[3], trd;                        // strain rate, spin, trace of d
+  Lanes sig[6], old[6], back[6], eps_p, yielded;  // stress (old: at the start of the step)
+  Lanes hgs[12];                                // hourglass resultants (types 4, 5)
+  Lanes q, q_old;                               // bulk viscosity
+  Lanes de_ie, de_hg, de_bv, dt;                // energy increments, element step
+};
+
+namespace hex_block_detail {
+// dV/dx at node n0 from its six face neighbours (hexahedron.cpp volu_der), lane form.
+inline void calc_volume_derivative_lanes(const Lanes* x, const Lanes* y, const Lanes* z, int n0,
+                                         int n1, int n2, int n3, int n4, int n5, Lanes& dx,
+                                         Lanes& dy, Lanes& dz) {
+  constexpr double twelfth = 1.0 / 12.0;
+  IMPACT3D_FOR_LANES {
+    const double x0 = x[n0][l], x1 = x[n1][l], x2 = x[n2][l], x3 = x[n3][l], x4 = x[n4][l], x5 = x[n5][l];
+    const double y0 = y[n0][l], y1 = y[n1][l], y2 = y[n2][l], y3 = y[n3][l], y4 = y[n4][l], y5 = y[n5][l];
+    const double z0 = z[n0][l], z1 = z[n1][l], z2 = z[n2][l], z3 = z[n3][l], z4 = z[n4][l], z5 = z[n5][l];
+    double ddx = (y1 + y2) * (z0 + z1) - (y0 + y1) * (z1 + z2) + (y0 + y4) * (z3 + z4) -
+                 (y3 + y4) * (z0 + z4) - (y2 + y5) * (z3 + z5) + (y3 + y5) * (z2 + z5);
+    double ddy = -(x1 + x2) * (z0 + z1) + (x0 + x1) * (z1 + z2) - (x0 + x4) * (z3 + z4) +
+                 (x3 + x4) * (z0 + z4) + (x2 + x5) * (z3 + z5) - (x3 + x5) * (z2 + z5);
+    double ddz = -(y1 + y2) * (x0 + x1) + (y0 + y1) * (x1 + x2) - (y0 + y4) * (x3 + x4) +
+                 (y3 + y4) * (x0 + x4) + (y2 + y5) * (x3 + x5) - (y3 + y5) * (x2 + x5);
+    dx[l] = ddx * twelfth;
+    dy[l] = ddy * twelfth;
+    dz[l] = ddz * twelfth;
+  }
+}
+
+inline void quad_area_lanes(const Lanes* x, const Lanes* y, const Lanes* z, int a, int b, int c,
+                            int d, Lanes& area) {
+  IMPACT3D_FOR_LANES {
+    const double d1x = x[c][l] - x[a][l], d1y = y[c][l] - y[a][l], d1z = z[c][l] - z[a][l];
+    const double d2x = x[d][l] - x[b][l], d2y = y[d][l] - y[b][l], d2z = z[d][l] - z[b][l];
+    const double nx = d1y * d2z - d1z * d2y;
+    const double ny = d1z * d2x - d1x * d2z;
+    const double nz = d1x * d2y - d1y * d2x;
+    area[l] = 0.5 * std::sqrt(nx * nx + ny * ny + nz * nz);
+  }
+}
+
+constexpr double kGammaB[4][8] = {
+    {1., 1., -1., -1., -1., -1., 1., 1.},
+    {1., -1., -1., 1., -1., 1., 1., -1.},
+    {1., -1., 1., -1., 1., -1., 1., -1.},
+    {-1., 1., -1., 1., 1., -1., 1., -1.},
+};
+}  // namespace hex_block_detail
+
+// dV/dx at the nodes and the volume V = sum x dV/dx (calc_hex_volume_derivatives).
+inline void calc_hex_volume_derivatives_block(const Lanes* x, const Lanes* y, const Lanes* z,
+                                              Lanes* dvdx, Lanes* dvdy, Lanes* dvdz, Lanes& vol) {
+  using hex_block_detail::calc_volume_derivative_lanes;
+  calc_volume_derivative_lanes(x, y, z, 1, 2, 3, 4, 5, 7, dvdx[0], dvdy[0], dvdz[0]);
+  calc_volume_derivative_lanes(x, y, z, 0, 1, 2, 7, 4, 6, dvdx[3], dvdy[3], dvdz[3]);
+  calc_volume_derivative_lanes(x, y, z, 3, 0, 1, 6, 7, 5, dvdx[2], dvdy[2], dvdz[2]);
+  calc_volume_derivative_lanes(x, y, z, 2, 3, 0, 5, 6, 4, dvdx[1], dvdy[1], dvdz[1]);
+  calc_volume_derivative_lanes(x, y, z, 7, 6, 5, 0, 3, 1, dvdx[4], dvdy[4], dvdz[4]);
+  calc_volume_derivative_lanes(x, y, z, 4, 7, 6, 1, 0, 2, dvdx[5], dvdy[5], dvdz[5]);
+  calc_volume_derivative_lanes(x, y, z, 5, 4, 7, 2, 1, 3, dvdx[6], dvdy[6], dvdz[6]);
+  calc_volume_derivative_lanes(x, y, z, 6, 5, 4, 3, 2, 0, dvdx[7], dvdy[7], dvdz[7]);
+  IMPACT3D_FOR_LANES {
+    double v = 0.0;
+    #pragma GCC unroll 16
+    for (int n = 0; n < 8; ++n) v += x[n][l] * dvdx[n][l];
+    vol[l] = v;
+  }
+}
+
+// Largest face area (calc_hex_max_face_area), faces in the same order.
+inline void calc_hex_max_face_area_block(const Lanes* x, const Lanes* y, const Lanes* z, Lanes& amax) {
+  using hex_block_detail::quad_area_lanes;
+  alignas(64) Lanes b;
+  quad_area_lanes(x, y, z, 0, 1, 2, 3, amax);
+  static constexpr int kFaces[5][4] = {{4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
+  for (const auto& f : kFaces) {
+    quad_area_lanes(x, y, z, f[0], f[1], f[2], f[3], b);
+    IMPACT3D_FOR_LANES amax[l] = b[l] > amax[l] ? b[l] : amax[l];
+  }
+}
+
+// Strain rate and spin from v and b (calc_hex_strain_rate), and trD.
+inline void calc_hex_strain_rate_block(HexBlock& k) {
+  IMPACT3D_FOR_LANES {
+    double lxx = 0, lxy = 0, lxz = 0, lyx = 0, lyy = 0, lyz = 0, lzx = 0, lzy = 0, lzz = 0;
+    #pragma GCC unroll 16
+    for (int n = 0; n < 8; ++n) {
+      lxx += k.vx[n][l] * k.bx[n][l];
+      lxy += k.vx[n][l] * k.by[n][l];
+      lxz += k.vx[n][l] * k.bz[n][l];
+      lyx += k.vy[n][l] * k.bx[n][l];
+      lyy += k.vy[n][l] * k.by[n][l];
+      lyz += k.vy[n][l] * k.bz[n][l];
+      lzx += k.vz[n][l] * k.bx[n][l];
+      lzy += k.vz[n][l] * k.by[n][l];
+      lzz += k.vz[n][l] * k.bz[n][l];
+    }
+    k.d[0][l] = lxx;
+    k.d[1][l] = lyy;
+    k.d[2][l] = lzz;
+    k.d[3][l] = 0.5 * (lxy + lyx);
+    k.d[4][l] = 0.5 * (lyz + lzy);
+    k.d[5][l] = 0.5 * (lzx + lxz);
+    k.w[0][l] = 0.5 * (lxy - lyx);
+    k.w[1][l] = 0.5 * (lyz - lzy);
+    k.w[2][l] = 0.5 * (lzx - lxz);
+    k.trd[l] = lxx + lyy + lzz;
+  }
+}
+
+// Kinematics of a gathered block over the step dt (= dt^{n-1/2}): b at the midpoint
+// x^{n-1/2} = x^n - dt/2 v^{n-1/2}, dV/dx and V at x^n, the strain rate and spin, the
+// largest face.  The midpoint volume is left in k.vm.
+inline void calc_hex_kinematics_block(HexBlock& k, double dt) {
+  alignas(64) Lanes xm[8], ym[8], zm[8];
+  for (int j = 0; j < 8; ++j) {
+    IMPACT3D_FOR_LANES {
+      xm[j][l] = k.x[j][l] - 0.5 * dt * k.vx[j][l];
+      ym[j][l] = k.y[j][l] - 0.5 * dt * k.vy[j][l];
+      zm[j][l] = k.z[j][l] - 0.5 * dt * k.vz[j][l];
+    }
+  }
+  calc_hex_volume_derivatives_block(xm, ym, zm, k.bx, k.by, k.bz, k.vm);
+  calc_hex_volume_derivatives_block(k.x, k.y, k.z, k.dvdx, k.dvdy, k.dvdz, k.v);
+  alignas(64) Lanes inv_vm;
+  IMPACT3D_FOR_LANES inv_vm[l] = 1.0 / k.vm[l];
+  for (int j = 0; j < 8; ++j) {
+    IMPACT3D_FOR_LANES {
+      k.bx[j][l] *= inv_vm[l];
+      k.by[j][l] *= inv_vm[l];
+      k.bz[j][l] *= inv_vm[l];
+    }
+  }
+  calc_hex_strain_rate_block(k);
+  calc_hex_max_face_area_block(k.x, k.y, k.z, k.amax);
+}
+
+// Bulk viscosity q (calc_bulk_viscosity with l = V / A_max), per lane.
+inline void calc_hex_bulk_viscosity_block(HexBlock& k, double c, double q1, double q2) {
+  IMPACT3D_FOR_LANES {
+    const double len = k.v[l] / k.amax[l];
+    const double trd = k.trd[l];
+    const double q = k.rho[l] * len * (q1 * len * trd * trd - q2 * c * trd);
+    k.q[l] = trd >= 0.0 ? 0.0 : q;
+  }
+}
+
+// Stress-divergence corner forces with sigma - q I (calc_hex_stress_force), written.
+inline void calc_hex_stress_force_block(HexBlock& k) {
+  for (int n = 0; n < 8; ++n) {
+    IMPACT3D_FOR_LANES {
+      const double sxx = k.sig[0][l] - k.q[l], syy = k.sig[1][l] - k.q[l], szz = k.sig[2][l] - k.q[l];
+      const double sxy = k.sig[3][l], syz = k.sig[4][l], szx = k.sig[5][l];
+      k.fx[n][l] = sxx * k.dvdx[n][l] + sxy * k.dvdy[n][l] + szx * k.dvdz[n][l];
+      k.fy[n][l] = sxy * k.dvdx[n][l] + syy * k.dvdy[n][l] + syz * k.dvdz[n][l];
+      k.fz[n][l] = szx * k.dvdx[n][l] + syz * k.dvdy[n][l] + szz * k.dvdz[n][l];
+    }
+  }
+}
+
+// Hourglass forces added to the corner forces (calc_hex_hourglass_force); power in k.de_hg
+// (times dt by the caller).  type as in HourglassInput; qhg != 0.  dt_hg is the step of the
+// stiffness forms.  cbrt is evaluated lane by lane with the C library (same bits).
+inline void calc_hex_hourglass_force_block(HexBlock& k, int type, double qhg, double c,
+                                           double shear_modulus, double dt_hg) {
+  using hex_block_detail::kGammaB;
+  alignas(64) Lanes g[4][8];
+  if (type <= 1) {
+    for (int a = 0; a < 4; ++a)
+      for (int n = 0; n < 8; ++n) IMPACT3D_FOR_LANES g[a][n][l] = kGammaB[a][n];
+  } else {
+    alignas(64) Lanes rv;
+    IMPACT3D_FOR_LANES rv[l] = 1.0 / k.v[l];
+    for (int a = 0; a < 4; ++a) {
+      alignas(64) Lanes gx, gy, gz;
+      IMPACT3D_FOR_LANES {
+        double sx = 0.0, sy = 0.0, sz = 0.0;
+        #pragma GCC unroll 16
+        for (int n = 0; n < 8; ++n) {
+          sx += kGammaB[a][n] * k.x[n][l];
+          sy += kGammaB[a][n] * k.y[n][l];
+          sz += kGammaB[a][n] * k.z[n][l];
+        }
+        gx[l] = sx * rv[l];
+        gy[l] = sy * rv[l];
+        gz[l] = sz * rv[l];
+      }
+      for (int n = 0; n < 8; ++n)
+        IMPACT3D_FOR_LANES g[a][n][l] = kGammaB[a][n] - (gx[l] * k.dvdx[n][l] + gy[l] * k.dvdy[n][l] + gz[l] * k.dvdz[n][l]);
+    }
+  }
+  // hourglass velocities h[3a + i]
+  alignas(64) Lanes h[12];
+  for (int a = 0; a < 4; ++a) {
+    IMPACT3D_FOR_LANES {
+      double hx = 0.0, hy = 0.0, hz = 0.0;
+      #pragma GCC unroll 16
+      for (int n = 0; n < 8; ++n) {
+        hx += g[a][n][l] * k.vx[n][l];
+        hy += g[a][n][l] * k.vy[n][l];
+        hz += g[a][n][l] * k.vz[n][l];
+      }
+      h[3 * a][l] = hx;
+      h[3 * a + 1][l] = hy;
+      h[3 * a + 2][l] = hz;
+    }
+  }
+  alignas(64) Lanes qf[12];  // the hourglass resultants Q_ia that act
+  alignas(64) Lanes root;
+  if (type <= 3) {
+    for (int l = 0; l < kLanes; ++l) root[l] = std::cbrt(k.v[l] * k.v[l]);
+    IMPACT3D_FOR_LANES {
+      const double ah = 0.25 * qhg * k.rho[l] * c * root[l];
+      #pragma GCC unroll 16
+      for (int m = 0; m < 12; ++m) qf[m][l] = ah * h[m][l];
+    }
+  } else {
+    for (int l = 0; l < kLanes; ++l) root[l] = std::cbrt(k.v[l]);
+    IMPACT3D_FOR_LANES {
+      const double kappa = 0.25 * qhg * shear_modulus * root[l];
+      const double kdt = kappa * dt_hg;
+      #pragma GCC unroll 16
+      for (int m = 0; m < 12; ++m) {
+        k.hgs[m][l] += kdt * h[m][l];
+        qf[m][l] = k.hgs[m][l];
+      }
+    }
+  }
+  IMPACT3D_FOR_LANES k.de_hg[l] = 0.0;  // the power, summed node by node
+  for (int n = 0; n < 8; ++n) {
+    IMPACT3D_FOR_LANES {
+      double ax = 0.0, ay = 0.0, az = 0.0;
+#pragma GCC unroll 16
+      for (int a = 0; a < 4; ++a) {
+        ax += qf[3 * a][l] * g[a][n][l];
+        ay += qf[3 * a + 1][l] * g[a][n][l];
+        az += qf[3 * a + 2][l] * g[a][n][l];
+      }
+      k.fx[n][l] += ax;
+      k.fy[n][l] += ay;
+      k.fz[n][l] += az;
+      k.de_hg[l] += ax * k.vx[n][l] + ay * k.vy[n][l] + az * k.vz[n][l];
+    }
+  }
+}
+
+// Element step (calc_hex_time_step) into k.dt.
+inline void calc_hex_time_step_block(HexBlock& k, double c, double q1, double q2) {
+  IMPACT3D_FOR_LANES {
+    const double len = k.v[l] / k.amax[l];
+    const double trd = k.trd[l];
+    const double q = trd < 0.0 ? q2 * c + q1 * len * (-trd) : 0.0;
+    const double den = q + std::sqrt(q * q + c * c);
+    const double dt = len / den;
+    k.dt[l] = (k.amax[l] <= 0.0 || den <= 0.0) ? DBL_MAX : dt;
+  }
+}
+
+}  // namespace impact3d

@@ -1,0 +1,46 @@
+#include "impact3d/solve/element_groups.h"
+
+#include <stdexcept>
+#include <string>
+
+namespace impact3d {
+
+HexKernel hex_kernel_for_material_type(int type) {
+  switch (type) {
+    case 1: return HexKernel::elastic;
+    case 3: return HexKernel::elastic_plastic;
+    case 20: return HexKernel::rigid;
+    default: throw std::logic_error("no solid kernel for material type " + std::to_string(type));
+  }
+}
+
+void build_element_groups(State& s) {
+  const std::size_t nmat = s.mats.size();
+  std::vector<int> count(nmat, 0);
+  for (int e = 0; e < s.ne; ++e) ++count[std::size_t(s.mat[std::size_t(e)])];
+  s.groups.clear();
+  std::vector<int> first_slot(nmat, 0);
+  int blocks = 0;
+  for (std::size_t k = 0; k < nmat; ++k) {
+    if (count[k] == 0) continue;
+    ElementGroup g;
+    g.kernel = hex_kernel_for_material_type(s.mats[k].type);
+    g.material = int(k);
+    g.first_block = blocks;
+    g.num_elems = count[k];
+    g.num_blocks = (count[k] + kLanes - 1) / kLanes;
+    first_slot[k] = blocks * kLanes;
+    blocks += g.num_blocks;
+    s.groups.push_back(g);
+  }
+  s.slot_elem.assign(std::size_t(blocks) * kLanes, -1);
+  s.elem_slot.assign(std::size_t(s.ne), -1);
+  for (int e = 0; e < s.ne; ++e) {
+    const int slot = first_slot[std::size_t(s.mat[std::size_t(e)])]++;
+    s.slot_elem[std::size_t(slot)] = e;
+    s.elem_slot[std::size_t(e)] = slot;
+  }
+  s.block_results.assign(std::size_t(blocks), BlockResult{});
+}
+
+}  // namespace impact3d

@@ -1,0 +1,22 @@
+#pragma once
+// Element groups: at initialization the solids are sorted into groups of one family, one
+// material and one formulation; the element pass dispatches per group (one kernel for the
+// whole group, kLanes elements at a time), never per element.  A new material or family adds
+// a kernel and a row in the table of element_groups.cpp, not a branch in the element loop.
+
+#include "impact3d/model/model.h"
+#include "impact3d/model/state.h"
+
+namespace impact3d {
+
+// The kernel that processes solids of a material type (the one table of material type ->
+// kernel).  Throws std::logic_error for a type no kernel handles (the input phase refuses
+// such decks first).
+HexKernel hex_kernel_for_material_type(int type);
+
+// Fills s.groups, s.slot_elem, s.elem_slot and s.block_results from s.conn and s.mat: one
+// group per material (in material order), its elements in increasing order.  With one
+// material, slot = element.
+void build_element_groups(State& s);
+
+}  // namespace impact3d

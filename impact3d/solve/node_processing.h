@@ -1,0 +1,30 @@
+#pragma once
+// The node pass of the cycle: corner forces gathered to the nodes in a fixed order, net force,
+// acceleration, constraints, velocity, and (when nothing needs the new velocities first)
+// position and kinetic energy in the same loop.  Threads work on fixed chunks of nodes; the
+// kinetic energy is summed per chunk and the chunks in order (same bits for any thread count).
+
+#include "impact3d/model/state.h"
+
+namespace impact3d {
+
+struct NodePass {
+  double dt_n = 0;      // dt^n = (dt^{n-1/2} + dt^{n+1/2}) / 2: velocity update
+  double dt_next = 0;   // dt^{n+1/2}: position update
+  bool has_fext = false;      // s.fext_x/y/z hold this cycle's external (contact) forces
+  bool store_force = false;   // keep the net force in s.fx/fy/fz (rigid bodies use it)
+  bool update_positions = false;  // also move the nodes and book the kinetic energy
+};
+
+// a^n from the gathered corner forces and external forces, v^{n+1/2} = v^{n-1/2} + dt^n a^n
+// (v^{n-1/2} kept in s.vx_old...), constrained components held; with update_positions also
+// x^{n+1} = x^n + dt^{n+1/2} v^{n+1/2} and s.kinetic.
+void update_velocities_for_nodes(State& s, const NodePass& p);
+
+// x^{n+1} = x^n + dt v^{n+1/2} and s.kinetic, after walls and rigid bodies set the velocities.
+void update_positions_for_nodes(State& s, double dt_next);
+
+// s.kinetic from the current velocities (same chunked sum as the passes above).
+void calc_kinetic_energy_for_nodes(State& s);
+
+}  // namespace impact3d
