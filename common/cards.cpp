@@ -142,10 +142,9 @@ FieldStatus parse_fortran_real(std::string_view text, double& value) {
 }
 
 bool is_plain_fixed_card(std::string_view line) {
-  for (char ch : line) {
-    const unsigned char c = static_cast<unsigned char>(ch);
-    if (c < 32 || c >= 127) return false;
-  }
+  unsigned bad = 0;  // no early exit: the loop vectorises
+  for (char ch : line) bad |= static_cast<unsigned>(static_cast<unsigned char>(ch) - 32u >= 95u);
+  if (bad) return false;
   if (line.size() > 80 && !trim(line.substr(80)).empty()) return false;
   return true;
 }

@@ -249,11 +249,12 @@ Ref field_ref(const KLine& l, const std::vector<int>& widths, int k) {
 // field reads as a number (or is blank) and passes its checks, so that no message can come from
 // it; anything else is read again, the normal way, by the code that reports every problem.
 bool plain_keyword_card(std::string_view t) {
+  unsigned bad = 0;  // no early exit: the loop vectorises
   for (char ch : t) {
     const unsigned char c = static_cast<unsigned char>(ch);
-    if (c < 32 || c >= 127 || c == ',' || c == '&') return false;
+    bad |= static_cast<unsigned>(c - 32u >= 95u) | static_cast<unsigned>(c == ',') | static_cast<unsigned>(c == '&');
   }
-  return true;
+  return bad == 0;
 }
 // Field k (0-based) of a plain card with these widths, as KCard::i / KCard::r read it: blank is 0.
 struct PlainFields {
