@@ -13,7 +13,7 @@ namespace {
 
 // Below this many blocks the element pass runs on one thread: waking the others costs more
 // than it gains (and on a shared machine much more).
-constexpr int kMinBlocksForThreads = 64;
+constexpr int kMinBlocksForThreads = 256;
 // Blocks handed to a thread at a time (dynamic schedule: a thread slowed by another process
 // simply takes fewer; every block writes only its own slots, so the bits do not change).
 constexpr int kBlocksPerChunk = 8;

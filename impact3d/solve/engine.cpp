@@ -1,6 +1,7 @@
 #include "impact3d/solve/engine.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
 
@@ -11,6 +12,13 @@
 #include "impact3d/solve/rigid_body.h"
 
 namespace impact3d {
+
+namespace {
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+}  // namespace
 
 Engine::Engine(const Model& m) : m_(m) {}
 
@@ -80,11 +88,14 @@ StepStatus Engine::step() {
   const double dt_n = s.cycle == 0 ? 0.5 * dt_next : 0.5 * (s.dt_half + dt_next);
 
   // external forces at x^n: contact penalty forces (walls act on velocities below)
+  auto t = Clock::now();
   if (!contact_.empty()) {
     std::fill(s.fext_x.begin(), s.fext_x.end(), 0.0);
     std::fill(s.fext_y.begin(), s.fext_y.end(), 0.0);
     std::fill(s.fext_z.begin(), s.fext_z.end(), 0.0);
     contact_.apply(m_, s, dt_next);
+    times_.contact += seconds_since(t);
+    t = Clock::now();
   }
   // Without walls or rigid bodies nothing acts on the new velocities before the positions
   // move: one fused pass over the nodes.
@@ -96,16 +107,25 @@ StepStatus Engine::step() {
   np.update_positions = s.rigid.empty() && m_.walls.empty();
   update_velocities_for_nodes(s, np);
   if (!np.update_positions) {
+    times_.nodes += seconds_since(t);
+    t = Clock::now();
     if (!s.rigid.empty()) update_rigid_body_velocities(s, dt_n, dt_next);
     if (!m_.walls.empty()) apply_stonewalls_to_nodes(m_, s, dt_next, dt_n);
+    times_.walls += seconds_since(t);
+    t = Clock::now();
     update_positions_for_nodes(s, dt_next);
   }
+  times_.nodes += seconds_since(t);
+  t = Clock::now();
   if (!s.rigid.empty()) update_rigid_body_positions(s, dt_next);
   if (!m_.walls.empty()) update_moving_walls(m_, s, dt_next);
+  times_.walls += seconds_since(t);
   s.time += dt_next;
   s.cycle += 1;
   s.dt_half = dt_next;
+  t = Clock::now();
   StepStatus st = process_elements();
+  times_.elements += seconds_since(t);
   if (st != StepStatus::ok) return st;
   if (!std::isfinite(s.kinetic)) {
     error_elem_ = -1;

@@ -12,6 +12,15 @@ namespace impact3d {
 
 enum class StepStatus { ok, finished, negative_volume, non_finite, dt_too_small };
 
+// Wall-clock seconds spent in each phase of the cycle since initialize() (benchmarks and the
+// run's final report).
+struct PhaseTimes {
+  double contact = 0;   // sliding interfaces (search and penalty forces)
+  double nodes = 0;     // node pass: forces, accelerations, velocities, positions, kinetic energy
+  double walls = 0;     // stonewalls and rigid bodies
+  double elements = 0;  // element pass and its reductions
+};
+
 class Engine {
  public:
   explicit Engine(const Model& m);
@@ -37,6 +46,8 @@ class Engine {
   // Energy diagnostics
   double kinetic_energy_of_material(int mat) const;
 
+  const PhaseTimes& phase_times() const { return times_; }
+
  private:
   StepStatus process_elements();
   void calc_kinetic_energy();
@@ -45,6 +56,7 @@ class Engine {
   State s_;
   SlidingInterfaces contact_;
   int error_elem_ = -1;
+  PhaseTimes times_;
 };
 
 }  // namespace impact3d
