@@ -285,6 +285,44 @@ struct PlainFields {
   }
 };
 
+// The data lines of a block, all in one file: 4-byte indices into the file's lines (a block
+// may hold millions of lines), read back as KLine values.
+class BlockLines {
+ public:
+  void push_back(const KLine& l) {
+    file_ = l.file;
+    idx_.push_back(std::uint32_t(l.line - l.file->lines().data()));
+  }
+  std::size_t size() const { return idx_.size(); }
+  bool empty() const { return idx_.empty(); }
+  KLine operator[](std::size_t k) const { return {file_, file_->lines().data() + idx_[k]}; }
+  void swap(BlockLines& o) noexcept {
+    std::swap(file_, o.file_);
+    idx_.swap(o.idx_);
+  }
+
+  class iterator {
+   public:
+    iterator(const BlockLines* b, std::size_t k) : b_(b), k_(k) {}
+    KLine operator*() const { return (*b_)[k_]; }
+    iterator& operator++() {
+      ++k_;
+      return *this;
+    }
+    bool operator!=(const iterator& o) const { return k_ != o.k_; }
+
+   private:
+    const BlockLines* b_;
+    std::size_t k_;
+  };
+  iterator begin() const { return {this, 0}; }
+  iterator end() const { return {this, idx_.size()}; }
+
+ private:
+  const DeckFile* file_ = nullptr;
+  std::vector<std::uint32_t, HugePageAllocator<std::uint32_t>> idx_;
+};
+
 struct Block {
   std::string name;     // upper case, suffix removed
   std::string keyword;  // as written (for messages)
@@ -292,7 +330,7 @@ struct Block {
   bool long_fmt = false, i10 = false;
   bool title_opt = false, id_opt = false;  // _TITLE / _ID option cards
   bool moving_opt = false;                 // *RIGIDWALL_PLANAR_MOVING: card 3 MASS, V0
-  std::vector<KLine, HugePageAllocator<KLine>> data;
+  BlockLines data;
 };
 
 // Raw records, before resolution.  Nodes and solids are the bulk of a deck: they keep their
