@@ -1636,18 +1636,17 @@ class KeywordReader {
     for (std::size_t k = 0; k < order.size(); ++k) order[k] = std::uint32_t(k);
     const auto by_id = [&](std::uint32_t a, std::uint32_t b) { return nodes_[a].id < nodes_[b].id; };
     if (!std::is_sorted(order.begin(), order.end(), by_id)) std::stable_sort(order.begin(), order.end(), by_id);
-    std::vector<const RNode*> kept;
-    kept.reserve(nodes_.size());
-    for (std::uint32_t k : order) {
-      const RNode& n = nodes_[k];
-      if (!kept.empty() && kept.back()->id == n.id) {
-        err(1200, n.ref(), "*NODE node " + std::to_string(n.id), "NID", "node " + std::to_string(n.id) + " also defined at " + at(kept.back()->ref()));
+    // the first of each id is kept (order is filtered in place)
+    std::size_t nn = 0;
+    for (std::size_t q = 0; q < order.size(); ++q) {
+      const RNode& n = nodes_[order[q]];
+      if (nn > 0 && nodes_[order[nn - 1]].id == n.id) {
+        err(1200, n.ref(), "*NODE node " + std::to_string(n.id), "NID", "node " + std::to_string(n.id) + " also defined at " + at(nodes_[order[nn - 1]].ref()));
         continue;
       }
-      kept.push_back(&n);
+      order[nn++] = order[q];
     }
-    release(order);
-    std::size_t nn = kept.size();
+    const auto kept = [&](std::size_t k) { return &nodes_[order[k]]; };
     assign_huge(m_.x, nn, 0.0);
     assign_huge(m_.y, nn, 0.0);
     assign_huge(m_.z, nn, 0.0);
@@ -1655,17 +1654,18 @@ class KeywordReader {
     node_ids_.resize(nn);
     bool identity = true;
     for (std::size_t k = 0; k < nn; ++k) {
-      node_ids_[k] = kept[k]->id;
-      m_.x[k] = kept[k]->x;
-      m_.y[k] = kept[k]->y;
-      m_.z[k] = kept[k]->z;
-      m_.bc[k] = kept[k]->tc;
-      identity = identity && kept[k]->id == int(k) + 1;
+      const RNode& n = *kept(k);
+      node_ids_[k] = n.id;
+      m_.x[k] = n.x;
+      m_.y[k] = n.y;
+      m_.z[k] = n.z;
+      m_.bc[k] = n.tc;
+      identity = identity && n.id == int(k) + 1;
     }
     m_.node_user_id.clear();
     if (!identity) m_.node_user_id = node_ids_;
     node_ids_identity_ = identity;
-    release(kept);
+    release(order);
     release(nodes_);  // the raw nodes are not needed any more
     if (nn == 0) {
       Location loc;
@@ -1684,18 +1684,16 @@ class KeywordReader {
     for (std::size_t k = 0; k < order.size(); ++k) order[k] = std::uint32_t(k);
     const auto by_id = [&](std::uint32_t a, std::uint32_t b) { return elems_[a].id < elems_[b].id; };
     if (!std::is_sorted(order.begin(), order.end(), by_id)) std::stable_sort(order.begin(), order.end(), by_id);
-    std::vector<const RElem*> kept;
-    kept.reserve(elems_.size());
-    for (std::uint32_t k : order) {
-      const RElem& e = elems_[k];
-      if (!kept.empty() && kept.back()->id == e.id) {
-        err(1200, e.ref(), "*ELEMENT_SOLID element " + std::to_string(e.id), "EID", "element " + std::to_string(e.id) + " also defined at " + at(kept.back()->ref()));
+    // the first of each id is kept (order is filtered in place)
+    std::size_t ne = 0;
+    for (std::size_t q = 0; q < order.size(); ++q) {
+      const RElem& e = elems_[order[q]];
+      if (ne > 0 && elems_[order[ne - 1]].id == e.id) {
+        err(1200, e.ref(), "*ELEMENT_SOLID element " + std::to_string(e.id), "EID", "element " + std::to_string(e.id) + " also defined at " + at(elems_[order[ne - 1]].ref()));
         continue;
       }
-      kept.push_back(&e);
+      order[ne++] = order[q];
     }
-    release(order);
-    std::size_t ne = kept.size();
     std::array<int, 8> undefined;
     undefined.fill(-1);
     assign_huge(m_.hex_nodes, ne, undefined);
@@ -1709,7 +1707,7 @@ class KeywordReader {
     int last_pid = 0;
     auto last_part = part_index_.end();
     for (std::size_t k = 0; k < ne; ++k) {
-      const RElem& e = *kept[k];
+      const RElem& e = elems_[order[k]];
       elem_ids_[k] = e.id;
       identity = identity && e.id == int(k) + 1;
       m_.hex_line[k] = e.card.line ? e.card.line->number : 0;
@@ -1753,7 +1751,7 @@ class KeywordReader {
         m_.hex_material[k] = -2 - pit->second;  // part index, replaced by the material index
       }
     }
-    release(kept);
+    release(order);
     release(elems_);  // the raw elements are not needed any more
     m_.hex_user_id.clear();
     if (!identity) m_.hex_user_id = elem_ids_;
