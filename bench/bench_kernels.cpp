@@ -9,7 +9,9 @@
 #include <stdexcept>
 
 #include "common/messages.h"
+#include "impact3d/element/hex_block.h"
 #include "impact3d/element/hexahedron.h"
+#include "impact3d/material/material_block.h"
 #include "impact3d/input/deck_reader.h"
 #include "impact3d/material/material.h"
 #include "impact3d/solve/element_processing.h"
@@ -79,6 +81,41 @@ void BM_UpdateStressElasticPlastic(benchmark::State& st) {
   }
 }
 BENCHMARK(BM_UpdateStressElasticPlastic);
+
+// The block kernels on one block of 8 distorted elements held in L1 (no gather, no store):
+// the element pass's arithmetic alone.  Items = elements.
+void BM_HexBlockKernels(benchmark::State& st) {
+  HexBlock k;
+  double x[8], y[8], z[8];
+  distorted_hex(x, y, z);
+  for (int l = 0; l < kLanes; ++l)
+    for (int j = 0; j < 8; ++j) {
+      k.x[j][l] = 1e-3 * x[j] * (1 + 0.01 * l); k.y[j][l] = 1e-3 * y[j]; k.z[j][l] = 1e-3 * z[j];
+      k.vx[j][l] = 0.1 * j; k.vy[j][l] = 0.01 * j * j; k.vz[j][l] = -0.2 * (j % 3) - 200;
+    }
+  MaterialConstants m;
+  m.type = 3; m.rho = 8930; m.E = 117e9; m.nu = 0.35; m.sigma_y = 4e8; m.E_tan = 1e8; m.beta = 1;
+  derive_material_constants(m);
+  for (int l = 0; l < kLanes; ++l) {
+    for (int c = 0; c < 6; ++c) k.sig[c][l] = 1e8 * (c + 1);
+    k.eps_p[l] = 0.1; k.yielded[l] = 0; k.q_old[l] = 0; k.rho[l] = 1e-9;
+  }
+  const int hg = int(st.range(0));
+  for (auto _ : st) {
+    calc_hex_kinematics_block(k, 1e-8);
+    rotate_stress_jaumann_block(k.sig, k.w, 1e-8);
+    update_stress_elastic_plastic_block<false>(m, k, 1e-8);
+    IMPACT3D_FOR_LANES k.rho[l] = m.rho * 1e-9 / k.v[l];
+    calc_hex_bulk_viscosity_block(k, m.c, 1.5, 0.06);
+    calc_hex_stress_force_block(k);
+    calc_hex_hourglass_force_block(k, hg, 0.1, m.c, m.G, 1e-8);
+    calc_hex_time_step_block(k, m.c, 1.5, 0.06);
+    benchmark::DoNotOptimize(k);
+    benchmark::ClobberMemory();
+  }
+  st.SetItemsProcessed(st.iterations() * kLanes);
+}
+BENCHMARK(BM_HexBlockKernels)->Arg(1)->Arg(3)->Arg(5);
 
 // The whole element pass (kinematics, stress, forces, hourglass, time step) over the Taylor bar
 // after 2000 cycles (plastic, deformed).  Items = elements.

@@ -13,6 +13,8 @@
 #include <cfloat>
 #include <cmath>
 
+#include "impact3d/element/cbrt_positive.h"
+
 namespace impact3d {
 
 // Elements per block.  Fixed at 8 for every instruction set: the slot layout of the element
@@ -192,7 +194,7 @@ inline void calc_hex_stress_force_block(HexBlock& k) {
 
 // Hourglass forces added to the corner forces (calc_hex_hourglass_force); power in k.de_hg
 // (times dt by the caller).  type as in HourglassInput; qhg != 0.  dt_hg is the step of the
-// stiffness forms.  cbrt is evaluated lane by lane with the C library (same bits).
+// stiffness forms.
 inline void calc_hex_hourglass_force_block(HexBlock& k, int type, double qhg, double c,
                                            double shear_modulus, double dt_hg) {
   using hex_block_detail::kGammaB;
@@ -240,14 +242,14 @@ inline void calc_hex_hourglass_force_block(HexBlock& k, int type, double qhg, do
   alignas(64) Lanes qf[12];  // the hourglass resultants Q_ia that act
   alignas(64) Lanes root;
   if (type <= 3) {
-    for (int l = 0; l < kLanes; ++l) root[l] = std::cbrt(k.v[l] * k.v[l]);
+    IMPACT3D_FOR_LANES root[l] = cbrt_positive(k.v[l] * k.v[l]);
     IMPACT3D_FOR_LANES {
       const double ah = 0.25 * qhg * k.rho[l] * c * root[l];
       #pragma GCC unroll 16
       for (int m = 0; m < 12; ++m) qf[m][l] = ah * h[m][l];
     }
   } else {
-    for (int l = 0; l < kLanes; ++l) root[l] = std::cbrt(k.v[l]);
+    IMPACT3D_FOR_LANES root[l] = cbrt_positive(k.v[l]);
     IMPACT3D_FOR_LANES {
       const double kappa = 0.25 * qhg * shear_modulus * root[l];
       const double kdt = kappa * dt_hg;

@@ -6,6 +6,8 @@
 
 #include "impact3d/element/hexahedron.h"
 
+#include "impact3d/element/cbrt_positive.h"
+
 #include <cfloat>
 #include <cmath>
 
@@ -248,13 +250,13 @@ double calc_hex_hourglass_force(const HourglassInput& in, const double x[8], con
   double h[12];
   hourglass_rates(g, vx, vy, vz, h);
   if (in.type <= 3) {
-    const double v23 = std::cbrt(in.volume * in.volume);
+    const double v23 = cbrt_positive(in.volume * in.volume);
     const double ah = 0.25 * in.qhg * in.rho * in.c * v23;
     double q[12];
     for (int k = 0; k < 12; ++k) q[k] = ah * h[k];
     return add_hourglass_forces(g, q, vx, vy, vz, fx, fy, fz);
   }
-  const double kappa = 0.25 * in.qhg * in.shear_modulus * std::cbrt(in.volume);
+  const double kappa = 0.25 * in.qhg * in.shear_modulus * cbrt_positive(in.volume);
   const double kdt = kappa * in.dt;
   for (int k = 0; k < 12; ++k) hgs[k] += kdt * h[k];
   return add_hourglass_forces(g, hgs, vx, vy, vz, fx, fy, fz);

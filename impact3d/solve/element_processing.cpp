@@ -128,6 +128,15 @@ void store_hex_block(State& s, const GroupPass& gp, const int* elems, const bool
   BlockResult r;
   r.dt_min = std::numeric_limits<double>::infinity();
   const MaterialConstants& mc = *gp.mc;
+  // a non-finite stress or force anywhere in the lane (summed across lanes at once: a chain
+  // of 30 dependent additions per element is slow)
+  alignas(64) Lanes check;
+  IMPACT3D_FOR_LANES {
+    double c = k.sig[0][l] + k.sig[1][l] + k.sig[2][l] + k.sig[3][l] + k.sig[4][l] + k.sig[5][l];
+#pragma GCC unroll 16
+    for (int j = 0; j < 8; ++j) c += k.fx[j][l] + k.fy[j][l] + k.fz[j][l];
+    check[l] = c;
+  }
   for (int l = 0; l < kLanes; ++l) {
     if (!active[l]) {
       zero_corner_forces(k, l);
@@ -186,9 +195,7 @@ void store_hex_block(State& s, const GroupPass& gp, const int* elems, const bool
       r.dt_min = k.dt[l];
       r.dt_elem = e;
     }
-    double check = sig[0] + sig[1] + sig[2] + sig[3] + sig[4] + sig[5];
-    for (int j = 0; j < 8; ++j) check += k.fx[j][l] + k.fy[j][l] + k.fz[j][l];
-    if (!std::isfinite(check) && r.non_finite_elem < 0) r.non_finite_elem = e;
+    if (!std::isfinite(check[l]) && r.non_finite_elem < 0) r.non_finite_elem = e;
   }
   // the block's corner forces, [corner][lane], in one piece
   const std::size_t base = std::size_t(block) * 8 * kLanes;

@@ -5,10 +5,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <random>
 
+#include "impact3d/element/cbrt_positive.h"
 #include "impact3d/element/hex_block.h"
 #include "impact3d/element/hexahedron.h"
 #include "impact3d/material/material.h"
@@ -195,4 +197,20 @@ TEST(HexBlock, StressUpdatesEqualTheScalarKernels) {
     update_stress_elastic(e, d, f.dt, sig);
     for (int c = 0; c < 6; ++c) EXPECT_TRUE(same(sig[c], f.k.sig[c][l]));
   }
+}
+
+TEST(HexBlock, CubeRootIsWithinOneUlpOfTheExactRoot) {
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> e(-30, 30), m(1, 10);
+  double worst = 0;
+  for (int i = 0; i < 1000000; ++i) {
+    const double x = m(rng) * std::pow(10.0, e(rng));
+    const double y = cbrt_positive(x);
+    const double ref = double(cbrtl((long double)x));  // extended precision, rounded (glibc's cbrt is off by up to 3 ulp)
+    const double ulp = std::nextafter(ref, INFINITY) - ref;
+    worst = std::max(worst, std::fabs(y - ref) / ulp);
+  }
+  EXPECT_LE(worst, 1.0);
+  EXPECT_EQ(cbrt_positive(8.0), 2.0);
+  EXPECT_EQ(cbrt_positive(1e-9), 1e-3);
 }
