@@ -55,12 +55,14 @@ void init_elements(const Model& m, State& s) {
   s.conn = m.hex_nodes;
   s.mat = m.hex_material;
   s.rigid_elem.assign(std::size_t(ne), 0);
-  for (auto* v : {&s.vol0, &s.vol, &s.mass_e, &s.eps_p, &s.q, &s.ie_e, &s.hg_e, &s.bv_e, &s.dt_e})
+  for (auto* v : {&s.vol0, &s.vol, &s.mass_e, &s.eps_p, &s.q, &s.dt_e})
     v->assign(std::size_t(ne), 0.0);
   s.sig.assign(std::size_t(6) * ne, 0.0);
   s.back.assign(std::size_t(6) * ne, 0.0);
   s.hgs.assign(std::size_t(12) * ne, 0.0);
   build_element_groups(s);
+  s.mat_internal.assign(s.mats.size(), 0.0);
+  s.mat_hourglass.assign(s.mats.size(), 0.0);
   s.cfx.assign(std::size_t(8) * s.slot_elem.size(), 0.0);
   s.cfy.assign(std::size_t(8) * s.slot_elem.size(), 0.0);
   s.cfz.assign(std::size_t(8) * s.slot_elem.size(), 0.0);

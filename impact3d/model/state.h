@@ -92,9 +92,6 @@ struct State {
   std::vector<double> hgs;             // 12 per element: hourglass stiffness resultants
   std::vector<double> q;               // bulk viscosity
   std::vector<double> cfx, cfy, cfz;   // 8 per slot: corner internal forces (corner_index)
-  std::vector<double> ie_e;            // internal energy per element (stress work)
-  std::vector<double> hg_e;            // hourglass energy per element
-  std::vector<double> bv_e;            // bulk viscosity energy per element
   std::vector<double> dt_e;            // element time step
 
   std::vector<MaterialConstants> mats;
@@ -112,6 +109,9 @@ struct State {
   double kinetic = 0, internal = 0, hourglass = 0, bulk_viscous = 0;
   double wall_work = 0, contact = 0, external_work = 0;
   double initial_total = 0;
+  // per material: accumulated stress work and hourglass energy (the plot database's
+  // per-material books), summed per block and the blocks in order
+  std::vector<double> mat_internal, mat_hourglass;
   std::vector<std::array<double, 3>> wall_force;  // force on each wall this cycle
   std::vector<double> wall_disp, wall_vel;        // moving walls: displacement and velocity along the normal
 
@@ -123,7 +123,7 @@ struct State {
     v(x); v(y); v(z); v(vx); v(vy); v(vz); v(ax); v(ay); v(az);
     v(vx_old); v(vy_old); v(vz_old); v(fx); v(fy); v(fz); v(fext_x); v(fext_y); v(fext_z);
     v(vol); v(sig); v(back); v(eps_p); v(yielded); v(failed); v(hgs); v(q); v(cfx); v(cfy); v(cfz);
-    v(ie_e); v(hg_e); v(bv_e); v(dt_e);
+    v(dt_e); v(mat_internal); v(mat_hourglass);
     v(time); v(cycle); v(dt_half); v(dt_next); v(dt_elem); v(dt0);
     v(kinetic); v(internal); v(hourglass); v(bulk_viscous); v(wall_work); v(contact);
     v(external_work); v(initial_total); v(wall_force); v(wall_disp); v(wall_vel);

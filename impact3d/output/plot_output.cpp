@@ -42,10 +42,12 @@ void fill_plot_globals(const Model& m, const State& s, const InterfaceForces& if
   ps.mat_velocity.assign(3 * nm, 0.0);  // momentum first, divided by the mass below
   ps.mat_mass.assign(nm, 0.0);
   ps.mat_hourglass_energy.assign(nm, 0.0);
+  for (std::size_t k = 0; k < nm && k < s.mat_internal.size(); ++k) {
+    ps.mat_internal_energy[k] = s.mat_internal[k];
+    ps.mat_hourglass_energy[k] = s.mat_hourglass[k];
+  }
   for (std::size_t e = 0; e < ne; ++e) {
     const std::size_t k = std::size_t(s.mat[e]);
-    ps.mat_internal_energy[k] += s.ie_e[e];
-    ps.mat_hourglass_energy[k] += s.hg_e[e];
     ps.mat_mass[k] += s.mass_e[e];
     const double mc = s.mass_e[e] / 8;
     for (int n : s.conn[e]) {

@@ -33,15 +33,24 @@ struct GroupPass {
 void gather_hex_block(const State& s, const GroupPass& gp, const int* elems, HexBlock& k) {
   int e[kLanes];
   for (int l = 0; l < kLanes; ++l) e[l] = elems[l] >= 0 ? elems[l] : elems[0];
+  // node indices corner by corner, then the six nodal fields (hardware gathers were slower
+  // here than the scalar loads the compiler makes of this loop)
+  alignas(64) int nodes[8][kLanes];
+  for (int l = 0; l < kLanes; ++l) {
+    const auto& cn = s.conn[std::size_t(e[l])];
+    for (int j = 0; j < 8; ++j) nodes[j][l] = cn[std::size_t(j)];
+  }
+  const double *px = s.x.data(), *py = s.y.data(), *pz = s.z.data();
+  const double *pvx = s.vx.data(), *pvy = s.vy.data(), *pvz = s.vz.data();
   for (int j = 0; j < 8; ++j) {
-    for (int l = 0; l < kLanes; ++l) {
-      const std::size_t n = std::size_t(s.conn[std::size_t(e[l])][std::size_t(j)]);
-      k.x[j][l] = s.x[n];
-      k.y[j][l] = s.y[n];
-      k.z[j][l] = s.z[n];
-      k.vx[j][l] = s.vx[n];
-      k.vy[j][l] = s.vy[n];
-      k.vz[j][l] = s.vz[n];
+    IMPACT3D_FOR_LANES {
+      const int n = nodes[j][l];
+      k.x[j][l] = px[n];
+      k.y[j][l] = py[n];
+      k.z[j][l] = pz[n];
+      k.vx[j][l] = pvx[n];
+      k.vy[j][l] = pvy[n];
+      k.vz[j][l] = pvz[n];
     }
   }
   for (int l = 0; l < kLanes; ++l) {
@@ -174,8 +183,6 @@ void store_hex_block(State& s, const GroupPass& gp, const int* elems, const bool
       s.q[E] = 0;
       zero_corner_forces(k, l);
       s.dt_e[E] = std::numeric_limits<double>::infinity();
-      s.ie_e[E] += die;
-      s.bv_e[E] += dbv;
       r.die += die;
       r.dbv += dbv;
       continue;
@@ -185,9 +192,6 @@ void store_hex_block(State& s, const GroupPass& gp, const int* elems, const bool
     if (gp.hg_state)
       for (int m = 0; m < 12; ++m) s.hgs[12 * E + std::size_t(m)] = k.hgs[m][l];
     s.dt_e[E] = k.dt[l];
-    s.ie_e[E] += k.de_ie[l];
-    s.hg_e[E] += k.de_hg[l];
-    s.bv_e[E] += k.de_bv[l];
     r.die += k.de_ie[l];
     r.dhg += k.de_hg[l];
     r.dbv += k.de_bv[l];
@@ -254,22 +258,30 @@ ElementLoopResult calc_forces_for_elems(const Model& m, State& s) {
 #pragma omp parallel for schedule(dynamic, kBlocksPerChunk) if (nb >= kMinBlocksForThreads)
     for (int b = b0; b < b0 + nb; ++b) process_hex_block(s, gp, b);
   }
-  // Reductions in block order (same bits for any thread count and schedule).
+  // Reductions group by group, blocks in order (same bits for any thread count and schedule).
   double die = 0, dhg = 0, dbv = 0;
   double dtmin = std::numeric_limits<double>::infinity();
   int arg = -1, bad = -1, nonfin = -1, failed = 0;
-  for (const BlockResult& r : s.block_results) {
-    die += r.die;
-    dhg += r.dhg;
-    dbv += r.dbv;
-    // smallest step, lowest element on ties (blocks go group by group, not in element order)
-    if (r.dt_elem >= 0 && (r.dt_min < dtmin || (r.dt_min == dtmin && (arg < 0 || r.dt_elem < arg)))) {
-      dtmin = r.dt_min;
-      arg = r.dt_elem;
+  for (const ElementGroup& g : s.groups) {
+    double gie = 0, ghg = 0;
+    for (int b = g.first_block; b < g.first_block + g.num_blocks; ++b) {
+      const BlockResult& r = s.block_results[std::size_t(b)];
+      gie += r.die;
+      ghg += r.dhg;
+      dbv += r.dbv;
+      // smallest step, lowest element on ties (blocks go group by group, not in element order)
+      if (r.dt_elem >= 0 && (r.dt_min < dtmin || (r.dt_min == dtmin && (arg < 0 || r.dt_elem < arg)))) {
+        dtmin = r.dt_min;
+        arg = r.dt_elem;
+      }
+      if (r.bad_volume_elem >= 0 && (bad < 0 || r.bad_volume_elem < bad)) bad = r.bad_volume_elem;
+      if (r.non_finite_elem >= 0 && (nonfin < 0 || r.non_finite_elem < nonfin)) nonfin = r.non_finite_elem;
+      failed += r.failed_now;
     }
-    if (r.bad_volume_elem >= 0 && (bad < 0 || r.bad_volume_elem < bad)) bad = r.bad_volume_elem;
-    if (r.non_finite_elem >= 0 && (nonfin < 0 || r.non_finite_elem < nonfin)) nonfin = r.non_finite_elem;
-    failed += r.failed_now;
+    s.mat_internal[std::size_t(g.material)] += gie;
+    s.mat_hourglass[std::size_t(g.material)] += ghg;
+    die += gie;
+    dhg += ghg;
   }
   out.die = die;
   out.dhg = dhg;
