@@ -57,9 +57,11 @@ for t in "${targets[@]}"; do
   mkdir -p "$C/$t"
   dict=()
   [ -f "fuzz/dict/$t.dict" ] && dict=("-dict=fuzz/dict/$t.dict")
+  regressions=()
+  [ -d "tests/fuzz/$t" ] && regressions=("tests/fuzz/$t")
   max_len=$(awk -v t="$t" '$1 == t { print "-max_len=" $2 }' fuzz/max_len.txt)
   echo "== $t: ${seconds} s"
-  nice -n 19 "$B/fuzz/fuzz_$t" "$C/$t" "$B/fuzz-corpus/$t" "${dict[@]}" $max_len -max_total_time="$seconds" \
+  nice -n 19 "$B/fuzz/fuzz_$t" "$C/$t" "$B/fuzz-corpus/$t" "${regressions[@]}" "${dict[@]}" $max_len -max_total_time="$seconds" \
     -timeout=10 -rss_limit_mb=2048 -malloc_limit_mb=1024 -print_final_stats=1 \
     -artifact_prefix="$C/$t-" > "$C/$t.log" 2>&1 || echo "   $t: finding, see $C/$t.log"
   grep -E '^stat::(number_of_executed_units|peak_rss_mb)|^Done|ERROR|SUMMARY' "$C/$t.log" | sed 's/^/   /' || true
