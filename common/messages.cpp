@@ -78,6 +78,7 @@ const std::vector<MessageDef> kCatalog = {
     {2011, S::warning, "part without solid elements ignored"},
     {2012, S::warning, "stonewalls do not act on rigid-body nodes (use a sliding interface for a rigid body)"},
     {2013, S::warning, "segment node order reversed so that its normal points out of its solid element"},
+    {2014, S::warning, "initial velocities on the nodes of a rigid body are not a rigid motion: the body keeps their momentum and angular momentum, and its nodes start with that rigid motion"},
     // 3000-3099: command line and files
     {3001, S::error, "unknown command-line argument"},
     {3002, S::error, "no input deck given (use i=deck)"},
@@ -168,25 +169,133 @@ std::string render(const Diagnostic& d) {
   return s;
 }
 
+namespace {
+// The id an occurrence is known by in a folded line: the first number in its card ("element 17"
+// -> "17"), else its line.
+std::string occurrence_id(const Location& w) {
+  const std::string& c = w.card;
+  for (std::size_t i = 0; i < c.size(); ++i) {
+    if (c[i] >= '0' && c[i] <= '9') {
+      std::size_t j = i;
+      while (j < c.size() && c[j] >= '0' && c[j] <= '9') ++j;
+      return c.substr(i, j - i);
+    }
+  }
+  return w.line > 0 ? "line " + std::to_string(w.line) : std::string();
+}
+
+// Messages of one cause: same number, file, card with its numbers left out, field, detail and
+// text found.
+std::string cause_key(int id, const Location& w, const std::string& detail) {
+  std::string k = std::to_string(id);
+  k += '\x1f';
+  k += w.file;
+  k += '\x1f';
+  bool in_digits = false;
+  for (char ch : w.card) {
+    bool dg = ch >= '0' && ch <= '9';
+    if (!dg) k += ch;
+    else if (!in_digits) k += '#';
+    in_digits = dg;
+  }
+  k += '\x1f';
+  k += w.field;
+  k += '\x1f';
+  k += detail;
+  k += '\x1f';
+  if (w.show_found) k += w.found;
+  return k;
+}
+
+}  // namespace
+
+void Diagnostics::add_id(Fold& f, const Location& w) {
+  if (static_cast<int>(f.more.size()) >= kFirstIds) return;
+  std::string s = occurrence_id(w);
+  if (!s.empty()) f.more.push_back(std::move(s));
+}
+
 void Diagnostics::add(int id, Location where, std::string detail) {
   const MessageDef& m = message_def(id);
   if (m.severity == Severity::error) ++errors_;
   if (m.severity == Severity::warning) ++warnings_;
-  if (static_cast<int>(list_.size()) >= kMaxStored) {
-    ++suppressed_;
+  std::string key = cause_key(id, where, detail);
+  auto it = index_.find(key);
+  if (it != index_.end()) {
+    Fold& f = folds_[it->second];
+    ++f.count;
+    add_id(f, where);
     return;
   }
+  int& n = distinct_[id];
+  if (n >= kMaxDistinctPerNumber) {
+    auto o = overflow_.find(id);
+    if (o == overflow_.end()) {
+      Fold f;
+      add_id(f, where);
+      overflow_.emplace(id, std::make_pair(Diagnostic{id, m.severity, std::move(where), {}}, std::move(f)));
+    } else {
+      ++o->second.second.count;
+      add_id(o->second.second, where);
+    }
+    return;
+  }
+  ++n;
+  index_.emplace(std::move(key), list_.size());
   list_.push_back({id, m.severity, std::move(where), std::move(detail)});
+  folds_.emplace_back();
 }
 
-bool Diagnostics::has(int id) const {
-  return std::any_of(list_.begin(), list_.end(), [id](const Diagnostic& d) { return d.id == id; });
+bool Diagnostics::has(int id) const { return distinct_.count(id) > 0; }
+
+int Diagnostics::count(int id) const {
+  int n = 0;
+  for (std::size_t k = 0; k < list_.size(); ++k)
+    if (list_[k].id == id) n += folds_[k].count;
+  auto o = overflow_.find(id);
+  if (o != overflow_.end()) n += o->second.second.count;
+  return n;
 }
+
+int Diagnostics::summarised() const {
+  int n = 0;
+  for (const auto& [id, o] : overflow_) n += o.second.count;
+  return n;
+}
+
+namespace {
+std::string id_list(const std::vector<std::string>& ids, int count) {
+  std::string s;
+  for (const auto& x : ids) s += (s.empty() ? "" : ", ") + x;
+  if (count > static_cast<int>(ids.size())) s += ", ...";
+  return s;
+}
+}  // namespace
 
 void Diagnostics::print(std::ostream& os) const {
-  for (const auto& d : list_) os << render(d) << '\n';
-  if (suppressed_ > 0)
-    os << "(" << suppressed_ << " further messages not shown)\n";
+  for (std::size_t k = 0; k < list_.size(); ++k) {
+    os << render(list_[k]);
+    const Fold& f = folds_[k];
+    if (f.count > 1) {
+      os << " (" << f.count << " times";
+      if (!f.more.empty()) os << "; also " << id_list(f.more, f.count - 1);
+      os << ")";
+    }
+    os << '\n';
+  }
+  // one line per number for the different messages past the per-number bound
+  for (const auto& [id, o] : overflow_) {
+    const Diagnostic& d = o.first;
+    const Fold& f = o.second;
+    Diagnostic s = d;
+    s.where.card.clear();
+    s.where.field.clear();
+    s.where.col_first = s.where.col_last = 0;
+    s.where.show_found = false;
+    s.detail = std::to_string(f.count) + " further message(s) of this number, not shown one by one";
+    if (!f.more.empty()) s.detail += " (at " + id_list(f.more, f.count) + ")";
+    os << render(s) << '\n';
+  }
 }
 
 }  // namespace impact3d

@@ -15,6 +15,8 @@
 #include <string>
 #include <string_view>
 #include <vector>
+#include <map>
+#include <unordered_map>
 #include <ostream>
 
 namespace impact3d {
@@ -55,22 +57,42 @@ struct Diagnostic {
 //   FILE:LINE: error 1003: CARD, field FIELD (cols A-B): TEXT: DETAIL [found "X"]
 std::string render(const Diagnostic& d);
 
-// Collects diagnostics; the input phase never stops at the first error.
+// Collects diagnostics; the input phase never stops at the first error.  No message is
+// dropped: repeats of one cause become one line with a count and the first ids, and past
+// kMaxDistinctPerNumber different lines of one number the rest of that number is one summary
+// line (count, first place, first ids), so a garbage file cannot use unbounded memory and every
+// message number that occurred is printed.
 class Diagnostics {
  public:
   void add(int id, Location where, std::string detail = {});
   int error_count() const { return errors_; }
   int warning_count() const { return warnings_; }
+  // The distinct lines.  Repeats of one cause (same number, file, card with its numbers left
+  // out, field, detail and text found) are folded into the first: times(k) is how many there
+  // were in all.
   const std::vector<Diagnostic>& all() const { return list_; }
+  int times(std::size_t k) const { return folds_[k].count; }
+  // Occurrences of a number, repeats and summarised ones included.
+  int count(int id) const;
   void print(std::ostream& os) const;
   bool has(int id) const;
-  // Bound on stored messages, so a garbage file cannot use unbounded memory.
-  static constexpr int kMaxStored = 1000;
-  int suppressed() const { return suppressed_; }
+  static constexpr int kMaxDistinctPerNumber = 200;
+  static constexpr int kFirstIds = 10;
+  // Occurrences summarised per number past kMaxDistinctPerNumber (shown as one line each).
+  int summarised() const;
 
  private:
+  struct Fold {
+    int count = 1;
+    std::vector<std::string> more;  // ids of the first repeats (number in the card, or line)
+  };
   std::vector<Diagnostic> list_;
-  int errors_ = 0, warnings_ = 0, suppressed_ = 0;
+  std::vector<Fold> folds_;                             // parallel to list_
+  std::unordered_map<std::string, std::size_t> index_;  // cause key -> index in list_
+  std::map<int, int> distinct_;                         // number -> lines in list_
+  std::map<int, std::pair<Diagnostic, Fold>> overflow_;  // number -> summary of the rest
+  static void add_id(Fold& f, const Location& w);
+  int errors_ = 0, warnings_ = 0;
 };
 
 // Exit codes of impact3d and postimpact (documented in the README; scripts depend on them).

@@ -425,6 +425,7 @@ struct RContact {
   std::string keyword;
 };
 struct RWall {
+  std::string keyword;  // as written (*RIGIDWALL_PLANAR_ID, ...)
   int nsid = 0;
   Ref nsid_ref;
   StoneWall w;
@@ -439,6 +440,7 @@ struct RVelocity {       // one initial-velocity definition, in deck order
   std::array<double, 3> xc{}, n{};
 };
 struct RSpc {
+  std::string keyword;  // as written (*BOUNDARY_SPC_SET_ID, ...)
   bool set = false;
   int id = 0;
   int bits = 0;
@@ -522,6 +524,17 @@ class KeywordReader {
   std::vector<Ref> curve_refs_;
   std::vector<const Block*> unsupported_;
   std::map<int, std::string> unsupported_mids_, unsupported_secids_;  // id -> keyword, line
+  // sets and parts that refused keywords define (*SET_NODE_GENERAL, *PART_COMPOSITE, ...):
+  // kind ('N' node set, 'P' part set, 'S' segment set, 'p' part) and id -> keyword, line
+  std::map<std::pair<char, int>, std::string> refused_defs_;
+
+  // "; SET is defined by *KEYWORD at FILE:LINE, which is not supported" when a refused keyword
+  // defines what a reference names.
+  std::string refused_note(char kind, int id) const {
+    auto it = refused_defs_.find({kind, id});
+    if (it == refused_defs_.end()) return {};
+    return " (it is defined by " + it->second + ", a keyword IMPACT-3D does not support)";
+  }
   int rotational_spc_ = 0;
   int reaction_flag_ = -1;
   std::set<int> initially_elastic_;  // part ids
@@ -966,6 +979,24 @@ class KeywordReader {
                 b.keyword + " at " + b.kw.file->name() + ":" + std::to_string(b.kw.line->number);
           }
         }
+        // and the sets and parts they define, so that a reference to one names the keyword
+        char kind = n.rfind("SET_NODE", 0) == 0      ? 'N'
+                    : n.rfind("SET_PART", 0) == 0    ? 'P'
+                    : n.rfind("SET_SEGMENT", 0) == 0 ? 'S'
+                    : n.rfind("PART", 0) == 0        ? 'p'
+                                                     : 0;
+        if (kind) {
+          const bool titled = n.size() > 6 && n.compare(n.size() - 6, 6, "_TITLE") == 0;
+          std::size_t k = kind == 'p' ? 1 : titled ? 1 : 0;  // *PART_...: heading card first
+          if (k < b.data.size()) {
+            Diagnostics quiet;
+            KCard c(b.data[k], b.keyword, W(b, 1), quiet);
+            long long id = c.i(0, "id", 0);
+            if (quiet.error_count() == 0 && id != 0)
+              refused_defs_.emplace(std::make_pair(kind, int(id)),
+                                    upper(b.keyword) + " at " + b.kw.file->name() + ":" + std::to_string(b.kw.line->number));
+          }
+        }
       }
     }
   }
@@ -1244,7 +1275,9 @@ class KeywordReader {
       h.q2_blank = c.blank(5);
       h.q1 = c.r(4, "Q1", 1.5);
       h.q2 = c.r(5, "Q2", 0.06);
-      if (h.ihq < 0 || h.ihq > 5) c.error(1006, 1, "IHQ", "0 (control default), 1 viscous, 2/3 Flanagan-Belytschko viscous, 4/5 stiffness");
+      // LS-DYNA knows IHQ 0-10: the types IMPACT-3D lacks are not supported, not invalid
+      if (h.ihq >= 6 && h.ihq <= 10) c.error(1102, 1, "IHQ", "hourglass type " + std::to_string(h.ihq) + " (IMPACT-3D has 0 control default, 1 viscous, 2/3 Flanagan-Belytschko viscous, 4/5 stiffness)");
+      else if (h.ihq < 0 || h.ihq > 5) c.error(1006, 1, "IHQ", "0 (control default), 1 viscous, 2/3 Flanagan-Belytschko viscous, 4/5 stiffness");
       if (h.qm < 0) c.error(1220, 2, "QM");
       if (h.q1 < 0) c.error(1220, 4, "Q1");
       if (h.q2 < 0) c.error(1220, 5, "Q2");
@@ -1261,7 +1294,11 @@ class KeywordReader {
     ctrl_ihq_ref_ = c.ref(0);
     ctrl_qh_ = c.r(1, "QH", 0.1);
     if (ctrl_qh_ == 0) ctrl_qh_ = 0.1;
-    if (ctrl_ihq_ < 0 || ctrl_ihq_ > 5) c.error(1006, 0, "IHQ", "0/1 viscous, 2/3 Flanagan-Belytschko viscous, 4/5 stiffness");
+    // LS-DYNA knows IHQ 0-10 and negative values (shell variants): those IMPACT-3D lacks are not
+    // supported, not invalid
+    if ((ctrl_ihq_ >= 6 && ctrl_ihq_ <= 10) || (ctrl_ihq_ >= -10 && ctrl_ihq_ < 0))
+      c.error(1102, 0, "IHQ", "hourglass type " + std::to_string(ctrl_ihq_) + " (IMPACT-3D has 0/1 viscous, 2/3 Flanagan-Belytschko viscous, 4/5 stiffness)");
+    else if (ctrl_ihq_ < 0 || ctrl_ihq_ > 5) c.error(1006, 0, "IHQ", "0/1 viscous, 2/3 Flanagan-Belytschko viscous, 4/5 stiffness");
     if (ctrl_qh_ < 0) c.error(1220, 1, "QH");
   }
 
@@ -1382,6 +1419,7 @@ class KeywordReader {
       if (is_blank(b.data[k].line->text)) continue;
       KCard c = card(b, k, "", W(b, 8));
       RSpc s;
+      s.keyword = upper(b.keyword);
       s.set = set;
       s.id = int(c.i(0, set ? "NSID" : "NID"));
       s.ref = c.ref(0);
@@ -1459,6 +1497,7 @@ class KeywordReader {
       if (k + 1 >= b.data.size()) { missing_card(b, "cards 1 and 2"); return; }
       KCard c = card(b, k, "card 1", W(b, 7));
       RWall w;
+      w.keyword = upper(b.keyword);
       w.nsid = int(c.i(0, "NSID"));
       w.nsid_ref = c.ref(0);
       if (c.i(1, "NSIDEX") != 0) c.error(1102, 1, "NSIDEX", "exempted node sets");
@@ -1546,7 +1585,8 @@ class KeywordReader {
     if (k + 3 < b.data.size()) {
       KCard ca = card(b, k + 3, "optional card A", W(b, 8));
       ct.soft = int(ca.i(0, "SOFT"));
-      if (ct.soft != 0 && ct.soft != 1) ca.error(1006, 0, "SOFT", "0 penalty (DYNA3D), 1 soft constraint (IMPACT-3D maximum stable stiffness)");
+      if (ct.soft == 2 || ct.soft == 4 || ct.soft == 6) ca.error(1102, 0, "SOFT", "contact formulation SOFT = " + std::to_string(ct.soft) + " (IMPACT-3D has 0 penalty and 1 soft constraint)");
+      else if (ct.soft != 0 && ct.soft != 1) ca.error(1006, 0, "SOFT", "0 penalty (DYNA3D), 1 soft constraint (IMPACT-3D maximum stable stiffness)");
     }
     contacts_.push_back(ct);
   }
@@ -1581,22 +1621,36 @@ class KeywordReader {
     curve_refs_.push_back(c.ref(0));
   }
 
+  // Keywords whose absence changes what the rest of the deck means: --lenient-keywords cannot
+  // ignore them (*CASE blocks select cards per case; ignoring them applied every case's cards
+  // at once).
+  static bool changes_meaning(const std::string& name) { return name == "CASE" || name.rfind("CASE_", 0) == 0; }
+
   void report_unsupported() {
     if (unsupported_.empty()) return;
-    std::map<std::string, int> count;
-    for (const Block* b : unsupported_) ++count[b->name];
+    std::map<std::string, int> ignorable, refused;  // keyword as written, upper case -> blocks
+    int n_ignorable = 0, n_refused = 0;
     for (const Block* b : unsupported_) {
+      const bool refuse = !opt_.lenient || changes_meaning(b->name);
+      ++(refuse ? refused : ignorable)[upper(b->keyword.substr(1))];
+      ++(refuse ? n_refused : n_ignorable);
       Location loc;
       loc.file = b->kw.file->name();
       loc.line = b->kw.line->number;
       loc.card = b->keyword;
-      diag_.add(opt_.lenient ? 2007 : 1301, loc);
+      diag_.add(refuse ? 1301 : 2007, loc,
+                opt_.lenient && refuse ? "the cards of every case would apply at once: a deck with *CASE is refused even with --lenient-keywords" : "");
     }
-    std::string list;
-    for (const auto& [n, c] : count) list += (list.empty() ? "*" : ", *") + n + (c > 1 ? " (" + std::to_string(c) + "x)" : "");
-    Location loc;
-    loc.file = main_.name();
-    diag_.add(opt_.lenient ? 2007 : 1301, loc, std::to_string(unsupported_.size()) + " keyword block(s): " + list);
+    auto summary = [&](int id, int blocks, const std::map<std::string, int>& count) {
+      if (count.empty()) return;
+      std::string list;
+      for (const auto& [n, c] : count) list += (list.empty() ? "*" : ", *") + n + (c > 1 ? " (" + std::to_string(c) + "x)" : "");
+      Location loc;
+      loc.file = main_.name();
+      diag_.add(id, loc, std::to_string(blocks) + " keyword block(s): " + list);
+    };
+    summary(2007, n_ignorable, ignorable);
+    summary(1301, n_refused, refused);
   }
 
   // ---------------------------------------------------------------- pass 3: resolve
@@ -1734,7 +1788,7 @@ class KeywordReader {
       }
       auto pit = last_part;
       if (pit == part_index_.end()) {
-        err(1308, e.pid_ref(), card(), "PID", "part " + std::to_string(e.pid) + " is not defined by *PART");
+        err(1308, e.pid_ref(), card(), "PID", "part " + std::to_string(e.pid) + " is not defined by *PART" + refused_note('p', e.pid));
         ok = false;
       } else {
         part_elems_[std::size_t(pit->second)].push_back(int(k));
@@ -1893,7 +1947,7 @@ class KeywordReader {
   const RIdList* find_node_set(int sid, const Ref& r, const std::string& card, const char* field) {
     auto it = node_sets_.find(sid);
     if (it == node_sets_.end()) {
-      err(1309, r, card, field, "*SET_NODE_LIST " + std::to_string(sid) + " is not defined");
+      err(1309, r, card, field, "*SET_NODE_LIST " + std::to_string(sid) + " is not defined" + refused_note('N', sid));
       return nullptr;
     }
     return &it->second;
@@ -1905,17 +1959,17 @@ class KeywordReader {
     if (is_set) {
       auto it = part_sets_.find(id);
       if (it == part_sets_.end()) {
-        err(1309, r, card, field, "*SET_PART_LIST " + std::to_string(id) + " is not defined");
+        err(1309, r, card, field, "*SET_PART_LIST " + std::to_string(id) + " is not defined" + refused_note('P', id));
         return out;
       }
       for (std::size_t j = 0; j < it->second.ids.size(); ++j) {
         auto p = part_index_.find(it->second.ids[j]);
-        if (p == part_index_.end()) err(1308, it->second.refs[j], "*SET_PART_LIST " + std::to_string(id), "PID", "part " + std::to_string(it->second.ids[j]) + " is not defined");
+        if (p == part_index_.end()) err(1308, it->second.refs[j], "*SET_PART_LIST " + std::to_string(id), "PID", "part " + std::to_string(it->second.ids[j]) + " is not defined" + refused_note('p', it->second.ids[j]));
         else out.push_back(p->second);
       }
     } else {
       auto p = part_index_.find(id);
-      if (p == part_index_.end()) err(1308, r, card, field, "part " + std::to_string(id) + " is not defined");
+      if (p == part_index_.end()) err(1308, r, card, field, "part " + std::to_string(id) + " is not defined" + refused_note('p', id));
       else out.push_back(p->second);
     }
     return out;
@@ -1938,7 +1992,7 @@ class KeywordReader {
   void resolve_spc() {
     for (const RSpc& s : spcs_) {
       std::vector<int> nodes;
-      std::string card = s.set ? "*BOUNDARY_SPC_SET" : "*BOUNDARY_SPC_NODE";
+      const std::string& card = s.keyword;
       if (s.set) {
         if (const RIdList* set = find_node_set(s.id, s.ref, card, "NSID")) nodes = set_nodes(*set, card);
       } else {
@@ -1985,10 +2039,12 @@ class KeywordReader {
     // renumbered 1..NUMLC in deck order (the fixed format needs 1..NUMLC)
     for (std::size_t k = 0; k < curves_.size(); ++k) {
       LoadCurve lc = curves_[k];
-      if (lc.t.size() < 2) err(1003, curve_refs_[k], "*DEFINE_CURVE " + std::to_string(lc.number), "LCID", "a curve needs at least 2 points");
+      const std::string card = "*DEFINE_CURVE " + std::to_string(lc.number);
+      if (lc.t.size() < 2) err(1003, curve_refs_[k], card, "LCID", "a curve needs at least 2 points");
       lc.number = int(k) + 1;
       m_.load_curves.push_back(std::move(lc));
-      diag_.add(2004, loc_of(curve_refs_[k], "*DEFINE_CURVE", nullptr, false), "no supported feature uses load curves yet");
+      // one line for all curves (Diagnostics folds the repeats, naming the curves)
+      diag_.add(2004, loc_of(curve_refs_[k], card, nullptr, false), "no supported feature uses load curves yet");
     }
     m_.control.numlc = int(m_.load_curves.size());
   }
@@ -1996,10 +2052,10 @@ class KeywordReader {
   void resolve_walls() {
     for (RWall& w : walls_) {
       if (w.nsid != 0) {
-        if (const RIdList* s = find_node_set(w.nsid, w.nsid_ref, "*RIGIDWALL_PLANAR", "NSID")) {
+        if (const RIdList* s = find_node_set(w.nsid, w.nsid_ref, w.keyword, "NSID")) {
           w.w.nodes = set_nodes(*s, "*SET_NODE_LIST " + std::to_string(w.nsid));
           remove_repeated_nodes(w.w.nodes);
-          if (w.w.nodes.empty()) err(1314, w.nsid_ref, "*RIGIDWALL_PLANAR", "NSID", "the node set has no nodes (0 = all nodes)");
+          if (w.w.nodes.empty()) err(1314, w.nsid_ref, w.keyword, "NSID", "the node set has no nodes (0 = all nodes)");
         }
       }
       m_.walls.push_back(w.w);
@@ -2141,7 +2197,7 @@ class KeywordReader {
     if (side.type == 0) {
       auto it = seg_sets_.find(side.id);
       if (it == seg_sets_.end()) {
-        err(1309, side.id_ref, card, field, "*SET_SEGMENT " + std::to_string(side.id) + " is not defined");
+        err(1309, side.id_ref, card, field, "*SET_SEGMENT " + std::to_string(side.id) + " is not defined" + refused_note('S', side.id));
         return;
       }
       const RSegSet& s = it->second;

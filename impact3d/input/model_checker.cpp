@@ -124,6 +124,98 @@ void orient_interface_segments(Model& m, Diagnostics& diag) {
   }
 }
 
+namespace {
+// Warning 2014 for each rigid material whose nodes were given velocities (after the constraints
+// have zeroed theirs, as at the start of the run) that no rigid motion v = a + w x r matches.
+void check_rigid_velocities(const Model& m, Diagnostics& diag, const Location& file_loc) {
+  const std::size_t nn = std::size_t(m.num_nodes());
+  std::vector<std::array<double, 3>> v(nn, {0.0, 0.0, 0.0});
+  for (const auto& iv : m.init_velocities) {
+    if (iv.first == 0) {
+      std::fill(v.begin(), v.end(), iv.v);
+    } else if (iv.increment > 0) {
+      for (int n = iv.first; n <= iv.last; n += iv.increment)
+        if (n >= 1 && std::size_t(n) <= nn) v[std::size_t(n - 1)] = iv.v;
+    }
+  }
+  for (std::size_t i = 0; i < nn && i < m.bc.size(); ++i) {
+    const int c = m.bc[i];
+    if (bc_fixes_x(c)) v[i][0] = 0;
+    if (bc_fixes_y(c)) v[i][1] = 0;
+    if (bc_fixes_z(c)) v[i][2] = 0;
+  }
+  for (std::size_t k = 0; k < m.materials.size(); ++k) {
+    if (m.materials[k].type != 20) continue;
+    std::vector<int> nodes;
+    for (int e = 0; e < m.num_hexes(); ++e) {
+      const auto& n = m.hex_nodes[std::size_t(e)];
+      if (n[0] < 0 || m.hex_material[std::size_t(e)] != int(k)) continue;
+      for (int j = 0; j < 8; ++j) nodes.push_back(n[std::size_t(j)]);
+    }
+    std::sort(nodes.begin(), nodes.end());
+    nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+    if (nodes.size() < 2) continue;
+    // least-squares rigid motion with equal weights (a rigid field fits exactly whatever the
+    // weights): mean velocity, then w from the "inertia" and "angular momentum" about the centroid
+    const double cnt = double(nodes.size());
+    std::array<double, 3> c{}, vb{};
+    double vmax = 0;
+    for (int n : nodes) {
+      const std::size_t i = std::size_t(n);
+      c[0] += m.x[i] / cnt; c[1] += m.y[i] / cnt; c[2] += m.z[i] / cnt;
+      for (int a = 0; a < 3; ++a) vb[std::size_t(a)] += v[i][std::size_t(a)] / cnt;
+      vmax = std::max(vmax, std::sqrt(v[i][0] * v[i][0] + v[i][1] * v[i][1] + v[i][2] * v[i][2]));
+    }
+    if (!(vmax > 0)) continue;
+    double I[3][3] = {}, L[3] = {};
+    for (int n : nodes) {
+      const std::size_t i = std::size_t(n);
+      const double r[3] = {m.x[i] - c[0], m.y[i] - c[1], m.z[i] - c[2]};
+      const double u[3] = {v[i][0] - vb[0], v[i][1] - vb[1], v[i][2] - vb[2]};
+      const double rr = r[0] * r[0] + r[1] * r[1] + r[2] * r[2];
+      for (int a = 0; a < 3; ++a)
+        for (int b = 0; b < 3; ++b) I[a][b] += (a == b ? rr : 0) - r[a] * r[b];
+      L[0] += r[1] * u[2] - r[2] * u[1];
+      L[1] += r[2] * u[0] - r[0] * u[2];
+      L[2] += r[0] * u[1] - r[1] * u[0];
+    }
+    // w = I^-1 L by Cramer's rule; a body on a line (singular I) is fitted by translation alone
+    const double det = I[0][0] * (I[1][1] * I[2][2] - I[1][2] * I[2][1]) - I[0][1] * (I[1][0] * I[2][2] - I[1][2] * I[2][0]) +
+                       I[0][2] * (I[1][0] * I[2][1] - I[1][1] * I[2][0]);
+    const double tr = I[0][0] + I[1][1] + I[2][2];
+    double w[3] = {0, 0, 0};
+    if (std::abs(det) > 1e-12 * tr * tr * tr) {
+      for (int col = 0; col < 3; ++col) {
+        double A[3][3];
+        for (int a = 0; a < 3; ++a)
+          for (int b = 0; b < 3; ++b) A[a][b] = b == col ? L[a] : I[a][b];
+        w[col] = (A[0][0] * (A[1][1] * A[2][2] - A[1][2] * A[2][1]) - A[0][1] * (A[1][0] * A[2][2] - A[1][2] * A[2][0]) +
+                  A[0][2] * (A[1][0] * A[2][1] - A[1][1] * A[2][0])) / det;
+      }
+    }
+    double dmax = 0;
+    int worst = nodes[0];
+    for (int n : nodes) {
+      const std::size_t i = std::size_t(n);
+      const double r[3] = {m.x[i] - c[0], m.y[i] - c[1], m.z[i] - c[2]};
+      const double d[3] = {v[i][0] - vb[0] - (w[1] * r[2] - w[2] * r[1]), v[i][1] - vb[1] - (w[2] * r[0] - w[0] * r[2]),
+                           v[i][2] - vb[2] - (w[0] * r[1] - w[1] * r[0])};
+      const double dn = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+      if (dn > dmax) { dmax = dn; worst = n; }
+    }
+    if (dmax > 1e-6 * vmax) {
+      Location loc = file_loc;
+      loc.line = m.materials[k].line;
+      loc.card = "material " + std::to_string(k + 1);
+      char buf[160];
+      std::snprintf(buf, sizeof buf, "node %d differs from the rigid motion by %.4g (largest given speed %.4g)",
+                    m.node_id(worst), dmax, vmax);
+      diag.add(2014, loc, buf);
+    }
+  }
+}
+}  // namespace
+
 bool check_model(const Model& m, Diagnostics& diag) {
   const int before = diag.error_count();
   Location file_loc;
@@ -206,6 +298,11 @@ bool check_model(const Model& m, Diagnostics& diag) {
     loc.card = "stonewall 1";
     diag.add(2012, loc);
   }
+
+  // initial velocities on the nodes of a rigid body: the run gives the body the momentum and
+  // angular momentum of the nodal velocities and starts its nodes with that rigid motion
+  // (initialize.cpp); say so when the nodal velocities were not already a rigid motion
+  if (has_rigid && !m.init_velocities.empty()) check_rigid_velocities(m, diag, file_loc);
 
   // interface segments must be element faces
   for (std::size_t i = 0; i < m.interfaces.size(); ++i) {

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <set>
+#include <sstream>
 #include <string>
 
 #include "common/cards.h"
@@ -441,8 +442,56 @@ TEST(Diagnostics, CountsAndBound) {
   EXPECT_EQ(d.warning_count(), 1);
   EXPECT_TRUE(d.has(1001));
   EXPECT_FALSE(d.has(1002));
-  for (int k = 0; k < Diagnostics::kMaxStored + 10; ++k) d.add(1002, {});
-  EXPECT_EQ(static_cast<int>(d.all().size()), Diagnostics::kMaxStored);
-  EXPECT_EQ(d.error_count(), Diagnostics::kMaxStored + 11);
-  EXPECT_EQ(d.suppressed(), 12);
+  // different messages of one number: kMaxDistinctPerNumber lines, then one summary line
+  const int n = Diagnostics::kMaxDistinctPerNumber + 1500;
+  for (int k = 0; k < n; ++k) {
+    Location l;
+    l.file = "deck.k";
+    l.line = k + 1;
+    d.add(1002, l, "value " + std::to_string(k));
+  }
+  EXPECT_EQ(static_cast<int>(d.all().size()), Diagnostics::kMaxDistinctPerNumber + 2);
+  EXPECT_EQ(d.error_count(), n + 1);
+  EXPECT_EQ(d.count(1002), n);
+  EXPECT_EQ(d.summarised(), 1500);
+  // messages after the flood are kept, and every number appears in the printed text
+  Location l;
+  l.file = "deck.k";
+  d.add(1311, l, "*NODE");
+  std::ostringstream os;
+  d.print(os);
+  const std::string out = os.str();
+  EXPECT_NE(out.find("error 1311: required keyword missing: *NODE"), std::string::npos);
+  EXPECT_NE(out.find("1500 further message(s) of this number"), std::string::npos) << out.substr(out.size() - 400);
+  EXPECT_EQ(out.find("not shown)"), std::string::npos);
+}
+
+TEST(Diagnostics, RepeatsOfOneCauseAreOneLine) {
+  Diagnostics d;
+  for (int e = 1; e <= 768; ++e) {
+    Location l;
+    l.file = "deck.k";
+    l.line = 100 + e;
+    l.card = "*ELEMENT_SOLID element " + std::to_string(e);
+    l.field = "PID";
+    d.add(1308, l, "part 3 is not defined by *PART");
+  }
+  Location l;
+  l.file = "deck.k";
+  l.line = 900;
+  l.card = "*ELEMENT_SOLID element 900";
+  l.field = "PID";
+  d.add(1308, l, "part 4 is not defined by *PART");
+  ASSERT_EQ(d.all().size(), 2u);
+  EXPECT_EQ(d.times(0), 768);
+  EXPECT_EQ(d.times(1), 1);
+  EXPECT_EQ(d.count(1308), 769);
+  EXPECT_EQ(d.error_count(), 769);
+  std::ostringstream os;
+  d.print(os);
+  EXPECT_EQ(os.str(),
+            "deck.k:101: error 1308: *ELEMENT_SOLID element 1, field \"PID\": reference to an undefined part: "
+            "part 3 is not defined by *PART (768 times; also 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, ...)\n"
+            "deck.k:900: error 1308: *ELEMENT_SOLID element 900, field \"PID\": reference to an undefined part: "
+            "part 4 is not defined by *PART\n");
 }

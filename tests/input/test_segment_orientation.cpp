@@ -45,11 +45,7 @@ bool read_file_text(const std::string& name, const std::string& text, Model& m, 
   return read_and_check_deck(path, m, d);
 }
 
-int count(const Diagnostics& d, int id) {
-  int n = 0;
-  for (const auto& x : d.all()) n += x.id == id;
-  return n;
-}
+int count(const Diagnostics& d, int id) { return d.count(id); }
 
 }  // namespace
 

@@ -34,11 +34,7 @@ struct Read {
     d.print(os);
     return os.str();
   }
-  int count(int id) const {
-    int n = 0;
-    for (const auto& x : d.all()) n += x.id == id;
-    return n;
-  }
+  int count(int id) const { return d.count(id); }
   const Diagnostic* first(int id) const {
     for (const auto& x : d.all())
       if (x.id == id) return &x;
@@ -861,4 +857,113 @@ TEST(KeywordRealWorld, MechStyleDeckIsRefusedWithTheList) {
   EXPECT_EQ(r.m.load_curves[0].t[1], 0.032);
   EXPECT_EQ(r.count(1311), 1);  // no solid elements
   EXPECT_EQ(r.count(2011), 1);  // the shell part
+}
+
+// ---------------------------------------------------------------------------- refusals
+
+namespace {
+std::string replaced(std::string s, const std::string& from, const std::string& to) {
+  const std::size_t p = s.find(from);
+  EXPECT_NE(p, std::string::npos) << from;
+  if (p != std::string::npos) s.replace(p, from.size(), to);
+  return s;
+}
+std::size_t lines_with(const std::string& text, const std::string& what) {
+  std::size_t n = 0, p = 0;
+  while ((p = text.find(what, p)) != std::string::npos) ++n, p += what.size();
+  return n;
+}
+}  // namespace
+
+TEST(KeywordRefusals, MessagesAreNeverDroppedOnALargeRefusedDeck) {
+  // 1500 bad *NODE cards, an unsupported keyword after them and no elements: every kind of
+  // error and the required-keyword message appear, with the count of all errors
+  std::string deck = "*KEYWORD\n*CONTROL_TERMINATION\n       1.0\n*NODE\n";
+  for (int k = 0; k < 1500; ++k) deck += "     " + std::to_string(k + 1) + "x           0.0             0.0             0.0\n";
+  deck += "*ELEMENT_SHELL\n       1       1       1       2       3       4\n*END\n";
+  Read r = read_text(deck);
+  EXPECT_FALSE(r.ok);
+  const std::string out = r.messages();
+  EXPECT_NE(out.find("error 1311: required keyword missing: *ELEMENT_SOLID"), std::string::npos) << out.substr(out.size() - 2000);
+  EXPECT_NE(out.find("error 1301: keyword not supported by IMPACT-3D (impact3d --lenient-keywords turns this into a warning): 1 keyword block(s): *ELEMENT_SHELL"),
+            std::string::npos);
+  EXPECT_EQ(out.find("not shown)"), std::string::npos);
+  EXPECT_GE(r.d.error_count(), 1502);
+  EXPECT_LT(std::count(out.begin(), out.end(), '\n'), 300);  // bounded: one number, one summary line past 200
+}
+
+TEST(KeywordRefusals, RepeatsOfOneCauseAreOneLineNamingTheRefusedKeyword) {
+  // 400 solids of a part that only a refused keyword (*PART_COMPOSITE) defines
+  std::string deck = prepost_deck();
+  std::string extra = "*PART_COMPOSITE\nshell part\n        99         2\n*ELEMENT_SOLID\n";
+  for (int k = 0; k < 400; ++k) {
+    char buf[160];
+    std::snprintf(buf, sizeof buf, "%8d%8d\n%8d%8d%8d%8d%8d%8d%8d%8d\n", 9000 + k, 99, nid(0, 0, 0), nid(1, 0, 0),
+                  nid(1, 1, 0), nid(0, 1, 0), nid(0, 0, 1), nid(1, 0, 1), nid(1, 1, 1), nid(0, 1, 1));
+    extra += buf;
+  }
+  deck = replaced(deck, "*END\n", extra + "*END\n");
+  Read r = read_text(deck);
+  EXPECT_FALSE(r.ok);
+  EXPECT_EQ(r.count(1308), 400);
+  const std::string out = r.messages();
+  EXPECT_EQ(lines_with(out, "error 1308"), 1u) << out;
+  EXPECT_NE(out.find("part 99 is not defined by *PART (it is defined by *PART_COMPOSITE at deck.k:"), std::string::npos) << out;
+  EXPECT_NE(out.find("(400 times; also 9001, 9002, 9003, 9004, 9005, 9006, 9007, 9008, 9009, 9010, ...)"), std::string::npos) << out;
+}
+
+TEST(KeywordRefusals, ReferenceToASetOfARefusedKeywordNamesItAndTheExactVariant) {
+  std::string deck = replaced(prepost_deck(), "*SET_NODE_LIST\n", "*SET_NODE_GENERAL\n");
+  Read r = read_text(deck);
+  EXPECT_FALSE(r.ok);
+  const std::string out = r.messages();
+  EXPECT_NE(out.find("*RIGIDWALL_PLANAR_ID, field \"NSID\" (cols 1-10): reference to an undefined set: *SET_NODE_LIST 20 is not defined "
+                     "(it is defined by *SET_NODE_GENERAL at deck.k:"),
+            std::string::npos)
+      << out;
+  EXPECT_NE(out.find("*BOUNDARY_SPC_SET, field \"NSID\""), std::string::npos) << out;
+  EXPECT_NE(out.find("1 keyword block(s): *SET_NODE_GENERAL"), std::string::npos) << out;
+}
+
+TEST(KeywordRefusals, ValidLsDynaChoicesNotImplementedAreNotSupported) {
+  Read a = read_text(replaced(prepost_deck(), "         4      0.05\n", "         6      0.05\n"));
+  EXPECT_FALSE(a.ok);
+  EXPECT_EQ(a.count(1006), 0) << a.messages();
+  ASSERT_EQ(a.count(1102), 1) << a.messages();
+  EXPECT_EQ(a.first(1102)->where.field, "IHQ");
+  Read b = read_text(replaced(prepost_deck(), "         4      0.05\n", "        11      0.05\n"));
+  EXPECT_EQ(b.count(1006), 1) << b.messages();  // not an LS-DYNA type either
+  std::string deck = replaced(prepost_deck(), "*END\n",
+                              "*HOURGLASS\n         5         8       0.1\n*END\n");
+  Read c = read_text(deck);
+  EXPECT_EQ(c.count(1006), 0) << c.messages();
+  EXPECT_EQ(c.count(1102), 1) << c.messages();
+}
+
+TEST(KeywordRefusals, LenientKeywordsStillRefusesCaseBlocks) {
+  std::string deck = replaced(prepost_deck(), "*INITIAL_VELOCITY_GENERATION\n", "*CASE_BEGIN_1\n*INITIAL_VELOCITY_GENERATION\n");
+  deck = replaced(deck, "*NODE\n", "*CASE_END_1\n*NODE\n");
+  Read strict = read_text(deck);
+  EXPECT_FALSE(strict.ok);
+  Read lenient = read_text(deck, true);
+  EXPECT_FALSE(lenient.ok) << lenient.messages();
+  EXPECT_EQ(lenient.count(2007), 0) << lenient.messages();
+  EXPECT_GE(lenient.count(1301), 2) << lenient.messages();
+  EXPECT_NE(lenient.messages().find("refused even with --lenient-keywords"), std::string::npos) << lenient.messages();
+  // other unsupported keywords are still only warnings with --lenient-keywords
+  Read other = read_text(replaced(prepost_deck(), "*END\n", "*CONTROL_ACCURACY\n         0\n*END\n"), true);
+  EXPECT_TRUE(other.ok) << other.messages();
+  EXPECT_EQ(other.count(2007), 2);
+}
+
+TEST(KeywordRefusals, RigidBodyWithNodalVelocitiesThatAreNotARigidMotionWarns) {
+  std::string deck = replaced(prepost_deck(), "*MAT_PLASTIC_KINEMATIC_TITLE\nsteel\n", "*MAT_RIGID_TITLE\nball\n");
+  deck = replaced(deck, "        127.85000E-9  150000.0      0.34     390.0      90.0       0.0\n",
+                  "        127.85000E-9  150000.0      0.34\n");
+  deck = replaced(deck, "$#     src       srp        fs        vp  \n       0.0       0.0       0.0       0.0\n",
+                  "       0.0       0.0       0.0\n");
+  Read rigid = read_text(deck);
+  EXPECT_EQ(rigid.count(2014), 0) << rigid.messages();
+  Read moved = read_text(replaced(deck, "*END\n", "*INITIAL_VELOCITY_NODE\n    1001     100.0       0.0       0.0\n*END\n"));
+  EXPECT_EQ(moved.count(2014), 1) << moved.messages();
 }
