@@ -68,6 +68,7 @@ struct State {
   // thread count)
   std::vector<BlockResult> block_results;
   std::vector<double> chunk_kinetic;  // kinetic energy per chunk of nodes (node_processing.cpp)
+  std::vector<double> chunk_walls;    // per chunk and fixed wall: impulse x y z, energy change
   // Corner j of element e in cfx/cfy/cfz: a block's corner forces are [corner][lane].
   std::size_t corner_index(int e, int j) const {
     const std::size_t slot = std::size_t(elem_slot[std::size_t(e)]);

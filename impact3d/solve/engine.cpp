@@ -68,6 +68,8 @@ StepStatus Engine::process_elements() {
 StepStatus Engine::initialize() {
   initialize_state(m_, s_);
   contact_.initialize(m_, s_);
+  fixed_walls_ = fixed_walls_for_node_pass(m_);
+  if (fixed_walls_.size() > kMaxFusedWalls) fixed_walls_.clear();
   s_.dt_half = 0;
   calc_kinetic_energy();
   StepStatus st = process_elements();
@@ -97,14 +99,16 @@ StepStatus Engine::step() {
     times_.contact += seconds_since(t);
     t = Clock::now();
   }
-  // Without walls or rigid bodies nothing acts on the new velocities before the positions
-  // move: one fused pass over the nodes.
+  // Without rigid bodies, and with no wall or only fixed walls on all nodes (applied node by
+  // node), nothing else acts on the new velocities before the positions move: one fused pass
+  // over the nodes.
   NodePass np;
   np.dt_n = dt_n;
   np.dt_next = dt_next;
   np.has_fext = !contact_.empty();
   np.store_force = !s.rigid.empty();
-  np.update_positions = s.rigid.empty() && m_.walls.empty();
+  np.update_positions = s.rigid.empty() && (m_.walls.empty() || !fixed_walls_.empty());
+  np.walls = &fixed_walls_;
   update_velocities_for_nodes(s, np);
   if (!np.update_positions) {
     times_.nodes += seconds_since(t);

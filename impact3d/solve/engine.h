@@ -7,6 +7,7 @@
 #include "impact3d/model/model.h"
 #include "impact3d/model/state.h"
 #include "impact3d/contact/sliding_interface.h"
+#include "impact3d/contact/stonewall.h"
 
 namespace impact3d {
 
@@ -57,6 +58,7 @@ class Engine {
   SlidingInterfaces contact_;
   int error_elem_ = -1;
   PhaseTimes times_;
+  std::vector<FixedWall> fixed_walls_;  // walls the node pass applies itself (see NodePass)
 };
 
 }  // namespace impact3d

@@ -1,6 +1,7 @@
 #include "impact3d/solve/node_processing.h"
 
 #include <algorithm>
+#include <stdexcept>
 
 namespace impact3d {
 
@@ -29,6 +30,8 @@ void update_velocities_for_chunk(State& s, const NodePass& p, int chunk) {
   const double* cfy = s.cfy.data();
   const double* cfz = s.cfz.data();
   double ke = 0;
+  const int nw = p.walls ? int(p.walls->size()) : 0;
+  double wall_books[4 * 8] = {};  // per wall: impulse x y z, kinetic energy change
   for (int i = i0; i < i1; ++i) {
     const std::size_t k = std::size_t(i);
     double sx = 0, sy = 0, sz = 0;
@@ -63,13 +66,19 @@ void update_velocities_for_chunk(State& s, const NodePass& p, int chunk) {
     s.vy[k] = vy;
     s.vz[k] = vz;
     if (p.update_positions) {
-      s.x[k] += p.dt_next * vx;
-      s.y[k] += p.dt_next * vy;
-      s.z[k] += p.dt_next * vz;
+      for (int w = 0; w < nw; ++w) {
+        const FixedWall& fw = (*p.walls)[std::size_t(w)];
+        apply_wall_to_node(s, i, fw.p, fw.n, 0.0, fw.friction, p.dt_next, &wall_books[4 * w],
+                           wall_books[4 * w + 3]);
+      }
+      s.x[k] += p.dt_next * s.vx[k];
+      s.y[k] += p.dt_next * s.vy[k];
+      s.z[k] += p.dt_next * s.vz[k];
       ke += kinetic_energy_of_node(s, k);
     }
   }
   if (p.update_positions) s.chunk_kinetic[std::size_t(chunk)] = ke;
+  for (int m = 0; m < 4 * nw; ++m) s.chunk_walls[std::size_t(chunk) * 4 * std::size_t(nw) + std::size_t(m)] = wall_books[m];
 }
 
 void update_positions_for_chunk(State& s, double dt, int chunk) {
@@ -89,10 +98,26 @@ void update_positions_for_chunk(State& s, double dt, int chunk) {
 
 void update_velocities_for_nodes(State& s, const NodePass& p) {
   const int nc = num_node_chunks(s);
+  const std::size_t nw = p.walls && p.update_positions ? p.walls->size() : 0;
+  if (nw > kMaxFusedWalls) throw std::logic_error("update_velocities_for_nodes: too many fused walls");
   s.chunk_kinetic.resize(std::size_t(nc));  // sized once (no-op after the first cycle)
+  s.chunk_walls.resize(std::size_t(nc) * 4 * nw);
+  NodePass q = p;
+  if (nw == 0) q.walls = nullptr;
 #pragma omp parallel for schedule(dynamic, 1) if (nc >= kMinChunksForThreads)
-  for (int c = 0; c < nc; ++c) update_velocities_for_chunk(s, p, c);
+  for (int c = 0; c < nc; ++c) update_velocities_for_chunk(s, q, c);
   if (p.update_positions) sum_chunk_kinetic_energies(s);
+  // the walls' books, chunk by chunk in order (as apply_stonewalls_to_nodes books them)
+  for (std::size_t w = 0; w < nw; ++w) {
+    double imp[3] = {0, 0, 0}, dke = 0;
+    for (int c = 0; c < nc; ++c) {
+      const double* b = &s.chunk_walls[(std::size_t(c) * nw + w) * 4];
+      for (int a = 0; a < 3; ++a) imp[a] += b[a];
+      dke += b[3];
+    }
+    s.wall_work += dke;
+    for (int a = 0; a < 3; ++a) s.wall_force[w][std::size_t(a)] = -imp[a] / p.dt_n;
+  }
 }
 
 void update_positions_for_nodes(State& s, double dt_next) {

@@ -4,9 +4,16 @@
 // position and kinetic energy in the same loop.  Threads work on fixed chunks of nodes; the
 // kinetic energy is summed per chunk and the chunks in order (same bits for any thread count).
 
+#include <vector>
+
+#include "impact3d/contact/stonewall.h"
 #include "impact3d/model/state.h"
 
 namespace impact3d {
+
+// At most this many walls are applied inside the node pass (more: the engine applies them
+// after it).
+constexpr std::size_t kMaxFusedWalls = 8;
 
 struct NodePass {
   double dt_n = 0;      // dt^n = (dt^{n-1/2} + dt^{n+1/2}) / 2: velocity update
@@ -14,6 +21,9 @@ struct NodePass {
   bool has_fext = false;      // s.fext_x/y/z hold this cycle's external (contact) forces
   bool store_force = false;   // keep the net force in s.fx/fy/fz (rigid bodies use it)
   bool update_positions = false;  // also move the nodes and book the kinetic energy
+  // fixed walls applied node by node between the velocity and the position update (with
+  // update_positions); their forces (s.wall_force) and work (s.wall_work) are booked
+  const std::vector<FixedWall>* walls = nullptr;
 };
 
 // a^n from the gathered corner forces and external forces, v^{n+1/2} = v^{n-1/2} + dt^n a^n
