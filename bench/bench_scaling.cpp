@@ -39,6 +39,7 @@
 #include "impact3d/input/deck_writer.h"
 #include "impact3d/output/plot_output.h"
 #include "impact3d/solve/engine.h"
+#include "impact3d/solve/thread_policy.h"
 #include "tests/support/box_mesh.h"
 
 using namespace impact3d;
@@ -216,6 +217,7 @@ std::vector<int> parse_list(const char* s) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  ensure_passive_openmp_wait(argv);  // as impact3d does (thread_policy.h)
   std::vector<int> sizes = {1000, 10000, 100000, 1000000};
   std::vector<int> threads = {1, 2};
   bool contact = false, input = true;

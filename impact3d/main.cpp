@@ -17,6 +17,7 @@
 #include "impact3d/output/printed_output.h"
 #include "impact3d/output/restart_dump.h"
 #include "impact3d/solve/run.h"
+#include "impact3d/solve/thread_policy.h"
 #include "version.h"
 
 using namespace impact3d;
@@ -253,6 +254,7 @@ int run_main(int argc, char** argv) {
 // Anything that escapes (a bug, or memory exhausted) ends the run with exit code 9 and a line
 // on stderr, never an abort.
 int main(int argc, char** argv) {
+  ensure_passive_openmp_wait(argv);
   try {
     return run_main(argc, argv);
   } catch (const std::bad_alloc&) {
