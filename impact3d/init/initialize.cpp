@@ -1,5 +1,6 @@
 #include "impact3d/init/initialize.h"
 
+#include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -123,6 +124,19 @@ void init_velocities(const Model& m, State& s) {
   }
 }
 
+// omega = I^-1 L, with a pseudo-inverse where I is singular (nodes on a line: no spin about it).
+std::array<double, 3> rigid_omega(const std::array<double, 9>& I, const std::array<double, 3>& L) {
+  Eigen::Matrix3d m;
+  for (int a = 0; a < 3; ++a)
+    for (int b = 0; b < 3; ++b) m(a, b) = I[std::size_t(3 * a + b)];
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(m);
+  Eigen::Vector3d lam = es.eigenvalues(), inv;
+  const double tol = 1e-12 * std::max(lam.maxCoeff(), 0.0);
+  for (int k = 0; k < 3; ++k) inv(k) = lam(k) > tol ? 1.0 / lam(k) : 0.0;
+  Eigen::Vector3d w = es.eigenvectors() * inv.asDiagonal() * es.eigenvectors().transpose() * Eigen::Vector3d(L[0], L[1], L[2]);
+  return {w(0), w(1), w(2)};
+}
+
 void init_rigid_bodies(State& s) {
   for (std::size_t k = 0; k < s.mats.size(); ++k) {
     if (s.mats[k].type != 20) continue;
@@ -165,6 +179,21 @@ void init_rigid_bodies(State& s) {
     }
     rb.inertia0 = I;
     rb.ang_mom = L;
+    // The nodes start with the rigid motion that has the momentum and angular momentum of the
+    // given nodal velocities (LS-DYNA's rule; the input check warns, 2014, when they were not a
+    // rigid motion), so that the first energies booked are the body's.
+    rb.omega = rigid_omega(I, L);
+    unsigned fixed = 0;  // as in the run: a fixed node fixes that translation of the body
+    for (int n : rb.nodes) fixed |= s.fix[std::size_t(n)];
+    for (int a = 0; a < 3; ++a)
+      if (fixed & (1u << a)) rb.vcom[std::size_t(a)] = 0;
+    for (std::size_t j = 0; j < rb.nodes.size(); ++j) {
+      const double* r = &rb.r0[3 * j];
+      const std::size_t n = std::size_t(rb.nodes[j]);
+      s.vx[n] = rb.vcom[0] + rb.omega[1] * r[2] - rb.omega[2] * r[1];
+      s.vy[n] = rb.vcom[1] + rb.omega[2] * r[0] - rb.omega[0] * r[2];
+      s.vz[n] = rb.vcom[2] + rb.omega[0] * r[1] - rb.omega[1] * r[0];
+    }
     int idx = int(s.rigid.size());
     for (int n : rb.nodes) s.rigid_of_node[std::size_t(n)] = idx;
     s.rigid.push_back(std::move(rb));

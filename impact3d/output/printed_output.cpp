@@ -30,6 +30,44 @@ const char* hourglass_name(int t) {
   }
   return "unknown";
 }
+const char* bc_name(int c) {
+  switch (c) {
+    case 1: return "x fixed";
+    case 2: return "y fixed";
+    case 3: return "z fixed";
+    case 4: return "x, y fixed";
+    case 5: return "y, z fixed";
+    case 6: return "z, x fixed";
+    case 7: return "x, y, z fixed";
+  }
+  return "?";
+}
+
+// Nodal constraints (the node cards' codes and *BOUNDARY_SPC_*), one line per code with the
+// node count and the first node numbers.
+void write_constraints(std::ostream& os, const Model& m) {
+  constexpr std::size_t kFirst = 10;
+  std::size_t count[8] = {};
+  std::string first[8];
+  for (std::size_t i = 0; i < m.bc.size(); ++i) {
+    const int c = m.bc[i];
+    if (c < 1 || c > 7) continue;
+    if (count[c] < kFirst) first[c] += (count[c] ? ", " : "") + std::to_string(m.node_id(int(i)));
+    ++count[c];
+  }
+  bool any = false;
+  for (int c = 1; c <= 7; ++c) {
+    if (!count[c]) continue;
+    if (!any) os << " c o n s t r a i n t s   (node boundary codes, *BOUNDARY_SPC_*)\n\n";
+    any = true;
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "   code %d (%s) ", c, bc_name(c));
+    std::string head = buf;
+    if (head.size() < 42) head += std::string(42 - head.size(), '.');
+    os << head << " " << count[c] << " node(s): " << first[c] << (count[c] > kFirst ? ", ..." : "") << "\n";
+  }
+  if (any) os << "\n";
+}
 }  // namespace
 
 void write_counts(std::ostream& os, const Model& m) {
@@ -120,6 +158,7 @@ void write_model_summary(std::ostream& os, const Model& m) {
     }
     os << "\n";
   }
+  write_constraints(os, m);
   if (!m.interfaces.empty()) {
     os << " s l i d i n g   i n t e r f a c e s\n\n";
     for (std::size_t i = 0; i < m.interfaces.size(); ++i) {

@@ -517,9 +517,9 @@ TEST(PlotDatabase, WriteErrorThrowsAndKeepsEarlierStates) {
     }
 }
 
-// Independent check with VTK's vtkLSDynaReader (the shared probe script).
+// Independent check with VTK's vtkLSDynaReader (the project's script in tests/support).
 TEST(PlotDatabase, VtkProbeReadsOurFiles) {
-    const std::string probe = std::string(IMPACT3D_SOURCE_DIR) + "/../shared/tools/d3plot_probe.py";
+    const std::string probe = std::string(IMPACT3D_SOURCE_DIR) + "/tests/support/vtk_d3plot_check.py";
     if (!fs::exists(probe)) GTEST_SKIP() << "probe script not found: " << probe;
     if (std::system("/usr/bin/python3 -c 'import vtkmodules.vtkIOLSDyna' >/dev/null 2>&1") != 0)
         GTEST_SKIP() << "/usr/bin/python3 cannot import vtkmodules (install python3-vtk9); VTK check skipped";
