@@ -172,9 +172,16 @@ std::string render(const Diagnostic& d) {
 namespace {
 // The id an occurrence is known by in a folded line: the first number in its card ("element 17"
 // -> "17"), else its line.
+// A card that starts with a keyword ("*CASE_BEGIN_2", "*MAT_020 ...") keeps the keyword as it is.
+std::size_t keyword_end(const std::string& c) {
+  if (c.empty() || c[0] != '*') return 0;
+  std::size_t e = c.find(' ');
+  return e == std::string::npos ? c.size() : e;
+}
+
 std::string occurrence_id(const Location& w) {
   const std::string& c = w.card;
-  for (std::size_t i = 0; i < c.size(); ++i) {
+  for (std::size_t i = keyword_end(c); i < c.size(); ++i) {
     if (c[i] >= '0' && c[i] <= '9') {
       std::size_t j = i;
       while (j < c.size() && c[j] >= '0' && c[j] <= '9') ++j;
@@ -191,8 +198,10 @@ std::string cause_key(int id, const Location& w, const std::string& detail) {
   k += '\x1f';
   k += w.file;
   k += '\x1f';
+  const std::size_t kw = keyword_end(w.card);
+  k.append(w.card, 0, kw);
   bool in_digits = false;
-  for (char ch : w.card) {
+  for (char ch : std::string_view(w.card).substr(kw)) {
     bool dg = ch >= '0' && ch <= '9';
     if (!dg) k += ch;
     else if (!in_digits) k += '#';
