@@ -1,6 +1,9 @@
 // impact3d: the driver.  Reads the command line (DYNA3D/LS-DYNA style name=value words), runs
 // the input phase (read and check the whole deck), then the solver.
 
+#include <zlib.h>
+
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -10,6 +13,7 @@
 #include <iterator>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "common/messages.h"
 #include "impact3d/input/deck_reader.h"
@@ -48,23 +52,62 @@ const char* kUsage =
     "exit codes: 0 normal termination, 2 input errors, 3 bad command line, 4 file error,\n"
     "            5 error termination, 6 stopped by signal, 9 internal error\n";
 
-// The deck text a restart dump carries.  A fixed-format deck is its own file.  A keyword deck may
-// pull in *INCLUDE files or need --lenient-keywords, so the dump gets the model written back as
-// one keyword deck instead, after checking that it reads back as the same model (if it did not,
-// the original text is kept: a restart then needs the include files in place).
-std::string self_contained_deck_text(const std::string& path, const Model& model) {
+// CRC-32 and size of a file, read in pieces (no copy of it kept).
+bool file_crc(const std::string& path, unsigned long& crc, std::uint64_t& size) {
   std::ifstream in(path, std::ios::binary);
-  std::string original((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (!model.keyword_deck) return original;
+  if (!in) return false;
+  std::vector<char> buf(1 << 20);
+  crc = crc32(0L, Z_NULL, 0);
+  size = 0;
+  while (in) {
+    in.read(buf.data(), std::streamsize(buf.size()));
+    const std::streamsize n = in.gcount();
+    if (n <= 0) break;
+    crc = crc32(crc, reinterpret_cast<const Bytef*>(buf.data()), uInt(n));
+    size += std::uint64_t(n);
+  }
+  return true;
+}
+
+// The model written as one keyword deck, if it reads back as the same model (else empty).
+std::string model_as_keyword_text(const std::string& path, const Model& model) {
   std::ostringstream os;
   write_keyword_deck(os, model);
   DeckFile back;
   back.load_from_string(path, os.str());
   Model again;
   Diagnostics d;
-  if (!read_deck(back, again, d, InputOptions{})) return original;
+  if (!read_deck(back, again, d, InputOptions{})) return {};
   again.deck_file = model.deck_file;
-  return model_differences(model, again).empty() ? os.str() : original;
+  return model_differences(model, again).empty() ? os.str() : std::string();
+}
+
+// The deck text a restart dump carries, made when the first dump is written.  A fixed-format
+// deck is its own file (its CRC is taken at the start: if the file changed since, the model is
+// written as a keyword deck instead).  A keyword deck may pull in *INCLUDE files or need
+// --lenient-keywords, so the dump gets the model written back as one keyword deck, after
+// checking that it reads back as the same model (if it did not, the original text is kept: a
+// restart then needs the include files in place).
+std::function<std::string()> self_contained_deck_text_source(const std::string& path, const Model& model) {
+  unsigned long crc0 = 0;
+  std::uint64_t size0 = 0;
+  const bool have_crc = !model.keyword_deck && file_crc(path, crc0, size0);
+  return [path, &model, have_crc, crc0, size0]() -> std::string {
+    auto original = [&] {
+      std::ifstream in(path, std::ios::binary);
+      return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    };
+    if (!model.keyword_deck) {
+      std::string text = original();
+      if (have_crc && text.size() == size0 &&
+          crc32_z(crc32(0L, Z_NULL, 0), reinterpret_cast<const Bytef*>(text.data()), text.size()) == crc0)
+        return text;
+      std::string kw = model_as_keyword_text(path, model);
+      return kw.empty() ? text : kw;
+    }
+    std::string kw = model_as_keyword_text(path, model);
+    return kw.empty() ? original() : kw;
+  };
 }
 
 // A whole-word integer in [lo, hi] (command-line values); false if it is not one.
@@ -209,7 +252,7 @@ int run_main(int argc, char** argv) {
     }
   } else {
     ok = read_and_check_deck(opt.deck, model, diag, input_opt);
-    if (ok && !check_only) opt.deck_text = self_contained_deck_text(opt.deck, model);
+    if (ok && !check_only) opt.deck_text_source = self_contained_deck_text_source(opt.deck, model);
   }
 
   // The printed output file gets the echo and all messages; the terminal gets the messages.

@@ -17,9 +17,10 @@ void init_nodes(const Model& m, State& s) {
   s.nn = nn;
   s.x = m.x; s.y = m.y; s.z = m.z;
   s.x0 = m.x; s.y0 = m.y; s.z0 = m.z;
-  for (auto* v : {&s.vx, &s.vy, &s.vz, &s.ax, &s.ay, &s.az, &s.vx_old, &s.vy_old, &s.vz_old, &s.fx, &s.fy, &s.fz, &s.fext_x,
-                  &s.fext_y, &s.fext_z, &s.mass})
+  for (auto* v : {&s.vx, &s.vy, &s.vz, &s.ax, &s.ay, &s.az, &s.vx_old, &s.vy_old, &s.vz_old, &s.mass})
     v->assign(std::size_t(nn), 0.0);
+  // external forces: only sliding interfaces make them (the node pass reads them then)
+  for (auto* v : {&s.fext_x, &s.fext_y, &s.fext_z}) v->assign(m.interfaces.empty() ? 0 : std::size_t(nn), 0.0);
   s.fix.assign(std::size_t(nn), 0);
   for (int i = 0; i < nn; ++i) {
     int c = m.bc[std::size_t(i)];
@@ -59,9 +60,15 @@ void init_elements(const Model& m, State& s) {
   for (auto* v : {&s.vol0, &s.vol, &s.mass_e, &s.eps_p, &s.q, &s.dt_e})
     v->assign(std::size_t(ne), 0.0);
   s.sig.assign(std::size_t(6) * ne, 0.0);
-  s.back.assign(std::size_t(6) * ne, 0.0);
-  s.hgs.assign(std::size_t(12) * ne, 0.0);
   build_element_groups(s);
+  // back stresses and hourglass resultants only when some group carries them
+  bool back = false, hgs = false;
+  for (const ElementGroup& g : s.groups) {
+    back = back || group_carries_back_stress(g.kernel, s.mats[std::size_t(g.material)]);
+    hgs = hgs || group_carries_hourglass_state(m.materials[std::size_t(g.material)]);
+  }
+  s.back.assign(back ? std::size_t(6) * ne : 0, 0.0);
+  s.hgs.assign(hgs ? std::size_t(12) * ne : 0, 0.0);
   s.mat_internal.assign(s.mats.size(), 0.0);
   s.mat_hourglass.assign(s.mats.size(), 0.0);
   s.cfx.assign(std::size_t(8) * s.slot_elem.size(), 0.0);
@@ -208,6 +215,8 @@ void initialize_state(const Model& m, State& s) {
   init_elements(m, s);
   init_velocities(m, s);
   init_rigid_bodies(s);
+  // net nodal forces: kept only for rigid bodies (their momentum update reads them)
+  for (auto* v : {&s.fx, &s.fy, &s.fz}) v->assign(s.rigid.empty() ? 0 : std::size_t(s.nn), 0.0);
   s.wall_force.assign(m.walls.size(), {0, 0, 0});
   s.wall_disp.assign(m.walls.size(), 0.0);
   s.wall_vel.assign(m.walls.size(), 0.0);

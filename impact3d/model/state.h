@@ -49,8 +49,8 @@ struct State {
   std::vector<double> vx, vy, vz;     // velocities v^{n-1/2} before the update, v^{n+1/2} after
   std::vector<double> ax, ay, az;     // accelerations a^n
   std::vector<double> vx_old, vy_old, vz_old;  // v^{n-1/2} kept during the cycle (energy books)
-  std::vector<double> fx, fy, fz;     // net nodal force (external - internal)
-  std::vector<double> fext_x, fext_y, fext_z;  // external forces (walls, contact) this cycle
+  std::vector<double> fx, fy, fz;     // net nodal force (external - internal); empty without rigid bodies
+  std::vector<double> fext_x, fext_y, fext_z;  // contact forces this cycle; empty without sliding interfaces
   std::vector<double> mass;
   std::vector<uint8_t> fix;           // bit 0 x, bit 1 y, bit 2 z
   std::vector<int> rigid_of_node;     // -1 or rigid-body index
@@ -85,12 +85,12 @@ struct State {
   std::vector<double> vol0, vol;       // initial and current volume
   std::vector<double> mass_e;          // element mass rho0 * V0
   std::vector<double> sig;             // 6 per element: xx yy zz xy yz zx
-  std::vector<double> back;            // 6 per element: back stress
+  std::vector<double> back;            // 6 per element: back stress (empty when no group has one)
   std::vector<double> eps_p;           // effective plastic strain
   std::vector<uint8_t> yielded;
   std::vector<uint8_t> failed;         // 1: failed (deleted) solid; 2 during the cycle it fails
   std::vector<int> newly_failed;       // solids that failed in the last cycle, in element order
-  std::vector<double> hgs;             // 12 per element: hourglass stiffness resultants
+  std::vector<double> hgs;             // 12 per element: hourglass stiffness resultants (empty when unused)
   std::vector<double> q;               // bulk viscosity
   std::vector<double> cfx, cfy, cfz;   // 8 per slot: corner internal forces (corner_index)
   std::vector<double> dt_e;            // element time step

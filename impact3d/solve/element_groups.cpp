@@ -14,6 +14,14 @@ HexKernel hex_kernel_for_material_type(int type) {
   }
 }
 
+bool group_carries_back_stress(HexKernel kernel, const MaterialConstants& mc) {
+  return kernel == HexKernel::elastic_plastic && (1.0 - mc.beta) * mc.E_p != 0.0;
+}
+
+bool group_carries_hourglass_state(const MaterialData& md) {
+  return md.hourglass_type >= 4 && md.hourglass_coef != 0.0;
+}
+
 void build_element_groups(State& s) {
   const std::size_t nmat = s.mats.size();
   std::vector<int> count(nmat, 0);

@@ -14,6 +14,12 @@ namespace impact3d {
 // such decks first).
 HexKernel hex_kernel_for_material_type(int type);
 
+// Whether a group's solids carry a back stress (type 3 with a kinematic part) and hourglass
+// resultants (hourglass types 4 and 5): the element pass reads and writes s.back / s.hgs only
+// for such groups, and they are allocated only when some group needs them.
+bool group_carries_back_stress(HexKernel kernel, const MaterialConstants& mc);
+bool group_carries_hourglass_state(const MaterialData& md);
+
 // Fills s.groups, s.slot_elem, s.elem_slot and s.block_results from s.conn and s.mat: one
 // group per material (in material order), its elements in increasing order.  With one
 // material, slot = element.

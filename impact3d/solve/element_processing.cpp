@@ -6,6 +6,7 @@
 
 #include "impact3d/element/hex_block.h"
 #include "impact3d/material/material_block.h"
+#include "impact3d/solve/element_groups.h"
 
 namespace impact3d {
 
@@ -252,8 +253,8 @@ ElementLoopResult calc_forces_for_elems(const Model& m, State& s) {
     gp.kernel = g.kernel;
     gp.dt = s.dt_half;
     gp.dt_hg = s.dt_next > 0 ? s.dt_next : s.dt_half;
-    gp.with_back = g.kernel == HexKernel::elastic_plastic && (1.0 - gp.mc->beta) * gp.mc->E_p != 0.0;
-    gp.hg_state = gp.md->hourglass_type >= 4 && gp.md->hourglass_coef != 0.0;
+    gp.with_back = group_carries_back_stress(g.kernel, *gp.mc);
+    gp.hg_state = group_carries_hourglass_state(*gp.md);
     const int b0 = g.first_block, nb = g.num_blocks;
 #pragma omp parallel for schedule(dynamic, kBlocksPerChunk) if (nb >= kMinBlocksForThreads)
     for (int b = b0; b < b0 + nb; ++b) process_hex_block(s, gp, b);

@@ -217,10 +217,12 @@ int run_simulation(const Model& model, const RunOptions& opt, std::ostream& prin
     }
     cur.next_history = (std::floor(s.time / th_dt + 1e-9) + 1) * th_dt;
   };
+  std::string deck_text = opt.deck_text;
   auto write_dump = [&](const std::string& path) -> bool {
+    if (deck_text.empty() && opt.deck_text_source) deck_text = opt.deck_text_source();
     DumpHeader h;
     h.deck_name = model.deck_file;
-    h.deck_text = opt.deck_text;
+    h.deck_text = deck_text;
     h.plot_root = opt.plot;
     h.dump_root = opt.dump;
     h.printed = opt.printed;

@@ -1,6 +1,7 @@
 #pragma once
 // The engine: initialization, the explicit cycle loop and output, for a checked Model.
 
+#include <functional>
 #include <ostream>
 #include <string>
 
@@ -18,6 +19,9 @@ struct RunOptions {
   int plot_word_size = 4;   // 4 or 8 byte words in the plot and time-history databases
   int member_size_factor = 7;  // x=: family member size limit, in units of 512 x 512 words
   std::string deck_text;    // the deck's content, kept in restart dumps
+  // When deck_text is empty: makes it, once, when the first restart dump is written (a run
+  // that writes no dump never holds a second copy of a large deck)
+  std::function<std::string()> deck_text_source;
   bool quiet = false;       // no run log on stdout (tests)
 };
 
