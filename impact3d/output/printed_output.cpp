@@ -179,21 +179,40 @@ void write_model_summary(std::ostream& os, const Model& m) {
   }
   if (!m.init_velocities.empty()) {
     os << " i n i t i a l   v e l o c i t i e s\n\n";
-    // (a rotation sets node by node: the echo shows the first 50 and counts the rest)
-    constexpr std::size_t kShown = 50;
-    std::size_t shown = 0;
-    for (const auto& iv : m.init_velocities) {
-      if (shown++ == kShown) {
-        os << "   ... and " << (m.init_velocities.size() - kShown) << " more\n";
+    // Consecutive definitions of one velocity are one line (an *INITIAL_VELOCITY_NODE list of
+    // many nodes is many ranges); a rotation sets node by node: at most 50 lines, then the count
+    // of the rest.
+    constexpr std::size_t kShown = 50, kRanges = 3;
+    const auto& ivs = m.init_velocities;
+    std::size_t lines = 0;
+    for (std::size_t k = 0; k < ivs.size();) {
+      std::size_t j = k;
+      while (j + 1 < ivs.size() && ivs[j + 1].first != 0 && ivs[k].first != 0 && ivs[j + 1].v == ivs[k].v) ++j;
+      if (lines++ == kShown) {
+        os << "   ... and " << (ivs.size() - k) << " more definition(s)\n";
         break;
       }
+      const auto& iv = ivs[k];
       char buf[200];
-      if (iv.first == 0)
-        std::snprintf(buf, sizeof buf, "   all nodes: (%.6g, %.6g, %.6g) (length/time)\n", iv.v[0], iv.v[1], iv.v[2]);
-      else
-        std::snprintf(buf, sizeof buf, "   nodes %d to %d step %d: (%.6g, %.6g, %.6g) (length/time)\n", iv.first,
-                      iv.last, iv.increment, iv.v[0], iv.v[1], iv.v[2]);
-      os << buf;
+      std::snprintf(buf, sizeof buf, ": (%.6g, %.6g, %.6g) (length/time)\n", iv.v[0], iv.v[1], iv.v[2]);
+      if (iv.first == 0) {
+        os << "   all nodes" << buf;
+      } else if (j == k) {
+        os << "   nodes " << iv.first << " to " << iv.last << " step " << iv.increment << buf;
+      } else {
+        long long nodes = 0;
+        std::string ranges;
+        for (std::size_t q = k; q <= j; ++q) {
+          const auto& r = ivs[q];
+          nodes += r.increment > 0 && r.last >= r.first ? (r.last - r.first) / r.increment + 1 : 0;
+          if (q - k < kRanges)
+            ranges += (q > k ? ", " : "") + std::to_string(r.first) + " to " + std::to_string(r.last) + " step " +
+                      std::to_string(r.increment);
+        }
+        if (j - k + 1 > kRanges) ranges += ", ...";
+        os << "   " << nodes << " nodes in " << (j - k + 1) << " ranges (" << ranges << ")" << buf;
+      }
+      k = j + 1;
     }
     os << "\n";
   }
