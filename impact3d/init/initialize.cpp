@@ -16,7 +16,6 @@ void init_nodes(const Model& m, State& s) {
   const int nn = m.num_nodes();
   s.nn = nn;
   s.x = m.x; s.y = m.y; s.z = m.z;
-  s.x0 = m.x; s.y0 = m.y; s.z0 = m.z;
   for (auto* v : {&s.vx, &s.vy, &s.vz, &s.ax, &s.ay, &s.az, &s.vx_old, &s.vy_old, &s.vz_old, &s.mass})
     v->assign(std::size_t(nn), 0.0);
   // external forces: only sliding interfaces make them (the node pass reads them then)

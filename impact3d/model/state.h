@@ -45,7 +45,6 @@ struct State {
   int nn = 0, ne = 0;
   // nodes
   std::vector<double> x, y, z;        // current coordinates x^n
-  std::vector<double> x0, y0, z0;     // initial coordinates
   std::vector<double> vx, vy, vz;     // velocities v^{n-1/2} before the update, v^{n+1/2} after
   std::vector<double> ax, ay, az;     // accelerations a^n
   std::vector<double> vx_old, vy_old, vz_old;  // v^{n-1/2} kept during the cycle (energy books)

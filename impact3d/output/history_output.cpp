@@ -172,7 +172,7 @@ void HistoryOutput::write(const Model& m, const State& s,
     for (int n : th_nodes_) {
       const std::size_t i = std::size_t(n);
       std::fprintf(f, "%10d %12.4E %12.4E %12.4E %12.4E %12.4E %12.4E %12.4E %12.4E %12.4E %12.4E %12.4E %12.4E\n",
-                   m.node_id(n), s.x[i] - s.x0[i], s.y[i] - s.y0[i], s.z[i] - s.z0[i], s.vx[i], s.vy[i], s.vz[i],
+                   m.node_id(n), s.x[i] - m.x[i], s.y[i] - m.y[i], s.z[i] - m.z[i], s.vx[i], s.vy[i], s.vz[i],
                    s.ax[i], s.ay[i], s.az[i], s.x[i], s.y[i], s.z[i]);
     }
   }

@@ -84,7 +84,7 @@ CylRun run_cylinders(const Model& m, const std::vector<int>& mirror) {
                              std::abs(s.z[a] + s.z[b])});
     r.mirror_vel = std::max({r.mirror_vel, std::abs(s.vx[a] - s.vy[b]),
                              std::abs(s.vy[a] - s.vx[b]), std::abs(s.vz[a] + s.vz[b])});
-    r.max_disp = std::max(r.max_disp, std::abs(s.z[a] - s.z0[a]));
+    r.max_disp = std::max(r.max_disp, std::abs(s.z[a] - m.z[a]));
   }
   return r;
 }

@@ -71,9 +71,9 @@ TEST(RigidMotion, TranslationIsStressFreeAndConservesEnergy) {
     ASSERT_NEAR(s.vy[k], v[1], 1e-12 * vmag);
     ASSERT_NEAR(s.vz[k], v[2], 1e-12 * vmag);
     // displacement v t (relative 1e-9 of the travel: the sum of ~150 rounded increments)
-    ASSERT_NEAR(s.x[k] - s.x0[k], v[0] * s.time, 1e-9 * vmag * s.time);
-    ASSERT_NEAR(s.y[k] - s.y0[k], v[1] * s.time, 1e-9 * vmag * s.time);
-    ASSERT_NEAR(s.z[k] - s.z0[k], v[2] * s.time, 1e-9 * vmag * s.time);
+    ASSERT_NEAR(s.x[k] - m.x[k], v[0] * s.time, 1e-9 * vmag * s.time);
+    ASSERT_NEAR(s.y[k] - m.y[k], v[1] * s.time, 1e-9 * vmag * s.time);
+    ASSERT_NEAR(s.z[k] - m.z[k], v[2] * s.time, 1e-9 * vmag * s.time);
   }
 }
 
@@ -206,7 +206,7 @@ TEST_P(RigidRotation, LargeRotationIsStrainFree) {
     const double ct = std::cos(theta), sn = std::sin(theta);
     for (int i = 0; i < s.nn; ++i) {
       const std::size_t k = std::size_t(i);
-      const double r[3] = {s.x0[k], s.y0[k], s.z0[k]};
+      const double r[3] = {m.x[k], m.y[k], m.z[k]};
       const double ar = ax[0] * r[0] + ax[1] * r[1] + ax[2] * r[2];
       const double axr[3] = {ax[1] * r[2] - ax[2] * r[1], ax[2] * r[0] - ax[0] * r[2],
                              ax[0] * r[1] - ax[1] * r[0]};

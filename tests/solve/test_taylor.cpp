@@ -45,7 +45,7 @@ TEST(TaylorBar, PublishedFinalShapeAndEnergies) {
     const std::size_t k = std::size_t(i);
     zmin = std::min(zmin, s.z[k]);
     zmax = std::max(zmax, s.z[k]);
-    if (s.z0[k] == 0) r_foot = std::max(r_foot, std::hypot(s.x[k], s.y[k]));
+    if (m.z[k] == 0) r_foot = std::max(r_foot, std::hypot(s.x[k], s.y[k]));
   }
   const double length = zmax - zmin;
   const double eps_max = *std::max_element(s.eps_p.begin(), s.eps_p.end());
