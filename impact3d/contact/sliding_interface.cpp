@@ -225,7 +225,7 @@ inline bool in_box(const double* b, const double p[3]) {
 // k(dt), and it varies smoothly with the geometry.  Minimum: the same for any thread count.
 double elastic_step(const State& s, double tssf) {
   double dtmin = std::numeric_limits<double>::max();
-#pragma omp parallel for schedule(static) reduction(min : dtmin)
+#pragma omp parallel for schedule(static) reduction(min : dtmin) if (s.ne >= 8192)
   for (int e = 0; e < s.ne; ++e) {
     const std::size_t E = std::size_t(e);
     if (s.rigid_elem[E]) continue;
@@ -275,7 +275,8 @@ void SlidingInterfaces::Impl::node_pass(const Model&, const State& s, Interface&
   const Grid& g = ps.grid;
   const int nn = int(nodes_sf.nodes.size());
   const double alpha_tssf = tssf;
-#pragma omp parallel for schedule(static)
+  // (threads only on large surfaces: waking a sleeping thread costs more than a small search)
+#pragma omp parallel for schedule(static) if (nn >= 4096)
   for (int q = 0; q < nn; ++q) {
     Hit& hit = ps.hits[std::size_t(q)];
     hit = Hit{};
