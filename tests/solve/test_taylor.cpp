@@ -14,6 +14,7 @@
 #include "impact3d/input/deck_reader.h"
 #include "impact3d/solve/engine.h"
 #include "tests/solve/test_models.h"
+#include "tests/support/box_mesh.h"
 
 using namespace impact3d;
 using namespace solve_test;
@@ -111,13 +112,74 @@ void expect_identical(const Snapshot& a, const Snapshot& b) {
 }  // namespace
 
 // Determinism: every sum the engine does is in a fixed order (nodal force assembly over a CSR
-// corner list, energies summed serially in element order, walls serial in node order), so the
-// state is bit-identical for any thread count, and from run to run.
+// corner list, energies summed per block of solids and per chunk of nodes and those in order,
+// walls per chunk of nodes in order), so the state is bit-identical for any thread count, and
+// from run to run.  The Taylor bar is small enough to run on one thread whatever ncpu says
+// (thread thresholds); the bar below is large enough for every pass to use two.
 TEST(Determinism, BitIdenticalAcrossThreadCounts) {
   const Snapshot one = run_short_taylor(1);
   const Snapshot two = run_short_taylor(2);
   const Snapshot two_again = run_short_taylor(2);
   ASSERT_GT(*std::max_element(one.eps_p.begin(), one.eps_p.end()), 0.0);  // plastic flow ran
+  expect_identical(one, two);
+  expect_identical(two, two_again);
+}
+
+namespace {
+
+// A bar of 40 x 40 x 10 solids (16000 solids, 18491 nodes: above the element pass's 8192 and the
+// node pass's 16384 thresholds for threads) of copper with mixed hardening (back stress) and
+// stiffness hourglass control (resultants), at 200 m/s onto a fixed wall, 40 cycles.
+Snapshot run_threaded_bar(int threads) {
+  ScopedThreads t(threads);
+  Model m;
+  impact3d::MaterialData mat;
+  mat.number = 1;
+  mat.type = 3;
+  mat.rho = 8930;
+  mat.E = 117e9;
+  mat.nu = 0.35;
+  mat.sigma_y = 4e8;
+  mat.E_tan = 1e9;
+  mat.beta = 0.5;
+  mat.hourglass_type = 4;
+  mat.hourglass_coef = 0.1;
+  m.materials.push_back(mat);
+  test_support::Box b;
+  b.nx = b.ny = 40;
+  b.nz = 10;
+  b.lx = b.ly = 0.04;
+  b.lz = 0.01;
+  b.z0 = 1e-4;
+  test_support::add_box(m, b, 0);
+  impact3d::InitialVelocity iv;
+  iv.v = {5, -3, -200};  // all nodes
+  m.init_velocities.push_back(iv);
+  impact3d::StoneWall w;
+  w.head = {0, 0, 1};
+  m.walls.push_back(w);
+  m.control.nmmat = 1;
+  m.control.num_walls = 1;
+  m.control.num_init_velocity_cards = 1;
+  m.control.end_time = 1;
+  EXPECT_GE(m.num_hexes(), 8192);
+  EXPECT_GE(m.num_nodes(), 16384);
+  Engine eng(m);
+  EXPECT_EQ(eng.initialize(), StepStatus::ok);
+  for (int c = 0; c < 40; ++c) EXPECT_EQ(eng.step(), StepStatus::ok);
+  const State& s = eng.state();
+  return {s.x, s.y, s.z, s.vx, s.vy, s.vz, s.sig, s.eps_p,
+          s.kinetic, s.internal, s.hourglass, s.bulk_viscous, s.wall_work, s.cycle};
+}
+
+}  // namespace
+
+TEST(Determinism, BitIdenticalWhenEveryPassRunsOnTwoThreads) {
+  const Snapshot one = run_threaded_bar(1);
+  const Snapshot two = run_threaded_bar(2);
+  const Snapshot two_again = run_threaded_bar(2);
+  ASSERT_GT(*std::max_element(one.eps_p.begin(), one.eps_p.end()), 0.0);  // plastic flow ran
+  ASSERT_GT(one.wall_work, 0.0);                                            // the wall acted
   expect_identical(one, two);
   expect_identical(two, two_again);
 }
