@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <functional>
 #include <cmath>
 #include <csignal>
 #include <cstdio>
@@ -189,8 +190,16 @@ int run_simulation(const Model& model, const RunOptions& opt, std::ostream& prin
   }
   bool out_ok = true;
   int scheduled_plot_states = cur.plot_states;  // states a restart keeps (not sense-switch extras)
+  double output_seconds = 0;  // time spent writing plot states and time histories
   auto write_plot = [&](bool scheduled) {
     if (!scheduled && plot.last_time() == s.time) return;  // a state at this time exists
+    const double t_out = elapsed();
+    struct AddTime {
+      double& acc; double t0; const std::function<double()>& now;
+      ~AddTime() { acc += now() - t0; }
+    };
+    const std::function<double()> now = elapsed;
+    AddTime add{output_seconds, t_out, now};
     try {
       plot.write(model, s, engine.interface_forces());
     } catch (const std::exception& ex) {
@@ -206,6 +215,13 @@ int run_simulation(const Model& model, const RunOptions& opt, std::ostream& prin
   double last_history_time = -1;
   auto write_history = [&] {
     last_history_time = s.time;
+    const double t_out = elapsed();
+    struct AddTime {
+      double& acc; double t0; const std::function<double()>& now;
+      ~AddTime() { acc += now() - t0; }
+    };
+    const std::function<double()> now = elapsed;
+    AddTime add{output_seconds, t_out, now};
     try {
       const double ns = s.cycle > 0 ? 1e9 * elapsed() / (double(s.cycle) * std::max(1, s.ne)) : 0;
       history.write(model, s, engine.interface_forces(), ns);
@@ -346,6 +362,11 @@ int run_simulation(const Model& model, const RunOptions& opt, std::ostream& prin
                   " cycles %d, elapsed %.3f s (%.3f us per element-cycle)",
                   lo[0], hi[0], lo[1], hi[1], lo[2], hi[2], s.ne ? s.eps_p[std::size_t(emax)] : 0.0,
                   s.ne ? model.hex_id(emax) : 0, cycles_here, cpu, s.cycle && s.ne ? 1e6 * cpu / (double(s.cycle) * s.ne) : 0.0);
+    log.line(buf);
+    const PhaseTimes& pt = engine.phase_times();
+    std::snprintf(buf, sizeof buf,
+                  " phase times (s): elements %.3f  nodes %.3f  walls %.3f  contact %.3f  output %.3f",
+                  pt.elements, pt.nodes, pt.walls, pt.contact, output_seconds);
     log.line(buf);
   }
   if (!out_ok) {
