@@ -9,7 +9,6 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
-#include <functional>
 #include <cmath>
 #include <csignal>
 #include <cstdio>
@@ -191,15 +190,16 @@ int run_simulation(const Model& model, const RunOptions& opt, std::ostream& prin
   bool out_ok = true;
   int scheduled_plot_states = cur.plot_states;  // states a restart keeps (not sense-switch extras)
   double output_seconds = 0;  // time spent writing plot states and time histories
+  // adds the wall-clock time of a scope (one output, however it returns) to a total
+  struct OutputTimer {
+    double& total;
+    std::chrono::steady_clock::time_point t0 = std::chrono::steady_clock::now();
+    explicit OutputTimer(double& t) : total(t) {}
+    ~OutputTimer() { total += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); }
+  };
   auto write_plot = [&](bool scheduled) {
     if (!scheduled && plot.last_time() == s.time) return;  // a state at this time exists
-    const double t_out = elapsed();
-    struct AddTime {
-      double& acc; double t0; const std::function<double()>& now;
-      ~AddTime() { acc += now() - t0; }
-    };
-    const std::function<double()> now = elapsed;
-    AddTime add{output_seconds, t_out, now};
+    const OutputTimer timer(output_seconds);
     try {
       plot.write(model, s, engine.interface_forces());
     } catch (const std::exception& ex) {
@@ -215,13 +215,7 @@ int run_simulation(const Model& model, const RunOptions& opt, std::ostream& prin
   double last_history_time = -1;
   auto write_history = [&] {
     last_history_time = s.time;
-    const double t_out = elapsed();
-    struct AddTime {
-      double& acc; double t0; const std::function<double()>& now;
-      ~AddTime() { acc += now() - t0; }
-    };
-    const std::function<double()> now = elapsed;
-    AddTime add{output_seconds, t_out, now};
+    const OutputTimer timer(output_seconds);
     try {
       const double ns = s.cycle > 0 ? 1e9 * elapsed() / (double(s.cycle) * std::max(1, s.ne)) : 0;
       history.write(model, s, engine.interface_forces(), ns);
