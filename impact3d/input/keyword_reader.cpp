@@ -823,7 +823,21 @@ class KeywordReader {
     return n;
   }
 
-  static bool is_ascii_database(const std::string& n) {
+  static // Keywords read and ignored (warning 2008): they change nothing in IMPACT-3D's physics or
+// output.  Returns why, or nullptr for any other keyword.
+const char* ignored_keyword_reason(const std::string& n) {
+  if (n == "CONTROL_ENERGY") return "IMPACT-3D always computes all energies";
+  if (n == "DATABASE_EXTENT_BINARY") return "IMPACT-3D writes its fixed set of plot variables";
+  if (n == "CONTROL_PARALLEL") return "threads are set on the command line (ncpu=); results do not depend on them";
+  if (n == "CONTROL_ACCURACY") return "no accuracy options for solids here (invariant numbering and objective updates are for shells and fully integrated elements)";
+  if (n == "CONTROL_SOLID") return "solids are always the one-point hexahedron (degenerate shapes included)";
+  if (n == "CONTROL_SOLUTION") return "structural analysis only (SOLN 0)";
+  if (n == "DATABASE_FORMAT") return "the plot database is always the LS-DYNA binary layout (8-byte words: plotwords=8 on the command line)";
+  if (n.rfind("CONTROL_MPP_", 0) == 0) return "MPP decomposition controls have no effect on a shared-memory run";
+  return nullptr;
+}
+
+bool is_ascii_database(const std::string& n) {
     static const std::set<std::string> names = {
         "DATABASE_GLSTAT", "DATABASE_MATSUM", "DATABASE_NODOUT", "DATABASE_ELOUT",
         "DATABASE_RCFORC", "DATABASE_RWFORC", "DATABASE_SPCFORC", "DATABASE_NCFORC",
@@ -923,12 +937,17 @@ class KeywordReader {
           if (n == "DATABASE_NCFORC") ncforc_dt_ = dt;
           if (n == "DATABASE_SPCFORC") spcforc_ = dt > 0 ? 1 : 0;
         }
-      } else if (n == "DATABASE_EXTENT_BINARY" || n == "CONTROL_ENERGY") {
+      } else if (const char* why = ignored_keyword_reason(n)) {
+        if (n == "CONTROL_SOLUTION" && !b.data.empty()) {
+          // SOLN 1 (thermal only) and 2 (coupled) change the analysis: refused, not ignored
+          KCard c = card(b, 0, "card 1", W(b, 8));
+          if (c.i(0, "SOLN") != 0) c.error(1102, 0, "SOLN", "thermal and coupled thermal-structural analysis");
+        }
         Location loc;
         loc.file = b.kw.file->name();
         loc.line = b.kw.line->number;
         loc.card = b.keyword;
-        diag_.add(2008, loc, n == "CONTROL_ENERGY" ? "IMPACT-3D always computes all energies" : "IMPACT-3D writes its fixed set of plot variables");
+        diag_.add(2008, loc, why);
       } else if (n == "DATABASE_HISTORY_NODE" || n == "DATABASE_HISTORY_SOLID") {
         RHistory h;
         h.solid = n == "DATABASE_HISTORY_SOLID";

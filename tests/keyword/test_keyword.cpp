@@ -843,8 +843,9 @@ TEST(KeywordRealWorld, MechStyleDeckIsRefusedWithTheList) {
   std::vector<std::string> refused;
   for (const auto& d : r.d.all())
     if (d.id == 1301 && d.where.line > 0) refused.push_back(d.where.card);
-  EXPECT_EQ(refused, (std::vector<std::string>{"*CONTROL_ACCURACY", "*AIRBAG_SIMPLE_AIRBAG_MODEL", "*ELEMENT_SHELL"}))
+  EXPECT_EQ(refused, (std::vector<std::string>{"*AIRBAG_SIMPLE_AIRBAG_MODEL", "*ELEMENT_SHELL"}))
       << r.messages();
+  EXPECT_EQ(r.count(2008), 2) << r.messages();  // *CONTROL_ACCURACY, *DATABASE_EXTENT_BINARY: read, ignored
   // the supported keywords read without field errors
   EXPECT_EQ(r.count(1001) + r.count(1002) + r.count(1006), 0) << r.messages();
   EXPECT_EQ(r.m.control.end_time, 0.03);
@@ -951,7 +952,7 @@ TEST(KeywordRefusals, LenientKeywordsStillRefusesCaseBlocks) {
   EXPECT_GE(lenient.count(1301), 2) << lenient.messages();
   EXPECT_NE(lenient.messages().find("refused even with --lenient-keywords"), std::string::npos) << lenient.messages();
   // other unsupported keywords are still only warnings with --lenient-keywords
-  Read other = read_text(replaced(prepost_deck(), "*END\n", "*CONTROL_ACCURACY\n         0\n*END\n"), true);
+  Read other = read_text(replaced(prepost_deck(), "*END\n", "*CONTROL_CPU\n         0\n*END\n"), true);
   EXPECT_TRUE(other.ok) << other.messages();
   EXPECT_EQ(other.count(2007), 2);
 }
@@ -966,4 +967,26 @@ TEST(KeywordRefusals, RigidBodyWithNodalVelocitiesThatAreNotARigidMotionWarns) {
   EXPECT_EQ(rigid.count(2014), 0) << rigid.messages();
   Read moved = read_text(replaced(deck, "*END\n", "*INITIAL_VELOCITY_NODE\n    1001     100.0       0.0       0.0\n*END\n"));
   EXPECT_EQ(moved.count(2014), 1) << moved.messages();
+}
+
+// Control and output keywords that change nothing here are read and listed as ignored (2008),
+// once each, with their lines; *CONTROL_SOLUTION with a thermal SOLN is refused (1102).
+TEST(KeywordIgnored, ControlCardsThatChangeNothingAreReadAndListed) {
+  const std::string extra =
+      "*CONTROL_PARALLEL\n         2         0         1\n"
+      "*CONTROL_ACCURACY\n         1         4\n"
+      "*CONTROL_SOLID\n         1\n"
+      "*CONTROL_SOLUTION\n         0\n"
+      "*DATABASE_FORMAT\n         0         0\n"
+      "*CONTROL_MPP_IO_NODUMP\n"
+      "*END\n";
+  Read r = read_text(replaced(prepost_deck(), "*END\n", extra));
+  EXPECT_TRUE(r.ok) << r.messages();
+  EXPECT_EQ(r.count(2008), 6) << r.messages();
+  for (const char* kw : {"*CONTROL_PARALLEL", "*CONTROL_ACCURACY", "*CONTROL_SOLID", "*CONTROL_SOLUTION",
+                         "*DATABASE_FORMAT", "*CONTROL_MPP_IO_NODUMP"})
+    EXPECT_NE(r.messages().find(kw), std::string::npos) << kw << "\n" << r.messages();
+  Read thermal = read_text(replaced(prepost_deck(), "*END\n", "*CONTROL_SOLUTION\n         2\n*END\n"));
+  EXPECT_FALSE(thermal.ok);
+  EXPECT_EQ(thermal.count(1102), 1) << thermal.messages();
 }
