@@ -97,7 +97,7 @@ class KeywordWriter {
     os_ << "$ written by IMPACT-3D (impact3d --write-keyword); layout: README.md \"Keyword decks\"\n";
     os_ << "*TITLE\n" << m_.title << "\n";
     os_ << "*CONTROL_TERMINATION\n$#  endtim    endcyc     dtmin\n"
-        << kcard({R(k.end_time), I(0), R(k.min_step_factor)}) << "\n";
+        << kcard({R(k.end_time), I(k.end_cycle), R(k.min_step_factor)}) << "\n";
     os_ << "*CONTROL_TIMESTEP\n$#  dtinit    tssfac\n" << kcard({R(k.initial_dt), R(k.tssf)}) << "\n";
     os_ << "*CONTROL_CONTACT\n$#  slsfac\n" << kcard({R(k.penalty_scale)}) << "\n";
     os_ << "*CONTROL_OUTPUT\n$#   npopt    neecho    nrefup    iaccop     opifs    ipnint    ikedit\n"
@@ -358,6 +358,9 @@ void write_fixed_deck(std::ostream& os, const Model& m, std::vector<std::string>
     for (int f = 0; f < 8; ++f) c.i(41 + 5 * f, 45 + 5 * f, 0);
     os << c.str() << "\n";
   }
+  if (k.end_cycle > 0 && notes)
+    notes->push_back("termination cycle (ENDCYC " + std::to_string(k.end_cycle) +
+                     ") has no field in the fixed format: not written");
   os << "*----- CONTROL CARD #6\n";
   os << L("control card 6").r(1, 10, k.end_time).r(11, 20, k.th_interval).r(21, 30, k.plot_interval)
             .i(31, 35, k.restart_dump_cycles).i(36, 40, k.running_restart_cycles).r(41, 50, k.initial_dt)
@@ -519,6 +522,7 @@ std::vector<std::string> model_differences(const Model& a, const Model& b, int m
   N("initial-velocity cards", ka.num_init_velocity_cards, kb.num_init_velocity_cards);
   N("sliding interfaces", ka.num_interfaces, kb.num_interfaces);
   D("end time", ka.end_time, kb.end_time);
+  N("end cycle", ka.end_cycle, kb.end_cycle);
   D("time-history interval", ka.th_interval, kb.th_interval);
   D("plot interval", ka.plot_interval, kb.plot_interval);
   N("restart dump cycles", ka.restart_dump_cycles, kb.restart_dump_cycles);

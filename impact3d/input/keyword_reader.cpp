@@ -543,6 +543,7 @@ class KeywordReader {
   // controls
   bool have_termination_ = false;
   double end_time_ = 0, dtmin_ = 0;
+  int end_cycle_ = 0;
   Ref end_ref_;
   double dtinit_ = 0, tssfac_ = 0.9;
   double slsfac_ = 0.1;
@@ -1341,7 +1342,9 @@ bool is_ascii_database(const std::string& n) {
     end_time_ = c.r(0, "ENDTIM");
     end_ref_ = c.ref(0);
     if (!(end_time_ > 0)) c.error(1214, 0, "ENDTIM");
-    if (c.i(1, "ENDCYC") != 0) c.error(1102, 1, "ENDCYC", "termination by cycle count");
+    const long long endcyc = c.i(1, "ENDCYC");
+    if (endcyc < 0 || endcyc > 2147483647LL) c.error(1003, 1, "ENDCYC", "must be 0 (no limit) or a cycle count");
+    else end_cycle_ = int(endcyc);
     dtmin_ = c.r(2, "DTMIN");
     if (dtmin_ < 0 || dtmin_ >= 1) c.error(1003, 2, "DTMIN", "must be in [0, 1)");
     if (c.r(3, "ENDENG") != 0) c.error(1102, 3, "ENDENG", "termination by energy change");
@@ -1930,6 +1933,7 @@ bool is_ascii_database(const std::string& n) {
       diag_.add(1311, loc, "*CONTROL_TERMINATION (ENDTIM) is required");
     }
     k.end_time = end_time_;
+    k.end_cycle = end_cycle_;
     k.min_step_factor = dtmin_;
     k.initial_dt = dtinit_;
     k.tssf = tssfac_;

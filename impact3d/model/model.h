@@ -24,6 +24,7 @@ struct ControlData {
   int numlc = 0, num_walls = 0, num_init_velocity_cards = 0, num_interfaces = 0;
   // card 6
   double end_time = 0;
+  int end_cycle = 0;         // also stop after this many cycles (0: no limit; keyword ENDCYC)
   double th_interval = 0;    // time-history output interval (0 -> end_time / 1000)
   double plot_interval = 0;  // plot-state interval (0 -> end_time / 20)
   int restart_dump_cycles = 0, running_restart_cycles = 0;

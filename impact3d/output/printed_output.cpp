@@ -94,7 +94,9 @@ void write_model_summary(std::ostream& os, const Model& m) {
      << " units: as the deck gives them (consistent set; SI: m, kg, s, Pa)\n\n"
      << " c o n t r o l   i n f o r m a t i o n\n\n";
   write_counts(os, m);
-  os << "     termination time ..................... " << fmt("%.6e", k.end_time) << " (time)\n"
+  os << "     termination time ..................... " << fmt("%.6e", k.end_time) << " (time)\n";
+  if (k.end_cycle > 0) os << "     termination cycle .................... " << k.end_cycle << "\n";
+  os
      << "     plot-state interval .................. " << fmt("%.6e", k.plot_interval) << " (time)\n"
      << "     time-history interval ................ " << fmt("%.6e", k.th_interval) << " (time)\n"
      << "     restart dump every ................... " << k.restart_dump_cycles << " cycles (0 = none)\n"

@@ -36,7 +36,11 @@ class Engine {
   const State& state() const { return s_; }
   State& state() { return s_; }
   const Model& model() const { return m_; }
-  bool finished() const { return s_.time >= m_.control.end_time * (1 - 1e-12); }
+  // at the termination time, or past the termination cycle when the deck sets one (ENDCYC)
+  bool finished() const {
+    return s_.time >= m_.control.end_time * (1 - 1e-12) ||
+           (m_.control.end_cycle > 0 && s_.cycle >= m_.control.end_cycle);
+  }
   // Element (0-based) behind the last error, and a description.
   int error_element() const { return error_elem_; }
 

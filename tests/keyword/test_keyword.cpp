@@ -990,3 +990,31 @@ TEST(KeywordIgnored, ControlCardsThatChangeNothingAreReadAndListed) {
   EXPECT_FALSE(thermal.ok);
   EXPECT_EQ(thermal.count(1102), 1) << thermal.messages();
 }
+
+// *CONTROL_TERMINATION ENDCYC: the run stops after that many cycles (normal termination), before
+// ENDTIM; the converter writes it back (keyword) or says the fixed format cannot hold it.
+TEST(KeywordTermination, EndCycleStopsTheRunAndRoundTrips) {
+  const std::string end0 = "   8.0E-05         0       0.0       0.01.000000E8         0\n";
+  std::string deck = prepost_deck();
+  ASSERT_NE(deck.find(end0), std::string::npos);
+  deck.replace(deck.find(end0), end0.size(), "   8.0E-05        25       0.0       0.01.000000E8         0\n");
+  Read r = read_text(deck);
+  ASSERT_TRUE(r.ok) << r.messages();
+  EXPECT_EQ(r.m.control.end_cycle, 25);
+  Engine eng(r.m);
+  StepStatus st = eng.run_to_end();
+  EXPECT_EQ(st, StepStatus::finished);
+  EXPECT_EQ(eng.state().cycle, 25);
+  EXPECT_LT(eng.state().time, r.m.control.end_time);
+  Read back = read_text(keyword_text(r.m));
+  ASSERT_TRUE(back.ok) << back.messages();
+  EXPECT_EQ(back.m.control.end_cycle, 25);
+  std::vector<std::string> notes;
+  fixed_text(r.m, &notes);
+  EXPECT_NE(join(notes).find("ENDCYC 25"), std::string::npos) << join(notes);
+  std::string bad = deck;
+  bad.replace(bad.find("        25       0.0"), 10, "        -1");
+  Read neg = read_text(bad);
+  EXPECT_FALSE(neg.ok);
+  EXPECT_EQ(neg.count(1003), 1) << neg.messages();
+}
