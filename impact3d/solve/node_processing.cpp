@@ -10,6 +10,11 @@ namespace {
 constexpr int kNodeChunk = 2048;           // nodes per chunk (a thread's unit of work)
 constexpr int kMinChunksForThreads = 8;    // below this the pass runs on one thread
 
+// Walls applied inside the pass: only when it also moves the nodes.
+int fused_wall_count(const NodePass& p) {
+  return p.update_positions && p.walls ? int(p.walls->size()) : 0;
+}
+
 int num_node_chunks(const State& s) { return (s.nn + kNodeChunk - 1) / kNodeChunk; }
 
 double kinetic_energy_of_node(const State& s, std::size_t k) {
@@ -30,7 +35,7 @@ void update_velocities_for_chunk(State& s, const NodePass& p, int chunk) {
   const double* cfy = s.cfy.data();
   const double* cfz = s.cfz.data();
   double ke = 0;
-  const int nw = p.walls ? int(p.walls->size()) : 0;
+  const int nw = fused_wall_count(p);
   double wall_books[4 * 8] = {};  // per wall: impulse x y z, kinetic energy change
   for (int i = i0; i < i1; ++i) {
     const std::size_t k = std::size_t(i);
@@ -98,14 +103,12 @@ void update_positions_for_chunk(State& s, double dt, int chunk) {
 
 void update_velocities_for_nodes(State& s, const NodePass& p) {
   const int nc = num_node_chunks(s);
-  const std::size_t nw = p.walls && p.update_positions ? p.walls->size() : 0;
+  const std::size_t nw = std::size_t(fused_wall_count(p));
   if (nw > kMaxFusedWalls) throw std::logic_error("update_velocities_for_nodes: too many fused walls");
   s.chunk_kinetic.resize(std::size_t(nc));  // sized once (no-op after the first cycle)
   s.chunk_walls.resize(std::size_t(nc) * 4 * nw);
-  NodePass q = p;
-  if (nw == 0) q.walls = nullptr;
 #pragma omp parallel for schedule(dynamic, 1) if (nc >= kMinChunksForThreads)
-  for (int c = 0; c < nc; ++c) update_velocities_for_chunk(s, q, c);
+  for (int c = 0; c < nc; ++c) update_velocities_for_chunk(s, p, c);
   if (p.update_positions) sum_chunk_kinetic_energies(s);
   // the walls' books, chunk by chunk in order (as apply_stonewalls_to_nodes books them)
   for (std::size_t w = 0; w < nw; ++w) {
