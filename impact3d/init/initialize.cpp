@@ -18,8 +18,9 @@ void init_nodes(const Model& m, State& s) {
   s.x = m.x; s.y = m.y; s.z = m.z;
   for (auto* v : {&s.vx, &s.vy, &s.vz, &s.ax, &s.ay, &s.az, &s.vx_old, &s.vy_old, &s.vz_old, &s.mass})
     v->assign(std::size_t(nn), 0.0);
-  // external forces: only sliding interfaces make them (the node pass reads them then)
-  for (auto* v : {&s.fext_x, &s.fext_y, &s.fext_z}) v->assign(m.interfaces.empty() ? 0 : std::size_t(nn), 0.0);
+  // external forces: only sliding interfaces and loads make them (the node pass reads them then)
+  const bool fext = !m.interfaces.empty() || m.has_loads();
+  for (auto* v : {&s.fext_x, &s.fext_y, &s.fext_z}) v->assign(fext ? std::size_t(nn) : 0, 0.0);
   s.fix.assign(std::size_t(nn), 0);
   for (int i = 0; i < nn; ++i) {
     int c = m.bc[std::size_t(i)];
@@ -168,6 +169,7 @@ void init_rigid_bodies(State& s) {
       pz += mn * s.vz[std::size_t(n)];
     }
     rb.com = {mx / rb.mass, my / rb.mass, mz / rb.mass};
+    rb.com0 = rb.com;
     rb.vcom = {px / rb.mass, py / rb.mass, pz / rb.mass};
     std::array<double, 9> I{};
     std::array<double, 3> L{};

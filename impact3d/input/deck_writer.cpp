@@ -79,6 +79,7 @@ std::string kcard(const std::vector<KField>& f) {
     for (const auto& x : f) out += std::string(std::size_t(x.width) - x.text.size(), ' ') + x.text;
   } else {
     for (std::size_t k = 0; k < f.size(); ++k) out += (k ? "," : "") + f[k].text;
+    if (f.size() == 1) out += ",";  // a comma marks the line as free format
   }
   while (!out.empty() && out.back() == ' ') out.pop_back();
   return out;
@@ -129,6 +130,7 @@ class KeywordWriter {
     walls();
     velocities();
     interfaces();
+    loads();
     os_ << "*END\n";
   }
 
@@ -255,6 +257,72 @@ class KeywordWriter {
     }
   }
 
+  int lcid(int curve) const { return m_.load_curves[std::size_t(curve)].number; }
+
+  // the axis 1-3 of a unit direction along x, y or z, or 0
+  static int axis_of(const std::array<double, 3>& d) {
+    for (int a = 0; a < 3; ++a)
+      if (d[std::size_t(a)] == 1 && d[std::size_t((a + 1) % 3)] == 0 && d[std::size_t((a + 2) % 3)] == 0) return a + 1;
+    return 0;
+  }
+  int dof_of(const std::array<double, 3>& d, const std::string& what) {
+    const int a = axis_of(d);
+    if (a == 0) note(what + ": direction not along an axis, written as x");
+    return a == 0 ? 1 : a;
+  }
+
+  void loads() {
+    for (const NodalLoad& l : m_.nodal_loads)
+      os_ << "*LOAD_NODE_POINT\n$#     nid       dof      lcid        sf\n"
+          << kcard({I(nid(l.node)), I(dof_of(l.dir, "nodal load")), I(lcid(l.curve)), R(l.scale)}) << "\n";
+    for (const RigidBodyLoad& l : m_.rigid_body_loads)
+      os_ << "*LOAD_RIGID_BODY\n$#     pid       dof      lcid        sf\n"
+          << kcard({I(l.material + 1), I(dof_of(l.dir, "rigid-body load")), I(lcid(l.curve)), R(l.scale)}) << "\n";
+    for (const PressureLoad& l : m_.pressure_loads) {
+      double f = l.factor[0];
+      for (double x : l.factor)
+        if (x != f) {
+          note("pressure multipliers " + shortest(l.factor[0]) + " " + shortest(l.factor[1]) + " " + shortest(l.factor[2]) + " " +
+               shortest(l.factor[3]) + " have no keyword field: written as their mean");
+          f = 0.25 * (l.factor[0] + l.factor[1] + l.factor[2] + l.factor[3]);
+          break;
+        }
+      if (l.death < 1e28) note("pressure death time " + shortest(l.death) + " has no *LOAD_SEGMENT field: not written");
+      os_ << "*LOAD_SEGMENT\n$#    lcid        sf        at        n1        n2        n3        n4\n"
+          << kcard({I(lcid(l.curve)), R(l.scale * f), R(l.birth), I(nid(l.nodes[0])), I(nid(l.nodes[1])), I(nid(l.nodes[2])),
+                    I(nid(l.nodes[3]))})
+          << "\n";
+    }
+    for (const BodyLoad& b : m_.body_loads) {
+      const int a = axis_of(b.dir);
+      if (a > 0) {
+        os_ << "*LOAD_BODY_" << "XYZ"[a - 1] << "\n$#    lcid        sf\n" << kcard({I(lcid(b.curve)), R(b.scale)}) << "\n";
+      } else {
+        os_ << "*LOAD_BODY_VECTOR\n$#    lcid        sf\n" << kcard({I(lcid(b.curve)), R(b.scale)}) << "\n"
+            << "$#      v1        v2        v3\n" << kcard({R(b.dir[0]), R(b.dir[1]), R(b.dir[2])}) << "\n";
+      }
+    }
+    if (!m_.body_loads.empty() && !m_.body_load_materials.empty()) {
+      const int sid = 1;
+      os_ << "*SET_PART_LIST\n$#     sid\n" << kcard({I(sid)}) << "\n$#    pid1      pid2      pid3      pid4      pid5      pid6      pid7      pid8\n";
+      std::vector<KField> f;
+      for (int mt : m_.body_load_materials) {
+        f.push_back(I(mt + 1));
+        if (f.size() == 8) { os_ << kcard(f) << "\n"; f.clear(); }
+      }
+      if (!f.empty()) os_ << kcard(f) << "\n";
+      os_ << "*LOAD_BODY_PARTS\n$#    psid\n" << kcard({I(sid)}) << "\n";
+    }
+    for (const PrescribedMotion& pm : m_.prescribed_motions) {
+      const bool rigid = pm.node < 0;
+      os_ << (rigid ? "*BOUNDARY_PRESCRIBED_MOTION_RIGID\n$#     pid" : "*BOUNDARY_PRESCRIBED_MOTION_NODE\n$#     nid")
+          << "       dof       vad      lcid        sf       vid     death     birth\n"
+          << kcard({I(rigid ? pm.rigid_material + 1 : nid(pm.node)), I(dof_of(pm.dir, "prescribed motion")), I(int(pm.kind)),
+                    I(lcid(pm.curve)), R(pm.scale), I(0), pm.death < 1e28 ? R(pm.death) : R(0), R(pm.birth)})
+          << "\n";
+    }
+  }
+
   int segment_set(const std::vector<std::array<int, 4>>& segs) {
     int sid = next_segment_set_++;
     os_ << "*SET_SEGMENT\n$#     sid\n" << kcard({I(sid)}) << "\n$#      n1        n2        n3        n4\n";
@@ -351,11 +419,34 @@ void write_fixed_deck(std::ostream& os, const Model& m, std::vector<std::string>
   os << "*----- CONTROL CARD #4\n";
   os << L("control card 4").i(1, 10, 0).i(11, 15, 0).i(16, 20, 0).i(21, 25, 0).i(26, 30, 0).a(31, 35, "e20.0").i(36, 40, 0).str() << "\n";
   os << "*----- CONTROL CARD #5\n";
+  // what the fixed format can hold of the loads: prescribed motions of nodes, one base
+  // acceleration per axis on every material; the rest is noted and left out
+  int node_motions = 0;
+  for (const PrescribedMotion& pm : m.prescribed_motions) node_motions += pm.node >= 0 ? 1 : 0;
+  if (node_motions < int(m.prescribed_motions.size()) && notes)
+    notes->push_back("prescribed motions of rigid bodies have no fixed-format card: not written");
+  if (!m.rigid_body_loads.empty() && notes) notes->push_back("rigid-body loads have no fixed-format card: not written");
+  std::array<int, 3> base = {-1, -1, -1};  // body load written as each axis's base acceleration
+  for (std::size_t j = 0; j < m.body_loads.size(); ++j) {
+    const auto& d = m.body_loads[j].dir;
+    int a = -1;
+    for (int q = 0; q < 3; ++q)
+      if (d[std::size_t(q)] == 1 && d[std::size_t((q + 1) % 3)] == 0 && d[std::size_t((q + 2) % 3)] == 0) a = q;
+    if (a < 0 || base[std::size_t(a)] >= 0 || !m.body_load_materials.empty()) {
+      if (notes) notes->push_back("body load " + std::to_string(j + 1) + " is not one base acceleration per axis on every material: not written");
+      continue;
+    }
+    base[std::size_t(a)] = int(j);
+  }
+  for (const PressureLoad& l : m.pressure_loads)
+    if (l.death < 1e28 && notes) { notes->push_back("pressure death times have no fixed-format field: not written"); break; }
   {
     FixedLine c = L("control card 5");
-    c.i(1, 5, int(m.load_curves.size())).i(6, 10, 0).i(11, 15, 0).i(16, 20, 0).i(21, 25, int(m.walls.size()))
+    c.i(1, 5, int(m.load_curves.size())).i(6, 10, int(m.nodal_loads.size())).i(11, 15, int(m.pressure_loads.size()))
+        .i(16, 20, node_motions).i(21, 25, int(m.walls.size()))
         .i(26, 30, 0).i(31, 35, int(m.init_velocities.size())).i(36, 40, int(m.interfaces.size()));
-    for (int f = 0; f < 8; ++f) c.i(41 + 5 * f, 45 + 5 * f, 0);
+    for (int f = 0; f < 3; ++f) c.i(41 + 5 * f, 45 + 5 * f, base[std::size_t(f)] >= 0 ? 1 : 0);
+    for (int f = 3; f < 8; ++f) c.i(41 + 5 * f, 45 + 5 * f, 0);
     os << c.str() << "\n";
   }
   if (k.end_cycle > 0 && notes)
@@ -415,6 +506,35 @@ void write_fixed_deck(std::ostream& os, const Model& m, std::vector<std::string>
     os << L("load curve").i(1, 5, int(c) + 1).i(6, 10, int(lc.t.size())).str() << "\n";
     for (std::size_t p = 0; p < lc.t.size(); ++p) os << L("load curve point").r(1, 10, lc.t[p]).r(11, 20, lc.f[p]).str() << "\n";
   }
+  if (!m.nodal_loads.empty()) os << "*----- NODAL LOADS: node, direction, load curve, scale\n";
+  for (const NodalLoad& l : m.nodal_loads) {
+    int d = 0;
+    for (int q = 0; q < 3; ++q) if (l.dir[std::size_t(q)] == 1) d = q + 1;
+    if (d == 0 && notes) notes->push_back("nodal load direction not along an axis: written as x");
+    os << L("nodal load").i(1, 8, l.node + 1).i(9, 13, d == 0 ? 1 : d).i(14, 18, l.curve + 1).r(19, 28, l.scale).str() << "\n";
+  }
+  if (!m.pressure_loads.empty()) os << "*----- PRESSURE LOADS: load curve, n1-n4; multipliers, arrival time (71-80)\n";
+  for (const PressureLoad& l : m.pressure_loads) {
+    FixedLine c = L("pressure card");
+    c.i(1, 5, l.curve + 1);
+    for (int q = 0; q < 4; ++q) c.i(6 + 8 * q, 13 + 8 * q, l.nodes[std::size_t(q)] + 1);
+    os << c.str() << "\n";
+    FixedLine c2 = L("pressure multipliers");
+    for (int q = 0; q < 4; ++q) c2.r(1 + 10 * q, 10 + 10 * q, l.factor[std::size_t(q)] * l.scale);
+    c2.r(71, 80, l.birth);
+    os << c2.str() << "\n";
+  }
+  if (node_motions > 0) os << "*----- VELOCITY/ACCELERATION BOUNDARY CONDITIONS: node, direction, curve, scale, type, birth, death\n";
+  for (const PrescribedMotion& pm : m.prescribed_motions) {
+    if (pm.node < 0) continue;
+    int d = 0;
+    for (int q = 0; q < 3; ++q) if (pm.dir[std::size_t(q)] == 1) d = q + 1;
+    if (d == 0 && notes) notes->push_back("prescribed motion direction not along an axis: written as x");
+    FixedLine c = L("velocity/acceleration boundary card");
+    c.i(1, 8, pm.node + 1).i(9, 13, d == 0 ? 1 : d).i(14, 18, pm.curve + 1).r(19, 28, pm.scale).i(29, 33, int(pm.kind)).r(34, 43, pm.birth);
+    if (pm.death < 1e28) c.r(44, 53, pm.death);
+    os << c.str() << "\n";
+  }
   if (!m.walls.empty()) os << "*----- STONEWALLS\n";
   for (const StoneWall& w : m.walls) {
     os << L("stonewall").i(1, 5, int(w.nodes.size())).i(6, 10, w.mass > 0 ? 1 : 0).r(11, 20, w.tail[0]).r(21, 30, w.tail[1]).r(31, 40, w.tail[2])
@@ -445,6 +565,12 @@ void write_fixed_deck(std::ostream& os, const Model& m, std::vector<std::string>
         os << c.str() << "\n";
       }
     }
+  }
+  if (base[0] >= 0 || base[1] >= 0 || base[2] >= 0) os << "*----- BASE ACCELERATIONS: load curve, scale\n";
+  for (int a = 0; a < 3; ++a) {
+    if (base[std::size_t(a)] < 0) continue;
+    const BodyLoad& b = m.body_loads[std::size_t(base[std::size_t(a)])];
+    os << L("base acceleration").i(1, 5, b.curve + 1).r(6, 15, b.scale).str() << "\n";
   }
   os << "*----- END OF DECK\n";
 }
@@ -620,6 +746,56 @@ std::vector<std::string> model_differences(const Model& a, const Model& b, int m
     N(s + "symmetric", x.symmetric, y.symmetric);
     if (x.slave != y.slave) diff(s + "slave segments", std::to_string(x.slave.size()), std::to_string(y.slave.size()));
     if (x.master != y.master) diff(s + "master segments", std::to_string(x.master.size()), std::to_string(y.master.size()));
+  }
+  // loads and prescribed motions: what acts (curve values, directions, effective scales)
+  auto curve_differs = [&](const std::string& w, int ca, int cb) {
+    const LoadCurve &x = a.load_curves[std::size_t(ca)], &y = b.load_curves[std::size_t(cb)];
+    if (x.t != y.t || x.f != y.f) diff(w + "load curve", std::to_string(x.number), std::to_string(y.number));
+  };
+  auto dir_differs = [&](const std::string& w, const std::array<double, 3>& x, const std::array<double, 3>& y) {
+    for (int q = 0; q < 3; ++q) D(w + "direction " + "xyz"[q], x[std::size_t(q)], y[std::size_t(q)]);
+  };
+  N("nodal loads", long(a.nodal_loads.size()), long(b.nodal_loads.size()));
+  for (std::size_t j = 0; j < std::min(a.nodal_loads.size(), b.nodal_loads.size()); ++j) {
+    const NodalLoad &x = a.nodal_loads[j], &y = b.nodal_loads[j];
+    const std::string w = "nodal load " + std::to_string(j + 1) + " ";
+    N(w + "node", x.node, y.node);
+    dir_differs(w, x.dir, y.dir);
+    curve_differs(w, x.curve, y.curve);
+    D(w + "scale", x.scale, y.scale);
+  }
+  N("rigid-body loads", long(a.rigid_body_loads.size()), long(b.rigid_body_loads.size()));
+  N("pressure loads", long(a.pressure_loads.size()), long(b.pressure_loads.size()));
+  for (std::size_t j = 0; j < std::min(a.pressure_loads.size(), b.pressure_loads.size()); ++j) {
+    const PressureLoad &x = a.pressure_loads[j], &y = b.pressure_loads[j];
+    const std::string w = "pressure load " + std::to_string(j + 1) + " ";
+    if (x.nodes != y.nodes) diff(w + "nodes", "", "");
+    curve_differs(w, x.curve, y.curve);
+    for (int q = 0; q < 4; ++q) D(w + "scale at node " + std::to_string(q + 1), x.scale * x.factor[std::size_t(q)], y.scale * y.factor[std::size_t(q)]);
+    D(w + "birth", x.birth, y.birth);
+    D(w + "death", x.death, y.death);
+  }
+  N("body loads", long(a.body_loads.size()), long(b.body_loads.size()));
+  for (std::size_t j = 0; j < std::min(a.body_loads.size(), b.body_loads.size()); ++j) {
+    const BodyLoad &x = a.body_loads[j], &y = b.body_loads[j];
+    const std::string w = "body load " + std::to_string(j + 1) + " ";
+    dir_differs(w, x.dir, y.dir);
+    curve_differs(w, x.curve, y.curve);
+    D(w + "scale", x.scale, y.scale);
+  }
+  if (a.body_load_materials != b.body_load_materials) diff("body-load materials", std::to_string(a.body_load_materials.size()), std::to_string(b.body_load_materials.size()));
+  N("prescribed motions", long(a.prescribed_motions.size()), long(b.prescribed_motions.size()));
+  for (std::size_t j = 0; j < std::min(a.prescribed_motions.size(), b.prescribed_motions.size()); ++j) {
+    const PrescribedMotion &x = a.prescribed_motions[j], &y = b.prescribed_motions[j];
+    const std::string w = "prescribed motion " + std::to_string(j + 1) + " ";
+    N(w + "node", x.node, y.node);
+    N(w + "rigid body", x.rigid_material, y.rigid_material);
+    dir_differs(w, x.dir, y.dir);
+    N(w + "kind", int(x.kind), int(y.kind));
+    curve_differs(w, x.curve, y.curve);
+    D(w + "scale", x.scale, y.scale);
+    D(w + "birth", x.birth, y.birth);
+    D(w + "death", x.death, y.death);
   }
   return out;
 }

@@ -2,6 +2,7 @@
 // docs/deck-format.md; every field read here names its card, field and columns in messages.
 
 #include <algorithm>
+#include <optional>
 #include <cctype>
 #include <cmath>
 #include <limits>
@@ -33,9 +34,14 @@ class Dyna3dReader {
     read_solids();
     read_time_history_blocks();
     read_load_curves();
+    read_nodal_loads();
+    read_pressure_loads();
+    read_prescribed_motions();
     read_stonewalls();
     read_initial_velocities();
     read_sliding_interfaces();
+    read_base_accelerations();
+    report_unused_curves();
     if (const DeckLine* l = deck_.peek_card()) {
       Location loc;
       loc.file = deck_.name();
@@ -54,6 +60,8 @@ class Dyna3dReader {
   Diagnostics& diag_;
   bool stop_ = false;
   int idw_ = 8;  // width of id fields: 8 large, 5 small
+  std::vector<int> curve_lines_;   // header line of each load curve
+  std::vector<char> curve_used_;   // a load or motion refers to it
 
   Card next(const std::string& card_name, const std::string& expected = {}) {
     if (diag_.error_count() > 500) {
@@ -213,9 +221,9 @@ class Dyna3dReader {
     {
       Card c = next("control card 5");
       k.numlc = int(c.i(1, 5, "NUMLC"));
-      require_zero(c, 6, 10, "concentrated nodal loads", "concentrated nodal loads");
-      require_zero(c, 11, 15, "pressure-loaded sides", "pressure loads");
-      require_zero(c, 16, 20, "velocity/acceleration boundary cards", "prescribed velocity/acceleration boundary conditions");
+      k.num_nodal_load_cards = int(c.i(6, 10, "concentrated nodal loads"));
+      k.num_pressure_cards = int(c.i(11, 15, "pressure-loaded sides"));
+      k.num_motion_cards = int(c.i(16, 20, "velocity/acceleration boundary cards"));
       k.num_walls = int(c.i(21, 25, "stonewalls"));
       require_zero(c, 26, 30, "nodal constraint cards", "nodal constraints");
       k.num_init_velocity_cards = int(c.i(31, 35, "initial-velocity cards"));
@@ -226,13 +234,21 @@ class Dyna3dReader {
       const char* features[] = {"base accelerations", "base accelerations", "base accelerations",
                                 "angular velocities", "angular velocities", "angular velocities",
                                 "momentum deposition", "detonation (high explosives)"};
-      for (int f = 0; f < 8; ++f) require_zero(c, 41 + 5 * f, 45 + 5 * f, names[f], features[f]);
+      for (int f = 0; f < 3; ++f) {
+        const long long flag = c.i(41 + 5 * f, 45 + 5 * f, names[f]);
+        if (flag != 0 && flag != 1) c.error(1006, 41 + 5 * f, 45 + 5 * f, names[f], "0 none, 1 one base-acceleration card");
+        k.base_acceleration[std::size_t(f)] = flag == 1 ? 1 : 0;
+      }
+      for (int f = 3; f < 8; ++f) require_zero(c, 41 + 5 * f, 45 + 5 * f, names[f], features[f]);
       long avail = remaining_cards();
       auto bound = [&](int& v, int c1, const char* field) {
         if (v < 0) { c.error(1003, c1, c1 + 4, field, "must not be negative"); v = 0; }
         if (v > avail) { c.error(1205, c1, c1 + 4, field, "the deck has only " + std::to_string(avail) + " cards left"); v = 0; }
       };
       bound(k.numlc, 1, "NUMLC");
+      bound(k.num_nodal_load_cards, 6, "concentrated nodal loads");
+      bound(k.num_pressure_cards, 11, "pressure-loaded sides");
+      bound(k.num_motion_cards, 16, "velocity/acceleration boundary cards");
       bound(k.num_walls, 21, "stonewalls");
       bound(k.num_init_velocity_cards, 31, "initial-velocity cards");
       bound(k.num_interfaces, 36, "sliding interfaces");
@@ -638,11 +654,146 @@ class Dyna3dReader {
         lc.f.push_back(f);
       }
       m_.load_curves.push_back(std::move(lc));
+      curve_lines_.push_back(c.line());
+    }
+    curve_used_.assign(m_.load_curves.size(), 0);
+  }
+
+  // 0-based index of load curve `number` (1..NUMLC) read in columns c1-c2, or -1 (error)
+  int read_curve_ref(Card& c, int c1, int c2) {
+    const int n = int(c.i(c1, c2, "load curve"));
+    for (std::size_t k = 0; k < m_.load_curves.size(); ++k)
+      if (m_.load_curves[k].number == n) {
+        curve_used_[k] = 1;
+        return int(k);
+      }
+    c.error(1201, c1, c2, "load curve", "must be one of the deck's curves 1.." + std::to_string(m_.control.numlc));
+    return -1;
+  }
+
+  void report_unused_curves() {
+    for (std::size_t k = 0; k < m_.load_curves.size(); ++k) {
+      if (curve_used_[k]) continue;
       Location loc;
       loc.file = deck_.name();
-      loc.line = c.line();
-      loc.card = c.name();
-      diag_.add(2004, loc, "no supported feature uses load curves yet");
+      loc.line = curve_lines_[k];
+      loc.card = "load curve " + std::to_string(m_.load_curves[k].number) + " header card";
+      diag_.add(2004, loc);
+    }
+  }
+
+  // direction 1-3 (x y z) read in columns c1-c2 as a unit vector; false (error) otherwise
+  bool read_direction(Card& c, int c1, int c2, std::array<double, 3>& dir) {
+    const long long d = c.i(c1, c2, "direction");
+    if (d < 1 || d > 3) {
+      c.error(d >= 4 && d <= 6 ? 1102 : 1006, c1, c2, "direction", d >= 4 && d <= 6 ? "moments and rotations (solid nodes have none)" : "1 x, 2 y, 3 z");
+      return false;
+    }
+    dir = {0, 0, 0};
+    dir[std::size_t(d - 1)] = 1;
+    return true;
+  }
+
+  // Concentrated nodal loads (card 5 field 2): node, direction 1-3, load curve, scale;
+  // small format I5 I5 I5 E10, large I8 I5 I5 E10.
+  void read_nodal_loads() {
+    const int n = m_.control.num_nodal_load_cards;
+    const int w = idw_;
+    for (int k = 0; k < n; ++k) {
+      Card c = next("nodal load card " + std::to_string(k + 1),
+                    "expected " + std::to_string(n) + " nodal load cards (control card 5)");
+      NodalLoad l;
+      const int node = read_id(c, 1, "node", m_.control.numnp, 1202);
+      bool ok = node >= 1;
+      ok = read_direction(c, w + 1, w + 5, l.dir) && ok;
+      l.curve = read_curve_ref(c, w + 6, w + 10);
+      l.scale = c.e(w + 11, w + 20, "scale factor", 1.0);
+      l.node = node - 1;
+      l.line = c.line();
+      if (ok && l.curve >= 0) m_.nodal_loads.push_back(l);
+    }
+  }
+
+  // Pressure-loaded element sides (card 5 field 3): load curve, four nodes, four nodal
+  // multipliers and an arrival time.  Small format: I5, 4I5 (6-25), 4E10 (26-65), arrival time
+  // E10 (71-80).  Large format (an IMPACT-3D choice): I5, 4I8 (6-37) on the first card, the
+  // four multipliers 4E10 (1-40) and the arrival time (71-80) on a second card.  Blank
+  // multipliers are 1.
+  void read_pressure_loads() {
+    const int n = m_.control.num_pressure_cards;
+    const bool large = m_.large_format;
+    for (int k = 0; k < n; ++k) {
+      Card c = next("pressure card " + std::to_string(k + 1),
+                    "expected " + std::to_string(n) + " pressure cards (control card 5)");
+      PressureLoad p;
+      p.line = c.line();
+      p.curve = read_curve_ref(c, 1, 5);
+      bool ok = p.curve >= 0;
+      for (int q = 0; q < 4; ++q) {
+        const std::string f = "node n" + std::to_string(q + 1);
+        const int id = read_id(c, 6 + idw_ * q, f.c_str(), m_.control.numnp, 1202);
+        if (id < 1) ok = false;
+        p.nodes[std::size_t(q)] = id - 1;
+      }
+      Card* mc = &c;
+      std::optional<Card> c2;
+      if (large) {
+        c2.emplace(next("pressure card " + std::to_string(k + 1) + " multipliers"));
+        mc = &*c2;
+      }
+      const int m1 = large ? 1 : 26;
+      for (int q = 0; q < 4; ++q) {
+        const std::string f = "multiplier " + std::to_string(q + 1);
+        const double v = mc->e(m1 + 10 * q, m1 + 9 + 10 * q, f.c_str(), 1.0);
+        p.factor[std::size_t(q)] = v;
+      }
+      p.birth = mc->e(71, 80, "arrival time");
+      if (ok) m_.pressure_loads.push_back(p);
+    }
+  }
+
+  // Velocity / acceleration / displacement boundary conditions (card 5 field 4), one card each
+  // (an IMPACT-3D layout: no DYNA3D manual text fixes it): node (I5 small, I8 large), direction
+  // 1-3 (I5), load curve (I5), scale (E10), type (I5: 0 velocity, 1 acceleration,
+  // 2 displacement), birth time (E10), death time (E10; blank or 0 = never).
+  void read_prescribed_motions() {
+    const int n = m_.control.num_motion_cards;
+    const int w = idw_;
+    for (int k = 0; k < n; ++k) {
+      Card c = next("velocity/acceleration boundary card " + std::to_string(k + 1),
+                    "expected " + std::to_string(n) + " velocity/acceleration boundary cards (control card 5)");
+      PrescribedMotion pm;
+      const int node = read_id(c, 1, "node", m_.control.numnp, 1202);
+      bool ok = node >= 1;
+      ok = read_direction(c, w + 1, w + 5, pm.dir) && ok;
+      pm.curve = read_curve_ref(c, w + 6, w + 10);
+      pm.scale = c.e(w + 11, w + 20, "scale factor", 1.0);
+      const long long type = c.i(w + 21, w + 25, "type");
+      if (type < 0 || type > 2) { c.error(1006, w + 21, w + 25, "type", "0 velocity, 1 acceleration, 2 displacement"); ok = false; }
+      pm.kind = MotionKind(int(type));
+      pm.birth = c.e(w + 26, w + 35, "birth time");
+      const double death = c.e(w + 36, w + 45, "death time");
+      pm.death = death > 0 ? death : 1e28;
+      pm.node = node - 1;
+      pm.line = c.line();
+      if (ok && pm.curve >= 0) m_.prescribed_motions.push_back(pm);
+    }
+  }
+
+  // Base accelerations (card 5 fields 9-11), one card per direction flagged, in x y z order
+  // (an IMPACT-3D layout): load curve (I5), scale (E10).  Every node gets the acceleration
+  // -scale * curve(t) along the axis (LS-DYNA's *LOAD_BODY sign).
+  void read_base_accelerations() {
+    for (int a = 0; a < 3; ++a) {
+      if (!m_.control.base_acceleration[std::size_t(a)]) continue;
+      const char* axis = a == 0 ? "x" : a == 1 ? "y" : "z";
+      Card c = next(std::string("base acceleration card (") + axis + ")");
+      BodyLoad b;
+      b.dir[std::size_t(a)] = 1;
+      b.curve = read_curve_ref(c, 1, 5);
+      b.scale = c.e(6, 15, "scale factor", 1.0);
+      b.line = c.line();
+      if (b.curve >= 0) m_.body_loads.push_back(b);
     }
   }
 

@@ -10,6 +10,7 @@
 
 #include "impact3d/input/deck_reader.h"
 #include "impact3d/input/element_shapes.h"
+#include "impact3d/solve/element_groups.h"
 
 #include <algorithm>
 #include <array>
@@ -446,6 +447,20 @@ struct RSpc {
   int bits = 0;
   Ref ref;
 };
+struct RLoad {            // one load or prescribed-motion card, resolved after sets and curves
+  enum Kind { node, node_set, segment, segment_set, body, rigid_body, motion_node, motion_set, motion_rigid } kind = node;
+  std::string keyword;    // as written
+  int id = 0;             // node, set or part id
+  Ref ref;
+  int dof = 0;            // 1-3: x y z
+  MotionKind vad = MotionKind::velocity;
+  int lcid = 0;
+  Ref lc_ref;
+  double sf = 1, birth = 0, death = 1e28;
+  std::array<int, 4> nodes{};     // *LOAD_SEGMENT
+  std::array<Ref, 4> node_refs{};
+  std::array<double, 3> dir{};    // *LOAD_BODY_*
+};
 struct RHistory {
   bool solid = false;
   std::vector<int> ids;
@@ -520,8 +535,13 @@ class KeywordReader {
   std::vector<RVelocity> velocities_;
   std::vector<RSpc> spcs_;
   std::vector<RHistory> histories_;
+  std::vector<RLoad> loads_;
+  int body_parts_psid_ = 0;              // *LOAD_BODY_PARTS
+  Ref body_parts_ref_;
   std::vector<LoadCurve> curves_;
   std::vector<Ref> curve_refs_;
+  std::map<int, int> curve_index_;       // LCID -> index in curves_ (= Model::load_curves)
+  std::vector<char> curve_used_;
   std::vector<const Block*> unsupported_;
   std::map<int, std::string> unsupported_mids_, unsupported_secids_;  // id -> keyword, line
   // sets and parts that refused keywords define (*SET_NODE_GENERAL, *PART_COMPOSITE, ...):
@@ -812,7 +832,9 @@ class KeywordReader {
         "CONTACT_AUTOMATIC_SURFACE_TO_SURFACE", "CONTACT_NODES_TO_SURFACE"};
     static const std::set<std::string> with_id = {
         "RIGIDWALL_PLANAR", "RIGIDWALL_PLANAR_MOVING", "CONTACT_SURFACE_TO_SURFACE", "CONTACT_AUTOMATIC_SURFACE_TO_SURFACE",
-        "CONTACT_NODES_TO_SURFACE", "BOUNDARY_SPC_NODE", "BOUNDARY_SPC_SET"};
+        "CONTACT_NODES_TO_SURFACE", "BOUNDARY_SPC_NODE", "BOUNDARY_SPC_SET",
+        "BOUNDARY_PRESCRIBED_MOTION_NODE", "BOUNDARY_PRESCRIBED_MOTION_SET", "BOUNDARY_PRESCRIBED_MOTION_RIGID",
+        "LOAD_SEGMENT", "LOAD_SEGMENT_SET"};
     if (ends("_TITLE") && titled.count(n.substr(0, n.size() - 6))) {
       title = true;
       return n.substr(0, n.size() - 6);
@@ -984,6 +1006,23 @@ bool is_ascii_database(const std::string& n) {
         parse_contact(b, n != "CONTACT_NODES_TO_SURFACE");
       } else if (n == "DEFINE_CURVE") {
         parse_curve(b);
+      } else if (n == "LOAD_NODE_POINT" || n == "LOAD_NODE_SET" || n == "LOAD_RIGID_BODY") {
+        parse_load_node(b, n == "LOAD_NODE_SET" ? RLoad::node_set : n == "LOAD_RIGID_BODY" ? RLoad::rigid_body : RLoad::node);
+      } else if (n == "LOAD_SEGMENT" || n == "LOAD_SEGMENT_SET") {
+        parse_load_segment(b, n == "LOAD_SEGMENT_SET");
+      } else if (n == "LOAD_BODY_X" || n == "LOAD_BODY_Y" || n == "LOAD_BODY_Z" || n == "LOAD_BODY_VECTOR") {
+        parse_load_body(b, n.back() == 'X' ? 0 : n.back() == 'Y' ? 1 : n.back() == 'Z' ? 2 : 3);
+      } else if (n == "LOAD_BODY_PARTS") {
+        once(b);
+        if (!b.data.empty()) {
+          KCard c = card(b, 0, "card 1", W(b, 1));
+          body_parts_psid_ = int(c.i(0, "PSID"));
+          body_parts_ref_ = c.ref(0);
+        }
+      } else if (n == "BOUNDARY_PRESCRIBED_MOTION_NODE" || n == "BOUNDARY_PRESCRIBED_MOTION_SET" ||
+                 n == "BOUNDARY_PRESCRIBED_MOTION_RIGID") {
+        parse_prescribed_motion(b, n == "BOUNDARY_PRESCRIBED_MOTION_NODE" ? RLoad::motion_node
+                                   : n == "BOUNDARY_PRESCRIBED_MOTION_SET" ? RLoad::motion_set : RLoad::motion_rigid);
       } else {
         unsupported_.push_back(&b);
         // remember the ids that unsupported material and section keywords define, so that a
@@ -1613,6 +1652,135 @@ bool is_ascii_database(const std::string& n) {
     contacts_.push_back(ct);
   }
 
+  // Data cards of a load keyword: with the _ID option each definition is an ID card followed
+  // by its data card (several pairs may follow one keyword).
+  std::vector<std::size_t> load_data_cards(const Block& b) {
+    std::vector<std::size_t> out;
+    const std::size_t step = b.id_opt ? 2 : 1;
+    for (std::size_t k = b.id_opt ? 1 : skip_option_card(b); k < b.data.size(); k += step)
+      if (!is_blank(b.data[k].line->text)) out.push_back(k);
+    return out;
+  }
+
+  // LCID of a load card: required (a load without a curve does nothing)
+  void read_load_curve_field(KCard& c, int f, RLoad& l) {
+    l.lcid = int(c.i(f, "LCID"));
+    l.lc_ref = c.ref(f);
+    if (l.lcid == 0) c.error(1003, f, "LCID", "a load curve (*DEFINE_CURVE) is required");
+  }
+
+  // *LOAD_NODE_POINT / _SET: NID|NSID DOF LCID SF CID M1 M2 M3; *LOAD_RIGID_BODY: PID DOF LCID SF CID M1 M2 M3
+  void parse_load_node(const Block& b, RLoad::Kind kind) {
+    const char* idf = kind == RLoad::node ? "NID" : kind == RLoad::node_set ? "NSID" : "PID";
+    for (std::size_t k : load_data_cards(b)) {
+      KCard c = card(b, k, "", W(b, 8));
+      RLoad l;
+      l.kind = kind;
+      l.keyword = upper(b.keyword);
+      l.id = int(c.i(0, idf));
+      l.ref = c.ref(0);
+      l.dof = int(c.i(1, "DOF"));
+      if (l.dof >= 4 && l.dof <= 8) c.error(1102, 1, "DOF", l.dof == 4 ? "follower forces" : l.dof == 8 ? "follower moments" : "moments (solid nodes have no rotations)");
+      else if (l.dof < 1 || l.dof > 8) c.error(1006, 1, "DOF", "1 x, 2 y, 3 z");
+      read_load_curve_field(c, 2, l);
+      l.sf = c.r(3, "SF", 1.0);
+      if (c.i(4, "CID") != 0) c.error(1102, 4, "CID", "loads in a local coordinate system");
+      for (int f = 5; f < 8; ++f) c.i(f, "M1/M2/M3");
+      loads_.push_back(l);
+    }
+  }
+
+  // *LOAD_SEGMENT: LCID SF AT N1 N2 N3 N4 (N5..N8 of higher-order faces refused);
+  // *LOAD_SEGMENT_SET: SSID LCID SF AT DT
+  void parse_load_segment(const Block& b, bool set) {
+    for (std::size_t k : load_data_cards(b)) {
+      KCard c = card(b, k, "", W(b, 8));
+      RLoad l;
+      l.kind = set ? RLoad::segment_set : RLoad::segment;
+      l.keyword = upper(b.keyword);
+      const int o = set ? 1 : 0;
+      if (set) {
+        l.id = int(c.i(0, "SSID"));
+        l.ref = c.ref(0);
+      }
+      read_load_curve_field(c, o, l);
+      l.sf = c.r(o + 1, "SF", 1.0);
+      l.birth = c.r(o + 2, "AT");
+      if (set) {
+        double dt = c.r(4, "DT");
+        if (dt > 0) l.death = dt;
+      } else {
+        const char* names[] = {"N1", "N2", "N3", "N4"};
+        for (int q = 0; q < 4; ++q) {
+          l.nodes[std::size_t(q)] = int(c.i(3 + q, names[q]));
+          l.node_refs[std::size_t(q)] = c.ref(3 + q);
+        }
+        if (l.nodes[3] == 0) l.nodes[3] = l.nodes[2];  // a triangle
+        if (c.i(7, "N5") != 0) c.error(1102, 7, "N5", "higher-order (8-node) segments");
+      }
+      loads_.push_back(l);
+    }
+  }
+
+  // *LOAD_BODY_X / _Y / _Z: LCID SF LCIDDR XC YC ZC CID; *LOAD_BODY_VECTOR: the same, then V1 V2 V3
+  void parse_load_body(const Block& b, int axis) {
+    if (b.data.empty()) { missing_card(b, "card 1 (LCID)"); return; }
+    KCard c = card(b, 0, "card 1", W(b, 8));
+    RLoad l;
+    l.kind = RLoad::body;
+    l.keyword = upper(b.keyword);
+    l.ref = c.ref(0);
+    read_load_curve_field(c, 0, l);
+    l.sf = c.r(1, "SF", 1.0);
+    if (c.i(2, "LCIDDR") != 0) c.error(2006, 2, "LCIDDR", "no dynamic relaxation");
+    for (int f = 3; f < 6; ++f) c.r(f, "XC/YC/ZC");
+    if (c.i(6, "CID") != 0) c.error(1102, 6, "CID", "body loads in a local coordinate system");
+    if (axis < 3) {
+      l.dir[std::size_t(axis)] = 1;
+    } else if (b.data.size() < 2) {
+      missing_card(b, "card 2 (V1 V2 V3)");
+      return;
+    } else {
+      KCard c2 = card(b, 1, "card 2", W(b, 8));
+      l.dir = {c2.r(0, "V1"), c2.r(1, "V2"), c2.r(2, "V3")};
+      const double len = std::sqrt(l.dir[0] * l.dir[0] + l.dir[1] * l.dir[1] + l.dir[2] * l.dir[2]);
+      if (!(len > 0)) { c2.error(1003, 0, "V1", "the direction V1 V2 V3 must not be zero"); return; }
+      for (double& a : l.dir) a /= len;
+    }
+    loads_.push_back(l);
+  }
+
+  // *BOUNDARY_PRESCRIBED_MOTION_NODE / _SET / _RIGID: ID DOF VAD LCID SF VID DEATH BIRTH
+  void parse_prescribed_motion(const Block& b, RLoad::Kind kind) {
+    const char* idf = kind == RLoad::motion_node ? "NID" : kind == RLoad::motion_set ? "NSID" : "PID";
+    for (std::size_t k : load_data_cards(b)) {
+      KCard c = card(b, k, "", W(b, 8));
+      RLoad l;
+      l.kind = kind;
+      l.keyword = upper(b.keyword);
+      l.id = int(c.i(0, idf));
+      l.ref = c.ref(0);
+      l.dof = int(c.i(1, "DOF"));
+      if (l.dof == 4 || l.dof == -4) c.error(1102, 1, "DOF", "motion along a vector (VID)");
+      else if (l.dof >= 5 && l.dof <= 8) c.error(1102, 1, "DOF", kind == RLoad::motion_rigid ? "prescribed rotations of rigid bodies" : "rotations (solid nodes have no rotations)");
+      else if (l.dof < 1 || l.dof > 3) c.error(kind == RLoad::motion_rigid || l.dof < -4 || l.dof > 11 ? 1006 : 1102, 1, "DOF", "1 x, 2 y, 3 z");
+      const long long vad = c.i(2, "VAD");
+      if (vad == 0) l.vad = MotionKind::velocity;
+      else if (vad == 1) l.vad = MotionKind::acceleration;
+      else if (vad == 2) l.vad = MotionKind::displacement;
+      else if (vad == 3 || vad == 4) c.error(1102, 2, "VAD", vad == 3 ? "velocity as a function of displacement" : "relative displacement");
+      else c.error(1006, 2, "VAD", "0 velocity, 1 acceleration, 2 displacement");
+      read_load_curve_field(c, 3, l);
+      l.sf = c.r(4, "SF", 1.0);
+      if (c.i(5, "VID") != 0) c.error(1102, 5, "VID", "motion along a vector (VID)");
+      const double death = c.r(6, "DEATH");
+      l.death = death > 0 ? death : 1e28;
+      l.birth = c.r(7, "BIRTH");
+      if (l.death < l.birth) c.error(1003, 6, "DEATH", "the death time comes before the birth time");
+      loads_.push_back(l);
+    }
+  }
+
   void parse_curve(const Block& b) {
     std::size_t k = skip_option_card(b);
     if (k >= b.data.size()) { missing_card(b, "card 1 (LCID)"); return; }
@@ -1705,6 +1873,7 @@ bool is_ascii_database(const std::string& n) {
     resolve_walls();
     resolve_velocities();
     resolve_contacts();
+    resolve_loads();
   }
 
   void resolve_nodes() {
@@ -2064,12 +2233,200 @@ bool is_ascii_database(const std::string& n) {
       LoadCurve lc = curves_[k];
       const std::string card = "*DEFINE_CURVE " + std::to_string(lc.number);
       if (lc.t.size() < 2) err(1003, curve_refs_[k], card, "LCID", "a curve needs at least 2 points");
+      curve_index_.emplace(lc.number, int(k));
       lc.number = int(k) + 1;
       m_.load_curves.push_back(std::move(lc));
-      // one line for all curves (Diagnostics folds the repeats, naming the curves)
-      diag_.add(2004, loc_of(curve_refs_[k], card, nullptr, false), "no supported feature uses load curves yet");
     }
+    curve_used_.assign(curves_.size(), 0);
     m_.control.numlc = int(m_.load_curves.size());
+  }
+
+  // curves no load or motion uses: one warning line (Diagnostics folds the repeats)
+  void report_unused_curves() {
+    for (std::size_t k = 0; k < curves_.size(); ++k)
+      if (!curve_used_[k])
+        diag_.add(2004, loc_of(curve_refs_[k], "*DEFINE_CURVE " + std::to_string(curves_[k].number), nullptr, false));
+  }
+
+  // 0-based index of the curve a load refers to, or -1 (error 1310)
+  int curve_of(const RLoad& l) {
+    auto it = curve_index_.find(l.lcid);
+    if (it == curve_index_.end()) {
+      if (l.lcid != 0) err(1310, l.lc_ref, l.keyword, "LCID", "*DEFINE_CURVE " + std::to_string(l.lcid) + " is not defined");
+      return -1;
+    }
+    curve_used_[std::size_t(it->second)] = 1;
+    return it->second;
+  }
+
+  std::array<double, 3> axis_direction(int dof) {
+    std::array<double, 3> d{};
+    if (dof >= 1 && dof <= 3) d[std::size_t(dof - 1)] = 1;
+    return d;
+  }
+
+  // nodes of a load's NID or NSID
+  std::vector<int> load_nodes(const RLoad& l, bool set, const char* field) {
+    std::vector<int> nodes;
+    if (set) {
+      if (const RIdList* st = find_node_set(l.id, l.ref, l.keyword, field)) nodes = set_nodes(*st, l.keyword);
+    } else {
+      const int idx = node_index(l.id);
+      if (idx < 0) err(1202, l.ref, l.keyword, field, "node " + std::to_string(l.id) + " is not defined by *NODE");
+      else nodes.push_back(idx);
+    }
+    return nodes;
+  }
+
+  // the rigid material of a part (PID of *LOAD_RIGID_BODY, *BOUNDARY_PRESCRIBED_MOTION_RIGID), or -1
+  int rigid_material_of_part(const RLoad& l) {
+    auto p = part_index_.find(l.id);
+    if (p == part_index_.end()) {
+      err(1308, l.ref, l.keyword, "PID", "part " + std::to_string(l.id) + " is not defined" + refused_note('p', l.id));
+      return -1;
+    }
+    const int mt = part_material_[std::size_t(p->second)];
+    if (mt < 0) return -1;
+    if (hex_kernel_for_material_type(m_.materials[std::size_t(mt)].type) != HexKernel::rigid) {
+      err(1006, l.ref, l.keyword, "PID", "part " + std::to_string(l.id) + " is not a rigid body (*MAT_RIGID)");
+      return -1;
+    }
+    return mt;
+  }
+
+  void resolve_loads() {
+    std::vector<char> rigid_node;  // nodes of rigid bodies (prescribed node motions refused there)
+    for (const RLoad& l : loads_) {
+      const int curve = curve_of(l);
+      const int line = l.ref.line ? l.ref.line->number : l.lc_ref.line ? l.lc_ref.line->number : 0;
+      switch (l.kind) {
+        case RLoad::node:
+        case RLoad::node_set:
+          for (int n : load_nodes(l, l.kind == RLoad::node_set, l.kind == RLoad::node ? "NID" : "NSID")) {
+            if (curve < 0) continue;
+            m_.nodal_loads.push_back({n, axis_direction(l.dof), curve, l.sf, line});
+          }
+          break;
+        case RLoad::rigid_body: {
+          // the force acts at the body's centre of mass: spread over its nodes by mass (the
+          // engine's rigid-body update sums it back into one force, with no moment)
+          const int mt = rigid_material_of_part(l);
+          if (mt < 0 || curve < 0) break;
+          m_.rigid_body_loads.push_back({mt, axis_direction(l.dof), curve, l.sf, line});
+          break;
+        }
+        case RLoad::segment:
+        case RLoad::segment_set: {
+          std::vector<std::array<int, 4>> faces;
+          if (l.kind == RLoad::segment) {
+            std::array<int, 4> f{};
+            bool ok = true;
+            for (int q = 0; q < 4; ++q) {
+              f[std::size_t(q)] = node_index(l.nodes[std::size_t(q)]);
+              if (f[std::size_t(q)] < 0) {
+                const std::string fn = "N" + std::to_string(q + 1);
+                err(1202, l.node_refs[std::size_t(q)], l.keyword, fn.c_str(), "node " + std::to_string(l.nodes[std::size_t(q)]) + " is not defined by *NODE");
+                ok = false;
+                break;
+              }
+            }
+            if (ok) faces.push_back(f);
+          } else {
+            auto it = seg_sets_.find(l.id);
+            if (it == seg_sets_.end()) {
+              err(1309, l.ref, l.keyword, "SSID", "*SET_SEGMENT " + std::to_string(l.id) + " is not defined" + refused_note('S', l.id));
+              break;
+            }
+            for (std::size_t j = 0; j < it->second.segs.size(); ++j) {
+              std::array<int, 4> f{};
+              bool ok = true;
+              for (int q = 0; q < 4 && ok; ++q) {
+                f[std::size_t(q)] = node_index(it->second.segs[j][std::size_t(q)]);
+                if (f[std::size_t(q)] < 0) {
+                  const std::string fn = "N" + std::to_string(q + 1);
+                  err(1202, it->second.refs[j][std::size_t(q)], "*SET_SEGMENT " + std::to_string(l.id), fn.c_str(), "node " + std::to_string(it->second.segs[j][std::size_t(q)]) + " is not defined by *NODE");
+                  ok = false;
+                }
+              }
+              if (ok) faces.push_back(f);
+            }
+          }
+          if (curve < 0) break;
+          for (const auto& f : faces) {
+            PressureLoad p;
+            p.nodes = f;
+            p.curve = curve;
+            p.scale = l.sf;
+            p.birth = l.birth;
+            p.death = l.death;
+            p.line = line;
+            m_.pressure_loads.push_back(p);
+          }
+          break;
+        }
+        case RLoad::body:
+          if (curve >= 0) m_.body_loads.push_back({l.dir, curve, l.sf, line});
+          break;
+        case RLoad::motion_node:
+        case RLoad::motion_set: {
+          if (rigid_node.empty()) {
+            rigid_node.assign(std::size_t(m_.num_nodes()), 0);
+            for (int e = 0; e < m_.num_hexes(); ++e) {
+              const int mt = m_.hex_material[std::size_t(e)];
+              if (mt >= 0 && hex_kernel_for_material_type(m_.materials[std::size_t(mt)].type) == HexKernel::rigid)
+                for (int n : m_.hex_nodes[std::size_t(e)]) if (n >= 0) rigid_node[std::size_t(n)] = 1;
+            }
+          }
+          int refused = 0, first = -1;
+          for (int n : load_nodes(l, l.kind == RLoad::motion_set, l.kind == RLoad::motion_node ? "NID" : "NSID")) {
+            if (rigid_node[std::size_t(n)]) {
+              if (refused++ == 0) first = n;
+              continue;
+            }
+            if (curve < 0) continue;
+            PrescribedMotion pm;
+            pm.node = n;
+            pm.dir = axis_direction(l.dof);
+            pm.kind = l.vad;
+            pm.curve = curve;
+            pm.scale = l.sf;
+            pm.birth = l.birth;
+            pm.death = l.death;
+            pm.line = line;
+            m_.prescribed_motions.push_back(pm);
+          }
+          if (refused > 0)
+            err(1226, l.ref, l.keyword, l.kind == RLoad::motion_node ? "NID" : "NSID",
+                std::to_string(refused) + " node(s) of rigid bodies, the first node " + std::to_string(m_.node_id(first)) +
+                    ": prescribe the body's motion with *BOUNDARY_PRESCRIBED_MOTION_RIGID");
+          break;
+        }
+        case RLoad::motion_rigid: {
+          const int mt = rigid_material_of_part(l);
+          if (mt < 0 || curve < 0) break;
+          PrescribedMotion pm;
+          pm.rigid_material = mt;
+          pm.dir = axis_direction(l.dof);
+          pm.kind = l.vad;
+          pm.curve = curve;
+          pm.scale = l.sf;
+          pm.birth = l.birth;
+          pm.death = l.death;
+          pm.line = line;
+          m_.prescribed_motions.push_back(pm);
+          break;
+        }
+      }
+    }
+    if (body_parts_psid_ != 0) {
+      for (int p : parts_of(true, body_parts_psid_, body_parts_ref_, "*LOAD_BODY_PARTS", "PSID")) {
+        const int mt = part_material_[std::size_t(p)];
+        if (mt >= 0) m_.body_load_materials.push_back(mt);
+      }
+      std::sort(m_.body_load_materials.begin(), m_.body_load_materials.end());
+      m_.body_load_materials.erase(std::unique(m_.body_load_materials.begin(), m_.body_load_materials.end()), m_.body_load_materials.end());
+    }
+    report_unused_curves();
   }
 
   void resolve_walls() {

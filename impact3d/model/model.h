@@ -22,6 +22,8 @@ struct ControlData {
   int reaction_print_flag = 0;
   // card 5
   int numlc = 0, num_walls = 0, num_init_velocity_cards = 0, num_interfaces = 0;
+  int num_nodal_load_cards = 0, num_pressure_cards = 0, num_motion_cards = 0;
+  std::array<int, 3> base_acceleration{};  // card 5 fields 9-11: 1 = a base-acceleration card for x, y, z
   // card 6
   double end_time = 0;
   int end_cycle = 0;         // also stop after this many cycles (0: no limit; keyword ENDCYC)
@@ -88,6 +90,59 @@ struct LoadCurve {
   std::vector<double> t, f;
 };
 
+// Loads and prescribed motions (the engine applies them: impact3d/solve/loads.*).  Each is
+// driven by a load curve: `curve` is the 0-based index into Model::load_curves, and the value at
+// time t is scale * curve(t).
+struct NodalLoad {             // *LOAD_NODE_POINT / _SET, *LOAD_RIGID_BODY; DYNA3D nodal load cards
+  int node = 0;                // 0-based
+  std::array<double, 3> dir{}; // unit direction of the force
+  int curve = 0;
+  double scale = 1;
+  int line = 0;                // deck line (messages, echo)
+};
+
+// *LOAD_RIGID_BODY: a force at a rigid body's centre of mass
+struct RigidBodyLoad {
+  int material = 0;            // 0-based material index of the rigid body
+  std::array<double, 3> dir{};
+  int curve = 0;
+  double scale = 1;
+  int line = 0;
+};
+
+struct PressureLoad {          // *LOAD_SEGMENT / _SET; DYNA3D pressure cards
+  std::array<int, 4> nodes{};  // 0-based; nodes[2] == nodes[3]: a triangle
+  int curve = 0;
+  double scale = 1;            // a positive pressure pushes against the face's right-hand normal
+  std::array<double, 4> factor{1, 1, 1, 1};  // per-node multipliers (DYNA3D pressure cards)
+  double birth = 0;            // the pressure acts from this time on (LS-DYNA AT, DYNA3D arrival time)
+  double death = 1e28;         // ... until this time (*LOAD_SEGMENT_SET DT)
+  int line = 0;
+};
+
+// Body force (base acceleration): every node of the loaded materials gets the acceleration
+// -scale * curve(t) * dir (LS-DYNA's sign: a positive *LOAD_BODY_Z pulls bodies toward -z).
+struct BodyLoad {
+  std::array<double, 3> dir{};
+  int curve = 0;
+  double scale = 1;
+  int line = 0;
+};
+
+// A prescribed translation of a node (or of a rigid body's centre of mass) along a unit
+// direction, between its birth and death times; outside them the motion is free.
+enum class MotionKind : int { velocity = 0, acceleration = 1, displacement = 2 };  // LS-DYNA VAD
+struct PrescribedMotion {      // *BOUNDARY_PRESCRIBED_MOTION_NODE / _SET / _RIGID; DYNA3D cards
+  int node = -1;               // 0-based node, or -1 for a rigid body
+  int rigid_material = -1;     // 0-based material index of a rigid body (node == -1)
+  std::array<double, 3> dir{};
+  MotionKind kind = MotionKind::velocity;
+  int curve = 0;
+  double scale = 1;
+  double birth = 0, death = 1e28;
+  int line = 0;
+};
+
 struct Model {
   std::string title;
   std::string deck_file;
@@ -120,6 +175,15 @@ struct Model {
   std::vector<StoneWall> walls;
   std::vector<InitialVelocity> init_velocities;
   std::vector<SlidingInterface> interfaces;
+  std::vector<NodalLoad> nodal_loads;
+  std::vector<RigidBodyLoad> rigid_body_loads;
+  std::vector<PressureLoad> pressure_loads;
+  std::vector<BodyLoad> body_loads;
+  std::vector<int> body_load_materials;   // 0-based materials the body loads act on; empty = all
+  std::vector<PrescribedMotion> prescribed_motions;
+  bool has_loads() const {
+    return !nodal_loads.empty() || !rigid_body_loads.empty() || !pressure_loads.empty() || !body_loads.empty();
+  }
 
   int num_nodes() const { return static_cast<int>(x.size()); }
   // The deck's number of node i / solid e (0-based indices): what every message and output shows.

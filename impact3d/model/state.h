@@ -16,6 +16,7 @@ struct RigidBody {
   std::vector<int> nodes;       // 0-based node indices (sorted)
   double mass = 0;
   std::array<double, 3> com{}, vcom{};      // centre of mass, its velocity
+  std::array<double, 3> com0{};             // initial centre of mass (prescribed displacements)
   std::array<double, 9> inertia0{};         // inertia about the COM in the initial configuration
   std::array<double, 9> rot{1, 0, 0, 0, 1, 0, 0, 0, 1};  // rotation from initial configuration
   std::array<double, 3> omega{};            // angular velocity

@@ -43,6 +43,66 @@ const char* bc_name(int c) {
   return "?";
 }
 
+// Loads and prescribed motions: one line each, at most kShown per kind, then the count of the rest.
+std::string direction_text(const std::array<double, 3>& d) {
+  for (int a = 0; a < 3; ++a)
+    if (d[std::size_t(a)] == 1 && d[std::size_t((a + 1) % 3)] == 0 && d[std::size_t((a + 2) % 3)] == 0)
+      return std::string(1, "xyz"[a]);
+  char buf[96];
+  std::snprintf(buf, sizeof buf, "(%.4g, %.4g, %.4g)", d[0], d[1], d[2]);
+  return buf;
+}
+
+void write_loads(std::ostream& os, const Model& m) {
+  if (!m.has_loads() && m.prescribed_motions.empty()) return;
+  constexpr std::size_t kShown = 20;
+  os << " l o a d s   a n d   p r e s c r i b e d   m o t i o n s\n\n";
+  auto curve = [&](int c) { return std::to_string(m.load_curves[std::size_t(c)].number); };
+  auto more = [&](std::size_t shown, std::size_t total) {
+    if (total > shown) os << "   ... and " << (total - shown) << " more\n";
+  };
+  if (!m.nodal_loads.empty()) os << "   nodal loads: " << m.nodal_loads.size() << "\n";
+  for (std::size_t j = 0; j < std::min(kShown, m.nodal_loads.size()); ++j) {
+    const NodalLoad& l = m.nodal_loads[j];
+    os << "     node " << m.node_id(l.node) << " along " << direction_text(l.dir) << ": " << fmt("%.6e", l.scale)
+       << " x curve " << curve(l.curve) << " (force)\n";
+  }
+  more(kShown, m.nodal_loads.size());
+  if (!m.rigid_body_loads.empty()) os << "   rigid-body loads (at the centre of mass): " << m.rigid_body_loads.size() << "\n";
+  for (const RigidBodyLoad& l : m.rigid_body_loads)
+    os << "     material " << m.materials[std::size_t(l.material)].number << " along " << direction_text(l.dir) << ": "
+       << fmt("%.6e", l.scale) << " x curve " << curve(l.curve) << " (force)\n";
+  if (!m.pressure_loads.empty()) os << "   pressure loads: " << m.pressure_loads.size() << " face(s)\n";
+  for (std::size_t j = 0; j < std::min(kShown, m.pressure_loads.size()); ++j) {
+    const PressureLoad& l = m.pressure_loads[j];
+    os << "     face " << m.node_id(l.nodes[0]) << " " << m.node_id(l.nodes[1]) << " " << m.node_id(l.nodes[2]) << " "
+       << m.node_id(l.nodes[3]) << ": " << fmt("%.6e", l.scale) << " x curve " << curve(l.curve) << " (stress)";
+    if (l.birth > 0) os << " from " << fmt("%.6e", l.birth);
+    if (l.death < 1e28) os << " until " << fmt("%.6e", l.death);
+    if (l.factor != std::array<double, 4>{1, 1, 1, 1})
+      os << ", multipliers " << fmt("%.4g", l.factor[0]) << " " << fmt("%.4g", l.factor[1]) << " " << fmt("%.4g", l.factor[2])
+         << " " << fmt("%.4g", l.factor[3]);
+    os << "\n";
+  }
+  more(kShown, m.pressure_loads.size());
+  for (const BodyLoad& b : m.body_loads)
+    os << "   body load (base acceleration) along " << direction_text(b.dir) << ": -" << fmt("%.6e", b.scale) << " x curve "
+       << curve(b.curve) << " (acceleration)" << (m.body_load_materials.empty() ? ", all materials" : ", listed materials") << "\n";
+  if (!m.prescribed_motions.empty()) os << "   prescribed motions: " << m.prescribed_motions.size() << "\n";
+  for (std::size_t j = 0; j < std::min(kShown, m.prescribed_motions.size()); ++j) {
+    const PrescribedMotion& pm = m.prescribed_motions[j];
+    static const char* kinds[] = {"velocity", "acceleration", "displacement"};
+    os << "     " << (pm.node >= 0 ? "node " + std::to_string(m.node_id(pm.node)) : "rigid body of material " + std::to_string(m.materials[std::size_t(pm.rigid_material)].number))
+       << " " << kinds[int(pm.kind)] << " along " << direction_text(pm.dir) << ": " << fmt("%.6e", pm.scale) << " x curve "
+       << curve(pm.curve);
+    if (pm.birth > 0) os << " from " << fmt("%.6e", pm.birth);
+    if (pm.death < 1e28) os << " until " << fmt("%.6e", pm.death);
+    os << "\n";
+  }
+  more(kShown, m.prescribed_motions.size());
+  os << "\n";
+}
+
 // Nodal constraints (the node cards' codes and *BOUNDARY_SPC_*), one line per code with the
 // node count and the first node numbers.
 void write_constraints(std::ostream& os, const Model& m) {
@@ -218,6 +278,7 @@ void write_model_summary(std::ostream& os, const Model& m) {
     }
     os << "\n";
   }
+  write_loads(os, m);
   if (!m.node_th_blocks.empty() || !m.solid_th_blocks.empty()) {
     os << " t i m e   h i s t o r i e s\n\n";
     for (const auto& b : m.node_th_blocks) os << "   nodes " << b[0] << " to " << b[1] << "\n";

@@ -8,6 +8,7 @@
 #include "impact3d/contact/stonewall.h"
 #include "impact3d/init/initialize.h"
 #include "impact3d/solve/element_processing.h"
+#include "impact3d/solve/loads.h"
 #include "impact3d/solve/node_processing.h"
 #include "impact3d/solve/rigid_body.h"
 
@@ -68,6 +69,7 @@ StepStatus Engine::process_elements() {
 StepStatus Engine::initialize() {
   initialize_state(m_, s_);
   contact_.initialize(m_, s_);
+  prepare_loads(m_, s_, loads_);
   fixed_walls_ = fixed_walls_for_node_pass(m_);
   if (fixed_walls_.size() > kMaxFusedWalls) fixed_walls_.clear();
   s_.dt_half = 0;
@@ -89,12 +91,20 @@ StepStatus Engine::step() {
   const double dt_next = s.dt_next;
   const double dt_n = s.cycle == 0 ? 0.5 * dt_next : 0.5 * (s.dt_half + dt_next);
 
-  // external forces at x^n: contact penalty forces (walls act on velocities below)
+  // external forces at x^n: loads, then contact penalty forces (walls act on velocities below)
   auto t = Clock::now();
-  if (!contact_.empty()) {
+  const bool has_fext = !contact_.empty() || loads_.has_loads;
+  if (has_fext) {
     std::fill(s.fext_x.begin(), s.fext_x.end(), 0.0);
     std::fill(s.fext_y.begin(), s.fext_y.end(), 0.0);
     std::fill(s.fext_z.begin(), s.fext_z.end(), 0.0);
+  }
+  if (loads_.has_loads) {
+    apply_loads_to_nodes(m_, s, loads_, s.time);
+    times_.loads += seconds_since(t);
+    t = Clock::now();
+  }
+  if (!contact_.empty()) {
     contact_.apply(m_, s, dt_next);
     times_.contact += seconds_since(t);
     t = Clock::now();
@@ -105,9 +115,10 @@ StepStatus Engine::step() {
   NodePass np;
   np.dt_n = dt_n;
   np.dt_next = dt_next;
-  np.has_fext = !contact_.empty();
+  np.has_fext = has_fext;
   np.store_force = !s.rigid.empty();
-  np.update_positions = s.rigid.empty() && (m_.walls.empty() || !fixed_walls_.empty());
+  np.update_positions = s.rigid.empty() && !loads_.has_motions &&
+                        (m_.walls.empty() || !fixed_walls_.empty());
   np.walls = &fixed_walls_;
   update_velocities_for_nodes(s, np);
   if (!np.update_positions) {
@@ -117,9 +128,19 @@ StepStatus Engine::step() {
     if (!m_.walls.empty()) apply_stonewalls_to_nodes(m_, s, dt_next, dt_n);
     times_.walls += seconds_since(t);
     t = Clock::now();
+    if (loads_.has_motions) {
+      apply_prescribed_motions(m_, s, loads_, s.time, dt_n, dt_next);
+      times_.loads += seconds_since(t);
+      t = Clock::now();
+    }
     update_positions_for_nodes(s, dt_next);
   }
   times_.nodes += seconds_since(t);
+  if (loads_.has_loads || loads_.has_motions) {
+    t = Clock::now();
+    book_external_work(m_, s, loads_, dt_n);
+    times_.loads += seconds_since(t);
+  }
   t = Clock::now();
   if (!s.rigid.empty()) update_rigid_body_positions(s, dt_next);
   if (!m_.walls.empty()) update_moving_walls(m_, s, dt_next);

@@ -8,6 +8,7 @@
 #include "impact3d/model/state.h"
 #include "impact3d/contact/sliding_interface.h"
 #include "impact3d/contact/stonewall.h"
+#include "impact3d/solve/loads.h"
 
 namespace impact3d {
 
@@ -17,6 +18,7 @@ enum class StepStatus { ok, finished, negative_volume, non_finite, dt_too_small 
 // run's final report).
 struct PhaseTimes {
   double contact = 0;   // sliding interfaces (search and penalty forces)
+  double loads = 0;     // loads, prescribed motions and their work
   double nodes = 0;     // node pass: forces, accelerations, velocities, positions, kinetic energy
   double walls = 0;     // stonewalls and rigid bodies
   double elements = 0;  // element pass and its reductions
@@ -62,6 +64,7 @@ class Engine {
   SlidingInterfaces contact_;
   int error_elem_ = -1;
   PhaseTimes times_;
+  LoadSet loads_;
   std::vector<FixedWall> fixed_walls_;  // walls the node pass applies itself (see NodePass)
 };
 

@@ -62,16 +62,33 @@ void update_rigid_body_velocities(State& s, double dt_n, double dt_next) {
     }
     Vec3 w = calc_omega(rb);
     for (int a = 0; a < 3; ++a) rb.omega[std::size_t(a)] = w(a);
-    Vec3 vc(rb.vcom[0], rb.vcom[1], rb.vcom[2]);
-    for (int n : rb.nodes) {
-      const std::size_t k = std::size_t(n);
-      Vec3 r = Vec3(s.x[k], s.y[k], s.z[k]) - c;
-      Vec3 v = vc + w.cross(r);
-      s.vx[k] = v(0);
-      s.vy[k] = v(1);
-      s.vz[k] = v(2);
-    }
+    set_rigid_body_node_velocities(s, rb);
   }
+}
+
+void set_rigid_body_node_velocities(State& s, const RigidBody& rb) {
+  const Vec3 c(rb.com[0], rb.com[1], rb.com[2]);
+  const Vec3 w(rb.omega[0], rb.omega[1], rb.omega[2]);
+  const Vec3 vc(rb.vcom[0], rb.vcom[1], rb.vcom[2]);
+  for (int n : rb.nodes) {
+    const std::size_t k = std::size_t(n);
+    Vec3 r = Vec3(s.x[k], s.y[k], s.z[k]) - c;
+    Vec3 v = vc + w.cross(r);
+    s.vx[k] = v(0);
+    s.vy[k] = v(1);
+    s.vz[k] = v(2);
+  }
+}
+
+std::array<double, 3> rigid_body_old_velocity(const State& s, const RigidBody& rb) {
+  double p[3] = {0, 0, 0};
+  for (int n : rb.nodes) {
+    const std::size_t k = std::size_t(n);
+    p[0] += s.mass[k] * s.vx_old[k];
+    p[1] += s.mass[k] * s.vy_old[k];
+    p[2] += s.mass[k] * s.vz_old[k];
+  }
+  return {p[0] / rb.mass, p[1] / rb.mass, p[2] / rb.mass};
 }
 
 void update_rigid_body_positions(State& s, double dt_next) {

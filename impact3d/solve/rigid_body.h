@@ -9,6 +9,10 @@ namespace impact3d {
 // After the velocity update: integrate each body's momentum and angular momentum from the net
 // nodal forces (s.fx/fy/fz) over dt_n, then set its nodes' velocities to the rigid field.
 void update_rigid_body_velocities(State& s, double dt_n, double dt_next);
+// Sets the velocities of a body's nodes to its rigid field vcom + omega x (x - com).
+void set_rigid_body_node_velocities(State& s, const RigidBody& rb);
+// The body's centre-of-mass velocity v^{n-1/2} from its nodes' s.vx_old... (during a cycle).
+std::array<double, 3> rigid_body_old_velocity(const State& s, const RigidBody& rb);
 // After the position update: place the body's nodes from its centre and rotation (no drift).
 void update_rigid_body_positions(State& s, double dt_next);
 

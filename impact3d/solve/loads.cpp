@@ -1,0 +1,244 @@
+#include "impact3d/solve/loads.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "impact3d/solve/rigid_body.h"
+
+namespace impact3d {
+
+double value_of_curve(const LoadCurve& lc, double t) {
+  const std::size_t n = lc.t.size();
+  if (n == 0) return 0;
+  if (n == 1) return lc.f[0];
+  // segment [j, j+1] holding t; the first and last segments extend beyond the ends
+  std::size_t j = std::size_t(std::upper_bound(lc.t.begin(), lc.t.end(), t) - lc.t.begin());
+  j = j == 0 ? 0 : std::min(j - 1, n - 2);
+  const double t0 = lc.t[j], t1 = lc.t[j + 1];
+  const double w = (t - t0) / (t1 - t0);
+  return lc.f[j] + w * (lc.f[j + 1] - lc.f[j]);
+}
+
+namespace {
+
+double curve_value(const Model& m, int curve, double t) {
+  return value_of_curve(m.load_curves[std::size_t(curve)], t);
+}
+
+// Area vector of a face (right-hand rule n1 n2 n3 n4): half the cross product of the diagonals,
+// which for a triangle (n3 == n4) is its area vector.
+std::array<double, 3> area_vector_of_face(const State& s, const std::array<int, 4>& f) {
+  const auto k = [&](int j) { return std::size_t(f[std::size_t(j)]); };
+  const double ax = s.x[k(2)] - s.x[k(0)], ay = s.y[k(2)] - s.y[k(0)], az = s.z[k(2)] - s.z[k(0)];
+  const double bx = s.x[k(3)] - s.x[k(1)], by = s.y[k(3)] - s.y[k(1)], bz = s.z[k(3)] - s.z[k(1)];
+  return {0.5 * (ay * bz - az * by), 0.5 * (az * bx - ax * bz), 0.5 * (ax * by - ay * bx)};
+}
+
+void add_force_to_node(State& s, int node, const double* f) {
+  const std::size_t k = std::size_t(node);
+  s.fext_x[k] += f[0];
+  s.fext_y[k] += f[1];
+  s.fext_z[k] += f[2];
+}
+
+// F . (v^{n-1/2} + v^{n+1/2}) / 2 for one node
+double power_on_node(const State& s, int node, const double* f) {
+  const std::size_t k = std::size_t(node);
+  return 0.5 * (f[0] * (s.vx_old[k] + s.vx[k]) + f[1] * (s.vy_old[k] + s.vy[k]) +
+                f[2] * (s.vz_old[k] + s.vz[k]));
+}
+
+int rigid_body_of_material(const State& s, int material) {
+  for (std::size_t r = 0; r < s.rigid.size(); ++r)
+    if (s.rigid[r].material == material) return int(r);
+  return -1;
+}
+
+bool motion_is_active(const PrescribedMotion& pm, double t) { return t >= pm.birth && t <= pm.death; }
+
+// The velocity along pm.dir that the motion prescribes for v^{n+1/2}, from the current one
+// (v^{n-1/2} for the acceleration form) and the current displacement along dir.
+double prescribed_velocity(const Model& m, const PrescribedMotion& pm, double t, double dt_n,
+                           double dt_next, double v_old_along, double disp_along) {
+  switch (pm.kind) {
+    case MotionKind::velocity:
+      return pm.scale * curve_value(m, pm.curve, t + 0.5 * dt_next);
+    case MotionKind::acceleration:
+      return v_old_along + dt_n * pm.scale * curve_value(m, pm.curve, t);
+    case MotionKind::displacement:
+      return (pm.scale * curve_value(m, pm.curve, t + dt_next) - disp_along) / dt_next;
+  }
+  return 0;
+}
+
+}  // namespace
+
+void prepare_loads(const Model& m, const State& s, LoadSet& loads) {
+  loads.nodal_force.assign(3 * m.nodal_loads.size(), 0.0);
+  loads.pressure_force.assign(12 * m.pressure_loads.size(), 0.0);
+  loads.rigid_force.assign(3 * m.rigid_body_loads.size(), 0.0);
+  loads.rigid_body.clear();
+  for (const RigidBodyLoad& l : m.rigid_body_loads) loads.rigid_body.push_back(rigid_body_of_material(s, l.material));
+  loads.body_node.clear();
+  if (!m.body_loads.empty()) {
+    loads.body_node.assign(std::size_t(s.nn), m.body_load_materials.empty() ? 1 : 0);
+    if (!m.body_load_materials.empty()) {
+      std::vector<uint8_t> loaded(m.materials.size(), 0);
+      for (int mt : m.body_load_materials) loaded[std::size_t(mt)] = 1;
+      for (int e = 0; e < s.ne; ++e)
+        if (loaded[std::size_t(s.mat[std::size_t(e)])])
+          for (int n : s.conn[std::size_t(e)]) loads.body_node[std::size_t(n)] = 1;
+    }
+  }
+  loads.free_velocity.assign(m.prescribed_motions.size(), 0.0);
+  loads.active.assign(m.prescribed_motions.size(), 0);
+  loads.has_loads = m.has_loads();
+  loads.has_motions = !m.prescribed_motions.empty();
+}
+
+void apply_loads_to_nodes(const Model& m, State& s, LoadSet& loads, double t) {
+  for (std::size_t j = 0; j < m.nodal_loads.size(); ++j) {
+    const NodalLoad& l = m.nodal_loads[j];
+    const double v = l.scale * curve_value(m, l.curve, t);
+    double* f = &loads.nodal_force[3 * j];
+    for (int a = 0; a < 3; ++a) f[a] = v * l.dir[std::size_t(a)];
+    add_force_to_node(s, l.node, f);
+  }
+  for (std::size_t j = 0; j < m.rigid_body_loads.size(); ++j) {
+    // at the centre of mass: spread over the body's nodes by mass (sums to F, no moment)
+    const RigidBodyLoad& l = m.rigid_body_loads[j];
+    double* F = &loads.rigid_force[3 * j];
+    const int r = loads.rigid_body[j];
+    if (r < 0) continue;
+    const RigidBody& rb = s.rigid[std::size_t(r)];
+    const double v = l.scale * curve_value(m, l.curve, t);
+    for (int a = 0; a < 3; ++a) F[a] = v * l.dir[std::size_t(a)];
+    for (int n : rb.nodes) {
+      const double w = s.mass[std::size_t(n)] / rb.mass;
+      const double f[3] = {w * F[0], w * F[1], w * F[2]};
+      add_force_to_node(s, n, f);
+    }
+  }
+  for (std::size_t j = 0; j < m.pressure_loads.size(); ++j) {
+    const PressureLoad& l = m.pressure_loads[j];
+    double* f = &loads.pressure_force[12 * j];
+    std::fill(f, f + 12, 0.0);
+    if (t < l.birth || t > l.death) continue;
+    const double p = l.scale * curve_value(m, l.curve, t);
+    const std::array<double, 3> A = area_vector_of_face(s, l.nodes);
+    const bool triangle = l.nodes[2] == l.nodes[3];
+    const int corners = triangle ? 3 : 4;
+    for (int c = 0; c < corners; ++c) {
+      // a positive pressure pushes against the normal; each corner takes its share of the
+      // face, scaled by its multiplier
+      const double share = -p * l.factor[std::size_t(c)] / corners;
+      for (int a = 0; a < 3; ++a) f[3 * c + a] = share * A[std::size_t(a)];
+      add_force_to_node(s, l.nodes[std::size_t(c)], &f[3 * c]);
+    }
+  }
+  if (!m.body_loads.empty()) {
+    std::array<double, 3> acc{};
+    for (const BodyLoad& b : m.body_loads) {
+      const double v = -b.scale * curve_value(m, b.curve, t);
+      for (int a = 0; a < 3; ++a) acc[std::size_t(a)] += v * b.dir[std::size_t(a)];
+    }
+    loads.body_acc = acc;
+    for (int i = 0; i < s.nn; ++i) {
+      const std::size_t k = std::size_t(i);
+      if (!loads.body_node[k]) continue;
+      s.fext_x[k] += s.mass[k] * acc[0];
+      s.fext_y[k] += s.mass[k] * acc[1];
+      s.fext_z[k] += s.mass[k] * acc[2];
+    }
+  }
+}
+
+void apply_prescribed_motions(const Model& m, State& s, LoadSet& loads, double t, double dt_n,
+                              double dt_next) {
+  for (std::size_t j = 0; j < m.prescribed_motions.size(); ++j) {
+    const PrescribedMotion& pm = m.prescribed_motions[j];
+    loads.active[j] = 0;
+    if (!motion_is_active(pm, t)) continue;
+    const auto& d = pm.dir;
+    if (pm.node >= 0) {
+      const std::size_t k = std::size_t(pm.node);
+      const double v_along = s.vx[k] * d[0] + s.vy[k] * d[1] + s.vz[k] * d[2];
+      const double v_old_along = s.vx_old[k] * d[0] + s.vy_old[k] * d[1] + s.vz_old[k] * d[2];
+      const double disp = (s.x[k] - m.x[k]) * d[0] + (s.y[k] - m.y[k]) * d[1] + (s.z[k] - m.z[k]) * d[2];
+      const double vp = prescribed_velocity(m, pm, t, dt_n, dt_next, v_old_along, disp);
+      loads.free_velocity[j] = v_along;
+      loads.active[j] = 1;
+      s.vx[k] += (vp - v_along) * d[0];
+      s.vy[k] += (vp - v_along) * d[1];
+      s.vz[k] += (vp - v_along) * d[2];
+      continue;
+    }
+    const int r = rigid_body_of_material(s, pm.rigid_material);
+    if (r < 0) continue;
+    RigidBody& rb = s.rigid[std::size_t(r)];
+    const double v_along = rb.vcom[0] * d[0] + rb.vcom[1] * d[1] + rb.vcom[2] * d[2];
+    const std::array<double, 3> vc_old = rigid_body_old_velocity(s, rb);
+    const double v_old_along = vc_old[0] * d[0] + vc_old[1] * d[1] + vc_old[2] * d[2];
+    double disp = 0;
+    for (int a = 0; a < 3; ++a) disp += (rb.com[std::size_t(a)] - rb.com0[std::size_t(a)]) * d[std::size_t(a)];
+    const double vp = prescribed_velocity(m, pm, t, dt_n, dt_next, v_old_along, disp);
+    loads.free_velocity[j] = v_along;
+    loads.active[j] = 1;
+    for (int a = 0; a < 3; ++a) rb.vcom[std::size_t(a)] += (vp - v_along) * d[std::size_t(a)];
+    set_rigid_body_node_velocities(s, rb);
+  }
+}
+
+void book_external_work(const Model& m, State& s, const LoadSet& loads, double dt_n) {
+  double w = 0;
+  for (std::size_t j = 0; j < m.nodal_loads.size(); ++j)
+    w += power_on_node(s, m.nodal_loads[j].node, &loads.nodal_force[3 * j]);
+  for (std::size_t j = 0; j < m.pressure_loads.size(); ++j) {
+    const PressureLoad& l = m.pressure_loads[j];
+    const int corners = l.nodes[2] == l.nodes[3] ? 3 : 4;
+    for (int c = 0; c < corners; ++c) w += power_on_node(s, l.nodes[std::size_t(c)], &loads.pressure_force[12 * j + 3 * std::size_t(c)]);
+  }
+  for (std::size_t j = 0; j < m.rigid_body_loads.size(); ++j) {
+    const int r = loads.rigid_body[j];
+    if (r < 0) continue;
+    const RigidBody& rb = s.rigid[std::size_t(r)];
+    const std::array<double, 3> vo = rigid_body_old_velocity(s, rb);
+    const double* F = &loads.rigid_force[3 * j];
+    for (int a = 0; a < 3; ++a) w += F[a] * 0.5 * (vo[std::size_t(a)] + rb.vcom[std::size_t(a)]);
+  }
+  if (!m.body_loads.empty()) {
+    // body forces on free components only: a held component does no work (its velocity stays)
+    double px = 0, py = 0, pz = 0;
+    for (int i = 0; i < s.nn; ++i) {
+      const std::size_t k = std::size_t(i);
+      if (!loads.body_node[k]) continue;
+      px += s.mass[k] * (s.vx_old[k] + s.vx[k]);
+      py += s.mass[k] * (s.vy_old[k] + s.vy[k]);
+      pz += s.mass[k] * (s.vz_old[k] + s.vz[k]);
+    }
+    w += 0.5 * (loads.body_acc[0] * px + loads.body_acc[1] * py + loads.body_acc[2] * pz);
+  }
+  // reactions of prescribed motions: m (v_prescribed - v_free) / dt_n along dir, on the mean velocity
+  for (std::size_t j = 0; j < m.prescribed_motions.size(); ++j) {
+    if (!loads.active[j]) continue;
+    const PrescribedMotion& pm = m.prescribed_motions[j];
+    const auto& d = pm.dir;
+    if (pm.node >= 0) {
+      const std::size_t k = std::size_t(pm.node);
+      const double v_new = s.vx[k] * d[0] + s.vy[k] * d[1] + s.vz[k] * d[2];
+      const double v_old = s.vx_old[k] * d[0] + s.vy_old[k] * d[1] + s.vz_old[k] * d[2];
+      w += s.mass[k] * (v_new - loads.free_velocity[j]) / dt_n * 0.5 * (v_old + v_new);
+    } else {
+      const int r = rigid_body_of_material(s, pm.rigid_material);
+      if (r < 0) continue;
+      const RigidBody& rb = s.rigid[std::size_t(r)];
+      const std::array<double, 3> vc_old = rigid_body_old_velocity(s, rb);
+      const double v_new = rb.vcom[0] * d[0] + rb.vcom[1] * d[1] + rb.vcom[2] * d[2];
+      const double v_old = vc_old[0] * d[0] + vc_old[1] * d[1] + vc_old[2] * d[2];
+      w += rb.mass * (v_new - loads.free_velocity[j]) / dt_n * 0.5 * (v_old + v_new);
+    }
+  }
+  s.external_work += dt_n * w;
+}
+
+}  // namespace impact3d

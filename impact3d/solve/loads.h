@@ -1,0 +1,52 @@
+#pragma once
+// Loads and prescribed motions in the cycle (docs/developer-guide.md, "Cycle phases"):
+//   forces:    apply_loads_to_nodes      nodal forces, pressures on faces (on the current
+//                                        geometry) and body forces into s.fext_x/y/z at t^n
+//   velocities: (node pass)              a^n and v^{n+1/2} from the internal and external forces
+//   motions:   apply_prescribed_motions  prescribed components of v^{n+1/2} (nodes and rigid bodies)
+//   books:     book_external_work        the work of the loads and of the prescribed motions' reactions
+// The external work of one cycle is F^n . (v^{n-1/2} + v^{n+1/2}) / 2 * dt^n, the form that
+// balances the central-difference kinetic energy (as the contact energy is booked).
+
+#include <vector>
+
+#include "impact3d/model/model.h"
+#include "impact3d/model/state.h"
+
+namespace impact3d {
+
+// Value of a load curve at time t: linear between its points; before the first and after the
+// last point the first and last segments are extended (as LS-DYNA extrapolates load curves).
+double value_of_curve(const LoadCurve& lc, double t);
+
+// The loads of a model, laid out for the cycle.  Built once at initialization.
+struct LoadSet {
+  // nodal forces and pressures: the force of each this cycle, kept for the work book
+  std::vector<double> nodal_force;     // 3 per Model::nodal_loads entry
+  std::vector<double> pressure_force;  // 12 per Model::pressure_loads entry (4 nodes x 3)
+  std::vector<double> rigid_force;     // 3 per Model::rigid_body_loads entry
+  std::vector<int> rigid_body;         // its rigid body (index in State::rigid)
+  // body loads: mass of each node they act on (0 for the others); empty without body loads
+  std::vector<uint8_t> body_node;      // 1: the body loads act on this node
+  std::array<double, 3> body_acc{};    // this cycle's body acceleration
+  // prescribed motions: v^{n+1/2} before the prescription (for the reaction's work)
+  std::vector<double> free_velocity;   // 1 per Model::prescribed_motions entry
+  std::vector<uint8_t> active;         // 1 when the motion acted this cycle
+  bool has_loads = false, has_motions = false;
+};
+
+void prepare_loads(const Model& m, const State& s, LoadSet& loads);
+
+// Adds this cycle's load forces at time t (= t^n, positions x^n) to s.fext_x/y/z.
+void apply_loads_to_nodes(const Model& m, State& s, LoadSet& loads, double t);
+
+// After the velocity update (and rigid bodies and walls): sets the prescribed components of
+// v^{n+1/2}.  t is t^n; dt_n and dt_next as in the node pass.
+void apply_prescribed_motions(const Model& m, State& s, LoadSet& loads, double t, double dt_n,
+                              double dt_next);
+
+// Books the work of the loads and of the prescribed motions' reactions over this cycle in
+// s.external_work (call after the velocities are final).
+void book_external_work(const Model& m, State& s, const LoadSet& loads, double dt_n);
+
+}  // namespace impact3d
