@@ -61,8 +61,9 @@ for t in "${targets[@]}"; do
   [ -d "tests/fuzz/$t" ] && regressions=("tests/fuzz/$t")
   max_len=$(awk -v t="$t" '$1 == t { print "-max_len=" $2 }' fuzz/max_len.txt)
   echo "== $t: ${seconds} s"
+  # (-timeout=60: under nice 19 on a loaded machine a 0.5 s input can take 15 s of wall time)
   nice -n 19 "$B/fuzz/fuzz_$t" "$C/$t" "$B/fuzz-corpus/$t" "${regressions[@]}" "${dict[@]}" $max_len -max_total_time="$seconds" \
-    -timeout=10 -rss_limit_mb=2048 -malloc_limit_mb=1024 -print_final_stats=1 \
+    -timeout=60 -rss_limit_mb=2048 -malloc_limit_mb=1024 -print_final_stats=1 \
     -artifact_prefix="$C/$t-" > "$C/$t.log" 2>&1 || echo "   $t: finding, see $C/$t.log"
   grep -E '^stat::(number_of_executed_units|peak_rss_mb)|^Done|ERROR|SUMMARY' "$C/$t.log" | sed 's/^/   /' || true
 done
