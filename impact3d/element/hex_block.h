@@ -21,6 +21,9 @@ namespace impact3d {
 // groups (and with it every sum) does not depend on the machine.
 constexpr int kLanes = 8;
 using Lanes = double[kLanes];
+// Per-element history values a material may carry beyond stress, back stress and plastic
+// strain (material_types.h); a group gathers only as many as its material has.
+constexpr int kMaxHistory = 4;
 
 #define IMPACT3D_FOR_LANES _Pragma("omp simd") for (int l = 0; l < kLanes; ++l)
 
@@ -34,6 +37,7 @@ struct alignas(64) HexBlock {
   Lanes v, vm, amax, rho;                       // volume at x^n and midpoint, largest face, density
   Lanes d[6], w[3], trd;                        // strain rate, spin, trace of d
   Lanes sig[6], old[6], back[6], eps_p, yielded;  // stress (old: at the start of the step)
+  Lanes hist[kMaxHistory];                      // the material's history values
   Lanes hgs[12];                                // hourglass resultants (types 4, 5)
   Lanes q, q_old;                               // bulk viscosity
   Lanes de_ie, de_hg, de_bv, dt;                // energy increments, element step

@@ -32,22 +32,7 @@ void init_nodes(const Model& m, State& s) {
 void init_materials(const Model& m, State& s) {
   s.mats.resize(m.materials.size());
   for (std::size_t k = 0; k < m.materials.size(); ++k) {
-    const MaterialData& d = m.materials[k];
-    MaterialConstants& c = s.mats[k];
-    c.type = d.type;
-    c.rho = d.rho;
-    c.E = d.E;
-    c.nu = d.nu;
-    c.sigma_y = d.sigma_y;
-    c.E_tan = d.E_tan;
-    c.beta = d.beta;
-    c.initially_elastic = d.initially_elastic;
-    if (d.type == 3 && d.rate_c > 0 && d.rate_p > 0) {
-      c.rate_c = d.rate_c;
-      c.rate_inv_p = 1.0 / d.rate_p;
-    }
-    if (d.type == 3 && d.fail_strain > 0) c.fail_strain = d.fail_strain;
-    derive_material_constants(c);
+    s.mats[k] = derive_constants(m.materials[k], m);  // the type's own (material_types.h)
   }
 }
 
@@ -63,11 +48,14 @@ void init_elements(const Model& m, State& s) {
   build_element_groups(s);
   // back stresses and hourglass resultants only when some group carries them
   bool back = false, hgs = false;
+  s.hist_stride = 0;
   for (const ElementGroup& g : s.groups) {
-    back = back || group_carries_back_stress(g.kernel, s.mats[std::size_t(g.material)]);
+    back = back || group_carries_back_stress(*g.solid, s.mats[std::size_t(g.material)]);
+    s.hist_stride = std::max(s.hist_stride, g.history);
     hgs = hgs || group_carries_hourglass_state(m.materials[std::size_t(g.material)]);
   }
   s.back.assign(back ? std::size_t(6) * ne : 0, 0.0);
+  s.hist.assign(std::size_t(s.hist_stride) * std::size_t(ne), 0.0);
   s.hgs.assign(hgs ? std::size_t(12) * ne : 0, 0.0);
   s.mat_internal.assign(s.mats.size(), 0.0);
   s.mat_hourglass.assign(s.mats.size(), 0.0);
@@ -146,7 +134,7 @@ std::array<double, 3> rigid_omega(const std::array<double, 9>& I, const std::arr
 
 void init_rigid_bodies(State& s) {
   for (std::size_t k = 0; k < s.mats.size(); ++k) {
-    if (s.mats[k].type != 20) continue;
+    if (!material_type(s.mats[k].type).rigid) continue;
     RigidBody rb;
     rb.material = int(k);
     for (int e = 0; e < s.ne; ++e)

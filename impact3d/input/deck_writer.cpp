@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "common/cards.h"
+#include "impact3d/material/material_types.h"
 
 namespace impact3d {
 
@@ -156,6 +157,41 @@ class KeywordWriter {
     if (!f.empty()) os_ << kcard(f) << "\n";
   }
 
+  // *MAT_...: the cards of the type's table (material_types.h), a comment line of field names
+  // above each.
+  void write_material(const MaterialType& t, const MaterialData& md, int id) {
+    os_ << "*" << t.keywords.front() << "\n";
+    for (int c = 0; c < t.keyword_cards; ++c) {
+      std::vector<std::string> keys(8);
+      std::vector<KField> f(8, B());
+      int n = 0;
+      if (c == 0) {
+        keys[0] = "mid", f[0] = I(id);
+        keys[1] = "ro", f[1] = R(md.rho);
+        n = 2;
+      }
+      for (const MaterialParam& p : t.params) {
+        if (p.kcard != c || p.kfield < 0 || p.kfield > 7 || !p.keyword_write) continue;
+        const double v = param_value(md, p);
+        std::string k = p.key;
+        for (char& ch : k) ch = char(std::tolower(static_cast<unsigned char>(ch)));
+        keys[std::size_t(p.kfield)] = k;
+        const bool whole = p.check == ParamCheck::curve || p.check == ParamCheck::integer || p.check == ParamCheck::flag01;
+        f[std::size_t(p.kfield)] = whole && v == std::floor(v) && std::fabs(v) < 1e9 ? I((long long)v) : R(v);
+        n = std::max(n, p.kfield + 1);
+      }
+      std::string head;
+      for (int k = 0; k < n; ++k) {
+        const std::string& key = keys[std::size_t(k)];
+        head += std::string(key.size() < 10 ? 10 - key.size() : 0, ' ') + key;
+      }
+      if (head.size() >= 2) head.replace(0, 2, "$#");
+      if (std::size_t(c) < t.keyword_heads.size() && t.keyword_heads[std::size_t(c)]) head = t.keyword_heads[std::size_t(c)];
+      f.resize(std::size_t(n));
+      os_ << (head.empty() ? "$#" : head) << "\n" << kcard(f) << "\n";
+    }
+  }
+
   void materials() {
     os_ << "*SECTION_SOLID\n$#   secid    elform\n" << kcard({I(1), I(1)}) << "\n";
     for (std::size_t k = 0; k < m_.materials.size(); ++k) {
@@ -163,18 +199,8 @@ class KeywordWriter {
       int id = int(k) + 1;
       os_ << "*PART\n$# title\n" << md.title << "\n";
       os_ << "$#     pid     secid       mid     eosid      hgid\n" << kcard({I(id), I(1), I(id), I(0), I(id)}) << "\n";
-      if (md.type == 1) {
-        os_ << "*MAT_ELASTIC\n$#     mid        ro         e        pr\n"
-            << kcard({I(id), R(md.rho), R(md.E), R(md.nu)}) << "\n";
-      } else if (md.type == 3) {
-        os_ << "*MAT_PLASTIC_KINEMATIC\n$#     mid        ro         e        pr      sigy      etan      beta\n"
-            << kcard({I(id), R(md.rho), R(md.E), R(md.nu), R(md.sigma_y), R(md.E_tan), R(md.beta)}) << "\n"
-            << "$#     src       srp        fs        vp\n" << kcard({R(md.rate_c), R(md.rate_p), R(md.fail_strain), R(0)}) << "\n";
-      } else if (md.type == 20) {
-        os_ << "*MAT_RIGID\n$#     mid        ro         e        pr\n"
-            << kcard({I(id), R(md.rho), R(md.E), R(md.nu)}) << "\n"
-            << "$#     cmo      con1      con2\n" << kcard({R(0), R(0), R(0)}) << "\n"
-            << "$#lco or a1\n\n";
+      if (const MaterialType* t = find_material_type(md.type)) {
+        write_material(*t, md, id);
       } else {
         note("material " + std::to_string(id) + ": type " + std::to_string(md.type) + " cannot be written");
       }
@@ -474,16 +500,20 @@ void write_fixed_deck(std::ostream& os, const Model& m, std::vector<std::string>
               .i(26, 30, md.hourglass_type).r(31, 40, md.hourglass_coef).i(41, 45, md.bulk_type)
               .r(46, 55, md.q1).r(56, 65, md.q2).i(66, 70, 0).i(76, 80, 0).str() << "\n";
     os << L(what + " title").a(1, 80, md.title).str() << "\n";
-    std::vector<double> p = {md.E, md.nu};
-    if (md.type == 3) p.insert(p.end(), {md.sigma_y, md.E_tan, md.beta, md.initially_elastic ? 1.0 : 0.0});
-    for (int c = 0; c < 6; ++c) {
-      FixedLine line = L(what + " card " + std::to_string(c + 3));
-      if (c < int(p.size())) line.r(1, 10, p[std::size_t(c)]);
-      // type 3 card 8 columns 11-40: Cowper-Symonds C, P and the failure plastic strain
-      if (c == 5 && md.type == 3 && (md.rate_c != 0 || md.rate_p != 0 || md.fail_strain != 0))
-        line.r(11, 20, md.rate_c).r(21, 30, md.rate_p).r(31, 40, md.fail_strain);
-      if (c < int(p.size()) || line.str().find_first_not_of(' ') != std::string::npos) os << line.str() << "\n";
-      else os << "\n";
+    // cards 3-8: each parameter where the type's table puts it (material_types.h)
+    const MaterialType* t = find_material_type(md.type);
+    for (int c = 3; c <= 8; ++c) {
+      FixedLine line = L(what + " card " + std::to_string(c));
+      if (t) {
+        // a card's optional fields are written together when any of them is nonzero
+        bool any_optional = false;
+        for (const MaterialParam& p : t->params)
+          if (p.fcard == c && p.optional_write && param_value(md, p) != 0) any_optional = true;
+        for (const MaterialParam& p : t->params)
+          if (p.fcard == c && (!p.optional_write || any_optional)) line.r(p.fcol, p.fcol + 9, param_value(md, p));
+      }
+      const std::string text = line.str();
+      os << (text.find_first_not_of(' ') == std::string::npos ? std::string() : text) << "\n";
     }
   }
   os << "*----- NODES\n";
@@ -680,6 +710,8 @@ std::vector<std::string> model_differences(const Model& a, const Model& b, int m
     D(w + "strain-rate C", x.rate_c, y.rate_c);
     D(w + "strain-rate P", x.rate_p, y.rate_p);
     D(w + "failure strain", x.fail_strain, y.fail_strain);
+    for (std::size_t j = 0; j < std::max(x.par.size(), y.par.size()); ++j)
+      D(w + "parameter " + std::to_string(j), j < x.par.size() ? x.par[j] : 0.0, j < y.par.size() ? y.par[j] : 0.0);
   }
   N("nodes", a.num_nodes(), b.num_nodes());
   for (int n = 0; n < std::min(a.num_nodes(), b.num_nodes()); ++n) {

@@ -11,6 +11,7 @@
 
 #include "impact3d/input/deck_reader.h"
 #include "impact3d/input/element_shapes.h"
+#include "impact3d/material/material_types.h"
 
 namespace impact3d {
 
@@ -314,6 +315,43 @@ class Dyna3dReader {
     }
   }
 
+  // Cards 3-8 of a material: each parameter where its type's table puts it (material_types.h),
+  // the fields no parameter uses warned about, then the type's checks.
+  void read_material_params(MaterialData& md, const MaterialType& t, std::vector<Card>& cards) {
+    set_param_defaults(md, t);
+    if (t.one_per_card) {  // the original layout, or its packed alternative (8 per card from card 3)
+      bool lower_blank = true;
+      for (std::size_t k = 1; k < 6; ++k) lower_blank = lower_blank && cards[k].blank(1, 10);
+      md.packed = lower_blank && !cards[0].blank(11, 80);
+      if (md.packed) diag_.add(2001, cards[0].where(1, 80));
+    }
+    auto pos = [&](const MaterialParam& p) -> std::pair<Card*, int> {
+      if (p.fcard < 3) return {&cards[0], 1};
+      if (md.packed && p.fcol == 1) return {&cards[0], 1 + 10 * (p.fcard - 3)};
+      return {&cards[std::size_t(p.fcard - 3)], p.fcol};
+    };
+    auto name = [](const MaterialParam& p) { return p.fname ? p.fname : p.key; };
+    bool used[6][8] = {};
+    for (const MaterialParam& p : t.params) {
+      if (p.fcard < 3) continue;
+      auto [c, col] = pos(p);
+      double v = c->e(col, col + 9, name(p), p.def);
+      if (c->blank(col, col + 9)) v = p.def;
+      param_value(md, p) = v;
+      used[c - &cards[0]][(col - 1) / 10] = true;
+    }
+    for (int k = 0; k < 6; ++k)
+      for (int f = 0; f < 8; ++f)
+        if (!used[k][f] && !cards[std::size_t(k)].blank(1 + 10 * f, 10 + 10 * f))
+          diag_.add(2006, cards[std::size_t(k)].where(1 + 10 * f, 10 + 10 * f, "parameter"),
+                    "not used by material type " + std::to_string(t.number));
+    check_material_params(md, t, [&](const MaterialParam& p, int msg, const std::string& detail) {
+      auto [c, col] = pos(p);
+      if (msg >= 2000) diag_.add(msg, c->where(col, col + 9, name(p)), detail);
+      else c->error(msg, col, col + 9, name(p), detail);
+    });
+  }
+
   void read_materials() {
     int n = m_.control.nmmat;
     m_.materials.assign(static_cast<std::size_t>(n), MaterialData{});
@@ -334,8 +372,8 @@ class Dyna3dReader {
         number_ok = false;
       }
       md.type = int(c1.i(6, 10, "material type"));
-      if (md.type != 1 && md.type != 3 && md.type != 20)
-        c1.error(1103, 6, 10, "material type", "supported: 1 elastic, 3 elastic-plastic, 20 rigid");
+      const MaterialType* mt = find_material_type(md.type);
+      if (!mt) c1.error(1103, 6, 10, "material type", "supported: " + supported_material_types());
       md.rho = c1.e(11, 20, "density");
       if (!(md.rho > 0)) c1.error(1207, 11, 20, "density");
       long long eos = c1.i(21, 25, "EOS type");
@@ -368,63 +406,7 @@ class Dyna3dReader {
 
       std::vector<Card> cards;
       for (int k = 3; k <= 8; ++k) cards.push_back(next(name + " card " + std::to_string(k)));
-      bool lower_blank = true;
-      for (int k = 1; k < 6; ++k) lower_blank = lower_blank && cards[std::size_t(k)].blank(1, 10);
-      double p[6] = {0, 0, 0, 0, 0, 0};
-      if (lower_blank && !cards[0].blank(11, 80)) {
-        md.packed = true;
-        const char* names[] = {"E", "nu", "yield stress", "tangent modulus", "beta", "initially elastic flag"};
-        for (int f = 0; f < 6; ++f) p[f] = cards[0].e(1 + 10 * f, 10 + 10 * f, names[f]);
-        Location loc = cards[0].where(1, 80);
-        diag_.add(2001, loc);
-      } else {
-        const char* names[] = {"E", "nu", "yield stress", "tangent modulus", "beta", "initially elastic flag"};
-        for (int k = 0; k < 6; ++k) {
-          p[k] = cards[std::size_t(k)].e(1, 10, names[k]);
-          // type 3 card 8 carries the rate and failure parameters in columns 11-40 (below)
-          const int from = (k == 5 && md.type == 3) ? 41 : 11;
-          if (!cards[std::size_t(k)].blank(from, 80))
-            diag_.add(2006, cards[std::size_t(k)].where(from, 80, from == 11 ? "columns 11-80" : "columns 41-80"),
-                      "one parameter per card, in columns 1-10");
-        }
-      }
-      md.E = p[0];
-      md.nu = p[1];
-      Card& cE = cards[0];
-      Card& cnu = md.packed ? cards[0] : cards[1];
-      int nu_c1 = md.packed ? 11 : 1;
-      if (!(md.E > 0)) cE.error(1208, 1, 10, "E");
-      if (!(md.nu >= 0 && md.nu < 0.5)) cnu.error(1209, nu_c1, nu_c1 + 9, "nu");
-      if (md.type == 3) {
-        md.sigma_y = p[2];
-        md.E_tan = p[3];
-        md.beta = p[4];
-        md.initially_elastic = p[5] != 0;
-        auto at = [&](int k) -> std::pair<Card*, int> {
-          return md.packed ? std::make_pair(&cards[0], 1 + 10 * k) : std::make_pair(&cards[std::size_t(k)], 1);
-        };
-        if (md.sigma_y < 0) { auto [c, col] = at(2); c->error(1211, col, col + 9, "yield stress"); }
-        if (!(md.E_tan >= 0 && md.E_tan < md.E)) { auto [c, col] = at(3); c->error(1210, col, col + 9, "tangent modulus"); }
-        if (!(md.beta >= 0 && md.beta <= 1)) { auto [c, col] = at(4); c->error(1212, col, col + 9, "beta"); }
-        if (p[5] != 0 && p[5] != 1) { auto [c, col] = at(5); c->error(1006, col, col + 9, "initially elastic flag", "0 or 1"); }
-        // card 8 columns 11-40 (IMPACT-3D choice, the order of LS-DYNA's *MAT_003 card 2):
-        // Cowper-Symonds C and P, failure plastic strain
-        Card& c8 = cards[5];
-        md.rate_c = c8.e(11, 20, "strain-rate parameter C");
-        md.rate_p = c8.e(21, 30, "strain-rate parameter P");
-        md.fail_strain = c8.e(31, 40, "failure plastic strain");
-        if (md.rate_c < 0) c8.error(1003, 11, 20, "strain-rate parameter C", "must not be negative (0: no strain-rate effect)");
-        if (md.rate_c > 0 && !(md.rate_p > 0)) c8.error(1003, 21, 30, "strain-rate parameter P", "must be positive when C is given");
-        if (md.fail_strain < 0) c8.error(1003, 31, 40, "failure plastic strain", "must not be negative (0: no failure)");
-      } else {
-        for (int k = 2; k < 6; ++k) {
-          if (p[k] != 0) {
-            auto& c = md.packed ? cards[0] : cards[std::size_t(k)];
-            int col = md.packed ? 1 + 10 * k : 1;
-            diag_.add(2006, c.where(col, col + 9, "parameter"), "not used by material type " + std::to_string(md.type));
-          }
-        }
-      }
+      if (mt) read_material_params(md, *mt, cards);
       if (number_ok) {
         first_line[md.number - 1] = md.line;
         m_.materials[md.number - 1] = md;

@@ -7,10 +7,10 @@
 // decks") lists the keywords and fields.
 
 #include "impact3d/input/keyword_reader.h"
+#include "impact3d/material/material_types.h"
 
 #include "impact3d/input/deck_reader.h"
 #include "impact3d/input/element_shapes.h"
-#include "impact3d/solve/element_groups.h"
 
 #include <algorithm>
 #include <array>
@@ -387,9 +387,9 @@ struct RSection {
   Ref ref;
 };
 struct RMat {
-  int type = 0;
-  double rho = 0, E = 0, nu = 0, sy = 0, etan = 0, beta = 0;
-  double src = 0, srp = 0, fs = 0;  // *MAT_003 card 2
+  const MaterialType* type = nullptr;  // material_types.h
+  MaterialData md;                     // type, rho and the type's parameters
+  std::vector<Ref> refs;               // where each of the type's parameters was read
   std::string title;
   Ref ref;
 };
@@ -826,8 +826,7 @@ class KeywordReader {
       return n.size() > k && n.compare(n.size() - k, k, s) == 0;
     };
     static const std::set<std::string> titled = {
-        "SECTION_SOLID", "MAT_ELASTIC", "MAT_001", "MAT_PLASTIC_KINEMATIC", "MAT_003", "MAT_RIGID",
-        "MAT_020", "HOURGLASS", "DEFINE_CURVE", "SET_NODE_LIST", "SET_NODE", "SET_PART_LIST",
+        "SECTION_SOLID", "HOURGLASS", "DEFINE_CURVE", "SET_NODE_LIST", "SET_NODE", "SET_PART_LIST",
         "SET_PART", "SET_SEGMENT", "SET_NODE_LIST_GENERATE", "CONTACT_SURFACE_TO_SURFACE",
         "CONTACT_AUTOMATIC_SURFACE_TO_SURFACE", "CONTACT_NODES_TO_SURFACE"};
     static const std::set<std::string> with_id = {
@@ -835,7 +834,7 @@ class KeywordReader {
         "CONTACT_NODES_TO_SURFACE", "BOUNDARY_SPC_NODE", "BOUNDARY_SPC_SET",
         "BOUNDARY_PRESCRIBED_MOTION_NODE", "BOUNDARY_PRESCRIBED_MOTION_SET", "BOUNDARY_PRESCRIBED_MOTION_RIGID",
         "LOAD_SEGMENT", "LOAD_SEGMENT_SET"};
-    if (ends("_TITLE") && titled.count(n.substr(0, n.size() - 6))) {
+    if (ends("_TITLE") && (titled.count(n.substr(0, n.size() - 6)) || find_material_type_by_keyword(n.substr(0, n.size() - 6)))) {
       title = true;
       return n.substr(0, n.size() - 6);
     }
@@ -897,12 +896,8 @@ bool is_ascii_database(const std::string& n) {
         parse_part(b);
       } else if (n == "SECTION_SOLID") {
         parse_section(b);
-      } else if (n == "MAT_ELASTIC" || n == "MAT_001") {
-        parse_mat(b, 1);
-      } else if (n == "MAT_PLASTIC_KINEMATIC" || n == "MAT_003") {
-        parse_mat(b, 3);
-      } else if (n == "MAT_RIGID" || n == "MAT_020") {
-        parse_mat(b, 20);
+      } else if (const MaterialType* mt = find_material_type_by_keyword(n)) {
+        parse_mat(b, *mt);
       } else if (n == "HOURGLASS") {
         parse_hourglass(b);
       } else if (n == "CONTROL_HOURGLASS") {
@@ -1262,57 +1257,41 @@ bool is_ascii_database(const std::string& n) {
     }
   }
 
-  void parse_mat(const Block& b, int type) {
+  // *MAT_...: the cards and fields its type's table names (material_types.h), checked there.
+  void parse_mat(const Block& b, const MaterialType& t) {
     std::size_t start = skip_option_card(b);
     if (start >= b.data.size()) { missing_card(b, "card 1"); return; }
     KCard c = card(b, start, "card 1", W(b, 8));
     int mid = int(c.i(0, "MID"));
     c.set_card(b.keyword + " material " + std::to_string(mid));
     RMat m;
-    m.type = type;
+    m.type = &t;
     m.ref = c.ref(0);
-    m.rho = c.r(1, "RO");
-    m.E = c.r(2, "E");
-    m.nu = c.r(3, "PR");
-    if (!(m.rho > 0)) c.error(1207, 1, "RO");
-    if (!(m.E > 0)) c.error(1208, 2, "E");
-    if (!(m.nu >= 0 && m.nu < 0.5)) c.error(1209, 3, "PR");
-    if (type == 1) {
-      if (c.r(4, "DA") != 0) c.error(2006, 4, "DA", "axial damping (beams)");
-      if (c.r(5, "DB") != 0) c.error(2006, 5, "DB", "bending damping (beams)");
-      if (start + 1 < b.data.size()) {
-        Location loc = loc_of(c.ref(-1), b.keyword);
-        loc.line = b.data[start + 1].line->number;
-        diag_.add(1102, loc, "the fluid option card (VC, CP) of *MAT_ELASTIC");
-      }
-    } else if (type == 3) {
-      m.sy = c.r(4, "SIGY");
-      m.etan = c.r(5, "ETAN");
-      m.beta = c.r(6, "BETA");
-      if (m.sy < 0) c.error(1211, 4, "SIGY");
-      if (!(m.etan >= 0 && m.etan < m.E)) c.error(1210, 5, "ETAN");
-      if (!(m.beta >= 0 && m.beta <= 1)) c.error(1212, 6, "BETA");
-      if (start + 1 < b.data.size()) {
-        KCard c2 = card(b, start + 1, "material " + std::to_string(mid) + " card 2", W(b, 4));
-        m.src = c2.r(0, "SRC");
-        m.srp = c2.r(1, "SRP");
-        m.fs = c2.r(2, "FS");
-        if (m.src < 0) c2.error(1003, 0, "SRC", "must not be negative (0: no strain-rate effect)");
-        if (m.src > 0 && !(m.srp > 0)) c2.error(1003, 1, "SRP", "must be positive when SRC is given");
-        if (m.fs < 0) c2.error(1003, 2, "FS", "must not be negative (0 or >= 1e19: no failure)");
-        if (m.fs >= 1e19) m.fs = 0;  // LS-DYNA's default 1e20: never
-        if (c2.r(3, "VP") != 0) c2.error(1102, 3, "VP", "the viscoplastic rate formulation (VP = 1); VP = 0 scales the yield stress");
-      }
-    } else {
-      c.r(4, "N");
-      c.r(5, "COUPLE");
-      c.r(6, "M");
-      if (start + 1 < b.data.size()) {
-        KCard c2 = card(b, start + 1, "material " + std::to_string(mid) + " card 2", W(b, 8));
-        if (c2.r(0, "CMO") != 0) c2.error(1102, 0, "CMO", "rigid-body constraints");
-        if (c2.r(1, "CON1") != 0) c2.error(1102, 1, "CON1", "rigid-body constraints");
-        if (c2.r(2, "CON2") != 0) c2.error(1102, 2, "CON2", "rigid-body constraints");
-      }
+    m.md.type = t.number;
+    set_param_defaults(m.md, t);
+    m.md.rho = c.r(1, "RO");
+    if (!(m.md.rho > 0)) c.error(1207, 1, "RO");
+    std::vector<KCard> cards{c};
+    for (int k = 1; k < t.keyword_cards && start + std::size_t(k) < b.data.size(); ++k)
+      cards.push_back(card(b, start + std::size_t(k), "material " + std::to_string(mid) + " card " + std::to_string(k + 1), W(b, 8)));
+    m.refs.assign(t.params.size(), m.ref);
+    for (std::size_t i = 0; i < t.params.size(); ++i) {
+      const MaterialParam& p = t.params[i];
+      if (p.kcard < 0 || std::size_t(p.kcard) >= cards.size()) continue;
+      KCard& kc = cards[std::size_t(p.kcard)];
+      double v = kc.r(p.kfield, p.key, p.def);
+      if (kc.blank(p.kfield)) v = p.def;
+      param_value(m.md, p) = v;
+      m.refs[i] = kc.ref(p.kfield);
+    }
+    check_material_params(m.md, t, [&](const MaterialParam& p, int msg, const std::string& detail) {
+      KCard& kc = p.kcard >= 0 && std::size_t(p.kcard) < cards.size() ? cards[std::size_t(p.kcard)] : cards[0];
+      kc.error(msg, p.kcard >= 0 ? p.kfield : 0, p.key, detail);
+    });
+    if (t.extra_card_feature && start + std::size_t(t.keyword_cards) < b.data.size()) {
+      Location loc = loc_of(c.ref(-1), b.keyword);
+      loc.line = b.data[start + std::size_t(t.keyword_cards)].line->number;
+      diag_.add(1102, loc, t.extra_card_feature);
     }
     if (b.title_opt) m.title = rtrim(b.data[0].line->text);
     if (mats_.count(mid)) c.error(1200, 0, "MID", "also defined at " + at(mats_[mid].ref));
@@ -2035,23 +2014,30 @@ bool is_ascii_database(const std::string& n) {
       }
       if (mit == mats_.end()) {
         auto u = unsupported_mids_.find(p.mid);
-        if (u != unsupported_mids_.end()) err(1103, p.mid_ref, card, "MID", "material " + std::to_string(p.mid) + " is " + u->second + "; supported: *MAT_ELASTIC, *MAT_PLASTIC_KINEMATIC, *MAT_RIGID");
+        if (u != unsupported_mids_.end()) err(1103, p.mid_ref, card, "MID", "material " + std::to_string(p.mid) + " is " + u->second + "; supported: " + supported_material_keywords());
         else err(1310, p.mid_ref, card, "MID", "material " + std::to_string(p.mid) + " is not defined by a *MAT keyword");
       } else {
         const RMat& r = mit->second;
-        md.type = r.type;
-        md.rho = r.rho;
-        md.E = r.E;
-        md.nu = r.nu;
-        md.sigma_y = r.sy;
-        md.E_tan = r.etan;
-        md.beta = r.beta;
-        if (r.type == 3) {
-          md.rate_c = r.src;
-          md.rate_p = r.srp;
-          md.fail_strain = r.fs;
+        const MaterialData keep = md;
+        md = r.md;
+        md.number = keep.number;
+        md.title = keep.title;
+        md.line = keep.line;
+        // the IMPACT-3D comment line INITIALLY_ELASTIC PART sets the type's switch, if it has one
+        if (const MaterialParam* ie = find_param(*r.type, "IE")) {
+          md.initially_elastic = initially_elastic_.count(p.pid) > 0;
+          param_value(md, *ie) = md.initially_elastic ? 1.0 : 0.0;
         }
-        md.initially_elastic = r.type == 3 && initially_elastic_.count(p.pid) > 0;
+        // curve references: *DEFINE_CURVE ids -> the curves' numbers 1..NUMLC (resolve_curves)
+        for (std::size_t i = 0; i < r.type->params.size(); ++i) {
+          const MaterialParam& q = r.type->params[i];
+          if (q.check != ParamCheck::curve || param_value(md, q) == 0) continue;
+          const int id = int(param_value(md, q));
+          std::size_t k = 0;
+          while (k < curves_.size() && curves_[k].number != id) ++k;
+          if (k < curves_.size()) param_value(md, q) = double(k + 1);
+          else err(1310, r.refs[i], "*MAT material " + std::to_string(p.mid), q.key, "*DEFINE_CURVE " + std::to_string(id) + " is not defined");
+        }
       }
       if (p.eosid != 0) err(1102, p.eos_ref, card, "EOSID", "equations of state");
       // hourglass and bulk viscosity
@@ -2287,7 +2273,7 @@ bool is_ascii_database(const std::string& n) {
     }
     const int mt = part_material_[std::size_t(p->second)];
     if (mt < 0) return -1;
-    if (hex_kernel_for_material_type(m_.materials[std::size_t(mt)].type) != HexKernel::rigid) {
+    if (!material_type(m_.materials[std::size_t(mt)].type).rigid) {
       err(1006, l.ref, l.keyword, "PID", "part " + std::to_string(l.id) + " is not a rigid body (*MAT_RIGID)");
       return -1;
     }
@@ -2373,7 +2359,7 @@ bool is_ascii_database(const std::string& n) {
             rigid_node.assign(std::size_t(m_.num_nodes()), 0);
             for (int e = 0; e < m_.num_hexes(); ++e) {
               const int mt = m_.hex_material[std::size_t(e)];
-              if (mt >= 0 && hex_kernel_for_material_type(m_.materials[std::size_t(mt)].type) == HexKernel::rigid)
+              if (mt >= 0 && material_type(m_.materials[std::size_t(mt)].type).rigid)
                 for (int n : m_.hex_nodes[std::size_t(e)]) if (n >= 0) rigid_node[std::size_t(n)] = 1;
             }
           }

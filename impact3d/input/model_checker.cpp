@@ -12,6 +12,7 @@
 
 #include "impact3d/element/hexahedron.h"
 #include "impact3d/input/deck_reader.h"
+#include "impact3d/material/material_types.h"
 
 namespace impact3d {
 
@@ -145,7 +146,8 @@ void check_rigid_velocities(const Model& m, Diagnostics& diag, const Location& f
     if (bc_fixes_z(c)) v[i][2] = 0;
   }
   for (std::size_t k = 0; k < m.materials.size(); ++k) {
-    if (m.materials[k].type != 20) continue;
+    const MaterialType* t = find_material_type(m.materials[k].type);
+    if (!t || !t->rigid) continue;
     std::vector<int> nodes;
     for (int e = 0; e < m.num_hexes(); ++e) {
       const auto& n = m.hex_nodes[std::size_t(e)];
@@ -215,6 +217,34 @@ void check_rigid_velocities(const Model& m, Diagnostics& diag, const Location& f
   }
 }
 }  // namespace
+
+// Curve references of material parameters (ParamCheck::curve): the curve exists, and a flow
+// stress curve (plastic strain -> stress) does not soften.
+void check_material_curves(const Model& m, Diagnostics& diag, const Location& file_loc) {
+  for (const MaterialData& md : m.materials) {
+    const MaterialType* t = find_material_type(md.type);
+    if (!t) continue;
+    for (const MaterialParam& p : t->params) {
+      if (p.check != ParamCheck::curve) continue;
+      const int lc = int(param_value(md, p));
+      if (lc == 0) continue;
+      Location loc = file_loc;
+      loc.line = md.line;
+      loc.card = "material " + std::to_string(md.number);
+      loc.field = p.fname ? p.fname : p.key;
+      if (lc < 0 || std::size_t(lc) > m.load_curves.size()) {
+        diag.add(1310, loc, "load curve " + std::to_string(lc) + " is not defined");
+        continue;
+      }
+      const LoadCurve& c = m.load_curves[std::size_t(lc - 1)];
+      for (std::size_t i = 0; i < c.t.size(); ++i)
+        if (c.t[i] < 0 || c.f[i] < 0 || (i > 0 && c.f[i] < c.f[i - 1])) {
+          diag.add(1003, loc, "the flow stress curve must have plastic strains >= 0 and stresses >= 0 that do not decrease (no softening)");
+          break;
+        }
+    }
+  }
+}
 
 bool check_model(const Model& m, Diagnostics& diag) {
   const int before = diag.error_count();
@@ -291,7 +321,11 @@ bool check_model(const Model& m, Diagnostics& diag) {
   // stonewalls act on deformable nodes only (the rigid-body update would overwrite the
   // impulse of a single node): say so when the two meet
   bool has_rigid = false;
-  for (const auto& md : m.materials) has_rigid = has_rigid || md.type == 20;
+  for (const auto& md : m.materials) {
+    const MaterialType* t = find_material_type(md.type);
+    has_rigid = has_rigid || (t && t->rigid);
+  }
+  check_material_curves(m, diag, file_loc);
   if (has_rigid && !m.walls.empty()) {
     Location loc = file_loc;
     loc.line = m.walls[0].line;

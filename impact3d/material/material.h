@@ -3,11 +3,14 @@
 // One function per material type; each is a small per-element update called from the element
 // loop.
 
+#include <array>
+#include <vector>
+
 namespace impact3d {
 
 // Constants derived once at initialization from the deck's values.
 struct MaterialConstants {
-  int type = 0;        // 1 elastic, 3 elastic-plastic, 20 rigid
+  int type = 0;        // DYNA3D type number (material_types.h)
   double rho = 0;      // initial density
   double E = 0, nu = 0;
   double G = 0, K = 0, lambda = 0;
@@ -20,6 +23,12 @@ struct MaterialConstants {
   double rate_inv_p = 0;  // 1 / P
   double fail_strain = 0;  // effective plastic strain at which a solid fails (0 = never)
   bool initially_elastic = false;  // the seed's fast path (type 3)
+  double tdel = 0;         // a solid whose step falls below this is deleted (0 = never)
+  // Hardening curve sigma_y(eps_p), piecewise linear, the last slope extended (types with a
+  // tabulated flow stress); slope[i] is the slope from point i to i + 1.
+  std::vector<double> curve_eps, curve_sig, curve_slope;
+  // the type's other constants (its file names their places)
+  std::array<double, 24> k{};
 };
 
 // Fill G, K, lambda, E_p, c from type, rho, E, nu, sigma_y, E_tan, beta.  When E is not given

@@ -40,7 +40,7 @@ struct ControlData {
 
 struct MaterialData {
   int number = 0;
-  int type = 0;          // 1 elastic, 3 elastic-plastic, 20 rigid
+  int type = 0;          // DYNA3D type number (material_types.h)
   double rho = 0;
   int hourglass_type = 1;
   double hourglass_coef = 0.10;
@@ -54,6 +54,8 @@ struct MaterialData {
   // (0: never)
   double rate_c = 0, rate_p = 0, fail_strain = 0;
   bool initially_elastic = false;
+  // the type's other parameters (material_types.h: each type's table names their places)
+  std::vector<double> par;
   bool packed = false;   // parameters were read 8 per card
   int line = 0;          // line of card 1, for messages
 };

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "impact3d/element/hex_block.h"
-#include "impact3d/material/material.h"
+#include "impact3d/material/material_types.h"
 
 namespace impact3d {
 
@@ -24,12 +24,11 @@ struct RigidBody {
   std::vector<double> r0;                   // 3 per node: initial position relative to the COM
 };
 
-// Element kernels, chosen per group from the material type (one table: element_groups.cpp).
-enum class HexKernel : uint8_t { rigid, elastic, elastic_plastic };
-
 struct ElementGroup {
   HexKernel kernel = HexKernel::rigid;
+  const SolidKernel* solid = nullptr;  // the material type's kernel (material_types.h)
   int material = 0;          // 0-based material index
+  int history = 0;           // history values per solid (State::hist)
   int first_block = 0, num_blocks = 0, num_elems = 0;
 };
 
@@ -90,6 +89,8 @@ struct State {
   std::vector<uint8_t> yielded;
   std::vector<uint8_t> failed;         // 1: failed (deleted) solid; 2 during the cycle it fails
   std::vector<int> newly_failed;       // solids that failed in the last cycle, in element order
+  std::vector<double> hist;            // hist_stride per element: the material's history values (empty when none)
+  int hist_stride = 0;
   std::vector<double> hgs;             // 12 per element: hourglass stiffness resultants (empty when unused)
   std::vector<double> q;               // bulk viscosity
   std::vector<double> cfx, cfy, cfz;   // 8 per slot: corner internal forces (corner_index)
@@ -123,7 +124,7 @@ struct State {
   void visit_dynamic_fields(V&& v) {
     v(x); v(y); v(z); v(vx); v(vy); v(vz); v(ax); v(ay); v(az);
     v(vx_old); v(vy_old); v(vz_old); v(fx); v(fy); v(fz); v(fext_x); v(fext_y); v(fext_z);
-    v(vol); v(sig); v(back); v(eps_p); v(yielded); v(failed); v(hgs); v(q); v(cfx); v(cfy); v(cfz);
+    v(vol); v(sig); v(back); v(eps_p); v(hist); v(yielded); v(failed); v(hgs); v(q); v(cfx); v(cfy); v(cfz);
     v(dt_e); v(mat_internal); v(mat_hourglass);
     v(time); v(cycle); v(dt_half); v(dt_next); v(dt_elem); v(dt0);
     v(kinetic); v(internal); v(hourglass); v(bulk_viscous); v(wall_work); v(contact);

@@ -1,5 +1,7 @@
 #include "impact3d/output/printed_output.h"
 
+#include "impact3d/material/material_types.h"
+
 #include <cmath>
 #include <cstdio>
 #include <set>
@@ -13,12 +15,8 @@ std::string fmt(const char* f, double v) {
   return buf;
 }
 const char* material_type_name(int t) {
-  switch (t) {
-    case 1: return "elastic";
-    case 3: return "elastic-plastic (linear hardening)";
-    case 20: return "rigid";
-  }
-  return "unknown";
+  const MaterialType* mt = find_material_type(t);
+  return mt ? mt->name : "unknown";
 }
 const char* hourglass_name(int t) {
   switch (t) {
@@ -179,20 +177,7 @@ void write_model_summary(std::ostream& os, const Model& m) {
        << "     bulk modulus K (derived) ............. " << fmt("%.6e", K) << " (stress)\n"
        << "     shear modulus G (derived) ............ " << fmt("%.6e", G) << " (stress)\n"
        << "     dilatational wave speed (derived) .... " << fmt("%.6e", c) << " (length/time)\n";
-    if (md.type == 3) {
-      double Ep = md.E * md.E_tan / (md.E - md.E_tan);
-      os << "     yield stress ......................... " << fmt("%.6e", md.sigma_y) << " (stress)\n"
-         << "     tangent modulus ...................... " << fmt("%.6e", md.E_tan) << " (stress)\n"
-         << "     plastic hardening modulus (derived) .. " << fmt("%.6e", Ep) << " (stress)\n"
-         << "     hardening beta ....................... " << fmt("%.3f", md.beta)
-         << (md.beta == 1 ? " (isotropic)" : md.beta == 0 ? " (kinematic)" : " (mixed)") << "\n"
-         << "     initially elastic fast path .......... " << (md.initially_elastic ? "yes" : "no") << "\n";
-      if (md.rate_c > 0)
-        os << "     strain-rate factor (Cowper-Symonds) .. 1 + (rate/C)^(1/P), C " << fmt("%.6e", md.rate_c)
-           << " (1/time), P " << fmt("%.4g", md.rate_p) << "\n";
-      if (md.fail_strain > 0)
-        os << "     failure plastic strain (deletion) .... " << fmt("%.6e", md.fail_strain) << "\n";
-    }
+    if (const MaterialType* mt = find_material_type(md.type)) echo_material_params(os, md, *mt);
     os << "     hourglass control .................... type " << md.hourglass_type << " ("
        << hourglass_name(md.hourglass_type) << "), coefficient " << fmt("%.4g", md.hourglass_coef) << "\n"
        << "     bulk viscosity Q1 (quadratic) ........ " << fmt("%.4g", md.q1) << "\n"

@@ -6,16 +6,14 @@
 namespace impact3d {
 
 HexKernel hex_kernel_for_material_type(int type) {
-  switch (type) {
-    case 1: return HexKernel::elastic;
-    case 3: return HexKernel::elastic_plastic;
-    case 20: return HexKernel::rigid;
-    default: throw std::logic_error("no solid kernel for material type " + std::to_string(type));
-  }
+  const MaterialType* t = find_material_type(type);
+  if (!t) throw std::logic_error("no solid kernel for material type " + std::to_string(type));
+  return t->solid.kind;
 }
 
-bool group_carries_back_stress(HexKernel kernel, const MaterialConstants& mc) {
-  return kernel == HexKernel::elastic_plastic && (1.0 - mc.beta) * mc.E_p != 0.0;
+bool group_carries_back_stress(const SolidKernel& kernel, const MaterialConstants& mc) {
+  // the kinematic part of type 3 (isotropic-only types keep beta = 1)
+  return kernel.plastic_strain && (1.0 - mc.beta) * mc.E_p != 0.0;
 }
 
 bool group_carries_hourglass_state(const MaterialData& md) {
@@ -32,7 +30,10 @@ void build_element_groups(State& s) {
   for (std::size_t k = 0; k < nmat; ++k) {
     if (count[k] == 0) continue;
     ElementGroup g;
-    g.kernel = hex_kernel_for_material_type(s.mats[k].type);
+    const MaterialType& t = material_type(s.mats[k].type);
+    g.kernel = t.solid.kind;
+    g.solid = &t.solid;
+    g.history = int(t.history.size());
     g.material = int(k);
     g.first_block = blocks;
     g.num_elems = count[k];

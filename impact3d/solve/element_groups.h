@@ -9,15 +9,15 @@
 
 namespace impact3d {
 
-// The kernel that processes solids of a material type (the one table of material type ->
-// kernel).  Throws std::logic_error for a type no kernel handles (the input phase refuses
+// What the element pass does with solids of a material type (the table of material_types.h).
+// Throws std::logic_error for a type no kernel handles (the input phase refuses
 // such decks first).
 HexKernel hex_kernel_for_material_type(int type);
 
 // Whether a group's solids carry a back stress (type 3 with a kinematic part) and hourglass
 // resultants (hourglass types 4 and 5): the element pass reads and writes s.back / s.hgs only
 // for such groups, and they are allocated only when some group needs them.
-bool group_carries_back_stress(HexKernel kernel, const MaterialConstants& mc);
+bool group_carries_back_stress(const SolidKernel& kernel, const MaterialConstants& mc);
 bool group_carries_hourglass_state(const MaterialData& md);
 
 // Fills s.groups, s.slot_elem, s.elem_slot and s.block_results from s.conn and s.mat: one

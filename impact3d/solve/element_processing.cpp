@@ -25,6 +25,8 @@ struct GroupPass {
   const MaterialConstants* mc;
   const MaterialData* md;
   HexKernel kernel;
+  const SolidKernel* solid;  // the material type's stress update
+  int history;    // history values per solid
   double dt;      // dt^{n-1/2}: the step from x^{n-1} to x^n
   double dt_hg;   // step of the hourglass stiffness forms
   bool with_back; // type 3 with a kinematic part: the back stress is carried
@@ -61,7 +63,7 @@ void gather_hex_block(const State& s, const GroupPass& gp, const int* elems, Hex
     k.q_old[l] = s.q[E];
     k.rho[l] = s.vol0[E];  // rho0 V0 / V once V is known
   }
-  if (gp.kernel == HexKernel::elastic_plastic) {
+  if (gp.solid->plastic_strain) {
     for (int l = 0; l < kLanes; ++l) {
       const std::size_t E = std::size_t(e[l]);
       k.eps_p[l] = s.eps_p[E];
@@ -70,6 +72,9 @@ void gather_hex_block(const State& s, const GroupPass& gp, const int* elems, Hex
         for (int c = 0; c < 6; ++c) k.back[c][l] = s.back[6 * E + std::size_t(c)];
     }
   }
+  const std::size_t hs = std::size_t(s.hist_stride);
+  for (int l = 0; l < kLanes; ++l)
+    for (int h = 0; h < gp.history; ++h) k.hist[h][l] = s.hist[hs * std::size_t(e[l]) + std::size_t(h)];
   if (gp.hg_state)
     for (int l = 0; l < kLanes; ++l)
       for (int m = 0; m < 12; ++m) k.hgs[m][l] = s.hgs[12 * std::size_t(e[l]) + std::size_t(m)];
@@ -85,17 +90,10 @@ void update_stress_block(const GroupPass& gp, HexBlock& k) {
     return;
   }
   rotate_stress_jaumann_block(k.sig, k.w, dt);
-  if (gp.kernel == HexKernel::elastic) {
-    update_stress_elastic_block(*gp.mc, k.d, dt, k.sig);
-  } else {
-    // (a back stress that is still zero rotates to zero: the seed's "initially elastic" skip
-    // of that rotation gives the same bits)
-    if (gp.with_back) rotate_stress_jaumann_block(k.back, k.w, dt);
-    if (gp.with_back)
-      update_stress_elastic_plastic_block<true>(*gp.mc, k, dt);
-    else
-      update_stress_elastic_plastic_block<false>(*gp.mc, k, dt);
-  }
+  // (a back stress that is still zero rotates to zero: the seed's "initially elastic" skip
+  // of that rotation gives the same bits)
+  if (gp.with_back) rotate_stress_jaumann_block(k.back, k.w, dt);
+  gp.solid->update_block(*gp.mc, k, dt);  // the material type's kernel (material_types.h)
   IMPACT3D_FOR_LANES {
     double pw = 0;
     #pragma GCC unroll 16
@@ -163,15 +161,18 @@ void store_hex_block(State& s, const GroupPass& gp, const int* elems, const bool
       continue;
     }
     double* sig = &s.sig[6 * E];
-    if (gp.kernel == HexKernel::elastic_plastic) {
+    if (gp.solid->plastic_strain) {
       s.eps_p[E] = k.eps_p[l];
       s.yielded[E] = k.yielded[l] != 0.0;
       if (gp.with_back)
         for (int c = 0; c < 6; ++c) s.back[6 * E + std::size_t(c)] = k.back[c][l];
     }
+    const std::size_t hs = std::size_t(s.hist_stride);
+    for (int h = 0; h < gp.history; ++h) s.hist[hs * E + std::size_t(h)] = k.hist[h][l];
     s.vol[E] = k.v[l];
-    if (gp.dt > 0 && mc.fail_strain > 0 && k.eps_p[l] >= mc.fail_strain) {
-      // Failure: the solid is deleted.  Its stress work up to now stays in the internal
+    const bool fails = (mc.fail_strain > 0 && k.eps_p[l] >= mc.fail_strain) || (mc.tdel > 0 && k.dt[l] < mc.tdel);
+    if (gp.dt > 0 && fails) {
+      // Failure (plastic strain, or the step below TDEL): the solid is deleted.  Its stress work up to now stays in the internal
       // energy, its mass on the nodes; the books as for a stress and viscosity that are zero
       // from now on (trapezoid with a zero end): only the old stress and q did work.
       s.failed[E] = 2;
@@ -252,9 +253,11 @@ ElementLoopResult calc_forces_for_elems(const Model& m, State& s) {
     gp.mc = &s.mats[std::size_t(g.material)];
     gp.md = &m.materials[std::size_t(g.material)];
     gp.kernel = g.kernel;
+    gp.solid = g.solid;
+    gp.history = g.history;
     gp.dt = s.dt_half;
     gp.dt_hg = s.dt_next > 0 ? s.dt_next : s.dt_half;
-    gp.with_back = group_carries_back_stress(g.kernel, *gp.mc);
+    gp.with_back = group_carries_back_stress(*g.solid, *gp.mc);
     gp.hg_state = group_carries_hourglass_state(*gp.md);
     const int b0 = g.first_block, nb = g.num_blocks;
 #pragma omp parallel for schedule(dynamic, kBlocksPerChunk) if (nb >= kMinBlocksForThreads)

@@ -15,6 +15,7 @@
 #include "impact3d/element/hexahedron.h"
 #include "impact3d/material/material.h"
 #include "impact3d/material/material_block.h"
+#include "impact3d/material/material_types.h"
 
 using namespace impact3d;
 
@@ -213,4 +214,53 @@ TEST(HexBlock, CubeRootIsWithinOneUlpOfTheExactRoot) {
   EXPECT_LE(worst, 1.0);
   EXPECT_EQ(cbrt_positive(8.0), 2.0);
   EXPECT_EQ(cbrt_positive(1e-9), 1e-3);
+}
+
+// Every deformable type of the table: its block kernel gives the bits of its scalar kernel, lane
+// by lane (type 24 with a 4-point table spanning the lanes' plastic strains, with and without
+// rate effects; types 1 and 3 as above, through the table).
+TEST(HexBlock, TableKernelsEqualTheirScalarKernels) {
+  for (const MaterialType* t : material_types()) {
+    if (t->rigid) continue;
+    for (double rate_c : {0.0, 1e7}) {
+      MaterialData md;
+      md.type = t->number;
+      set_param_defaults(md, *t);
+      md.rho = 8930, md.E = 117e9, md.nu = 0.35, md.sigma_y = 3e8, md.E_tan = 1e9, md.beta = 1;
+      md.rate_c = rate_c, md.rate_p = 5;
+      if (t->number == 24) {
+        const double eps[4] = {0, 0.05, 0.12, 0.18}, es[4] = {3e8, 3.5e8, 3.6e8, 4.5e8};
+        for (int i = 0; i < 4; ++i) {
+          param_value(md, *find_param(*t, "EPS" + std::to_string(i + 1))) = eps[i];
+          param_value(md, *find_param(*t, "ES" + std::to_string(i + 1))) = es[i];
+        }
+      }
+      const MaterialConstants m = derive_constants(md, Model{});
+      Fixture f(40u);
+      calc_hex_kinematics_block(f.k, f.dt);
+      for (int l = 0; l < kLanes; ++l)
+        for (int c = 0; c < 6; ++c) f.back[l][c] = f.k.back[c][l] = 0;
+      const HexBlock before = f.k;
+      t->solid.update_block(m, f.k, f.dt);
+      int yielded = 0;
+      for (int l = 0; l < kLanes; ++l) {
+        SolidPointState s;
+        double d[6];
+        for (int c = 0; c < 6; ++c) d[c] = before.d[c][l], s.sig[c] = before.sig[c][l];
+        s.eps_p = before.eps_p[l];
+        s.yielded = before.yielded[l];
+        t->solid.update_point(m, d, f.dt, s);
+        for (int c = 0; c < 6; ++c) EXPECT_TRUE(same(s.sig[c], f.k.sig[c][l])) << "type " << t->number << " lane " << l << " c " << c;
+        if (t->solid.plastic_strain) {
+          EXPECT_TRUE(same(s.eps_p, f.k.eps_p[l])) << "type " << t->number << " lane " << l;
+          EXPECT_EQ(s.yielded, f.k.yielded[l]);
+          yielded += s.yielded != 0;
+        }
+      }
+      if (t->solid.plastic_strain) {
+        EXPECT_GT(yielded, 0) << "type " << t->number;  // both branches run
+        EXPECT_LT(yielded, kLanes) << "type " << t->number;
+      }
+    }
+  }
 }

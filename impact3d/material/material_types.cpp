@@ -1,0 +1,148 @@
+// The table of material types (material_types.h) and what every type shares: parameter
+// defaults, the per-parameter checks, the kernel constants, the printed echo.
+
+#include "impact3d/material/material_types.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <ostream>
+#include <stdexcept>
+
+namespace impact3d {
+
+// One line per type (each defined in impact3d/material/types/mat_*.cpp).
+const MaterialType& mat_elastic_type();
+const MaterialType& mat_plastic_kinematic_type();
+const MaterialType& mat_piecewise_linear_type();
+const MaterialType& mat_rigid_type();
+
+std::span<const MaterialType* const> material_types() {
+  static const MaterialType* const table[] = {  // in increasing number
+      &mat_elastic_type(),
+      &mat_plastic_kinematic_type(),
+      &mat_rigid_type(),
+      &mat_piecewise_linear_type(),
+  };
+  return table;
+}
+
+const MaterialType* find_material_type(int number) {
+  for (const MaterialType* t : material_types())
+    if (t->number == number) return t;
+  return nullptr;
+}
+
+const MaterialType* find_material_type_by_keyword(std::string_view keyword) {
+  for (const MaterialType* t : material_types())
+    for (const char* k : t->keywords)
+      if (keyword == k) return t;
+  return nullptr;
+}
+
+const MaterialParam* find_param(const MaterialType& t, std::string_view key) {
+  for (const MaterialParam& p : t.params)
+    if (key == p.key) return &p;
+  return nullptr;
+}
+
+const MaterialType& material_type(int number) {
+  const MaterialType* t = find_material_type(number);
+  if (!t) throw std::logic_error("no material type " + std::to_string(number));
+  return *t;
+}
+
+std::string supported_material_types() {
+  std::string s;
+  for (const MaterialType* t : material_types())
+    s += (s.empty() ? "" : ", ") + std::to_string(t->number) + " " + t->name;
+  return s;
+}
+
+std::string supported_material_keywords() {
+  std::string s;
+  for (const MaterialType* t : material_types()) s += (s.empty() ? "*" : ", *") + std::string(t->keywords.front());
+  return s;
+}
+
+double& param_value(MaterialData& md, const MaterialParam& p) {
+  if (p.field) return md.*(p.field);
+  if (md.par.size() <= std::size_t(p.index)) md.par.resize(std::size_t(p.index) + 1, 0.0);
+  return md.par[std::size_t(p.index)];
+}
+
+double param_value(const MaterialData& md, const MaterialParam& p) {
+  if (p.field) return md.*(p.field);
+  return std::size_t(p.index) < md.par.size() ? md.par[std::size_t(p.index)] : 0.0;
+}
+
+void set_param_defaults(MaterialData& md, const MaterialType& t) {
+  md.par.assign(std::size_t(t.num_par), 0.0);
+  for (const MaterialParam& p : t.params) param_value(md, p) = p.def;
+}
+
+void check_material_params(MaterialData& md, const MaterialType& t, const ParamReport& report) {
+  for (const MaterialParam& p : t.params) {
+    const double v = param_value(md, p);
+    bool ok = true;
+    switch (p.check) {
+      case ParamCheck::none: break;
+      case ParamCheck::positive: ok = v > 0; break;
+      case ParamCheck::non_negative: ok = v >= 0; break;
+      case ParamCheck::fraction: ok = v >= 0 && v <= 1; break;
+      case ParamCheck::poisson: ok = v >= 0 && v < 0.5; break;
+      case ParamCheck::below_E: ok = v >= 0 && v < md.E; break;
+      case ParamCheck::flag01: ok = v == 0 || v == 1; break;
+      case ParamCheck::integer:
+      case ParamCheck::curve: ok = v >= 0 && v == std::floor(v) && v < 1e9; break;
+      case ParamCheck::unsupported:
+        if (v != 0) report(p, 1102, p.detail);
+        continue;
+      case ParamCheck::ignored:
+        if (v != 0) report(p, 2006, p.detail);
+        continue;
+    }
+    if (!ok) report(p, p.msg, p.detail);
+  }
+  if (t.check) t.check(md, t, report);
+}
+
+MaterialConstants derive_constants(const MaterialData& md, const Model& m) {
+  MaterialConstants c;
+  c.type = md.type;
+  c.rho = md.rho;
+  c.E = md.E;
+  c.nu = md.nu;
+  const MaterialType* t = find_material_type(md.type);
+  if (t && t->derive) t->derive(md, m, c);
+  derive_material_constants(c);
+  return c;
+}
+
+void echo_line(std::ostream& os, const std::string& label, const std::string& value) {
+  // "     label ...... value": the label and its dots fill 38 columns
+  std::string l = label + " ";
+  if (l.size() < 38) l += std::string(38 - l.size(), '.');
+  os << "     " << l << " " << value << "\n";
+}
+
+void echo_material_params(std::ostream& os, const MaterialData& md, const MaterialType& t) {
+  for (const MaterialParam& p : t.params) {
+    if (!p.label) continue;
+    const double v = param_value(md, p);
+    char buf[64];
+    if (p.check == ParamCheck::integer || p.check == ParamCheck::flag01 || p.check == ParamCheck::curve)
+      std::snprintf(buf, sizeof buf, "%.0f", v);
+    else
+      std::snprintf(buf, sizeof buf, "%.6e", v);
+    echo_line(os, p.label, std::string(buf) + (*p.unit ? std::string(" (") + p.unit + ")" : std::string()));
+  }
+  if (t.echo) t.echo(os, md);
+}
+
+int material_history_count(int type) {
+  const MaterialType* t = find_material_type(type);
+  return t ? int(t->history.size()) : 0;
+}
+
+}  // namespace impact3d

@@ -1,0 +1,156 @@
+#pragma once
+// The one table of material types.  Each type (impact3d/material/types/mat_*.cpp) describes
+// everything about itself in one MaterialType value: its numbers and keyword names, the
+// layout of its parameters in both deck formats (the readers and the converter loop over
+// them), their checks and defaults, its printed echo, the constants its kernel needs (wave
+// speed and moduli for the time step and hourglass forms), its solid kernel (scalar reference
+// and block form) and its per-element history values.  Nothing else in the code compares
+// material type numbers: it asks this table.
+
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <iosfwd>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "impact3d/element/hex_block.h"
+#include "impact3d/material/material.h"
+#include "impact3d/model/model.h"
+
+namespace impact3d {
+
+// What the element pass does with a group's solids.
+enum class HexKernel : uint8_t {
+  rigid,       // no internal forces, no step (the nodes move with the rigid body)
+  deformable,  // the type's stress update, then the common bulk viscosity, forces, hourglass, step
+};
+
+// The per-element state a solid material works on at one point (the scalar kernels' argument;
+// the block kernels have the same fields as lanes of HexBlock).
+struct SolidPointState {
+  double sig[6] = {0, 0, 0, 0, 0, 0};
+  double back[6] = {0, 0, 0, 0, 0, 0};
+  double eps_p = 0;
+  double yielded = 0;
+  double hist[kMaxHistory] = {};
+};
+
+// A solid kernel: the stress update after the caller's Jaumann rotation of sig (and of back
+// when the material carries one).  The block form does, per lane, the scalar form's
+// operations in the same order (tests/element/test_hex_block.cpp checks the bits).
+struct SolidKernel {
+  HexKernel kind = HexKernel::rigid;
+  void (*update_point)(const MaterialConstants&, const double d[6], double dt, SolidPointState&) = nullptr;
+  void (*update_block)(const MaterialConstants&, HexBlock&, double dt) = nullptr;
+  bool plastic_strain = false;  // reads and writes eps_p / yielded
+};
+
+// A plane-stress kernel for shells (a later element family); empty today.
+struct ShellKernel {
+  void (*update_point)(const MaterialConstants&, const double d[6], double dt, SolidPointState&) = nullptr;
+};
+
+// Checks a parameter gets when the deck is read (both formats), with its message.
+enum class ParamCheck : uint8_t {
+  none,
+  positive,          // > 0
+  non_negative,      // >= 0
+  fraction,          // in [0, 1]
+  poisson,           // in [0, 0.5)
+  below_E,           // in [0, E)
+  flag01,            // 0 or 1
+  integer,           // a whole number >= 0 (flags)
+  curve,             // a load-curve reference (0 = none): the readers map and check it
+  unsupported,       // LS-DYNA field IMPACT-3D does not implement: nonzero is message 1102
+  ignored,           // read, no effect: nonzero is warning 2006
+};
+
+// One parameter of a material type.
+struct MaterialParam {
+  const char* key = "";       // keyword field name ("SIGY")
+  const char* fname = nullptr;  // fixed-format field name in messages ("yield stress"); nullptr: key
+  const char* label = nullptr;  // the printed echo's name; nullptr: not echoed by the generic echo
+  int kcard = -1, kfield = 0;  // keyword: card (0 = the card with MID) and field 0-7; kcard < 0: not in keyword decks
+  int fcard = 0, fcol = 0;    // fixed format: card 3-8 and first column (10 columns); fcard 0: not in fixed decks
+  double MaterialData::* field = nullptr;  // where the value goes, or (nullptr) MaterialData::par[index]
+  int index = 0;
+  double def = 0;     // value of a blank field
+  ParamCheck check = ParamCheck::none;
+  int msg = 1003;     // message of a failed check (1003 value out of range, or a dedicated one)
+  const char* detail = "";  // the message's detail (or the feature, for unsupported / ignored)
+  const char* unit = "";    // echo unit ("stress"); "" prints the plain number
+  bool optional_write = false;  // the fixed-format converter writes it only when nonzero
+  bool keyword_write = true;    // the keyword converter writes it
+};
+
+// Reports a problem with a parameter (the reader maps it to its file, line, card and columns).
+using ParamReport = std::function<void(const MaterialParam& p, int msg, const std::string& detail)>;
+
+struct MaterialType {
+  int number = 0;                         // DYNA3D type number (LS-DYNA's *MAT_0nn)
+  const char* name = "";                  // printed name
+  std::vector<const char*> keywords;      // LS-DYNA keywords (without '*'; the first is written)
+  std::vector<MaterialParam> params;      // card layouts, checks, defaults
+  int num_par = 0;                        // size of MaterialData::par
+  int keyword_cards = 1;                  // cards the keyword reader reads (and the converter writes)
+  std::vector<const char*> keyword_heads;  // the converter's comment line above card k (nullptr: the keys)
+  const char* extra_card_feature = nullptr;  // non-null: a card after those is message 1102 naming this
+  bool one_per_card = false;              // fixed format: the original one parameter per card (cols 1-10),
+                                          // with the packed 8-per-card alternative (warning 2001)
+  bool rigid = false;
+  bool takes_eos = false;
+  // after the per-parameter checks: cross-field checks and defaults (may be null)
+  void (*check)(MaterialData&, const MaterialType&, const ParamReport&) = nullptr;
+  // the kernel's constants (rho, E, nu are set; derive_material_constants has run)
+  void (*derive)(const MaterialData&, const Model&, MaterialConstants&) = nullptr;
+  // extra echo lines after the parameters (may be null)
+  void (*echo)(std::ostream&, const MaterialData&) = nullptr;
+  SolidKernel solid;
+  ShellKernel shell;
+  std::vector<const char*> history;       // names of the per-element history values (<= kMaxHistory)
+};
+
+// E and nu, which every type has (keyword card 1 fields 2 and 3; fixed format where given).
+inline MaterialParam young_modulus_param(int fcard, int fcol) {
+  return {.key = "E", .label = nullptr, .kcard = 0, .kfield = 2, .fcard = fcard, .fcol = fcol, .field = &MaterialData::E,
+          .check = ParamCheck::positive, .msg = 1208};
+}
+inline MaterialParam poisson_param(int fcard, int fcol) {
+  return {.key = "PR", .fname = "nu", .kcard = 0, .kfield = 3, .fcard = fcard, .fcol = fcol, .field = &MaterialData::nu,
+          .check = ParamCheck::poisson, .msg = 1209};
+}
+// The parameter with this keyword name, or nullptr.
+const MaterialParam* find_param(const MaterialType& t, std::string_view key);
+
+// The table: every supported material type, in increasing number.
+std::span<const MaterialType* const> material_types();
+// The type with this DYNA3D number, or nullptr (refused when the deck is read).
+const MaterialType* find_material_type(int number);
+// The type a keyword (upper case, without '*' and _TITLE) names, or nullptr.
+const MaterialType* find_material_type_by_keyword(std::string_view keyword);
+// The type of a material the deck reader accepted (throws std::logic_error for an unknown one).
+const MaterialType& material_type(int number);
+// "1 elastic, 3 elastic-plastic, ..." and "*MAT_ELASTIC, ..." for messages.
+std::string supported_material_types();
+std::string supported_material_keywords();
+
+// The parameter's value in a material.
+double& param_value(MaterialData& md, const MaterialParam& p);
+double param_value(const MaterialData& md, const MaterialParam& p);
+// Sizes md.par for its type and sets every parameter to its default.
+void set_param_defaults(MaterialData& md, const MaterialType& t);
+// The per-parameter checks, then the type's own; problems go to report.
+void check_material_params(MaterialData& md, const MaterialType& t, const ParamReport& report);
+// The material's kernel constants from the deck's values.
+MaterialConstants derive_constants(const MaterialData& md, const Model& m);
+// The printed echo of the type's parameters (one line each) and the type's extra lines.
+void echo_material_params(std::ostream& os, const MaterialData& md, const MaterialType& t);
+// One echo line "     label ..... value" in the printed output's layout.
+void echo_line(std::ostream& os, const std::string& label, const std::string& value);
+// The history values a material's solids carry (0 for none).
+int material_history_count(int type);
+
+}  // namespace impact3d

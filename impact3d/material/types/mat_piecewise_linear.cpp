@@ -1,0 +1,284 @@
+// Type 24, *MAT_PIECEWISE_LINEAR_PLASTICITY: von Mises plasticity with isotropic hardening
+// sigma_y(eps_p) from the EPS/ES table (up to 8 points), an LCSS curve, or (neither) SIGY and
+// the linear plastic modulus E_p = E ETAN / (E - ETAN) (as type 3); Cowper-Symonds rate
+// scaling of the yield stress (VP = 0); deletion at the plastic strain FAIL and below the
+// element step TDEL.
+//
+// The radial return is exact for the piecewise-linear curve: with the trial von Mises stress
+// q, the rate factor R and the curve's segment i (sigma_y = s_i + H_i (eps - e_i), the first
+// and last segments extended), the plastic strain increment solves q - 3 G de = R sigma_y(eps0
+// + de), i.e. de = (q - R h_i(eps0)) / (3 G + R H_i) in the segment that contains eps0 + de
+// (the left side minus the right decreases strictly in de: one root, one segment).
+//
+// Fixed format (an IMPACT-3D choice; no DYNA3D manual fixes type 24): card 3 E, nu, SIGY,
+// ETAN, FAIL, TDEL; card 4 C, P, LCSS, LCSR, VP; card 5 EPS1-8; card 6 ES1-8 (8 E10 each).
+
+#include <cmath>
+#include <cstdio>
+#include <ostream>
+
+#include "impact3d/material/material_block.h"
+#include "impact3d/material/material_types.h"
+
+namespace impact3d {
+
+namespace {
+
+enum Par { kTdel, kLcss, kLcsr, kVP, kLcf, kEps1, kEs1 = kEps1 + 8, kNumPar = kEs1 + 8 };
+
+// A parameter (0 when a programmatic MaterialData leaves par short).
+double par(const MaterialData& md, int i) { return std::size_t(i) < md.par.size() ? md.par[std::size_t(i)] : 0.0; }
+
+// The table's points (EPS1.., ES1..): up to the first pair after the first that is all zero.
+int table_points(const MaterialData& md) {
+  bool any = false;
+  for (int i = 0; i < 8; ++i) any = any || par(md, kEs1 + i) != 0;
+  if (!any) return 0;
+  int n = 1;
+  while (n < 8 && (par(md, kEps1 + n) != 0 || par(md, kEs1 + n) != 0)) ++n;
+  return n;
+}
+
+void check(MaterialData& md, const MaterialType& t, const ParamReport& report) {
+  if (md.rate_c > 0 && !(md.rate_p > 0)) report(*find_param(t, "P"), 1003, "must be positive when C is given");
+  if (md.fail_strain < 0) report(*find_param(t, "FAIL"), 1102, "a user failure subroutine (FAIL < 0)");
+  if (md.fail_strain >= 1e19) md.fail_strain = 0;  // LS-DYNA's default 1e21: never
+  const int n = table_points(md);
+  static const char* eps_names[] = {"EPS1", "EPS2", "EPS3", "EPS4", "EPS5", "EPS6", "EPS7", "EPS8"};
+  static const char* es_names[] = {"ES1", "ES2", "ES3", "ES4", "ES5", "ES6", "ES7", "ES8"};
+  for (int i = 0; i < n; ++i) {
+    const double e = par(md, kEps1 + i), s = par(md, kEs1 + i);
+    if (e < 0 || (i > 0 && !(e > par(md, kEps1 + i - 1))))
+      report(*find_param(t, eps_names[i]), 1003, "plastic strains of the table must start at 0 or more and increase");
+    if (s < 0 || (i > 0 && s < par(md, kEs1 + i - 1)))
+      report(*find_param(t, es_names[i]), 1003, "yield stresses of the table must not be negative nor decrease (no softening)");
+  }
+}
+
+void derive(const MaterialData& d, const Model& m, MaterialConstants& c) {
+  c.sigma_y = d.sigma_y;
+  c.E_tan = d.E_tan;
+  c.beta = 1;
+  if (d.rate_c > 0 && d.rate_p > 0) {
+    c.rate_c = d.rate_c;
+    c.rate_inv_p = 1.0 / d.rate_p;
+  }
+  if (d.fail_strain > 0) c.fail_strain = d.fail_strain;
+  c.tdel = par(d, kTdel);
+  const int lcss = int(par(d, kLcss));
+  const int n = table_points(d);
+  c.curve_eps.clear();
+  c.curve_sig.clear();
+  if (lcss > 0 && std::size_t(lcss) <= m.load_curves.size()) {
+    const LoadCurve& lc = m.load_curves[std::size_t(lcss - 1)];
+    c.curve_eps = lc.t;
+    c.curve_sig = lc.f;
+  } else if (n > 0) {
+    for (int i = 0; i < n; ++i) {
+      c.curve_eps.push_back(par(d, kEps1 + i));
+      c.curve_sig.push_back(par(d, kEs1 + i));
+    }
+  } else {
+    // bilinear: E_p = E ETAN / (E - ETAN), as type 3
+    const double Ep = (d.E_tan > 0 && d.E_tan < d.E) ? d.E * d.E_tan / (d.E - d.E_tan) : 0.0;
+    c.curve_eps = {0.0, 1.0};
+    c.curve_sig = {d.sigma_y, d.sigma_y + Ep};
+  }
+  const std::size_t np = c.curve_eps.size();
+  c.curve_slope.assign(np > 1 ? np - 1 : 1, 0.0);
+  for (std::size_t i = 0; i + 1 < np; ++i)
+    c.curve_slope[i] = (c.curve_sig[i + 1] - c.curve_sig[i]) / (c.curve_eps[i + 1] - c.curve_eps[i]);
+  c.sigma_y = c.curve_sig.empty() ? 0.0 : c.curve_sig[0];
+}
+
+std::string f6(double v) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.6e", v);
+  return b;
+}
+
+void echo(std::ostream& os, const MaterialData& md) {
+  const int n = table_points(md);
+  if (par(md, kLcss) > 0) {
+    echo_line(os, "flow stress", "load curve " + std::to_string(int(par(md, kLcss))) + " (plastic strain -> stress)");
+  } else if (n > 0) {
+    for (int i = 0; i < n; ++i)
+      echo_line(os, "flow stress point " + std::to_string(i + 1),
+                "plastic strain " + f6(par(md, kEps1 + i)) + ", stress " + f6(par(md, kEs1 + i)));
+  } else {
+    const double Ep = (md.E_tan > 0 && md.E_tan < md.E) ? md.E * md.E_tan / (md.E - md.E_tan) : 0.0;
+    echo_line(os, "yield stress", f6(md.sigma_y) + " (stress)");
+    echo_line(os, "tangent modulus", f6(md.E_tan) + " (stress)");
+    echo_line(os, "plastic hardening modulus (derived)", f6(Ep) + " (stress)");
+  }
+  if (md.rate_c > 0) {
+    char p[32];
+    std::snprintf(p, sizeof p, "%.4g", md.rate_p);
+    echo_line(os, "strain-rate factor (Cowper-Symonds)", "1 + (rate/C)^(1/P), C " + f6(md.rate_c) + " (1/time), P " + p);
+  }
+  if (md.fail_strain > 0) echo_line(os, "failure plastic strain (deletion)", f6(md.fail_strain));
+  if (par(md, kTdel) > 0) echo_line(os, "deletion below element step TDEL", f6(par(md, kTdel)) + " (time)");
+}
+
+double rate_norm(const double d[6]) {
+  return std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2] + 2.0 * (d[3] * d[3] + d[4] * d[4] + d[5] * d[5]));
+}
+
+// The plastic strain increment for trial von Mises stress q, plastic strain e0, rate factor R
+// (0 when the root is not positive: elastic).  The block form repeats these operations.
+double calc_plastic_strain_increment(const MaterialConstants& m, double q, double e0, double R) {
+  const double* ce = m.curve_eps.data();
+  const double* cs = m.curve_sig.data();
+  const double* ch = m.curve_slope.data();
+  const int ns = int(m.curve_slope.size());
+  const double G3 = 3.0 * m.G;
+  double de = 0.0;
+  bool found = false;
+  for (int i = 0; i < ns; ++i) {
+    const double h = cs[i] + ch[i] * (e0 - ce[i]);
+    const double cand = (q - R * h) / (G3 + R * ch[i]);
+    const double e = e0 + cand;
+    const double lo = i == 0 ? -HUGE_VAL : ce[i];
+    const double hi = i == ns - 1 ? HUGE_VAL : ce[i + 1];
+    const bool valid = e >= lo && e <= hi;
+    if (!found && valid) {
+      de = cand;
+      found = true;
+    }
+  }
+  return de > 0.0 ? de : 0.0;
+}
+
+void update_point(const MaterialConstants& m, const double d[6], double dt, SolidPointState& s) {
+  update_stress_elastic(m, d, dt, s.sig);  // elastic trial
+  double* sig = s.sig;
+  const double p = (sig[0] + sig[1] + sig[2]) * (1.0 / 3.0);
+  const double s0 = sig[0] - p, s1 = sig[1] - p, s2 = sig[2] - p;
+  const double xx = s0 * s0 + s1 * s1 + s2 * s2 + 2.0 * (sig[3] * sig[3] + sig[4] * sig[4] + sig[5] * sig[5]);
+  const double q = std::sqrt(1.5 * xx);
+  const double R = m.rate_c > 0.0 ? 1.0 + std::pow(rate_norm(d) / m.rate_c, m.rate_inv_p) : 1.0;
+  const double de = calc_plastic_strain_increment(m, q, s.eps_p, R);
+  if (!(de > 0.0)) return;
+  const double rs = 3.0 * m.G * de / q;
+  sig[0] -= rs * s0;
+  sig[1] -= rs * s1;
+  sig[2] -= rs * s2;
+  sig[3] -= rs * sig[3];
+  sig[4] -= rs * sig[4];
+  sig[5] -= rs * sig[5];
+  s.eps_p += de;
+  s.yielded = 1.0;
+}
+
+void update_block(const MaterialConstants& m, HexBlock& k, double dt) {
+  update_stress_elastic_block(m, k.d, dt, k.sig);  // elastic trial
+  alignas(64) Lanes R, q, de, found;
+  if (m.rate_c > 0.0) {
+    IMPACT3D_FOR_LANES {
+      R[l] = std::sqrt(k.d[0][l] * k.d[0][l] + k.d[1][l] * k.d[1][l] + k.d[2][l] * k.d[2][l] +
+                       2.0 * (k.d[3][l] * k.d[3][l] + k.d[4][l] * k.d[4][l] + k.d[5][l] * k.d[5][l]));
+    }
+    for (int l = 0; l < kLanes; ++l) R[l] = 1.0 + std::pow(R[l] / m.rate_c, m.rate_inv_p);
+  } else {
+    IMPACT3D_FOR_LANES R[l] = 1.0;
+  }
+  IMPACT3D_FOR_LANES {
+    const double p = (k.sig[0][l] + k.sig[1][l] + k.sig[2][l]) * (1.0 / 3.0);
+    const double s0 = k.sig[0][l] - p, s1 = k.sig[1][l] - p, s2 = k.sig[2][l] - p;
+    const double xx = s0 * s0 + s1 * s1 + s2 * s2 +
+                      2.0 * (k.sig[3][l] * k.sig[3][l] + k.sig[4][l] * k.sig[4][l] + k.sig[5][l] * k.sig[5][l]);
+    q[l] = std::sqrt(1.5 * xx);
+    de[l] = 0.0;
+    found[l] = 0.0;
+  }
+  const double* ce = m.curve_eps.data();
+  const double* cs = m.curve_sig.data();
+  const double* ch = m.curve_slope.data();
+  const int ns = int(m.curve_slope.size());
+  const double G3 = 3.0 * m.G;
+  for (int i = 0; i < ns; ++i) {
+    const double cei = ce[i], csi = cs[i], chi = ch[i];
+    const double lo = i == 0 ? -HUGE_VAL : cei;
+    const double hi = i == ns - 1 ? HUGE_VAL : ce[i + 1];
+    IMPACT3D_FOR_LANES {
+      const double e0 = k.eps_p[l];
+      const double h = csi + chi * (e0 - cei);
+      const double cand = (q[l] - R[l] * h) / (G3 + R[l] * chi);
+      const double e = e0 + cand;
+      const bool take = found[l] == 0.0 && e >= lo && e <= hi;
+      de[l] = take ? cand : de[l];
+      found[l] = take ? 1.0 : found[l];
+    }
+  }
+  IMPACT3D_FOR_LANES {
+    const double dl = de[l] > 0.0 ? de[l] : 0.0;
+    const bool yields = dl > 0.0;
+    const double p = (k.sig[0][l] + k.sig[1][l] + k.sig[2][l]) * (1.0 / 3.0);
+    const double rs = G3 * dl / q[l];
+    const double s0 = k.sig[0][l] - p, s1 = k.sig[1][l] - p, s2 = k.sig[2][l] - p;
+    k.sig[0][l] = yields ? k.sig[0][l] - rs * s0 : k.sig[0][l];
+    k.sig[1][l] = yields ? k.sig[1][l] - rs * s1 : k.sig[1][l];
+    k.sig[2][l] = yields ? k.sig[2][l] - rs * s2 : k.sig[2][l];
+    k.sig[3][l] = yields ? k.sig[3][l] - rs * k.sig[3][l] : k.sig[3][l];
+    k.sig[4][l] = yields ? k.sig[4][l] - rs * k.sig[4][l] : k.sig[4][l];
+    k.sig[5][l] = yields ? k.sig[5][l] - rs * k.sig[5][l] : k.sig[5][l];
+    k.eps_p[l] = yields ? k.eps_p[l] + dl : k.eps_p[l];
+    k.yielded[l] = yields ? 1.0 : k.yielded[l];
+  }
+}
+
+MaterialParam table_param(const char* key, int card, int field, int index) {
+  return {.key = key, .kcard = card - 1, .kfield = field, .fcard = card + 2, .fcol = 1 + 10 * field, .index = index,
+          .optional_write = true};
+}
+
+}  // namespace
+
+const MaterialType& mat_piecewise_linear_type() {
+  static const MaterialType t = [] {
+    MaterialType t;
+    t.number = 24;
+    t.name = "piecewise-linear plasticity";
+    t.keywords = {"MAT_PIECEWISE_LINEAR_PLASTICITY", "MAT_024"};
+    t.params = {
+        young_modulus_param(3, 1),
+        poisson_param(3, 11),
+        {.key = "SIGY", .kcard = 0, .kfield = 4, .fcard = 3, .fcol = 21, .field = &MaterialData::sigma_y,
+         .check = ParamCheck::non_negative, .msg = 1211},
+        {.key = "ETAN", .kcard = 0, .kfield = 5, .fcard = 3, .fcol = 31, .field = &MaterialData::E_tan,
+         .check = ParamCheck::below_E, .msg = 1210},
+        {.key = "FAIL", .kcard = 0, .kfield = 6, .fcard = 3, .fcol = 41, .field = &MaterialData::fail_strain, .optional_write = true},
+        {.key = "TDEL", .kcard = 0, .kfield = 7, .fcard = 3, .fcol = 51, .index = kTdel, .check = ParamCheck::non_negative,
+         .detail = "must not be negative (0: no deletion by time step)", .optional_write = true},
+        {.key = "C", .kcard = 1, .kfield = 0, .fcard = 4, .fcol = 1, .field = &MaterialData::rate_c,
+         .check = ParamCheck::non_negative, .detail = "must not be negative (0: no strain-rate effect)", .optional_write = true},
+        {.key = "P", .kcard = 1, .kfield = 1, .fcard = 4, .fcol = 11, .field = &MaterialData::rate_p, .optional_write = true},
+        {.key = "LCSS", .kcard = 1, .kfield = 2, .fcard = 4, .fcol = 21, .index = kLcss, .check = ParamCheck::curve,
+         .detail = "a load-curve number (0: none)", .optional_write = true},
+        {.key = "LCSR", .kcard = 1, .kfield = 3, .fcard = 4, .fcol = 31, .index = kLcsr, .check = ParamCheck::unsupported,
+         .detail = "the strain-rate scaling curve LCSR (use C and P)"},
+        {.key = "VP", .kcard = 1, .kfield = 4, .fcard = 4, .fcol = 41, .index = kVP, .check = ParamCheck::unsupported,
+         .detail = "VP other than 0 (VP = 0 scales the yield stress)"},
+        {.key = "LCF", .kcard = 1, .kfield = 5, .index = kLcf, .check = ParamCheck::unsupported,
+         .detail = "the failure curve LCF"},
+        table_param("EPS1", 3, 0, kEps1 + 0), table_param("EPS2", 3, 1, kEps1 + 1),
+        table_param("EPS3", 3, 2, kEps1 + 2), table_param("EPS4", 3, 3, kEps1 + 3),
+        table_param("EPS5", 3, 4, kEps1 + 4), table_param("EPS6", 3, 5, kEps1 + 5),
+        table_param("EPS7", 3, 6, kEps1 + 6), table_param("EPS8", 3, 7, kEps1 + 7),
+        table_param("ES1", 4, 0, kEs1 + 0), table_param("ES2", 4, 1, kEs1 + 1),
+        table_param("ES3", 4, 2, kEs1 + 2), table_param("ES4", 4, 3, kEs1 + 3),
+        table_param("ES5", 4, 4, kEs1 + 4), table_param("ES6", 4, 5, kEs1 + 5),
+        table_param("ES7", 4, 6, kEs1 + 6), table_param("ES8", 4, 7, kEs1 + 7),
+    };
+    t.num_par = kNumPar;
+    t.keyword_cards = 4;
+    t.check = check;
+    t.derive = derive;
+    t.echo = echo;
+    t.solid = {HexKernel::deformable, update_point, update_block, true};
+    return t;
+  }();
+  return t;
+}
+
+}  // namespace impact3d

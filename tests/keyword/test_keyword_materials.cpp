@@ -1,0 +1,150 @@
+// Material keywords through the table of material types: *MAT_PIECEWISE_LINEAR_PLASTICITY read
+// (table, LCSS curve mapped to its number), checked, echoed, and through the converter both
+// ways; an unknown fixed-format type refused.
+
+#include <gtest/gtest.h>
+
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "impact3d/input/deck_reader.h"
+#include "impact3d/input/deck_writer.h"
+#include "impact3d/material/material_types.h"
+#include "impact3d/output/printed_output.h"
+
+using namespace impact3d;
+
+namespace {
+
+struct Read {
+  Model m;
+  Diagnostics d;
+  bool ok = false;
+  std::string messages() const {
+    std::ostringstream os;
+    d.print(os);
+    return os.str();
+  }
+};
+
+Read read_text(const std::string& text, const std::string& name = "deck.k") {
+  Read r;
+  DeckFile deck;
+  deck.load_from_string(name, text);
+  r.ok = read_deck(deck, r.m, r.d, InputOptions{});
+  if (r.ok) r.ok = check_model(r.m, r.d);
+  return r;
+}
+
+std::string join(const std::vector<std::string>& v) {
+  std::string s;
+  for (const auto& x : v) s += x + "\n";
+  return s;
+}
+
+// One unit hexahedron of part 1 with material 7 (the given *MAT keyword and its cards).
+std::string one_hex_deck(const std::string& mat) {
+  return "*KEYWORD\n*CONTROL_TERMINATION\n   1.0E-05\n*DATABASE_BINARY_D3PLOT\n    5.0E-7\n"
+         "*PART\nblock\n         1         1         7\n"
+         "*SECTION_SOLID\n         1         1\n" +
+         mat +
+         "*DEFINE_CURVE\n        33\n                 0.0               250.0\n"
+         "                 0.1               300.0\n                 1.0               400.0\n"
+         "*NODE\n"
+         "       1             0.0             0.0             0.0\n"
+         "       2             1.0             0.0             0.0\n"
+         "       3             1.0             1.0             0.0\n"
+         "       4             0.0             1.0             0.0\n"
+         "       5             0.0             0.0             1.0\n"
+         "       6             1.0             0.0             1.0\n"
+         "       7             1.0             1.0             1.0\n"
+         "       8             0.0             1.0             1.0\n"
+         "*ELEMENT_SOLID\n       1       1       1       2       3       4       5       6       7       8\n"
+         "*END\n";
+}
+
+const std::string kMat24 =
+    "*MAT_PIECEWISE_LINEAR_PLASTICITY_TITLE\nsteel\n"
+    "$#     mid        ro         e        pr      sigy      etan      fail      tdel\n"
+    "         7    7.8E-9  200000.0       0.3     250.0       0.0       0.8     1e-12\n"
+    "$#       c         p      lcss      lcsr        vp\n"
+    "      40.0       5.0         0         0       0.0\n"
+    "       0.0      0.01      0.05       0.2\n"
+    "     250.0     300.0     350.0     380.0\n";
+
+double par(const Model& m, const char* key) {
+  return param_value(m.materials[0], *find_param(material_type(24), key));
+}
+
+}  // namespace
+
+TEST(KeywordMaterials, PiecewiseLinearTableIsReadCheckedAndRoundTrips) {
+  Read a = read_text(one_hex_deck(kMat24));
+  ASSERT_TRUE(a.ok) << a.messages();
+  const MaterialData& md = a.m.materials[0];
+  EXPECT_EQ(md.type, 24);
+  EXPECT_EQ(md.E, 200000.0);
+  EXPECT_EQ(md.fail_strain, 0.8);
+  EXPECT_EQ(md.rate_c, 40.0);
+  EXPECT_EQ(md.rate_p, 5.0);
+  EXPECT_EQ(par(a.m, "TDEL"), 1e-12);
+  EXPECT_EQ(par(a.m, "EPS3"), 0.05);
+  EXPECT_EQ(par(a.m, "ES4"), 380.0);
+  // the printed echo names the table points
+  std::ostringstream echo;
+  write_model_summary(echo, a.m);
+  EXPECT_NE(echo.str().find("piecewise-linear plasticity (type 24)"), std::string::npos) << echo.str();
+  EXPECT_NE(echo.str().find("flow stress point 4 "), std::string::npos) << echo.str();
+  // keyword -> keyword, keyword -> fixed -> keyword: the same model
+  std::ostringstream kw, fx;
+  write_keyword_deck(kw, a.m);
+  Read k = read_text(kw.str());
+  ASSERT_TRUE(k.ok) << k.messages() << kw.str();
+  EXPECT_EQ(join(model_differences(a.m, k.m)), "");
+  write_fixed_deck(fx, a.m, nullptr);
+  Read f = read_text(fx.str(), "deck.dyn");
+  ASSERT_TRUE(f.ok) << f.messages() << fx.str();
+  EXPECT_EQ(join(model_differences(a.m, f.m)), "") << fx.str();
+}
+
+TEST(KeywordMaterials, PiecewiseLinearCurveIsMappedAndChecked) {
+  std::string deck = one_hex_deck(kMat24);
+  deck.replace(deck.find("         0         0       0.0\n"), 31, "        33         0       0.0\n");
+  Read a = read_text(deck);
+  ASSERT_TRUE(a.ok) << a.messages();
+  EXPECT_EQ(par(a.m, "LCSS"), 1.0);  // curve 33 is the deck's first curve: number 1
+  std::ostringstream fx;
+  write_fixed_deck(fx, a.m, nullptr);
+  Read f = read_text(fx.str(), "deck.dyn");
+  ASSERT_TRUE(f.ok) << f.messages() << fx.str();
+  EXPECT_EQ(join(model_differences(a.m, f.m)), "");
+  // an undefined curve, VP = 1, LCSR and a decreasing table: errors naming the fields
+  std::string bad = one_hex_deck(kMat24);
+  bad.replace(bad.find("         0         0       0.0\n"), 31, "        34        12       1.0\n");
+  bad.replace(bad.find("     250.0     300.0     350.0     380.0"), 40, "     250.0     300.0     290.0     380.0");
+  Read b = read_text(bad);
+  EXPECT_FALSE(b.ok);
+  const std::string msg = b.messages();
+  EXPECT_NE(msg.find("LCSS"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("LCSR"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("VP"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("ES3"), std::string::npos) << msg;
+  EXPECT_EQ(b.d.count(1102), 2) << msg;
+}
+
+// A fixed-format deck with a type the table does not have: error 1103 listing the types.
+TEST(KeywordMaterials, UnknownFixedFormatTypeIsRefused) {
+  Read a = read_text(one_hex_deck(kMat24));
+  ASSERT_TRUE(a.ok);
+  std::ostringstream fx;
+  write_fixed_deck(fx, a.m, nullptr);
+  std::string text = fx.str();
+  const std::size_t at = text.find("\n    1   24");  // material card 1: number, type
+  ASSERT_NE(at, std::string::npos);
+  text.replace(at + 6, 5, "   22");
+  Read f = read_text(text, "deck.dyn");
+  EXPECT_FALSE(f.ok);
+  EXPECT_EQ(f.d.count(1103), 1) << f.messages();
+  EXPECT_NE(f.messages().find("24 piecewise-linear plasticity"), std::string::npos) << f.messages();
+}
