@@ -914,16 +914,16 @@ TEST(KeywordRefusals, RepeatsOfOneCauseAreOneLineNamingTheRefusedKeyword) {
 }
 
 TEST(KeywordRefusals, ReferenceToASetOfARefusedKeywordNamesItAndTheExactVariant) {
-  std::string deck = replaced(prepost_deck(), "*SET_NODE_LIST\n", "*SET_NODE_GENERAL\n");
+  std::string deck = replaced(prepost_deck(), "*SET_NODE_LIST\n", "*SET_NODE_INTERSECT\n");
   Read r = read_text(deck);
   EXPECT_FALSE(r.ok);
   const std::string out = r.messages();
   EXPECT_NE(out.find("*RIGIDWALL_PLANAR_ID, field \"NSID\" (cols 1-10): reference to an undefined set: *SET_NODE_LIST 20 is not defined "
-                     "(it is defined by *SET_NODE_GENERAL at deck.k:"),
+                     "(it is defined by *SET_NODE_INTERSECT at deck.k:"),
             std::string::npos)
       << out;
   EXPECT_NE(out.find("*BOUNDARY_SPC_SET, field \"NSID\""), std::string::npos) << out;
-  EXPECT_NE(out.find("1 keyword block(s): *SET_NODE_GENERAL"), std::string::npos) << out;
+  EXPECT_NE(out.find("1 keyword block(s): *SET_NODE_INTERSECT"), std::string::npos) << out;
 }
 
 TEST(KeywordRefusals, ValidLsDynaChoicesNotImplementedAreNotSupported) {
