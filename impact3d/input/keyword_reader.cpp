@@ -22,6 +22,7 @@
 #include <map>
 #include <memory>
 #include <set>
+#include <sstream>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -331,6 +332,7 @@ struct Block {
   bool long_fmt = false, i10 = false;
   bool title_opt = false, id_opt = false;  // _TITLE / _ID option cards
   bool moving_opt = false;                 // *RIGIDWALL_PLANAR_MOVING: card 3 MASS, V0
+  std::vector<int> cases;                  // the *CASE_BEGIN_n sections (and CID=n) it is in
   BlockLines data;
 };
 
@@ -525,6 +527,7 @@ class KeywordReader {
     std::vector<std::string> stack;
     check_first_line();
     scan(main_, 0, stack);
+    select_case();
     collect_parameters();
     parse_blocks();
     apply_include_transforms();
@@ -650,6 +653,10 @@ class KeywordReader {
         b.name = name;
         b.kw = {&f, &l};
         if (name == "END") return;  // the rest of this file is not read
+        if (case_marker(name, f, l)) continue;  // *CASE_BEGIN_n / *CASE_END_n: no block
+        b.cases = open_cases_;
+        if (const int cid = keyword_case_option(t); cid > 0 && std::find(b.cases.begin(), b.cases.end(), cid) == b.cases.end())
+          b.cases.push_back(cid);
         if (name == "KEYWORD") keyword_options(t, f, l);
         b.long_fmt = name == "KEYWORD" ? global_long_ : lng;
         b.i10 = name == "KEYWORD" ? global_i10_ : i10;
@@ -871,6 +878,178 @@ class KeywordReader {
     stack.pop_back();
   }
 
+
+  // ---------------------------------------------------------------- *CASE
+  // *CASE_BEGIN_n ... *CASE_END_n sections (nested or not) and the CID=n option of a keyword
+  // line put keywords in child case n; a master *CASE (CASEID JOBID; a line of command-line
+  // options; lines of child case ids SCID) runs the main model and its children.  Without a
+  // master *CASE each child n is case n.  The base case (case_id 0) leaves every child out.
+  std::vector<int> open_cases_;
+  struct RCase {
+    int id = 0;
+    std::string job;
+    std::vector<int> children;
+    std::vector<KLine> commands;  // command-line options for the case: warned when it runs
+    Ref ref;
+  };
+  std::vector<RCase> master_cases_;
+
+  bool case_marker(const std::string& name, const DeckFile& f, const DeckLine& l) {
+    for (const bool begin : {true, false}) {
+      const std::string p = begin ? "CASE_BEGIN_" : "CASE_END_";
+      if (name.rfind(p, 0) != 0) continue;
+      long long n = 0;
+      Location loc;
+      loc.file = f.name();
+      loc.line = l.number;
+      loc.card = "*" + name;
+      if (parse_fortran_int(name.substr(p.size()), n) != FieldStatus::ok || n < 1) {
+        diag_.add(1006, loc, "*" + p + "n takes a positive case number n");
+        return true;
+      }
+      auto it = std::find(open_cases_.begin(), open_cases_.end(), int(n));
+      if (begin) {
+        if (it == open_cases_.end()) open_cases_.push_back(int(n));
+      } else if (it == open_cases_.end()) {
+        diag_.add(1006, loc, "no *CASE_BEGIN_" + std::to_string(n) + " before it");
+      } else {
+        open_cases_.erase(it);
+      }
+      return true;
+    }
+    return false;
+  }
+
+  // CID=n on a keyword line (after the keyword name): the keyword belongs to child case n.
+  static int keyword_case_option(std::string_view t) {
+    const std::string u = upper(t);
+    const std::size_t sp = u.find_first_of(" \t");
+    if (sp == std::string::npos) return 0;
+    const std::size_t p = u.find("CID=", sp);
+    if (p == std::string::npos || (p > 0 && u[p - 1] != ' ' && u[p - 1] != '\t')) return 0;
+    long long n = 0;
+    const std::size_t e = u.find_first_of(" \t", p);
+    if (parse_fortran_int(u.substr(p + 4, e == std::string::npos ? std::string::npos : e - p - 4), n) != FieldStatus::ok) return 0;
+    return int(n);
+  }
+
+  void read_master_cases() {
+    for (const Block& b : blocks_) {
+      if (b.name != "CASE") continue;
+      RCase c;
+      c.ref.file = b.kw.file;
+      c.ref.line = b.kw.line;
+      std::size_t k = 0;
+      while (k < b.data.size() && is_blank(b.data[k].line->text)) ++k;
+      if (k >= b.data.size()) { missing_card(b, "card 1 (CASEID JOBID)"); continue; }
+      // card 1: CASEID and JOBID, written in columns or separated by blanks
+      std::istringstream first(std::string(b.data[k].line->text));
+      std::string id_text;
+      first >> id_text >> c.job;
+      long long id = 0;
+      if (parse_fortran_int(id_text, id) != FieldStatus::ok || id < 1) {
+        Location loc;
+        loc.file = b.data[k].file->name();
+        loc.line = b.data[k].line->number;
+        loc.card = b.keyword;
+        loc.field = "CASEID";
+        loc.found = id_text;
+        loc.show_found = true;
+        diag_.add(1001, loc, "a positive case id");
+        continue;
+      }
+      c.id = int(id);
+      // then command-line lines (any text) and lines of child case ids (integers only)
+      for (++k; k < b.data.size(); ++k) {
+        std::istringstream line(std::string(b.data[k].line->text));
+        std::vector<int> ids;
+        std::string tok;
+        bool all_ints = true;
+        while (line >> tok) {
+          long long v = 0;
+          if (parse_fortran_int(tok, v) == FieldStatus::ok) ids.push_back(int(v));
+          else all_ints = false;
+        }
+        if (all_ints) {
+          for (int v : ids)
+            if (v != 0) c.children.push_back(v);
+        } else {
+          c.commands.push_back(b.data[k]);
+        }
+      }
+      for (const RCase& o : master_cases_)
+        if (o.id == c.id) diag_.add(1200, loc_of(c.ref, b.keyword, nullptr, false), "case " + std::to_string(c.id) + " also defined at " + at(o.ref));
+      master_cases_.push_back(std::move(c));
+    }
+  }
+
+  // Leaves out the keyword blocks of the child cases the selected case does not hold.
+  void select_case() {
+    read_master_cases();
+    std::set<int> children, all_children;
+    for (const Block& b : blocks_) all_children.insert(b.cases.begin(), b.cases.end());
+    if (!open_cases_.empty()) {
+      Location loc;
+      loc.file = main_.name();
+      diag_.add(1316, loc, "*CASE_BEGIN_" + std::to_string(open_cases_.front()) + " has no *CASE_END_" + std::to_string(open_cases_.front()));
+    }
+    const int want = opt_.case_id;
+    if (want != 0) {
+      std::string job;
+      bool found = false;
+      for (const RCase& c : master_cases_)
+        if (c.id == want) {
+          found = true;
+          job = c.job;
+          children.insert(c.children.begin(), c.children.end());
+          for (const KLine& l : c.commands) {
+            Location loc;
+            loc.file = l.file->name();
+            loc.line = l.line->number;
+            loc.card = "*CASE " + std::to_string(c.id);
+            loc.found = rtrim(l.line->text);
+            loc.show_found = true;
+            diag_.add(2006, loc, "the command-line options of a case: give them on impact3d's command line");
+          }
+        }
+      if (!found && master_cases_.empty() && all_children.count(want)) {  // child n is case n
+        found = true;
+        children.insert(want);
+      }
+      if (!found) {
+        std::string list;
+        for (const RCase& c : master_cases_) list += (list.empty() ? "" : ", ") + std::to_string(c.id);
+        if (master_cases_.empty())
+          for (int c : all_children) list += (list.empty() ? "" : ", ") + std::to_string(c);
+        Location loc;
+        loc.file = main_.name();
+        diag_.add(1310, loc, "case=" + std::to_string(want) + ": the deck defines no such case" + (list.empty() ? std::string(" (it has no *CASE)") : " (its cases: " + list + ")"));
+      }
+      m_.case_job = job.empty() ? "case" + std::to_string(want) : job;
+    }
+    std::size_t dropped = 0;
+    std::vector<Block> kept;
+    kept.reserve(blocks_.size());
+    for (Block& b : blocks_) {
+      bool active = b.cases.empty();
+      for (int c : b.cases) active = active || children.count(c) > 0;
+      if (active) kept.push_back(std::move(b));
+      else ++dropped;
+    }
+    blocks_.swap(kept);
+    if (dropped) {
+      std::string list;
+      for (const RCase& c : master_cases_) list += (list.empty() ? "" : ", ") + std::to_string(c.id);
+      if (master_cases_.empty())
+        for (int c : all_children) list += (list.empty() ? "" : ", ") + std::to_string(c);
+      Location loc;
+      loc.file = main_.name();
+      diag_.add(2008, loc, std::to_string(dropped) + " keyword block(s) of *CASE sections left out: " +
+                               (want == 0 ? "this is the base case (impact3d case=ID runs case ID; cases " + list + ")"
+                                          : "they belong to other cases than " + std::to_string(want)));
+    }
+  }
+
   // ---------------------------------------------------------------- pass 2: parse blocks
   // Field widths for a card of n fields of width w (standard), 20 in long format.
   static std::vector<int> W(const Block& b, int n, int w = 10) { return std::vector<int>(std::size_t(n), b.long_fmt ? 20 : w); }
@@ -1014,7 +1193,7 @@ bool is_ascii_database(const std::string& n) {
         b.moving_opt = true;
       }
       b.name = n;
-      if (n == "KEYWORD" || n == "INCLUDE" || n == "INCLUDE_PATH" || n == "INCLUDE_PATH_RELATIVE" || n == "INCLUDE_TRANSFORM") continue;
+      if (n == "KEYWORD" || n == "INCLUDE" || n == "INCLUDE_PATH" || n == "INCLUDE_PATH_RELATIVE" || n == "INCLUDE_TRANSFORM" || n == "CASE") continue;
       if (n == "COMMENT") {
         parse_comment(b);
         continue;
@@ -3191,6 +3370,7 @@ bool read_deck(DeckFile& deck, Model& model, Diagnostics& diag, const InputOptio
   if (is_keyword_deck(deck)) {
     KeywordOptions ko;
     ko.lenient = options.lenient_keywords;
+    ko.case_id = options.case_id;
     return read_keyword_deck(deck, model, diag, ko);
   }
   return read_dyna3d_deck(deck, model, diag);

@@ -22,6 +22,7 @@
 #include "impact3d/input/coordinate_systems.h"
 #include "impact3d/input/deck_reader.h"
 #include "impact3d/input/keyword_reader.h"
+#include "impact3d/solve/engine.h"
 
 using namespace impact3d;
 namespace fs = std::filesystem;
@@ -481,4 +482,73 @@ TEST(KeywordLayout, IncludeTransformOffsetsAndMovesTheCopy) {
   EXPECT_NEAR(r.m.z[std::size_t(k)], 1.0, 1e-14);
   EXPECT_EQ(fixed(r.m, 0), (std::set<int>{101, 1101}));  // set 20 and its copy, set 70
   fs::remove_all(dir);
+}
+
+// ---------------------------------------------------------------------------- *CASE
+
+namespace {
+Read read_case(const std::string& text, int case_id) {
+  Read r;
+  DeckFile deck;
+  deck.load_from_string("deck.k", text);
+  InputOptions o;
+  o.case_id = case_id;
+  r.ok = read_deck(deck, r.m, r.d, o);
+  if (r.ok) r.ok = check_model(r.m, r.d);
+  return r;
+}
+double kinetic_energy(const Model& m) {  // of the initial velocities: 1/2 rho V v^2 per element share
+  Engine eng(m);
+  EXPECT_EQ(eng.initialize(), StepStatus::ok);
+  const State& s = eng.state();
+  double ke = 0;
+  for (int i = 0; i < s.nn; ++i) {
+    const std::size_t k = std::size_t(i);
+    ke += 0.5 * s.mass[k] * (s.vx[k] * s.vx[k] + s.vy[k] * s.vy[k] + s.vz[k] * s.vz[k]);
+  }
+  return ke;
+}
+}  // namespace
+
+// A deck with master cases as LS-PrePost writes them (CASEID JOBID; a command line; the child
+// case ids) and child sections, nested, and a keyword with CID=: the base case has none of the
+// sections; each case has the main model and its children, and its own kinetic energy
+// 1/2 rho V v^2 (rho 7.8e-9, V 3: m = 2.34e-8; exact to rounding, 1e-12 relative).
+TEST(KeywordCase, BaseCaseAndNamedCasesEachWithTheirOwnCards) {
+  const std::string deck = with(
+      "*CASE\n$#  caseid     jobid\n       101      fast\nMEMORY=20M\n         1\n"
+      "*CASE\n       102\nNCPU=2\n         2         3\n"
+      "*INITIAL_VELOCITY\n         0\n       1.0\n"
+      "*CASE_BEGIN_1\n*INITIAL_VELOCITY\n         0\n     100.0\n*CASE_END_1\n"
+      "*CASE_BEGIN_2\n*CASE_BEGIN_3\n*INITIAL_VELOCITY\n         0\n      50.0\n*CASE_END_3\n*CASE_END_2\n"
+      "*SET_NODE_LIST CID=3\n        20\n       101\n" +
+      std::string(kSpcX20));
+  const double mass = 7.8e-9 * 3.0;
+  Read base = read_case(deck, 0);
+  // the base case: the SPC names set 20, which only case 3 defines
+  EXPECT_FALSE(base.ok);
+  EXPECT_EQ(base.count(1309), 1) << base.messages();
+  Read base_ok = read_case(deck.substr(0, deck.find("*SET_NODE_LIST CID=3")) + "*END\n", 0);
+  ASSERT_TRUE(base_ok.ok) << base_ok.messages();
+  EXPECT_EQ(base_ok.m.case_job, "");
+  EXPECT_NEAR(kinetic_energy(base_ok.m), 0.5 * mass * 1.0, 1e-12 * mass);
+  Read c101 = read_case(deck.substr(0, deck.find("*SET_NODE_LIST CID=3")) + "*END\n", 101);
+  ASSERT_TRUE(c101.ok) << c101.messages();
+  EXPECT_EQ(c101.m.case_job, "fast");
+  EXPECT_NEAR(kinetic_energy(c101.m), 0.5 * mass * 1e4, 1e-12 * mass * 1e4);
+  EXPECT_EQ(c101.count(2006), 1) << c101.messages();  // MEMORY=20M: give options on the command line
+  Read c102 = read_case(deck, 102);
+  ASSERT_TRUE(c102.ok) << c102.messages();
+  EXPECT_EQ(c102.m.case_job, "case102");
+  // node 101 (a corner: 1/24 of the mass) is fixed in x by the SPC of case 3: it does not move
+  EXPECT_NEAR(kinetic_energy(c102.m), 0.5 * mass * 2500 * 23 / 24, 1e-12 * mass * 2500);
+  EXPECT_EQ(fixed(c102.m), std::set<int>{101});
+  Read none = read_case(deck, 5);
+  EXPECT_FALSE(none.ok);
+  ASSERT_EQ(none.count(1310), 1) << none.messages();
+  EXPECT_NE(none.first(1310)->detail.find("its cases: 101, 102"), std::string::npos) << none.messages();
+  // unbalanced sections
+  Read open = read_case(with("*CASE_BEGIN_4\n*CASE_END_5\n"), 0);
+  EXPECT_EQ(open.count(1006), 1) << open.messages();
+  EXPECT_EQ(open.count(1316), 1) << open.messages();
 }
