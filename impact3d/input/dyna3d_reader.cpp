@@ -531,6 +531,9 @@ class Dyna3dReader {
     assign_huge(m_.hex_line, std::size_t(n), 0);
     std::vector<int> seen(std::size_t(n), 0);
     const int w = idw_;
+    const int last = w + 5 + 8 * w;  // the last column read (node n8)
+    int unread = 0;                  // element cards with text after node n8
+    Location unread_where;
     for (int k = 0; k < n; ++k) {
       if (const DeckLine* l = plain_next_card()) {
         const std::string_view t = l->text;
@@ -544,7 +547,8 @@ class Dyna3dReader {
                nodes[std::size_t(j)] <= m_.control.numnp;
           --nodes[std::size_t(j)];
         }
-        if (ok && is_valid_solid_node_pattern(nodes)) {
+        if (ok && is_valid_solid_node_pattern(nodes) &&
+            card_columns(t, last + 1, 80).find_first_not_of(" \r") == std::string_view::npos) {
           deck_.next_card();
           seen[std::size_t(id - 1)] = l->number;
           make_canonical_solid_node_pattern(nodes);
@@ -560,6 +564,7 @@ class Dyna3dReader {
       c.set_name("solid element card for element " + std::to_string(id));
       Card& e = c;
       int mat = int(c.i(w + 1, w + 5, "material number"));
+      if (!c.blank(last + 1, 80) && unread++ == 0) unread_where = c.where(last + 1, 80, "unread columns");
       std::array<int, 8> nodes{};
       bool ok = true;
       for (int j = 0; j < 8; ++j) {
@@ -595,6 +600,9 @@ class Dyna3dReader {
       m_.hex_nodes[std::size_t(id - 1)] = nodes;
       m_.hex_material[std::size_t(id - 1)] = ok ? mat - 1 : -1;
     }
+    if (unread)
+      diag_.add(2020, unread_where, std::to_string(unread) + " solid element card(s) (this is the first) hold text in columns " +
+                                        std::to_string(last + 1) + "-80, after node n8: IMPACT-3D reads nothing there");
     report_missing(seen, "solid element");
   }
 

@@ -442,6 +442,8 @@ struct RSegSet {
 struct RSide {
   int id = 0, type = 0;
   Ref id_ref, type_ref;
+  int boxid = 0;  // SABOXID / SBBOXID: only the segments whose centroid is in the box
+  Ref box_ref;
 };
 struct RContact {
   RSide a, b;
@@ -1322,6 +1324,8 @@ bool is_ascii_database(const std::string& n) {
         char kind = n.rfind("SET_NODE", 0) == 0      ? 'N'
                     : n.rfind("SET_PART", 0) == 0    ? 'P'
                     : n.rfind("SET_SEGMENT", 0) == 0 ? 'S'
+                    : n.rfind("SET_SOLID", 0) == 0   ? 'H'
+                    : n.rfind("DEFINE_BOX", 0) == 0  ? 'B'
                     : n.rfind("PART", 0) == 0        ? 'p'
                                                      : 0;
         if (kind) {
@@ -2137,7 +2141,10 @@ bool is_ascii_database(const std::string& n) {
           for (int& v : seg) offset(v, t->idnoff);
     for (RContact& c : contacts_)
       if (const IncludeTransform* t = transform_of(c.ref.file))
-        for (RSide* side : {&c.a, &c.b}) offset(side->id, side->type == 3 ? t->idpoff : t->idsoff);
+        for (RSide* side : {&c.a, &c.b}) {
+          offset(side->id, side->type == 3 ? t->idpoff : t->idsoff);
+          offset(side->boxid, t->iddoff);
+        }
     for (RWall& w : walls_)
       if (const IncludeTransform* t = transform_of(w.nsid_ref.file)) {
         offset(w.nsid, t->idsoff);
@@ -2297,8 +2304,10 @@ bool is_ascii_database(const std::string& n) {
     ct.b.id_ref = c.ref(1);
     ct.a.type_ref = c.ref(2);
     ct.b.type_ref = c.ref(3);
-    if (c.i(4, "SABOXID") != 0) c.error(1102, 4, "SABOXID", "boxes");
-    if (c.i(5, "SBBOXID") != 0) c.error(1102, 5, "SBBOXID", "boxes");
+    ct.a.boxid = int(c.i(4, "SABOXID"));
+    ct.b.boxid = int(c.i(5, "SBBOXID"));
+    ct.a.box_ref = c.ref(4);
+    ct.b.box_ref = c.ref(5);
     c.i(6, "SAPR");
     c.i(7, "SBPR");
     bool ok_a = ct.a.type == 0 || ct.a.type == 2 || ct.a.type == 3 || (ct.a.type == 4 && !symmetric);
@@ -3319,9 +3328,36 @@ bool is_ascii_database(const std::string& n) {
         exterior_faces({}, &mark, out, lines, files);
       }
     }
+    if (side.boxid != 0) keep_segments_in_box(side, slave, card, out, lines, files);
     if (out.empty() && diag_.error_count() == errors_before &&
         (side.type == 0 || side.type == 2 || side.type == 3 || side.type == 4))
-      err(1314, side.id_ref, card, field, "no segments");
+      err(1314, side.boxid != 0 ? side.box_ref : side.id_ref, card, side.boxid != 0 ? (slave ? "SABOXID" : "SBBOXID") : field,
+          side.boxid != 0 ? "no segment has its centroid in the box" : "no segments");
+  }
+
+  // SABOXID / SBBOXID: the side keeps the segments whose centroid (mean of the corner nodes)
+  // is in the box.
+  void keep_segments_in_box(const RSide& side, bool slave, const std::string& card, std::vector<std::array<int, 4>>& out,
+                            std::vector<int>& lines, std::vector<int>& files) {
+    const Box* box = find_box(side.boxid, side.box_ref, card, slave ? "SABOXID" : "SBBOXID");
+    if (!box) return;
+    std::size_t kept = 0;
+    for (std::size_t j = 0; j < out.size(); ++j) {
+      double c[3] = {0, 0, 0};
+      for (int v : out[j]) {
+        c[0] += m_.x[std::size_t(v)] / 4;
+        c[1] += m_.y[std::size_t(v)] / 4;
+        c[2] += m_.z[std::size_t(v)] / 4;
+      }
+      if (!box->contains(c[0], c[1], c[2])) continue;
+      out[kept] = out[j];
+      lines[kept] = lines[j];
+      files[kept] = files[j];
+      ++kept;
+    }
+    out.resize(kept);
+    lines.resize(kept);
+    files.resize(kept);
   }
 
   void resolve_contacts() {

@@ -16,7 +16,7 @@ namespace {
 
 // A small-format deck of one copper hexahedron; material card 1 element type et (cols 66-70);
 // node cards with `tail` in cols 76-80.
-std::string small_deck(int et, const std::string& tail = "") {
+std::string small_deck(int et, const std::string& tail = "", const std::string& element_tail = "") {
   std::string s;
   s += "small-format deck, 1980s style\n";
   s += "    1    8    1    0    0    0\n";
@@ -36,7 +36,7 @@ std::string small_deck(int et, const std::string& tail = "") {
   }
   s += I(1, 5) + I(1, 5);
   for (int n = 1; n <= 8; ++n) s += I(n, 5);
-  return s + "\n";
+  return s + element_tail + "\n";
 }
 
 }  // namespace
@@ -63,7 +63,7 @@ TEST(Dyna3dWriters, MaterialElementTypeIsSolidBeamShellOrThickShell) {
   EXPECT_EQ(d.count(1006), 1) << all_messages(d);
 }
 
-TEST(Dyna3dWriters, TextInUnreadNodeColumnsIsOneWarningNamingThem) {
+TEST(Dyna3dWriters, TextInUnreadColumnsIsOneWarningNamingThem) {
   Model m;
   Diagnostics d;
   ASSERT_TRUE(read_string(small_deck(0, "    7"), m, d)) << all_messages(d);
@@ -76,6 +76,12 @@ TEST(Dyna3dWriters, TextInUnreadNodeColumnsIsOneWarningNamingThem) {
   Diagnostics dc;
   ASSERT_TRUE(read_string(small_deck(0, "     "), clean, dc));
   EXPECT_EQ(dc.count(2020), 0);
+  // a small-format solid card reads 1-50 (id, material, 8 nodes I5)
+  Model e;
+  Diagnostics de;
+  ASSERT_TRUE(read_string(small_deck(0, "", "    0    1"), e, de)) << all_messages(de);
+  ASSERT_EQ(de.count(2020), 1) << all_messages(de);
+  EXPECT_NE(all_messages(de).find("columns 51-80, after node n8"), std::string::npos) << all_messages(de);
 }
 
 TEST(Dyna3dWriters, SlidingInterfaceTypesAreRefusedByName) {

@@ -132,6 +132,11 @@ int line_of(const std::string& deck, const std::string& text) {
   const std::size_t p = deck.find("\n" + text);
   return p == std::string::npos ? -1 : int(std::count(deck.begin(), deck.begin() + std::ptrdiff_t(p) + 1, '\n')) + 1;
 }
+std::string replaced_once(std::string s, const std::string& from, const std::string& to) {
+  const std::size_t p = s.find(from);
+  if (p != std::string::npos) s.replace(p, from.size(), to);
+  return s;
+}
 int node_of(const Model& m, int id) {
   for (std::size_t k = 0; k < m.node_user_id.size(); ++k)
     if (m.node_user_id[k] == id) return int(k);
@@ -551,4 +556,50 @@ TEST(KeywordCase, BaseCaseAndNamedCasesEachWithTheirOwnCards) {
   Read open = read_case(with("*CASE_BEGIN_4\n*CASE_END_5\n"), 0);
   EXPECT_EQ(open.count(1006), 1) << open.messages();
   EXPECT_EQ(open.count(1316), 1) << open.messages();
+}
+
+// A card after one whose field asks for something not read (here *INITIAL_VELOCITY NSIDEX with
+// its card 3) is read as what it is: an error on the next definition's card 1 names that card
+// and its line, and a box that only a refused keyword defines names that keyword.
+TEST(KeywordLayout, TheCardAfterAnOptionalCardIsNamedRight) {
+  const std::string deck = with("*SET_NODE_LIST\n        40\n       104\n"
+                                "*INITIAL_VELOCITY\n         0        40\n       1.0\n       2.0\n"
+                                "        4x\n       3.0\n");
+  Read r = read_text(deck);
+  ASSERT_EQ(r.count(1001), 1) << r.messages();
+  EXPECT_EQ(r.first(1001)->where.card, "*INITIAL_VELOCITY card 1");
+  EXPECT_EQ(r.first(1001)->where.field, "NSID");
+  EXPECT_EQ(r.first(1001)->where.line, line_of(deck, "        4x"));
+  EXPECT_EQ(r.count(1316), 0) << r.messages();
+  Read box = read_text(with("*DEFINE_BOX_LOCAL\n         3\n*INITIAL_VELOCITY\n         0         0         3\n       1.0\n"));
+  EXPECT_FALSE(box.ok);
+  ASSERT_EQ(box.count(1310), 1) << box.messages();
+  EXPECT_NE(box.first(1310)->detail.find("it is defined by *DEFINE_BOX_LOCAL"), std::string::npos) << box.messages();
+}
+
+// SABOXID / SBBOXID: a contact side keeps the segments whose centroid is in its box.  Part 8
+// (one hexahedron, x 2..3) has 6 exterior faces, one with its centroid at x = 3; part 7 (x 0..2)
+// has 10, one at x = 2 (the face it shares with part 8 is exterior to part 7 alone).
+TEST(KeywordSets, ContactBoxesKeepTheSegmentsInside) {
+  const std::string contact =
+      "*CONTACT_SURFACE_TO_SURFACE\n$#   surfa     surfb  surfatyp  surfbtyp   saboxid   sbboxid      sapr      sbpr\n"
+      "         8         7         3         3         1         2         0         0\n";
+  Read all = read_text(with(replaced_once(contact, "         1         2", "         0         0")));
+  ASSERT_TRUE(all.ok) << all.messages();
+  ASSERT_EQ(all.m.interfaces.size(), 1u);
+  EXPECT_EQ(all.m.interfaces[0].slave.size(), 6u);
+  EXPECT_EQ(all.m.interfaces[0].master.size(), 10u);
+  Read boxed = read_text(with("*DEFINE_BOX\n         1       2.9       3.1      -1.0       2.0      -1.0       2.0\n"
+                              "*DEFINE_BOX\n         2       1.9       2.1      -1.0       2.0      -1.0       2.0\n" +
+                              contact));
+  ASSERT_TRUE(boxed.ok) << boxed.messages();
+  ASSERT_EQ(boxed.m.interfaces[0].slave.size(), 1u);
+  ASSERT_EQ(boxed.m.interfaces[0].master.size(), 1u);
+  for (int v : boxed.m.interfaces[0].slave[0]) EXPECT_EQ(boxed.m.x[std::size_t(v)], 3.0);
+  for (int v : boxed.m.interfaces[0].master[0]) EXPECT_EQ(boxed.m.x[std::size_t(v)], 2.0);
+  Read empty = read_text(with("*DEFINE_BOX\n         1      10.0      11.0      -1.0       2.0      -1.0       2.0\n"
+                              "*DEFINE_BOX\n         2       1.9       2.1      -1.0       2.0      -1.0       2.0\n" +
+                              contact));
+  ASSERT_EQ(empty.count(1314), 1) << empty.messages();
+  EXPECT_EQ(empty.first(1314)->where.field, "SABOXID");
 }
