@@ -261,6 +261,7 @@ int run_main(int argc, char** argv) {
   }
 
   // The printed output file gets the echo and all messages; the terminal gets the messages.
+  if (opt.threads == 0 && model.deck_threads > 0) opt.threads = model.deck_threads;  // *KEYWORD NCPU=
   // *CASE: a case's outputs go to a folder named by its JOBID (or caseN), unless given
   if (!model.case_job.empty() && opt.restart.empty() && !check_only) {
     const std::filesystem::path dir = std::filesystem::path(opt.printed).parent_path() / model.case_job;

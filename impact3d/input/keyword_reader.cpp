@@ -16,6 +16,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
 #include <deque>
 #include <filesystem>
 #include <limits>
@@ -699,16 +700,20 @@ class KeywordReader {
       else if (tok == "I10=N") global_i10_ = false;
       else if (!tok.empty() && std::all_of(tok.begin(), tok.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)) || c == 'M'; })) {
         // memory size: ignored
-      } else if (tok.rfind("MEMORY=", 0) == 0 || tok.rfind("MEMORY2=", 0) == 0 || tok.rfind("NCPU=", 0) == 0) {
-        // LS-DYNA's memory and thread options: read and listed as ignored
+      } else if (long long n = 0; tok.rfind("NCPU=", 0) == 0 && parse_fortran_int(tok.substr(5), n) == FieldStatus::ok &&
+                                    n != 0 && std::llabs(n) <= 1024) {
+        // the thread count when the command line has no ncpu= (negative: LS-DYNA's consistent
+        // mode; IMPACT-3D's results never depend on the thread count)
+        m_.deck_threads = int(std::llabs(n));
+      } else if (tok.rfind("MEMORY=", 0) == 0 || tok.rfind("MEMORY2=", 0) == 0) {
+        // LS-DYNA's memory options: read and listed as ignored
         Location loc;
         loc.file = f.name();
         loc.line = l.number;
         loc.card = "*KEYWORD";
         loc.found = tok;
         loc.show_found = true;
-        diag_.add(2008, loc, tok[0] == 'N' ? "threads are set on the command line (ncpu=); results do not depend on them"
-                                           : "memory is allocated as the model needs it");
+        diag_.add(2008, loc, "memory is allocated as the model needs it");
       } else {
         Location loc;
         loc.file = f.name();
@@ -716,7 +721,7 @@ class KeywordReader {
         loc.card = "*KEYWORD";
         loc.found = tok;
         loc.show_found = true;
-        diag_.add(1312, loc, "supported: LONG=Y, LONG=S, I10=Y, I10=N, MEMORY=, MEMORY2=, NCPU= and a memory size");
+        diag_.add(1312, loc, "supported: LONG=Y, LONG=S, I10=Y, I10=N, MEMORY=, MEMORY2=, NCPU=n (1 <= |n| <= 1024) and a memory size");
       }
     }
   }

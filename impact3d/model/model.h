@@ -96,6 +96,8 @@ struct Model {
   // *CASE: the case this model is (its JOBID, or "caseN"); empty for the base case.  The run's
   // outputs go to a folder of that name unless o=, g=, d= say otherwise.
   std::string case_job;
+  // *KEYWORD NCPU=n: the thread count when the command line gives no ncpu= (0: none given)
+  int deck_threads = 0;
   ControlData control;
   std::vector<MaterialData> materials;  // indexed by material number - 1
 

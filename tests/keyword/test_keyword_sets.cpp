@@ -383,7 +383,8 @@ TEST(KeywordLayout, KeywordOptionsKeywordIdAndIncludePath) {
   Read r = read_text(deck);
   ASSERT_TRUE(r.ok) << r.messages();
   EXPECT_EQ(r.count(1312), 0);
-  EXPECT_EQ(r.count(2008), 3) << r.messages();  // MEMORY=, NCPU=, *KEYWORD_ID
+  EXPECT_EQ(r.count(2008), 2) << r.messages();  // MEMORY=, *KEYWORD_ID
+  EXPECT_EQ(r.m.deck_threads, 4);  // NCPU=4: the default of ncpu=
   // *INCLUDE_PATH_RELATIVE: the include is found in the directory it names
   const fs::path dir = fs::temp_directory_path() / ("impact3d_kwsets_" + std::to_string(::getpid()));
   fs::remove_all(dir);
