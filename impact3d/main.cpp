@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <new>
@@ -41,6 +42,8 @@ const char* kUsage =
     "             names of the run that wrote it)\n"
     "  plotwords=N  4 (default) or 8 byte words in the plot and time-history databases\n"
     "  x=N        plot database family members of at most N x 512 x 512 words (default 7)\n"
+    "  case=ID    keyword decks with *CASE: run case ID (default: the base case); its outputs\n"
+    "             go to a folder named by the case's JOBID (or caseID) unless o=, g=, d= are given\n"
     "  ncpu=N     number of threads (default: OMP_NUM_THREADS or all cores); results do not\n"
     "             depend on it\n"
     "  --check    read and check the deck only; print the summary; write nothing else\n"
@@ -194,6 +197,8 @@ int run_main(int argc, char** argv) {
     } else if (const char* v = value("x=")) {
       if (parse_count(v, 1, 1024, opt.member_size_factor)) x_given = true;
       else bad_value("x must be an integer 1-1024 (member size in units of 512 x 512 words)");
+    } else if (const char* v = value("case=")) {
+      if (!parse_count(v, 1, 2147483647, input_opt.case_id)) bad_value("case must be a positive case id (*CASE)");
     } else if (const char* v = value("ncpu=")) {
       if (!parse_count(v, 1, 1024, opt.threads)) bad_value("ncpu must be an integer 1-1024");
     } else {
@@ -256,6 +261,16 @@ int run_main(int argc, char** argv) {
   }
 
   // The printed output file gets the echo and all messages; the terminal gets the messages.
+  if (opt.threads == 0 && model.deck_threads > 0) opt.threads = model.deck_threads;  // *KEYWORD NCPU=
+  // *CASE: a case's outputs go to a folder named by its JOBID (or caseN), unless given
+  if (!model.case_job.empty() && opt.restart.empty() && !check_only) {
+    const std::filesystem::path dir = std::filesystem::path(opt.printed).parent_path() / model.case_job;
+    std::error_code ec;
+    std::filesystem::create_directories(dir, ec);
+    if (!printed_given) opt.printed = (dir / std::filesystem::path(opt.printed).filename()).string();
+    if (!plot_given) opt.plot = (dir / std::filesystem::path(opt.plot).filename()).string();
+    if (!dump_given) opt.dump = (dir / std::filesystem::path(opt.dump).filename()).string();
+  }
   std::ofstream printed;
   if (!check_only) {
     printed.open(opt.printed, opt.restart.empty() ? std::ios::out : std::ios::app);

@@ -31,6 +31,7 @@ bool read_and_check_deck(const std::string& path, Model& model, Diagnostics& dia
 // Input options (command line).
 struct InputOptions {
   bool lenient_keywords = false;  // unsupported LS-DYNA keywords are warnings, not errors
+  int case_id = 0;                // keyword decks: the *CASE to read (0: the base case)
 };
 bool read_and_check_deck(const std::string& path, Model& model, Diagnostics& diag,
                          const InputOptions& options);

@@ -394,8 +394,15 @@ class Dyna3dReader {
       if (c1.blank(56, 65)) md.q2 = 0.06;
       if (md.q1 < 0) c1.error(1220, 46, 55, "quadratic bulk viscosity Q1");
       if (md.q2 < 0) c1.error(1220, 56, 65, "linear bulk viscosity Q2");
+      // element type as DYNA3D deck writers (FEMGV's DYNA interface) settle it: 0 solid, 1
+      // beam, 2 shell, 3 thick shell
       long long et = c1.i(66, 70, "element type");
-      if (et != 0 && et != 1) c1.error(1102, 66, 70, "element type", "only solids (0 or 1)");
+      if (et >= 1 && et <= 3) {
+        static const char* const kind[] = {"", "beams (element type 1)", "shells (element type 2)", "thick shells (element type 3)"};
+        c1.error(1102, 66, 70, "element type", std::string(kind[et]) + ": IMPACT-3D has solids (element type 0) only");
+      } else if (et != 0) {
+        c1.error(1006, 66, 70, "element type", "0 solid, 1 beam, 2 shell, 3 thick shell");
+      }
       c1.i(71, 75, "unused");
       long long ef = c1.i(76, 80, "element formulation");
       if (ef != 0 && ef != 1) c1.error(1102, 76, 80, "element formulation", "only the one-point hexahedron (0 or 1)");
@@ -435,6 +442,8 @@ class Dyna3dReader {
     const int i1 = 1, i2 = L ? 8 : 5, b1 = i2 + 1, b2 = i2 + 5;
     const int x1 = b2 + 1, y1 = x1 + 20, z1 = y1 + 20, r1 = z1 + 20;
     int rotational = 0, rot_line = 0;
+    int unread = 0;  // node cards with text in the columns after the rotational code
+    Location unread_where;
     for (int k = 0; k < n; ++k) {
       if (const DeckLine* l = plain_next_card()) {
         const std::string_view t = l->text;
@@ -443,7 +452,7 @@ class Dyna3dReader {
         if (fast_int(t, i1, i2, id) && fast_int(t, b1, b2, code) && fast_real(t, x1, x1 + 19, x) &&
             fast_real(t, y1, y1 + 19, y) && fast_real(t, z1, z1 + 19, z) &&
             fast_int(t, r1, r1 + 4, rc) && code >= 0 && code <= 7 && rc == 0 && id >= 1 &&
-            id <= n && !seen[std::size_t(id - 1)]) {
+            id <= n && !seen[std::size_t(id - 1)] && card_columns(t, r1 + 5, 80).find_first_not_of(" \r") == std::string_view::npos) {
           deck_.next_card();
           seen[std::size_t(id - 1)] = l->number;
           m_.x[std::size_t(id - 1)] = x;
@@ -462,6 +471,8 @@ class Dyna3dReader {
       double y = c.e(y1, y1 + 19, "y");
       double z = c.e(z1, z1 + 19, "z");
       int rc = int(c.i(r1, r1 + 4, "rotational code"));
+      // the columns after the rotational code are not read: some writers put a code there
+      if (!c.blank(r1 + 5, 80) && unread++ == 0) unread_where = c.where(r1 + 5, 80, "unread columns");
       if (code < 0 || code > 7) c.error(1216, b1, b2, "boundary code");
       if (rc < 0 || rc > 7) c.error(1216, r1, r1 + 4, "rotational code");
       else if (rc != 0) { ++rotational; if (!rot_line) rot_line = c.line(); }
@@ -485,6 +496,9 @@ class Dyna3dReader {
       loc.line = rot_line;
       diag_.add(2005, loc, std::to_string(rotational) + " node(s)");
     }
+    if (unread)
+      diag_.add(2020, unread_where, std::to_string(unread) + " node card(s) (this is the first) hold text in columns " +
+                                        std::to_string(r1 + 5) + "-80, after the rotational code: IMPACT-3D reads nothing there");
     report_missing(seen, "node");
   }
 
@@ -515,6 +529,9 @@ class Dyna3dReader {
     assign_huge(m_.hex_line, std::size_t(n), 0);
     std::vector<int> seen(std::size_t(n), 0);
     const int w = idw_;
+    const int last = w + 5 + 8 * w;  // the last column read (node n8)
+    int unread = 0;                  // element cards with text after node n8
+    Location unread_where;
     for (int k = 0; k < n; ++k) {
       if (const DeckLine* l = plain_next_card()) {
         const std::string_view t = l->text;
@@ -528,7 +545,8 @@ class Dyna3dReader {
                nodes[std::size_t(j)] <= m_.control.numnp;
           --nodes[std::size_t(j)];
         }
-        if (ok && is_valid_solid_node_pattern(nodes)) {
+        if (ok && is_valid_solid_node_pattern(nodes) &&
+            card_columns(t, last + 1, 80).find_first_not_of(" \r") == std::string_view::npos) {
           deck_.next_card();
           seen[std::size_t(id - 1)] = l->number;
           make_canonical_solid_node_pattern(nodes);
@@ -544,6 +562,7 @@ class Dyna3dReader {
       c.set_name("solid element card for element " + std::to_string(id));
       Card& e = c;
       int mat = int(c.i(w + 1, w + 5, "material number"));
+      if (!c.blank(last + 1, 80) && unread++ == 0) unread_where = c.where(last + 1, 80, "unread columns");
       std::array<int, 8> nodes{};
       bool ok = true;
       for (int j = 0; j < 8; ++j) {
@@ -579,6 +598,9 @@ class Dyna3dReader {
       m_.hex_nodes[std::size_t(id - 1)] = nodes;
       m_.hex_material[std::size_t(id - 1)] = ok ? mat - 1 : -1;
     }
+    if (unread)
+      diag_.add(2020, unread_where, std::to_string(unread) + " solid element card(s) (this is the first) hold text in columns " +
+                                        std::to_string(last + 1) + "-80, after node n8: IMPACT-3D reads nothing there");
     report_missing(seen, "solid element");
   }
 
@@ -882,7 +904,16 @@ class Dyna3dReader {
       int nss = int(c.i(1, 8, "NSS"));
       int nms = int(c.i(9, 16, "NMS"));
       si.type = int(c.i(17, 20, "type"));
-      if (si.type != 3) c.error(1104, 17, 20, "type", "only type 3 (sliding with impact, separation and friction)");
+      if (si.type != 3) {
+        // the DYNA3D types, by name (after deck writers of DYNA3D decks)
+        static const char* const names[] = {"", "1 sliding only", "2 tied", "3 sliding with impact and friction", "4 single surface",
+                                            "5 nodes to surface", "6 nodes tied to surface", "7 shell edge tied to surface",
+                                            "8 spot weld", "9 tiebreak"};
+        if (si.type >= 1 && si.type <= 9)
+          c.error(1104, 17, 20, "type", std::string("type ") + names[si.type] + ": IMPACT-3D has type 3 (sliding with impact, separation and friction)");
+        else
+          c.error(1006, 17, 20, "type", "DYNA3D sliding interface types are 1-9; IMPACT-3D has type 3");
+      }
       si.fs = c.e(21, 30, "static friction");
       si.fd = c.e(31, 40, "dynamic friction");
       si.decay = c.e(41, 50, "decay coefficient");

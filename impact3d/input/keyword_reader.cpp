@@ -10,18 +10,21 @@
 #include "impact3d/material/material_types.h"
 
 #include "impact3d/input/deck_reader.h"
+#include "impact3d/input/coordinate_systems.h"
 #include "impact3d/input/element_shapes.h"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
 #include <deque>
 #include <filesystem>
 #include <limits>
 #include <map>
 #include <memory>
 #include <set>
+#include <sstream>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -331,6 +334,7 @@ struct Block {
   bool long_fmt = false, i10 = false;
   bool title_opt = false, id_opt = false;  // _TITLE / _ID option cards
   bool moving_opt = false;                 // *RIGIDWALL_PLANAR_MOVING: card 3 MASS, V0
+  std::vector<int> cases;                  // the *CASE_BEGIN_n sections (and CID=n) it is in
   BlockLines data;
 };
 
@@ -399,13 +403,38 @@ struct RHourglass {
   bool q1_blank = true, q2_blank = true;
   Ref ref, ihq_ref;
 };
-struct RIdList {  // node set or part set, or history list
+// One card of a *SET_..._GENERAL (OPTION E1-E7, continued by cards of 8 more ids), or the
+// member sets of a *SET_..._ADD (option "SET"): applied in deck order, a "D" option removes.
+struct RSetTerm {
+  std::string option;  // upper case, without the D of a removing option
+  bool remove = false;
   std::vector<int> ids;
   std::vector<Ref> refs;
-  // *SET_NODE_LIST_GENERATE: id ranges BBEG..BEND, kept as ranges (a range may be huge; the
-  // nodes it holds are found in the sorted node ids when the set is resolved)
-  std::vector<std::array<long long, 2>> ranges;
+  Ref ref;  // the OPTION field
+};
+struct RIdList {  // node, part, solid or shell set, or history list
+  std::vector<int> ids;
+  std::vector<Ref> refs;
+  // _GENERATE (_INCREMENT): id ranges BBEG..BEND by INC, kept as ranges (a range may be huge;
+  // the entities it holds are found in the sorted ids when the set is resolved)
+  std::vector<std::array<long long, 3>> ranges;
+  std::vector<RSetTerm> terms;  // _GENERAL and _ADD
+  std::string keyword;          // as written (*SET_NODE_GENERAL, ...), upper case
   Ref ref;
+};
+struct RBox {  // *DEFINE_BOX
+  Box box;
+  Ref ref;
+};
+struct RCoordSystem {  // *DEFINE_COORDINATE_SYSTEM (_NODES, _VECTOR), *DEFINE_VECTOR
+  enum Kind { points, nodes, vectors, vector } kind = points;
+  int id = 0;
+  std::array<double, 9> v{};  // points: O, PX, PXY; vectors: X, XY; vector: tail, head
+  std::array<int, 3> n{};     // _NODES: N1 N2 N3; *DEFINE_VECTOR_NODES: tail, head
+  int cid = 0;                // CIDL / CID: the values are in this system
+  std::string keyword;
+  Ref ref, cid_ref;
+  std::array<Ref, 3> node_refs;
 };
 struct RSegSet {
   std::vector<std::array<int, 4>> segs;
@@ -415,6 +444,8 @@ struct RSegSet {
 struct RSide {
   int id = 0, type = 0;
   Ref id_ref, type_ref;
+  int boxid = 0;  // SABOXID / SBBOXID: only the segments whose centroid is in the box
+  Ref box_ref;
 };
 struct RContact {
   RSide a, b;
@@ -429,6 +460,8 @@ struct RWall {
   std::string keyword;  // as written (*RIGIDWALL_PLANAR_ID, ...)
   int nsid = 0;
   Ref nsid_ref;
+  int nsidex = 0, boxid = 0;  // exempted node set, box (only the nodes inside)
+  Ref nsidex_ref, boxid_ref;
   StoneWall w;
 };
 struct RVelocity {       // one initial-velocity definition, in deck order
@@ -439,13 +472,20 @@ struct RVelocity {       // one initial-velocity definition, in deck order
   // *INITIAL_VELOCITY_GENERATION: rotation OMEGA about the axis through xc along n (unit)
   double omega = 0;
   std::array<double, 3> xc{}, n{};
+  // *INITIAL_VELOCITY: exempted node set (its nodes take ve), box (only nodes inside), and the
+  // local system of the velocities (ICID)
+  std::string keyword;  // as written
+  int nsidex = 0, boxid = 0, icid = 0;
+  Ref nsidex_ref, boxid_ref, icid_ref;
+  std::array<double, 3> ve{};
 };
 struct RSpc {
   std::string keyword;  // as written (*BOUNDARY_SPC_SET_ID, ...)
   bool set = false;
   int id = 0;
-  int bits = 0;
-  Ref ref;
+  int bits = 0;  // fixed local directions (global when cid is 0)
+  int cid = 0;
+  Ref ref, cid_ref;
 };
 struct RLoad {            // one load or prescribed-motion card, resolved after sets and curves
   enum Kind { node, node_set, segment, segment_set, body, rigid_body, motion_node, motion_set, motion_rigid } kind = node;
@@ -463,6 +503,7 @@ struct RLoad {            // one load or prescribed-motion card, resolved after 
 };
 struct RHistory {
   bool solid = false;
+  bool sets = false;  // *DATABASE_HISTORY_NODE_SET / _SOLID_SET: the ids are set ids
   std::vector<int> ids;
   std::vector<Ref> refs;
 };
@@ -504,8 +545,10 @@ class KeywordReader {
     std::vector<std::string> stack;
     check_first_line();
     scan(main_, 0, stack);
+    select_case();
     collect_parameters();
     parse_blocks();
+    apply_include_transforms();
     report_unsupported();
     for (Block& b : blocks_) release(b.data);  // read: the lines are not needed by block any more
     resolve();
@@ -538,6 +581,13 @@ class KeywordReader {
   std::vector<RLoad> loads_;
   int body_parts_psid_ = 0;              // *LOAD_BODY_PARTS
   Ref body_parts_ref_;
+  std::map<int, RIdList> solid_sets_, shell_sets_;  // shell sets: read, kept for shell elements
+  std::map<int, RBox> boxes_;
+  std::vector<RCoordSystem> coord_defs_;  // resolved into coords_ once the nodes are known
+  CoordinateTable coords_;
+  // *ELEMENT_SOLID cards of 10-node tetrahedra (N9 or N10 not 0): refused in one message
+  long long tet10_count_ = 0;
+  std::pair<Ref, int> tet10_first_;
   std::vector<LoadCurve> curves_;
   std::vector<Ref> curve_refs_;
   std::map<int, int> curve_index_;       // LCID -> index in curves_ (= Model::load_curves)
@@ -626,6 +676,10 @@ class KeywordReader {
         b.name = name;
         b.kw = {&f, &l};
         if (name == "END") return;  // the rest of this file is not read
+        if (case_marker(name, f, l)) continue;  // *CASE_BEGIN_n / *CASE_END_n: no block
+        b.cases = open_cases_;
+        if (const int cid = keyword_case_option(t); cid > 0 && std::find(b.cases.begin(), b.cases.end(), cid) == b.cases.end())
+          b.cases.push_back(cid);
         if (name == "KEYWORD") keyword_options(t, f, l);
         b.long_fmt = name == "KEYWORD" ? global_long_ : lng;
         b.i10 = name == "KEYWORD" ? global_i10_ : i10;
@@ -666,6 +720,20 @@ class KeywordReader {
       else if (tok == "I10=N") global_i10_ = false;
       else if (!tok.empty() && std::all_of(tok.begin(), tok.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)) || c == 'M'; })) {
         // memory size: ignored
+      } else if (long long n = 0; tok.rfind("NCPU=", 0) == 0 && parse_fortran_int(tok.substr(5), n) == FieldStatus::ok &&
+                                    n != 0 && std::llabs(n) <= 1024) {
+        // the thread count when the command line has no ncpu= (negative: LS-DYNA's consistent
+        // mode; IMPACT-3D's results never depend on the thread count)
+        m_.deck_threads = int(std::llabs(n));
+      } else if (tok.rfind("MEMORY=", 0) == 0 || tok.rfind("MEMORY2=", 0) == 0) {
+        // LS-DYNA's memory options: read and listed as ignored
+        Location loc;
+        loc.file = f.name();
+        loc.line = l.number;
+        loc.card = "*KEYWORD";
+        loc.found = tok;
+        loc.show_found = true;
+        diag_.add(2008, loc, "memory is allocated as the model needs it");
       } else {
         Location loc;
         loc.file = f.name();
@@ -673,12 +741,101 @@ class KeywordReader {
         loc.card = "*KEYWORD";
         loc.found = tok;
         loc.show_found = true;
-        diag_.add(1312, loc, "supported: LONG=Y, LONG=S, I10=Y, I10=N and a memory size");
+        diag_.add(1312, loc, "supported: LONG=Y, LONG=S, I10=Y, I10=N, MEMORY=, MEMORY2=, NCPU=n (1 <= |n| <= 1024) and a memory size");
       }
     }
   }
 
+  // *INCLUDE_PATH: directories searched for include files (one per line), after the including
+  // file's; _RELATIVE: relative to the main deck's directory.
+  std::vector<std::string> include_paths_;
+  void add_include_paths(const Block& b) {
+    namespace fs = std::filesystem;
+    const bool relative = b.name == "INCLUDE_PATH_RELATIVE";
+    for (const KLine& kl : b.data) {
+      std::string t(trim_sv(kl.line->text));
+      if (t.empty()) continue;
+      fs::path p(t);
+      if (relative || p.is_relative()) p = fs::path(main_.name()).parent_path() / p;
+      include_paths_.push_back(p.string());
+      if (!relative && fs::path(t).is_relative()) include_paths_.push_back(t);  // the working directory
+    }
+  }
+
+  // *INCLUDE_TRANSFORM: FILENAME; IDNOFF IDEOFF IDPOFF IDMOFF IDSOFF IDFOFF IDDOFF; IDROFF;
+  // FCTMAS FCTTIM FCTLEN FCTTEM INCOUT1; TRANID.  The file is read as an *INCLUDE, and its
+  // records are renumbered and moved once the deck is parsed (apply_include_transforms).
+  struct IncludeTransform {
+    long long idnoff = 0, ideoff = 0, idpoff = 0, idmoff = 0, idsoff = 0, idfoff = 0, iddoff = 0, idroff = 0;
+    double fctlen = 1;
+    int tranid = 0;
+    Ref tranid_ref;
+    AffineMap map;  // FCTLEN scaling, then *DEFINE_TRANSFORMATION TRANID
+    bool moves = false;
+  };
+  std::deque<IncludeTransform> transforms_;
+  std::map<const DeckFile*, const IncludeTransform*> file_transform_;
+  const IncludeTransform* pending_transform_ = nullptr;  // for the include being opened
+
+  void include_transform(const Block& b, int depth, std::vector<std::string>& stack) {
+    const auto& data = b.data;
+    std::size_t k = 0;
+    while (k < data.size() && is_blank(data[k].line->text)) ++k;
+    if (k >= data.size()) { missing_card(b, "card 1 (FILENAME)"); return; }
+    std::string name;
+    const KLine first = data[k];
+    for (; k < data.size(); ++k) {
+      std::string t = rtrim(data[k].line->text);
+      if (t.size() >= 2 && t.compare(t.size() - 2, 2, " +") == 0) { name += t.substr(0, t.size() - 2); continue; }
+      name += t;
+      ++k;
+      break;
+    }
+    IncludeTransform x;
+    const auto card = [&](std::size_t j, const char* what) { return KCard(data[j], b.keyword + " " + what, W(b, 8), diag_); };
+    if (k < data.size()) {
+      KCard c = card(k++, "card 2");
+      x.idnoff = c.i(0, "IDNOFF"), x.ideoff = c.i(1, "IDEOFF"), x.idpoff = c.i(2, "IDPOFF"), x.idmoff = c.i(3, "IDMOFF");
+      x.idsoff = c.i(4, "IDSOFF"), x.idfoff = c.i(5, "IDFOFF"), x.iddoff = c.i(6, "IDDOFF");
+      for (int f = 0; f < 7; ++f)
+        if (c.i(f, "offset") < 0) c.error(1003, f, "offset", "id offsets must not be negative");
+    }
+    if (k < data.size()) {
+      KCard c = card(k++, "card 3");
+      x.idroff = c.i(0, "IDROFF");
+      if (x.idroff < 0) c.error(1003, 0, "IDROFF", "id offsets must not be negative");
+    }
+    if (k < data.size()) {
+      KCard c = card(k++, "card 4");
+      const double fctmas = c.r(0, "FCTMAS", 1), fcttim = c.r(1, "FCTTIM", 1);
+      x.fctlen = c.r(2, "FCTLEN", 1);
+      const double fcttem = c.r(3, "FCTTEM", 1);
+      if (x.fctlen == 0) x.fctlen = 1;
+      if (fctmas != 0 && fctmas != 1) c.error(1102, 0, "FCTMAS", "unit conversion of the included data (mass)");
+      if (fcttim != 0 && fcttim != 1) c.error(1102, 1, "FCTTIM", "unit conversion of the included data (time)");
+      if (fcttem != 0 && fcttem != 1) c.error(1102, 3, "FCTTEM", "unit conversion of the included data (temperature)");
+      if (!(x.fctlen > 0)) c.error(1003, 2, "FCTLEN", "must be positive");
+      c.i(4, "INCOUT1");
+    }
+    if (k < data.size()) {
+      KCard c = card(k++, "card 5");
+      x.tranid = int(c.i(0, "TRANID"));
+      x.tranid_ref = c.ref(0);
+    }
+    transforms_.push_back(x);
+    pending_transform_ = &transforms_.back();
+    include(std::string(trim_sv(name)), first, depth, stack);
+    pending_transform_ = nullptr;
+  }
+
   void close_block(long cur, int depth, std::vector<std::string>& stack) {
+    if (cur >= 0 && (blocks_[std::size_t(cur)].name == "INCLUDE_PATH" || blocks_[std::size_t(cur)].name == "INCLUDE_PATH_RELATIVE"))
+      add_include_paths(blocks_[std::size_t(cur)]);
+    if (cur >= 0 && blocks_[std::size_t(cur)].name == "INCLUDE_TRANSFORM") {
+      const Block b = blocks_[std::size_t(cur)];  // copy: including appends to blocks_
+      include_transform(b, depth, stack);
+      return;
+    }
     if (cur < 0 || blocks_[std::size_t(cur)].name != "INCLUDE") return;
     // copy: including appends to blocks_
     const auto data = blocks_[std::size_t(cur)].data;
@@ -716,13 +873,14 @@ class KeywordReader {
       candidates.push_back(fs::path(where.file->name()).parent_path() / p);
       candidates.push_back(fs::path(main_.name()).parent_path() / p);
       candidates.push_back(p);
+      for (const std::string& d : include_paths_) candidates.push_back(fs::path(d) / p);
     }
     fs::path found;
     std::error_code ec;
     for (const auto& c : candidates)
       if (fs::is_regular_file(c, ec)) { found = c; break; }
     if (found.empty()) {
-      diag_.add(1306, loc, "not found next to " + where.file->name() + ", the main deck or in the working directory");
+      diag_.add(1306, loc, "not found next to " + where.file->name() + ", the main deck, in the working directory or in an *INCLUDE_PATH directory");
       return;
     }
     std::string canon = fs::weakly_canonical(found, ec).string();
@@ -737,10 +895,186 @@ class KeywordReader {
       diag_.add(1306, loc, local.all().empty() ? std::string() : local.all().front().detail);
       return;
     }
+    // the records of a transformed include (and of the files it includes) are renumbered and moved
+    if (pending_transform_) file_transform_[df.get()] = pending_transform_;
+    else if (auto t = file_transform_.find(where.file); t != file_transform_.end()) file_transform_[df.get()] = t->second;
+    pending_transform_ = nullptr;
     includes_.push_back(std::move(df));
     stack.push_back(canon);
     scan(*includes_.back(), depth + 1, stack);
     stack.pop_back();
+  }
+
+
+  // ---------------------------------------------------------------- *CASE
+  // *CASE_BEGIN_n ... *CASE_END_n sections (nested or not) and the CID=n option of a keyword
+  // line put keywords in child case n; a master *CASE (CASEID JOBID; a line of command-line
+  // options; lines of child case ids SCID) runs the main model and its children.  Without a
+  // master *CASE each child n is case n.  The base case (case_id 0) leaves every child out.
+  std::vector<int> open_cases_;
+  struct RCase {
+    int id = 0;
+    std::string job;
+    std::vector<int> children;
+    std::vector<KLine> commands;  // command-line options for the case: warned when it runs
+    Ref ref;
+  };
+  std::vector<RCase> master_cases_;
+
+  bool case_marker(const std::string& name, const DeckFile& f, const DeckLine& l) {
+    for (const bool begin : {true, false}) {
+      const std::string p = begin ? "CASE_BEGIN_" : "CASE_END_";
+      if (name.rfind(p, 0) != 0) continue;
+      long long n = 0;
+      Location loc;
+      loc.file = f.name();
+      loc.line = l.number;
+      loc.card = "*" + name;
+      if (parse_fortran_int(name.substr(p.size()), n) != FieldStatus::ok || n < 1) {
+        diag_.add(1006, loc, "*" + p + "n takes a positive case number n");
+        return true;
+      }
+      auto it = std::find(open_cases_.begin(), open_cases_.end(), int(n));
+      if (begin) {
+        if (it == open_cases_.end()) open_cases_.push_back(int(n));
+      } else if (it == open_cases_.end()) {
+        diag_.add(1006, loc, "no *CASE_BEGIN_" + std::to_string(n) + " before it");
+      } else {
+        open_cases_.erase(it);
+      }
+      return true;
+    }
+    return false;
+  }
+
+  // CID=n on a keyword line (after the keyword name): the keyword belongs to child case n.
+  static int keyword_case_option(std::string_view t) {
+    const std::string u = upper(t);
+    const std::size_t sp = u.find_first_of(" \t");
+    if (sp == std::string::npos) return 0;
+    const std::size_t p = u.find("CID=", sp);
+    if (p == std::string::npos || (p > 0 && u[p - 1] != ' ' && u[p - 1] != '\t')) return 0;
+    long long n = 0;
+    const std::size_t e = u.find_first_of(" \t", p);
+    if (parse_fortran_int(u.substr(p + 4, e == std::string::npos ? std::string::npos : e - p - 4), n) != FieldStatus::ok) return 0;
+    return int(n);
+  }
+
+  void read_master_cases() {
+    for (const Block& b : blocks_) {
+      if (b.name != "CASE") continue;
+      RCase c;
+      c.ref.file = b.kw.file;
+      c.ref.line = b.kw.line;
+      std::size_t k = 0;
+      while (k < b.data.size() && is_blank(b.data[k].line->text)) ++k;
+      if (k >= b.data.size()) { missing_card(b, "card 1 (CASEID JOBID)"); continue; }
+      // card 1: CASEID and JOBID, written in columns or separated by blanks
+      std::istringstream first(std::string(b.data[k].line->text));
+      std::string id_text;
+      first >> id_text >> c.job;
+      long long id = 0;
+      if (parse_fortran_int(id_text, id) != FieldStatus::ok || id < 1) {
+        Location loc;
+        loc.file = b.data[k].file->name();
+        loc.line = b.data[k].line->number;
+        loc.card = b.keyword;
+        loc.field = "CASEID";
+        loc.found = id_text;
+        loc.show_found = true;
+        diag_.add(1001, loc, "a positive case id");
+        continue;
+      }
+      c.id = int(id);
+      // then command-line lines (any text) and lines of child case ids (integers only)
+      for (++k; k < b.data.size(); ++k) {
+        std::istringstream line(std::string(b.data[k].line->text));
+        std::vector<int> ids;
+        std::string tok;
+        bool all_ints = true;
+        while (line >> tok) {
+          long long v = 0;
+          if (parse_fortran_int(tok, v) == FieldStatus::ok) ids.push_back(int(v));
+          else all_ints = false;
+        }
+        if (all_ints) {
+          for (int v : ids)
+            if (v != 0) c.children.push_back(v);
+        } else {
+          c.commands.push_back(b.data[k]);
+        }
+      }
+      for (const RCase& o : master_cases_)
+        if (o.id == c.id) diag_.add(1200, loc_of(c.ref, b.keyword, nullptr, false), "case " + std::to_string(c.id) + " also defined at " + at(o.ref));
+      master_cases_.push_back(std::move(c));
+    }
+  }
+
+  // Leaves out the keyword blocks of the child cases the selected case does not hold.
+  void select_case() {
+    read_master_cases();
+    std::set<int> children, all_children;
+    for (const Block& b : blocks_) all_children.insert(b.cases.begin(), b.cases.end());
+    if (!open_cases_.empty()) {
+      Location loc;
+      loc.file = main_.name();
+      diag_.add(1316, loc, "*CASE_BEGIN_" + std::to_string(open_cases_.front()) + " has no *CASE_END_" + std::to_string(open_cases_.front()));
+    }
+    const int want = opt_.case_id;
+    if (want != 0) {
+      std::string job;
+      bool found = false;
+      for (const RCase& c : master_cases_)
+        if (c.id == want) {
+          found = true;
+          job = c.job;
+          children.insert(c.children.begin(), c.children.end());
+          for (const KLine& l : c.commands) {
+            Location loc;
+            loc.file = l.file->name();
+            loc.line = l.line->number;
+            loc.card = "*CASE " + std::to_string(c.id);
+            loc.found = rtrim(l.line->text);
+            loc.show_found = true;
+            diag_.add(2006, loc, "the command-line options of a case: give them on impact3d's command line");
+          }
+        }
+      if (!found && master_cases_.empty() && all_children.count(want)) {  // child n is case n
+        found = true;
+        children.insert(want);
+      }
+      if (!found) {
+        std::string list;
+        for (const RCase& c : master_cases_) list += (list.empty() ? "" : ", ") + std::to_string(c.id);
+        if (master_cases_.empty())
+          for (int c : all_children) list += (list.empty() ? "" : ", ") + std::to_string(c);
+        Location loc;
+        loc.file = main_.name();
+        diag_.add(1310, loc, "case=" + std::to_string(want) + ": the deck defines no such case" + (list.empty() ? std::string(" (it has no *CASE)") : " (its cases: " + list + ")"));
+      }
+      m_.case_job = job.empty() ? "case" + std::to_string(want) : job;
+    }
+    std::size_t dropped = 0;
+    std::vector<Block> kept;
+    kept.reserve(blocks_.size());
+    for (Block& b : blocks_) {
+      bool active = b.cases.empty();
+      for (int c : b.cases) active = active || children.count(c) > 0;
+      if (active) kept.push_back(std::move(b));
+      else ++dropped;
+    }
+    blocks_.swap(kept);
+    if (dropped) {
+      std::string list;
+      for (const RCase& c : master_cases_) list += (list.empty() ? "" : ", ") + std::to_string(c.id);
+      if (master_cases_.empty())
+        for (int c : all_children) list += (list.empty() ? "" : ", ") + std::to_string(c);
+      Location loc;
+      loc.file = main_.name();
+      diag_.add(2008, loc, std::to_string(dropped) + " keyword block(s) of *CASE sections left out: " +
+                               (want == 0 ? "this is the base case (impact3d case=ID runs case ID; cases " + list + ")"
+                                          : "they belong to other cases than " + std::to_string(want)));
+    }
   }
 
   // ---------------------------------------------------------------- pass 2: parse blocks
@@ -828,7 +1162,15 @@ class KeywordReader {
     static const std::set<std::string> titled = {
         "SECTION_SOLID", "HOURGLASS", "DEFINE_CURVE", "SET_NODE_LIST", "SET_NODE", "SET_PART_LIST",
         "SET_PART", "SET_SEGMENT", "SET_NODE_LIST_GENERATE", "CONTACT_SURFACE_TO_SURFACE",
-        "CONTACT_AUTOMATIC_SURFACE_TO_SURFACE", "CONTACT_NODES_TO_SURFACE"};
+        "CONTACT_AUTOMATIC_SURFACE_TO_SURFACE", "CONTACT_NODES_TO_SURFACE",
+        // issue 16: sets, boxes, coordinate systems
+        "SET_NODE_ADD", "SET_NODE_GENERAL", "SET_NODE_LIST_GENERATE_INCREMENT", "SET_PART_ADD",
+        "SET_PART_LIST_GENERATE", "SET_PART_LIST_GENERATE_INCREMENT", "SET_SOLID", "SET_SOLID_LIST",
+        "SET_SOLID_GENERATE", "SET_SOLID_LIST_GENERATE", "SET_SOLID_GENERATE_INCREMENT", "SET_SOLID_ADD",
+        "SET_SOLID_GENERAL", "SET_SHELL", "SET_SHELL_LIST", "SET_SHELL_GENERATE", "SET_SHELL_LIST_GENERATE",
+        "SET_SHELL_GENERATE_INCREMENT", "SET_SHELL_ADD", "SET_SHELL_GENERAL", "DEFINE_BOX",
+        "DEFINE_COORDINATE_SYSTEM", "DEFINE_COORDINATE_NODES", "DEFINE_COORDINATE_VECTOR", "DEFINE_VECTOR",
+        "DEFINE_VECTOR_NODES", "DEFINE_TRANSFORMATION"};
     static const std::set<std::string> with_id = {
         "RIGIDWALL_PLANAR", "RIGIDWALL_PLANAR_MOVING", "CONTACT_SURFACE_TO_SURFACE", "CONTACT_AUTOMATIC_SURFACE_TO_SURFACE",
         "CONTACT_NODES_TO_SURFACE", "BOUNDARY_SPC_NODE", "BOUNDARY_SPC_SET",
@@ -849,6 +1191,7 @@ class KeywordReader {
 // output.  Returns why, or nullptr for any other keyword.
 const char* ignored_keyword_reason(const std::string& n) {
   if (n == "CONTROL_ENERGY") return "IMPACT-3D always computes all energies";
+  if (n == "KEYWORD_ID") return "the model identification (project, number, stage) is not used";
   if (n == "DATABASE_EXTENT_BINARY") return "IMPACT-3D writes its fixed set of plot variables";
   if (n == "CONTROL_PARALLEL") return "threads are set on the command line (ncpu=); results do not depend on them";
   if (n == "CONTROL_ACCURACY") return "no accuracy options for solids here (invariant numbering and objective updates are for shells and fully integrated elements)";
@@ -878,11 +1221,12 @@ bool is_ascii_database(const std::string& n) {
         b.moving_opt = true;
       }
       b.name = n;
-      if (n == "KEYWORD" || n == "INCLUDE") continue;
+      if (n == "KEYWORD" || n == "INCLUDE" || n == "INCLUDE_PATH" || n == "INCLUDE_PATH_RELATIVE" || n == "INCLUDE_TRANSFORM" || n == "CASE") continue;
       if (n == "COMMENT") {
         parse_comment(b);
         continue;
       }
+      if (parse_structure_keyword(b)) continue;  // sets, boxes, coordinate systems, histories
       if (n == "TITLE") {
         for (const KLine& l : b.data) {
           m_.title = rtrim(l.line->text.substr(0, std::min<std::size_t>(80, l.line->text.size())));
@@ -966,18 +1310,6 @@ bool is_ascii_database(const std::string& n) {
         loc.line = b.kw.line->number;
         loc.card = b.keyword;
         diag_.add(2008, loc, why);
-      } else if (n == "DATABASE_HISTORY_NODE" || n == "DATABASE_HISTORY_SOLID") {
-        RHistory h;
-        h.solid = n == "DATABASE_HISTORY_SOLID";
-        for (std::size_t k = 0; k < b.data.size(); ++k) {
-          if (is_blank(b.data[k].line->text)) continue;
-          KCard c = card(b, k, "", W(b, 8));
-          for (int f = 0; f < 8; ++f) {
-            long long id = c.i(f, h.solid ? "EID" : "NID");
-            if (id != 0) { h.ids.push_back(int(id)); h.refs.push_back(c.ref(f)); }
-          }
-        }
-        histories_.push_back(std::move(h));
       } else if (n == "INITIAL_VELOCITY") {
         parse_initial_velocity(b);
       } else if (n == "INITIAL_VELOCITY_NODE") {
@@ -986,12 +1318,6 @@ bool is_ascii_database(const std::string& n) {
         parse_initial_velocity_generation(b);
       } else if (n == "BOUNDARY_SPC_NODE" || n == "BOUNDARY_SPC_SET") {
         parse_spc(b, n == "BOUNDARY_SPC_SET");
-      } else if (n == "SET_NODE_LIST" || n == "SET_NODE") {
-        parse_id_set(b, node_sets_, "NID", false);
-      } else if (n == "SET_NODE_LIST_GENERATE") {
-        parse_id_set(b, node_sets_, "B", true);
-      } else if (n == "SET_PART_LIST" || n == "SET_PART") {
-        parse_id_set(b, part_sets_, "PID", false);
       } else if (n == "SET_SEGMENT") {
         parse_segment_set(b);
       } else if (n == "RIGIDWALL_PLANAR") {
@@ -1037,6 +1363,8 @@ bool is_ascii_database(const std::string& n) {
         char kind = n.rfind("SET_NODE", 0) == 0      ? 'N'
                     : n.rfind("SET_PART", 0) == 0    ? 'P'
                     : n.rfind("SET_SEGMENT", 0) == 0 ? 'S'
+                    : n.rfind("SET_SOLID", 0) == 0   ? 'H'
+                    : n.rfind("DEFINE_BOX", 0) == 0  ? 'B'
                     : n.rfind("PART", 0) == 0        ? 'p'
                                                      : 0;
         if (kind) {
@@ -1202,7 +1530,10 @@ bool is_ascii_database(const std::string& n) {
         }
         for (int j = 8; j < 10; ++j) {
           std::string f = "N" + std::to_string(j + 1);
-          if (c2.i(j, f.c_str()) != 0) { c2.error(1102, j, f.c_str(), "10-node tetrahedra"); ok = false; }
+          if (c2.i(j, f.c_str()) != 0 && ok) {  // a 10-node tetrahedron: counted, refused once
+            ok = false;
+            if (tet10_count_++ == 0) tet10_first_ = {c2.ref(j), e.id};
+          }
         }
         k += 2;
       }
@@ -1246,7 +1577,7 @@ bool is_ascii_database(const std::string& n) {
   void parse_section(const Block& b) {
     for (std::size_t k = skip_option_card(b); k < b.data.size(); ++k) {
       KCard c = card(b, k, "", W(b, 3));
-      int id = int(c.i(0, "SECID"));
+      int id = xid(int(c.i(0, "SECID")), b, &IncludeTransform::idroff);
       RSection s;
       s.elform = int(c.i(1, "ELFORM", 1));
       s.ref = c.ref(1);
@@ -1262,7 +1593,7 @@ bool is_ascii_database(const std::string& n) {
     std::size_t start = skip_option_card(b);
     if (start >= b.data.size()) { missing_card(b, "card 1"); return; }
     KCard c = card(b, start, "card 1", W(b, 8));
-    int mid = int(c.i(0, "MID"));
+    int mid = xid(int(c.i(0, "MID")), b, &IncludeTransform::idmoff);
     c.set_card(b.keyword + " material " + std::to_string(mid));
     RMat m;
     m.type = &t;
@@ -1301,7 +1632,7 @@ bool is_ascii_database(const std::string& n) {
   void parse_hourglass(const Block& b) {
     for (std::size_t k = skip_option_card(b); k < b.data.size(); ++k) {
       KCard c = card(b, k, "", W(b, 8));
-      int id = int(c.i(0, "HGID"));
+      int id = xid(int(c.i(0, "HGID")), b, &IncludeTransform::idroff);
       c.set_card(b.keyword + " " + std::to_string(id));
       RHourglass h;
       h.ref = c.ref(0);
@@ -1386,22 +1717,38 @@ bool is_ascii_database(const std::string& n) {
     c.i(7, "MS1ST");
   }
 
+  // *INITIAL_VELOCITY: card 1 NSID NSIDEX BOXID IRIGID ICID, card 2 VX VY VZ (VXR-VZR), and
+  // with NSIDEX card 3 VXE VYE VZE (VXRE-VZRE): the velocity of the exempted nodes.
   void parse_initial_velocity(const Block& b) {
     for (std::size_t k = 0; k < b.data.size(); k += 2) {
       KCard c = card(b, k, "card 1", W(b, 5));
       RVelocity v;
+      v.keyword = upper(b.keyword);
       v.id = int(c.i(0, "NSID"));
       v.kind = v.id == 0 ? RVelocity::all : RVelocity::node_set;
       v.ref = c.ref(0);
-      if (c.i(1, "NSIDEX") != 0) c.error(1102, 1, "NSIDEX", "exempted node sets");
-      if (c.i(2, "BOXID") != 0) c.error(1102, 2, "BOXID", "boxes");
-      c.i(3, "IRIGID");
-      if (c.i(4, "ICID") != 0) c.error(1102, 4, "ICID", "local coordinate systems");
+      v.nsidex = int(c.i(1, "NSIDEX"));
+      v.nsidex_ref = c.ref(1);
+      v.boxid = int(c.i(2, "BOXID"));
+      v.boxid_ref = c.ref(2);
+      c.i(3, "IRIGID");  // rigid-body velocities from *PART_INERTIA: IMPACT-3D has none
+      v.icid = int(c.i(4, "ICID"));
+      v.icid_ref = c.ref(4);
       if (k + 1 >= b.data.size()) { missing_card(b, "card 2 (VX VY VZ)"); break; }
       KCard c2 = card(b, k + 1, "card 2", W(b, 6));
       v.v = {c2.r(0, "VX"), c2.r(1, "VY"), c2.r(2, "VZ")};
       for (int f = 3; f < 6; ++f)
         if (c2.r(f, "VR") != 0) { c2.error(2006, f, "VXR/VYR/VZR", "solid nodes have no rotations"); break; }
+      if (v.nsidex > 0) {
+        if (k + 2 >= b.data.size()) { missing_card(b, "card 3 (VXE VYE VZE), needed with NSIDEX"); break; }
+        KCard c3 = card(b, k + 2, "card 3", W(b, 6));
+        v.ve = {c3.r(0, "VXE"), c3.r(1, "VYE"), c3.r(2, "VZE")};
+        for (int f = 3; f < 6; ++f)
+          if (c3.r(f, "VRE") != 0) { c3.error(2006, f, "VXRE/VYRE/VZRE", "solid nodes have no rotations"); break; }
+        ++k;
+      } else if (v.nsidex < 0) {
+        c.error(1003, 1, "NSIDEX", "a node set id (0: none)");
+      }
       velocities_.push_back(v);
     }
   }
@@ -1411,13 +1758,15 @@ bool is_ascii_database(const std::string& n) {
       if (is_blank(b.data[k].line->text)) continue;
       KCard c = card(b, k, "", W(b, 8));
       RVelocity v;
+      v.keyword = upper(b.keyword);
       v.kind = RVelocity::node;
       v.id = int(c.i(0, "NID"));
       v.ref = c.ref(0);
       v.v = {c.r(1, "VX"), c.r(2, "VY"), c.r(3, "VZ")};
       for (int f = 4; f < 7; ++f)
         if (c.r(f, "VR") != 0) { c.error(2006, f, "VXR/VYR/VZR", "solid nodes have no rotations"); break; }
-      if (c.i(7, "ICID") != 0) c.error(1102, 7, "ICID", "local coordinate systems");
+      v.icid = int(c.i(7, "ICID"));
+      v.icid_ref = c.ref(7);
       velocities_.push_back(v);
     }
   }
@@ -1426,6 +1775,7 @@ bool is_ascii_database(const std::string& n) {
     for (std::size_t k = 0; k < b.data.size(); k += 2) {
       KCard c = card(b, k, "card 1", W(b, 8));
       RVelocity v;
+      v.keyword = upper(b.keyword);
       v.id = int(c.i(0, "ID"));
       v.ref = c.ref(0);
       int styp = int(c.i(1, "STYP"));
@@ -1436,7 +1786,8 @@ bool is_ascii_database(const std::string& n) {
       v.omega = c.r(2, "OMEGA");
       v.v = {c.r(3, "VX"), c.r(4, "VY"), c.r(5, "VZ")};
       if (c.i(6, "IVATN") != 0) c.error(1102, 6, "IVATN", "slave parts of rigid bodies");
-      if (c.i(7, "ICID") != 0) c.error(1102, 7, "ICID", "local coordinate systems");
+      v.icid = int(c.i(7, "ICID"));
+      v.icid_ref = c.ref(7);
       if (k + 1 < b.data.size()) {
         KCard c2 = card(b, k + 1, "card 2", W(b, 8));
         const char* names[] = {"XC", "YC", "ZC", "NX", "NY", "NZ"};
@@ -1454,16 +1805,37 @@ bool is_ascii_database(const std::string& n) {
     }
   }
 
+  // An ID card (ID, HEADING) among the data cards of an _ID keyword, as ANSA and LS-PrePost
+  // write several definitions under one keyword: the first card of the block, or an integer id
+  // followed by blank columns or by a heading that starts with a letter in column 11 (a data
+  // card has a number or a blank there).
+  bool is_id_card(const Block& b, std::size_t k) {
+    if (!b.id_opt) return false;
+    std::size_t first = 0;
+    while (first < b.data.size() && is_blank(b.data[first].line->text)) ++first;
+    if (k == first) return true;
+    Diagnostics quiet;
+    KCard c(b.data[k], b.keyword, W(b, 8), quiet);
+    long long id = 0;
+    if (parse_fortran_int(c.literal(0), id) != FieldStatus::ok) return false;
+    const std::string heading = c.literal(1);
+    if (!heading.empty()) return std::isalpha(static_cast<unsigned char>(heading[0])) != 0;
+    for (int f = 2; f < c.fields(); ++f)
+      if (!c.literal(f).empty()) return false;
+    return true;
+  }
+
   void parse_spc(const Block& b, bool set) {
-    for (std::size_t k = skip_option_card(b); k < b.data.size(); ++k) {
-      if (is_blank(b.data[k].line->text)) continue;
+    for (std::size_t k = 0; k < b.data.size(); ++k) {
+      if (is_blank(b.data[k].line->text) || is_id_card(b, k)) continue;
       KCard c = card(b, k, "", W(b, 8));
       RSpc s;
       s.keyword = upper(b.keyword);
       s.set = set;
       s.id = int(c.i(0, set ? "NSID" : "NID"));
       s.ref = c.ref(0);
-      if (c.i(1, "CID") != 0) c.error(1102, 1, "CID", "local coordinate systems");
+      s.cid = int(c.i(1, "CID"));  // DOFX-DOFZ are along the axes of this system
+      s.cid_ref = c.ref(1);
       const char* names[] = {"DOFX", "DOFY", "DOFZ", "DOFRX", "DOFRY", "DOFRZ"};
       for (int f = 0; f < 6; ++f) {
         long long d = c.i(2 + f, names[f]);
@@ -1475,25 +1847,83 @@ bool is_ascii_database(const std::string& n) {
     }
   }
 
-  void parse_id_set(const Block& b, std::map<int, RIdList>& sets, const char* field, bool generate) {
+  // ---------------------------------------------------------------- sets, boxes, systems
+  // (issue 16) The keywords of this section are read here, so that the dispatch in
+  // parse_blocks holds one line for all of them.  Returns false for any other keyword.
+  bool parse_structure_keyword(Block& b) {
+    const std::string& n = b.name;
+    if (parse_set_keyword(b)) return true;
+    if (n == "DEFINE_BOX") {
+      parse_define_box(b);
+    } else if (n == "DEFINE_TRANSFORMATION") {
+      parse_define_transformation(b);
+    } else if (n == "DEFINE_COORDINATE_SYSTEM" || n == "DEFINE_COORDINATE_NODES" || n == "DEFINE_COORDINATE_VECTOR" ||
+               n == "DEFINE_VECTOR" || n == "DEFINE_VECTOR_NODES") {
+      parse_coordinate_system(b);
+    } else if (n == "DATABASE_HISTORY_NODE" || n == "DATABASE_HISTORY_SOLID" || n == "DATABASE_HISTORY_NODE_SET" ||
+               n == "DATABASE_HISTORY_SOLID_SET" || n == "DATABASE_HISTORY_NODE_ID" || n == "DATABASE_HISTORY_SOLID_ID") {
+      parse_history(b);
+    } else {
+      return false;
+    }
+    return true;
+  }
+
+  // The set keywords: *SET_NODE, *SET_PART, *SET_SOLID and *SET_SHELL, each in the forms
+  // (_LIST), _GENERATE (_INCREMENT), _ADD and _GENERAL; _TITLE stripped before.
+  bool parse_set_keyword(const Block& b) {
+    static const std::pair<const char*, char> kinds[] = {{"SET_NODE", 'N'}, {"SET_PART", 'P'}, {"SET_SOLID", 'H'}, {"SET_SHELL", 'Q'}};
+    for (const auto& [prefix, kind] : kinds) {
+      const std::string p = prefix;
+      if (b.name.rfind(p, 0) != 0) continue;
+      std::string form = b.name.substr(p.size());
+      if (form.rfind("_LIST", 0) == 0) form = form.substr(5);
+      if (form != "" && form != "_GENERATE" && form != "_GENERATE_INCREMENT" && form != "_ADD" && form != "_GENERAL") return false;
+      if (kind == 'P' && form == "_GENERAL") return false;
+      std::map<int, RIdList>& sets = kind == 'N' ? node_sets_ : kind == 'P' ? part_sets_ : kind == 'H' ? solid_sets_ : shell_sets_;
+      const char* field = kind == 'N' ? "NID" : kind == 'P' ? "PID" : "EID";
+      parse_set(b, sets, field, form);
+      return true;
+    }
+    return false;
+  }
+
+  void parse_set(const Block& b, std::map<int, RIdList>& sets, const char* field, const std::string& form) {
     std::size_t k = skip_option_card(b);
     if (k >= b.data.size()) { missing_card(b, "card 1 (SID)"); return; }
     KCard c = card(b, k, "card 1", W(b, 6));
-    int sid = int(c.i(0, "SID"));
+    int sid = xid(int(c.i(0, "SID")), b, &IncludeTransform::idsoff);
+    c.set_card(b.keyword + " " + std::to_string(sid));
     RIdList s;
     s.ref = c.ref(0);
+    s.keyword = upper(b.keyword);
     if (sid < 1) c.error(1201, 0, "SID", "set ids must be positive");
+    const bool generate = form == "_GENERATE", increment = form == "_GENERATE_INCREMENT";
     for (++k; k < b.data.size(); ++k) {
       if (is_blank(b.data[k].line->text)) continue;
       KCard d = card(b, k, "set " + std::to_string(sid), W(b, 8));
-      if (generate) {
-        for (int f = 0; f + 1 < 8; f += 2) {
-          long long b1 = d.i(f, "BBEG"), b2 = d.i(f + 1, "BEND");
+      if (generate || increment) {
+        const int step = increment ? 3 : 2;
+        for (int f = 0; f + step - 1 < 8; f += step) {
+          long long b1 = d.i(f, "BBEG"), b2 = d.i(f + 1, "BEND"), inc = increment ? d.i(f + 2, "INCR", 1) : 1;
           if (b1 == 0 && b2 == 0) continue;
+          if (inc == 0) inc = 1;
           if (b1 < 1 || b2 < b1 || b2 > 2147483647) { d.error(1003, f + 1, "BEND", "range must be 1 <= BBEG <= BEND <= 2147483647"); continue; }
-          // ids in the range that are not nodes are skipped at resolution
-          s.ranges.push_back({b1, b2});
+          if (inc < 0) { d.error(1003, f + 2, "INCR", "the increment must be positive"); continue; }
+          // ids in the range that are not defined are skipped at resolution
+          s.ranges.push_back({b1, b2, inc});
         }
+      } else if (form == "_ADD") {
+        RSetTerm t;
+        t.option = "SET";
+        t.ref = d.ref(0);
+        for (int f = 0; f < 8; ++f) {
+          long long id = d.i(f, "SID");
+          if (id != 0) { t.ids.push_back(int(id)); t.refs.push_back(d.ref(f)); }
+        }
+        s.terms.push_back(std::move(t));
+      } else if (form == "_GENERAL") {
+        parse_general_set_card(d, s);
       } else {
         for (int f = 0; f < 8; ++f) {
           long long id = d.i(f, field);
@@ -1505,11 +1935,317 @@ bool is_ascii_database(const std::string& n) {
     sets[sid] = std::move(s);
   }
 
+  // A card of a *SET_..._GENERAL: OPTION (10 columns) and 7 ids; a card whose first field is
+  // a number or blank continues the option before it with 8 ids.  The options are checked when
+  // the set is resolved (they differ between node and element sets).
+  void parse_general_set_card(KCard& d, RIdList& s) {
+    std::string opt = upper(d.literal(0));
+    long long dummy = 0;
+    const bool continuation = opt.empty() || parse_fortran_int(opt, dummy) == FieldStatus::ok;
+    if (continuation && s.terms.empty()) {
+      d.error(1006, 0, "OPTION", "a *SET_..._GENERAL card starts with its option (ALL, NODE, ELEM, PART, BOX, SET_SOLID, ...)");
+      return;
+    }
+    if (!continuation) {
+      RSetTerm t;
+      t.ref = d.ref(0);
+      // the removing options are the adding ones with a D in front (DNODE, DPART, DBOX, ...)
+      static const std::set<std::string> adding = {"ALL", "NODE", "ELEM", "PART", "BOX", "SET_SOLID", "SET_SHELL",
+                                                    "SET_BEAM", "SET_TSHELL", "SET_DISCRETE", "SET_NODE", "SET_PART"};
+      if (opt.size() > 1 && opt[0] == 'D' && adding.count(opt.substr(1))) {
+        t.remove = true;
+        opt = opt.substr(1);
+      }
+      t.option = opt;
+      s.terms.push_back(std::move(t));
+    }
+    RSetTerm& t = s.terms.back();
+    for (int f = continuation ? 0 : 1; f < 8; ++f) {
+      long long id = d.i(f, "E");
+      if (id != 0) { t.ids.push_back(int(id)); t.refs.push_back(d.ref(f)); }
+    }
+  }
+
+  // *DEFINE_BOX: BOXID XMN XMX YMN YMX ZMN ZMX.
+  void parse_define_box(const Block& b) {
+    for (std::size_t k = skip_option_card(b); k < b.data.size(); ++k) {
+      if (is_blank(b.data[k].line->text)) continue;
+      KCard c = card(b, k, "", W(b, 7));
+      const int id = xid(int(c.i(0, "BOXID")), b, &IncludeTransform::iddoff);
+      c.set_card(b.keyword + " " + std::to_string(id));
+      RBox r;
+      r.ref = c.ref(0);
+      const char* names[] = {"XMN", "XMX", "YMN", "YMX", "ZMN", "ZMX"};
+      for (int a = 0; a < 3; ++a) {
+        r.box.lo[std::size_t(a)] = c.r(1 + 2 * a, names[2 * a]);
+        r.box.hi[std::size_t(a)] = c.r(2 + 2 * a, names[2 * a + 1]);
+        if (r.box.hi[std::size_t(a)] < r.box.lo[std::size_t(a)]) c.error(1003, 2 + 2 * a, names[2 * a + 1], std::string("must not be below ") + names[2 * a]);
+      }
+      if (id < 1) c.error(1201, 0, "BOXID", "box ids must be positive");
+      if (boxes_.count(id)) c.error(1200, 0, "BOXID", "also defined at " + at(boxes_[id].ref));
+      boxes_[id] = r;
+      break;  // one box per keyword, as in LS-DYNA
+    }
+  }
+
+  // *DEFINE_COORDINATE_SYSTEM: CID XO YO ZO XL YL ZL CIDL; XP YP ZP.
+  // *DEFINE_COORDINATE_NODES: CID N1 N2 N3 FLAG DIR (DIR X only).
+  // *DEFINE_COORDINATE_VECTOR: CID XX YX ZX XV YV ZV NID.
+  // *DEFINE_VECTOR: VID XT YT ZT XH YH ZH CID; *DEFINE_VECTOR_NODES: VID NODET NODEH.
+  // Several definitions may follow one keyword.
+  void parse_coordinate_system(const Block& b) {
+    const std::string& n = b.name;
+    const bool is_vector = n.rfind("DEFINE_VECTOR", 0) == 0;
+    const char* id_field = is_vector ? "VID" : "CID";
+    for (std::size_t k = skip_option_card(b); k < b.data.size(); ++k) {
+      if (is_blank(b.data[k].line->text)) continue;
+      KCard c = card(b, k, "card 1", W(b, 8));
+      RCoordSystem r;
+      r.keyword = b.keyword;
+      r.id = xid(int(c.i(0, id_field)), b, &IncludeTransform::iddoff);
+      c.set_card(b.keyword + " " + std::to_string(r.id));
+      r.ref = c.ref(0);
+      if (r.id < 1) c.error(1201, 0, id_field, "ids must be positive");
+      if (n == "DEFINE_COORDINATE_SYSTEM") {
+        r.kind = RCoordSystem::points;
+        const char* names[] = {"XO", "YO", "ZO", "XL", "YL", "ZL"};
+        for (int f = 0; f < 6; ++f) r.v[std::size_t(f)] = c.r(1 + f, names[f]);
+        r.cid = int(c.i(7, "CIDL"));
+        r.cid_ref = c.ref(7);
+        if (k + 1 >= b.data.size()) { missing_card(b, "card 2 (XP YP ZP)"); return; }
+        KCard c2 = card(b, ++k, "system " + std::to_string(r.id) + " card 2", W(b, 3));
+        const char* names2[] = {"XP", "YP", "ZP"};
+        for (int f = 0; f < 3; ++f) r.v[std::size_t(6 + f)] = c2.r(f, names2[f]);
+      } else if (n == "DEFINE_COORDINATE_NODES" || n == "DEFINE_VECTOR_NODES") {
+        r.kind = is_vector ? RCoordSystem::vector : RCoordSystem::nodes;
+        const int count = is_vector ? 2 : 3;
+        const char* names[] = {"N1", "N2", "N3"};
+        const char* vnames[] = {"NODET", "NODEH"};
+        for (int f = 0; f < count; ++f) {
+          r.n[std::size_t(f)] = int(c.i(1 + f, is_vector ? vnames[f] : names[f]));
+          r.node_refs[std::size_t(f)] = c.ref(1 + f);
+        }
+        if (!is_vector) {
+          if (c.i(4, "FLAG") != 0) c.error(2006, 4, "FLAG", "the system is built once, from the initial node positions");
+          std::string dir = upper(c.literal(5));
+          if (!dir.empty() && dir != "X" && dir != "1") c.error(1102, 5, "DIR", "local axes along N1-N2 other than x");
+        }
+      } else if (n == "DEFINE_COORDINATE_VECTOR") {
+        r.kind = RCoordSystem::vectors;
+        const char* names[] = {"XX", "YX", "ZX", "XV", "YV", "ZV"};
+        for (int f = 0; f < 6; ++f) r.v[std::size_t(f)] = c.r(1 + f, names[f]);
+        if (c.i(7, "NID") != 0) c.error(2006, 7, "NID", "the system is fixed (it does not turn with a node)");
+      } else {  // DEFINE_VECTOR
+        r.kind = RCoordSystem::vector;
+        const char* names[] = {"XT", "YT", "ZT", "XH", "YH", "ZH"};
+        for (int f = 0; f < 6; ++f) r.v[std::size_t(f)] = c.r(1 + f, names[f]);
+        r.cid = int(c.i(7, "CID"));
+        r.cid_ref = c.ref(7);
+      }
+      for (const RCoordSystem& o : coord_defs_)
+        if (o.id == r.id && (o.kind == RCoordSystem::vector) == (r.kind == RCoordSystem::vector))
+          c.error(1200, 0, id_field, "also defined at " + at(o.ref));
+      coord_defs_.push_back(r);
+    }
+  }
+
+  // *DEFINE_TRANSFORMATION: TRANID; cards OPTION A1-A7, composed in order: TRANSL (A1-A3),
+  // SCALE (A1-A3; blank or 0 = 1), ROTATE (axis A1-A3 through the point A4-A6, angle A7 in
+  // degrees).  The other options are not supported.
+  struct RTransformation {
+    AffineMap map;
+    Ref ref;
+  };
+  std::map<int, RTransformation> transformations_;
+
+  void parse_define_transformation(const Block& b) {
+    std::size_t k = skip_option_card(b);
+    while (k < b.data.size() && is_blank(b.data[k].line->text)) ++k;
+    if (k >= b.data.size()) { missing_card(b, "card 1 (TRANID)"); return; }
+    KCard c = card(b, k, "card 1", W(b, 1));
+    const int id = int(c.i(0, "TRANID"));
+    c.set_card(b.keyword + " " + std::to_string(id));
+    RTransformation t;
+    t.ref = c.ref(0);
+    if (id < 1) c.error(1201, 0, "TRANID", "ids must be positive");
+    for (++k; k < b.data.size(); ++k) {
+      if (is_blank(b.data[k].line->text)) continue;
+      KCard d = card(b, k, "transformation " + std::to_string(id), W(b, 8));
+      const std::string opt = upper(d.literal(0));
+      double a[7];
+      for (int f = 0; f < 7; ++f) a[f] = d.r(1 + f, "A");
+      if (opt == "TRANSL") {
+        t.map = t.map.then(AffineMap::translation({a[0], a[1], a[2]}));
+      } else if (opt == "SCALE") {
+        Vec3 sc = {a[0] == 0 ? 1 : a[0], a[1] == 0 ? 1 : a[1], a[2] == 0 ? 1 : a[2]};
+        t.map = t.map.then(AffineMap::scaling(sc));
+      } else if (opt == "ROTATE") {
+        if (a[0] == 0 && a[1] == 0 && a[2] == 0) d.error(1003, 1, "A1-A3", "the rotation axis must not be zero");
+        else t.map = t.map.then(AffineMap::rotation({a[0], a[1], a[2]}, {a[3], a[4], a[5]}, a[6]));
+      } else if (opt == "MIRROR" || opt == "POINT" || opt == "POS6P" || opt == "POS6N" || opt == "ROTATE3NA" || opt == "ROTATE3NB") {
+        d.error(1102, 0, "OPTION", opt + " transformations (IMPACT-3D has TRANSL, SCALE, ROTATE)");
+      } else {
+        d.error(1006, 0, "OPTION", "TRANSL, SCALE or ROTATE");
+      }
+    }
+    if (transformations_.count(id)) c.error(1200, 0, "TRANID", "also defined at " + at(transformations_[id].ref));
+    transformations_[id] = t;
+  }
+
+  // The records read from a file of an *INCLUDE_TRANSFORM get the id offsets (an id 0, which
+  // means "none" or "all", stays 0; the ids that keyed definitions define got theirs while
+  // parsing, xid) and their coordinates the map: nodes, the points of walls and coordinate
+  // systems, boxes (translation and scaling only).
+  const IncludeTransform* transform_of(const DeckFile* f) const {
+    auto it = file_transform_.find(f);
+    return it == file_transform_.end() ? nullptr : it->second;
+  }
+  // An id a keyword of this block defines, with its *INCLUDE_TRANSFORM offset (applied while
+  // parsing, so that a file included twice with offsets defines no duplicates).
+  int xid(int id, const Block& b, long long IncludeTransform::*field) const {
+    const IncludeTransform* t = id != 0 ? transform_of(b.kw.file) : nullptr;
+    return t ? int(id + t->*field) : id;
+  }
+  static void offset(int& id, long long off) {
+    if (id != 0) id = int(id + off);
+  }
+  void offset_set_members(RIdList& s, const IncludeTransform& t, long long member_off) {
+    for (int& id : s.ids) offset(id, member_off);
+    for (auto& r : s.ranges) r[0] += member_off, r[1] += member_off;
+    for (RSetTerm& term : s.terms) {
+      const long long off = term.option == "NODE" ? t.idnoff : term.option == "ELEM" ? t.ideoff : term.option == "PART" ? t.idpoff
+                            : term.option == "BOX" ? t.iddoff : term.option == "SET" || term.option.rfind("SET_", 0) == 0 ? t.idsoff : 0;
+      for (int& id : term.ids) offset(id, off);
+    }
+  }
+
+  void apply_include_transforms() {
+    if (transforms_.empty()) return;
+    for (IncludeTransform& t : transforms_) {
+      t.map = AffineMap::scaling({t.fctlen, t.fctlen, t.fctlen});
+      if (t.tranid != 0) {
+        auto it = transformations_.find(t.tranid);
+        if (it == transformations_.end()) err(1310, t.tranid_ref, "*INCLUDE_TRANSFORM", "TRANID", "*DEFINE_TRANSFORMATION " + std::to_string(t.tranid) + " is not defined");
+        else t.map = t.map.then(it->second.map);
+      }
+      const AffineMap id;
+      t.moves = t.map.a != id.a || t.map.t != id.t;
+    }
+    for (RNode& n : nodes_)
+      if (const IncludeTransform* t = transform_of(n.card.file)) {
+        offset(n.id, t->idnoff);
+        const Vec3 p = t->map.apply({n.x, n.y, n.z});
+        n.x = p[0], n.y = p[1], n.z = p[2];
+      }
+    for (RElem& e : elems_)
+      if (const IncludeTransform* t = transform_of(e.card.file)) {
+        offset(e.id, t->ideoff);
+        offset(e.pid, t->idpoff);
+        for (int& v : e.n) offset(v, t->idnoff);
+      }
+    for (RPart& p : parts_)
+      if (const IncludeTransform* t = transform_of(p.ref.file)) {
+        offset(p.pid, t->idpoff);
+        offset(p.mid, t->idmoff);
+        offset(p.secid, t->idroff);
+        offset(p.hgid, t->idroff);
+        offset(p.eosid, t->idroff);
+      }
+    const std::pair<std::map<int, RIdList>*, long long IncludeTransform::*> sets[] = {
+        {&node_sets_, &IncludeTransform::idnoff}, {&part_sets_, &IncludeTransform::idpoff},
+        {&solid_sets_, &IncludeTransform::ideoff}, {&shell_sets_, &IncludeTransform::ideoff}};
+    for (auto [map, member] : sets) {
+      for (auto& [sid, s] : *map)
+        if (const IncludeTransform* t = transform_of(s.ref.file)) offset_set_members(s, *t, t->*member);
+    }
+    for (auto& [sid, s] : seg_sets_)
+      if (const IncludeTransform* t = transform_of(s.ref.file))
+        for (auto& seg : s.segs)
+          for (int& v : seg) offset(v, t->idnoff);
+    for (RContact& c : contacts_)
+      if (const IncludeTransform* t = transform_of(c.ref.file))
+        for (RSide* side : {&c.a, &c.b}) {
+          offset(side->id, side->type == 3 ? t->idpoff : t->idsoff);
+          offset(side->boxid, t->iddoff);
+        }
+    for (RWall& w : walls_)
+      if (const IncludeTransform* t = transform_of(w.nsid_ref.file)) {
+        offset(w.nsid, t->idsoff);
+        offset(w.nsidex, t->idsoff);
+        offset(w.boxid, t->iddoff);
+        w.w.tail = t->map.apply(w.w.tail);
+        w.w.head = t->map.apply(w.w.head);
+      }
+    for (RVelocity& v : velocities_)
+      if (const IncludeTransform* t = transform_of(v.ref.file)) {
+        offset(v.id, v.kind == RVelocity::node ? t->idnoff : v.kind == RVelocity::part ? t->idpoff : t->idsoff);
+        offset(v.nsidex, t->idsoff);
+        offset(v.boxid, t->iddoff);
+        offset(v.icid, t->iddoff);
+        if (t->moves && (v.v != Vec3{} || v.omega != 0 || v.ve != Vec3{}))
+          err(1102, v.ref, v.keyword, nullptr, "initial velocities in an *INCLUDE_TRANSFORM file that is scaled, turned or moved (the velocities would have to turn with it)");
+      }
+    for (RSpc& s : spcs_)
+      if (const IncludeTransform* t = transform_of(s.ref.file)) {
+        offset(s.id, s.set ? t->idsoff : t->idnoff);
+        offset(s.cid, t->iddoff);
+      }
+    for (RHistory& h : histories_)
+      for (std::size_t j = 0; j < h.ids.size(); ++j)
+        if (const IncludeTransform* t = transform_of(h.refs[j].file)) offset(h.ids[j], h.sets ? t->idsoff : h.solid ? t->ideoff : t->idnoff);
+    for (auto& [bid, r] : boxes_)
+      if (const IncludeTransform* t = transform_of(r.ref.file)) {
+        const auto& a = t->map.a;
+        const bool diagonal = a[0][1] == 0 && a[0][2] == 0 && a[1][0] == 0 && a[1][2] == 0 && a[2][0] == 0 && a[2][1] == 0;
+        if (!diagonal) {
+          err(1102, r.ref, "*DEFINE_BOX " + std::to_string(bid), "BOXID", "a box in a turned *INCLUDE_TRANSFORM file (it would no longer be aligned with the axes)");
+          continue;
+        }
+        const Vec3 lo = t->map.apply(r.box.lo), hi = t->map.apply(r.box.hi);
+        for (int q = 0; q < 3; ++q) {
+          r.box.lo[std::size_t(q)] = std::min(lo[std::size_t(q)], hi[std::size_t(q)]);
+          r.box.hi[std::size_t(q)] = std::max(lo[std::size_t(q)], hi[std::size_t(q)]);
+        }
+      }
+    for (RCoordSystem& r : coord_defs_)
+      if (const IncludeTransform* t = transform_of(r.ref.file)) {
+        offset(r.cid, t->iddoff);
+        for (int& v : r.n) offset(v, t->idnoff);
+        if (t->moves && (r.kind == RCoordSystem::points || r.kind == RCoordSystem::vector) && r.n[0] == 0 && r.cid == 0) {
+          for (int q = 0; q < 3; ++q) {  // the points move with the mesh
+            const Vec3 p = t->map.apply({r.v[std::size_t(3 * q)], r.v[std::size_t(3 * q + 1)], r.v[std::size_t(3 * q + 2)]});
+            for (int j = 0; j < 3; ++j) r.v[std::size_t(3 * q + j)] = p[std::size_t(j)];
+          }
+        } else if (t->moves && r.kind == RCoordSystem::vectors) {
+          err(1102, r.ref, r.keyword, nullptr, "*DEFINE_COORDINATE_VECTOR in a turned or moved *INCLUDE_TRANSFORM file");
+        }
+      }
+  }
+
+  // *DATABASE_HISTORY_NODE / _SOLID: ids 8 per card; _SET: set ids 8 per card; _ID: one id and
+  // a heading per card.
+  void parse_history(const Block& b) {
+    RHistory h;
+    h.solid = b.name.rfind("DATABASE_HISTORY_SOLID", 0) == 0;
+    h.sets = b.name.size() > 4 && b.name.compare(b.name.size() - 4, 4, "_SET") == 0;
+    const bool with_heading = b.name.size() > 3 && b.name.compare(b.name.size() - 3, 3, "_ID") == 0;
+    const char* field = h.sets ? "ID" : h.solid ? "EID" : "NID";
+    for (std::size_t k = 0; k < b.data.size(); ++k) {
+      if (is_blank(b.data[k].line->text)) continue;
+      KCard c = card(b, k, "", with_heading ? std::vector<int>{10, 70} : W(b, 8));
+      for (int f = 0; f < (with_heading ? 1 : 8); ++f) {
+        long long id = c.i(f, field);
+        if (id != 0) { h.ids.push_back(int(id)); h.refs.push_back(c.ref(f)); }
+      }
+    }
+    histories_.push_back(std::move(h));
+  }
+
   void parse_segment_set(const Block& b) {
     std::size_t k = skip_option_card(b);
     if (k >= b.data.size()) { missing_card(b, "card 1 (SID)"); return; }
     KCard c = card(b, k, "card 1", W(b, 6));
-    int sid = int(c.i(0, "SID"));
+    int sid = xid(int(c.i(0, "SID")), b, &IncludeTransform::idsoff);
     RSegSet s;
     s.ref = c.ref(0);
     for (++k; k < b.data.size(); ++k) {
@@ -1540,8 +2276,10 @@ bool is_ascii_database(const std::string& n) {
       w.keyword = upper(b.keyword);
       w.nsid = int(c.i(0, "NSID"));
       w.nsid_ref = c.ref(0);
-      if (c.i(1, "NSIDEX") != 0) c.error(1102, 1, "NSIDEX", "exempted node sets");
-      if (c.i(2, "BOXID") != 0) c.error(1102, 2, "BOXID", "boxes");
+      w.nsidex = int(c.i(1, "NSIDEX"));
+      w.nsidex_ref = c.ref(1);
+      w.boxid = int(c.i(2, "BOXID"));
+      w.boxid_ref = c.ref(2);
       if (c.r(3, "OFFSET") != 0) c.error(1102, 3, "OFFSET", "wall offset");
       if (c.r(4, "BIRTH") != 0) c.error(1102, 4, "BIRTH", "wall birth time");
       double death = c.r(5, "DEATH");
@@ -1589,8 +2327,10 @@ bool is_ascii_database(const std::string& n) {
     ct.b.id_ref = c.ref(1);
     ct.a.type_ref = c.ref(2);
     ct.b.type_ref = c.ref(3);
-    if (c.i(4, "SABOXID") != 0) c.error(1102, 4, "SABOXID", "boxes");
-    if (c.i(5, "SBBOXID") != 0) c.error(1102, 5, "SBBOXID", "boxes");
+    ct.a.boxid = int(c.i(4, "SABOXID"));
+    ct.b.boxid = int(c.i(5, "SBBOXID"));
+    ct.a.box_ref = c.ref(4);
+    ct.b.box_ref = c.ref(5);
     c.i(6, "SAPR");
     c.i(7, "SBPR");
     bool ok_a = ct.a.type == 0 || ct.a.type == 2 || ct.a.type == 3 || (ct.a.type == 4 && !symmetric);
@@ -1765,7 +2505,7 @@ bool is_ascii_database(const std::string& n) {
     if (k >= b.data.size()) { missing_card(b, "card 1 (LCID)"); return; }
     KCard c = card(b, k, "card 1", W(b, 8));
     LoadCurve lc;
-    int lcid = int(c.i(0, "LCID"));
+    int lcid = xid(int(c.i(0, "LCID")), b, &IncludeTransform::idfoff);
     c.set_card(b.keyword + " " + std::to_string(lcid));
     if (c.i(1, "SIDR") != 0) c.error(2006, 1, "SIDR", "dynamic relaxation");
     double sfa = c.r(2, "SFA", 1.0), sfo = c.r(3, "SFO", 1.0);
@@ -1795,7 +2535,15 @@ bool is_ascii_database(const std::string& n) {
   // at once).
   static bool changes_meaning(const std::string& name) { return name == "CASE" || name.rfind("CASE_", 0) == 0; }
 
+  void report_tet10() {
+    if (tet10_count_ == 0) return;
+    diag_.add(1102, loc_of(tet10_first_.first, "*ELEMENT_SOLID element " + std::to_string(tet10_first_.second), "N9"),
+              std::to_string(tet10_count_) + " element(s) are 10-node tetrahedra (N9, N10 not 0; this is the first): IMPACT-3D has 8-node solids "
+              "(4-node tetrahedra as degenerate hexahedra: N1 N2 N3 N4 N4 N4 N4 N4)");
+  }
+
   void report_unsupported() {
+    report_tet10();
     if (unsupported_.empty()) return;
     std::map<std::string, int> ignorable, refused;  // keyword as written, upper case -> blocks
     int n_ignorable = 0, n_refused = 0;
@@ -1843,6 +2591,7 @@ bool is_ascii_database(const std::string& n) {
 
   void resolve() {
     resolve_nodes();
+    resolve_coordinate_systems();
     resolve_parts_and_elements();
     resolve_materials();
     resolve_control();
@@ -2103,14 +2852,60 @@ bool is_ascii_database(const std::string& n) {
     k.running_restart_cycles = runrsf_;
   }
 
-  // Node set members as 0-based node indices (undefined nodes reported).
+  // Indices (into sorted ids) of the ids BBEG..BEND by INC.
+  static void ids_in_range(const std::vector<int>& sorted, const std::array<long long, 3>& r, std::vector<int>& out) {
+    auto lo = std::lower_bound(sorted.begin(), sorted.end(), r[0]);
+    auto hi = std::upper_bound(sorted.begin(), sorted.end(), r[1]);
+    for (auto it = lo; it < hi; ++it)
+      if ((*it - r[0]) % r[2] == 0) out.push_back(int(it - sorted.begin()));
+  }
+
+  // the sets being resolved: a set that contains itself (through _ADD or _GENERAL) is an error
+  std::set<const RIdList*> resolving_;
+  bool enter_set(const RIdList& s, const Ref& r, const std::string& card) {
+    if (!resolving_.insert(&s).second) {
+      err(1309, r, card, "SID", "the set contains itself (through *SET_..._ADD or _GENERAL)");
+      return false;
+    }
+    return true;
+  }
+
+  const Box* find_box(int id, const Ref& r, const std::string& card, const char* field) {
+    auto it = boxes_.find(id);
+    if (it == boxes_.end()) {
+      err(1310, r, card, field, "*DEFINE_BOX " + std::to_string(id) + " is not defined" + refused_note('B', id));
+      return nullptr;
+    }
+    return &it->second.box;
+  }
+
+  int elem_index(int id) const {
+    auto it = std::lower_bound(elem_ids_.begin(), elem_ids_.end(), id);
+    return it != elem_ids_.end() && *it == id ? int(it - elem_ids_.begin()) : -1;
+  }
+
+  const RIdList* find_solid_set(int sid, const Ref& r, const std::string& card, const char* field) {
+    auto it = solid_sets_.find(sid);
+    if (it == solid_sets_.end()) {
+      err(1309, r, card, field, "*SET_SOLID " + std::to_string(sid) + " is not defined" + refused_note('H', sid));
+      return nullptr;
+    }
+    return &it->second;
+  }
+
+  // The option of a *SET_..._GENERAL card that IMPACT-3D cannot resolve: error 1102 for the
+  // element kinds it does not have, 1006 for anything else.
+  void refuse_set_option(const RSetTerm& t, const std::string& card, const char* valid) {
+    static const std::set<std::string> other_elements = {"SET_SHELL", "SET_BEAM", "SET_TSHELL", "SET_DISCRETE"};
+    if (other_elements.count(t.option)) err(1102, t.ref, card, "OPTION", t.option + ": IMPACT-3D has solid elements only");
+    else err(1006, t.ref, card, "OPTION", valid);
+  }
+
+  // Node set members as 0-based node indices (undefined nodes reported).  A list keeps its
+  // order; a set with _ADD or _GENERAL terms is sorted, each node once.
   std::vector<int> set_nodes(const RIdList& s, const std::string& card) {
     std::vector<int> out;
-    for (const auto& r : s.ranges) {  // _GENERATE: the nodes whose ids lie in each range
-      auto lo = std::lower_bound(node_ids_.begin(), node_ids_.end(), r[0]);
-      auto hi = std::upper_bound(node_ids_.begin(), node_ids_.end(), r[1]);
-      for (auto it = lo; it < hi; ++it) out.push_back(int(it - node_ids_.begin()));
-    }
+    for (const auto& r : s.ranges) ids_in_range(node_ids_, r, out);  // _GENERATE
     for (std::size_t j = 0; j < s.ids.size(); ++j) {
       int idx = node_index(s.ids[j]);
       if (idx < 0) {
@@ -2119,7 +2914,212 @@ bool is_ascii_database(const std::string& n) {
       }
       out.push_back(idx);
     }
+    if (s.terms.empty() || !enter_set(s, s.ref, card)) return out;
+    std::vector<char> mark(std::size_t(m_.num_nodes()), 0);
+    for (int v : out) mark[std::size_t(v)] = 1;
+    for (const RSetTerm& t : s.terms) {
+      const char value = t.remove ? 0 : 1;
+      const auto set_all = [&](const std::vector<int>& nodes) {
+        for (int v : nodes) mark[std::size_t(v)] = value;
+      };
+      if (t.option == "ALL") {
+        std::fill(mark.begin(), mark.end(), value);
+        continue;
+      }
+      if (t.option != "NODE" && t.option != "PART" && t.option != "BOX" && t.option != "SET_SOLID" && t.option != "SET") {
+        refuse_set_option(t, card, "node set options: ALL, NODE, PART, BOX, SET_SOLID (D in front removes: DNODE, DPART, DBOX, ...)");
+        continue;
+      }
+      for (std::size_t j = 0; j < t.ids.size(); ++j) {
+        const int id = t.ids[j];
+        const Ref& r = t.refs[j];
+        if (t.option == "NODE") {
+          const int idx = node_index(id);
+          if (idx < 0) err(1202, r, card, "E", "node " + std::to_string(id) + " is not defined by *NODE");
+          else mark[std::size_t(idx)] = value;
+        } else if (t.option == "PART") {
+          set_all(nodes_of_parts(parts_of(false, id, r, card, "E")));
+        } else if (t.option == "BOX") {
+          if (const Box* bx = find_box(id, r, card, "E"))
+            for (std::size_t k = 0; k < mark.size(); ++k)
+              if (bx->contains(m_.x[k], m_.y[k], m_.z[k])) mark[k] = value;
+        } else if (t.option == "SET_SOLID") {
+          if (const RIdList* ss = find_solid_set(id, r, card, "E")) set_all(nodes_of_elements(set_solids(*ss, "*SET_SOLID " + std::to_string(id))));
+        } else {  // SET: a member of a *SET_NODE_ADD
+          if (const RIdList* ns = find_node_set(id, r, card, "NSID")) set_all(set_nodes(*ns, "*SET_NODE " + std::to_string(id)));
+        }
+      }
+    }
+    resolving_.erase(&s);
+    out.clear();
+    for (std::size_t k = 0; k < mark.size(); ++k)
+      if (mark[k]) out.push_back(int(k));
     return out;
+  }
+
+  // Solid set members as element indices, sorted, each once (undefined elements reported).
+  std::vector<int> set_solids(const RIdList& s, const std::string& card) {
+    std::vector<char> mark(std::size_t(m_.num_hexes()), 0);
+    std::vector<int> in;
+    for (const auto& r : s.ranges) ids_in_range(elem_ids_, r, in);
+    for (std::size_t j = 0; j < s.ids.size(); ++j) {
+      const int idx = elem_index(s.ids[j]);
+      if (idx < 0) err(1201, s.refs[j], card, "EID", "element " + std::to_string(s.ids[j]) + " is not defined by *ELEMENT_SOLID");
+      else in.push_back(idx);
+    }
+    for (int e : in) mark[std::size_t(e)] = 1;
+    if (!s.terms.empty() && enter_set(s, s.ref, card)) {
+      for (const RSetTerm& t : s.terms) {
+        const char value = t.remove ? 0 : 1;
+        if (t.option == "ALL") {
+          std::fill(mark.begin(), mark.end(), value);
+          continue;
+        }
+        if (t.option != "ELEM" && t.option != "PART" && t.option != "BOX" && t.option != "SET") {
+          refuse_set_option(t, card, "solid set options: ALL, ELEM, PART, BOX (D in front removes: DELEM, DPART, DBOX)");
+          continue;
+        }
+        for (std::size_t j = 0; j < t.ids.size(); ++j) {
+          const int id = t.ids[j];
+          const Ref& r = t.refs[j];
+          if (t.option == "ELEM") {
+            const int idx = elem_index(id);
+            if (idx < 0) err(1201, r, card, "E", "element " + std::to_string(id) + " is not defined by *ELEMENT_SOLID");
+            else mark[std::size_t(idx)] = value;
+          } else if (t.option == "PART") {
+            for (int p : parts_of(false, id, r, card, "E"))
+              for (int e : part_elems_[std::size_t(p)]) mark[std::size_t(e)] = value;
+          } else if (t.option == "BOX") {  // elements whose centroid is in the box
+            if (const Box* bx = find_box(id, r, card, "E"))
+              for (std::size_t e = 0; e < mark.size(); ++e) {
+                const auto& nd = m_.hex_nodes[e];
+                if (nd[0] < 0) continue;
+                double c[3] = {0, 0, 0};
+                for (int v : nd) {
+                  c[0] += m_.x[std::size_t(v)] / 8;
+                  c[1] += m_.y[std::size_t(v)] / 8;
+                  c[2] += m_.z[std::size_t(v)] / 8;
+                }
+                if (bx->contains(c[0], c[1], c[2])) mark[e] = value;
+              }
+          } else if (const RIdList* ss = find_solid_set(id, r, card, "SID")) {  // _ADD member
+            for (int e : set_solids(*ss, "*SET_SOLID " + std::to_string(id))) mark[std::size_t(e)] = value;
+          }
+        }
+      }
+      resolving_.erase(&s);
+    }
+    std::vector<int> out;
+    for (std::size_t e = 0; e < mark.size(); ++e)
+      if (mark[e]) out.push_back(int(e));
+    return out;
+  }
+
+  // The nodes of elements (refused elements skipped), sorted, each once.
+  std::vector<int> nodes_of_elements(const std::vector<int>& elems) {
+    std::vector<char> mark(std::size_t(m_.num_nodes()), 0);
+    for (int e : elems) {
+      const auto& n = m_.hex_nodes[std::size_t(e)];
+      if (n[0] < 0) continue;
+      for (int v : n) mark[std::size_t(v)] = 1;
+    }
+    std::vector<int> out;
+    for (std::size_t k = 0; k < mark.size(); ++k)
+      if (mark[k]) out.push_back(int(k));
+    return out;
+  }
+
+  // *DEFINE_COORDINATE_* and *DEFINE_VECTOR into coords_, once the nodes are known.  A system
+  // given in another one (CIDL) or a vector in a system (CID) waits for that system; one that
+  // never resolves names the missing system.
+  void resolve_coordinate_systems() {
+    std::vector<char> done(coord_defs_.size(), 0);
+    for (bool progress = true; progress;) {
+      progress = false;
+      for (std::size_t k = 0; k < coord_defs_.size(); ++k) {
+        const RCoordSystem& r = coord_defs_[k];
+        if (done[k] || !coords_.has_system(r.cid)) continue;
+        done[k] = 1;
+        progress = true;
+        build_coordinate_system(r);
+      }
+    }
+    for (std::size_t k = 0; k < coord_defs_.size(); ++k)
+      if (!done[k]) {
+        const RCoordSystem& r = coord_defs_[k];
+        err(1310, r.cid_ref, r.keyword + " " + std::to_string(r.id), r.kind == RCoordSystem::vector ? "CID" : "CIDL",
+            "coordinate system " + std::to_string(r.cid) + " is not defined (or the systems refer to each other)");
+      }
+  }
+
+  void build_coordinate_system(const RCoordSystem& r) {
+    const std::string card = r.keyword + " " + std::to_string(r.id);
+    const CoordinateSystem* in = coords_.system(r.cid);
+    auto point = [&](int k) { return in->to_global_point({r.v[std::size_t(3 * k)], r.v[std::size_t(3 * k + 1)], r.v[std::size_t(3 * k + 2)]}); };
+    std::array<Vec3, 3> p{};
+    const int nodes = r.kind == RCoordSystem::nodes ? 3 : (r.kind == RCoordSystem::vector && r.n[0] != 0) ? 2 : 0;
+    for (int j = 0; j < nodes; ++j) {
+      const int idx = node_index(r.n[std::size_t(j)]);
+      if (idx < 0) {
+        err(1202, r.node_refs[std::size_t(j)], card, j == 0 ? "N1" : j == 1 ? "N2" : "N3", "node " + std::to_string(r.n[std::size_t(j)]) + " is not defined by *NODE");
+        return;
+      }
+      p[std::size_t(j)] = {m_.x[std::size_t(idx)], m_.y[std::size_t(idx)], m_.z[std::size_t(idx)]};
+    }
+    if (r.kind == RCoordSystem::vector) {
+      Vec3 t = nodes ? p[0] : point(0), h = nodes ? p[1] : point(1);
+      Vec3 d = {h[0] - t[0], h[1] - t[1], h[2] - t[2]};
+      const double len = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+      if (!(len > 0)) {
+        err(1003, r.ref, card, "VID", "the vector has zero length (tail and head coincide)");
+        return;
+      }
+      for (double& a : d) a /= len;
+      coords_.add_vector(r.id, d);
+      return;
+    }
+    CoordinateSystem cs;
+    bool ok;
+    if (r.kind == RCoordSystem::nodes) ok = coordinate_system_from_points(p[0], p[1], p[2], cs);
+    else if (r.kind == RCoordSystem::points) ok = coordinate_system_from_points(point(0), point(1), point(2), cs);
+    else ok = coordinate_system_from_vectors({r.v[0], r.v[1], r.v[2]}, {r.v[3], r.v[4], r.v[5]}, cs);
+    if (!ok) {
+      err(1003, r.ref, card, "CID", "the points (or vectors) that define the local x axis and the x-y plane are collinear or coincide");
+      return;
+    }
+    coords_.add_system(r.id, cs);
+  }
+
+  // A direction given in system cid (0: global) in global components; false (reported) if cid
+  // is not defined.
+  bool global_direction(int cid, const Ref& r, const std::string& card, const char* field, std::array<double, 3>& v) {
+    if (cid == 0) return true;
+    if (!coords_.to_global_direction(cid, v, v)) {
+      err(1310, r, card, field, "coordinate system " + std::to_string(cid) + " is not defined by *DEFINE_COORDINATE_SYSTEM, _NODES or _VECTOR");
+      return false;
+    }
+    return true;
+  }
+
+  // The fixed directions (bits x=1, y=2, z=4) of a *BOUNDARY_SPC in the global system: a local
+  // system whose axes are global axes maps each fixed local direction onto its global axis;
+  // one with skew axes is not supported unless all or none of the directions are fixed.
+  int global_spc_bits(const RSpc& s) {
+    if (s.cid == 0 || s.bits == 0 || s.bits == 7) return s.bits;
+    const CoordinateSystem* cs = coords_.system(s.cid);
+    if (!cs) {
+      err(1310, s.cid_ref, s.keyword, "CID", "coordinate system " + std::to_string(s.cid) + " is not defined by *DEFINE_COORDINATE_SYSTEM, _NODES or _VECTOR");
+      return 0;
+    }
+    std::array<int, 3> axis{}, sign{};
+    if (!cs->axis_aligned(axis, sign)) {
+      err(1102, s.cid_ref, s.keyword, "CID", "constraints along skew local axes (the axes of system " + std::to_string(s.cid) + " are not the global ones)");
+      return 0;
+    }
+    int bits = 0;
+    for (int i = 0; i < 3; ++i)
+      if (s.bits & (1 << i)) bits |= 1 << axis[std::size_t(i)];
+    return bits;
   }
 
   const RIdList* find_node_set(int sid, const Ref& r, const std::string& card, const char* field) {
@@ -2144,6 +3144,20 @@ bool is_ascii_database(const std::string& n) {
         auto p = part_index_.find(it->second.ids[j]);
         if (p == part_index_.end()) err(1308, it->second.refs[j], "*SET_PART_LIST " + std::to_string(id), "PID", "part " + std::to_string(it->second.ids[j]) + " is not defined" + refused_note('p', it->second.ids[j]));
         else out.push_back(p->second);
+      }
+      // _GENERATE: the parts whose ids lie in the ranges; _ADD: the parts of the member sets
+      for (const auto& rg : it->second.ranges)
+        for (auto p = part_index_.lower_bound(int(rg[0])); p != part_index_.end() && p->first <= rg[1]; ++p)
+          if ((p->first - rg[0]) % rg[2] == 0) out.push_back(p->second);
+      if (!it->second.terms.empty() && enter_set(it->second, it->second.ref, card)) {
+        for (const RSetTerm& t : it->second.terms)
+          for (std::size_t j = 0; j < t.ids.size(); ++j) {
+            std::vector<int> more = parts_of(true, t.ids[j], t.refs[j], it->second.keyword + " " + std::to_string(id), "PSID");
+            out.insert(out.end(), more.begin(), more.end());
+          }
+        resolving_.erase(&it->second);
+        std::sort(out.begin(), out.end());
+        out.erase(std::unique(out.begin(), out.end()), out.end());
       }
     } else {
       auto p = part_index_.find(id);
@@ -2178,7 +3192,8 @@ bool is_ascii_database(const std::string& n) {
         if (idx < 0) err(1202, s.ref, card, "NID", "node " + std::to_string(s.id) + " is not defined by *NODE");
         else nodes.push_back(idx);
       }
-      for (int n : nodes) m_.bc[std::size_t(n)] = bc_code(bc_bits(m_.bc[std::size_t(n)]) | s.bits);
+      const int bits = global_spc_bits(s);
+      for (int n : nodes) m_.bc[std::size_t(n)] = bc_code(bc_bits(m_.bc[std::size_t(n)]) | bits);
     }
     if (rotational_spc_) {
       Location loc = loc_of(rotational_ref_, "", nullptr, false);
@@ -2189,7 +3204,19 @@ bool is_ascii_database(const std::string& n) {
   void resolve_history() {
     for (const RHistory& h : histories_) {
       std::vector<int> idx;
-      for (std::size_t j = 0; j < h.ids.size(); ++j) {
+      for (std::size_t j = 0; h.sets && j < h.ids.size(); ++j) {  // _SET: the members, in order
+        const std::string card = h.solid ? "*DATABASE_HISTORY_SOLID_SET" : "*DATABASE_HISTORY_NODE_SET";
+        if (h.solid) {
+          if (const RIdList* s = find_solid_set(h.ids[j], h.refs[j], card, "ID")) {
+            std::vector<int> e = set_solids(*s, "*SET_SOLID " + std::to_string(h.ids[j]));
+            idx.insert(idx.end(), e.begin(), e.end());
+          }
+        } else if (const RIdList* s = find_node_set(h.ids[j], h.refs[j], card, "ID")) {
+          std::vector<int> n = set_nodes(*s, "*SET_NODE " + std::to_string(h.ids[j]));
+          idx.insert(idx.end(), n.begin(), n.end());
+        }
+      }
+      for (std::size_t j = 0; !h.sets && j < h.ids.size(); ++j) {
         int v = -1;
         if (h.solid) {
           auto it = std::lower_bound(elem_ids_.begin(), elem_ids_.end(), h.ids[j]);
@@ -2417,7 +3444,24 @@ bool is_ascii_database(const std::string& n) {
 
   void resolve_walls() {
     for (RWall& w : walls_) {
-      if (w.nsid != 0) {
+      if (w.nsidex != 0 || w.boxid != 0) {  // the nodes of NSID (0: all) in the box, less NSIDEX
+        std::vector<int> nodes;
+        if (w.nsid == 0) {
+          for (int k = 0; k < m_.num_nodes(); ++k) nodes.push_back(k);
+        } else if (const RIdList* s = find_node_set(w.nsid, w.nsid_ref, w.keyword, "NSID")) {
+          nodes = set_nodes(*s, "*SET_NODE " + std::to_string(w.nsid));
+        }
+        std::vector<char> exempt(std::size_t(m_.num_nodes()), 0);
+        if (w.nsidex != 0)
+          if (const RIdList* s = find_node_set(w.nsidex, w.nsidex_ref, w.keyword, "NSIDEX"))
+            for (int n : set_nodes(*s, "*SET_NODE " + std::to_string(w.nsidex))) exempt[std::size_t(n)] = 1;
+        const Box* box = w.boxid != 0 ? find_box(w.boxid, w.boxid_ref, w.keyword, "BOXID") : nullptr;
+        for (int n : nodes)
+          if (!exempt[std::size_t(n)] && (!box || box->contains(m_.x[std::size_t(n)], m_.y[std::size_t(n)], m_.z[std::size_t(n)])))
+            w.w.nodes.push_back(n);
+        remove_repeated_nodes(w.w.nodes);
+        if (w.w.nodes.empty()) err(1314, w.boxid != 0 ? w.boxid_ref : w.nsidex_ref, w.keyword, w.boxid != 0 ? "BOXID" : "NSIDEX", "no node is left for the wall");
+      } else if (w.nsid != 0) {
         if (const RIdList* s = find_node_set(w.nsid, w.nsid_ref, w.keyword, "NSID")) {
           w.w.nodes = set_nodes(*s, "*SET_NODE_LIST " + std::to_string(w.nsid));
           remove_repeated_nodes(w.w.nodes);
@@ -2465,8 +3509,46 @@ bool is_ascii_database(const std::string& n) {
     }
   }
 
+  // *INITIAL_VELOCITY with BOXID or NSIDEX: the nodes of NSID (all nodes for 0) inside the
+  // box take v, except the nodes of NSIDEX, which take ve.
+  void add_restricted_velocities(const RVelocity& v) {
+    std::vector<int> nodes;
+    if (v.id == 0) {
+      for (int k = 0; k < m_.num_nodes(); ++k) nodes.push_back(k);
+    } else if (const RIdList* s = find_node_set(v.id, v.ref, "*INITIAL_VELOCITY", "NSID")) {
+      nodes = set_nodes(*s, "*SET_NODE " + std::to_string(v.id));
+    }
+    std::vector<char> exempt(std::size_t(m_.num_nodes()), 0);
+    std::vector<int> exempted;
+    if (v.nsidex > 0)
+      if (const RIdList* s = find_node_set(v.nsidex, v.nsidex_ref, "*INITIAL_VELOCITY", "NSIDEX"))
+        for (int n : set_nodes(*s, "*SET_NODE " + std::to_string(v.nsidex))) {
+          if (!exempt[std::size_t(n)]) exempted.push_back(n);
+          exempt[std::size_t(n)] = 1;
+        }
+    const Box* box = v.boxid != 0 ? find_box(v.boxid, v.boxid_ref, "*INITIAL_VELOCITY", "BOXID") : nullptr;
+    std::vector<int> moved;
+    for (int n : nodes) {
+      if (exempt[std::size_t(n)]) continue;
+      if (box && !box->contains(m_.x[std::size_t(n)], m_.y[std::size_t(n)], m_.z[std::size_t(n)])) continue;
+      moved.push_back(n);
+    }
+    add_velocity_nodes(moved, v.v);
+    std::sort(exempted.begin(), exempted.end());
+    add_velocity_nodes(exempted, v.ve);
+  }
+
   void resolve_velocities() {
-    for (const RVelocity& v : velocities_) {
+    for (RVelocity v : velocities_) {
+      // ICID: the velocities (and the rotation axis) are given in a local system
+      const std::string& icid_card = v.keyword;
+      if (!global_direction(v.icid, v.icid_ref, icid_card, "ICID", v.v)) continue;
+      global_direction(v.icid, v.icid_ref, icid_card, "ICID", v.n);
+      global_direction(v.icid, v.icid_ref, icid_card, "ICID", v.ve);
+      if (v.nsidex != 0 || v.boxid != 0) {
+        add_restricted_velocities(v);
+        continue;
+      }
       switch (v.kind) {
         case RVelocity::all: {
           InitialVelocity iv;
@@ -2594,9 +3676,36 @@ bool is_ascii_database(const std::string& n) {
         exterior_faces({}, &mark, out, lines, files);
       }
     }
+    if (side.boxid != 0) keep_segments_in_box(side, slave, card, out, lines, files);
     if (out.empty() && diag_.error_count() == errors_before &&
         (side.type == 0 || side.type == 2 || side.type == 3 || side.type == 4))
-      err(1314, side.id_ref, card, field, "no segments");
+      err(1314, side.boxid != 0 ? side.box_ref : side.id_ref, card, side.boxid != 0 ? (slave ? "SABOXID" : "SBBOXID") : field,
+          side.boxid != 0 ? "no segment has its centroid in the box" : "no segments");
+  }
+
+  // SABOXID / SBBOXID: the side keeps the segments whose centroid (mean of the corner nodes)
+  // is in the box.
+  void keep_segments_in_box(const RSide& side, bool slave, const std::string& card, std::vector<std::array<int, 4>>& out,
+                            std::vector<int>& lines, std::vector<int>& files) {
+    const Box* box = find_box(side.boxid, side.box_ref, card, slave ? "SABOXID" : "SBBOXID");
+    if (!box) return;
+    std::size_t kept = 0;
+    for (std::size_t j = 0; j < out.size(); ++j) {
+      double c[3] = {0, 0, 0};
+      for (int v : out[j]) {
+        c[0] += m_.x[std::size_t(v)] / 4;
+        c[1] += m_.y[std::size_t(v)] / 4;
+        c[2] += m_.z[std::size_t(v)] / 4;
+      }
+      if (!box->contains(c[0], c[1], c[2])) continue;
+      out[kept] = out[j];
+      lines[kept] = lines[j];
+      files[kept] = files[j];
+      ++kept;
+    }
+    out.resize(kept);
+    lines.resize(kept);
+    files.resize(kept);
   }
 
   void resolve_contacts() {
@@ -2645,6 +3754,7 @@ bool read_deck(DeckFile& deck, Model& model, Diagnostics& diag, const InputOptio
   if (is_keyword_deck(deck)) {
     KeywordOptions ko;
     ko.lenient = options.lenient_keywords;
+    ko.case_id = options.case_id;
     return read_keyword_deck(deck, model, diag, ko);
   }
   return read_dyna3d_deck(deck, model, diag);

@@ -15,6 +15,7 @@ namespace impact3d {
 
 struct KeywordOptions {
   bool lenient = false;  // unsupported keywords are warnings (2007) instead of errors (1301)
+  int case_id = 0;       // *CASE: the case to read (0: the base case, every case block left out)
 };
 
 // True if the deck is an LS-DYNA keyword deck: its first line that is neither blank nor a '$'

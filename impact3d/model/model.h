@@ -150,6 +150,11 @@ struct Model {
   std::string deck_file;
   bool large_format = true;
   bool keyword_deck = false;  // read from an LS-DYNA keyword deck
+  // *CASE: the case this model is (its JOBID, or "caseN"); empty for the base case.  The run's
+  // outputs go to a folder of that name unless o=, g=, d= say otherwise.
+  std::string case_job;
+  // *KEYWORD NCPU=n: the thread count when the command line gives no ncpu= (0: none given)
+  int deck_threads = 0;
   ControlData control;
   std::vector<MaterialData> materials;  // indexed by material number - 1
 
