@@ -2113,6 +2113,14 @@ bool is_ascii_database(const std::string& n) {
       const AffineMap id;
       t.moves = t.map.a != id.a || t.map.t != id.t;
     }
+    // FCTLEN converts units: only coordinates are converted here, so data with other
+    // length-dimensioned units (materials, curves) in such a file is not supported
+    for (auto& [mid, mat] : mats_)
+      if (const IncludeTransform* t = transform_of(mat.ref.file); t && t->fctlen != 1)
+        err(1102, mat.ref, "*MAT " + std::to_string(mid), "MID", "a material in an *INCLUDE_TRANSFORM file with FCTLEN other than 1 (its units would have to be converted)");
+    for (std::size_t k = 0; k < curves_.size(); ++k)
+      if (const IncludeTransform* t = transform_of(curve_refs_[k].file); t && t->fctlen != 1)
+        err(1102, curve_refs_[k], "*DEFINE_CURVE " + std::to_string(curves_[k].number), "LCID", "a curve in an *INCLUDE_TRANSFORM file with FCTLEN other than 1 (its units would have to be converted)");
     for (RNode& n : nodes_)
       if (const IncludeTransform* t = transform_of(n.card.file)) {
         offset(n.id, t->idnoff);
