@@ -638,3 +638,22 @@ TEST(KeywordSets, FreeFormatSetsBoxesAndSystems) {
   EXPECT_EQ(fixed(fixed_cols.m, 1), expect);
   EXPECT_EQ(commas.m.bc, fixed_cols.m.bc);
 }
+
+// *SET_SEGMENT_GENERAL PART (the part's exterior faces, as a contact side of type 3) and
+// SET_SOLID, and *SET_SEGMENT_ADD of segment sets, as contact sides.
+TEST(KeywordSets, SegmentSetsAddAndGeneral) {
+  const std::string contact = "*CONTACT_SURFACE_TO_SURFACE\n        41        42         0         0\n";
+  Read r = read_text(with("*SET_SEGMENT\n        40\n       101       105       113       109\n"
+                          "*SET_SEGMENT_GENERAL\n        39\nPART               8\n"
+                          "*SET_SEGMENT_ADD\n        41\n        39        40\n"
+                          "*SET_SOLID\n        30\n        11\n"
+                          "*SET_SEGMENT_GENERAL_TITLE\nleft end\n        42\nSET_SOLID         30\n" +
+                          contact));
+  ASSERT_TRUE(r.ok) << r.messages();
+  ASSERT_EQ(r.m.interfaces.size(), 1u);
+  EXPECT_EQ(r.m.interfaces[0].slave.size(), 7u);   // 6 faces of element 13 and the listed face (x = 0)
+  EXPECT_EQ(r.m.interfaces[0].master.size(), 6u);  // the 6 faces of element 11
+  Read bad = read_text(with("*SET_SEGMENT_ADD\n        41\n        41\n*SET_SEGMENT_GENERAL\n        42\nBOX                1\n" + contact));
+  EXPECT_EQ(bad.count(1309), 1) << bad.messages();
+  EXPECT_EQ(bad.count(1102), 1) << bad.messages();
+}
