@@ -439,6 +439,7 @@ struct RCoordSystem {  // *DEFINE_COORDINATE_SYSTEM (_NODES, _VECTOR), *DEFINE_V
 struct RSegSet {
   std::vector<std::array<int, 4>> segs;
   std::vector<std::array<Ref, 4>> refs;
+  std::vector<RSetTerm> terms;  // *SET_SEGMENT_ADD (SET) and _GENERAL (PART, SET_SOLID, ...)
   Ref ref;
 };
 struct RSide {
@@ -1168,7 +1169,7 @@ class KeywordReader {
         "SET_PART_LIST_GENERATE", "SET_PART_LIST_GENERATE_INCREMENT", "SET_SOLID", "SET_SOLID_LIST",
         "SET_SOLID_GENERATE", "SET_SOLID_LIST_GENERATE", "SET_SOLID_GENERATE_INCREMENT", "SET_SOLID_ADD",
         "SET_SOLID_GENERAL", "SET_SHELL", "SET_SHELL_LIST", "SET_SHELL_GENERATE", "SET_SHELL_LIST_GENERATE",
-        "SET_SHELL_GENERATE_INCREMENT", "SET_SHELL_ADD", "SET_SHELL_GENERAL", "DEFINE_BOX",
+        "SET_SHELL_GENERATE_INCREMENT", "SET_SHELL_ADD", "SET_SHELL_GENERAL", "SET_SEGMENT_ADD", "SET_SEGMENT_GENERAL", "DEFINE_BOX",
         "DEFINE_COORDINATE_SYSTEM", "DEFINE_COORDINATE_NODES", "DEFINE_COORDINATE_VECTOR", "DEFINE_VECTOR",
         "DEFINE_VECTOR_NODES", "DEFINE_TRANSFORMATION"};
     static const std::set<std::string> with_id = {
@@ -1852,6 +1853,10 @@ bool is_ascii_database(const std::string& n) {
   // parse_blocks holds one line for all of them.  Returns false for any other keyword.
   bool parse_structure_keyword(Block& b) {
     const std::string& n = b.name;
+    if (n == "SET_SEGMENT_ADD" || n == "SET_SEGMENT_GENERAL") {
+      parse_segment_set_terms(b);
+      return true;
+    }
     if (parse_set_keyword(b)) return true;
     if (n == "DEFINE_BOX") {
       parse_define_box(b);
@@ -1933,6 +1938,39 @@ bool is_ascii_database(const std::string& n) {
     }
     if (sets.count(sid)) c.error(1200, 0, "SID", "also defined at " + at(sets[sid].ref));
     sets[sid] = std::move(s);
+  }
+
+  // *SET_SEGMENT_ADD (SID; segment set ids 8 per card) and *SET_SEGMENT_GENERAL (SID; OPTION
+  // cards as for the other _GENERAL sets).
+  void parse_segment_set_terms(const Block& b) {
+    std::size_t k = skip_option_card(b);
+    if (k >= b.data.size()) { missing_card(b, "card 1 (SID)"); return; }
+    KCard c = card(b, k, "card 1", W(b, 6));
+    const int sid = xid(int(c.i(0, "SID")), b, &IncludeTransform::idsoff);
+    c.set_card(b.keyword + " " + std::to_string(sid));
+    if (sid < 1) c.error(1201, 0, "SID", "set ids must be positive");
+    RSegSet s;
+    s.ref = c.ref(0);
+    RIdList general;
+    for (++k; k < b.data.size(); ++k) {
+      if (is_blank(b.data[k].line->text)) continue;
+      KCard d = card(b, k, "set " + std::to_string(sid), W(b, 8));
+      if (b.name == "SET_SEGMENT_GENERAL") {
+        parse_general_set_card(d, general);
+        continue;
+      }
+      RSetTerm t;
+      t.option = "SET";
+      t.ref = d.ref(0);
+      for (int f = 0; f < 8; ++f) {
+        long long id = d.i(f, "SSID");
+        if (id != 0) { t.ids.push_back(int(id)); t.refs.push_back(d.ref(f)); }
+      }
+      s.terms.push_back(std::move(t));
+    }
+    if (b.name == "SET_SEGMENT_GENERAL") s.terms = std::move(general.terms);
+    if (seg_sets_.count(sid)) c.error(1200, 0, "SID", "also defined at " + at(seg_sets_[sid].ref));
+    seg_sets_[sid] = std::move(s);
   }
 
   // A card of a *SET_..._GENERAL: OPTION (10 columns) and 7 ids; a card whose first field is
@@ -2131,6 +2169,14 @@ bool is_ascii_database(const std::string& n) {
       const AffineMap id;
       t.moves = t.map.a != id.a || t.map.t != id.t;
     }
+    // FCTLEN converts units: only coordinates are converted here, so data with other
+    // length-dimensioned units (materials, curves) in such a file is not supported
+    for (auto& [mid, mat] : mats_)
+      if (const IncludeTransform* t = transform_of(mat.ref.file); t && t->fctlen != 1)
+        err(1102, mat.ref, "*MAT " + std::to_string(mid), "MID", "a material in an *INCLUDE_TRANSFORM file with FCTLEN other than 1 (its units would have to be converted)");
+    for (std::size_t k = 0; k < curves_.size(); ++k)
+      if (const IncludeTransform* t = transform_of(curve_refs_[k].file); t && t->fctlen != 1)
+        err(1102, curve_refs_[k], "*DEFINE_CURVE " + std::to_string(curves_[k].number), "LCID", "a curve in an *INCLUDE_TRANSFORM file with FCTLEN other than 1 (its units would have to be converted)");
     for (RNode& n : nodes_)
       if (const IncludeTransform* t = transform_of(n.card.file)) {
         offset(n.id, t->idnoff);
@@ -2159,9 +2205,12 @@ bool is_ascii_database(const std::string& n) {
         if (const IncludeTransform* t = transform_of(s.ref.file)) offset_set_members(s, *t, t->*member);
     }
     for (auto& [sid, s] : seg_sets_)
-      if (const IncludeTransform* t = transform_of(s.ref.file))
+      if (const IncludeTransform* t = transform_of(s.ref.file)) {
         for (auto& seg : s.segs)
           for (int& v : seg) offset(v, t->idnoff);
+        for (RSetTerm& term : s.terms)
+          for (int& id : term.ids) offset(id, term.option == "PART" ? t->idpoff : t->idsoff);
+      }
     for (RContact& c : contacts_)
       if (const IncludeTransform* t = transform_of(c.ref.file))
         for (RSide* side : {&c.a, &c.b}) {
@@ -3586,6 +3635,15 @@ bool is_ascii_database(const std::string& n) {
     return int(m_.source_files.size()) - 1;
   }
 
+  // Exterior faces of a list of elements (faces not shared by two of them).
+  void exterior_faces_of_elements(const std::vector<int>& elems, std::vector<std::array<int, 4>>& out, std::vector<int>& lines,
+                                  std::vector<int>& files) {
+    element_filter_ = &elems;
+    exterior_faces({}, nullptr, out, lines, files);
+    element_filter_ = nullptr;
+  }
+  const std::vector<int>* element_filter_ = nullptr;  // exterior_faces of these elements instead of parts'
+
   // Exterior faces of the elements of the parts (faces not shared by two of those elements),
   // in element and face order, outward counter-clockwise; triangles as n1 n2 n3 n3.
   void exterior_faces(const std::vector<int>& parts, const std::vector<char>* node_filter,
@@ -3596,6 +3654,7 @@ bool is_ascii_database(const std::string& n) {
       elems.clear();
       for (int e = 0; e < m_.num_hexes(); ++e) elems.push_back(e);
     }
+    if (element_filter_) elems = *element_filter_;
     std::sort(elems.begin(), elems.end());
     elems.erase(std::unique(elems.begin(), elems.end()), elems.end());
     std::map<std::array<int, 4>, int> count;
@@ -3638,6 +3697,58 @@ bool is_ascii_database(const std::string& n) {
     }
   }
 
+  // The segments of a *SET_SEGMENT: its cards, then its _ADD / _GENERAL terms in order (SET:
+  // the member sets' segments; PART: the exterior faces of the part's solids, as for a contact
+  // side of type 3; SET_SOLID: the exterior faces of the set's solids).
+  std::set<const RSegSet*> resolving_segments_;
+  void segment_set_segments(const RSegSet& s, int sid, std::vector<std::array<int, 4>>& out, std::vector<int>& lines,
+                            std::vector<int>& files) {
+    const std::string card = "*SET_SEGMENT " + std::to_string(sid);
+    for (std::size_t j = 0; j < s.segs.size(); ++j) {
+      std::array<int, 4> seg{};
+      bool ok = true;
+      for (int q = 0; q < 4; ++q) {
+        int idx = node_index(s.segs[j][std::size_t(q)]);
+        if (idx < 0) {
+          std::string f = "N" + std::to_string(q + 1);
+          err(1202, s.refs[j][std::size_t(q)], card, f.c_str(), "node " + std::to_string(s.segs[j][std::size_t(q)]) + " is not defined by *NODE");
+          ok = false;
+        }
+        seg[std::size_t(q)] = idx;
+      }
+      if (ok) {
+        out.push_back(seg);
+        lines.push_back(s.refs[j][0].line ? s.refs[j][0].line->number : 0);
+        files.push_back(file_index(s.refs[j][0].file));
+      }
+    }
+    if (s.terms.empty()) return;
+    if (!resolving_segments_.insert(&s).second) {
+      err(1309, s.ref, card, "SID", "the set contains itself (through *SET_SEGMENT_ADD)");
+      return;
+    }
+    for (const RSetTerm& t : s.terms) {
+      if (t.remove || (t.option != "SET" && t.option != "PART" && t.option != "SET_SOLID")) {
+        err(t.option == "SET_SHELL" || t.option == "BOX" || t.remove ? 1102 : 1006, t.ref, card, "OPTION",
+            t.option == "SET_SHELL" || t.option == "BOX" || t.remove ? (t.remove ? "D" : "") + t.option + " in *SET_SEGMENT_GENERAL (IMPACT-3D has PART, SET_SOLID)"
+                                                                     : std::string("segment set options: PART, SET_SOLID"));
+        continue;
+      }
+      for (std::size_t j = 0; j < t.ids.size(); ++j) {
+        if (t.option == "SET") {
+          auto it = seg_sets_.find(t.ids[j]);
+          if (it == seg_sets_.end()) err(1309, t.refs[j], card, "SSID", "*SET_SEGMENT " + std::to_string(t.ids[j]) + " is not defined" + refused_note('S', t.ids[j]));
+          else segment_set_segments(it->second, t.ids[j], out, lines, files);
+        } else if (t.option == "PART") {
+          exterior_faces(parts_of(false, t.ids[j], t.refs[j], card, "E"), nullptr, out, lines, files);
+        } else if (const RIdList* ss = find_solid_set(t.ids[j], t.refs[j], card, "E")) {
+          exterior_faces_of_elements(set_solids(*ss, "*SET_SOLID " + std::to_string(t.ids[j])), out, lines, files);
+        }
+      }
+    }
+    resolving_segments_.erase(&s);
+  }
+
   void resolve_side(const RSide& side, bool slave, const std::string& card, std::vector<std::array<int, 4>>& out,
                     std::vector<int>& lines, std::vector<int>& files) {
     const int errors_before = diag_.error_count();
@@ -3648,25 +3759,7 @@ bool is_ascii_database(const std::string& n) {
         err(1309, side.id_ref, card, field, "*SET_SEGMENT " + std::to_string(side.id) + " is not defined" + refused_note('S', side.id));
         return;
       }
-      const RSegSet& s = it->second;
-      for (std::size_t j = 0; j < s.segs.size(); ++j) {
-        std::array<int, 4> seg{};
-        bool ok = true;
-        for (int q = 0; q < 4; ++q) {
-          int idx = node_index(s.segs[j][std::size_t(q)]);
-          if (idx < 0) {
-            std::string f = "N" + std::to_string(q + 1);
-            err(1202, s.refs[j][std::size_t(q)], "*SET_SEGMENT " + std::to_string(side.id), f.c_str(), "node " + std::to_string(s.segs[j][std::size_t(q)]) + " is not defined by *NODE");
-            ok = false;
-          }
-          seg[std::size_t(q)] = idx;
-        }
-        if (ok) {
-          out.push_back(seg);
-          lines.push_back(s.refs[j][0].line ? s.refs[j][0].line->number : 0);
-          files.push_back(file_index(s.refs[j][0].file));
-        }
-      }
+      segment_set_segments(it->second, side.id, out, lines, files);
     } else if (side.type == 2 || side.type == 3) {
       exterior_faces(parts_of(side.type == 2, side.id, side.id_ref, card, field), nullptr, out, lines, files);
     } else if (side.type == 4) {

@@ -487,6 +487,21 @@ TEST(KeywordLayout, IncludeTransformOffsetsAndMovesTheCopy) {
   EXPECT_NEAR(r.m.y[std::size_t(k)], 3.0, 1e-14);
   EXPECT_NEAR(r.m.z[std::size_t(k)], 1.0, 1e-14);
   EXPECT_EQ(fixed(r.m, 0), (std::set<int>{101, 1101}));  // set 20 and its copy, set 70
+  // FCTLEN scales the coordinates (mm -> m: 1e-3): node 1116 at (9, 3, 1) mm -> 1e-3 x that;
+  // a material in such a file is not supported (its units are not converted)
+  std::string scaled = main;
+  scaled.replace(scaled.find("       1.0       1.0       1.0       1.0         0\n"), 51, "       1.0       1.0     0.001       1.0         0\n");
+  std::ofstream(dir / "main.k") << scaled;
+  Read s;
+  s.ok = read_and_check_deck((dir / "main.k").string(), s.m, s.d);
+  ASSERT_TRUE(s.ok) << s.messages();
+  const int ks = node_of(s.m, 1116);
+  EXPECT_NEAR(s.m.x[std::size_t(ks)], 10.0 - 1e-3, 1e-14);  // (3, 1, 1) x 1e-3, turned: (-1e-3, 3e-3), + 10 in x
+  EXPECT_NEAR(s.m.y[std::size_t(ks)], 3e-3, 1e-16);
+  std::ofstream(dir / "mesh.k", std::ios::app) << "*MAT_ELASTIC\n         2    7.8E-9   2.1E+05       0.3\n";
+  Read m;
+  m.ok = read_and_check_deck((dir / "main.k").string(), m.m, m.d);
+  EXPECT_EQ(m.count(1102), 1) << m.messages();
   fs::remove_all(dir);
 }
 
@@ -603,4 +618,42 @@ TEST(KeywordSets, ContactBoxesKeepTheSegmentsInside) {
                               contact));
   ASSERT_EQ(empty.count(1314), 1) << empty.messages();
   EXPECT_EQ(empty.first(1314)->where.field, "SABOXID");
+}
+
+// The same definitions as a script writes them, comma separated: a box, a general node set and
+// a coordinate system in free format give the model the fixed-column cards give.
+TEST(KeywordSets, FreeFormatSetsBoxesAndSystems) {
+  Read fixed_cols = read_text(with("*DEFINE_BOX\n         1       2.5       3.5      -1.0       2.0      -1.0       2.0\n"
+                                   "*SET_NODE_GENERAL\n        20\nBOX                1\nNODE             101\n"
+                                   "*DEFINE_COORDINATE_SYSTEM\n         5       0.0       0.0       0.0       0.0       1.0       0.0\n"
+                                   "      -1.0       0.0       0.0\n"
+                                   "*BOUNDARY_SPC_SET\n        20         5         1\n"));
+  Read commas = read_text(with("*DEFINE_BOX\n1,2.5,3.5,-1.,2.,-1.,2.\n*SET_NODE_GENERAL\n20\nBOX,1\nNODE,101\n"
+                               "*DEFINE_COORDINATE_SYSTEM\n5,0,0,0,0,1,0\n-1,0,0\n*BOUNDARY_SPC_SET\n20,5,1\n"));
+  ASSERT_TRUE(fixed_cols.ok) << fixed_cols.messages();
+  ASSERT_TRUE(commas.ok) << commas.messages();
+  std::set<int> expect = nodes_at_x({3});
+  expect.insert(101);
+  EXPECT_EQ(fixed(commas.m, 1), expect);  // local x of system 5 is global y
+  EXPECT_EQ(fixed(fixed_cols.m, 1), expect);
+  EXPECT_EQ(commas.m.bc, fixed_cols.m.bc);
+}
+
+// *SET_SEGMENT_GENERAL PART (the part's exterior faces, as a contact side of type 3) and
+// SET_SOLID, and *SET_SEGMENT_ADD of segment sets, as contact sides.
+TEST(KeywordSets, SegmentSetsAddAndGeneral) {
+  const std::string contact = "*CONTACT_SURFACE_TO_SURFACE\n        41        42         0         0\n";
+  Read r = read_text(with("*SET_SEGMENT\n        40\n       101       105       113       109\n"
+                          "*SET_SEGMENT_GENERAL\n        39\nPART               8\n"
+                          "*SET_SEGMENT_ADD\n        41\n        39        40\n"
+                          "*SET_SOLID\n        30\n        11\n"
+                          "*SET_SEGMENT_GENERAL_TITLE\nleft end\n        42\nSET_SOLID         30\n" +
+                          contact));
+  ASSERT_TRUE(r.ok) << r.messages();
+  ASSERT_EQ(r.m.interfaces.size(), 1u);
+  EXPECT_EQ(r.m.interfaces[0].slave.size(), 7u);   // 6 faces of element 13 and the listed face (x = 0)
+  EXPECT_EQ(r.m.interfaces[0].master.size(), 6u);  // the 6 faces of element 11
+  Read bad = read_text(with("*SET_SEGMENT_ADD\n        41\n        41\n*SET_SEGMENT_GENERAL\n        42\nBOX                1\n" + contact));
+  EXPECT_EQ(bad.count(1309), 1) << bad.messages();
+  EXPECT_EQ(bad.count(1102), 1) << bad.messages();
 }
