@@ -136,7 +136,8 @@ std::vector<HistoryCurve> parse_history(const std::vector<std::string>& w, const
                     const bool want_elem = kind == HistoryCurve::Kind::Element;
                     if ((q.where == Quantity::Where::Element) != want_elem)
                         throw std::invalid_argument("'" + v + "' is " + (want_elem ? "a node" : "an element") + " quantity");
-                    out.push_back({kind, id, q.key});
+                    // the normalized key, with its "@surface" / "@ipK" suffix
+                    out.push_back({kind, id, q.key + (v.find('@') != std::string::npos ? v.substr(v.find('@')) : std::string())});
                 }
                 ++i;
             }
@@ -206,7 +207,9 @@ HistoryData extract_history(Database& db, const std::vector<HistoryCurve>& curve
                     Quantity q;
                     find_quantity(c.var, q);
                     const int idx = c.kind == HistoryCurve::Kind::Node ? db.node_index(c.id) : db.element_index(c.id);
-                    v = point_value(q, g, st, idx);
+                    v = c.kind == HistoryCurve::Kind::Element && q.where == Quantity::Where::Element
+                            ? element_value(q, g, db.layout(), st, idx)
+                            : point_value(q, g, st, idx);
                     break;
                 }
             }

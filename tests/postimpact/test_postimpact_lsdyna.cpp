@@ -1,0 +1,276 @@
+// POST-IMPACT on plot databases written by LS-DYNA (tests/data/lsdyna): every element family in
+// one numbering, shells drawn as surfaces and beams as lines, fringes at a chosen surface,
+// deleted elements hidden, histories of shells and nodes, summary.
+//
+// Expected values: the raw float32 words of the files (the reader's own test checks those
+// against VTK 9.1 and the LS-DYNA database manual), and von Mises / means computed here by hand
+// from them; tolerances 1e-9 relative (sums and square roots of float32 values in double).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include <unistd.h>
+
+#include "common/plot_database.h"
+#include "postimpact/database.h"
+#include "postimpact/elements.h"
+#include "postimpact/fringe.h"
+#include "postimpact/history.h"
+#include "postimpact/mesh_surface.h"
+#include "postimpact/picture.h"
+#include "postimpact/quantities.h"
+#include "postimpact/summary.h"
+
+namespace fs = std::filesystem;
+using namespace postimpact;
+
+namespace {
+
+std::string lsdyna(const std::string& name) {
+    return std::string(IMPACT3D_SOURCE_DIR) + "/tests/data/lsdyna/" + name + "/d3plot";
+}
+
+Quantity quantity(const std::string& key) {
+    Quantity q;
+    EXPECT_TRUE(find_quantity(key, q)) << key;
+    return q;
+}
+
+double vm(const double* s) {
+    const double a = s[0] - s[1], b = s[1] - s[2], c = s[2] - s[0];
+    return std::sqrt((a * a + b * b + c * c) / 2 + 3 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]));
+}
+
+bool has_color(const Image& img, Rgb c, int x0, int x1) {
+    for (int y = 0; y < img.height; ++y)
+        for (int x = x0; x < x1; ++x)
+            if (img.get(x, y) == c) return true;
+    return false;
+}
+
+// a clearly red (red) or clearly blue (!red) pixel
+bool has_hue(const Image& img, int x0, int x1, bool red) {
+    for (int y = 0; y < img.height; ++y)
+        for (int x = x0; x < x1; ++x) {
+            const Rgb c = img.get(x, y);
+            if (red ? (c.r > 120 && c.g < 60 && c.b < 60) : (c.b > 120 && c.r < 60 && c.g < 60)) return true;
+        }
+    return false;
+}
+
+double coverage(const Image& img, int x1) {
+    int n = 0;
+    for (int y = 0; y < img.height; ++y)
+        for (int x = 0; x < x1; ++x)
+            if (!(img.get(x, y) == Rgb{255, 255, 255})) ++n;
+    return static_cast<double>(n) / (static_cast<double>(img.height) * x1);
+}
+
+}  // namespace
+
+TEST(LsDyna, OneElementNumberingOverAllFamilies) {
+    Database db(lsdyna("d3plot_solid_int"));
+    const auto& g = db.geometry();
+    ASSERT_EQ(num_elements(g), 32);
+    EXPECT_EQ(family_offset(g, Family::Shell), 16);
+    // shell 17 is the first shell; solid 1 the first solid
+    EXPECT_EQ(db.element_index(17), 16);
+    EXPECT_EQ(element_ref(g, 16).family, Family::Shell);
+    EXPECT_EQ(db.element_id(16), 17);
+    EXPECT_EQ(db.element_index(1), 0);
+    EXPECT_EQ(element_material(g, 16), 3);
+    EXPECT_EQ(db.part_name(3), "shell_mat_1");
+    int count = 0;
+    element_nodes(g, 16, count);
+    EXPECT_EQ(count, 4);
+}
+
+TEST(LsDyna, ShellsAreSurfacesBeamsAreLines) {
+    {
+        Database db(lsdyna("simple_d3plot"));
+        const auto faces = model_faces(db.geometry(), db.state(0));
+        EXPECT_EQ(faces.size(), 4696u);  // every shell, nothing else
+        for (const auto& f : faces) EXPECT_GE(f.count, 3);
+    }
+    {
+        Database db(lsdyna("d3plot_beamip"));
+        const auto faces = model_faces(db.geometry(), db.state(1));
+        ASSERT_EQ(faces.size(), 1u);
+        EXPECT_EQ(faces[0].count, 2);
+        EXPECT_EQ(faces[0].nodes[0], 0);
+        EXPECT_EQ(faces[0].nodes[1], 1);
+    }
+    {
+        // 16 solids (exterior faces only) and 16 shells
+        Database db(lsdyna("d3plot_solid_int"));
+        const auto& g = db.geometry();
+        const auto faces = model_faces(g, db.state(21));
+        int shells = 0;
+        for (const auto& f : faces) shells += element_ref(g, f.element).family == Family::Shell;
+        EXPECT_EQ(shells, 16);
+        EXPECT_EQ(faces.size() - 16, exterior_faces(g).size());
+    }
+}
+
+TEST(LsDyna, ShellStressAtAChosenSurface) {
+    Database db(lsdyna("d3plot_solid_int"));
+    const auto& g = db.geometry();
+    const auto& L = db.layout();
+    const impact3d::PlotState& s = db.state(21);
+    ASSERT_EQ(L.layers, 5);
+    const int e = db.element_index(17);
+    const double* rec = &s.shell_vars[0];  // shell 17 is shell 0
+    // bottom = layer 1 (raw words 0..6), top = layer 5, middle = layer 3 (odd count)
+    EXPECT_NEAR(element_value(quantity("vm@bottom"), g, L, s, e), vm(rec), 1e-9 * vm(rec));
+    EXPECT_NEAR(element_value(quantity("vm@top"), g, L, s, e), vm(rec + 4 * 8), 1e-9 * vm(rec + 32));
+    EXPECT_NEAR(element_value(quantity("vm"), g, L, s, e), vm(rec + 2 * 8), 1e-9 * vm(rec + 16));
+    EXPECT_EQ(element_value(quantity("sxx@ip2"), g, L, s, e), rec[8]);
+    EXPECT_EQ(element_value(quantity("eps@bottom"), g, L, s, e), 0.0031102055218070745);
+    EXPECT_EQ(element_value(quantity("szz@bottom"), g, L, s, e), 19.926589965820312);
+    EXPECT_EQ(element_value(quantity("thickness"), g, L, s, e), 10.0);
+    EXPECT_EQ(quantity("vm@top").label, "Von Mises stress (top surface)");
+    Quantity q;
+    EXPECT_FALSE(find_quantity("vm@side", q));
+    EXPECT_FALSE(find_quantity("temp@top", q));
+    // solids: the mean over the 8 points by default, one point with @ipK
+    EXPECT_EQ(element_value(quantity("sxx@ip1"), g, L, s, 0), 213.20840454101562);
+    EXPECT_EQ(element_value(quantity("sxx@ip8"), g, L, s, 0), 230.7303924560547);
+    EXPECT_NEAR(element_value(quantity("sxx"), g, L, s, 0), 190.72930526733398, 1e-6 * 190.7);
+    EXPECT_EQ(element_value(quantity("sxx@ip9"), g, L, s, 0), 0.0);  // no such point
+}
+
+TEST(LsDyna, BeamQuantitiesAndTemperatures) {
+    {
+        Database db(lsdyna("d3plot_beamip"));
+        const impact3d::PlotState& s = db.state(1);
+        EXPECT_EQ(element_value(quantity("axial_force"), db.geometry(), db.layout(), s, 0), 4.797982323945238e-12);
+    }
+    Database db(lsdyna("d3plot_node_temperature"));
+    const auto& g = db.geometry();
+    const impact3d::PlotState& s = db.state(22);
+    const auto t = node_values(quantity("temp"), g, s);
+    ASSERT_EQ(t.size(), 2185u);
+    EXPECT_EQ(t, s.temperature);
+    EXPECT_EQ(node_values(quantity("disp"), g, s)[0], 0.0);  // IU 0: no displacement written
+    EXPECT_EQ(node_values(quantity("x"), g, s)[0], g.x0[0]);
+}
+
+TEST(LsDyna, DeletedShellIsHiddenAndLeftOutOfTheFringe) {
+    const fs::path dir = fs::temp_directory_path() / ("impact3d_pi_lsdyna_" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    for (const auto& f : fs::directory_iterator(fs::path(lsdyna("d3plot_solid_int")).parent_path()))
+        fs::copy_file(f.path(), dir / f.path().filename());
+    fs::permissions(dir / "d3plot22", fs::perms::owner_write, fs::perm_options::add);
+    {
+        // the deletion flag of shell 17 (after the 16 solid flags) in the last state: 0 = deleted
+        std::fstream f(dir / "d3plot22", std::ios::in | std::ios::out | std::ios::binary);
+        const float zero = 0.0f;
+        f.seekp(4 * (2983 - 16));
+        f.write(reinterpret_cast<const char*>(&zero), 4);
+    }
+    Database db((dir / "d3plot").string());
+    const auto& g = db.geometry();
+    const impact3d::PlotState& s = db.state(21);
+    EXPECT_FALSE(element_alive(s, g, 16));
+    EXPECT_TRUE(element_alive(s, g, 17));
+    const auto faces = model_faces(g, s);
+    for (const auto& f : faces) EXPECT_NE(f.element, 16);
+    EXPECT_EQ(faces.size(), model_faces(g, db.state(20)).size() - 1);
+    // a node only shell 17 holds gets no value from it: the thickness fringe there is the
+    // smallest value (nodes without a live element), not 10
+    const auto th = nodal_fringe(quantity("thickness"), g, s, db.layout());
+    int count = 0;
+    const int* n = element_nodes(g, 16, count);
+    bool lone = false;
+    for (int k = 0; k < count; ++k) {
+        int users = 0;
+        for (int e = 0; e < num_elements(g); ++e) {
+            int c = 0;
+            const int* m = element_nodes(g, e, c);
+            for (int j = 0; j < c; ++j) users += m[j] == n[k];
+        }
+        if (users == 1) {
+            lone = true;
+            EXPECT_EQ(th[n[k]], 0.0);  // solids have no thickness: the smallest value is 0
+        }
+    }
+    EXPECT_TRUE(lone);
+    Summary sum = summarize((dir / "d3plot").string(), "");
+    ASSERT_NE(sum.find("failed_other_elements"), nullptr);
+    EXPECT_EQ(*sum.find("failed_other_elements"), "1");
+    fs::remove_all(dir);
+}
+
+TEST(LsDyna, HistoriesOfShellsAndNodes) {
+    Database db(lsdyna("d3plot_node_temperature"));
+    const auto curves = parse_history({"node", "100001", "temp", "vx"}, db);
+    ASSERT_EQ(curves.size(), 2u);
+    const HistoryData h = extract_history(db, curves);
+    ASSERT_EQ(h.time.size(), 23u);
+    // VTK: node at (-400.001, -70.0002, 0) (user id 100001): T 1423.1499 at t = 0, 1297.0785 at t = 20
+    EXPECT_EQ(h.series[0].y[0], 1423.14990234375);
+    EXPECT_EQ(h.series[0].y[22], 1297.0784912109375);
+    EXPECT_EQ(h.series[1].y[22], -117.86971282958984);
+
+    Database sdb(lsdyna("d3plot_solid_int"));
+    const auto sc = parse_history({"element", "17", "eps@bottom", "thickness"}, sdb);
+    const HistoryData sh = extract_history(sdb, sc);
+    ASSERT_EQ(sh.time.size(), 22u);
+    EXPECT_EQ(sh.series[0].y[21], 0.0031102055218070745);
+    EXPECT_EQ(sh.series[0].y[0], 0.0);
+    EXPECT_EQ(sh.series[1].y[21], 10.0);
+}
+
+TEST(LsDyna, Summary) {
+    const Summary s = summarize(lsdyna("d3plot_node_temperature"), "");
+    ASSERT_NE(s.find("shells"), nullptr);
+    EXPECT_EQ(*s.find("shells"), "2075");
+    EXPECT_EQ(*s.find("states"), "23");
+    EXPECT_EQ(*s.find("nodes"), "2185");
+    EXPECT_EQ(s.find("beams"), nullptr);
+    // IU 0: the extents are those of the initial shape (finite)
+    EXPECT_TRUE(std::isfinite(std::stod(*s.find("xmin"))));
+    const Summary b = summarize(lsdyna("d3plot_beamip"), "");
+    EXPECT_EQ(*b.find("beams"), "1");
+    EXPECT_EQ(*b.find("xmax"), "1000");
+}
+
+TEST(LsDyna, PicturesOfShellsAndBeams) {
+    Renderer r;
+    Font font;
+    PictureSettings ps;
+    ps.width = 640;
+    ps.height = 480;
+    ps.units.si = false;
+    {
+        Database db(lsdyna("d3plot_node_temperature"));
+        ps.fringe = "temp";
+        const Image img = make_picture(db, {22}, ps, r, font);
+        EXPECT_GT(coverage(img, 500), 0.03);
+        // the legend's scale, and on the shells both ends of it: hot (red) inside, cool (blue)
+        // at the corners (shading darkens the band colours, so hues are tested)
+        EXPECT_TRUE(has_color(img, band_color(0, ps.bands), 500, 640));
+        EXPECT_TRUE(has_color(img, band_color(ps.bands - 1, ps.bands), 500, 640));
+        EXPECT_TRUE(has_hue(img, 0, 500, true));
+        EXPECT_TRUE(has_hue(img, 0, 500, false));
+    }
+    {
+        Database db(lsdyna("d3plot_solid_int"));
+        ps.fringe = "vm@top";
+        const Image img = make_picture(db, {21}, ps, r, font);
+        EXPECT_GT(coverage(img, 500), 0.03);
+        ps.fringe = "material";
+        EXPECT_NO_THROW(make_picture(db, {21}, ps, r, font));
+    }
+    {
+        Database db(lsdyna("d3plot_beamip"));
+        ps.fringe = "none";
+        const Image img = make_picture(db, {1}, ps, r, font);
+        EXPECT_GT(coverage(img, 500), 0.001);  // the beam's line
+    }
+}
