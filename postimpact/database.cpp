@@ -44,6 +44,15 @@ int Database::element_index(int id) const {
     return it == elem_lookup_.end() ? -1 : it->second;
 }
 
+int Database::element_index(int id, int family) const {
+    const auto& g = reader_.geometry();
+    const int first = family_offset(g, static_cast<Family>(family));
+    const int n = num_elements(g);
+    for (int e = first; e < n && element_ref(g, e).family == static_cast<Family>(family); ++e)
+        if (element_user_id(g, e) == id) return e;
+    return -1;
+}
+
 std::string Database::part_name(int material) const {
     const auto& g = reader_.geometry();
     if (material >= 1 && material <= static_cast<int>(g.part_titles.size())) {

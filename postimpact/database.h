@@ -25,6 +25,7 @@ public:
     int element_id(int index) const;
     int node_index(int user_id) const;  // -1 if none
     int element_index(int user_id) const;
+    int element_index(int user_id, int family) const;  // an elements.h Family; -1 if none
     std::string part_name(int material) const;  // 1-based material number
 
 private:

@@ -235,7 +235,10 @@ Image make_picture(Database& db, const std::vector<int>& states, const PictureSe
                 y += font.ascent(label_px);
                 font.draw(img, lx, y, s, label_px, kText);
                 y += font.descent(label_px) + 2;
-                std::string w = (elem ? "elem " + std::to_string(db.element_id(id)) : "node " + std::to_string(db.node_id(id)));
+                const Family fam = elem ? element_ref(g, id).family : Family::Solid;
+                std::string w = (elem ? (fam == Family::Solid ? std::string("elem") : std::string(family_name(fam))) + " " +
+                                            std::to_string(db.element_id(id))
+                                      : "node " + std::to_string(db.node_id(id)));
                 if (seq) w += ", " + format_time(db.time(st), t_last, ps.units);
                 y += font.ascent(label_px);
                 font.draw(img, lx + unit / 2, y, w, label_px, {70, 70, 70});

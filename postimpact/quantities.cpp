@@ -79,6 +79,14 @@ bool find_quantity(const std::string& key0, Quantity& q) {
         }
     }
     if (auto it = kAliases.find(key); it != kAliases.end()) key = it->second;
+    if (key.size() > 4 && key.size() < 9 && key.compare(0, 4, "hist") == 0 &&
+        key.find_first_not_of("0123456789", 4) == std::string::npos && std::stoi(key.substr(4)) >= 1) {
+        // extra history value K (NEIPH of solids, NEIPS of shell layers)
+        q = Quantity{"hist" + std::to_string(std::stoi(key.substr(4))), "History variable " + key.substr(4) + where,
+                     Quantity::Where::Element, Dim::None};
+        q.point = point;
+        return true;
+    }
     for (const auto& e : kTable)
         if (key == e.key) {
             if (!where.empty() && e.where == Quantity::Where::Node) return false;
@@ -92,7 +100,7 @@ bool find_quantity(const std::string& key0, Quantity& q) {
 std::string quantity_keys() {
     std::string s;
     for (const auto& e : kTable) s += (s.empty() ? "" : " ") + std::string(e.key);
-    return s;
+    return s + " histK";
 }
 
 double von_mises(const double* s) {
@@ -180,10 +188,21 @@ std::vector<int> chosen_points(int point, int n, bool through_thickness) {
     return n % 2 ? std::vector<int>{n / 2} : std::vector<int>{n / 2 - 1, n / 2};
 }
 
+// History value number k (1-based) of key "histK", or 0 for other keys.
+int history_number(const std::string& key) {
+    return key.size() > 4 && key.compare(0, 4, "hist") == 0 ? std::stoi(key.substr(4)) : 0;
+}
+
 // Shell or thick-shell record: the quantity at the chosen layer(s) (stresses averaged first).
 double layered_value(const Quantity& q, const impact3d::PlotLayout& L, const double* rec) {
     const std::vector<int> pts = chosen_points(q.point, L.layers, true);
     if (pts.empty()) return 0.0;
+    if (const int h = history_number(q.key); h > 0) {
+        if (L.layer_history < 0 || h > L.layer_words - L.layer_history) return 0.0;
+        double v = 0;
+        for (int p : pts) v += rec[static_cast<std::ptrdiff_t>(p) * L.layer_words + L.layer_history + h - 1] / pts.size();
+        return v;
+    }
     double st[6] = {0, 0, 0, 0, 0, 0}, eps = 0;
     for (int p : pts) {
         const double* v = rec + static_cast<std::ptrdiff_t>(p) * L.layer_words;
@@ -204,6 +223,13 @@ double element_value(const Quantity& q, const impact3d::PlotGeometry& g, const i
         case Family::Solid: {
             if (q.key == "thickness" || q.key == "axial_force") return 0.0;
             const std::size_t nv = static_cast<std::size_t>(L.solid_points) * L.solid_point_words;
+            if (const int h = history_number(q.key); h > 0) {
+                if (h > L.solid_history || s.solid_vars.size() < nv * (i + 1)) return 0.0;
+                const std::vector<int> pts = chosen_points(q.point, L.solid_points, false);
+                double v = 0;
+                for (int p : pts) v += s.solid_vars[nv * i + static_cast<std::size_t>(p) * L.solid_point_words + 6 + h] / pts.size();
+                return v;
+            }
             if (q.point < 0 || s.solid_vars.size() < nv * (i + 1)) {
                 if (q.point > 0) return 0.0;  // a single point: only point 1 is there
                 if (s.stress.size() < 6 * (i + 1)) return q.key == "eps" ? get(s.eps, i) : 0.0;

@@ -10,12 +10,14 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 
 #include <unistd.h>
 
 #include "common/plot_database.h"
+#include "postimpact/compare.h"
 #include "postimpact/database.h"
 #include "postimpact/elements.h"
 #include "postimpact/fringe.h"
@@ -141,6 +143,10 @@ TEST(LsDyna, ShellStressAtAChosenSurface) {
     EXPECT_EQ(element_value(quantity("sxx@ip8"), g, L, s, 0), 230.7303924560547);
     EXPECT_NEAR(element_value(quantity("sxx"), g, L, s, 0), 190.72930526733398, 1e-6 * 190.7);
     EXPECT_EQ(element_value(quantity("sxx@ip9"), g, L, s, 0), 0.0);  // no such point
+    // extra history values: solid 1's NEIPH value at point 1; shell 17's NEIPS value, layer 1
+    EXPECT_EQ(element_value(quantity("hist1@ip1"), g, L, s, 0), 0.16481825709342957);
+    EXPECT_EQ(element_value(quantity("hist1@bottom"), g, L, s, e), rec[7]);
+    EXPECT_EQ(element_value(quantity("hist2"), g, L, s, e), 0.0);  // NEIPS 1: none
 }
 
 TEST(LsDyna, BeamQuantitiesAndTemperatures) {
@@ -224,6 +230,14 @@ TEST(LsDyna, HistoriesOfShellsAndNodes) {
     EXPECT_EQ(sh.series[0].y[21], 0.0031102055218070745);
     EXPECT_EQ(sh.series[0].y[0], 0.0);
     EXPECT_EQ(sh.series[1].y[21], 10.0);
+    // a family named: shell 17, solid 1 (the two families number their elements apart)
+    const auto fc = parse_history({"shell", "17", "eps@bottom", "solid", "1", "sxx@ip1"}, sdb);
+    ASSERT_EQ(fc.size(), 2u);
+    const HistoryData fh = extract_history(sdb, fc);
+    EXPECT_EQ(fh.series[0].y[21], 0.0031102055218070745);
+    EXPECT_EQ(fh.series[1].y[21], 213.20840454101562);
+    EXPECT_THROW(parse_history({"shell", "1", "vm"}, sdb), std::invalid_argument);  // solid 1 is no shell
+    EXPECT_THROW(parse_history({"beam", "17", "vm"}, sdb), std::invalid_argument);
 }
 
 TEST(LsDyna, Summary) {
@@ -273,4 +287,89 @@ TEST(LsDyna, PicturesOfShellsAndBeams) {
         const Image img = make_picture(db, {1}, ps, r, font);
         EXPECT_GT(coverage(img, 500), 0.001);  // the beam's line
     }
+}
+
+namespace {
+
+// Two hexahedra side by side (12 nodes, user ids 101.. and 11, 12), in the node order `perm`
+// (perm[k] = the node stored at index k); node 1's z is shifted by dz in the last state.
+std::string write_pair(const std::string& root, const std::vector<int>& perm, double dz) {
+    const double x[12][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1},
+                             {1, 1, 1}, {0, 1, 1}, {2, 0, 0}, {2, 1, 0}, {2, 0, 1}, {2, 1, 1}};
+    const int hex[2][8] = {{0, 1, 2, 3, 4, 5, 6, 7}, {1, 8, 9, 2, 5, 10, 11, 6}};
+    std::vector<int> where(12);
+    for (int k = 0; k < 12; ++k) where[static_cast<std::size_t>(perm[static_cast<std::size_t>(k)])] = k;
+    impact3d::PlotGeometry g;
+    g.num_materials = 1;
+    for (int k = 0; k < 12; ++k) {
+        const int n = perm[static_cast<std::size_t>(k)];
+        for (int d = 0; d < 3; ++d) g.x0.push_back(x[n][d]);
+        g.node_user_ids.push_back(101 + n);
+    }
+    for (int e = 0; e < 2; ++e) {
+        for (int k = 0; k < 8; ++k) g.hex_nodes.push_back(where[static_cast<std::size_t>(hex[e][k])]);
+        g.hex_material.push_back(1);
+        g.hex_user_ids.push_back(11 + e);
+    }
+    impact3d::PlotWriter w;
+    w.open(root, g);
+    for (int st = 0; st < 2; ++st) {
+        impact3d::PlotState s;
+        s.time = 1e-3 * st;
+        s.coords = g.x0;
+        if (st == 1) s.coords[3 * static_cast<std::size_t>(where[1]) + 2] += dz;
+        s.stress = {1e6, 0, 0, 0, 0, 0, 2e6, 0, 0, 0, 0, 0};
+        s.eps = {0.01, 0.02};
+        w.write_state(s);
+    }
+    return root;
+}
+
+}  // namespace
+
+TEST(LsDyna, CompareMatchesNodesAndElementsByUserId) {
+    const fs::path dir = fs::temp_directory_path() / ("impact3d_pi_cmp_" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir / "a");
+    fs::create_directories(dir / "b");
+    fs::create_directories(dir / "c");
+    std::vector<int> id(12), rev(12);
+    for (int k = 0; k < 12; ++k) id[static_cast<std::size_t>(k)] = k, rev[static_cast<std::size_t>(k)] = 11 - k;
+    const std::string a = write_pair((dir / "a" / "d3plot").string(), id, 0.0);
+    const std::string b = write_pair((dir / "b" / "d3plot").string(), rev, 0.0);     // other node order
+    const std::string c = write_pair((dir / "c" / "d3plot").string(), rev, 1e-3);    // and node 102 moved
+    std::ostringstream o1;
+    EXPECT_EQ(compare_databases(a, b, {}, o1), 0) << o1.str();
+    EXPECT_EQ(o1.str().find("connectivities differ"), std::string::npos) << o1.str();
+    std::ostringstream o2;
+    EXPECT_EQ(compare_databases(a, c, {}, o2), 1) << o2.str();
+    EXPECT_NE(o2.str().find("node 102 z"), std::string::npos) << o2.str();
+    fs::remove_all(dir);
+}
+
+TEST(LsDyna, CompareShellsBeamsAndTemperatures) {
+    for (const char* name : {"d3plot_solid_int", "d3plot_beamip", "d3plot_node_temperature"}) {
+        std::ostringstream o;
+        EXPECT_EQ(compare_databases(lsdyna(name), lsdyna(name), {}, o), 0) << o.str();
+    }
+    // one stress word of shell 17 (layer 3, the middle surface) changed in the last state
+    const fs::path dir = fs::temp_directory_path() / ("impact3d_pi_cmp2_" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    for (const auto& f : fs::directory_iterator(fs::path(lsdyna("d3plot_solid_int")).parent_path()))
+        fs::copy_file(f.path(), dir / f.path().filename());
+    fs::permissions(dir / "d3plot22", fs::perms::owner_write, fs::perm_options::add);
+    {
+        std::fstream f(dir / "d3plot22", std::ios::in | std::ios::out | std::ios::binary);
+        const float v = 12345.0f;
+        f.seekp(4 * (1 + 34 + 106 * 10 + 16 * 64 + 2 * 8));  // shell 17's sxx at layer 3
+        f.write(reinterpret_cast<const char*>(&v), 4);
+    }
+    std::ostringstream o;
+    EXPECT_EQ(compare_databases(lsdyna("d3plot_solid_int"), (dir / "d3plot").string(), {}, o), 1) << o.str();
+    EXPECT_NE(o.str().find("shell 17 sxx"), std::string::npos) << o.str();
+    // different models are not comparable
+    std::ostringstream o3;
+    EXPECT_EQ(compare_databases(lsdyna("d3plot_solid_int"), lsdyna("d3plot_beamip"), {}, o3), 2) << o3.str();
+    fs::remove_all(dir);
 }
