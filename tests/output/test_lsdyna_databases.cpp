@@ -17,7 +17,9 @@
 // addends, summed in double).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -412,4 +414,62 @@ TEST(LsDynaDatabase, EightByteWordsAndByteSwappedFilesReadTheSame) {
         EXPECT_EQ(a.beam_vars[0], 4.797982323945238e-12);  // VTK's AxialForce
         fs::remove_all(dir);
     }
+}
+
+// NDIM 5 (what LS-DYNA writes when parts are rigid): the material-type section after the control
+// words, and no state data for the shells of rigid parts (type 20).  Made from d3plot_solid_int
+// by declaring part 3 (shell_mat_1) rigid: the section inserted, NDIM 5, and those shells'
+// records cut out of every state.  The rigid shells read as zeros, all else as before.
+TEST(LsDynaDatabase, RigidShellsOfNdim5HaveNoStateData) {
+    const std::string src = fs::path(data("d3plot_solid_int")).parent_path().string();
+    PlotReader ref;
+    ref.open(src + "/d3plot");
+    const auto& g = ref.geometry();
+    std::vector<int> rigid;  // shells of part 3
+    for (int e = 0; e < g.num_shells(); ++e)
+        if (g.shell_material[static_cast<std::size_t>(e)] == 3) rigid.push_back(e);
+    ASSERT_FALSE(rigid.empty());
+    const fs::path dir = fs::temp_directory_path() / ("impact3d_ndim5_" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    {
+        std::vector<char> root = slurp(src + "/d3plot");
+        const std::int32_t ndim = 5;
+        std::memcpy(&root[4 * 15], &ndim, 4);
+        // after the 64 + EXTRA 64 control words: NUMRBE, NMMAT, the 4 material types
+        const std::int32_t section[6] = {static_cast<std::int32_t>(rigid.size()), 4, 3, 3, 20, 3};
+        root.insert(root.begin() + 4 * 128, reinterpret_cast<const char*>(section), reinterpret_cast<const char*>(section) + 24);
+        spit((dir / "d3plot").string(), root);
+    }
+    const int state_words = 2983, shell_at = 1 + 34 + 106 * 10 + 16 * 64, nv2d = 52;
+    for (int m = 1; m <= 22; ++m) {
+        char name[16];
+        std::snprintf(name, sizeof name, "d3plot%02d", m);
+        const std::vector<char> in = slurp(src + "/" + name);
+        std::vector<char> out;
+        for (int w = 0; w < state_words; ++w) {
+            const int shell = (w - shell_at) / nv2d;
+            const bool cut = w >= shell_at && w < shell_at + 16 * nv2d &&
+                             std::find(rigid.begin(), rigid.end(), shell) != rigid.end();
+            if (!cut) out.insert(out.end(), in.begin() + 4 * w, in.begin() + 4 * w + 4);
+        }
+        out.insert(out.end(), in.begin() + 4 * state_words, in.end());  // marker, padding
+        spit((dir / name).string(), out);
+    }
+    PlotReader r;
+    r.open((dir / "d3plot").string());
+    EXPECT_EQ(r.control().ndim, 5);
+    EXPECT_EQ(r.geometry().part_types, (std::vector<int>{3, 3, 20, 3}));
+    ASSERT_EQ(r.num_states(), 22);
+    const PlotState a = r.state(21), b = ref.state(21);
+    for (int e = 0; e < 16; ++e) {
+        const bool is_rigid = std::find(rigid.begin(), rigid.end(), e) != rigid.end();
+        for (int k = 0; k < nv2d; ++k)
+            EXPECT_EQ(a.shell_vars[static_cast<std::size_t>(nv2d * e + k)],
+                      is_rigid ? 0.0 : b.shell_vars[static_cast<std::size_t>(nv2d * e + k)]) << e << " " << k;
+    }
+    EXPECT_EQ(a.solid_vars, b.solid_vars);
+    EXPECT_EQ(a.shell_alive, b.shell_alive);
+    EXPECT_EQ(a.coords, b.coords);
+    fs::remove_all(dir);
 }
