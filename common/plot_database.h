@@ -119,9 +119,10 @@ struct PlotState {
 struct PlotLayout {
     // solids: solid_points blocks of solid_point_words: 6 stresses, EPS, NEIPH history values
     int solid_points = 1, solid_point_words = 7, solid_history = 0;
-    // shells and thick shells: `layers` blocks (integration points through the thickness, the
-    // first the bottom/inner surface, the last the top/outer surface) of layer_words: [6
-    // stresses] [EPS] [NEIPS history]; then the non-layer words.
+    // shells and thick shells: `layers` blocks (through the thickness, in the manual's order:
+    // the mid surface, the inner surface, the outer surface, then the further integration
+    // points when MAXINT > 3) of layer_words: [6 stresses] [EPS] [NEIPS history]; then the
+    // non-layer words.
     int layers = 0, layer_words = 0, layer_stress = -1, layer_eps = -1, layer_history = -1;
     int shell_forces = -1;           // 8 resultants: Mxx Myy Mxy, Qyz Qzx, Nxx Nyy Nxy (per unit width)
     int shell_thickness = -1;        // current thickness (then 2 element-dependent words)

@@ -183,9 +183,10 @@ std::vector<int> chosen_points(int point, int n, bool through_thickness) {
         for (int k = 0; k < n; ++k) all[static_cast<std::size_t>(k)] = k;
         return all;
     }
-    if (point == Quantity::kTop) return {n - 1};
-    if (point == Quantity::kBottom) return {0};
-    return n % 2 ? std::vector<int>{n / 2} : std::vector<int>{n / 2 - 1, n / 2};
+    // LS-DYNA's order (database manual, shell and thick-shell data): mid, inner, outer surface
+    if (point == Quantity::kTop) return {std::min(2, n - 1)};
+    if (point == Quantity::kBottom) return {std::min(1, n - 1)};
+    return {0};
 }
 
 // History value number k (1-based) of key "histK", or 0 for other keys.

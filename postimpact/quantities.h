@@ -17,10 +17,10 @@ struct Quantity {
     enum class Where { Element, Node } where = Where::Element;
     Dim dim = Dim::None;
     // Where in the element (key suffix "@top", "@bottom", "@mid", "@ip3"): shells and thick
-    // shells: the top (outer, last) or bottom (inner, first) integration point through the
-    // thickness, the middle (default; the mean of the two middle points when their number is
-    // even) or point k; solids: the mean over the integration points (default) or point k;
-    // beams: the mean over the points (default) or point k.
+    // shells: the outer ("top"), inner ("bottom") or mid surface (default) values LS-DYNA
+    // writes as the first three through-thickness blocks, or block k in the file's order (1 mid,
+    // 2 inner, 3 outer, then the further points); solids: the mean over the integration points
+    // (default) or point k; beams: the mean over the points (default) or point k.
     static constexpr int kMid = -1, kTop = -2, kBottom = -3;
     int point = kMid;    // kMid, kTop, kBottom, or a 0-based integration point
 };

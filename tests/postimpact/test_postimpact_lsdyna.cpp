@@ -64,6 +64,11 @@ bool has_hue(const Image& img, int x0, int x1, bool red) {
     return false;
 }
 
+void spit_file(const std::string& path, const std::vector<char>& d) {
+    std::ofstream f(path, std::ios::binary);
+    f.write(d.data(), static_cast<std::streamsize>(d.size()));
+}
+
 double coverage(const Image& img, int x1) {
     int n = 0;
     for (int y = 0; y < img.height; ++y)
@@ -126,13 +131,15 @@ TEST(LsDyna, ShellStressAtAChosenSurface) {
     ASSERT_EQ(L.layers, 5);
     const int e = db.element_index(17);
     const double* rec = &s.shell_vars[0];  // shell 17 is shell 0
-    // bottom = layer 1 (raw words 0..6), top = layer 5, middle = layer 3 (odd count)
-    EXPECT_NEAR(element_value(quantity("vm@bottom"), g, L, s, e), vm(rec), 1e-9 * vm(rec));
-    EXPECT_NEAR(element_value(quantity("vm@top"), g, L, s, e), vm(rec + 4 * 8), 1e-9 * vm(rec + 32));
-    EXPECT_NEAR(element_value(quantity("vm"), g, L, s, e), vm(rec + 2 * 8), 1e-9 * vm(rec + 16));
+    // the database manual's order: block 1 the mid surface (raw words 0..7), 2 the inner
+    // (bottom), 3 the outer (top) surface, 4 and 5 the further points
+    EXPECT_NEAR(element_value(quantity("vm"), g, L, s, e), vm(rec), 1e-9 * vm(rec));
+    EXPECT_NEAR(element_value(quantity("vm@bottom"), g, L, s, e), vm(rec + 8), 1e-9 * vm(rec + 8));
+    EXPECT_NEAR(element_value(quantity("vm@top"), g, L, s, e), vm(rec + 16), 1e-9 * vm(rec + 16));
+    EXPECT_EQ(element_value(quantity("sxx@ip5"), g, L, s, e), rec[32]);
     EXPECT_EQ(element_value(quantity("sxx@ip2"), g, L, s, e), rec[8]);
-    EXPECT_EQ(element_value(quantity("eps@bottom"), g, L, s, e), 0.0031102055218070745);
-    EXPECT_EQ(element_value(quantity("szz@bottom"), g, L, s, e), 19.926589965820312);
+    EXPECT_EQ(element_value(quantity("eps@mid"), g, L, s, e), 0.0031102055218070745);
+    EXPECT_EQ(element_value(quantity("szz"), g, L, s, e), 19.926589965820312);
     EXPECT_EQ(element_value(quantity("thickness"), g, L, s, e), 10.0);
     EXPECT_EQ(quantity("vm@top").label, "Von Mises stress (top surface)");
     Quantity q;
@@ -145,7 +152,7 @@ TEST(LsDyna, ShellStressAtAChosenSurface) {
     EXPECT_EQ(element_value(quantity("sxx@ip9"), g, L, s, 0), 0.0);  // no such point
     // extra history values: solid 1's NEIPH value at point 1; shell 17's NEIPS value, layer 1
     EXPECT_EQ(element_value(quantity("hist1@ip1"), g, L, s, 0), 0.16481825709342957);
-    EXPECT_EQ(element_value(quantity("hist1@bottom"), g, L, s, e), rec[7]);
+    EXPECT_EQ(element_value(quantity("hist1@mid"), g, L, s, e), rec[7]);
     EXPECT_EQ(element_value(quantity("hist2"), g, L, s, e), 0.0);  // NEIPS 1: none
 }
 
@@ -224,14 +231,14 @@ TEST(LsDyna, HistoriesOfShellsAndNodes) {
     EXPECT_EQ(h.series[1].y[22], -117.86971282958984);
 
     Database sdb(lsdyna("d3plot_solid_int"));
-    const auto sc = parse_history({"element", "17", "eps@bottom", "thickness"}, sdb);
+    const auto sc = parse_history({"element", "17", "eps@mid", "thickness"}, sdb);
     const HistoryData sh = extract_history(sdb, sc);
     ASSERT_EQ(sh.time.size(), 22u);
     EXPECT_EQ(sh.series[0].y[21], 0.0031102055218070745);
     EXPECT_EQ(sh.series[0].y[0], 0.0);
     EXPECT_EQ(sh.series[1].y[21], 10.0);
     // a family named: shell 17, solid 1 (the two families number their elements apart)
-    const auto fc = parse_history({"shell", "17", "eps@bottom", "solid", "1", "sxx@ip1"}, sdb);
+    const auto fc = parse_history({"shell", "17", "eps", "solid", "1", "sxx@ip1"}, sdb);
     ASSERT_EQ(fc.size(), 2u);
     const HistoryData fh = extract_history(sdb, fc);
     EXPECT_EQ(fh.series[0].y[21], 0.0031102055218070745);
@@ -352,7 +359,7 @@ TEST(LsDyna, CompareShellsBeamsAndTemperatures) {
         std::ostringstream o;
         EXPECT_EQ(compare_databases(lsdyna(name), lsdyna(name), {}, o), 0) << o.str();
     }
-    // one stress word of shell 17 (layer 3, the middle surface) changed in the last state
+    // one stress word of shell 17 (block 1, the mid surface) changed in the last state
     const fs::path dir = fs::temp_directory_path() / ("impact3d_pi_cmp2_" + std::to_string(::getpid()));
     fs::remove_all(dir);
     fs::create_directories(dir);
@@ -362,7 +369,7 @@ TEST(LsDyna, CompareShellsBeamsAndTemperatures) {
     {
         std::fstream f(dir / "d3plot22", std::ios::in | std::ios::out | std::ios::binary);
         const float v = 12345.0f;
-        f.seekp(4 * (1 + 34 + 106 * 10 + 16 * 64 + 2 * 8));  // shell 17's sxx at layer 3
+        f.seekp(4 * (1 + 34 + 106 * 10 + 16 * 64));  // shell 17's mid-surface sxx
         f.write(reinterpret_cast<const char*>(&v), 4);
     }
     std::ostringstream o;
@@ -371,5 +378,67 @@ TEST(LsDyna, CompareShellsBeamsAndTemperatures) {
     // different models are not comparable
     std::ostringstream o3;
     EXPECT_EQ(compare_databases(lsdyna("d3plot_solid_int"), lsdyna("d3plot_beamip"), {}, o3), 2) << o3.str();
+    fs::remove_all(dir);
+}
+
+// A thick shell (no LS-DYNA sample has one): a 4-byte database written here word by word in
+// the manual's layout (IXT after IX8, NV3DT = 3 layers x (6 stresses + EPS), element deletion
+// flags), read back and drawn by its exterior.  (VTK 9.1 reads this file with the same stress
+// at its "Stress" (mid) and "StressOuterSurf" EPS, but takes the three 6-stress blocks as
+// contiguous, without the EPS between them, unlike the manual and lasso-python.)
+TEST(LsDyna, ThickShellReadAndDrawn) {
+    const fs::path dir = fs::temp_directory_path() / ("impact3d_pi_tshell_" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    auto put_i = [](std::vector<char>& b, std::int32_t v) { b.insert(b.end(), reinterpret_cast<char*>(&v), reinterpret_cast<char*>(&v) + 4); };
+    auto put_f = [](std::vector<char>& b, float v) { b.insert(b.end(), reinterpret_cast<char*>(&v), reinterpret_cast<char*>(&v) + 4); };
+    std::vector<char> root;
+    for (int k = 0; k < 40; ++k) root.push_back(k < 7 ? "tshell "[k] : ' ');
+    std::int32_t w[64] = {};
+    w[11] = 1;                                   // FILETYPE
+    w[15] = 4; w[16] = 8; w[17] = 6; w[18] = 13;  // NDIM NUMNP ICODE NGLBV
+    w[20] = 1;                                   // IU
+    w[36] = -10003;                              // MAXINT: 3 layers, element deletion
+    w[40] = 1; w[41] = 1; w[42] = 21;            // NELT NUMMATT NV3DT
+    w[43] = w[44] = w[45] = w[46] = 1000;        // IOSHL
+    w[51] = 1;                                   // NMMAT
+    for (int k = 10; k < 64; ++k) {
+        if (k == 13) { root.insert(root.end(), {'R', '9', '6', '0'}); continue; }
+        if (k == 14) { put_f(root, 960.0f); continue; }
+        put_i(root, w[k]);
+    }
+    const float x[8][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 0.1f}, {1, 0, 0.1f}, {1, 1, 0.1f}, {0, 1, 0.1f}};
+    for (const auto& p : x)
+        for (float c : p) put_f(root, c);
+    for (int k = 1; k <= 8; ++k) put_i(root, k);
+    put_i(root, 1);        // material
+    put_f(root, -999999.0f);
+    spit_file((dir / "d3plot").string(), root);
+    std::vector<char> st;
+    put_f(st, 0.5f);                                    // time
+    for (int k = 0; k < 13; ++k) put_f(st, 0.0f);       // globals
+    for (const auto& p : x)
+        for (float c : p) put_f(st, c);
+    for (int layer = 0; layer < 3; ++layer)             // mid, inner, outer: sxx = 100 (layer + 1), EPS 0.1 layer
+        for (int k = 0; k < 7; ++k) put_f(st, k == 0 ? 100.0f * (layer + 1) : (k == 6 ? 0.1f * layer : 0.0f));
+    put_f(st, 1.0f);                                    // alive
+    put_f(st, -999999.0f);
+    spit_file((dir / "d3plot01").string(), st);
+
+    Database db((dir / "d3plot").string());
+    const auto& g = db.geometry();
+    ASSERT_EQ(g.num_tshells(), 1);
+    EXPECT_EQ(g.num_hexes() + g.num_shells() + g.num_beams(), 0);
+    ASSERT_EQ(db.num_states(), 1);
+    EXPECT_EQ(db.layout().layers, 3);
+    const impact3d::PlotState& s = db.state(0);
+    ASSERT_EQ(s.tshell_vars.size(), 21u);
+    // blocks: mid, inner, outer surface (the manual's thick-shell order)
+    EXPECT_EQ(element_value(quantity("sxx@top"), g, db.layout(), s, 0), 300.0);
+    EXPECT_EQ(element_value(quantity("sxx@bottom"), g, db.layout(), s, 0), 200.0);
+    EXPECT_EQ(element_value(quantity("sxx"), g, db.layout(), s, 0), 100.0);
+    EXPECT_NEAR(element_value(quantity("eps@top"), g, db.layout(), s, 0), 0.2, 1e-7);  // float32 0.2
+    EXPECT_EQ(model_faces(g, s).size(), 6u);
+    EXPECT_EQ(db.element_index(1, static_cast<int>(Family::ThickShell)), 0);
     fs::remove_all(dir);
 }
