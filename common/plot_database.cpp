@@ -1009,10 +1009,12 @@ void PlotReader::open(const std::string& root_path) {
     {
         // after the per-part block: NUMRW rigid-wall words, then 3 words per sliding interface
         // (control word 63, ours); a word 63 that does not fit is not ours: all are walls.
+        // LS-DYNA from VERSION 971 on writes 4 words per wall: the force, then its x y z position.
         const std::int64_t extra_globals = c.nglbv - 6 - 7 * nparts;
         const std::int64_t nif = (c.nintf > 0 && c.nintf <= 100000 && c.nintf <= extra_globals / 3) ? c.nintf : 0;
         g.num_interfaces = static_cast<int>(nif);
-        g.num_rigid_walls = extra_globals > 0 ? static_cast<int>(extra_globals - 3 * nif) : 0;
+        const std::int64_t wall_words = extra_globals - 3 * nif;
+        g.num_rigid_walls = extra_globals <= 0 ? 0 : static_cast<int>(c.version >= 971.0 && nif == 0 ? wall_words / 4 : wall_words);
     }
 
     // ---- NARBS user-id section: nodes, solids, beams, shells, thick shells, parts
@@ -1210,6 +1212,11 @@ PlotState PlotReader::state(int i) const {
         take(s.mat_hourglass_energy, nm);
         const std::size_t nif = 3 * static_cast<std::size_t>(geom_.num_interfaces);
         s.rigid_wall_forces.assign(it, glob.end() - static_cast<std::ptrdiff_t>(nif));
+        if (c.version >= 971.0 && nif == 0) {  // force, x, y, z per wall: the forces
+            std::vector<double> f(static_cast<std::size_t>(geom_.num_rigid_walls));
+            for (std::size_t k = 0; k < f.size(); ++k) f[k] = s.rigid_wall_forces[4 * k];
+            s.rigid_wall_forces = std::move(f);
+        }
         s.interface_forces.assign(glob.end() - static_cast<std::ptrdiff_t>(nif), glob.end());
     }
     const std::size_t nn = static_cast<std::size_t>(c.numnp), ne = static_cast<std::size_t>(c.nel8);
@@ -1220,12 +1227,12 @@ PlotState PlotReader::state(int i) const {
     // ---- nodes: coordinates, temperatures, flux, mass scaling, dT/dt, residuals, velocities, accelerations
     const NodeWords nw = node_words(c);
     if (nw.coords) read_vec(s.coords, 3 * nn, "current coordinates");
-    if (nw.temps) {
-        s.temperature.resize(nn);
-        for (std::size_t n = 0; n < nn; ++n) {
-            s.temperature[n] = cur.r("temperature");
-            cur.skip_words(nw.temps - 1, "temperature layers");
-        }
+    if (nw.temps == 1) {
+        read_vec(s.temperature, nn, "temperatures");
+    } else if (nw.temps == 3) {  // IT 3: inner, middle, outer arrays (the manual): the middle one
+        cur.skip_words(static_cast<std::int64_t>(nn), "inner-layer temperatures");
+        read_vec(s.temperature, nn, "middle-layer temperatures");
+        cur.skip_words(static_cast<std::int64_t>(nn), "outer-layer temperatures");
     }
     cur.skip_words(static_cast<std::int64_t>(nn) * (nw.flux + nw.mass_scaling + nw.temp_rate + nw.residual),
                    "heat flux, mass scaling, dT/dt and residual node values");

@@ -102,7 +102,7 @@ struct PlotState {
     // ---- Read only (PlotReader; the writer ignores them).  Empty when the database has none.
     // Record layouts: PlotLayout.  Solids with several integration points: stress and eps above
     // are the means over the points, solid_vars holds every point.
-    std::vector<double> temperature;           // numnp nodal temperatures (IT 1..3: the first)
+    std::vector<double> temperature;           // numnp nodal temperatures (IT 3: the middle-layer array)
     std::vector<double> solid_vars;            // NV3D*numelh raw solid records, only when NV3D > 7
     std::vector<double> tshell_vars;           // NV3DT*nelt raw thick-shell records
     std::vector<double> beam_vars;             // NV1D*nel2 raw beam records
