@@ -10,6 +10,8 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <random>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -441,4 +443,57 @@ TEST(LsDyna, ThickShellReadAndDrawn) {
     EXPECT_EQ(model_faces(g, s).size(), 6u);
     EXPECT_EQ(db.element_index(1, static_cast<int>(Family::ThickShell)), 0);
     fs::remove_all(dir);
+}
+
+// Damaged LS-DYNA databases (random bytes in the control words, anywhere in the root file, or
+// in the first state member) are read or refused with an exception, never a crash; what is
+// read is drawn and fringed.
+TEST(LsDyna, RandomCorruptionNeverCrashes) {
+    std::mt19937 rng(2024);
+    for (const char* name : {"d3plot_beamip", "d3plot_solid_int", "d3plot_node_temperature"}) {
+        const fs::path dir = fs::temp_directory_path() / (std::string("impact3d_pi_corrupt_") + name + "_" + std::to_string(::getpid()));
+        fs::remove_all(dir);
+        fs::create_directories(dir);
+        for (const auto& f : fs::directory_iterator(fs::path(lsdyna(name)).parent_path()))
+            fs::copy_file(f.path(), dir / f.path().filename());
+        for (const auto& f : fs::directory_iterator(dir))
+            fs::permissions(f.path(), fs::perms::owner_write, fs::perm_options::add);
+        auto slurp = [](const fs::path& p) {
+            std::ifstream f(p, std::ios::binary);
+            return std::vector<char>(std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>());
+        };
+        const auto root0 = slurp(dir / "d3plot"), m0 = slurp(dir / "d3plot01");
+        int ok = 0, refused = 0;
+        const int iterations = std::string(name) == "d3plot_node_temperature" ? 150 : 600;
+        for (int it = 0; it < iterations; ++it) {
+            auto root = root0;
+            auto m1 = m0;
+            const int mode = it % 3;
+            for (int k = 0, n = 1 + static_cast<int>(rng() % 4); k < n; ++k) {
+                if (mode == 0) root[rng() % (128 * 4)] = static_cast<char>(rng());
+                else if (mode == 1) root[rng() % root.size()] = static_cast<char>(rng());
+                else m1[rng() % m1.size()] = static_cast<char>(rng());
+            }
+            spit_file((dir / "d3plot").string(), root);
+            spit_file((dir / "d3plot01").string(), m1);
+            try {
+                Database db((dir / "d3plot").string());
+                const auto& g = db.geometry();
+                if (db.num_states() > 0) {
+                    const impact3d::PlotState& s = db.state(0);
+                    model_faces(g, s);
+                    for (const char* k : {"vm@top", "eps", "thickness", "axial_force", "hist1@ip2", "sxx@ip8"})
+                        element_values(quantity(k), g, db.layout(), s);
+                    nodal_fringe(quantity("vm"), g, s, db.layout());
+                    node_values(quantity("temp"), g, s);
+                }
+                ++ok;
+            } catch (const std::exception&) {
+                ++refused;
+            }
+        }
+        EXPECT_GT(ok, 0) << name;
+        EXPECT_GT(refused, 0) << name;
+        fs::remove_all(dir);
+    }
 }
