@@ -292,7 +292,7 @@ PlotControl parse_control(const std::vector<char>& d, const std::string& path) {
 
 [[noreturn]] void unsupported(const std::string& path, const std::string& what) {
     throw std::runtime_error("plot database " + path + ": unsupported d3plot content: " + what +
-                             " (this reader handles 8-node solids only)");
+                             " (this reader does not read it)");
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -454,6 +454,8 @@ void PlotWriter::open_impl(const std::string& root_path, const PlotGeometry& g, 
     if (member_size_limit_words < 1)
         throw std::invalid_argument("PlotWriter: member size limit must be positive");
     if (g.x0.size() % 3 != 0) throw std::invalid_argument("PlotWriter: x0 size is not a multiple of 3");
+    if (!g.tshell_material.empty() || !g.beam_material.empty() || !g.shell_material.empty())
+        throw std::invalid_argument("PlotWriter: writes 8-node solids only (the geometry has thick shells, beams or shells)");
     const std::size_t numnp = g.x0.size() / 3;
     const std::size_t nel8 = g.hex_material.size();
     const int nmat = g.num_materials;
@@ -737,10 +739,110 @@ PlotControl PlotReader::read_control(const std::string& root_path) {
     return parse_control(head, root_path);
 }
 
+namespace {
+
+// Digit k (0 = units) of a non-negative control word (IT, IDTDT are digit flags).
+int digit(std::int64_t v, int k) {
+    if (v < 0) return 0;
+    for (; k > 0; --k) v /= 10;
+    return static_cast<int>(v % 10);
+}
+
+constexpr std::int64_t kFemzipMarker = 76893465;  // NMMAT of a femzip-compressed d3plot
+constexpr int kRigidPartType = 20;                // LS-DYNA material type of rigid parts
+
+// Node words of one state, per node, in file order.
+struct NodeWords {
+    int coords = 0, temps = 0, flux = 0, mass_scaling = 0, temp_rate = 0, residual = 0, vel = 0, acc = 0;
+    int total() const { return coords + temps + flux + mass_scaling + temp_rate + residual + vel + acc; }
+};
+
+NodeWords node_words(const PlotControl& c) {
+    NodeWords w;
+    w.coords = 3 * static_cast<int>(c.iu);
+    const int t = digit(c.it, 0);
+    w.temps = t == 3 ? 3 : (t >= 1 ? 1 : 0);
+    w.flux = t >= 2 ? 3 : 0;
+    w.mass_scaling = digit(c.it, 1) == 1 ? 1 : 0;
+    w.temp_rate = digit(c.idtdt, 0) == 1 ? 1 : 0;
+    w.residual = digit(c.idtdt, 1) == 1 ? 6 : 0;  // residual forces and moments
+    w.vel = 3 * static_cast<int>(c.iv);
+    w.acc = 3 * static_cast<int>(c.ia);
+    return w;
+}
+
+// Shell/thick-shell integration points through the thickness: MAXINT without the MDLOPT part
+// (LS-DYNA's default of 3 when it is 0).
+int shell_layers(const PlotControl& c) {
+    std::int64_t m = c.maxint < 0 ? -c.maxint : c.maxint;
+    m %= 10000;
+    return m == 0 ? 3 : static_cast<int>(m);
+}
+
+// Record layouts from the control words; refuses element records whose length (NV3D, NV3DT,
+// NV1D, NV2D) does not split into the values the flags announce.
+PlotLayout make_layout(const PlotControl& c, const std::string& f) {
+    PlotLayout L;
+    auto refuse = [&](const std::string& what) {
+        throw std::runtime_error("plot database " + f + ": unsupported d3plot content: " + what);
+    };
+    // solids: 6 stresses + EPS + NEIPH (as VTK: whatever IOSHL says), at 1 or 8 points
+    L.solid_history = static_cast<int>(c.neiph);
+    L.solid_point_words = 7 + L.solid_history;
+    if (c.nel8 != 0) {
+        if (c.nv3d == L.solid_point_words) L.solid_points = 1;
+        else if (c.nv3d == 8 * static_cast<std::int64_t>(L.solid_point_words)) L.solid_points = 8;
+        else refuse("NV3D " + std::to_string(c.nv3d) + " is neither 7 + NEIPH (" + std::to_string(L.solid_point_words) +
+                    ") nor 8 integration points of it");
+    }
+    // shells and thick shells share the layer layout
+    L.layers = shell_layers(c);
+    int w = 0;
+    if (c.ioshl[0] == 1000) { L.layer_stress = w; w += 6; }
+    if (c.ioshl[1] == 1000) { L.layer_eps = w; w += 1; }
+    if (c.neips > 0) { L.layer_history = w; w += static_cast<int>(c.neips); }
+    L.layer_words = w;
+    const std::int64_t layer_total = static_cast<std::int64_t>(L.layers) * w;
+    if (c.nel4 != 0 && c.nv2d != 0) {
+        std::int64_t at = layer_total;
+        const bool forces = c.ioshl[2] == 1000, extra = c.ioshl[3] == 1000;
+        if (forces) { L.shell_forces = static_cast<int>(at); at += 8; }
+        if (extra) { L.shell_thickness = static_cast<int>(at); at += 3; }
+        std::int64_t rest = c.nv2d - at - (extra ? 1 : 0);
+        if (digit(c.idtdt, 2) == 1) rest -= 6 * L.layers;  // plastic strain tensor per layer
+        if (digit(c.idtdt, 3) == 1) rest -= 6;             // thermal strain tensor
+        if (rest == 12) { L.shell_strain = static_cast<int>(at); at += 12; }
+        else if (rest != 0)
+            refuse("NV2D " + std::to_string(c.nv2d) + " does not split into " + std::to_string(L.layers) +
+                   " layers of " + std::to_string(w) + " words, resultants, extra words and strains");
+        if (extra) L.shell_internal_energy = static_cast<int>(at);
+    }
+    if (c.nelt != 0 && c.nv3dt != 0) {
+        const std::int64_t rest = c.nv3dt - layer_total;
+        if (rest == 12) L.tshell_strain = static_cast<int>(layer_total);
+        else if (rest != 0)
+            refuse("NV3DT " + std::to_string(c.nv3dt) + " does not split into " + std::to_string(L.layers) +
+                   " layers of " + std::to_string(w) + " words and strains");
+    }
+    if (c.nel2 != 0 && c.nv1d != 0) {
+        L.beam_history = static_cast<int>(c.neipb);
+        const std::int64_t num = c.nv1d - 6 - 3 * c.neipb, den = 5 + c.neipb;
+        if (num < 0 || num % den != 0)
+            refuse("NV1D " + std::to_string(c.nv1d) + " is not 6 resultants plus integration points of " +
+                   std::to_string(den) + " words (NEIPB " + std::to_string(c.neipb) + ")");
+        L.beam_points = static_cast<int>(num / den);
+    }
+    return L;
+}
+
+}  // namespace
+
 void PlotReader::open(const std::string& root_path) {
     root_ = root_path;
     ctl_ = PlotControl{};
     geom_ = PlotGeometry{};
+    layout_ = PlotLayout{};
+    rigid_shells_ = 0;
     states_.clear();
     state_bytes_ = 0;
     static_end_ = 0;
@@ -753,10 +855,15 @@ void PlotReader::open(const std::string& root_path) {
     const bool swap = c.byte_swapped != kHostBig;
 
     // ---- what this reader supports
+    if (c.nmmat == kFemzipMarker)
+        throw std::runtime_error("plot database " + f + ": femzip-compressed d3plot (NMMAT " +
+                                 std::to_string(kFemzipMarker) +
+                                 " marks it): this reader cannot decompress it; uncompress it first (femunzip)");
     const std::int64_t ft = c.filetype > 1000 ? c.filetype - 1000 : c.filetype;
     if (ft != 1) unsupported(f, "FILETYPE " + std::to_string(c.filetype) + " is not a d3plot (1)");
     if (c.filetype > 1000 && ws == 4) unsupported(f, "64-bit user ids in a 4-byte file (FILETYPE > 1000)");
-    if (c.ndim != 4) unsupported(f, "NDIM " + std::to_string(c.ndim) + " (only 4 is supported)");
+    if (c.ndim != 4 && c.ndim != 5)
+        unsupported(f, "NDIM " + std::to_string(c.ndim) + " (only 4, and 5 with the material-type section)");
     auto bad_count = [&](std::int64_t v, const char* name) {
         if (v < 0 || v > std::numeric_limits<std::int32_t>::max())
             throw std::runtime_error("plot database " + f + ": implausible control word " + name + " = " +
@@ -765,39 +872,59 @@ void PlotReader::open(const std::string& root_path) {
     if (c.nel8 < 0) unsupported(f, "10-node tetrahedra (NEL8 < 0)");
     bad_count(c.numnp, "NUMNP");
     bad_count(c.nel8, "NEL8");
+    bad_count(c.nelt, "NELT");
+    bad_count(c.nel2, "NEL2");
+    bad_count(c.nel4, "NEL4");
     bad_count(c.nglbv, "NGLBV");
     bad_count(c.nummat8, "NUMMAT8");
+    bad_count(c.nummatt, "NUMMATT");
+    bad_count(c.nummat2, "NUMMAT2");
+    bad_count(c.nummat4, "NUMMAT4");
     bad_count(c.nmmat, "NMMAT");
     bad_count(c.narbs, "NARBS");
     bad_count(c.neiph, "NEIPH");
+    bad_count(c.neips, "NEIPS");
+    bad_count(c.nv3d, "NV3D");
+    bad_count(c.nv3dt, "NV3DT");
+    bad_count(c.nv1d, "NV1D");
+    bad_count(c.nv2d, "NV2D");
     bad_count(c.extra, "EXTRA");
-    if (c.nel4 != 0) unsupported(f, std::to_string(c.nel4) + " shells (NEL4)");
-    if (c.nel2 != 0) unsupported(f, std::to_string(c.nel2) + " beams (NEL2)");
-    if (c.nelt != 0) unsupported(f, std::to_string(c.nelt) + " thick shells (NELT)");
+    if (c.maxint < -std::numeric_limits<std::int32_t>::max()) bad_count(c.maxint, "MAXINT");
     if (c.nel48 != 0) unsupported(f, std::to_string(c.nel48) + " 8-node shells (NEL48)");
     if (c.nmsph != 0 || c.ngpsph != 0) unsupported(f, "SPH data (NMSPH/NGPSPH)");
     if (c.ialemat != 0 || c.numfluid != 0) unsupported(f, "ALE data (IALEMAT/NUMFLUID)");
     if (c.npefg != 0) unsupported(f, "airbag particle data (NPEFG)");
     if (c.ncfdv1 != 0 || c.ncfdv2 != 0) unsupported(f, "CFD node data (NCFDV1/NCFDV2)");
     if (c.nadapt != 0) unsupported(f, "adaptive meshing (NADAPT)");
-    if (c.idtdt != 0) unsupported(f, "IDTDT " + std::to_string(c.idtdt) + " (extra node/strain data)");
-    if (c.it != 0 && c.it != 1) unsupported(f, "IT " + std::to_string(c.it) + " (only IT 0 or 1)");
+    if (c.it < 0 || digit(c.it, 0) > 3 || c.it >= 100) unsupported(f, "IT " + std::to_string(c.it) + " (only 0-3, +10 mass scaling)");
+    if (c.idtdt < 0) unsupported(f, "IDTDT " + std::to_string(c.idtdt));
     for (std::int64_t flag : {c.iu, c.iv, c.ia})
         if (flag != 0 && flag != 1) throw std::runtime_error("plot database " + f + ": implausible IU/IV/IA flag " +
                                                              std::to_string(flag));
-    if (c.nv3d != 7 + c.neiph)
-        unsupported(f, "NV3D " + std::to_string(c.nv3d) + " != 7 + NEIPH (" + std::to_string(c.neiph) +
-                           "): solid integration-point output");
 
     Cursor cur(d.data(), static_cast<std::int64_t>(d.size()), f, 0, ws, swap);
     cur.seek(64 * ws);
     if (c.extra > 0) {
         cur.need_words(c.extra, "the EXTRA control words");
-        for (std::int64_t k = 0; k < c.extra; ++k)
-            if (cur.i("EXTRA control word") != 0)
-                unsupported(f, "non-zero EXTRA control word " + std::to_string(64 + k));
+        std::int64_t x[16] = {};
+        for (std::int64_t k = 0; k < c.extra; ++k) {
+            const std::int64_t v = cur.i("EXTRA control word");
+            if (k < 16) x[k] = v;
+        }
+        c.nel20 = x[0]; c.nt3d = x[1]; c.nel27 = x[2]; c.neipb = x[3]; c.nel21p = x[4]; c.nel15t = x[5];
+        c.soleng = x[6]; c.nel20t = x[7]; c.nel40p = x[8]; c.nel64 = x[9]; c.quadr = x[10]; c.cubic = x[11];
+        c.tsheng = x[12];
+        bad_count(c.nt3d, "NT3D");
+        bad_count(c.neipb, "NEIPB");
+        const std::pair<std::int64_t, const char*> higher[] = {
+            {c.nel20, "20-node solids (NEL20)"}, {c.nel27, "27-node solids (NEL27)"},
+            {c.nel21p, "21-node pentahedra (NEL21P)"}, {c.nel15t, "15-node tetrahedra (NEL15T)"},
+            {c.nel20t, "20-node tetrahedra (NEL20T)"}, {c.nel40p, "40-node pentahedra (NEL40P)"},
+            {c.nel64, "64-node solids (NEL64)"}};
+        for (const auto& [n, what] : higher)
+            if (n != 0) unsupported(f, std::to_string(n) + " " + what);
     }
-    const std::int64_t nparts = c.nmmat > 0 ? c.nmmat : c.nummat8;
+    const std::int64_t nparts = c.nmmat > 0 ? c.nmmat : c.nummat8 + c.nummatt + c.nummat2 + c.nummat4;
     {
         // The part count sizes per-part arrays and loops here and in POST-IMPACT, but nothing in
         // the root file has to follow from it: checked against the words the whole family holds
@@ -813,54 +940,95 @@ void PlotReader::open(const std::string& root_path) {
                                      std::to_string(nparts) + " parts (NMMAT/NUMMAT8) in a family of " +
                                      std::to_string(family_bytes) + " bytes");
     }
+    const PlotLayout layout = make_layout(c, f);
     const std::int64_t numnp = c.numnp, nel8 = c.nel8;
 
     PlotGeometry g;
     g.title = c.title;
+    // ---- material-type section (NDIM 5): rigid shells have no state data
+    if (c.ndim == 5) {
+        const std::int64_t numrbe = cur.i("NUMRBE");
+        const std::int64_t nm = cur.i("material-type section NMMAT");
+        if (numrbe < 0 || numrbe > c.nel4 || nm != nparts) {
+            cur.seek(cur.pos() - 2 * ws);
+            cur.fail("NUMRBE in 0.." + std::to_string(c.nel4) + " and NMMAT " + std::to_string(nparts) +
+                         " (material-type section), found " + std::to_string(numrbe) + " and " + std::to_string(nm),
+                     -1);
+        }
+        cur.need_words(nparts, "the material types of " + std::to_string(nparts) + " parts");
+        g.part_types.resize(static_cast<std::size_t>(nparts));
+        for (auto& t : g.part_types) t = static_cast<int>(std::clamp<std::int64_t>(cur.i("material type"), -1, 1000000));
+        rigid_shells_ = numrbe;
+    }
     // ---- geometry
     cur.need_words(checked_mul(3, numnp, f), "initial coordinates of " + std::to_string(numnp) + " nodes");
     g.x0.resize(static_cast<std::size_t>(3 * numnp));
     for (auto& x : g.x0) x = cur.r("coordinate");
-    cur.need_words(checked_mul(9, nel8, f), "connectivity of " + std::to_string(nel8) + " solids");
-    g.hex_nodes.resize(static_cast<std::size_t>(8 * nel8));
-    g.hex_material.resize(static_cast<std::size_t>(nel8));
-    for (std::int64_t e = 0; e < nel8; ++e) {
-        for (int k = 0; k < 8; ++k) {
-            const std::int64_t n = cur.i("solid node");
-            if (n < 1 || n > numnp) {
+    // one element block: per element `nodes` node words (the first `kept` of them checked and
+    // kept; beams: the orientation node and two unused words follow), then the material number
+    auto read_block = [&](std::int64_t count, int nodes, int kept, const char* what,
+                          std::vector<int>& node_out, std::vector<int>& mat_out) {
+        cur.need_words(checked_mul(nodes + 1, count, f), "connectivity of " + std::to_string(count) + " " + what);
+        node_out.resize(static_cast<std::size_t>(kept * count));
+        mat_out.resize(static_cast<std::size_t>(count));
+        for (std::int64_t e = 0; e < count; ++e) {
+            for (int k = 0; k < nodes; ++k) {
+                const std::int64_t n = cur.i("node number");
+                if (k >= kept) continue;
+                if (n < 1 || n > numnp) {
+                    cur.seek(cur.pos() - ws);
+                    cur.fail("a node number in 1.." + std::to_string(numnp) + " for " + what + " " +
+                                 std::to_string(e + 1) + ", found " + std::to_string(n),
+                             -1);
+                }
+                node_out[static_cast<std::size_t>(kept * e + k)] = static_cast<int>(n - 1);
+            }
+            const std::int64_t m = cur.i("material number");
+            if (m < 1 || m > nparts) {
                 cur.seek(cur.pos() - ws);
-                cur.fail("a node number in 1.." + std::to_string(numnp) + " for solid " + std::to_string(e + 1) +
-                             ", found " + std::to_string(n),
+                cur.fail("a material number in 1.." + std::to_string(nparts) + " for " + what + " " +
+                             std::to_string(e + 1) + ", found " + std::to_string(m),
                          -1);
             }
-            g.hex_nodes[static_cast<std::size_t>(8 * e + k)] = static_cast<int>(n - 1);
+            mat_out[static_cast<std::size_t>(e)] = static_cast<int>(m);
         }
-        const std::int64_t m = cur.i("solid material");
-        if (m < 1 || m > nparts) {
-            cur.seek(cur.pos() - ws);
-            cur.fail("a material number in 1.." + std::to_string(nparts) + " for solid " + std::to_string(e + 1) +
-                         ", found " + std::to_string(m),
-                     -1);
-        }
-        g.hex_material[static_cast<std::size_t>(e)] = static_cast<int>(m);
+    };
+    read_block(nel8, 8, 8, "solid", g.hex_nodes, g.hex_material);
+    read_block(c.nelt, 8, 8, "thick shell", g.tshell_nodes, g.tshell_material);
+    read_block(c.nel2, 5, 2, "beam", g.beam_nodes, g.beam_material);
+    read_block(c.nel4, 4, 4, "shell", g.shell_nodes, g.shell_material);
+    if (rigid_shells_ > 0) {
+        std::int64_t rigid = 0;
+        for (int m : g.shell_material)
+            if (g.part_types[static_cast<std::size_t>(m - 1)] == kRigidPartType) ++rigid;
+        if (rigid != rigid_shells_)
+            unsupported(f, "NUMRBE " + std::to_string(rigid_shells_) + " rigid shells, but " + std::to_string(rigid) +
+                               " shells belong to parts of material type 20");
     }
     g.num_materials = static_cast<int>(nparts);
     {
         // after the per-part block: NUMRW rigid-wall words, then 3 words per sliding interface
         // (control word 63, ours); a word 63 that does not fit is not ours: all are walls.
+        // LS-DYNA from VERSION 971 on writes 4 words per wall: the force, then its x y z position.
         const std::int64_t extra_globals = c.nglbv - 6 - 7 * nparts;
         const std::int64_t nif = (c.nintf > 0 && c.nintf <= 100000 && c.nintf <= extra_globals / 3) ? c.nintf : 0;
         g.num_interfaces = static_cast<int>(nif);
-        g.num_rigid_walls = extra_globals > 0 ? static_cast<int>(extra_globals - 3 * nif) : 0;
+        const std::int64_t wall_words = extra_globals - 3 * nif;
+        g.num_rigid_walls = extra_globals <= 0 ? 0 : static_cast<int>(c.version >= 971.0 && nif == 0 ? wall_words / 4 : wall_words);
     }
 
-    // ---- NARBS user-id section
+    // ---- NARBS user-id section: nodes, solids, beams, shells, thick shells, parts
+    auto sequential = [](std::vector<int>& ids, std::int64_t n) {
+        ids.resize(static_cast<std::size_t>(n));
+        for (std::int64_t k = 0; k < n; ++k) ids[static_cast<std::size_t>(k)] = static_cast<int>(k + 1);
+    };
     if (c.narbs > 0) {
         cur.need_words(c.narbs, "the user-id (NARBS) section of " + std::to_string(c.narbs) + " words");
         const std::int64_t start = cur.pos();
         const std::int64_t nsort = cur.i("NSORT");
         const std::int64_t hdr = nsort < 0 ? 16 : 10;
-        const std::int64_t ids = checked_add(hdr, checked_add(numnp, nel8, f), f);
+        std::int64_t ids = checked_add(hdr, checked_add(numnp, nel8, f), f);
+        ids = checked_add(ids, c.nel2 + c.nel4 + c.nelt, f);
         if (ids > c.narbs)
             cur.fail("a user-id section of at least " + std::to_string(ids) + " words (NARBS = " +
                          std::to_string(c.narbs) + ")",
@@ -870,61 +1038,83 @@ void PlotReader::open(const std::string& root_path) {
             return static_cast<int>(std::clamp<std::int64_t>(v, std::numeric_limits<int>::min(),
                                                              std::numeric_limits<int>::max()));
         };
-        g.node_user_ids.resize(static_cast<std::size_t>(numnp));
-        for (auto& id : g.node_user_ids) id = to_int(cur.i("user node id"));
-        g.hex_user_ids.resize(static_cast<std::size_t>(nel8));
-        for (auto& id : g.hex_user_ids) id = to_int(cur.i("user solid id"));
+        auto read_ids = [&](std::vector<int>& out, std::int64_t n, const char* what) {
+            out.resize(static_cast<std::size_t>(n));
+            for (auto& id : out) id = to_int(cur.i(what));
+        };
+        read_ids(g.node_user_ids, numnp, "user node id");
+        read_ids(g.hex_user_ids, nel8, "user solid id");
+        read_ids(g.beam_user_ids, c.nel2, "user beam id");
+        read_ids(g.shell_user_ids, c.nel4, "user shell id");
+        read_ids(g.tshell_user_ids, c.nelt, "user thick shell id");
         if (nsort < 0 && ids + 3 * nparts <= c.narbs) {
             cur.skip_words(nparts, "NORDER");
-            g.part_user_ids.resize(static_cast<std::size_t>(nparts));
-            for (auto& id : g.part_user_ids) id = to_int(cur.i("user part id"));
+            read_ids(g.part_user_ids, nparts, "user part id");
         }
         cur.seek(start + c.narbs * ws);
     } else {
-        for (std::int64_t n = 1; n <= numnp; ++n) g.node_user_ids.push_back(static_cast<int>(n));
-        for (std::int64_t e = 1; e <= nel8; ++e) g.hex_user_ids.push_back(static_cast<int>(e));
+        sequential(g.node_user_ids, numnp);
+        sequential(g.hex_user_ids, nel8);
+        sequential(g.beam_user_ids, c.nel2);
+        sequential(g.shell_user_ids, c.nel4);
+        sequential(g.tshell_user_ids, c.nelt);
     }
-    if (g.part_user_ids.empty() && nparts <= cur.remaining() + 1000000)
-        for (std::int64_t p = 1; p <= nparts; ++p) g.part_user_ids.push_back(static_cast<int>(p));
+    if (g.part_user_ids.empty() && nparts <= cur.remaining() + 1000000) sequential(g.part_user_ids, nparts);
     static_end_ = cur.pos();
 
-    // ---- marker, title records, marker
+    // ---- marker, title records (part titles by part id), marker
     if (cur.has(ws) && cur.r("end marker") == kEndMarker) {
         while (cur.has(ws)) {
             const std::int64_t at = cur.pos();
             const std::int64_t code = cur.i("title record code");
-            if (code == 90001) {
-                const std::int64_t nprop = cur.i("number of part titles");
+            if (code == 90001 || code == 90002 || code == 90020) {
+                const std::int64_t nprop = cur.i("number of title records");
                 if (nprop < 0 || nprop > cur.remaining()) {
                     cur.seek(at + ws);
-                    cur.fail("a plausible number of part titles, found " + std::to_string(nprop), -1);
+                    cur.fail("a plausible number of title records, found " + std::to_string(nprop), -1);
                 }
-                cur.need(checked_mul(nprop, ws + kTitleRecordBytes, f),
-                         std::to_string(nprop) + " part title records");
-                std::vector<std::string> titles;
+                cur.need(checked_mul(nprop, ws + kTitleRecordBytes, f), std::to_string(nprop) + " title records");
+                std::vector<std::pair<std::int64_t, std::string>> titles;
                 for (std::int64_t p = 0; p < nprop; ++p) {
-                    cur.i("part id");
-                    titles.push_back(trim_right(cur.text(kTitleRecordBytes, "part title")));
+                    const std::int64_t id = cur.i("part id");
+                    titles.emplace_back(id, trim_right(cur.text(kTitleRecordBytes, "part title")));
                 }
-                g.part_titles = std::move(titles);
+                if (code == 90001) {
+                    // by user part id; titles of ids that are no part are dropped
+                    g.part_titles.assign(static_cast<std::size_t>(nparts), std::string());
+                    for (std::size_t k = 0; k < titles.size(); ++k) {
+                        const auto it = std::find(g.part_user_ids.begin(), g.part_user_ids.end(), titles[k].first);
+                        if (it != g.part_user_ids.end()) g.part_titles[static_cast<std::size_t>(it - g.part_user_ids.begin())] = titles[k].second;
+                        else if (static_cast<std::int64_t>(titles.size()) == nparts) g.part_titles[k] = titles[k].second;
+                    }
+                }
             } else if (code == 90000) {
                 g.title = trim_right(cur.text(kTitleRecordBytes, "model title record"));
+            } else if (code == 90100) {
+                const std::int64_t nline = cur.i("number of d3prop lines");
+                if (nline < 0 || nline > cur.remaining() / 80) break;
+                cur.need(nline * 80, "d3prop keyword lines");
+                cur.seek(cur.pos() + nline * 80);
             } else {
-                break;  // end marker, contact titles (90002), padding, ...: done
+                break;  // end marker, padding, ...: done
             }
         }
     }
 
     // ---- state size and family scan
-    std::int64_t nodal = checked_mul(numnp, c.it + 3 * (c.iu + c.iv + c.ia), f);
-    std::int64_t words = checked_add(1 + c.nglbv, nodal, f);
+    const NodeWords nw = node_words(c);
+    std::int64_t words = checked_add(1 + c.nglbv, checked_mul(numnp, nw.total(), f), f);
+    words = checked_add(words, checked_mul(nel8, c.nt3d, f), f);
     words = checked_add(words, checked_mul(nel8, c.nv3d, f), f);
-    if (c.maxint < -10000) words = checked_add(words, nel8, f);
+    words = checked_add(words, checked_mul(c.nelt, c.nv3dt, f), f);
+    words = checked_add(words, checked_mul(c.nel2, c.nv1d, f), f);
+    words = checked_add(words, checked_mul(c.nel4 - rigid_shells_, c.nv2d, f), f);
+    if (c.maxint < -10000) words = checked_add(words, nel8 + c.nelt + c.nel4 + c.nel2, f);
     else if (c.maxint < 0) words = checked_add(words, numnp, f);
     state_bytes_ = checked_mul(words, ws, f);
     ctl_ = c;
     geom_ = std::move(g);
-
+    layout_ = layout;
     auto word_at = [&](const char* p) {
         char tmp[8];
         std::memcpy(tmp, p, ws);
@@ -1022,6 +1212,11 @@ PlotState PlotReader::state(int i) const {
         take(s.mat_hourglass_energy, nm);
         const std::size_t nif = 3 * static_cast<std::size_t>(geom_.num_interfaces);
         s.rigid_wall_forces.assign(it, glob.end() - static_cast<std::ptrdiff_t>(nif));
+        if (c.version >= 971.0 && nif == 0) {  // force, x, y, z per wall: the forces
+            std::vector<double> f(static_cast<std::size_t>(geom_.num_rigid_walls));
+            for (std::size_t k = 0; k < f.size(); ++k) f[k] = s.rigid_wall_forces[4 * k];
+            s.rigid_wall_forces = std::move(f);
+        }
         s.interface_forces.assign(glob.end() - static_cast<std::ptrdiff_t>(nif), glob.end());
     }
     const std::size_t nn = static_cast<std::size_t>(c.numnp), ne = static_cast<std::size_t>(c.nel8);
@@ -1029,22 +1224,63 @@ PlotState PlotReader::state(int i) const {
         v.resize(n);
         for (auto& x : v) x = cur.r(what);
     };
-    if (c.iu) read_vec(s.coords, 3 * nn, "current coordinates");
-    if (c.it) cur.skip_words(static_cast<std::int64_t>(nn), "temperatures");
-    if (c.iv) read_vec(s.vel, 3 * nn, "velocities");
-    if (c.ia) read_vec(s.acc, 3 * nn, "accelerations");
-    s.stress.resize(6 * ne);
-    s.eps.resize(ne);
-    for (std::size_t e = 0; e < ne; ++e) {
-        for (int k = 0; k < 6; ++k) s.stress[6 * e + k] = cur.r("solid stress");
-        s.eps[e] = cur.r("solid effective plastic strain");
-        cur.skip_words(c.neiph, "solid history variables");
+    // ---- nodes: coordinates, temperatures, flux, mass scaling, dT/dt, residuals, velocities, accelerations
+    const NodeWords nw = node_words(c);
+    if (nw.coords) read_vec(s.coords, 3 * nn, "current coordinates");
+    if (nw.temps == 1) {
+        read_vec(s.temperature, nn, "temperatures");
+    } else if (nw.temps == 3) {  // IT 3: inner, middle, outer arrays (the manual): the middle one
+        cur.skip_words(static_cast<std::int64_t>(nn), "inner-layer temperatures");
+        read_vec(s.temperature, nn, "middle-layer temperatures");
+        cur.skip_words(static_cast<std::int64_t>(nn), "outer-layer temperatures");
     }
+    cur.skip_words(static_cast<std::int64_t>(nn) * (nw.flux + nw.mass_scaling + nw.temp_rate + nw.residual),
+                   "heat flux, mass scaling, dT/dt and residual node values");
+    if (nw.vel) read_vec(s.vel, 3 * nn, "velocities");
+    if (nw.acc) read_vec(s.acc, 3 * nn, "accelerations");
+    cur.skip_words(static_cast<std::int64_t>(ne) * c.nt3d, "thermal solid data (NT3D)");
+    // ---- solids: stress and EPS (means over the integration points), raw records when longer
+    const PlotLayout& L = layout_;
+    s.stress.assign(6 * ne, 0.0);
+    s.eps.assign(ne, 0.0);
+    if (c.nv3d > 7) read_vec(s.solid_vars, ne * static_cast<std::size_t>(c.nv3d), "solid record");
+    for (std::size_t e = 0; e < ne; ++e) {
+        if (c.nv3d > 7) {
+            const double* rec = &s.solid_vars[e * static_cast<std::size_t>(c.nv3d)];
+            for (int p = 0; p < L.solid_points; ++p) {
+                const double* v = rec + p * L.solid_point_words;
+                for (int k = 0; k < 6; ++k) s.stress[6 * e + k] += v[k] / L.solid_points;
+                s.eps[e] += v[6] / L.solid_points;
+            }
+        } else {
+            for (int k = 0; k < 6; ++k) s.stress[6 * e + k] = cur.r("solid stress");
+            s.eps[e] = cur.r("solid effective plastic strain");
+        }
+    }
+    // ---- thick shells, beams, shells: raw records (rigid shells of NDIM 5: no data, zeros)
+    read_vec(s.tshell_vars, static_cast<std::size_t>(c.nelt * c.nv3dt), "thick shell record");
+    read_vec(s.beam_vars, static_cast<std::size_t>(c.nel2 * c.nv1d), "beam record");
+    const std::size_t ns = static_cast<std::size_t>(c.nel4), nv2d = static_cast<std::size_t>(c.nv2d);
+    s.shell_vars.assign(ns * nv2d, 0.0);
+    for (std::size_t e = 0; e < ns && nv2d > 0; ++e) {
+        if (rigid_shells_ > 0 &&
+            geom_.part_types[static_cast<std::size_t>(geom_.shell_material[e] - 1)] == kRigidPartType)
+            continue;
+        for (std::size_t k = 0; k < nv2d; ++k) s.shell_vars[e * nv2d + k] = cur.r("shell record");
+    }
+    // ---- deletion flags: solids, thick shells, shells, beams (0.0 = deleted)
+    auto read_alive = [&](std::vector<unsigned char>& a, std::size_t n) {
+        a.resize(n);
+        for (auto& x : a) x = cur.r("element deletion flag") != 0.0 ? 1 : 0;
+    };
     s.alive.assign(ne, 1);
     if (c.maxint < -10000) {
-        for (std::size_t e = 0; e < ne; ++e) s.alive[e] = cur.r("element deletion flag") != 0.0 ? 1 : 0;
+        read_alive(s.alive, ne);
+        read_alive(s.tshell_alive, static_cast<std::size_t>(c.nelt));
+        read_alive(s.shell_alive, ns);
+        read_alive(s.beam_alive, static_cast<std::size_t>(c.nel2));
     } else if (c.maxint < 0) {
-        cur.skip_words(static_cast<std::int64_t>(nn), "node deletion flags");
+        read_alive(s.node_alive, nn);
     }
     return s;
 }

@@ -1,4 +1,6 @@
-// Plot state database (d3plot family: DYNA3D / TAURUS / LS-DYNA "plot" files), solids only.
+// Plot state database (d3plot family: DYNA3D / TAURUS / LS-DYNA "plot" files).  The writer
+// writes 8-node solids; the reader reads what LS-DYNA writes for solids, thick shells, beams and
+// shells (see PlotReader).
 //
 // Layout written (see shared/spec/plot-database.md, section 8, the recipe that VTK's
 // vtkLSDynaReader and lasso-python both read):
@@ -47,8 +49,25 @@ struct PlotGeometry {
     std::vector<std::string> part_titles;  // num_materials titles (<= 72 chars), or empty ("part N")
     std::vector<int> part_user_ids;        // num_materials user part ids, strictly ascending, or empty (= 1..n)
 
+    // ---- Further element families (filled by PlotReader from LS-DYNA databases; PlotWriter
+    //      writes solids only and refuses a geometry that has any of these).  Nodes 0-based,
+    //      materials 1-based in the same 1..num_materials numbering as the solids.
+    std::vector<int> tshell_nodes;         // 8*nelt, thick shells (hexahedron node order)
+    std::vector<int> tshell_material;      // nelt
+    std::vector<int> tshell_user_ids;      // nelt
+    std::vector<int> beam_nodes;           // 2*nel2, the two end nodes
+    std::vector<int> beam_material;        // nel2
+    std::vector<int> beam_user_ids;        // nel2
+    std::vector<int> shell_nodes;          // 4*nel4 (n3 == n4: triangle)
+    std::vector<int> shell_material;       // nel4
+    std::vector<int> shell_user_ids;       // nel4
+    std::vector<int> part_types;           // NDIM 5: LS-DYNA material type per part (20 = rigid), else empty
+
     int num_nodes() const { return static_cast<int>(x0.size() / 3); }
     int num_hexes() const { return static_cast<int>(hex_material.size()); }
+    int num_tshells() const { return static_cast<int>(tshell_material.size()); }
+    int num_beams() const { return static_cast<int>(beam_material.size()); }
+    int num_shells() const { return static_cast<int>(shell_material.size()); }
 };
 
 // One output time.  Global words are written in the spec's NGLBV = 6 + 7*NMMAT + NUMRW order,
@@ -79,6 +98,40 @@ struct PlotState {
     std::vector<double> stress;                // 6*numelh: xx yy zz xy yz zx per solid
     std::vector<double> eps;                   // numelh effective plastic strain
     std::vector<unsigned char> alive;          // numelh element deletion flags, 1 = alive, 0 = deleted
+
+    // ---- Read only (PlotReader; the writer ignores them).  Empty when the database has none.
+    // Record layouts: PlotLayout.  Solids with several integration points: stress and eps above
+    // are the means over the points, solid_vars holds every point.
+    std::vector<double> temperature;           // numnp nodal temperatures (IT 3: the middle-layer array)
+    std::vector<double> solid_vars;            // NV3D*numelh raw solid records, only when NV3D > 7
+    std::vector<double> tshell_vars;           // NV3DT*nelt raw thick-shell records
+    std::vector<double> beam_vars;             // NV1D*nel2 raw beam records
+    std::vector<double> shell_vars;            // NV2D*nel4 raw shell records (rigid shells: zeros)
+    std::vector<unsigned char> tshell_alive;   // nelt, 1/0 (empty: all alive)
+    std::vector<unsigned char> beam_alive;     // nel2
+    std::vector<unsigned char> shell_alive;    // nel4
+    std::vector<unsigned char> node_alive;     // numnp (MDLOPT 1 databases only)
+};
+
+// Where the values lie in one element record of a state (derived by PlotReader from the control
+// words, checked against NV3D / NV3DT / NV1D / NV2D).  Offsets in words from the record start;
+// -1 = not in the database.
+struct PlotLayout {
+    // solids: solid_points blocks of solid_point_words: 6 stresses, EPS, NEIPH history values
+    int solid_points = 1, solid_point_words = 7, solid_history = 0;
+    // shells and thick shells: `layers` blocks (through the thickness, in the manual's order:
+    // the mid surface, the inner surface, the outer surface, then the further integration
+    // points when MAXINT > 3) of layer_words: [6 stresses] [EPS] [NEIPS history]; then the
+    // non-layer words.
+    int layers = 0, layer_words = 0, layer_stress = -1, layer_eps = -1, layer_history = -1;
+    int shell_forces = -1;           // 8 resultants: Mxx Myy Mxy, Qyz Qzx, Nxx Nyy Nxy (per unit width)
+    int shell_thickness = -1;        // current thickness (then 2 element-dependent words)
+    int shell_strain = -1;           // 12 strains: inner surface xx yy zz xy yz zx, then outer
+    int shell_internal_energy = -1;  // internal energy density
+    int tshell_strain = -1;          // 12 strains (inner, outer) after the thick-shell layers
+    // beams: 6 resultants (axial force, shear s, shear t, moment s, moment t, torsion), then
+    // beam_points blocks of 5 (axial stress, shear stress rs, tr, plastic strain, axial strain)
+    int beam_points = 0, beam_history = 0;
 };
 
 // Control words of a d3plot root file, as read (any LS-DYNA d3plot, not only ours).
@@ -97,6 +150,9 @@ struct PlotControl {
     std::int64_t ialemat = 0, ncfdv1 = 0, ncfdv2 = 0, nadapt = 0, nmmat = 0, numfluid = 0;
     std::int64_t inn = 0, npefg = 0, nel48 = 0, idtdt = 0, extra = 0;
     std::int64_t nintf = 0;     // word 63: IMPACT-3D sliding interfaces in the globals (0 elsewhere)
+    // EXTRA words 64.. (zero when EXTRA = 0)
+    std::int64_t nel20 = 0, nt3d = 0, nel27 = 0, neipb = 0, nel21p = 0, nel15t = 0, soleng = 0;
+    std::int64_t nel20t = 0, nel40p = 0, nel64 = 0, quadr = 0, cubic = 0, tsheng = 0;
 };
 
 class PlotWriter {
@@ -164,14 +220,20 @@ public:
     static PlotControl read_control(const std::string& root_path);
 
     // Reads control words, geometry, user ids and titles, then scans the family for states.
-    // Refuses (std::runtime_error with a clear message) databases with features this reader does
-    // not support: shells, beams, thick shells, tets, SPH, ALE, extra/Gauss-point solid data,...
+    // Reads 8-node solids (1 or 8 integration points, NEIPH history values), thick shells,
+    // beams (resultants and integration points), shells (MAXINT layers, NEIPS, resultants,
+    // strains), nodal temperatures (IT), mass scaling and IDTDT node words, element or node
+    // deletion flags, NDIM 4 or 5 (rigid shells without data), NARBS user ids, part titles.
+    // Refuses (std::runtime_error naming the file and the control word) femzip-compressed
+    // databases and features it does not read: 10-node tets, higher-order solids, 8-node
+    // shells, SPH, ALE, airbags, CFD, adaptivity, rigid-body data, thermal solid data (NT3D).
     // Never crashes on truncated or corrupt input: every read is bounds-checked.  An incomplete
     // trailing state at the end of the last member (a killed run) is ignored.
     void open(const std::string& root_path);
 
     const PlotControl& control() const { return ctl_; }
     const PlotGeometry& geometry() const { return geom_; }
+    const PlotLayout& layout() const { return layout_; }
     int num_states() const { return static_cast<int>(states_.size()); }
     double time(int i) const;     // time of state i (from the scan)
     PlotState state(int i) const; // throws std::out_of_range / std::runtime_error
@@ -182,6 +244,8 @@ private:
     std::string root_;
     PlotControl ctl_;
     PlotGeometry geom_;
+    PlotLayout layout_;
+    std::int64_t rigid_shells_ = 0;  // NDIM 5: shells with no state data (parts of type 20)
     std::vector<StateLoc> states_;
     std::int64_t state_bytes_ = 0;
     std::int64_t static_end_ = 0;  // byte offset in the root file where state scanning starts

@@ -204,7 +204,12 @@ void Session::execute(const std::vector<std::string>& w, const std::string& wher
             db_ = std::make_unique<Database>(w[1]);
             state_ = -1;
             log_ << "opened " << w[1] << ": " << db_->geometry().num_nodes() << " nodes, "
-                 << db_->geometry().num_hexes() << " solids, " << db_->num_states() << " states\n";
+                 << db_->geometry().num_hexes() << " solids, ";
+            const auto& g = db_->geometry();
+            if (g.num_tshells()) log_ << g.num_tshells() << " thick shells, ";
+            if (g.num_beams()) log_ << g.num_beams() << " beams, ";
+            if (g.num_shells()) log_ << g.num_shells() << " shells, ";
+            log_ << db_->num_states() << " states\n";
         } else if (c == "outdir") {
             need(1, 1, "outdir DIR");
             outdir_ = w[1];
@@ -244,7 +249,10 @@ void Session::execute(const std::vector<std::string>& w, const std::string& wher
             Quantity q;
             if (w[1] != "none" && w[1] != "material" && !find_quantity(w[1], q))
                 throw CommandError("fringe: unknown quantity '" + w[1] + "' (none material " + quantity_keys() + ")");
-            ps_.fringe = (w[1] == "none" || w[1] == "material") ? w[1] : q.key;
+            // the normalized key, with its "@surface" / "@ipK" suffix
+            const auto at = w[1].find('@');
+            ps_.fringe = (w[1] == "none" || w[1] == "material") ? w[1]
+                                                                 : q.key + (at != std::string::npos ? w[1].substr(at) : std::string());
         } else if (c == "range") {
             need(1, 2, "range auto | range MIN MAX");
             if (na == 1 && w[1] == "auto") ps_.range_auto = true;

@@ -10,10 +10,12 @@
 #include <vector>
 
 #include "postimpact/database.h"
+#include "postimpact/elements.h"
+#include "postimpact/quantities.h"
 
 namespace postimpact {
 
-const char* const Tolerances::kFields[9] = {"time", "coords", "vel", "acc", "stress", "eps", "energy", "force", "mass"};
+const char* const Tolerances::kFields[10] = {"time", "coords", "vel", "acc", "stress", "eps", "energy", "force", "mass", "temp"};
 
 Tolerance Tolerances::get(const std::string& f) const {
     if (auto it = field.find(f); it != field.end()) return it->second;
@@ -54,7 +56,7 @@ Tolerances Tolerances::parse(const std::string& text, const std::string& name) {
             });
         };
         const bool known = is_field(f) || (f.rfind("summary.", 0) == 0 && is_key(f.substr(8)));
-        if (!known) fail("unknown field '" + f + "' (time coords vel acc stress eps energy force mass cycles default, summary.FIELD, summary.KEY)");
+        if (!known) fail("unknown field '" + f + "' (time coords vel acc stress eps energy force mass temp cycles default, summary.FIELD, summary.KEY)");
         Tolerance tol;
         bool have_rel = false, have_abs = false;
         std::vector<std::string> pos;
@@ -156,11 +158,43 @@ int compare_databases(const std::string& pa, const std::string& pb, const Compar
     const auto& gb = B->geometry();
     out << "compare: A = " << pa << " (" << A->num_states() << " states)\n"
         << "         B = " << pb << " (" << B->num_states() << " states)\n";
-    if (ga.num_nodes() != gb.num_nodes() || ga.num_hexes() != gb.num_hexes() || ga.num_materials != gb.num_materials) {
+    if (ga.num_nodes() != gb.num_nodes() || ga.num_hexes() != gb.num_hexes() || ga.num_materials != gb.num_materials ||
+        ga.num_tshells() != gb.num_tshells() || ga.num_beams() != gb.num_beams() || ga.num_shells() != gb.num_shells()) {
         out << "compare: the meshes differ: A has " << ga.num_nodes() << " nodes, " << ga.num_hexes()
             << " solids, " << ga.num_materials << " materials; B has " << gb.num_nodes() << ", "
-            << gb.num_hexes() << ", " << gb.num_materials << "\nresult: NOT COMPARABLE\n";
+            << gb.num_hexes() << ", " << gb.num_materials;
+        if (num_elements(ga) != ga.num_hexes() || num_elements(gb) != gb.num_hexes())
+            out << " (thick shells, beams, shells: A " << ga.num_tshells() << ", " << ga.num_beams() << ", "
+                << ga.num_shells() << "; B " << gb.num_tshells() << ", " << gb.num_beams() << ", " << gb.num_shells() << ")";
+        out << "\nresult: NOT COMPARABLE\n";
         return 2;
+    }
+    // match nodes and elements (per family) by user id
+    std::vector<int> node_b(static_cast<std::size_t>(ga.num_nodes())), elem_b(static_cast<std::size_t>(num_elements(ga)));
+    {
+        std::vector<int> unmatched;
+        for (int k = 0; k < ga.num_nodes(); ++k) {
+            const int j = B->node_index(A->node_id(k));
+            node_b[static_cast<std::size_t>(k)] = j;
+            if (j < 0) unmatched.push_back(A->node_id(k));
+        }
+        std::map<std::pair<int, int>, int> b_elems;  // (family, user id) -> B element
+        for (int e = 0; e < num_elements(gb); ++e)
+            b_elems.emplace(std::make_pair(static_cast<int>(element_ref(gb, e).family), element_user_id(gb, e)), e);
+        std::vector<std::string> unmatched_elems;
+        for (int e = 0; e < num_elements(ga); ++e) {
+            const ElementRef r = element_ref(ga, e);
+            const auto it = b_elems.find({static_cast<int>(r.family), element_user_id(ga, e)});
+            elem_b[static_cast<std::size_t>(e)] = it == b_elems.end() ? -1 : it->second;
+            if (it == b_elems.end()) unmatched_elems.push_back(std::string(family_name(r.family)) + " " + std::to_string(element_user_id(ga, e)));
+        }
+        if (!unmatched.empty() || !unmatched_elems.empty()) {
+            out << "compare: the meshes differ: " << unmatched.size() << " node and " << unmatched_elems.size()
+                << " element user id(s) of A are not in B (first: "
+                << (unmatched.empty() ? unmatched_elems.front() : "node " + std::to_string(unmatched.front()))
+                << ")\nresult: NOT COMPARABLE\n";
+            return 2;
+        }
     }
     if (ga.num_rigid_walls != gb.num_rigid_walls || ga.num_interfaces != gb.num_interfaces) {
         out << "compare: the global blocks differ: A has " << ga.num_rigid_walls << " rigid-wall and "
@@ -168,8 +202,17 @@ int compare_databases(const std::string& pa, const std::string& pb, const Compar
             << gb.num_interfaces << "\nresult: NOT COMPARABLE\n";
         return 2;
     }
-    if (ga.hex_nodes != gb.hex_nodes)
-        out << "compare: warning: the element connectivities differ\n";
+    {
+        // connectivity through the matches: A's element nodes, as B nodes, are B's element nodes
+        bool same = true;
+        for (int e = 0; e < num_elements(ga) && same; ++e) {
+            int ca = 0, cb = 0;
+            const int* na = element_nodes(ga, e, ca);
+            const int* nb = element_nodes(gb, elem_b[static_cast<std::size_t>(e)], cb);
+            for (int k = 0; k < ca && same; ++k) same = node_b[static_cast<std::size_t>(na[k])] == nb[k];
+        }
+        if (!same) out << "compare: warning: the element connectivities differ\n";
+    }
     const std::size_t keep = static_cast<std::size_t>(std::max(opt.report, 0));
     std::vector<FieldStats> fs;
     for (const char* f : Tolerances::kFields) fs.push_back(FieldStats{f, opt.tol.get(f), 0, 0, {}, {}, {}});
@@ -185,20 +228,37 @@ int compare_databases(const std::string& pa, const std::string& pb, const Compar
         const impact3d::PlotState sa = A->state(i);  // copies: the cache may be trimmed
         const impact3d::PlotState sb = B->state(i);
         add(F("time"), Diff{0, sa.time, sb.time, 0, 0, i, 0, "", ""}, keep);
-        auto nodal = [&](const char* field, const std::vector<double>& a, const std::vector<double>& b) {
+        auto nodal = [&](const char* field, const std::vector<double>& a, const std::vector<double>& b, int per) {
             if (a.empty() || b.empty() || a.size() != b.size()) return;
-            for (std::size_t k = 0; k < a.size(); ++k)
-                add(F(field), Diff{0, a[k], b[k], 0, 0, i, A->node_id(static_cast<int>(k / 3)), "node", xyz[k % 3]}, keep);
+            for (std::size_t k = 0; k < a.size(); ++k) {
+                const std::size_t kb = per * static_cast<std::size_t>(node_b[k / per]) + k % per;
+                add(F(field), Diff{0, a[k], b[kb], 0, 0, i, A->node_id(static_cast<int>(k / per)), "node", per == 3 ? xyz[k % 3] : ""}, keep);
+            }
         };
-        nodal("coords", sa.coords, sb.coords);
-        nodal("vel", sa.vel, sb.vel);
-        nodal("acc", sa.acc, sb.acc);
+        nodal("coords", sa.coords, sb.coords, 3);
+        nodal("vel", sa.vel, sb.vel, 3);
+        nodal("acc", sa.acc, sb.acc, 3);
+        nodal("temp", sa.temperature, sb.temperature, 1);
+        const std::size_t nh = static_cast<std::size_t>(ga.num_hexes());
         if (sa.stress.size() == sb.stress.size())
             for (std::size_t k = 0; k < sa.stress.size(); ++k)
-                add(F("stress"), Diff{0, sa.stress[k], sb.stress[k], 0, 0, i, A->element_id(static_cast<int>(k / 6)), "elem", sc[k % 6]}, keep);
+                add(F("stress"), Diff{0, sa.stress[k], sb.stress[6 * static_cast<std::size_t>(elem_b[k / 6]) + k % 6], 0, 0, i, A->element_id(static_cast<int>(k / 6)), "elem", sc[k % 6]}, keep);
         if (sa.eps.size() == sb.eps.size())
             for (std::size_t k = 0; k < sa.eps.size(); ++k)
-                add(F("eps"), Diff{0, sa.eps[k], sb.eps[k], 0, 0, i, A->element_id(static_cast<int>(k)), "elem", ""}, keep);
+                add(F("eps"), Diff{0, sa.eps[k], sb.eps[static_cast<std::size_t>(elem_b[k])], 0, 0, i, A->element_id(static_cast<int>(k)), "elem", ""}, keep);
+        // thick shells, beams, shells: middle-surface stresses and EPS (beams: mean over the points)
+        for (int e = static_cast<int>(nh); e < num_elements(ga); ++e) {
+            const int eb = elem_b[static_cast<std::size_t>(e)];
+            const std::string what = family_name(element_ref(ga, e).family);
+            for (int c = 0; c < 7; ++c) {
+                Quantity q;
+                find_quantity(c < 6 ? sc[c] : "eps", q);
+                add(F(c < 6 ? "stress" : "eps"),
+                    Diff{0, element_value(q, ga, A->layout(), sa, e), element_value(q, gb, B->layout(), sb, eb), 0, 0, i,
+                         A->element_id(e), what, c < 6 ? sc[c] : ""},
+                    keep);
+            }
+        }
         add(F("energy"), Diff{0, sa.kinetic_energy, sb.kinetic_energy, 0, 0, i, 0, "", "kinetic"}, keep);
         add(F("energy"), Diff{0, sa.internal_energy, sb.internal_energy, 0, 0, i, 0, "", "internal"}, keep);
         add(F("energy"), Diff{0, sa.total_energy, sb.total_energy, 0, 0, i, 0, "", "total"}, keep);
@@ -226,12 +286,13 @@ int compare_databases(const std::string& pa, const std::string& pb, const Compar
         if (sa.interface_forces.size() == sb.interface_forces.size())
             for (std::size_t k = 0; k < sa.interface_forces.size(); ++k)
                 add(F("force"), Diff{0, sa.interface_forces[k], sb.interface_forces[k], 0, 0, i, static_cast<int>(k / 3 + 1), "interface", xyz[k % 3]}, keep);
-        // element deletion flags must agree
-        if (sa.alive != sb.alive && !(sa.alive.empty() || sb.alive.empty())) {
-            for (std::size_t k = 0; k < sa.alive.size(); ++k)
-                if (sa.alive[k] != sb.alive[k])
-                    add(F("eps"), Diff{0, static_cast<double>(sa.alive[k]), static_cast<double>(sb.alive[k]), 0, 0, i,
-                                       A->element_id(static_cast<int>(k)), "elem", "alive"}, keep);
+        // element deletion flags must agree (every family)
+        for (int e = 0; e < num_elements(ga); ++e) {
+            const bool la = element_alive(sa, ga, e), lb = element_alive(sb, gb, elem_b[static_cast<std::size_t>(e)]);
+            if (la != lb)
+                add(F("eps"), Diff{0, la ? 1.0 : 0.0, lb ? 1.0 : 0.0, 0, 0, i, A->element_id(e),
+                                   e < static_cast<int>(nh) ? std::string("elem") : std::string(family_name(element_ref(ga, e).family)),
+                                   "alive"}, keep);
         }
     }
     char line[512];
@@ -243,6 +304,7 @@ int compare_databases(const std::string& pa, const std::string& pb, const Compar
     std::vector<std::pair<std::string, Diff>> all_worst;
     for (auto& f : fs) {
         if (f.compared == 0) {
+            if (f.name == "temp") continue;  // (a row only for databases with temperatures)
             std::snprintf(line, sizeof line, "%-7s %10s %10s  %12s  %12s  %10s\n", f.name.c_str(), g(f.tol.rel).c_str(),
                           g(f.tol.abs).c_str(), "-", "-", "-");
             out << line;

@@ -14,7 +14,7 @@ struct Tolerance {
 };
 
 // Fields: time, coords, vel, acc, stress, eps, energy (kinetic, internal, total, and the
-// per-material energies).  A value passes when |a - b| <= abs + rel * max(|a|, |b|).
+// per-material energies), force, mass, temp (nodal temperatures).  A value passes when |a - b| <= abs + rel * max(|a|, |b|).
 struct Tolerances {
     std::map<std::string, Tolerance> field;
     Tolerance get(const std::string& f) const;
@@ -24,7 +24,7 @@ struct Tolerances {
     // Throws std::runtime_error (file:line: message).
     static Tolerances read(const std::string& path);
     static Tolerances parse(const std::string& text, const std::string& name = "tolerances");
-    static const char* const kFields[9];
+    static const char* const kFields[10];
 };
 
 struct CompareOptions {
@@ -32,8 +32,13 @@ struct CompareOptions {
     int report = 10;  // largest out-of-tolerance differences listed
 };
 
+// Nodes and elements are matched by user id (per element family), so two databases of the same
+// model written in different orders (ours and LS-DYNA's) compare.  Shells, thick shells and
+// beams: the stresses and EPS at the middle surface (beams: axial and shear stresses, plastic
+// strain), element deletion flags of every family.
 // Returns 0 when every compared value is within tolerance and the databases have the same
-// states, 1 when not, 2 when they cannot be compared (unreadable, different mesh sizes).
+// states, 1 when not, 2 when they cannot be compared (unreadable, different node or element
+// user ids, different numbers of parts).
 int compare_databases(const std::string& a, const std::string& b, const CompareOptions& opt,
                       std::ostream& out);
 

@@ -1,18 +1,22 @@
 #include "postimpact/database.h"
 
+#include "postimpact/elements.h"
+
 namespace postimpact {
 
 Database::Database(const std::string& root) : root_(root) {
     reader_.open(root);
     const auto& g = reader_.geometry();
     for (std::size_t i = 0; i < g.node_user_ids.size(); ++i) node_lookup_.emplace(g.node_user_ids[i], static_cast<int>(i));
-    for (std::size_t i = 0; i < g.hex_user_ids.size(); ++i) elem_lookup_.emplace(g.hex_user_ids[i], static_cast<int>(i));
+    for (int e = 0; e < num_elements(g); ++e) elem_lookup_.emplace(element_user_id(g, e), e);  // first one kept
 }
 
 const impact3d::PlotState& Database::state(int i) {
     if (auto it = cache_.find(i); it != cache_.end()) return it->second;
     impact3d::PlotState s = reader_.state(i);
-    const std::size_t bytes = 8 * (s.coords.size() + s.vel.size() + s.acc.size() + s.stress.size() + s.eps.size());
+    const std::size_t bytes = 8 * (s.coords.size() + s.vel.size() + s.acc.size() + s.stress.size() + s.eps.size() +
+                                   s.temperature.size() + s.solid_vars.size() + s.tshell_vars.size() +
+                                   s.beam_vars.size() + s.shell_vars.size());
     if (cache_bytes_ + bytes > (std::size_t{1} << 30)) {  // keep the cache under 1 GiB
         cache_.clear();
         cache_bytes_ = 0;
@@ -26,10 +30,7 @@ int Database::node_id(int index) const {
     return g.node_user_ids.empty() ? index + 1 : g.node_user_ids[index];
 }
 
-int Database::element_id(int index) const {
-    const auto& g = reader_.geometry();
-    return g.hex_user_ids.empty() ? index + 1 : g.hex_user_ids[index];
-}
+int Database::element_id(int index) const { return element_user_id(reader_.geometry(), index); }
 
 int Database::node_index(int id) const {
     const auto& g = reader_.geometry();
@@ -39,10 +40,17 @@ int Database::node_index(int id) const {
 }
 
 int Database::element_index(int id) const {
-    const auto& g = reader_.geometry();
-    if (g.hex_user_ids.empty()) return (id >= 1 && id <= g.num_hexes()) ? id - 1 : -1;
     auto it = elem_lookup_.find(id);
     return it == elem_lookup_.end() ? -1 : it->second;
+}
+
+int Database::element_index(int id, int family) const {
+    const auto& g = reader_.geometry();
+    const int first = family_offset(g, static_cast<Family>(family));
+    const int n = num_elements(g);
+    for (int e = first; e < n && element_ref(g, e).family == static_cast<Family>(family); ++e)
+        if (element_user_id(g, e) == id) return e;
+    return -1;
 }
 
 std::string Database::part_name(int material) const {

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "postimpact/elements.h"
+
 namespace postimpact {
 
 Rgb colormap(double t) {
@@ -22,16 +24,17 @@ Rgb band_color(int i, int n) {
 }
 
 std::vector<double> nodal_fringe(const Quantity& q, const impact3d::PlotGeometry& g,
-                                 const impact3d::PlotState& s) {
+                                 const impact3d::PlotState& s, const impact3d::PlotLayout& L) {
     if (q.where == Quantity::Where::Node) return node_values(q, g, s);
-    const std::vector<double> ev = element_values(q, s);
-    const int nn = g.num_nodes(), ne = g.num_hexes();
+    const std::vector<double> ev = element_values(q, g, L, s);
+    const int nn = g.num_nodes(), ne = num_elements(g);
     std::vector<double> sum(nn, 0.0);
     std::vector<int> cnt(nn, 0);
     for (int e = 0; e < ne; ++e) {
-        if (!s.alive.empty() && !s.alive[e]) continue;
-        const int* hn = &g.hex_nodes[8 * static_cast<std::size_t>(e)];
-        for (int k = 0; k < 8; ++k) {
+        if (!element_alive(s, g, e)) continue;
+        int count = 0;
+        const int* hn = element_nodes(g, e, count);
+        for (int k = 0; k < count; ++k) {
             bool dup = false;  // a degenerate element counts once per node
             for (int j = 0; j < k; ++j) dup = dup || hn[j] == hn[k];
             if (dup) continue;

@@ -23,8 +23,10 @@ struct FringeRange {
 // Fringe values on the nodes: node quantities directly; element quantities averaged over the
 // live elements around each node (smooth fringes).  Nodes with no live element get the
 // smallest value.
+// Elements of every family count (elements.h); L: the database's record layout.
 std::vector<double> nodal_fringe(const Quantity& q, const impact3d::PlotGeometry& g,
-                                 const impact3d::PlotState& s);
+                                 const impact3d::PlotState& s,
+                                 const impact3d::PlotLayout& L = impact3d::PlotLayout{});
 // Range of the values shown on the given faces: node values (smooth) or element values (flat).
 void extend_range(FringeRange& r, bool& have, const std::vector<SurfaceFace>& faces,
                   const std::vector<double>& node_vals, const std::vector<double>& elem_vals);

@@ -1,5 +1,7 @@
 #include "postimpact/history.h"
 
+#include "postimpact/elements.h"
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -49,7 +51,9 @@ std::string var_label(const HistoryCurve& c, const Database& db) {
         }
         case HistoryCurve::Kind::Material: return v + ", " + db.part_name(c.id);
         case HistoryCurve::Kind::Node: return "node " + std::to_string(c.id) + " " + v;
-        case HistoryCurve::Kind::Element: return "elem " + std::to_string(c.id) + " " + v;
+        case HistoryCurve::Kind::Element:
+            return (c.family < 0 ? std::string("elem") : std::string(family_name(static_cast<Family>(c.family)))) + " " +
+                   std::to_string(c.id) + " " + v;
         case HistoryCurve::Kind::Wall: return "wall " + std::to_string(c.id) + " " + v;
         case HistoryCurve::Kind::Interface: return "interface " + std::to_string(c.id) + " " + v;
     }
@@ -110,7 +114,13 @@ std::vector<HistoryCurve> parse_history(const std::vector<std::string>& w, const
             if (i == first)
                 throw std::invalid_argument(g + " " + std::to_string(id) + ": expected " + (wall ? "fn" : "fx fy fz fm") +
                                             (i < w.size() ? ", found '" + w[i] + "'" : std::string()));
-        } else if (g == "material" || g == "node" || g == "element" || g == "elem") {
+        } else if (g == "material" || g == "node" || g == "element" || g == "elem" || g == "solid" || g == "tshell" ||
+                   g == "beam" || g == "shell") {
+            const int family = g == "solid"    ? static_cast<int>(Family::Solid)
+                               : g == "tshell" ? static_cast<int>(Family::ThickShell)
+                               : g == "beam"   ? static_cast<int>(Family::Beam)
+                               : g == "shell"  ? static_cast<int>(Family::Shell)
+                                               : -1;
             if (i + 1 >= w.size() || !is_int(w[i + 1]))
                 throw std::invalid_argument(g + ": expected an id" + (i + 1 < w.size() ? ", found '" + w[i + 1] + "'" : std::string()));
             const int id = std::stoi(w[i + 1]);
@@ -122,8 +132,8 @@ std::vector<HistoryCurve> parse_history(const std::vector<std::string>& w, const
                 throw std::invalid_argument("material " + std::to_string(id) + " does not exist (1.." + std::to_string(nmat) + ")");
             if (kind == HistoryCurve::Kind::Node && db.node_index(id) < 0)
                 throw std::invalid_argument("node " + std::to_string(id) + " does not exist");
-            if (kind == HistoryCurve::Kind::Element && db.element_index(id) < 0)
-                throw std::invalid_argument("element " + std::to_string(id) + " does not exist");
+            if (kind == HistoryCurve::Kind::Element && (family < 0 ? db.element_index(id) : db.element_index(id, family)) < 0)
+                throw std::invalid_argument((family < 0 ? std::string("element") : g) + " " + std::to_string(id) + " does not exist");
             const std::size_t first = i;
             while (i < w.size()) {
                 const std::string& v = w[i];
@@ -136,7 +146,8 @@ std::vector<HistoryCurve> parse_history(const std::vector<std::string>& w, const
                     const bool want_elem = kind == HistoryCurve::Kind::Element;
                     if ((q.where == Quantity::Where::Element) != want_elem)
                         throw std::invalid_argument("'" + v + "' is " + (want_elem ? "a node" : "an element") + " quantity");
-                    out.push_back({kind, id, q.key});
+                    // the normalized key, with its "@surface" / "@ipK" suffix
+                    out.push_back({kind, id, q.key + (v.find('@') != std::string::npos ? v.substr(v.find('@')) : std::string()), family});
                 }
                 ++i;
             }
@@ -144,7 +155,7 @@ std::vector<HistoryCurve> parse_history(const std::vector<std::string>& w, const
                 throw std::invalid_argument(g + " " + std::to_string(id) + ": expected a variable" +
                                             (i < w.size() ? ", found '" + w[i] + "'" : std::string()));
         } else {
-            throw std::invalid_argument("history: expected energy, global, material, node, element, wall or interface, found '" + g + "'");
+            throw std::invalid_argument("history: expected energy, global, material, node, element (solid, tshell, beam, shell), wall or interface, found '" + g + "'");
         }
     }
     if (out.empty()) throw std::invalid_argument("history: no curve");
@@ -205,8 +216,12 @@ HistoryData extract_history(Database& db, const std::vector<HistoryCurve>& curve
                 case HistoryCurve::Kind::Element: {
                     Quantity q;
                     find_quantity(c.var, q);
-                    const int idx = c.kind == HistoryCurve::Kind::Node ? db.node_index(c.id) : db.element_index(c.id);
-                    v = point_value(q, g, st, idx);
+                    const int idx = c.kind == HistoryCurve::Kind::Node ? db.node_index(c.id)
+                                    : c.family >= 0                      ? db.element_index(c.id, c.family)
+                                                                         : db.element_index(c.id);
+                    v = c.kind == HistoryCurve::Kind::Element && q.where == Quantity::Where::Element
+                            ? element_value(q, g, db.layout(), st, idx)
+                            : point_value(q, g, st, idx);
                     break;
                 }
             }

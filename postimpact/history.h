@@ -17,6 +17,8 @@ struct HistoryCurve {
     std::string var;      // global: ke ie te vx vy vz; material: ie ke hg mass mx my mz;
                           // wall: fn (normal force); interface: fx fy fz fm (slave side);
                           // node / element: a quantity key (quantities.h)
+    int family = -1;      // element: an elements.h Family (groups solid, tshell, beam, shell),
+                          // -1 (group element): the first family that has the id
 };
 
 // Parses curve groups:  energy | global VAR.. | material ID VAR.. | node ID VAR.. |

@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <unordered_map>
 
+#include "postimpact/elements.h"
+
 namespace postimpact {
 
 namespace {
@@ -84,6 +86,41 @@ std::vector<SurfaceFace> exterior_faces(const impact3d::PlotGeometry& g,
     return out;
 }
 
+std::vector<SurfaceFace> model_faces(const impact3d::PlotGeometry& g, const impact3d::PlotState& s) {
+    std::vector<SurfaceFace> faces = exterior_faces(g, s.alive);
+    if (g.num_tshells() > 0) {
+        impact3d::PlotGeometry t;  // the thick shells as a hexahedron mesh of their own
+        t.x0 = g.x0;
+        t.hex_nodes = g.tshell_nodes;
+        t.hex_material = g.tshell_material;
+        const int off = family_offset(g, Family::ThickShell);
+        for (SurfaceFace f : exterior_faces(t, s.tshell_alive)) {
+            f.element += off;
+            faces.push_back(f);
+        }
+    }
+    const int nb = g.num_beams(), boff = family_offset(g, Family::Beam);
+    for (int b = 0; b < nb; ++b) {
+        if (!element_alive(s, g, boff + b)) continue;
+        SurfaceFace f;
+        f.nodes = {g.beam_nodes[2 * static_cast<std::size_t>(b)], g.beam_nodes[2 * static_cast<std::size_t>(b) + 1], -1, -1};
+        f.count = 2;
+        f.element = boff + b;
+        faces.push_back(f);
+    }
+    const int ns = g.num_shells(), soff = family_offset(g, Family::Shell);
+    for (int e = 0; e < ns; ++e) {
+        if (!element_alive(s, g, soff + e)) continue;
+        const int* n = &g.shell_nodes[4 * static_cast<std::size_t>(e)];
+        SurfaceFace f;
+        f.nodes = {n[0], n[1], n[2], n[3]};
+        f.count = n[3] == n[2] ? 3 : 4;
+        f.element = soff + e;
+        faces.push_back(f);
+    }
+    return faces;
+}
+
 Mirror parse_mirror(const std::string& s) {
     Mirror m;
     if (s == "none" || s == "off" || s.empty()) return m;
@@ -136,9 +173,10 @@ std::vector<SurfaceFace> drop_symmetry_faces(const std::vector<SurfaceFace>& fac
     }
     std::vector<SurfaceFace> out;
     out.reserve(faces.size());
+    const int volume_elements = family_offset(g, Family::Beam);  // solids and thick shells
     for (const auto& f : faces) {
         bool on_plane = false;
-        for (int a = 0; a < 3 && !on_plane; ++a) {
+        for (int a = 0; a < 3 && !on_plane && f.element < volume_elements; ++a) {
             if (!m.axis[a]) continue;
             bool all = true;
             for (int k = 0; k < f.count; ++k) all = all && std::fabs(g.x0[3 * f.nodes[k] + a]) <= tol;

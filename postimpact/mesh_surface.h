@@ -13,14 +13,19 @@ namespace postimpact {
 
 struct SurfaceFace {
     std::array<int, 4> nodes{};  // 0-based node indices, counter-clockwise seen from outside
-    int count = 4;               // 3 (triangle) or 4
-    int element = 0;             // 0-based element index
+    int count = 4;               // 3 (triangle) or 4; 2: a beam, drawn as a line
+    int element = 0;             // 0-based element index (model_faces: elements.h numbering)
 };
 
 // alive: per element 1/0, or empty (all alive).  Faces come out in a fixed order (element order,
 // then face order), so the result is deterministic.
 std::vector<SurfaceFace> exterior_faces(const impact3d::PlotGeometry& g,
                                         const std::vector<unsigned char>& alive = {});
+
+// What a picture shows of every element family of state s, live elements only, element indices
+// in the numbering of elements.h: the exterior faces of the solids and of the thick shells,
+// every shell (a quadrilateral, or a triangle when n3 == n4) and every beam (a line, count 2).
+std::vector<SurfaceFace> model_faces(const impact3d::PlotGeometry& g, const impact3d::PlotState& s);
 
 // Reflection across coordinate planes: axis k set = reflect across the plane x_k = 0.
 struct Mirror {

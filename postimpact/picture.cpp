@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "postimpact/elements.h"
 #include "postimpact/fringe.h"
 
 namespace postimpact {
@@ -53,14 +54,14 @@ Image make_picture(Database& db, const std::vector<int>& states, const PictureSe
         s.coords = st.coords.empty() ? g.x0 : st.coords;
         if (ps.deform_scale != 1.0)
             for (std::size_t i = 0; i < s.coords.size(); ++i) s.coords[i] = g.x0[i] + ps.deform_scale * (s.coords[i] - g.x0[i]);
-        s.faces = drop_symmetry_faces(exterior_faces(g, st.alive), g, ps.mirror);
+        s.faces = drop_symmetry_faces(model_faces(g, st), g, ps.mirror);
         if (has_fringe) {
-            if (flat) s.elem_vals = element_values(q, st);
-            else s.node_vals = nodal_fringe(q, g, st);
+            if (flat) s.elem_vals = element_values(q, g, db.layout(), st);
+            else s.node_vals = nodal_fringe(q, g, st, db.layout());
         }
         if (is_material) {
-            s.elem_color.resize(g.num_hexes());
-            for (int e = 0; e < g.num_hexes(); ++e) s.elem_color[e] = material_color(g.hex_material[e]);
+            s.elem_color.resize(static_cast<std::size_t>(num_elements(g)));
+            for (int e = 0; e < num_elements(g); ++e) s.elem_color[e] = material_color(element_material(g, e));
         }
         return s;
     };
@@ -97,9 +98,9 @@ Image make_picture(Database& db, const std::vector<int>& states, const PictureSe
         for (const auto& s : ordered) {
             const impact3d::PlotState& st = db.state(s.index);
             const bool elem = q.where == Quantity::Where::Element;
-            const std::vector<double> v = elem ? element_values(q, st) : node_values(q, g, st);
+            const std::vector<double> v = elem ? element_values(q, g, db.layout(), st) : node_values(q, g, st);
             for (std::size_t i = 0; i < v.size(); ++i) {
-                if (elem && !st.alive.empty() && !st.alive[i]) continue;
+                if (elem && !element_alive(st, g, static_cast<int>(i))) continue;
                 if (!have_extreme || v[i] > vmax) { vmax = v[i]; vmax_id = static_cast<int>(i); vmax_state = s.index; }
                 if (!have_extreme || v[i] < vmin) { vmin = v[i]; vmin_id = static_cast<int>(i); vmin_state = s.index; }
                 have_extreme = true;
@@ -234,7 +235,10 @@ Image make_picture(Database& db, const std::vector<int>& states, const PictureSe
                 y += font.ascent(label_px);
                 font.draw(img, lx, y, s, label_px, kText);
                 y += font.descent(label_px) + 2;
-                std::string w = (elem ? "elem " + std::to_string(db.element_id(id)) : "node " + std::to_string(db.node_id(id)));
+                const Family fam = elem ? element_ref(g, id).family : Family::Solid;
+                std::string w = (elem ? (fam == Family::Solid ? std::string("elem") : std::string(family_name(fam))) + " " +
+                                            std::to_string(db.element_id(id))
+                                      : "node " + std::to_string(db.node_id(id)));
                 if (seq) w += ", " + format_time(db.time(st), t_last, ps.units);
                 y += font.ascent(label_px);
                 font.draw(img, lx + unit / 2, y, w, label_px, {70, 70, 70});

@@ -16,6 +16,13 @@ struct Quantity {
     std::string label;   // "Effective plastic strain"
     enum class Where { Element, Node } where = Where::Element;
     Dim dim = Dim::None;
+    // Where in the element (key suffix "@top", "@bottom", "@mid", "@ip3"): shells and thick
+    // shells: the outer ("top"), inner ("bottom") or mid surface (default) values LS-DYNA
+    // writes as the first three through-thickness blocks, or block k in the file's order (1 mid,
+    // 2 inner, 3 outer, then the further points); solids: the mean over the integration points
+    // (default) or point k; beams: the mean over the points (default) or point k.
+    static constexpr int kMid = -1, kTop = -2, kBottom = -3;
+    int point = kMid;    // kMid, kTop, kBottom, or a 0-based integration point
 };
 
 // Fringe / element / node quantities by key (also accepts a few aliases: "plastic_strain",
@@ -27,8 +34,16 @@ std::string quantity_keys();
 double von_mises(const double* s);   // s: xx yy zz xy yz zx
 double pressure(const double* s);    // -(xx+yy+zz)/3, positive in compression
 
-// Per-element values (numelh) of an element quantity in state s.
+// Per-element values (numelh) of an element quantity in state s (solids).
 std::vector<double> element_values(const Quantity& q, const impact3d::PlotState& s);
+// Values of every element of every family (elements.h numbering: solids, thick shells, beams,
+// shells), read through the database's record layout.  Shells: stresses in the database's
+// (global) axes at the chosen point; beams: sxx the axial stress, sxy/szx the two shear
+// stresses, eps the plastic strain, axial_force; thickness: shells.
+std::vector<double> element_values(const Quantity& q, const impact3d::PlotGeometry& g,
+                                   const impact3d::PlotLayout& L, const impact3d::PlotState& s);
+double element_value(const Quantity& q, const impact3d::PlotGeometry& g, const impact3d::PlotLayout& L,
+                     const impact3d::PlotState& s, int e);
 // Per-node values (numnp) of a node quantity.
 std::vector<double> node_values(const Quantity& q, const impact3d::PlotGeometry& g,
                                 const impact3d::PlotState& s);

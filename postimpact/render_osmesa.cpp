@@ -15,6 +15,7 @@ struct Renderer::Impl {
     std::vector<std::uint8_t> buffer;
     GLuint tex = 0;
     std::vector<float> pos, nrm, tc, col, lines;
+    std::vector<float> beam_pos, beam_tc, beam_col;  // beams (faces of count 2): thick lines
 };
 
 Renderer::Renderer() : impl_(std::make_unique<Impl>()) {
@@ -121,6 +122,7 @@ Image Renderer::render(int width, int height, const std::vector<RenderPanel>& pa
         // vertex arrays: flat-shaded triangles (face normal), fringe coordinate per vertex
         const bool textured = rm.node_t || rm.elem_t;
         m.pos.clear(); m.nrm.clear(); m.tc.clear(); m.col.clear(); m.lines.clear();
+        m.beam_pos.clear(); m.beam_tc.clear(); m.beam_col.clear();
         const auto& X = *rm.coords;
         for (const auto& sgn : rm.copies) {
             const bool flip = (sgn[0] * sgn[1] * sgn[2]) < 0;
@@ -132,6 +134,15 @@ Image Renderer::render(int width, int height, const std::vector<RenderPanel>& pa
                     for (int d = 0; d < 3; ++d) q[3 * k + d] = static_cast<float>(sgn[d] * X[3 * node + d]);
                     t[k] = rm.node_t ? static_cast<float>((*rm.node_t)[node])
                                      : (rm.elem_t ? static_cast<float>((*rm.elem_t)[f.element]) : 0.f);
+                }
+                if (f.count == 2) {
+                    const Rgb bc = rm.elem_color ? (*rm.elem_color)[f.element] : style.edge;
+                    for (int k = 0; k < 2; ++k) {
+                        m.beam_pos.insert(m.beam_pos.end(), {q[3 * k], q[3 * k + 1], q[3 * k + 2]});
+                        m.beam_tc.push_back(std::min(t[k], 0.99999f));
+                        m.beam_col.insert(m.beam_col.end(), {bc.r / 255.f, bc.g / 255.f, bc.b / 255.f});
+                    }
+                    continue;
                 }
                 float n[3];
                 face_normal(q, f.count, n);
@@ -178,6 +189,23 @@ Image Renderer::render(int width, int height, const std::vector<RenderPanel>& pa
         glDisable(GL_TEXTURE_1D);
         glDisable(GL_POLYGON_OFFSET_FILL);
         glDisable(GL_LIGHTING);
+        if (!m.beam_pos.empty()) {
+            glLineWidth(static_cast<GLfloat>(3.0 * ss));
+            glVertexPointer(3, GL_FLOAT, 0, m.beam_pos.data());
+            if (textured) {
+                glEnable(GL_TEXTURE_1D);
+                glEnableClientState(GL_TEXTURE_COORD_ARRAY);
+                glTexCoordPointer(1, GL_FLOAT, 0, m.beam_tc.data());
+                glColor3f(1.f, 1.f, 1.f);
+            } else {
+                glEnableClientState(GL_COLOR_ARRAY);
+                glColorPointer(3, GL_FLOAT, 0, m.beam_col.data());
+            }
+            glDrawArrays(GL_LINES, 0, static_cast<GLsizei>(m.beam_pos.size() / 3));
+            glDisableClientState(GL_TEXTURE_COORD_ARRAY);
+            glDisableClientState(GL_COLOR_ARRAY);
+            glDisable(GL_TEXTURE_1D);
+        }
         if (style.edges && !m.lines.empty()) {
             glLineWidth(static_cast<GLfloat>(style.edge_width * ss));
             glColor3f(style.edge.r / 255.f, style.edge.g / 255.f, style.edge.b / 255.f);

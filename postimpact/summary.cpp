@@ -1,5 +1,8 @@
 #include "postimpact/summary.h"
 
+#include "postimpact/elements.h"
+#include "postimpact/quantities.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -61,6 +64,10 @@ Summary summarize(const std::string& root, const std::string& printed) {
     put("states", std::to_string(ns));
     put("nodes", std::to_string(geo.num_nodes()));
     put("solids", std::to_string(geo.num_hexes()));
+    // other families only when there are (older summaries lack them)
+    if (geo.num_tshells()) put("thick_shells", std::to_string(geo.num_tshells()));
+    if (geo.num_beams()) put("beams", std::to_string(geo.num_beams()));
+    if (geo.num_shells()) put("shells", std::to_string(geo.num_shells()));
     const impact3d::PlotState first = db.state(0);
     const impact3d::PlotState last = db.state(ns - 1);
     put("time", num(last.time));
@@ -83,13 +90,16 @@ Summary summarize(const std::string& root, const std::string& printed) {
     // part of the shape
     auto live_nodes = [&](const impact3d::PlotState& st) {
         std::vector<char> live(static_cast<std::size_t>(geo.num_nodes()), 0);
-        for (int e = 0; e < geo.num_hexes(); ++e)
-            if (st.alive.empty() || st.alive[static_cast<std::size_t>(e)])
-                for (int j = 0; j < 8; ++j) live[static_cast<std::size_t>(geo.hex_nodes[static_cast<std::size_t>(8 * e + j)])] = 1;
+        for (int e = 0; e < num_elements(geo); ++e)
+            if (element_alive(st, geo, e)) {
+                int count = 0;
+                const int* n = element_nodes(geo, e, count);
+                for (int j = 0; j < count; ++j) live[static_cast<std::size_t>(n[j])] = 1;
+            }
         return live;
     };
     auto extents = [&](const impact3d::PlotState& st) {
-        const std::vector<double>& c = st.coords;
+        const std::vector<double>& c = st.coords.empty() ? geo.x0 : st.coords;  // IU 0: initial shape
         const std::vector<char> live = live_nodes(st);
         Ext e{};
         for (int a = 0; a < 3; ++a) e.lo[a] = INFINITY, e.hi[a] = -INFINITY;
@@ -122,9 +132,24 @@ Summary summarize(const std::string& root, const std::string& printed) {
         }
         if (last.eps[k] > emax || eid == 0) emax = last.eps[k], eid = db.element_id(static_cast<int>(k));
     }
+    // shells, thick shells, beams: EPS at the middle surface / mean over the beam's points
+    int failed_other = 0;
+    if (num_elements(geo) > geo.num_hexes()) {
+        Quantity eps;
+        find_quantity("eps", eps);
+        for (int e = geo.num_hexes(); e < num_elements(geo); ++e) {
+            if (!element_alive(last, geo, e)) {
+                ++failed_other;
+                continue;
+            }
+            const double v = element_value(eps, geo, db.layout(), last, e);
+            if (v > emax || eid == 0) emax = v, eid = db.element_id(e);
+        }
+    }
     put("max_eps", num(emax));
     put("max_eps_element", std::to_string(eid));
     if (failed) put("failed_solids", std::to_string(failed));  // (only when there are: older summaries lack it)
+    if (failed_other) put("failed_other_elements", std::to_string(failed_other));
     double hg = 0;
     for (double v : last.mat_hourglass_energy) hg += v;
     put("kinetic_energy", num(last.kinetic_energy));
