@@ -47,9 +47,22 @@ struct PlotGeometry {
     std::vector<std::string> part_titles;  // num_materials titles (<= 72 chars), or empty ("part N")
     std::vector<int> part_user_ids;        // num_materials user part ids, strictly ascending, or empty (= 1..n)
 
+    // Shells (NEL4; the writer only): 4*nel4 0-based nodes (n3 == n4 for a triangle), nel4
+    // 1-based material numbers (materials of shells and of solids are distinct), user ids.
+    std::vector<int> shell_nodes;
+    std::vector<int> shell_material;
+    std::vector<int> shell_user_ids;       // nel4 user element ids, or empty (= 1..nel4)
+
     int num_nodes() const { return static_cast<int>(x0.size() / 3); }
     int num_hexes() const { return static_cast<int>(hex_material.size()); }
+    int num_shells() const { return static_cast<int>(shell_material.size()); }
 };
+
+// Words per shell and state (NV2D, the writer's layout): MAXINT = 3 layers (mid-surface, inner,
+// outer) of sigma_x sigma_y sigma_z sigma_xy sigma_yz sigma_zx (global axes) and the effective
+// plastic strain, then the resultants per unit width Mx My Mxy Qx Qy Nx Ny Nxy (local axes),
+// then thickness, two element-dependent words and the internal energy (IOSHL(1..4) = 1000).
+constexpr int kShellPlotVars = 3 * 7 + 8 + 4;
 
 // One output time.  Global words are written in the spec's NGLBV = 6 + 7*NMMAT + NUMRW order,
 // then the interface words (NGLBV = 6 + 7*NMMAT + NUMRW + 3*NINTF):
@@ -79,6 +92,8 @@ struct PlotState {
     std::vector<double> stress;                // 6*numelh: xx yy zz xy yz zx per solid
     std::vector<double> eps;                   // numelh effective plastic strain
     std::vector<unsigned char> alive;          // numelh element deletion flags, 1 = alive, 0 = deleted
+    std::vector<double> shell_vars;            // kShellPlotVars*nel4 (writer only)
+    std::vector<unsigned char> shell_alive;    // nel4 deletion flags (writer only)
 };
 
 // Control words of a d3plot root file, as read (any LS-DYNA d3plot, not only ours).
@@ -147,7 +162,7 @@ private:
     std::vector<double> x0_;      // initial coordinates (written when a state has no coords)
     int ws_ = 4;
     std::int64_t limit_words_ = kDefaultMemberSizeLimitWords;
-    int numnp_ = 0, nel8_ = 0, nmmat_ = 0, nrw_ = 0, nif_ = 0;
+    int numnp_ = 0, nel8_ = 0, nmmat_ = 0, nrw_ = 0, nif_ = 0, nel4_ = 0;
     std::int64_t nglbv_ = 0, state_words_ = 0;
     bool root_written_ = false;
     int fd_ = -1;                 // current member

@@ -125,7 +125,7 @@ void init_shells(const Model& m, State& s) {
   sh.eps_p.assign(plastic ? nip_total : 0, 0.0);
   sh.yielded.assign(plastic ? nip_total : 0, 0);
   sh.hgq.assign(hg_state ? 5 * std::size_t(ns) : 0, 0.0);
-  for (auto* v : {&sh.dt_e, &sh.de_ie, &sh.de_hg}) v->assign(std::size_t(ns), 0.0);
+  for (auto* v : {&sh.dt_e, &sh.de_ie, &sh.de_hg, &sh.energy}) v->assign(std::size_t(ns), 0.0);
   sh.bad.assign(std::size_t(ns), 0);
   sh.rigid_elem.assign(std::size_t(ns), 0);
   // geometry, masses; rotational dofs on the nodes of deformable shells
@@ -167,7 +167,7 @@ void init_shells(const Model& m, State& s) {
   sh.rot_fix.assign(std::size_t(sh.nr), 0);
   for (int r = 0; r < sh.nr; ++r) {
     const std::size_t n = std::size_t(sh.rot_node[std::size_t(r)]);
-    sh.inertia[std::size_t(r)] = inertia_of_node[n];
+    sh.inertia[std::size_t(r)] = m.shell_rotary_scale * inertia_of_node[n];
     if (!m.rot_bc.empty()) sh.rot_fix[std::size_t(r)] = m.rot_bc[n];
   }
   // rotational dof -> shell corners, in increasing (shell, corner) order

@@ -137,6 +137,7 @@ struct Model {
   // rotational velocities (empty: none); they act on nodes that shells use.
   std::vector<std::uint8_t> rot_bc;
   std::vector<std::array<double, 3>> init_omega;
+  double shell_rotary_scale = 1.0;           // *CONTROL_SHELL ROTASCL: scales the rotary inertia
   int num_shells() const { return static_cast<int>(shell_nodes.size()); }
   int shell_id(int k) const { return shell_user_id.empty() ? k + 1 : shell_user_id[std::size_t(k)]; }
 

@@ -38,6 +38,7 @@ struct ShellState {
   std::vector<double> hgq;                    // 5 per shell: hourglass resultants (stiffness forms)
   std::vector<double> dt_e;                   // element step
   std::vector<double> de_ie, de_hg;           // this pass's energy increments per shell
+  std::vector<double> energy;                 // accumulated internal energy per shell (plot database)
   std::vector<std::uint8_t> bad;              // 1: non-positive area in this pass
   std::vector<std::uint8_t> rigid_elem;       // 1: shell of a rigid material
   std::size_t corner_base = 0;                // shell k's corner j is cfx[corner_base + 4 k + j]

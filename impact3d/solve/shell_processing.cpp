@@ -115,6 +115,7 @@ ShellPassResult calc_forces_for_shells(const Model& m, State& s) {
         continue;
       }
       gie += sh.de_ie[K];
+      sh.energy[K] += sh.de_ie[K];
       ghg += sh.de_hg[K];
       if (sh.dt_e[K] < out.dt_min || (sh.dt_e[K] == out.dt_min && k < out.dt_shell)) {
         out.dt_min = sh.dt_e[K];
