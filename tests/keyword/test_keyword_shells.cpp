@@ -11,6 +11,7 @@
 
 #include "common/messages.h"
 #include "impact3d/input/deck_reader.h"
+#include "impact3d/input/deck_writer.h"
 #include "impact3d/solve/engine.h"
 
 using namespace impact3d;
@@ -152,4 +153,31 @@ TEST(KeywordShells, StripDeckRunsAndConservesEnergy) {
   ASSERT_GE(r0, 0);
   EXPECT_EQ(s.shells.wy[std::size_t(r0)], 0.0);
   EXPECT_NE(s.shells.wy[std::size_t(s.shells.node_rot[10])], 0.0);
+}
+
+// The converter writes shells back as a keyword deck that reads into the same Model (sections,
+// thicknesses, rotational constraints and velocities); the fixed format refuses them.
+TEST(KeywordShells, KeywordRoundTripAndFixedFormatRefusal) {
+  const std::string extra =
+      "*INITIAL_VELOCITY_NODE\n"
+      "       3       0.0       0.0       0.5       0.0       2.5       0.0\n"
+      "*CONTROL_SHELL\n         0         0         0         0         2\n      0.75\n";
+  ShellRead a = read_shell_text(strip_deck(6, kSection, extra));
+  ASSERT_TRUE(a.ok) << a.messages();
+  EXPECT_DOUBLE_EQ(a.m.shell_rotary_scale, 0.75);
+  std::ostringstream os;
+  std::vector<std::string> notes;
+  write_keyword_deck(os, a.m, &notes);
+  ShellRead b = read_shell_text(os.str());
+  ASSERT_TRUE(b.ok) << b.messages() << os.str();
+  const auto diffs = model_differences(a.m, b.m, 50);
+  std::string all;
+  for (const auto& d : diffs) all += d + "\n";
+  EXPECT_TRUE(diffs.empty()) << all;
+  EXPECT_EQ(b.m.num_shells(), 6);
+  EXPECT_DOUBLE_EQ(b.m.init_omega[2][1], 2.5);
+  std::ostringstream log;
+  const std::string fixed = std::string(IMPACT3D_BINARY_DIR) + "/shell_fixed_refused.dyn";
+  EXPECT_EQ(write_converted_decks(a.m, "", fixed, log), exit_code::input_error);
+  EXPECT_NE(log.str().find("6 shells"), std::string::npos) << log.str();
 }
