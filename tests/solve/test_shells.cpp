@@ -311,3 +311,117 @@ TEST(ShellThreads, SameBitsForAnyThreadCount) {
   EXPECT_EQ(a.kinetic, b.kinetic);
   EXPECT_GT(*std::max_element(a.shells.eps_p.begin(), a.shells.eps_p.end()), 0.0);
 }
+
+// Triangles (n3 == n4): a patch of 8 triangles under a uniform strain rate gives every triangle
+// the exact plane-stress stress, and the inner node no net force; mass 1/3 per node.
+TEST(ShellPatch, TrianglesUnderUniformStrainRate) {
+  MaterialData mat = steel_shell();
+  Model m = make_plate(2, 2, 1.0, 1.0, 0.01, mat, 1.0);
+  m.x[std::size_t(plate_node(2, 1, 1))] = 0.58;
+  m.y[std::size_t(plate_node(2, 1, 1))] = 0.44;
+  std::vector<std::array<int, 4>> tri;
+  for (const auto& q : m.shell_nodes) {
+    tri.push_back({q[0], q[1], q[2], q[2]});
+    tri.push_back({q[0], q[2], q[3], q[3]});
+  }
+  m.shell_nodes = tri;
+  m.shell_material.assign(tri.size(), 0);
+  m.shell_thickness.assign(tri.size(), {0.01, 0.01, 0.01, 0.01});
+  Engine eng(m);
+  ASSERT_EQ(eng.initialize(), StepStatus::ok);
+  State& s = eng.state();
+  double mass = 0;
+  for (double v : s.mass) mass += v;
+  EXPECT_NEAR(mass, mat.rho * 0.01 * 1.0, 1e-12 * mass);
+  const double dxx = -1.0, dyy = 0.4, gxy = 0.9, dt = 1e-7;
+  for (int i = 0; i < s.nn; ++i) {
+    const std::size_t k = std::size_t(i);
+    s.vx[k] = dxx * s.x[k] + 0.5 * gxy * s.y[k];
+    s.vy[k] = 0.5 * gxy * s.x[k] + dyy * s.y[k];
+    s.x[k] += 0.5 * dt * s.vx[k];
+    s.y[k] += 0.5 * dt * s.vy[k];
+  }
+  s.dt_half = dt;
+  calc_forces_for_shells(m, s);
+  const MaterialConstants& mc = s.mats[0];
+  const double c = mc.E / (1 - mc.nu * mc.nu) * dt;
+  const double sxx = c * (dxx + mc.nu * dyy), syy = c * (dyy + mc.nu * dxx), sxy = mc.G * gxy * dt;
+  for (int k = 0; k < s.shells.ns; ++k) {
+    const double* q = &s.shells.sig[5 * std::size_t(s.shells.ip_start[std::size_t(k)])];
+    EXPECT_NEAR(q[0] + q[1], sxx + syy, 1e-6 * std::fabs(sxx));
+    EXPECT_NEAR(q[0] * q[1] - q[2] * q[2], sxx * syy - sxy * sxy, 1e-6 * sxx * sxx);
+  }
+  const std::size_t inner = std::size_t(plate_node(2, 1, 1));
+  double f[3] = {0, 0, 0}, fmax = 0;
+  for (int c2 = s.corner_start[inner]; c2 < s.corner_start[inner + 1]; ++c2) {
+    const std::size_t q = std::size_t(s.corner_list[std::size_t(c2)]);
+    f[0] += s.cfx[q];
+    f[1] += s.cfy[q];
+    f[2] += s.cfz[q];
+    fmax = std::max({fmax, std::fabs(s.cfx[q]), std::fabs(s.cfy[q])});
+  }
+  EXPECT_LT(std::fabs(f[0]) + std::fabs(f[1]) + std::fabs(f[2]), 1e-6 * fmax);
+}
+
+// Hourglass control: a free plate started in the out-of-plane hourglass pattern vz = +-v
+// (checkerboard of nodes, a zero-energy mode of one-point shells) keeps its kinetic energy
+// without control (QM = 0: the mode is free), loses it to the viscous form (IHQ 1), and
+// stores it in the stiffness form (IHQ 4: bounded, the energy balance holds).
+TEST(ShellHourglass, OutOfPlaneModeIsResisted) {
+  auto run = [](int ihq, double qm) {
+    MaterialData mat = steel_shell();
+    mat.hourglass_type = ihq;
+    mat.hourglass_coef = qm;
+    const int n = 8;
+    Model m = make_plate(n, n, 0.4, 0.4, 0.01, mat, 2e-4);
+    for (int i = 0; i < m.num_nodes(); ++i) {
+      const int a = i % (n + 1), b = i / (n + 1);
+      InitialVelocity iv;
+      iv.first = iv.last = i + 1;
+      iv.v = {0, 0, (a + b) % 2 ? 1.0 : -1.0};
+      m.init_velocities.push_back(iv);
+    }
+    Engine eng(m);
+    EXPECT_EQ(eng.initialize(), StepStatus::ok);
+    const double ke0 = eng.state().kinetic;
+    StepStatus st = StepStatus::ok;
+    while (st == StepStatus::ok) st = eng.step();
+    EXPECT_EQ(st, StepStatus::finished);
+    const State& s = eng.state();
+    return std::array<double, 3>{s.kinetic / ke0, s.hourglass / ke0, s.energy_ratio()};
+  };
+  const auto free = run(1, 0.0), viscous = run(1, 0.1), stiff = run(4, 0.1);
+  std::printf("hourglass mode: KE/KE0 free %.4f, viscous %.4f, stiffness %.4f (hourglass energy %.4f)\n", free[0],
+              viscous[0], stiff[0], stiff[1]);
+  EXPECT_GT(free[0], 0.99);     // nothing resists the mode
+  EXPECT_LT(viscous[0], 0.5);   // damped
+  EXPECT_GT(viscous[1], 0.5);   // into hourglass energy
+  EXPECT_LT(stiff[0], 0.9);     // the stiffness form takes energy out of the motion...
+  EXPECT_NEAR(stiff[2], 1.0, 0.02);  // ...and the books balance
+}
+
+// Rigid shells (type 20) form a rigid body: a spinning rigid plate keeps its shape and its
+// energy.
+TEST(ShellRigidMotion, RigidShellPlateStaysRigid) {
+  MaterialData mat = steel_shell(20);
+  Model m = make_plate(3, 3, 0.3, 0.3, 0.01, mat, 0.05);
+  for (int i = 0; i < m.num_nodes(); ++i) {
+    InitialVelocity iv;
+    iv.first = iv.last = i + 1;
+    const double rx = m.x[std::size_t(i)] - 0.15, ry = m.y[std::size_t(i)] - 0.15;
+    iv.v = {1.0 - 20.0 * ry, 20.0 * rx, 0.5};  // translation + 20 rad/s about z
+    m.init_velocities.push_back(iv);
+  }
+  Engine eng(m);
+  ASSERT_EQ(eng.initialize(), StepStatus::ok);
+  StepStatus st = StepStatus::ok;
+  while (st == StepStatus::ok) st = eng.step();
+  ASSERT_EQ(st, StepStatus::finished);
+  const State& s = eng.state();
+  ASSERT_EQ(s.rigid.size(), 1u);
+  const std::size_t a = std::size_t(plate_node(3, 0, 0)), b = std::size_t(plate_node(3, 3, 3));
+  const double d = std::hypot(s.x[a] - s.x[b], s.y[a] - s.y[b], s.z[a] - s.z[b]);
+  EXPECT_NEAR(d, 0.3 * std::sqrt(2.0), 1e-9);
+  EXPECT_NEAR(s.energy_ratio(), 1.0, 1e-6);
+  EXPECT_NEAR(s.z[a], 0.5 * 0.05, 1e-9);
+}
