@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <sstream>
@@ -12,6 +13,7 @@
 #include "common/messages.h"
 #include "impact3d/input/deck_reader.h"
 #include "impact3d/input/deck_writer.h"
+#include "impact3d/output/restart_dump.h"
 #include "impact3d/solve/engine.h"
 
 using namespace impact3d;
@@ -180,4 +182,37 @@ TEST(KeywordShells, KeywordRoundTripAndFixedFormatRefusal) {
   const std::string fixed = std::string(IMPACT3D_BINARY_DIR) + "/shell_fixed_refused.dyn";
   EXPECT_EQ(write_converted_decks(a.m, "", fixed, log), exit_code::input_error);
   EXPECT_NE(log.str().find("6 shells"), std::string::npos) << log.str();
+}
+
+// A restart dump of a shell model (stresses and plastic history at the points, hourglass
+// resultants, rotations) restores a State that continues bit for bit.
+TEST(KeywordShells, RestartDumpContinuesBitForBit) {
+  std::string deck = strip_deck(10, kSection);
+  deck.replace(deck.find("*MAT_ELASTIC"), std::string("*MAT_ELASTIC").size(), "*MAT_PLASTIC_KINEMATIC");
+  deck.replace(deck.find("       0.3\n*ELEMENT_SHELL"), std::string("       0.3\n").size(),
+               "       0.3     2.0e5     2.0e9       0.5\n");
+  ShellRead r = read_shell_text(deck);
+  ASSERT_TRUE(r.ok) << r.messages();
+  Engine a(r.m);
+  ASSERT_EQ(a.initialize(), StepStatus::ok);
+  for (int c = 0; c < 150; ++c) ASSERT_EQ(a.step(), StepStatus::ok);
+  DumpHeader h;
+  h.deck_name = "shells.k";
+  h.deck_text = deck;
+  const std::string path = std::string(IMPACT3D_BINARY_DIR) + "/shell_restart_dump";
+  write_restart_dump(path, h, a.state(), a.contact().restart_data());
+  Engine b(r.m);
+  ASSERT_EQ(b.initialize(), StepStatus::ok);
+  SlidingInterfaces::RestartData cd;
+  read_restart_dump_state(path, b.state(), cd);
+  for (int c = 0; c < 150; ++c) {
+    ASSERT_EQ(a.step(), StepStatus::ok);
+    ASSERT_EQ(b.step(), StepStatus::ok);
+  }
+  EXPECT_GT(*std::max_element(a.state().shells.eps_p.begin(), a.state().shells.eps_p.end()), 0.0);
+  EXPECT_EQ(a.state().z, b.state().z);
+  EXPECT_EQ(a.state().shells.sig, b.state().shells.sig);
+  EXPECT_EQ(a.state().shells.back, b.state().shells.back);
+  EXPECT_EQ(a.state().shells.wy, b.state().shells.wy);
+  EXPECT_EQ(a.state().internal, b.state().internal);
 }
