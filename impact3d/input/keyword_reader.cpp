@@ -2598,7 +2598,13 @@ bool is_ascii_database(const std::string& n) {
         }
       }
     } else if (side.type == 2 || side.type == 3) {
-      exterior_faces(parts_of(side.type == 2, side.id, side.id_ref, card, field), nullptr, out, lines, files);
+      const std::vector<int> parts = parts_of(side.type == 2, side.id, side.id_ref, card, field);
+      for (int p : parts)
+        if (!part_shells_[std::size_t(p)].empty()) {  // (contact on shells: not yet)
+          err(1102, side.id_ref, card, field, "shell part " + std::to_string(parts_[std::size_t(p)].pid) + " in a contact (shells in contact are not implemented yet)");
+          return;
+        }
+      exterior_faces(parts, nullptr, out, lines, files);
     } else if (side.type == 4) {
       if (const RIdList* s = find_node_set(side.id, side.id_ref, card, field)) {
         std::vector<char> mark(std::size_t(m_.num_nodes()), 0);

@@ -75,6 +75,7 @@ void write_counts(std::ostream& os, const Model& m) {
   for (int mat : m.hex_material) used.insert(mat);
   os << "     number of nodes ...................... " << m.num_nodes() << "\n"
      << "     number of solid elements ............. " << m.num_hexes() << "\n"
+     << (m.num_shells() > 0 ? "     number of shell elements ............. " + std::to_string(m.num_shells()) + "\n" : std::string())
      << "     number of materials .................. " << m.materials.size() << "\n"
      << "     number of rigid walls ................ " << m.walls.size() << "\n"
      << "     number of sliding interfaces ......... " << m.interfaces.size() << "\n"
@@ -119,6 +120,13 @@ void write_model_summary(std::ostream& os, const Model& m) {
        << "     bulk modulus K (derived) ............. " << fmt("%.6e", K) << " (stress)\n"
        << "     shear modulus G (derived) ............ " << fmt("%.6e", G) << " (stress)\n"
        << "     dilatational wave speed (derived) .... " << fmt("%.6e", c) << " (length/time)\n";
+    if (md.shell)
+      os << "     shell section: Belytschko-Tsay, " << md.shell_section.nip << " Gauss point(s) through the thickness, shear factor "
+         << fmt("%.4f", md.shell_section.shrf) << ", T1-T4 " << fmt("%.4e", md.shell_section.t[0]) << " "
+         << fmt("%.4e", md.shell_section.t[1]) << " " << fmt("%.4e", md.shell_section.t[2]) << " "
+         << fmt("%.4e", md.shell_section.t[3]) << "\n"
+         << "     plate wave speed (derived) ........... " << fmt("%.6e", std::sqrt(md.E / (md.rho * (1 - md.nu * md.nu))))
+         << " (length/time)\n";
     if (md.type == 3) {
       double Ep = md.E * md.E_tan / (md.E - md.E_tan);
       os << "     yield stress ......................... " << fmt("%.6e", md.sigma_y) << " (stress)\n"

@@ -216,3 +216,17 @@ TEST(KeywordShells, RestartDumpContinuesBitForBit) {
   EXPECT_EQ(a.state().shells.wy, b.state().shells.wy);
   EXPECT_EQ(a.state().internal, b.state().internal);
 }
+
+// Contact on shell parts is not implemented yet: a contact naming one is refused (1102) rather
+// than left without segments.
+TEST(KeywordShells, ContactOnAShellPartIsRefused) {
+  const std::string contact =
+      "*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE\n"
+      "         1         1         3         3\n"
+      "       0.0       0.0       0.0\n"
+      "       1.0       1.0\n";
+  ShellRead r = read_shell_text(strip_deck(2, kSection, contact));
+  EXPECT_FALSE(r.ok);
+  EXPECT_GE(r.d.count(1102), 1) << r.messages();
+  EXPECT_NE(r.messages().find("shells in contact"), std::string::npos) << r.messages();
+}
