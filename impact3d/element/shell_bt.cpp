@@ -76,7 +76,8 @@ bool calc_shell_frame(const double x[4][3], ShellFrame& fr) {
   double* e1 = fr.e[0];
   double* e2 = fr.e[1];
   double* e3 = fr.e[2];
-  for (int a = 0; a < 3; ++a) e3[a] = s3[a] / ls3;
+  const double r3 = 1.0 / ls3;
+  for (int a = 0; a < 3; ++a) e3[a] = s3[a] * r3;
   const double p = dot(r21, e3);
   for (int a = 0; a < 3; ++a) e1[a] = r21[a] - p * e3[a];
   const double l1 = std::sqrt(dot(e1, e1));
@@ -84,9 +85,12 @@ bool calc_shell_frame(const double x[4][3], ShellFrame& fr) {
     fr.area = 0;
     return false;
   }
-  for (int a = 0; a < 3; ++a) e1[a] /= l1;
+  const double r1 = 1.0 / l1;
+  for (int a = 0; a < 3; ++a) e1[a] *= r1;
   cross(e3, e1, e2);
-  for (int i = 0; i < 4; ++i) {
+  // node 1 is the origin; node 2 lies on e1 (r21 . e1 = l1, r21 . e2 = 0 up to round-off)
+  fr.xl[0] = fr.yl[0] = 0;
+  for (int i = 1; i < 4; ++i) {
     const double r[3] = {x[i][0] - x[0][0], x[i][1] - x[0][1], x[i][2] - x[0][2]};
     fr.xl[i] = dot(r, e1);
     fr.yl[i] = dot(r, e2);
