@@ -16,6 +16,8 @@
 #include "impact3d/material/material.h"
 #include "impact3d/solve/element_processing.h"
 #include "impact3d/solve/engine.h"
+#include "impact3d/element/shell_bt.h"
+#include "tests/solve/shell_models.h"
 
 using namespace impact3d;
 
@@ -162,6 +164,69 @@ void BM_TaylorBarWholeRun(benchmark::State& st) {
   }
 }
 BENCHMARK(BM_TaylorBarWholeRun)->Arg(1)->Arg(2)->Unit(benchmark::kSecond)->Iterations(1);
+
+// Belytschko-Tsay shells: one shell through the scalar kernel (elastic NIP 2; plastic NIP 5,
+// yielding), and a whole cycle of a 100 x 100 plate (clamped edge, transverse velocity).
+void BM_ShellBTKernel(benchmark::State& st) {
+  const bool plastic = st.range(0) == 3;
+  MaterialData md = shell_test::steel_shell(plastic ? 3 : 1, plastic ? 5 : 2);
+  MaterialConstants mc;
+  mc.type = md.type;
+  mc.rho = md.rho;
+  mc.E = md.E;
+  mc.nu = md.nu;
+  mc.sigma_y = plastic ? 1e3 : md.sigma_y;  // yields every cycle
+  mc.E_tan = md.E_tan;
+  mc.beta = 0.5;
+  derive_material_constants(mc);
+  ShellGroupConstants g;
+  g.nip = md.shell_section.nip;
+  gauss_legendre_rule(g.nip, g.zeta, g.weight);
+  g.shrf = 5.0 / 6.0;
+  g.rho = mc.rho;
+  g.E = mc.E;
+  g.nu = mc.nu;
+  g.G = mc.G;
+  g.c_plate = 5400;
+  double sig[50] = {}, back[60] = {}, eps[10] = {};
+  unsigned char yielded[10] = {};
+  ShellPointState ps{sig, plastic ? back : nullptr, plastic ? eps : nullptr, plastic ? yielded : nullptr, nullptr};
+  ShellKernelIO io;
+  const double X[4][3] = {{0, 0, 0}, {0.01, 0.001, 0}, {0.011, 0.01, 0.0005}, {0, 0.009, 0}};
+  for (int i = 0; i < 4; ++i)
+    for (int a = 0; a < 3; ++a) {
+      io.x[i][a] = X[i][a];
+      io.v[i][a] = 0.1 * (i + 1) * (a == 2 ? 1 : 0.3 * (i % 2 ? 1 : -1));
+      io.w[i][a] = 0.5 * (a == 1 ? i : -i);
+    }
+  io.h = 0.001;
+  io.dt = 1e-7;
+  const ShellMaterialKind kind = plastic ? ShellMaterialKind::plastic_kinematic : ShellMaterialKind::elastic;
+  for (auto _ : st) {
+    calc_shell_bt_forces(g, mc, kind, io, ps);
+    benchmark::DoNotOptimize(io.f[0][0]);
+  }
+  st.SetItemsProcessed(st.iterations());
+}
+BENCHMARK(BM_ShellBTKernel)->Arg(1)->Arg(3);
+
+void BM_Cycle_ShellPlate(benchmark::State& st) {
+  omp_set_num_threads(1);
+  const int n = 100;
+  static Model m = [] {
+    Model p = shell_test::make_plate(n, n, 1.0, 1.0, 0.01, shell_test::steel_shell(1, 2), 1.0);
+    for (int j = 0; j <= n; ++j) {
+      p.bc[std::size_t(shell_test::plate_node(n, 0, j))] = 7;
+    }
+    p.init_velocities.push_back({0, 0, 1, {0, 0, 1.0}});
+    return p;
+  }();
+  Engine eng(m);
+  eng.initialize();
+  for (auto _ : st) benchmark::DoNotOptimize(eng.step());
+  st.SetItemsProcessed(st.iterations() * eng.state().shells.ns);
+}
+BENCHMARK(BM_Cycle_ShellPlate)->Unit(benchmark::kMicrosecond);
 
 }  // namespace
 

@@ -53,6 +53,8 @@ const std::vector<MessageDef> kCatalog = {
     {1224, S::error, "rigid-body material used together with a non-rigid material in one element set"},
     {1225, S::error, "segment nodes do not go around the element face in order (criss-crossed)"},
     {1226, S::error, "prescribed motion on a node of a rigid body"},
+    {1240, S::error, "non-positive shell area (collinear or badly numbered nodes)"},
+    {1241, S::error, "shell thickness must be positive"},
     // 1300-1399: LS-DYNA keyword decks
     {1301, S::error, "keyword not supported by IMPACT-3D (impact3d --lenient-keywords turns this into a warning)"},
     {1305, S::error, "data line before the first keyword"},

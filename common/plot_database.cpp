@@ -454,10 +454,11 @@ void PlotWriter::open_impl(const std::string& root_path, const PlotGeometry& g, 
     if (member_size_limit_words < 1)
         throw std::invalid_argument("PlotWriter: member size limit must be positive");
     if (g.x0.size() % 3 != 0) throw std::invalid_argument("PlotWriter: x0 size is not a multiple of 3");
-    if (!g.tshell_material.empty() || !g.beam_material.empty() || !g.shell_material.empty())
-        throw std::invalid_argument("PlotWriter: writes 8-node solids only (the geometry has thick shells, beams or shells)");
+    if (!g.tshell_material.empty() || !g.beam_material.empty())
+        throw std::invalid_argument("PlotWriter: writes solids and shells only (the geometry has thick shells or beams)");
     const std::size_t numnp = g.x0.size() / 3;
     const std::size_t nel8 = g.hex_material.size();
+    const std::size_t nel4 = g.shell_material.size();
     const int nmat = g.num_materials;
     if (numnp > 100000000u || nel8 > 100000000u) throw std::invalid_argument("PlotWriter: model too large");
     if (nmat < 0 || (nel8 > 0 && nmat < 1))
@@ -465,6 +466,21 @@ void PlotWriter::open_impl(const std::string& root_path, const PlotGeometry& g, 
     check_size(g.hex_nodes, 8 * nel8, "hex_nodes", false);
     check_size(g.node_user_ids, numnp, "node_user_ids", true);
     check_size(g.hex_user_ids, nel8, "hex_user_ids", true);
+    check_size(g.shell_nodes, 4 * nel4, "shell_nodes", false);
+    check_size(g.shell_user_ids, nel4, "shell_user_ids", true);
+    if (nel4 > 100000000u) throw std::invalid_argument("PlotWriter: model too large");
+    for (std::size_t k = 0; k < g.shell_nodes.size(); ++k)
+        if (g.shell_nodes[k] < 0 || static_cast<std::size_t>(g.shell_nodes[k]) >= numnp)
+            throw std::invalid_argument("PlotWriter: shell " + std::to_string(k / 4) + " node index out of range");
+    // shell materials: distinct from the solids' ones (NUMMAT4; NUMMAT8 = the others)
+    std::vector<char> shell_mat(static_cast<std::size_t>(nmat) + 1, 0);
+    for (std::size_t e = 0; e < nel4; ++e) {
+        if (g.shell_material[e] < 1 || g.shell_material[e] > nmat)
+            throw std::invalid_argument("PlotWriter: shell " + std::to_string(e) + " material not in 1.." + std::to_string(nmat));
+        shell_mat[static_cast<std::size_t>(g.shell_material[e])] = 1;
+    }
+    std::int64_t nummat4 = 0;
+    for (char c : shell_mat) nummat4 += c;
     check_size(g.part_titles, static_cast<std::size_t>(nmat), "part_titles", true);
     check_size(g.part_user_ids, static_cast<std::size_t>(nmat), "part_user_ids", true);
     for (std::size_t k = 0; k < g.hex_nodes.size(); ++k)
@@ -483,6 +499,7 @@ void PlotWriter::open_impl(const std::string& root_path, const PlotGeometry& g, 
     limit_words_ = member_size_limit_words;
     numnp_ = static_cast<int>(numnp);
     nel8_ = static_cast<int>(nel8);
+    nel4_ = static_cast<int>(nel4);
     nmmat_ = nmat;
     if (g.num_rigid_walls < 0 || g.num_rigid_walls > 100000)
         throw std::invalid_argument("PlotWriter: implausible number of rigid walls");
@@ -492,7 +509,8 @@ void PlotWriter::open_impl(const std::string& root_path, const PlotGeometry& g, 
     nif_ = g.num_interfaces;
     nglbv_ = 6 + 7 * static_cast<std::int64_t>(nmat) + nrw_ + 3 * static_cast<std::int64_t>(nif_);
     // time, globals, coords + vel + acc, 7 words per solid, one deletion flag per solid
-    state_words_ = 1 + nglbv_ + 9 * static_cast<std::int64_t>(numnp) + 8 * static_cast<std::int64_t>(nel8);
+    state_words_ = 1 + nglbv_ + 9 * static_cast<std::int64_t>(numnp) + 8 * static_cast<std::int64_t>(nel8) +
+                   (kShellPlotVars + 1) * static_cast<std::int64_t>(nel4);
     root_ = root_path;
     x0_ = g.x0;
     members_ = 0;
@@ -517,10 +535,13 @@ void PlotWriter::open_impl(const std::string& root_path, const PlotGeometry& g, 
             case 18: v = nglbv_; break;   // NGLBV
             case 20: case 21: case 22: v = 1; break;  // IU IV IA
             case 23: v = nel8_; break;    // NEL8
-            case 24: v = nmmat_; break;   // NUMMAT8
+            case 24: v = nmmat_ - nummat4; break;   // NUMMAT8
+            case 31: v = nel4_; break;    // NEL4
+            case 32: v = nummat4; break;  // NUMMAT4
+            case 33: v = nel4_ > 0 ? kShellPlotVars : 0; break;  // NV2D
             case 27: v = 7; break;        // NV3D = 7 + NEIPH
             case 36: v = -10003; break;   // MAXINT: element deletion flags
-            case 39: v = 16 + numnp_ + nel8_ + 3 * static_cast<std::int64_t>(nmmat_); break;  // NARBS
+            case 39: v = 16 + numnp_ + nel8_ + nel4_ + 3 * static_cast<std::int64_t>(nmmat_); break;  // NARBS
             case 43: case 44: case 45: case 46: v = 1000; break;  // IOSHL
             case 51: v = nmmat_; break;   // NMMAT
             case 63: v = nif_; break;     // IMPACT-3D: sliding interfaces in the globals
@@ -535,21 +556,27 @@ void PlotWriter::open_impl(const std::string& root_path, const PlotGeometry& g, 
         for (int k = 0; k < 8; ++k) put_int(b, ws, g.hex_nodes[8 * e + k] + 1);
         put_int(b, ws, g.hex_material[e]);
     }
+    for (std::size_t e = 0; e < nel4; ++e) {  // IX4 (after solids, thick shells, beams: none)
+        for (int k = 0; k < 4; ++k) put_int(b, ws, g.shell_nodes[4 * e + k] + 1);
+        put_int(b, ws, g.shell_material[e]);
+    }
     // NARBS section, NSORT < 0 variant (16-word header + part id arrays)
     std::vector<int> pids = g.part_user_ids;
     if (pids.empty())
         for (int p = 1; p <= nmat; ++p) pids.push_back(p);
     {
         const std::int64_t nsort = 100;
-        const std::int64_t nsrh = nsort + numnp_, nsrb = nsrh + nel8_, nsrs = nsrb, nsrt = nsrs;
+        const std::int64_t nsrh = nsort + numnp_, nsrb = nsrh + nel8_, nsrs = nsrb, nsrt = nsrs + nel4_;
         const std::int64_t nsrma = nsrt, nsrmu = nsrma + nmat, nsrmp = nsrmu + nmat;
-        const std::int64_t hdr[16] = {-nsort, nsrh, nsrb, nsrs, nsrt, numnp_, nel8_, 0, 0, 0,
+        const std::int64_t hdr[16] = {-nsort, nsrh, nsrb, nsrs, nsrt, numnp_, nel8_, 0, nel4_, 0,
                                       nsrma, nsrmu, nsrmp, nmat, 0, nmat};
         for (std::int64_t v : hdr) put_int(b, ws, v);
         for (std::size_t n = 0; n < numnp; ++n)
             put_int(b, ws, g.node_user_ids.empty() ? static_cast<std::int64_t>(n + 1) : g.node_user_ids[n]);
         for (std::size_t e = 0; e < nel8; ++e)
             put_int(b, ws, g.hex_user_ids.empty() ? static_cast<std::int64_t>(e + 1) : g.hex_user_ids[e]);
+        for (std::size_t e = 0; e < nel4; ++e)  // (beams: none) shells
+            put_int(b, ws, g.shell_user_ids.empty() ? static_cast<std::int64_t>(e + 1) : g.shell_user_ids[e]);
         for (int p : pids) put_int(b, ws, p);   // NORDER (ascending)
         for (int p : pids) put_int(b, ws, p);   // NSRMU (input order)
         for (int p = 1; p <= nmat; ++p) put_int(b, ws, p);  // NSRMP (cross reference)
@@ -634,6 +661,9 @@ void PlotWriter::write_state(const PlotState& s) {
     check_size(s.stress, 6 * ne, "stress", true);
     check_size(s.eps, ne, "eps", true);
     check_size(s.alive, ne, "alive", true);
+    const std::size_t ns = static_cast<std::size_t>(nel4_);
+    check_size(s.shell_vars, kShellPlotVars * ns, "shell_vars", true);
+    check_size(s.shell_alive, ns, "shell_alive", true);
 
     const int ws = ws_;
     std::vector<char> b;
@@ -664,7 +694,9 @@ void PlotWriter::write_state(const PlotState& s) {
         for (int k = 0; k < 6; ++k) put_real(b, ws, s.stress.empty() ? 0.0 : s.stress[6 * e + k]);
         put_real(b, ws, s.eps.empty() ? 0.0 : s.eps[e]);
     }
+    put_vec(s.shell_vars, kShellPlotVars * ns);
     for (std::size_t e = 0; e < ne; ++e) put_real(b, ws, (s.alive.empty() || s.alive[e]) ? 1.0 : 0.0);
+    for (std::size_t e = 0; e < ns; ++e) put_real(b, ws, (s.shell_alive.empty() || s.shell_alive[e]) ? 1.0 : 0.0);
     if (static_cast<std::int64_t>(b.size()) != state_words_ * ws)
         throw std::logic_error("PlotWriter: internal error: state size mismatch");
 

@@ -70,6 +70,12 @@ struct PlotGeometry {
     int num_shells() const { return static_cast<int>(shell_material.size()); }
 };
 
+// Words per shell and state (NV2D, the writer's layout): MAXINT = 3 layers (mid-surface, inner,
+// outer) of sigma_x sigma_y sigma_z sigma_xy sigma_yz sigma_zx (global axes) and the effective
+// plastic strain, then the resultants per unit width Mx My Mxy Qx Qy Nx Ny Nxy (local axes),
+// then thickness, two element-dependent words and the internal energy (IOSHL(1..4) = 1000).
+constexpr int kShellPlotVars = 3 * 7 + 8 + 4;
+
 // One output time.  Global words are written in the spec's NGLBV = 6 + 7*NMMAT + NUMRW order,
 // then the interface words (NGLBV = 6 + 7*NMMAT + NUMRW + 3*NINTF):
 //   kinetic, internal, total energy, velocity x y z (whole model),
@@ -203,7 +209,7 @@ private:
     std::vector<double> x0_;      // initial coordinates (written when a state has no coords)
     int ws_ = 4;
     std::int64_t limit_words_ = kDefaultMemberSizeLimitWords;
-    int numnp_ = 0, nel8_ = 0, nmmat_ = 0, nrw_ = 0, nif_ = 0;
+    int numnp_ = 0, nel8_ = 0, nmmat_ = 0, nrw_ = 0, nif_ = 0, nel4_ = 0;
     std::int64_t nglbv_ = 0, state_words_ = 0;
     bool root_written_ = false;
     int fd_ = -1;                 // current member

@@ -90,6 +90,7 @@ int element_of_segment(const State& s, const std::array<int, 4>& sg) {
   const int n0 = sg[0];
   for (int c = s.corner_start[std::size_t(n0)]; c < s.corner_start[std::size_t(n0) + 1]; ++c) {
     const int e = s.corner_element(std::size_t(s.corner_list[std::size_t(c)]));
+    if (e < 0) continue;  // a shell corner
     const auto& hn = s.conn[std::size_t(e)];
     bool all = true;
     for (int a = 1; a < 4 && all; ++a) all = std::find(hn.begin(), hn.end(), sg[std::size_t(a)]) != hn.end();

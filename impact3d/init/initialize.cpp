@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "impact3d/element/hexahedron.h"
+#include "impact3d/init/shell_init.h"
 #include "impact3d/solve/element_groups.h"
 
 namespace impact3d {
@@ -140,6 +141,9 @@ void init_rigid_bodies(State& s) {
     for (int e = 0; e < s.ne; ++e)
       if (s.mat[std::size_t(e)] == int(k))
         for (int n : s.conn[std::size_t(e)]) rb.nodes.push_back(n);
+    for (int q = 0; q < s.shells.ns; ++q)  // rigid shells
+      if (s.shells.mat[std::size_t(q)] == rb.material)
+        for (int n : s.shells.conn[std::size_t(q)]) rb.nodes.push_back(n);
     std::sort(rb.nodes.begin(), rb.nodes.end());
     rb.nodes.erase(std::unique(rb.nodes.begin(), rb.nodes.end()), rb.nodes.end());
     if (rb.nodes.empty()) continue;
@@ -202,7 +206,9 @@ void initialize_state(const Model& m, State& s) {
   init_nodes(m, s);
   init_materials(m, s);
   init_elements(m, s);
+  init_shells(m, s);
   init_velocities(m, s);
+  init_shell_rotational_velocities(m, s);
   init_rigid_bodies(s);
   // net nodal forces: kept only for rigid bodies (their momentum update reads them)
   for (auto* v : {&s.fx, &s.fy, &s.fz}) v->assign(s.rigid.empty() ? 0 : std::size_t(s.nn), 0.0);

@@ -127,9 +127,11 @@ class KeywordWriter {
     materials();
     nodes();
     elements();
+    shell_elements();
     curves();
     walls();
     velocities();
+    shell_conditions();
     interfaces();
     loads();
     os_ << "*END\n";
@@ -198,7 +200,13 @@ class KeywordWriter {
       const MaterialData& md = m_.materials[k];
       int id = int(k) + 1;
       os_ << "*PART\n$# title\n" << md.title << "\n";
-      os_ << "$#     pid     secid       mid     eosid      hgid\n" << kcard({I(id), I(1), I(id), I(0), I(id)}) << "\n";
+      // a shell part has its own *SECTION_SHELL (secid 1 + pid)
+      os_ << "$#     pid     secid       mid     eosid      hgid\n" << kcard({I(id), I(md.shell ? 1 + id : 1), I(id), I(0), I(id)}) << "\n";
+      if (md.shell) {
+        const ShellSectionData& sec = md.shell_section;
+        os_ << "*SECTION_SHELL\n$#   secid    elform      shrf       nip\n" << kcard({I(1 + id), I(2), R(sec.shrf), I(sec.nip)}) << "\n"
+            << "$#      t1        t2        t3        t4\n" << kcard({R(sec.t[0]), R(sec.t[1]), R(sec.t[2]), R(sec.t[3])}) << "\n";
+      }
       if (const MaterialType* t = find_material_type(md.type)) {
         write_material(*t, md, id);
       } else {
@@ -224,6 +232,48 @@ class KeywordWriter {
       std::vector<KField> f = {I(eid(e), 8), I(m_.hex_material[std::size_t(e)] + 1, 8)};
       for (int v : m_.hex_nodes[std::size_t(e)]) f.push_back(I(v >= 0 ? nid(v) : 0, 8));
       os_ << kcard(f) << "\n";
+    }
+  }
+
+  // Shells, their thicknesses on every element card; rotational constraints, initial rotational
+  // velocities and the rotary inertia scale (shell_conditions).
+  void shell_elements() {
+    if (m_.num_shells() == 0) return;
+    os_ << "*ELEMENT_SHELL_THICKNESS\n$#   eid     pid      n1      n2      n3      n4\n";
+    for (int e = 0; e < m_.num_shells(); ++e) {
+      const auto& n = m_.shell_nodes[std::size_t(e)];
+      std::vector<KField> f = {I(m_.shell_id(e), 8), I(m_.shell_material[std::size_t(e)] + 1, 8)};
+      for (int v : n) f.push_back(I(v >= 0 ? nid(v) : 0, 8));
+      os_ << kcard(f) << "\n";
+      const auto& t = m_.shell_thickness[std::size_t(e)];
+      os_ << kcard({R(t[0], 16), R(t[1], 16), R(t[2], 16), R(t[3], 16)}) << "\n";
+    }
+  }
+
+  void shell_conditions() {
+    if (m_.shell_rotary_scale != 1.0)
+      os_ << "*CONTROL_SHELL\n$#  wrpang     esort     irnxx    istupd    theory\n" << kcard({B(), B(), B(), B(), I(2)}) << "\n"
+          << "$# rotascl\n" << kcard({R(m_.shell_rotary_scale)}) << "\n";
+    for (int n = 0; n < int(m_.rot_bc.size()); ++n) {
+      const int b = m_.rot_bc[std::size_t(n)];
+      if (b == 0) continue;
+      os_ << "*BOUNDARY_SPC_NODE\n$#     nid       cid      dofx      dofy      dofz     dofrx     dofry     dofrz\n"
+          << kcard({I(nid(n)), I(0), I(0), I(0), I(0), I(b & 1 ? 1 : 0), I(b & 2 ? 1 : 0), I(b & 4 ? 1 : 0)}) << "\n";
+    }
+    if (m_.init_omega.empty()) return;
+    // a node's rotational velocity with its translational one (the velocity cards above, applied
+    // in order), so that this card changes nothing else
+    std::vector<std::array<double, 3>> v(std::size_t(m_.num_nodes()), {0, 0, 0});
+    for (const InitialVelocity& iv : m_.init_velocities) {
+      if (iv.first == 0) { std::fill(v.begin(), v.end(), iv.v); continue; }
+      for (int k = iv.first; k <= iv.last && k <= m_.num_nodes(); k += std::max(1, iv.increment)) v[std::size_t(k - 1)] = iv.v;
+    }
+    for (int n = 0; n < m_.num_nodes(); ++n) {
+      const auto& w = m_.init_omega[std::size_t(n)];
+      if ((w[0] == 0 && w[1] == 0 && w[2] == 0) || (!omega_written_.empty() && omega_written_[std::size_t(n)])) continue;
+      const auto& u = v[std::size_t(n)];
+      os_ << "*INITIAL_VELOCITY_NODE\n$#     nid        vx        vy        vz       vxr       vyr       vzr\n"
+          << kcard({I(nid(n)), R(u[0]), R(u[1]), R(u[2]), R(w[0]), R(w[1]), R(w[2])}) << "\n";
     }
   }
 
@@ -257,12 +307,43 @@ class KeywordWriter {
     }
   }
 
+  // The rotational velocities (shell nodes) that a velocity card of these nodes can carry: the
+  // nodes' common one, or none when they differ (shell_conditions writes those); marks them.
+  std::array<double, 3> common_omega(const std::vector<int>& nodes) {
+    std::array<double, 3> w{0, 0, 0};
+    if (m_.init_omega.empty() || nodes.empty()) return w;
+    w = m_.init_omega[std::size_t(nodes[0])];
+    for (int n : nodes)
+      if (m_.init_omega[std::size_t(n)] != w) return {0, 0, 0};
+    if (omega_written_.empty()) omega_written_.assign(std::size_t(m_.num_nodes()), 0);
+    for (int n : nodes) omega_written_[std::size_t(n)] = 1;
+    return w;
+  }
+  std::vector<char> omega_written_;
+
+  // The velocity card (with its comment line): VX VY VZ, and VXR VYR VZR only when not zero;
+  // node > 0: the *INITIAL_VELOCITY_NODE form with NID first.
+  std::string velocity_card(const std::array<double, 3>& v, const std::array<double, 3>& w, int node) {
+    const bool rot = w[0] != 0 || w[1] != 0 || w[2] != 0;
+    std::string head = node > 0 ? "$#     nid        vx        vy        vz" : "$#      vx        vy        vz";
+    std::vector<KField> f;
+    if (node > 0) f.push_back(I(node));
+    for (double c : v) f.push_back(R(c));
+    if (rot) {
+      head += "       vxr       vyr       vzr";
+      for (double c : w) f.push_back(R(c));
+    }
+    return head + "\n" + kcard(f) + "\n";
+  }
+
   void velocities() {
     int nn = m_.num_nodes();
     for (const InitialVelocity& iv : m_.init_velocities) {
       if (iv.first == 0) {
-        os_ << "*INITIAL_VELOCITY\n$#    nsid\n" << kcard({I(0)}) << "\n$#      vx        vy        vz\n"
-            << kcard({R(iv.v[0]), R(iv.v[1]), R(iv.v[2])}) << "\n";
+        std::vector<int> every_node(std::size_t(nn), 0);
+        for (int n = 0; n < nn; ++n) every_node[std::size_t(n)] = n;
+        const auto w = common_omega(every_node);
+        os_ << "*INITIAL_VELOCITY\n$#    nsid\n" << kcard({I(0)}) << "\n" << velocity_card(iv.v, w, 0);
         continue;
       }
       int inc = std::max(1, iv.increment);
@@ -272,13 +353,12 @@ class KeywordWriter {
       if (nodes.back() + 1 != iv.last || (nodes.size() == 1 && iv.increment != 1))
         note("initial velocity of nodes " + std::to_string(iv.first) + "-" + std::to_string(iv.last) + " by " +
              std::to_string(iv.increment) + " written as its node list (same velocities, range normalized)");
+      const auto w = common_omega(nodes);
       if (nodes.size() == 1) {
-        os_ << "*INITIAL_VELOCITY_NODE\n$#     nid        vx        vy        vz\n"
-            << kcard({I(nid(nodes[0])), R(iv.v[0]), R(iv.v[1]), R(iv.v[2])}) << "\n";
+        os_ << "*INITIAL_VELOCITY_NODE\n" << velocity_card(iv.v, w, nid(nodes[0]));
       } else {
         int sid = node_set(nodes);
-        os_ << "*INITIAL_VELOCITY\n$#    nsid\n" << kcard({I(sid)}) << "\n$#      vx        vy        vz\n"
-            << kcard({R(iv.v[0]), R(iv.v[1]), R(iv.v[2])}) << "\n";
+        os_ << "*INITIAL_VELOCITY\n$#    nsid\n" << kcard({I(sid)}) << "\n" << velocity_card(iv.v, w, 0);
       }
     }
   }
@@ -628,6 +708,11 @@ int write_converted_decks(const Model& m, const std::string& keyword_path, const
   for (int k = 0; k < 2; ++k) {
     const std::string& path = k == 0 ? keyword_path : fixed_path;
     if (path.empty()) continue;
+    if (k == 1 && m.num_shells() > 0) {  // the fixed-format shell cards are not defined yet
+      log << " error: the fixed-format deck " << path << " cannot hold this model (not written): "
+          << m.num_shells() << " shells (the fixed format has no shell cards in IMPACT-3D yet; write a keyword deck)\n";
+      return exit_code::input_error;
+    }
     std::vector<std::string> notes;
     if (!write_deck_file(path, m, k == 0, diag, &notes)) {
       diag.print(log);
@@ -730,6 +815,31 @@ std::vector<std::string> model_differences(const Model& a, const Model& b, int m
     for (int j = 0; j < 8; ++j)
       N(w + "node " + std::to_string(j + 1), a.hex_nodes[std::size_t(e)][std::size_t(j)], b.hex_nodes[std::size_t(e)][std::size_t(j)]);
   }
+  N("shells", a.num_shells(), b.num_shells());
+  for (int e = 0; e < std::min(a.num_shells(), b.num_shells()); ++e) {
+    std::string w = "shell " + std::to_string(e + 1) + " ";
+    N(w + "material", a.shell_material[std::size_t(e)], b.shell_material[std::size_t(e)]);
+    for (int j = 0; j < 4; ++j) {
+      N(w + "node " + std::to_string(j + 1), a.shell_nodes[std::size_t(e)][std::size_t(j)], b.shell_nodes[std::size_t(e)][std::size_t(j)]);
+      D(w + "thickness " + std::to_string(j + 1), a.shell_thickness[std::size_t(e)][std::size_t(j)], b.shell_thickness[std::size_t(e)][std::size_t(j)]);
+    }
+  }
+  if (a.shell_user_id != b.shell_user_id) diff("shell ids", std::to_string(a.shell_user_id.size()), std::to_string(b.shell_user_id.size()));
+  for (std::size_t k = 0; k < std::min(a.materials.size(), b.materials.size()); ++k) {
+    const auto &x = a.materials[k], &y = b.materials[k];
+    std::string w = "material " + std::to_string(k + 1) + " ";
+    N(w + "shell", x.shell, y.shell);
+    N(w + "NIP", x.shell_section.nip, y.shell_section.nip);
+    D(w + "SHRF", x.shell_section.shrf, y.shell_section.shrf);
+  }
+  auto nonzero = [](const auto& v) {
+    for (const auto& x : v)
+      if (x != std::decay_t<decltype(x)>{}) return true;
+    return false;
+  };
+  if ((nonzero(a.rot_bc) || nonzero(b.rot_bc)) && a.rot_bc != b.rot_bc) diff("rotational constraints", "", "other");
+  if ((nonzero(a.init_omega) || nonzero(b.init_omega)) && a.init_omega != b.init_omega) diff("initial rotational velocities", "", "other");
+  D("rotary inertia scale", a.shell_rotary_scale, b.shell_rotary_scale);
   auto blocks = [&](const char* w, const std::vector<std::array<int, 2>>& x, const std::vector<std::array<int, 2>>& y) {
     if (x != y) diff(w, std::to_string(x.size()) + " block(s)", std::to_string(y.size()) + " block(s), or other ranges");
   };

@@ -7,6 +7,7 @@
 // decks") lists the keywords and fields.
 
 #include "impact3d/input/keyword_reader.h"
+#include "impact3d/init/shell_init.h"
 #include "impact3d/material/material_types.h"
 
 #include "impact3d/input/deck_reader.h"
@@ -380,6 +381,23 @@ struct RElem {
                      : field_ref(card, widths1(), 2 + j);
   }
 };
+// *ELEMENT_SHELL (and _THICKNESS) card
+struct RShell {
+  int id = 0, pid = 0;
+  std::array<int, 4> n{};
+  std::array<double, 4> t{};   // THIC1-THIC4 (0: the section's)
+  Ref ref, pid_ref;
+  std::array<Ref, 4> node_refs;
+  int line = 0;
+  const DeckFile* file = nullptr;
+};
+// *SECTION_SHELL
+struct RShellSection {
+  int nip = 2;
+  double shrf = 1.0;
+  std::array<double, 4> t{};
+  Ref ref;
+};
 struct RPart {
   int pid = 0, secid = 0, mid = 0, eosid = 0, hgid = 0;
   std::string title;
@@ -479,12 +497,15 @@ struct RVelocity {       // one initial-velocity definition, in deck order
   int nsidex = 0, boxid = 0, icid = 0;
   Ref nsidex_ref, boxid_ref, icid_ref;
   std::array<double, 3> ve{};
+  std::array<double, 3> w{};  // VXR VYR VZR: rotational velocities (shell nodes)
+  bool has_w = false;
 };
 struct RSpc {
   std::string keyword;  // as written (*BOUNDARY_SPC_SET_ID, ...)
   bool set = false;
   int id = 0;
   int bits = 0;  // fixed local directions (global when cid is 0)
+  int rbits = 0;  // rotations: bit 0 rx, 1 ry, 2 rz (they act on shell nodes)
   int cid = 0;
   Ref ref, cid_ref;
 };
@@ -569,6 +590,10 @@ class KeywordReader {
   std::vector<RElem, HugePageAllocator<RElem>> elems_;
   std::vector<RPart> parts_;
   std::map<int, RSection> sections_;
+  std::map<int, RShellSection> shell_sections_;
+  std::vector<RShell> shells_;
+  std::vector<std::vector<int>> part_shells_;  // per part: its shells (indices into Model::shell_nodes)
+  std::vector<std::pair<int, int>> node_rc_;  // *NODE RC: node id, rotation bits
   std::map<int, RMat> mats_;
   std::map<int, RHourglass> hourglasses_;
   std::map<int, RIdList> node_sets_, part_sets_;
@@ -607,6 +632,10 @@ class KeywordReader {
     return " (it is defined by " + it->second + ", a keyword IMPACT-3D does not support)";
   }
   int rotational_spc_ = 0;
+  double rotascl_ = 1.0;  // *CONTROL_SHELL ROTASCL
+  std::vector<Ref> rot_refs_;
+  Ref w_ref_;
+  std::vector<char> shell_node_;  // per node: used by a shell  // last rotational initial velocity (message when no shell node takes it)  // first rotational field of each *BOUNDARY_SPC card that has one
   int reaction_flag_ = -1;
   std::set<int> initially_elastic_;  // part ids
   Ref rotational_ref_;
@@ -1161,7 +1190,7 @@ class KeywordReader {
       return n.size() > k && n.compare(n.size() - k, k, s) == 0;
     };
     static const std::set<std::string> titled = {
-        "SECTION_SOLID", "HOURGLASS", "DEFINE_CURVE", "SET_NODE_LIST", "SET_NODE", "SET_PART_LIST",
+        "SECTION_SOLID", "SECTION_SHELL", "HOURGLASS", "DEFINE_CURVE", "SET_NODE_LIST", "SET_NODE", "SET_PART_LIST",
         "SET_PART", "SET_SEGMENT", "SET_NODE_LIST_GENERATE", "CONTACT_SURFACE_TO_SURFACE",
         "CONTACT_AUTOMATIC_SURFACE_TO_SURFACE", "CONTACT_NODES_TO_SURFACE",
         // issue 16: sets, boxes, coordinate systems
@@ -1243,6 +1272,13 @@ bool is_ascii_database(const std::string& n) {
         parse_section(b);
       } else if (const MaterialType* mt = find_material_type_by_keyword(n)) {
         parse_mat(b, *mt);
+      } else if (n == "ELEMENT_SHELL" || n == "ELEMENT_SHELL_THICKNESS") {
+        parse_element_shell(b, n == "ELEMENT_SHELL_THICKNESS");
+      } else if (n == "SECTION_SHELL") {
+        parse_section_shell(b);
+      } else if (n == "CONTROL_SHELL") {
+        once(b);
+        parse_control_shell(b);
       } else if (n == "HOURGLASS") {
         parse_hourglass(b);
       } else if (n == "CONTROL_HOURGLASS") {
@@ -1447,7 +1483,7 @@ bool is_ascii_database(const std::string& n) {
       if (tc < 0 || tc > 7) { c.error(1216, 4, "TC"); tc = 0; }
       n.tc = std::int8_t(tc);
       if (rc < 0 || rc > 7) c.error(1216, 5, "RC");
-      else if (rc != 0) note_rotational(c.ref(5));
+      else if (rc != 0) node_rc_.push_back({n.id, bc_bits(rc)});
       nodes_.push_back(n);
     }
   }
@@ -1586,6 +1622,126 @@ bool is_ascii_database(const std::string& n) {
       sections_[id] = s;
       if (c.i(2, "AET") != 0) c.error(1102, 2, "AET", "ambient element types");
       break;  // ELFORM 1 has one card; anything after belongs to other ELFORMs
+    }
+  }
+
+  // ---- shells (Belytschko-Tsay): *ELEMENT_SHELL(_THICKNESS), *SECTION_SHELL, *CONTROL_SHELL
+
+  void parse_element_shell(const Block& b, bool thickness) {
+    const int idw = b.long_fmt ? 20 : b.i10 ? 10 : 8;
+    for (std::size_t k = 0; k < b.data.size(); ++k) {
+      if (is_blank(b.data[k].line->text)) continue;
+      KCard c = card(b, k, "", id_widths(10, idw));
+      RShell e;
+      e.id = int(c.i(0, "EID"));
+      c.set_card(b.keyword + " element " + std::to_string(e.id));
+      e.pid = int(c.i(1, "PID"));
+      e.ref = c.ref(0);
+      e.pid_ref = c.ref(1);
+      e.line = c.line();
+      e.file = b.data[k].file;
+      bool ok = true;
+      for (int j = 0; j < 4; ++j) {
+        const std::string f = "N" + std::to_string(j + 1);
+        e.n[std::size_t(j)] = int(c.i(2 + j, f.c_str()));
+        e.node_refs[std::size_t(j)] = c.ref(2 + j);
+      }
+      for (int j = 4; j < 8; ++j) {
+        const std::string f = "N" + std::to_string(j + 1);
+        if (c.i(2 + j, f.c_str()) != 0) { c.error(1102, 2 + j, f.c_str(), "8-node shells"); ok = false; }
+      }
+      if (e.n[3] == 0) e.n[3] = e.n[2];  // triangle given with three nodes
+      if (thickness) {
+        if (k + 1 >= b.data.size() || is_keyword_line(b.data[k + 1].line->text)) {
+          c.error(1316, -1, nullptr, "the thickness card (THIC1-THIC4 BETA) is missing");
+          break;
+        }
+        KCard c2 = card(b, k + 1, "element " + std::to_string(e.id) + " thickness card", W(b, 5, 16));
+        for (int j = 0; j < 4; ++j) {
+          const std::string f = "THIC" + std::to_string(j + 1);
+          e.t[std::size_t(j)] = c2.r(j, f.c_str());
+          if (e.t[std::size_t(j)] < 0) { c2.error(1241, j, f.c_str()); ok = false; }
+        }
+        if (c2.r(4, "BETA") != 0) c2.error(1102, 4, "BETA", "material angles (orthotropic materials)");
+        ++k;
+      }
+      if (e.id < 1) { c.error(1201, 0, "EID", "element ids must be positive"); continue; }
+      if (ok) shells_.push_back(e);
+    }
+  }
+
+  void parse_section_shell(const Block& b) {
+    std::size_t k = skip_option_card(b);
+    if (k >= b.data.size()) { missing_card(b, "card 1"); return; }
+    KCard c = card(b, k, "card 1", W(b, 8));
+    const int id = int(c.i(0, "SECID"));
+    c.set_card(b.keyword + " " + std::to_string(id));
+    RShellSection sec;
+    sec.ref = c.ref(0);
+    // ELFORM 2 (Belytschko-Tsay, LS-DYNA's default: blank or 0 reads as 2) only
+    const long long elform = c.i(1, "ELFORM", 2);
+    if (elform != 2 && elform != 0)
+      c.error(1102, 1, "ELFORM", "shell formulation " + std::to_string(elform) + "; only ELFORM 2 (Belytschko-Tsay)");
+    sec.shrf = c.r(2, "SHRF", 1.0);
+    if (sec.shrf == 0) sec.shrf = 1.0;  // LS-DYNA: 0 -> 1
+    if (!(sec.shrf > 0 && sec.shrf <= 1)) c.error(1003, 2, "SHRF", "shear factor in (0, 1] (5/6 for isotropic shells)");
+    const double nip = c.r(3, "NIP", 2);
+    sec.nip = nip == 0 ? 2 : int(nip);
+    if (nip != std::floor(nip) || nip < 0) c.error(1003, 3, "NIP", "integration points 1-10");
+    else if (nip > 10) c.error(1102, 3, "NIP", "more than 10 Gauss points (user-defined integration rules)");
+    c.r(4, "PROPT");  // output option: no effect
+    if (c.r(5, "QR/IRID") != 0) c.error(1102, 5, "QR/IRID", "user-defined and trapezoidal integration rules (Gauss only)");
+    if (c.i(6, "ICOMP") != 0) c.error(1102, 6, "ICOMP", "composite layups");
+    c.r(7, "SETYP");
+    if (k + 1 >= b.data.size()) {
+      missing_card(b, "card 2 (T1 T2 T3 T4 NLOC MAREA IDOF EDGSET)");
+    } else {
+      KCard c2 = card(b, k + 1, "card 2", W(b, 8));
+      c2.set_card(b.keyword + " " + std::to_string(id));
+      for (int j = 0; j < 4; ++j) {
+        const std::string f = "T" + std::to_string(j + 1);
+        sec.t[std::size_t(j)] = c2.r(j, f.c_str());
+      }
+      // LS-DYNA: T2-T4 default to T1
+      for (int j = 1; j < 4; ++j)
+        if (sec.t[std::size_t(j)] == 0) sec.t[std::size_t(j)] = sec.t[0];
+      if (sec.t[0] < 0) c2.error(1241, 0, "T1");
+      if (c2.r(4, "NLOC") != 0) c2.error(1102, 4, "NLOC", "reference-surface offsets");
+      if (c2.r(5, "MAREA") != 0) c2.error(1102, 5, "MAREA", "non-structural mass");
+      if (c2.r(6, "IDOF") != 0) c2.error(1102, 6, "IDOF", "thickness-stretch degrees of freedom");
+      if (c2.r(7, "EDGSET") != 0) c2.error(1102, 7, "EDGSET", "edge sets");
+    }
+    if (shell_sections_.count(id) || sections_.count(id)) c.error(1200, 0, "SECID", "section also defined earlier");
+    shell_sections_[id] = sec;
+  }
+
+  // *CONTROL_SHELL: card 1 WRPANG ESORT IRNXX ISTUPD THEORY BWC MITER PROJ; card 2 ROTASCL
+  // INTGRD LAMSHT CSTYP6 TSHELL.  THEORY must be Belytschko-Tsay (2); ROTASCL scales the rotary
+  // inertia; the options that change nothing for Belytschko-Tsay shells with constant
+  // thickness are listed as ignored (2006).
+  void parse_control_shell(const Block& b) {
+    if (b.data.empty()) return;
+    KCard c = card(b, 0, "card 1", W(b, 8));
+    c.r(0, "WRPANG");
+    if (c.i(1, "ESORT") != 0) c.error(2006, 1, "ESORT", "triangles are always degenerate Belytschko-Tsay quadrilaterals");
+    c.i(2, "IRNXX");
+    if (c.i(3, "ISTUPD") != 0) c.error(2006, 3, "ISTUPD", "the shell thickness stays constant");
+    const long long theory = c.i(4, "THEORY", 2);
+    if (theory != 0 && theory != 2) c.error(1102, 4, "THEORY", "shell theory " + std::to_string(theory) + "; only 2 (Belytschko-Tsay)");
+    const long long bwc = c.i(5, "BWC", 2);
+    if (bwc == 1) c.error(2006, 5, "BWC", "no warping stiffness for Belytschko-Tsay shells");
+    const long long miter = c.i(6, "MITER", 1);
+    if (miter == 3) c.error(2006, 6, "MITER", "plane-stress plasticity is always iterated to sigma_zz = 0");
+    c.i(7, "PROJ");
+    if (b.data.size() > 1) {
+      KCard c2 = card(b, 1, "card 2", W(b, 8));
+      rotascl_ = c2.r(0, "ROTASCL", 1.0);
+      if (rotascl_ == 0) rotascl_ = 1.0;
+      if (rotascl_ < 0) c2.error(1003, 0, "ROTASCL", "rotary inertia scale factor must be positive");
+      if (c2.i(1, "INTGRD") != 0) c2.error(1102, 1, "INTGRD", "Lobatto integration through the thickness");
+      c2.i(2, "LAMSHT");
+      c2.i(3, "CSTYP6");
+      c2.i(4, "TSHELL");
     }
   }
 
@@ -1738,8 +1894,9 @@ bool is_ascii_database(const std::string& n) {
       if (k + 1 >= b.data.size()) { missing_card(b, "card 2 (VX VY VZ)"); break; }
       KCard c2 = card(b, k + 1, "card 2", W(b, 6));
       v.v = {c2.r(0, "VX"), c2.r(1, "VY"), c2.r(2, "VZ")};
-      for (int f = 3; f < 6; ++f)
-        if (c2.r(f, "VR") != 0) { c2.error(2006, f, "VXR/VYR/VZR", "solid nodes have no rotations"); break; }
+      v.w = {c2.r(3, "VXR"), c2.r(4, "VYR"), c2.r(5, "VZR")};
+      v.has_w = v.w[0] != 0 || v.w[1] != 0 || v.w[2] != 0;
+      if (v.has_w) w_ref_ = c2.ref(3);
       if (v.nsidex > 0) {
         if (k + 2 >= b.data.size()) { missing_card(b, "card 3 (VXE VYE VZE), needed with NSIDEX"); break; }
         KCard c3 = card(b, k + 2, "card 3", W(b, 6));
@@ -1764,8 +1921,9 @@ bool is_ascii_database(const std::string& n) {
       v.id = int(c.i(0, "NID"));
       v.ref = c.ref(0);
       v.v = {c.r(1, "VX"), c.r(2, "VY"), c.r(3, "VZ")};
-      for (int f = 4; f < 7; ++f)
-        if (c.r(f, "VR") != 0) { c.error(2006, f, "VXR/VYR/VZR", "solid nodes have no rotations"); break; }
+      v.w = {c.r(4, "VXR"), c.r(5, "VYR"), c.r(6, "VZR")};
+      v.has_w = v.w[0] != 0 || v.w[1] != 0 || v.w[2] != 0;
+      if (v.has_w) w_ref_ = c.ref(4);
       v.icid = int(c.i(7, "ICID"));
       v.icid_ref = c.ref(7);
       velocities_.push_back(v);
@@ -1842,7 +2000,10 @@ bool is_ascii_database(const std::string& n) {
         long long d = c.i(2 + f, names[f]);
         if (d != 0 && d != 1) c.error(1006, 2 + f, names[f], "0 free or 1 fixed");
         if (d == 1 && f < 3) s.bits |= 1 << f;
-        if (d == 1 && f >= 3) note_rotational(c.ref(2 + f));
+        if (d == 1 && f >= 3) {
+          s.rbits |= 1 << (f - 3);
+          if (s.rbits == 1 << (f - 3)) rot_refs_.push_back(c.ref(2 + f));
+        }
       }
       spcs_.push_back(s);
     }
@@ -2642,7 +2803,9 @@ bool is_ascii_database(const std::string& n) {
     resolve_nodes();
     resolve_coordinate_systems();
     resolve_parts_and_elements();
+    resolve_shells();
     resolve_materials();
+    resolve_shell_materials();
     resolve_control();
     resolve_spc();
     resolve_history();
@@ -2777,10 +2940,10 @@ bool is_ascii_database(const std::string& n) {
     release(elems_);  // the raw elements are not needed any more
     m_.hex_user_id.clear();
     if (!identity) m_.hex_user_id = elem_ids_;
-    if (ne == 0) {
+    if (ne == 0 && shells_.empty()) {
       Location loc;
       loc.file = main_.name();
-      diag_.add(1311, loc, "*ELEMENT_SOLID: the deck defines no solid elements");
+      diag_.add(1311, loc, "*ELEMENT_SOLID, *ELEMENT_SHELL: the deck defines no elements");
     }
   }
 
@@ -2791,7 +2954,11 @@ bool is_ascii_database(const std::string& n) {
       const RPart& p = parts_[k];
       if (part_index_[p.pid] != int(k)) continue;  // duplicate
       std::string card = "*PART " + std::to_string(p.pid);
-      bool used = !part_elems_[k].empty();
+      bool used = !part_elems_[k].empty() || !part_shells_[k].empty();
+      if (!part_shells_[k].empty()) {  // a shell part: resolve_shell_materials
+        if (!part_elems_[k].empty()) err(1102, p.sec_ref, card, "SECID", "a part of both solids and shells");
+        continue;
+      }
       auto sit = sections_.find(p.secid);
       auto mit = mats_.find(p.mid);
       if (!used && (sit == sections_.end() || mit == mats_.end())) {
@@ -2873,6 +3040,134 @@ bool is_ascii_database(const std::string& n) {
     // elements of a refused part keep -1: mark them undefined so the checks skip them
     for (std::size_t e = 0; e < m_.hex_material.size(); ++e)
       if (m_.hex_material[e] < 0) m_.hex_nodes[e].fill(-1);
+  }
+
+  // *ELEMENT_SHELL cards -> Model::shell_* in increasing id order (material: -2 - part index
+  // until resolve_shell_materials).
+  void resolve_shells() {
+    part_shells_.assign(parts_.size(), {});
+    std::stable_sort(shells_.begin(), shells_.end(), [](const RShell& a, const RShell& b) { return a.id < b.id; });
+    std::vector<int> ids;
+    bool identity = true;
+    for (std::size_t q = 0; q < shells_.size(); ++q) {
+      const RShell& e = shells_[q];
+      const std::string card = "*ELEMENT_SHELL element " + std::to_string(e.id);
+      if (q > 0 && shells_[q - 1].id == e.id) {
+        err(1200, e.ref, card, "EID", "element " + std::to_string(e.id) + " also defined at " + at(shells_[q - 1].ref));
+        continue;
+      }
+      std::array<int, 4> n{};
+      bool ok = true;
+      for (int j = 0; j < 4; ++j) {
+        n[std::size_t(j)] = node_index(e.n[std::size_t(j)]);
+        if (n[std::size_t(j)] < 0) {
+          const std::string f = "N" + std::to_string(j + 1);
+          err(1202, e.node_refs[std::size_t(j)], card, f.c_str(), "node " + std::to_string(e.n[std::size_t(j)]) + " is not defined by *NODE");
+          ok = false;
+        }
+      }
+      if (ok && (n[0] == n[1] || n[0] == n[2] || n[1] == n[2] || n[0] == n[3] || n[1] == n[3])) {
+        Ref r = e.node_refs[0];
+        r.c2 = e.node_refs[3].c2;
+        err(1222, r, card, "N1-N4", "a shell is a quadrilateral or a triangle with N3 = N4");
+        ok = false;
+      }
+      auto pit = part_index_.find(e.pid);
+      if (pit == part_index_.end()) {
+        err(1308, e.pid_ref, card, "PID", "part " + std::to_string(e.pid) + " is not defined by *PART" + refused_note('p', e.pid));
+        ok = false;
+      }
+      const int k = m_.num_shells();
+      if (!ok) n.fill(-1);
+      m_.shell_nodes.push_back(n);
+      m_.shell_material.push_back(ok ? -2 - pit->second : -1);
+      m_.shell_thickness.push_back(e.t);
+      m_.shell_line.push_back(e.line);
+      m_.shell_file.push_back(file_index(e.file));
+      ids.push_back(e.id);
+      identity = identity && e.id == k + 1;
+      if (ok) part_shells_[std::size_t(pit->second)].push_back(k);
+    }
+    m_.shell_user_id.clear();
+    if (!identity) m_.shell_user_id = ids;
+    release(shells_);
+    m_.shell_rotary_scale = rotascl_;
+  }
+
+  // Shell parts: *SECTION_SHELL and material -> MaterialData (shell = true), the shells'
+  // material indices and the section's thicknesses where the element card gives none.
+  void resolve_shell_materials() {
+    for (std::size_t k = 0; k < parts_.size(); ++k) {
+      const RPart& p = parts_[k];
+      if (part_index_[p.pid] != int(k) || part_shells_[k].empty() || !part_elems_[k].empty()) continue;
+      const std::string card = "*PART " + std::to_string(p.pid);
+      auto sit = shell_sections_.find(p.secid);
+      auto mit = mats_.find(p.mid);
+      if (sit == shell_sections_.end()) {
+        if (sections_.count(p.secid)) err(1102, p.sec_ref, card, "SECID", "section " + std::to_string(p.secid) + " is a *SECTION_SOLID; shells need *SECTION_SHELL");
+        else if (auto u = unsupported_secids_.find(p.secid); u != unsupported_secids_.end())
+          err(1102, p.sec_ref, card, "SECID", "section " + std::to_string(p.secid) + " is " + u->second + "; shells need *SECTION_SHELL");
+        else err(1310, p.sec_ref, card, "SECID", "*SECTION_SHELL " + std::to_string(p.secid) + " is not defined");
+        continue;
+      }
+      if (mit == mats_.end()) {
+        auto u = unsupported_mids_.find(p.mid);
+        if (u != unsupported_mids_.end()) err(1103, p.mid_ref, card, "MID", "material " + std::to_string(p.mid) + " is " + u->second + "; supported for shells: *MAT_ELASTIC, *MAT_PLASTIC_KINEMATIC, *MAT_RIGID");
+        else err(1310, p.mid_ref, card, "MID", "material " + std::to_string(p.mid) + " is not defined by a *MAT keyword");
+        continue;
+      }
+      if (p.eosid != 0) err(1102, p.eos_ref, card, "EOSID", "equations of state");
+      const RMat& r = mit->second;
+      MaterialData md = r.md;
+      md.number = int(m_.materials.size()) + 1;
+      md.title = p.title;
+      md.line = p.line;
+      if (!has_shell_kernel(md.type)) {
+        err(1103, p.mid_ref, card, "MID", "material " + std::to_string(p.mid) + " (type " + std::to_string(md.type) +
+                                              ") has no shell form; supported for shells: *MAT_ELASTIC, *MAT_PLASTIC_KINEMATIC, *MAT_RIGID");
+        continue;
+      }
+      if (md.fail_strain != 0) err(1102, r.ref, "*MAT_PLASTIC_KINEMATIC " + std::to_string(p.mid), "FS", "failure (element deletion) of shells");
+      md.shell = true;
+      md.shell_section.nip = sit->second.nip;
+      md.shell_section.shrf = sit->second.shrf;
+      md.shell_section.t = sit->second.t;
+      int ihq = ctrl_ihq_;
+      double qm = ctrl_qh_;
+      if (p.hgid != 0) {
+        auto hit = hourglasses_.find(p.hgid);
+        if (hit == hourglasses_.end()) {
+          err(1310, p.hg_ref, card, "HGID", "*HOURGLASS " + std::to_string(p.hgid) + " is not defined");
+        } else {
+          if (hit->second.ihq != 0) ihq = hit->second.ihq;
+          if (hit->second.qm > 0) qm = hit->second.qm;
+        }
+      }
+      md.hourglass_type = ihq == 0 ? 1 : ihq;
+      if (md.hourglass_type > 5) err(1102, p.hg_ref.line ? p.hg_ref : p.ref, card, "HGID", "shell hourglass type " + std::to_string(md.hourglass_type) + " (IHQ 1-3 viscous, 4-5 stiffness)");
+      md.hourglass_coef = qm > 0 ? qm : 0.10;
+      md.bulk_type = ctrl_btype_;
+      const int mat = int(m_.materials.size());
+      m_.materials.push_back(md);
+      for (int e : part_shells_[k]) {
+        m_.shell_material[std::size_t(e)] = mat;
+        auto& t = m_.shell_thickness[std::size_t(e)];
+        if (t[0] == 0 && t[1] == 0 && t[2] == 0 && t[3] == 0) t = sit->second.t;
+        if (!(t[0] > 0)) {
+          Location loc;
+          loc.file = m_.file_of(m_.shell_file, std::size_t(e));
+          loc.line = m_.shell_line[std::size_t(e)];
+          loc.card = "*ELEMENT_SHELL element " + std::to_string(m_.shell_id(e));
+          diag_.add(1241, loc, "neither the element card nor *SECTION_SHELL " + std::to_string(p.secid) + " (T1) gives a thickness");
+        }
+      }
+    }
+    // shells of refused parts: undefined (the checks skip them)
+    for (std::size_t e = 0; e < m_.shell_material.size(); ++e)
+      if (m_.shell_material[e] < 0) {
+        m_.shell_material[e] = -1;
+        m_.shell_nodes[e].fill(-1);
+      }
   }
 
   void resolve_control() {
@@ -3218,12 +3513,18 @@ bool is_ascii_database(const std::string& n) {
 
   std::vector<int> nodes_of_parts(const std::vector<int>& parts) {
     std::vector<char> mark(std::size_t(m_.num_nodes()), 0);
-    for (int p : parts)
+    for (int p : parts) {
       for (int e : part_elems_[std::size_t(p)]) {
         const auto& n = m_.hex_nodes[std::size_t(e)];
         if (n[0] < 0) continue;
         for (int v : n) mark[std::size_t(v)] = 1;
       }
+      for (int e : part_shells_[std::size_t(p)]) {
+        const auto& n = m_.shell_nodes[std::size_t(e)];
+        if (n[0] < 0) continue;
+        for (int v : n) mark[std::size_t(v)] = 1;
+      }
+    }
     std::vector<int> out;
     for (std::size_t k = 0; k < mark.size(); ++k)
       if (mark[k]) out.push_back(int(k));
@@ -3243,10 +3544,31 @@ bool is_ascii_database(const std::string& n) {
       }
       const int bits = global_spc_bits(s);
       for (int n : nodes) m_.bc[std::size_t(n)] = bc_code(bc_bits(m_.bc[std::size_t(n)]) | bits);
+      if (s.rbits) add_rotational_constraints(nodes, s.rbits, s.ref);
+    }
+    for (const auto& [id, bits] : node_rc_) {
+      const int idx = node_index(id);
+      if (idx >= 0) add_rotational_constraints({idx}, bits, Ref{});
     }
     if (rotational_spc_) {
       Location loc = loc_of(rotational_ref_, "", nullptr, false);
       diag_.add(2005, loc, std::to_string(rotational_spc_) + " rotational constraint(s) (*NODE RC, *BOUNDARY_SPC DOFR*)");
+    }
+  }
+
+  // Rotational constraints act on the nodes that shells use; on other nodes they are counted
+  // for warning 2005 (solids have no rotations).
+  void add_rotational_constraints(const std::vector<int>& nodes, int bits, const Ref& r) {
+    if (shell_node_.empty()) {
+      shell_node_.assign(std::size_t(m_.num_nodes()), 0);
+      for (const auto& n : m_.shell_nodes)
+        if (n[0] >= 0)
+          for (int v : n) shell_node_[std::size_t(v)] = 1;
+    }
+    if (m_.rot_bc.empty()) m_.rot_bc.assign(std::size_t(m_.num_nodes()), 0);
+    for (int n : nodes) {
+      if (shell_node_[std::size_t(n)]) m_.rot_bc[std::size_t(n)] |= std::uint8_t(bits);
+      else if (rotational_spc_++ == 0) rotational_ref_ = r;
     }
   }
 
@@ -3587,6 +3909,20 @@ bool is_ascii_database(const std::string& n) {
     add_velocity_nodes(exempted, v.ve);
   }
 
+  // Rotational initial velocities (VXR VYR VZR, or OMEGA n of *INITIAL_VELOCITY_GENERATION)
+  // on the nodes (only shell nodes have rotations; on others they have no effect).
+  void set_rotational_velocities(const std::vector<int>& nodes, const RVelocity& v) {
+    std::array<double, 3> w = v.w;
+    bool any = v.has_w;
+    if (v.omega != 0) {
+      for (int a = 0; a < 3; ++a) w[std::size_t(a)] = v.omega * v.n[std::size_t(a)];
+      any = true;
+    }
+    if (!any) return;
+    if (m_.init_omega.empty()) m_.init_omega.assign(std::size_t(m_.num_nodes()), {0, 0, 0});
+    for (int n : nodes) m_.init_omega[std::size_t(n)] = w;
+  }
+
   void resolve_velocities() {
     for (RVelocity v : velocities_) {
       // ICID: the velocities (and the rotation axis) are given in a local system
@@ -3605,22 +3941,36 @@ bool is_ascii_database(const std::string& n) {
           iv.last = 0;
           iv.v = v.v;
           m_.init_velocities.push_back(iv);
+          if (v.has_w) {
+            std::vector<int> all(std::size_t(m_.num_nodes()));
+            for (std::size_t i = 0; i < all.size(); ++i) all[i] = int(i);
+            set_rotational_velocities(all, v);
+          }
           break;
         }
         case RVelocity::node: {
           int idx = node_index(v.id);
           if (idx < 0) err(1202, v.ref, "*INITIAL_VELOCITY_NODE", "NID", "node " + std::to_string(v.id) + " is not defined by *NODE");
-          else add_velocity_nodes({idx}, v.v);
+          else {
+            add_velocity_nodes({idx}, v.v);
+            set_rotational_velocities({idx}, v);
+          }
           break;
         }
         case RVelocity::node_set:
-          if (const RIdList* s = find_node_set(v.id, v.ref, "*INITIAL_VELOCITY", "NSID"))
-            add_generated_velocities(set_nodes(*s, "*SET_NODE_LIST " + std::to_string(v.id)), v);
+          if (const RIdList* s = find_node_set(v.id, v.ref, "*INITIAL_VELOCITY", "NSID")) {
+            const std::vector<int> nodes = set_nodes(*s, "*SET_NODE_LIST " + std::to_string(v.id));
+            add_generated_velocities(nodes, v);
+            set_rotational_velocities(nodes, v);
+          }
           break;
         case RVelocity::part:
-        case RVelocity::part_set:
-          add_generated_velocities(nodes_of_parts(parts_of(v.kind == RVelocity::part_set, v.id, v.ref, "*INITIAL_VELOCITY_GENERATION", "ID")), v);
+        case RVelocity::part_set: {
+          const std::vector<int> nodes = nodes_of_parts(parts_of(v.kind == RVelocity::part_set, v.id, v.ref, "*INITIAL_VELOCITY_GENERATION", "ID"));
+          add_generated_velocities(nodes, v);
+          set_rotational_velocities(nodes, v);
           break;
+        }
       }
     }
     m_.control.num_init_velocity_cards = int(m_.init_velocities.size());
@@ -3761,7 +4111,13 @@ bool is_ascii_database(const std::string& n) {
       }
       segment_set_segments(it->second, side.id, out, lines, files);
     } else if (side.type == 2 || side.type == 3) {
-      exterior_faces(parts_of(side.type == 2, side.id, side.id_ref, card, field), nullptr, out, lines, files);
+      const std::vector<int> parts = parts_of(side.type == 2, side.id, side.id_ref, card, field);
+      for (int p : parts)
+        if (!part_shells_[std::size_t(p)].empty()) {  // (contact on shells: not yet)
+          err(1102, side.id_ref, card, field, "shell part " + std::to_string(parts_[std::size_t(p)].pid) + " in a contact (shells in contact are not implemented yet)");
+          return;
+        }
+      exterior_faces(parts, nullptr, out, lines, files);
     } else if (side.type == 4) {
       if (const RIdList* s = find_node_set(side.id, side.id_ref, card, field)) {
         std::vector<char> mark(std::size_t(m_.num_nodes()), 0);

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "impact3d/element/hexahedron.h"
+#include "impact3d/element/shell_bt.h"
 #include "impact3d/input/deck_reader.h"
 #include "impact3d/material/material_types.h"
 
@@ -124,6 +125,45 @@ void orient_interface_segments(Model& m, Diagnostics& diag) {
     }
   }
 }
+
+// Shells: nodes and materials they use, a positive area and thickness each (1240, 1241).
+void check_shells(const Model& m, const Location& file_loc, Diagnostics& diag,
+                  std::vector<char>& node_used, std::vector<char>& mat_used) {
+  for (int k = 0; k < m.num_shells(); ++k) {
+    const auto& n = m.shell_nodes[std::size_t(k)];
+    if (n[0] < 0) continue;  // already reported
+    for (int j = 0; j < 4; ++j) node_used[std::size_t(n[std::size_t(j)])] = 1;
+    const int mat = m.shell_material[std::size_t(k)];
+    if (mat >= 0 && mat < int(mat_used.size())) mat_used[std::size_t(mat)] = 1;
+    Location loc = file_loc;
+    loc.file = m.file_of(m.shell_file, std::size_t(k));
+    if (std::size_t(k) < m.shell_line.size()) loc.line = m.shell_line[std::size_t(k)];
+    loc.card = "shell element " + std::to_string(m.shell_id(k));
+    double x[4][3];
+    for (int j = 0; j < 4; ++j) {
+      const std::size_t i = std::size_t(n[std::size_t(j)]);
+      x[j][0] = m.x[i];
+      x[j][1] = m.y[i];
+      x[j][2] = m.z[i];
+    }
+    ShellFrame fr;
+    if (!calc_shell_frame(x, fr)) {
+      char buf[64];
+      std::snprintf(buf, sizeof buf, "area %.6g", fr.area);
+      diag.add(1240, loc, buf);
+    }
+    const auto& t = m.shell_thickness[std::size_t(k)];
+    const int nt = n[2] == n[3] ? 3 : 4;
+    for (int j = 0; j < nt; ++j)
+      if (!(t[std::size_t(j)] > 0)) {
+        char buf[64];
+        std::snprintf(buf, sizeof buf, "thickness %.6g at node %d", t[std::size_t(j)], m.node_id(n[std::size_t(j)]));
+        diag.add(1241, loc, buf);
+        break;
+      }
+  }
+}
+
 
 namespace {
 // Warning 2014 for each rigid material whose nodes were given velocities (after the constraints
@@ -288,6 +328,7 @@ bool check_model(const Model& m, Diagnostics& diag) {
     int mat = m.hex_material[std::size_t(e)];
     if (mat >= 0 && mat < int(mat_used.size())) mat_used[std::size_t(mat)] = 1;
   }
+  check_shells(m, file_loc, diag, node_used, mat_used);
   // element faces that are interface segments (only those keys are looked for)
   std::unordered_map<std::array<int, 4>, bool, FaceKeyHash> faces;
   if (has_interface_segments(m)) {

@@ -48,8 +48,9 @@ struct SolidKernel {
   bool plastic_strain = false;  // reads and writes eps_p / yielded
 };
 
-// A plane-stress kernel for shells (a later element family); empty today.
-struct ShellKernel {
+// A plane-stress kernel for shells: empty today (the shell family still picks its kernel in
+// impact3d/init/shell_init.cpp, shell_kernel_for_material_type; to move here).
+struct PlaneStressKernel {
   void (*update_point)(const MaterialConstants&, const double d[6], double dt, SolidPointState&) = nullptr;
 };
 
@@ -109,7 +110,7 @@ struct MaterialType {
   // extra echo lines after the parameters (may be null)
   void (*echo)(std::ostream&, const MaterialData&) = nullptr;
   SolidKernel solid;
-  ShellKernel shell;
+  PlaneStressKernel shell;
   std::vector<const char*> history;       // names of the per-element history values (<= kMaxHistory)
 };
 

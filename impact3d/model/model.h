@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -38,6 +39,14 @@ struct ControlData {
   double min_step_factor = 0;  // error termination when dt < factor * dt0 (0 = no check)
 };
 
+// *SECTION_SHELL of a shell part (Belytschko-Tsay, LS-DYNA ELFORM 2).
+struct ShellSectionData {
+  int nip = 2;                       // Gauss points through the thickness, 1-10
+  double shrf = 1.0;                 // transverse shear factor (LS-DYNA: blank/0 -> 1; 5/6 advised)
+  std::array<double, 4> t{};         // default nodal thicknesses T1-T4
+  int line = 0;
+};
+
 struct MaterialData {
   int number = 0;
   int type = 0;          // DYNA3D type number (material_types.h)
@@ -58,6 +67,8 @@ struct MaterialData {
   std::vector<double> par;
   bool packed = false;   // parameters were read 8 per card
   int line = 0;          // line of card 1, for messages
+  bool shell = false;    // the part is a shell part (its elements are in Model::shell_nodes)
+  ShellSectionData shell_section;
 };
 
 struct StoneWall {
@@ -177,6 +188,21 @@ struct Model {
   // renumbered 1..N in increasing id order); empty = identity.
   std::vector<int> node_user_id, hex_user_id;
 
+  // Shells (Belytschko-Tsay, index = shell number - 1): nodes n1-n4 (0-based, n3 == n4 for a
+  // triangle), material, nodal thicknesses, and where each card is.
+  std::vector<std::array<int, 4>> shell_nodes;
+  std::vector<int> shell_material;
+  std::vector<std::array<double, 4>> shell_thickness;
+  std::vector<int> shell_line, shell_file;
+  std::vector<int> shell_user_id;            // deck ids when not 1..N (empty: identity)
+  // Rotational constraints per node (bit 0 rx, 1 ry, 2 rz; empty: none) and initial
+  // rotational velocities (empty: none); they act on nodes that shells use.
+  std::vector<std::uint8_t> rot_bc;
+  std::vector<std::array<double, 3>> init_omega;
+  double shell_rotary_scale = 1.0;           // *CONTROL_SHELL ROTASCL: scales the rotary inertia
+  int num_shells() const { return static_cast<int>(shell_nodes.size()); }
+  int shell_id(int k) const { return shell_user_id.empty() ? k + 1 : shell_user_id[std::size_t(k)]; }
+
   std::vector<std::array<int, 2>> node_th_blocks, solid_th_blocks;  // deck numbers, inclusive
   std::vector<LoadCurve> load_curves;
   std::vector<StoneWall> walls;
@@ -195,7 +221,12 @@ struct Model {
   int num_nodes() const { return static_cast<int>(x.size()); }
   // The deck's number of node i / solid e (0-based indices): what every message and output shows.
   int node_id(int i) const { return node_user_id.empty() ? i + 1 : node_user_id[std::size_t(i)]; }
-  int hex_id(int e) const { return hex_user_id.empty() ? e + 1 : hex_user_id[std::size_t(e)]; }
+  // (an index past the solids is a shell: num_hexes() + shell index, as the element pass
+  // reports the element controlling the step)
+  int hex_id(int e) const {
+    if (e >= num_hexes()) return shell_id(e - num_hexes());
+    return hex_user_id.empty() ? e + 1 : hex_user_id[std::size_t(e)];
+  }
   int num_hexes() const { return static_cast<int>(hex_nodes.size()); }
 };
 

@@ -7,7 +7,9 @@
 #include <vector>
 
 #include "impact3d/element/hex_block.h"
+#include "impact3d/material/material.h"
 #include "impact3d/material/material_types.h"
+#include "impact3d/model/shell_state.h"
 
 namespace impact3d {
 
@@ -73,7 +75,9 @@ struct State {
     const std::size_t slot = std::size_t(elem_slot[std::size_t(e)]);
     return (slot / kLanes) * (8 * kLanes) + std::size_t(j) * kLanes + slot % kLanes;
   }
+  // (-1 for a shell corner: those follow the solids' corners, ShellState::corner_base)
   int corner_element(std::size_t c) const {
+    if (c >= 8 * slot_elem.size()) return -1;
     return slot_elem[(c / (8 * kLanes)) * kLanes + c % kLanes];
   }
 
@@ -98,6 +102,7 @@ struct State {
 
   std::vector<MaterialConstants> mats;
   std::vector<RigidBody> rigid;
+  ShellState shells;                   // the Belytschko-Tsay shells (shell_state.h)
 
   // time integration
   double time = 0;
@@ -129,6 +134,9 @@ struct State {
     v(time); v(cycle); v(dt_half); v(dt_next); v(dt_elem); v(dt0);
     v(kinetic); v(internal); v(hourglass); v(bulk_viscous); v(wall_work); v(contact);
     v(external_work); v(initial_total); v(wall_force); v(wall_disp); v(wall_vel);
+    v(shells.area); v(shells.sig); v(shells.back); v(shells.eps_p); v(shells.yielded);
+    v(shells.hgq); v(shells.dt_e); v(shells.energy); v(shells.cmx); v(shells.cmy); v(shells.cmz);
+    v(shells.wx); v(shells.wy); v(shells.wz); v(shells.rot_kinetic);
     for (RigidBody& rb : rigid) {
       v(rb.com); v(rb.vcom); v(rb.rot); v(rb.omega); v(rb.ang_mom);
     }

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "impact3d/element/shell_bt.h"
+
 namespace impact3d {
 
 PlotGeometry make_plot_geometry(const Model& m) {
@@ -22,6 +24,13 @@ PlotGeometry make_plot_geometry(const Model& m) {
     for (int j = 0; j < 8; ++j) g.hex_nodes[std::size_t(8 * e + j)] = m.hex_nodes[std::size_t(e)][std::size_t(j)];
     g.hex_material[std::size_t(e)] = m.hex_material[std::size_t(e)] + 1;
   }
+  g.shell_nodes.resize(std::size_t(4) * m.num_shells());
+  g.shell_material.resize(std::size_t(m.num_shells()));
+  for (int k = 0; k < m.num_shells(); ++k) {
+    for (int j = 0; j < 4; ++j) g.shell_nodes[std::size_t(4 * k + j)] = m.shell_nodes[std::size_t(k)][std::size_t(j)];
+    g.shell_material[std::size_t(k)] = m.shell_material[std::size_t(k)] + 1;
+  }
+  if (!m.shell_user_id.empty()) g.shell_user_ids = m.shell_user_id;
   for (const auto& md : m.materials)
     g.part_titles.push_back(md.title.empty() ? "material " + std::to_string(md.number) : md.title.substr(0, 72));
   // the deck's numbers (NARBS section), so readers show them
@@ -58,6 +67,21 @@ void fill_plot_globals(const Model& m, const State& s, const InterfaceForces& if
       ps.mat_velocity[3 * k + 2] += mc * s.vz[i];
     }
   }
+  // shells: rho h A0 each, a quarter per corner
+  const ShellState& sh = s.shells;
+  for (int q = 0; q < sh.ns; ++q) {
+    const std::size_t k = std::size_t(sh.mat[std::size_t(q)]);
+    const double me = s.mats[k].rho * sh.thick[std::size_t(q)] * sh.area0[std::size_t(q)];
+    ps.mat_mass[k] += me;
+    for (int n : sh.conn[std::size_t(q)]) {
+      const std::size_t i = std::size_t(n);
+      const double mc = 0.25 * me;
+      ps.mat_kinetic_energy[k] += 0.5 * mc * (s.vx[i] * s.vx[i] + s.vy[i] * s.vy[i] + s.vz[i] * s.vz[i]);
+      ps.mat_velocity[3 * k] += mc * s.vx[i];
+      ps.mat_velocity[3 * k + 1] += mc * s.vy[i];
+      ps.mat_velocity[3 * k + 2] += mc * s.vz[i];
+    }
+  }
   // whole-model velocity: total momentum over total mass
   double mtot = 0, p[3] = {0, 0, 0};
   for (std::size_t k = 0; k < nm; ++k) {
@@ -86,6 +110,77 @@ void fill_plot_globals(const Model& m, const State& s, const InterfaceForces& if
     for (std::size_t a = 0; a < 3; ++a) ps.interface_forces[3 * i + a] = iface[i][a] + 0.0;
 }
 
+namespace {
+
+// Local stress (xx yy xy yz zx, zz = 0) to global axes with the frame rows e1 e2 e3: xx yy zz
+// xy yz zx.
+void shell_stress_to_global(const double e[3][3], const double l[5], double* g) {
+  const double t[3][3] = {{l[0], l[2], l[4]}, {l[2], l[1], l[3]}, {l[4], l[3], 0.0}};
+  const int ij[6][2] = {{0, 0}, {1, 1}, {2, 2}, {0, 1}, {1, 2}, {2, 0}};
+  for (int c = 0; c < 6; ++c) {
+    const int i = ij[c][0], j = ij[c][1];
+    double v = 0;
+    for (int a = 0; a < 3; ++a)
+      for (int b = 0; b < 3; ++b) v += e[a][i] * t[a][b] * e[b][j];
+    g[c] = v;
+  }
+}
+
+// One shell's kShellPlotVars words (plot_database.h): surface stresses from the linear fit of
+// the points (N/h + 12 M z / h^3: exact for an elastic section), the plastic strain of the
+// lowest, middle and highest point, the resultants, thickness, energy.
+void fill_shell_plot_vars(const State& s, int k, double* out) {
+  const ShellState& sh = s.shells;
+  const std::size_t K = std::size_t(k);
+  const int nip = sh.nip[K];
+  const std::size_t ip0 = std::size_t(sh.ip_start[K]);
+  const double h = sh.thick[K];
+  double zeta[kMaxShellIntegrationPoints], w[kMaxShellIntegrationPoints];
+  gauss_legendre_rule(nip, zeta, w);
+  double N[5] = {0, 0, 0, 0, 0}, M[3] = {0, 0, 0};
+  for (int p = 0; p < nip; ++p) {
+    const double* q = &sh.sig[5 * (ip0 + std::size_t(p))];
+    const double wz = 0.5 * h * w[p], z = 0.5 * h * zeta[p];
+    for (int c = 0; c < 5; ++c) N[c] += wz * q[c];
+    for (int c = 0; c < 3; ++c) M[c] += wz * z * q[c];
+  }
+  double x[4][3];
+  for (int j = 0; j < 4; ++j) {
+    const std::size_t n = std::size_t(sh.conn[K][std::size_t(j)]);
+    x[j][0] = s.x[n];
+    x[j][1] = s.y[n];
+    x[j][2] = s.z[n];
+  }
+  ShellFrame fr;
+  if (!calc_shell_frame(x, fr)) {
+    for (int c = 0; c < 9; ++c) fr.e[c / 3][c % 3] = c % 4 == 0 ? 1.0 : 0.0;
+  }
+  const double zs[3] = {0.0, -0.5 * h, 0.5 * h};  // mid-surface, inner, outer
+  const bool plastic = !sh.eps_p.empty();
+  for (int layer = 0; layer < 3; ++layer) {
+    double l[5];
+    for (int c = 0; c < 3; ++c) l[c] = N[c] / h + 12.0 * M[c] * zs[layer] / (h * h * h);
+    l[3] = N[3] / h;
+    l[4] = N[4] / h;
+    shell_stress_to_global(fr.e, l, out + 7 * layer);
+    double ep = 0;
+    if (plastic) {
+      const std::size_t p = layer == 1 ? 0 : layer == 2 ? std::size_t(nip - 1) : std::size_t(nip / 2);
+      ep = sh.eps_p[ip0 + p];
+      if (layer == 0 && nip % 2 == 0) ep = 0.5 * (ep + sh.eps_p[ip0 + p - 1]);
+    }
+    out[7 * layer + 6] = ep;
+  }
+  const double res[8] = {M[0], M[1], M[2], N[4], N[3], N[0], N[1], N[2]};  // Mx My Mxy Qx Qy Nx Ny Nxy
+  for (int c = 0; c < 8; ++c) out[21 + c] = res[c];
+  out[29] = h;
+  out[30] = 0;
+  out[31] = 0;
+  out[32] = sh.energy.empty() ? 0.0 : sh.energy[K];
+}
+
+}  // namespace
+
 void fill_plot_state(const Model& m, const State& s, const InterfaceForces& iface, PlotState& ps) {
   const std::size_t nn = std::size_t(s.nn), ne = std::size_t(s.ne);
   fill_plot_globals(m, s, iface, ps);
@@ -107,6 +202,10 @@ void fill_plot_state(const Model& m, const State& s, const InterfaceForces& ifac
   ps.eps.assign(s.eps_p.begin(), s.eps_p.end());
   ps.alive.resize(ne);
   for (std::size_t e = 0; e < ne; ++e) ps.alive[e] = s.failed[e] ? 0 : 1;  // deleted solids: 0
+  const std::size_t ns = std::size_t(s.shells.ns);
+  ps.shell_vars.resize(std::size_t(kShellPlotVars) * ns);
+  for (std::size_t k = 0; k < ns; ++k) fill_shell_plot_vars(s, int(k), &ps.shell_vars[std::size_t(kShellPlotVars) * k]);
+  ps.shell_alive.assign(ns, 1);
 }
 
 void PlotOutput::open(const Model& m, const std::string& root, int word_size,

@@ -133,6 +133,7 @@ void write_counts(std::ostream& os, const Model& m) {
   for (int mat : m.hex_material) used.insert(mat);
   os << "     number of nodes ...................... " << m.num_nodes() << "\n"
      << "     number of solid elements ............. " << m.num_hexes() << "\n"
+     << (m.num_shells() > 0 ? "     number of shell elements ............. " + std::to_string(m.num_shells()) + "\n" : std::string())
      << "     number of materials .................. " << m.materials.size() << "\n"
      << "     number of rigid walls ................ " << m.walls.size() << "\n"
      << "     number of sliding interfaces ......... " << m.interfaces.size() << "\n"
@@ -178,6 +179,13 @@ void write_model_summary(std::ostream& os, const Model& m) {
        << "     shear modulus G (derived) ............ " << fmt("%.6e", G) << " (stress)\n"
        << "     dilatational wave speed (derived) .... " << fmt("%.6e", c) << " (length/time)\n";
     if (const MaterialType* mt = find_material_type(md.type)) echo_material_params(os, md, *mt);
+    if (md.shell)
+      os << "     shell section: Belytschko-Tsay, " << md.shell_section.nip << " Gauss point(s) through the thickness, shear factor "
+         << fmt("%.4f", md.shell_section.shrf) << ", T1-T4 " << fmt("%.4e", md.shell_section.t[0]) << " "
+         << fmt("%.4e", md.shell_section.t[1]) << " " << fmt("%.4e", md.shell_section.t[2]) << " "
+         << fmt("%.4e", md.shell_section.t[3]) << "\n"
+         << "     plate wave speed (derived) ........... " << fmt("%.6e", std::sqrt(md.E / (md.rho * (1 - md.nu * md.nu))))
+         << " (length/time)\n";
     os << "     hourglass control .................... type " << md.hourglass_type << " ("
        << hourglass_name(md.hourglass_type) << "), coefficient " << fmt("%.4g", md.hourglass_coef) << "\n"
        << "     bulk viscosity Q1 (quadratic) ........ " << fmt("%.4g", md.q1) << "\n"

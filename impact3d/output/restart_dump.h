@@ -33,8 +33,10 @@ struct DumpHeader {
 };
 
 // 1: first format; 2: the sliding interfaces' restart data after the State; 3: d= in the header;
-// 4: x= in the header; 5: the failed-solid flags in the State; 6: moving walls.
-constexpr std::uint32_t kDumpVersion = 8;  // 8: per-element material history (State::hist)
+// 4: x= in the header; 5: the failed-solid flags in the State; 6: moving walls; 8: per-element
+// material history (State::hist) or shells (two branches); 9: both (State::hist and
+// State::shells: stresses, history, rotations).
+constexpr std::uint32_t kDumpVersion = 9;
 
 // Writes the dump atomically (temporary file, fsync, rename).  Throws std::runtime_error.
 // The contact state (energy books of the sliding interfaces) travels with the State.

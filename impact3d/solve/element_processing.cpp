@@ -7,6 +7,7 @@
 #include "impact3d/element/hex_block.h"
 #include "impact3d/material/material_block.h"
 #include "impact3d/solve/element_groups.h"
+#include "impact3d/solve/shell_processing.h"
 
 namespace impact3d {
 
@@ -236,6 +237,18 @@ void process_hex_block(State& s, const GroupPass& gp, int block) {
   store_hex_block(s, gp, elems, active, block, k);
 }
 
+void merge_shell_results(const ShellPassResult& r, int ne, double& die, double& dhg, double& dtmin,
+                         int& arg, int& bad, int& nonfin) {
+  die += r.die;
+  dhg += r.dhg;
+  if (r.dt_shell >= 0 && (r.dt_min < dtmin || arg < 0)) {
+    dtmin = r.dt_min;
+    arg = ne + r.dt_shell;
+  }
+  if (bad < 0 && r.bad_shell >= 0) bad = ne + r.bad_shell;
+  if (nonfin < 0 && r.non_finite_shell >= 0) nonfin = ne + r.non_finite_shell;
+}
+
 }  // namespace
 
 ElementLoopResult calc_forces_for_elems(const Model& m, State& s) {
@@ -288,6 +301,9 @@ ElementLoopResult calc_forces_for_elems(const Model& m, State& s) {
     die += gie;
     dhg += ghg;
   }
+  // the shells (the second family): their results join after the solids'; a shell is
+  // reported as element s.ne + its index
+  if (s.shells.ns > 0) merge_shell_results(calc_forces_for_shells(m, s), s.ne, die, dhg, dtmin, arg, bad, nonfin);
   out.die = die;
   out.dhg = dhg;
   out.dbv = dbv;

@@ -11,6 +11,7 @@
 #include "impact3d/solve/loads.h"
 #include "impact3d/solve/node_processing.h"
 #include "impact3d/solve/rigid_body.h"
+#include "impact3d/solve/shell_processing.h"
 
 namespace impact3d {
 
@@ -23,7 +24,11 @@ double seconds_since(Clock::time_point t0) {
 
 Engine::Engine(const Model& m) : m_(m) {}
 
-void Engine::calc_kinetic_energy() { calc_kinetic_energy_for_nodes(s_); }
+void Engine::calc_kinetic_energy() {
+  calc_kinetic_energy_for_nodes(s_);
+  s_.shells.rot_kinetic = calc_rotational_kinetic_energy(s_);
+  s_.kinetic += s_.shells.rot_kinetic;
+}
 
 double Engine::kinetic_energy_of_material(int mat) const {
   double ke = 0;
@@ -145,6 +150,9 @@ StepStatus Engine::step() {
   if (!s.rigid.empty()) update_rigid_body_positions(s, dt_next);
   if (!m_.walls.empty()) update_moving_walls(m_, s, dt_next);
   times_.walls += seconds_since(t);
+  t = Clock::now();
+  update_rotational_velocities_for_nodes(s, dt_n);  // shells' rotations (none: no-op)
+  times_.nodes += seconds_since(t);
   s.time += dt_next;
   s.cycle += 1;
   s.dt_half = dt_next;

@@ -355,8 +355,16 @@ int run_simulation(const Model& model, const RunOptions& opt, std::ostream& prin
                   " maximum effective plastic strain %.5f in element %d\n"
                   " cycles %d, elapsed %.3f s (%.3f us per element-cycle)",
                   lo[0], hi[0], lo[1], hi[1], lo[2], hi[2], s.ne ? s.eps_p[std::size_t(emax)] : 0.0,
-                  s.ne ? model.hex_id(emax) : 0, cycles_here, cpu, s.cycle && s.ne ? 1e6 * cpu / (double(s.cycle) * s.ne) : 0.0);
+                  s.ne ? model.hex_id(emax) : 0, cycles_here, cpu,
+                  s.cycle && s.ne + s.shells.ns ? 1e6 * cpu / (double(s.cycle) * (s.ne + s.shells.ns)) : 0.0);
     log.line(buf);
+    if (!s.shells.eps_p.empty()) {  // shells: the largest point value and its shell
+      const auto it = std::max_element(s.shells.eps_p.begin(), s.shells.eps_p.end());
+      const auto ip = int(it - s.shells.eps_p.begin());
+      const auto k = int(std::upper_bound(s.shells.ip_start.begin(), s.shells.ip_start.end(), ip) - s.shells.ip_start.begin()) - 1;
+      std::snprintf(buf, sizeof buf, " maximum effective plastic strain of shells %.5f in shell %d", *it, model.shell_id(k));
+      log.line(buf);
+    }
     const PhaseTimes& pt = engine.phase_times();
     std::snprintf(buf, sizeof buf,
                   " phase times (s): elements %.3f  nodes %.3f  walls %.3f  contact %.3f  output %.3f",
@@ -382,13 +390,18 @@ int run_simulation(const Model& model, const RunOptions& opt, std::ostream& prin
   switch (st) {
     case StepStatus::negative_volume:
       msg = 4001;
-      std::snprintf(buf, sizeof buf, "solid element %d at cycle %d, time %.6e", model.hex_id(engine.error_element()), s.cycle, s.time);
+      // (an index past the solids is a shell: non-positive area)
+      std::snprintf(buf, sizeof buf, "%s element %d at cycle %d, time %.6e",
+                    engine.error_element() >= model.num_hexes() ? "shell (non-positive area)" : "solid",
+                    model.hex_id(engine.error_element()), s.cycle, s.time);
       why = buf;
       break;
     case StepStatus::non_finite:
       msg = 4002;
       std::snprintf(buf, sizeof buf, "%s%d at cycle %d, time %.6e",
-                    engine.error_element() >= 0 ? "solid element " : "kinetic energy; element ",
+                    engine.error_element() >= model.num_hexes() ? "shell element "
+                    : engine.error_element() >= 0               ? "solid element "
+                                                                : "kinetic energy; element ",
                     engine.error_element() >= 0 ? model.hex_id(engine.error_element()) : 0, s.cycle, s.time);
       why = buf;
       break;

@@ -4,7 +4,8 @@
 IMPACT-3D's own reader.
 
   /usr/bin/python3 tests/support/vtk_d3plot_check.py ROOT [--expect-nodes N] [--expect-solids N]
-      [--expect-steps N] [--node-xyz X,Y,Z] [--all] [--json FILE] [--quiet-cells] [--ghost-deleted]
+      [--expect-shells N] [--expect-steps N] [--node-xyz X,Y,Z] [--all] [--json FILE] [--quiet-cells]
+      [--ghost-deleted]
 
 Output: the counts, the state times, the part names ("parts: [...]"), per state and part the
 point and cell counts, per cell its arrays (unless --quiet-cells), and for the nodes chosen with
@@ -65,6 +66,7 @@ def parse_args():
     p.add_argument("--ghost-deleted", action="store_true", help="keep deleted cells, flagged in vtkGhostType")
     p.add_argument("--expect-nodes", type=int)
     p.add_argument("--expect-solids", type=int)
+    p.add_argument("--expect-shells", type=int)
     p.add_argument("--expect-steps", type=int)
     return p.parse_args()
 
@@ -159,6 +161,7 @@ def main():
 
     failed = "ERROR" in vtk_text or nodes == 0 or nsteps == 0
     for wanted, found, what in ((args.expect_nodes, nodes, "nodes"), (args.expect_solids, solids, "solid cells"),
+                                (args.expect_shells, reader.GetNumberOfShellCells(), "shell cells"),
                                 (args.expect_steps, nsteps, "time steps")):
         if wanted is not None and wanted != found:
             print(f"MISMATCH: expected {wanted} {what}, VTK found {found}")

@@ -1,0 +1,30 @@
+#pragma once
+// Initialization of the shells (State::shells): groups, integration points, masses and rotary
+// inertias, the shells' corners in the node -> corner map, the rotational degrees of freedom.
+
+#include "impact3d/model/model.h"
+#include "impact3d/model/state.h"
+
+namespace impact3d {
+
+// The kernel that processes shells of a material type (the one table of material type ->
+// shell kernel).  Throws std::logic_error for a type no shell kernel handles (the input phase
+// refuses such decks first).
+ShellKernel shell_kernel_for_material_type(int type);
+// Whether shells of a material type have a kernel (the input phase refuses the others).
+bool has_shell_kernel(int type);
+
+// Rotary inertia that a shell corner of mass m gives its node: m (h^2 + A) / 12 (the scaled
+// rotary inertia of Kennedy, Belytschko and Lin 1986, so that the rotations never set the step).
+double shell_rotary_inertia(double corner_mass, double h, double area);
+
+// Fills s.shells from the model's shells and adds their masses to s.mass; extends the corner
+// forces (s.cfx...) and the node -> corner map by the shells' 4 corners each.  Call after the
+// solids are initialized (init_elements) and before the initial velocities.
+void init_shells(const Model& m, State& s);
+
+// Initial angular velocities (Model::init_omega) on the rotational degrees of freedom, the
+// constrained components at rest.
+void init_shell_rotational_velocities(const Model& m, State& s);
+
+}  // namespace impact3d

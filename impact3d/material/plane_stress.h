@@ -1,0 +1,34 @@
+#pragma once
+// Plane-stress constitutive updates for shells (sigma_zz = 0 in the shell's local frame).
+// Local Voigt order of a shell integration point: xx yy xy yz zx (tensor shears); the strain
+// rates d are in the same order.  The transverse shear rates d[3], d[4] arrive already scaled
+// by the section's shear factor (the shear stress is SHRF times the elastic one, as LS-DYNA).
+// Small functions on the caller's arrays (no heap): the per-material table of shells points
+// at these.
+
+#include "impact3d/material/material.h"
+
+namespace impact3d {
+
+// Plane-stress history of the elastic-plastic material at one integration point.
+struct PlaneStressPlastic {
+  double* back;            // back stress alpha[6] (3-D Voigt xx yy zz xy yz zx; alpha_zz != 0)
+  double* eps_p;           // effective plastic strain
+  unsigned char* yielded;  // 1 once the point has yielded
+};
+
+// Type 1: sigma += dt C d with the plane-stress stiffness E/(1-nu^2) [1 nu; nu 1], 2G for the
+// shears.  Returns the thickness strain rate d_zz = -nu/(1-nu) (d_xx + d_yy).
+double update_plane_stress_elastic(const MaterialConstants& m, const double d[5], double dt,
+                                   double sig[5]);
+
+// Type 3 (plastic-kinematic, *MAT_003): the 3-D radial return (update_stress_elastic_plastic)
+// with the thickness strain rate d_zz found by secant iterations so that sigma_zz = 0
+// (LS-DYNA's iterative plane-stress plasticity; iterated to |sigma_zz| <= 1e-10 (sigma_y + |sigma|),
+// at most kPlaneStressIterations).  Returns d_zz.
+constexpr int kPlaneStressIterations = 30;
+double update_plane_stress_plastic_kinematic(const MaterialConstants& m, const double d[5],
+                                             double dt, double sig[5],
+                                             const PlaneStressPlastic& h);
+
+}  // namespace impact3d

@@ -1,0 +1,57 @@
+#pragma once
+// The shells' part of the State (Belytschko-Tsay, the second element family): element data,
+// per-integration-point stresses and history, corner moments, and the rotational degrees of
+// freedom of the nodes that shells use.  Allocated once at initialization (init/shell_init.h).
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "impact3d/element/shell_bt.h"
+
+namespace impact3d {
+
+// Shell kernels, chosen per group from the material type (one table: shell_kernel_for_material_type).
+enum class ShellKernel : std::uint8_t { rigid, elastic, plastic_kinematic };
+
+struct ShellGroup {
+  ShellKernel kernel = ShellKernel::rigid;
+  int material = 0;                 // 0-based material index
+  ShellGroupConstants constants;    // section and material constants of the kernel
+  int first = 0, count = 0;         // its shells: order[first .. first + count)
+};
+
+struct ShellState {
+  int ns = 0;                                 // number of shells
+  std::vector<std::array<int, 4>> conn;       // 0-based nodes (n3 == n4: triangle)
+  std::vector<int> mat;                       // 0-based material index
+  std::vector<double> thick;                  // thickness (mean of the nodal ones)
+  std::vector<double> area0, area;            // initial and current area
+  std::vector<ShellGroup> groups;             // one per material, in material order
+  std::vector<int> order;                     // shells group after group, increasing in a group
+  std::vector<int> nip;                       // integration points of each shell
+  std::vector<int> ip_start;                  // first integration point of each shell
+  std::vector<double> sig;                    // 5 per point: local xx yy xy yz zx
+  std::vector<double> back;                   // 6 per point (plastic-kinematic groups; else empty)
+  std::vector<double> eps_p;                  // 1 per point (plastic-kinematic; else empty)
+  std::vector<std::uint8_t> yielded;          // 1 per point (plastic-kinematic; else empty)
+  std::vector<double> hgq;                    // 5 per shell: hourglass resultants (stiffness forms)
+  std::vector<double> dt_e;                   // element step
+  std::vector<double> de_ie, de_hg;           // this pass's energy increments per shell
+  std::vector<double> energy;                 // accumulated internal energy per shell (plot database)
+  std::vector<std::uint8_t> bad;              // 1: non-positive area in this pass
+  std::vector<std::uint8_t> rigid_elem;       // 1: shell of a rigid material
+  std::size_t corner_base = 0;                // shell k's corner j is cfx[corner_base + 4 k + j]
+  std::vector<double> cmx, cmy, cmz;          // 4 per shell: corner moments (global)
+  // rotational degrees of freedom: only the nodes that deformable shells use
+  int nr = 0;
+  std::vector<int> rot_node;                  // node of each rotational dof set
+  std::vector<int> node_rot;                  // per node: its rotational index or -1
+  std::vector<double> wx, wy, wz;             // angular velocities omega^{n-1/2} -> omega^{n+1/2}
+  std::vector<double> inertia;                // lumped rotary inertia
+  std::vector<std::uint8_t> rot_fix;          // bit 0 rx, 1 ry, 2 rz
+  std::vector<int> rot_corner_start, rot_corner_list;  // CSR: rotational dof -> shell corners (4 k + j)
+  double rot_kinetic = 0;                     // rotational kinetic energy (in State::kinetic)
+};
+
+}  // namespace impact3d

@@ -1,0 +1,178 @@
+#include "impact3d/solve/shell_processing.h"
+
+#include <cmath>
+#include <limits>
+
+namespace impact3d {
+
+namespace {
+
+constexpr int kMinShellsForThreads = 4096;
+
+ShellMaterialKind material_kind(ShellKernel k) {
+  return k == ShellKernel::plastic_kinematic ? ShellMaterialKind::plastic_kinematic
+                                             : ShellMaterialKind::elastic;
+}
+
+void zero_shell_corners(State& s, int k) {
+  ShellState& sh = s.shells;
+  for (int j = 0; j < 4; ++j) {
+    const std::size_t c = sh.corner_base + 4 * std::size_t(k) + std::size_t(j);
+    s.cfx[c] = s.cfy[c] = s.cfz[c] = 0;
+    const std::size_t q = 4 * std::size_t(k) + std::size_t(j);
+    sh.cmx[q] = sh.cmy[q] = sh.cmz[q] = 0;
+  }
+}
+
+void gather_shell(const State& s, int k, double dt, ShellKernelIO& io) {
+  const ShellState& sh = s.shells;
+  const auto& c = sh.conn[std::size_t(k)];
+  for (int j = 0; j < 4; ++j) {
+    const std::size_t n = std::size_t(c[std::size_t(j)]);
+    io.x[j][0] = s.x[n];
+    io.x[j][1] = s.y[n];
+    io.x[j][2] = s.z[n];
+    io.v[j][0] = s.vx[n];
+    io.v[j][1] = s.vy[n];
+    io.v[j][2] = s.vz[n];
+    const int r = sh.node_rot[n];
+    io.w[j][0] = r >= 0 ? sh.wx[std::size_t(r)] : 0.0;
+    io.w[j][1] = r >= 0 ? sh.wy[std::size_t(r)] : 0.0;
+    io.w[j][2] = r >= 0 ? sh.wz[std::size_t(r)] : 0.0;
+  }
+  io.h = sh.thick[std::size_t(k)];
+  io.dt = dt;
+}
+
+void process_shell(State& s, const ShellGroup& g, int k, double dt) {
+  ShellState& sh = s.shells;
+  ShellKernelIO io;
+  gather_shell(s, k, dt, io);
+  const std::size_t ip = std::size_t(sh.ip_start[std::size_t(k)]);
+  const bool plastic = g.kernel == ShellKernel::plastic_kinematic;
+  ShellPointState st{&sh.sig[5 * ip], plastic ? &sh.back[6 * ip] : nullptr,
+                     plastic ? &sh.eps_p[ip] : nullptr, plastic ? &sh.yielded[ip] : nullptr,
+                     sh.hgq.empty() ? nullptr : &sh.hgq[5 * std::size_t(k)]};
+  calc_shell_bt_forces(g.constants, s.mats[std::size_t(g.material)], material_kind(g.kernel), io, st);
+  sh.bad[std::size_t(k)] = io.bad;
+  if (io.bad) {
+    zero_shell_corners(s, k);
+    sh.dt_e[std::size_t(k)] = 0;
+    sh.de_ie[std::size_t(k)] = sh.de_hg[std::size_t(k)] = 0;
+    return;
+  }
+  sh.area[std::size_t(k)] = io.area;
+  sh.dt_e[std::size_t(k)] = io.dt_e;
+  sh.de_ie[std::size_t(k)] = io.de_ie;
+  sh.de_hg[std::size_t(k)] = io.de_hg;
+  for (int j = 0; j < 4; ++j) {
+    const std::size_t c = sh.corner_base + 4 * std::size_t(k) + std::size_t(j);
+    s.cfx[c] = io.f[j][0];
+    s.cfy[c] = io.f[j][1];
+    s.cfz[c] = io.f[j][2];
+    const std::size_t q = 4 * std::size_t(k) + std::size_t(j);
+    sh.cmx[q] = io.m[j][0];
+    sh.cmy[q] = io.m[j][1];
+    sh.cmz[q] = io.m[j][2];
+  }
+}
+
+bool shell_forces_finite(const State& s, int k) {
+  const ShellState& sh = s.shells;
+  double c = 0;
+  for (int j = 0; j < 4; ++j) {
+    const std::size_t q = sh.corner_base + 4 * std::size_t(k) + std::size_t(j);
+    const std::size_t r = 4 * std::size_t(k) + std::size_t(j);
+    c += s.cfx[q] + s.cfy[q] + s.cfz[q] + sh.cmx[r] + sh.cmy[r] + sh.cmz[r];
+  }
+  return std::isfinite(c);
+}
+
+}  // namespace
+
+ShellPassResult calc_forces_for_shells(const Model& m, State& s) {
+  (void)m;
+  ShellPassResult out;
+  out.dt_min = std::numeric_limits<double>::infinity();
+  ShellState& sh = s.shells;
+  const double dt = s.dt_half;
+  for (const ShellGroup& g : sh.groups) {
+    const int* ord = &sh.order[std::size_t(g.first)];
+    const int n = g.count;
+    if (g.kernel == ShellKernel::rigid) {
+      for (int q = 0; q < n; ++q) zero_shell_corners(s, ord[q]);
+      continue;
+    }
+#pragma omp parallel for schedule(static) if (n >= kMinShellsForThreads)
+    for (int q = 0; q < n; ++q) process_shell(s, g, ord[q], dt);
+    // books in group order (the same bits for any thread count)
+    double gie = 0, ghg = 0;
+    for (int q = 0; q < n; ++q) {
+      const int k = ord[q];
+      const std::size_t K = std::size_t(k);
+      if (sh.bad[K]) {
+        if (out.bad_shell < 0 || k < out.bad_shell) out.bad_shell = k;
+        continue;
+      }
+      gie += sh.de_ie[K];
+      sh.energy[K] += sh.de_ie[K];
+      ghg += sh.de_hg[K];
+      if (sh.dt_e[K] < out.dt_min || (sh.dt_e[K] == out.dt_min && k < out.dt_shell)) {
+        out.dt_min = sh.dt_e[K];
+        out.dt_shell = k;
+      }
+      if (!shell_forces_finite(s, k) && (out.non_finite_shell < 0 || k < out.non_finite_shell))
+        out.non_finite_shell = k;
+    }
+    s.mat_internal[std::size_t(g.material)] += gie;
+    s.mat_hourglass[std::size_t(g.material)] += ghg;
+    out.die += gie;
+    out.dhg += ghg;
+  }
+  return out;
+}
+
+void update_rotational_velocities_for_nodes(State& s, double dt_n) {
+  ShellState& sh = s.shells;
+  if (sh.nr == 0) return;
+  const int* cs = sh.rot_corner_start.data();
+  const int* cl = sh.rot_corner_list.data();
+  for (int r = 0; r < sh.nr; ++r) {
+    const std::size_t R = std::size_t(r);
+    const int node = sh.rot_node[R];
+    const int rb = s.rigid_of_node[std::size_t(node)];
+    if (rb >= 0) {  // a node of a rigid body turns with it
+      const auto& w = s.rigid[std::size_t(rb)].omega;
+      sh.wx[R] = w[0];
+      sh.wy[R] = w[1];
+      sh.wz[R] = w[2];
+      continue;
+    }
+    double mx = 0, my = 0, mz = 0;
+    for (int c = cs[r]; c < cs[r + 1]; ++c) {
+      const std::size_t q = std::size_t(cl[c]);
+      mx += sh.cmx[q];
+      my += sh.cmy[q];
+      mz += sh.cmz[q];
+    }
+    const double inv = sh.inertia[R] > 0 ? 1.0 / sh.inertia[R] : 0.0;
+    const std::uint8_t f = sh.rot_fix[R];
+    if (!(f & 1)) sh.wx[R] -= dt_n * mx * inv;
+    if (!(f & 2)) sh.wy[R] -= dt_n * my * inv;
+    if (!(f & 4)) sh.wz[R] -= dt_n * mz * inv;
+  }
+  sh.rot_kinetic = calc_rotational_kinetic_energy(s);
+  s.kinetic += sh.rot_kinetic;
+}
+
+double calc_rotational_kinetic_energy(const State& s) {
+  const ShellState& sh = s.shells;
+  double ke = 0;
+  for (int r = 0; r < sh.nr; ++r) {
+    const std::size_t R = std::size_t(r);
+    ke += 0.5 * sh.inertia[R] * (sh.wx[R] * sh.wx[R] + sh.wy[R] * sh.wy[R] + sh.wz[R] * sh.wz[R]);
+  }
+  return ke;
+}
+
+}  // namespace impact3d
