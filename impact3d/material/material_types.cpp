@@ -14,6 +14,8 @@ namespace impact3d {
 // One line per type (each defined in impact3d/material/types/mat_*.cpp).
 const MaterialType& mat_elastic_type();
 const MaterialType& mat_plastic_kinematic_type();
+const MaterialType& mat_johnson_cook_type();
+const MaterialType& mat_simplified_johnson_cook_type();
 const MaterialType& mat_piecewise_linear_type();
 const MaterialType& mat_rigid_type();
 
@@ -21,8 +23,10 @@ std::span<const MaterialType* const> material_types() {
   static const MaterialType* const table[] = {  // in increasing number
       &mat_elastic_type(),
       &mat_plastic_kinematic_type(),
+      &mat_johnson_cook_type(),
       &mat_rigid_type(),
       &mat_piecewise_linear_type(),
+      &mat_simplified_johnson_cook_type(),
   };
   return table;
 }
