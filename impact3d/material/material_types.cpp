@@ -15,6 +15,7 @@ namespace impact3d {
 const MaterialType& mat_elastic_type();
 const MaterialType& mat_plastic_kinematic_type();
 const MaterialType& mat_johnson_cook_type();
+const MaterialType& mat_power_law_type();
 const MaterialType& mat_simplified_johnson_cook_type();
 const MaterialType& mat_piecewise_linear_type();
 const MaterialType& mat_rigid_type();
@@ -24,6 +25,7 @@ std::span<const MaterialType* const> material_types() {
       &mat_elastic_type(),
       &mat_plastic_kinematic_type(),
       &mat_johnson_cook_type(),
+      &mat_power_law_type(),
       &mat_rigid_type(),
       &mat_piecewise_linear_type(),
       &mat_simplified_johnson_cook_type(),

@@ -235,6 +235,10 @@ TEST(HexBlock, TableKernelsEqualTheirScalarKernels) {
       if (find_param(*t, "A"))
         for (const auto& [key, v] : jc)
           if (const MaterialParam* p = find_param(*t, key)) param_value(md, *p) = v;
+      if (find_param(*t, "K")) {  // power law: the yield strain (E / K)^(1 / (N - 1)) = 4.1e-4
+        param_value(md, *find_param(*t, "K")) = 5e8;
+        param_value(md, *find_param(*t, "N")) = 0.3;
+      }
       if (t->number == 24) {
         const double eps[4] = {0, 0.05, 0.12, 0.18}, es[4] = {3e8, 3.5e8, 3.6e8, 4.5e8};
         for (int i = 0; i < 4; ++i) {

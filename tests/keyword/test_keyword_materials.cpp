@@ -202,3 +202,32 @@ TEST(KeywordMaterials, JohnsonCookTypesAreReadAndRoundTrip) {
   EXPECT_FALSE(b.ok);
   EXPECT_EQ(b.d.count(1102), 2) << b.messages();
 }
+
+// *MAT_POWER_LAW_PLASTICITY: read into the table's places and the same model after the
+// converter both ways.
+TEST(KeywordMaterials, PowerLawIsReadAndRoundTrips) {
+  const std::string mat =
+      "*MAT_POWER_LAW_PLASTICITY\n"
+      "$#     mid        ro         e        pr         k         n       src       srp\n"
+      "         7    7.8E-9  200000.0       0.3    1200.0      0.25      40.0       5.0\n"
+      "$#    sigy        vp      epsf\n"
+      "     250.0       0.0       0.9\n";
+  Read a = read_text(one_hex_deck(mat));
+  ASSERT_TRUE(a.ok) << a.messages();
+  const MaterialData& md = a.m.materials[0];
+  const MaterialType& t = material_type(18);
+  EXPECT_EQ(md.type, 18);
+  EXPECT_EQ(param_value(md, *find_param(t, "K")), 1200.0);
+  EXPECT_EQ(param_value(md, *find_param(t, "SIGY")), 250.0);
+  EXPECT_EQ(md.rate_c, 40.0);
+  EXPECT_EQ(md.fail_strain, 0.9);
+  std::ostringstream kw, fx;
+  write_keyword_deck(kw, a.m);
+  Read k = read_text(kw.str());
+  ASSERT_TRUE(k.ok) << k.messages() << kw.str();
+  EXPECT_EQ(join(model_differences(a.m, k.m)), "");
+  write_fixed_deck(fx, a.m, nullptr);
+  Read f = read_text(fx.str(), "deck.dyn");
+  ASSERT_TRUE(f.ok) << f.messages() << fx.str();
+  EXPECT_EQ(join(model_differences(a.m, f.m)), "") << fx.str();
+}

@@ -27,6 +27,7 @@
 
 #include "impact3d/material/material_block.h"
 #include "impact3d/material/material_types.h"
+#include "impact3d/material/radial_return.h"
 
 namespace impact3d {
 
@@ -60,22 +61,7 @@ void calc_flow_stress(const MaterialConstants& m, double f, double e, double& s,
 
 // The plastic strain increment for trial von Mises stress q (0: elastic).
 double calc_plastic_strain_increment(const MaterialConstants& m, double q, double e0, double f) {
-  const double G3 = 3.0 * m.G;
-  double s, ds;
-  calc_flow_stress(m, f, e0, s, ds);
-  if (!(q - s > 0.0)) return 0.0;
-  double lo = 0.0, hi = q / G3, de = 0.0;
-  for (int it = 0; it < 100; ++it) {
-    calc_flow_stress(m, f, e0 + de, s, ds);
-    const double g = q - G3 * de - s;
-    if (g > 0.0) lo = de; else hi = de;
-    double next = de + g / (G3 + ds);
-    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
-    const bool done = std::fabs(next - de) <= 1e-15 * next || hi - lo <= 1e-15 * hi;
-    de = next;
-    if (done) break;
-  }
-  return de;
+  return solve_radial_return(q, 3.0 * m.G, e0, [&](double e, double& s, double& ds) { calc_flow_stress(m, f, e, s, ds); });
 }
 
 double effective_strain_rate(const double d[6]) {
