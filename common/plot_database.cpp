@@ -489,8 +489,11 @@ void PlotWriter::open_impl(const std::string& root_path, const PlotGeometry& g, 
         throw std::invalid_argument("PlotWriter: implausible number of sliding interfaces");
     nif_ = g.num_interfaces;
     nglbv_ = 6 + 7 * static_cast<std::int64_t>(nmat) + nrw_ + 3 * static_cast<std::int64_t>(nif_);
-    // time, globals, coords + vel + acc, 7 words per solid, one deletion flag per solid
-    state_words_ = 1 + nglbv_ + 9 * static_cast<std::int64_t>(numnp) + 8 * static_cast<std::int64_t>(nel8);
+    if (g.num_solid_history < 0 || g.num_solid_history > 1000)
+        throw std::invalid_argument("PlotWriter: implausible number of solid history values");
+    neiph_ = g.num_solid_history;
+    // time, globals, coords + vel + acc, 7 + NEIPH words per solid, one deletion flag per solid
+    state_words_ = 1 + nglbv_ + 9 * static_cast<std::int64_t>(numnp) + (8 + neiph_) * static_cast<std::int64_t>(nel8);
     root_ = root_path;
     x0_ = g.x0;
     members_ = 0;
@@ -516,7 +519,8 @@ void PlotWriter::open_impl(const std::string& root_path, const PlotGeometry& g, 
             case 20: case 21: case 22: v = 1; break;  // IU IV IA
             case 23: v = nel8_; break;    // NEL8
             case 24: v = nmmat_; break;   // NUMMAT8
-            case 27: v = 7; break;        // NV3D = 7 + NEIPH
+            case 27: v = 7 + neiph_; break;  // NV3D = 7 + NEIPH
+            case 34: v = neiph_; break;   // NEIPH
             case 36: v = -10003; break;   // MAXINT: element deletion flags
             case 39: v = 16 + numnp_ + nel8_ + 3 * static_cast<std::int64_t>(nmmat_); break;  // NARBS
             case 43: case 44: case 45: case 46: v = 1000; break;  // IOSHL
@@ -631,6 +635,7 @@ void PlotWriter::write_state(const PlotState& s) {
     check_size(s.acc, 3 * nn, "acc", true);
     check_size(s.stress, 6 * ne, "stress", true);
     check_size(s.eps, ne, "eps", true);
+    check_size(s.history, static_cast<std::size_t>(neiph_) * ne, "history", true);
     check_size(s.alive, ne, "alive", true);
 
     const int ws = ws_;
@@ -661,6 +666,8 @@ void PlotWriter::write_state(const PlotState& s) {
     for (std::size_t e = 0; e < ne; ++e) {
         for (int k = 0; k < 6; ++k) put_real(b, ws, s.stress.empty() ? 0.0 : s.stress[6 * e + k]);
         put_real(b, ws, s.eps.empty() ? 0.0 : s.eps[e]);
+        for (int h = 0; h < neiph_; ++h)
+            put_real(b, ws, s.history.empty() ? 0.0 : s.history[static_cast<std::size_t>(neiph_) * e + h]);
     }
     for (std::size_t e = 0; e < ne; ++e) put_real(b, ws, (s.alive.empty() || s.alive[e]) ? 1.0 : 0.0);
     if (static_cast<std::int64_t>(b.size()) != state_words_ * ws)
@@ -1035,10 +1042,12 @@ PlotState PlotReader::state(int i) const {
     if (c.ia) read_vec(s.acc, 3 * nn, "accelerations");
     s.stress.resize(6 * ne);
     s.eps.resize(ne);
+    s.history.resize(static_cast<std::size_t>(c.neiph) * ne);
     for (std::size_t e = 0; e < ne; ++e) {
         for (int k = 0; k < 6; ++k) s.stress[6 * e + k] = cur.r("solid stress");
         s.eps[e] = cur.r("solid effective plastic strain");
-        cur.skip_words(c.neiph, "solid history variables");
+        for (std::int64_t h = 0; h < c.neiph; ++h)
+            s.history[static_cast<std::size_t>(c.neiph) * e + static_cast<std::size_t>(h)] = cur.r("solid history variable");
     }
     s.alive.assign(ne, 1);
     if (c.maxint < -10000) {
