@@ -1,6 +1,6 @@
 // The plot database carries the materials' history values (NEIPH): a Johnson-Cook Taylor bar
 // (type 15: temperature rise and damage per solid) written with 8-byte words reads back with
-// NEIPH = 2, NV3D = 9 and the State's history values bit for bit.
+// NEIPH = 2, NV3D = 9 and the State's history values bit for bit; restart dumps carry them.
 
 #include <gtest/gtest.h>
 
