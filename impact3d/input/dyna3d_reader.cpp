@@ -619,12 +619,14 @@ class Dyna3dReader {
         lc.t.push_back(t);
         lc.f.push_back(f);
       }
+      bool used = false;  // by a material (a flow stress curve)
+      for (const MaterialData& md : m_.materials) used = used || material_uses_curve(md, lc.number);
       m_.load_curves.push_back(std::move(lc));
       Location loc;
       loc.file = deck_.name();
       loc.line = c.line();
       loc.card = c.name();
-      diag_.add(2004, loc, "no supported feature uses load curves yet");
+      if (!used) diag_.add(2004, loc, "no supported feature uses load curves yet");
     }
   }
 

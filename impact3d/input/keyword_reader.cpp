@@ -2053,8 +2053,11 @@ bool is_ascii_database(const std::string& n) {
       if (lc.t.size() < 2) err(1003, curve_refs_[k], card, "LCID", "a curve needs at least 2 points");
       lc.number = int(k) + 1;
       m_.load_curves.push_back(std::move(lc));
-      // one line for all curves (Diagnostics folds the repeats, naming the curves)
-      diag_.add(2004, loc_of(curve_refs_[k], card, nullptr, false), "no supported feature uses load curves yet");
+      // one line for all curves (Diagnostics folds the repeats, naming the curves); a curve a
+      // material uses (a flow stress curve: the *MAT card still holds the deck's id) is used
+      bool used = false;
+      for (const auto& [mid, r] : mats_) used = used || material_uses_curve(r.md, curves_[k].number);
+      if (!used) diag_.add(2004, loc_of(curve_refs_[k], card, nullptr, false), "no supported feature uses load curves yet");
     }
     m_.control.numlc = int(m_.load_curves.size());
   }

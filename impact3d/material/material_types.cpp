@@ -146,6 +146,14 @@ void echo_material_params(std::ostream& os, const MaterialData& md, const Materi
   if (t.echo) t.echo(os, md);
 }
 
+bool material_uses_curve(const MaterialData& md, int curve) {
+  const MaterialType* t = find_material_type(md.type);
+  if (!t || curve == 0) return false;
+  for (const MaterialParam& p : t->params)
+    if (p.check == ParamCheck::curve && param_value(md, p) == double(curve)) return true;
+  return false;
+}
+
 int material_history_count(int type) {
   const MaterialType* t = find_material_type(type);
   return t ? int(t->history.size()) : 0;

@@ -91,6 +91,7 @@ TEST(KeywordMaterials, PiecewiseLinearTableIsReadCheckedAndRoundTrips) {
   EXPECT_EQ(par(a.m, "TDEL"), 1e-12);
   EXPECT_EQ(par(a.m, "EPS3"), 0.05);
   EXPECT_EQ(par(a.m, "ES4"), 380.0);
+  EXPECT_EQ(a.d.count(2004), 1) << a.messages();  // the curve no material uses
   // the printed echo names the table points
   std::ostringstream echo;
   write_model_summary(echo, a.m);
@@ -114,11 +115,13 @@ TEST(KeywordMaterials, PiecewiseLinearCurveIsMappedAndChecked) {
   Read a = read_text(deck);
   ASSERT_TRUE(a.ok) << a.messages();
   EXPECT_EQ(par(a.m, "LCSS"), 1.0);  // curve 33 is the deck's first curve: number 1
+  EXPECT_EQ(a.d.count(2004), 0) << a.messages();  // the curve is used
   std::ostringstream fx;
   write_fixed_deck(fx, a.m, nullptr);
   Read f = read_text(fx.str(), "deck.dyn");
   ASSERT_TRUE(f.ok) << f.messages() << fx.str();
   EXPECT_EQ(join(model_differences(a.m, f.m)), "");
+  EXPECT_EQ(f.d.count(2004), 0) << f.messages();
   // an undefined curve, VP = 1, LCSR and a decreasing table: errors naming the fields
   std::string bad = one_hex_deck(kMat24);
   bad.replace(bad.find("         0         0       0.0\n"), 31, "        34        12       1.0\n");
