@@ -508,8 +508,12 @@ void PlotWriter::open_impl(const std::string& root_path, const PlotGeometry& g, 
         throw std::invalid_argument("PlotWriter: implausible number of sliding interfaces");
     nif_ = g.num_interfaces;
     nglbv_ = 6 + 7 * static_cast<std::int64_t>(nmat) + nrw_ + 3 * static_cast<std::int64_t>(nif_);
-    // time, globals, coords + vel + acc, 7 words per solid, one deletion flag per solid
-    state_words_ = 1 + nglbv_ + 9 * static_cast<std::int64_t>(numnp) + 8 * static_cast<std::int64_t>(nel8) +
+    if (g.num_solid_history < 0 || g.num_solid_history > 1000)
+        throw std::invalid_argument("PlotWriter: implausible number of solid history values");
+    neiph_ = g.num_solid_history;
+    // time, globals, coords + vel + acc, 7 + NEIPH words and one deletion flag per solid, the
+    // shell records and one deletion flag per shell
+    state_words_ = 1 + nglbv_ + 9 * static_cast<std::int64_t>(numnp) + (8 + neiph_) * static_cast<std::int64_t>(nel8) +
                    (kShellPlotVars + 1) * static_cast<std::int64_t>(nel4);
     root_ = root_path;
     x0_ = g.x0;
@@ -539,7 +543,8 @@ void PlotWriter::open_impl(const std::string& root_path, const PlotGeometry& g, 
             case 31: v = nel4_; break;    // NEL4
             case 32: v = nummat4; break;  // NUMMAT4
             case 33: v = nel4_ > 0 ? kShellPlotVars : 0; break;  // NV2D
-            case 27: v = 7; break;        // NV3D = 7 + NEIPH
+            case 27: v = 7 + neiph_; break;  // NV3D = 7 + NEIPH
+            case 34: v = neiph_; break;   // NEIPH
             case 36: v = -10003; break;   // MAXINT: element deletion flags
             case 39: v = 16 + numnp_ + nel8_ + nel4_ + 3 * static_cast<std::int64_t>(nmmat_); break;  // NARBS
             case 43: case 44: case 45: case 46: v = 1000; break;  // IOSHL
@@ -660,6 +665,7 @@ void PlotWriter::write_state(const PlotState& s) {
     check_size(s.acc, 3 * nn, "acc", true);
     check_size(s.stress, 6 * ne, "stress", true);
     check_size(s.eps, ne, "eps", true);
+    check_size(s.history, static_cast<std::size_t>(neiph_) * ne, "history", true);
     check_size(s.alive, ne, "alive", true);
     const std::size_t ns = static_cast<std::size_t>(nel4_);
     check_size(s.shell_vars, kShellPlotVars * ns, "shell_vars", true);
@@ -693,6 +699,8 @@ void PlotWriter::write_state(const PlotState& s) {
     for (std::size_t e = 0; e < ne; ++e) {
         for (int k = 0; k < 6; ++k) put_real(b, ws, s.stress.empty() ? 0.0 : s.stress[6 * e + k]);
         put_real(b, ws, s.eps.empty() ? 0.0 : s.eps[e]);
+        for (int h = 0; h < neiph_; ++h)
+            put_real(b, ws, s.history.empty() ? 0.0 : s.history[static_cast<std::size_t>(neiph_) * e + h]);
     }
     put_vec(s.shell_vars, kShellPlotVars * ns);
     for (std::size_t e = 0; e < ne; ++e) put_real(b, ws, (s.alive.empty() || s.alive[e]) ? 1.0 : 0.0);
@@ -1276,6 +1284,8 @@ PlotState PlotReader::state(int i) const {
     s.stress.assign(6 * ne, 0.0);
     s.eps.assign(ne, 0.0);
     if (c.nv3d > 7) read_vec(s.solid_vars, ne * static_cast<std::size_t>(c.nv3d), "solid record");
+    const std::size_t nh = static_cast<std::size_t>(L.solid_history);
+    s.history.assign(nh * ne, 0.0);
     for (std::size_t e = 0; e < ne; ++e) {
         if (c.nv3d > 7) {
             const double* rec = &s.solid_vars[e * static_cast<std::size_t>(c.nv3d)];
@@ -1283,6 +1293,8 @@ PlotState PlotReader::state(int i) const {
                 const double* v = rec + p * L.solid_point_words;
                 for (int k = 0; k < 6; ++k) s.stress[6 * e + k] += v[k] / L.solid_points;
                 s.eps[e] += v[6] / L.solid_points;
+                // the extra history values (NEIPH) after the EPS, as means over the points
+                for (std::size_t h = 0; h < nh; ++h) s.history[nh * e + h] += v[7 + h] / L.solid_points;
             }
         } else {
             for (int k = 0; k < 6; ++k) s.stress[6 * e + k] = cur.r("solid stress");

@@ -41,6 +41,9 @@ struct PlotGeometry {
     // 63 (zero in LS-DYNA d3plot files); readers that do not know it count the words as further
     // rigid walls (lasso) or skip them with the other globals (VTK).
     int num_interfaces = 0;
+    // Extra history values per solid (NEIPH; NV3D = 7 + NEIPH), written after the effective
+    // plastic strain: the materials' history values (IMPACT-3D: material_types.h).
+    int num_solid_history = 0;
     std::vector<double> x0;                // 3*numnp initial coordinates, x y z per node
     std::vector<int> node_user_ids;        // numnp user node ids, or empty (= 1..numnp)
     std::vector<int> hex_nodes;            // 8*numelh, 0-based node indices, LS-DYNA hex order
@@ -103,6 +106,7 @@ struct PlotState {
     std::vector<double> acc;                   // 3*numnp (reader: empty if the file has IA = 0)
     std::vector<double> stress;                // 6*numelh: xx yy zz xy yz zx per solid
     std::vector<double> eps;                   // numelh effective plastic strain
+    std::vector<double> history;               // NEIPH*numelh extra history values per solid (writer: or empty = zeros)
     std::vector<unsigned char> alive;          // numelh element deletion flags, 1 = alive, 0 = deleted
 
     // ---- Read only (PlotReader; the writer ignores them).  Empty when the database has none.
@@ -209,7 +213,7 @@ private:
     std::vector<double> x0_;      // initial coordinates (written when a state has no coords)
     int ws_ = 4;
     std::int64_t limit_words_ = kDefaultMemberSizeLimitWords;
-    int numnp_ = 0, nel8_ = 0, nmmat_ = 0, nrw_ = 0, nif_ = 0, nel4_ = 0;
+    int numnp_ = 0, nel8_ = 0, nmmat_ = 0, nrw_ = 0, nif_ = 0, nel4_ = 0, neiph_ = 0;
     std::int64_t nglbv_ = 0, state_words_ = 0;
     bool root_written_ = false;
     int fd_ = -1;                 // current member

@@ -657,10 +657,12 @@ class Dyna3dReader {
         lc.t.push_back(t);
         lc.f.push_back(f);
       }
+      bool used = false;  // by a material (a flow stress curve)
+      for (const MaterialData& md : m_.materials) used = used || material_uses_curve(md, lc.number);
       m_.load_curves.push_back(std::move(lc));
       curve_lines_.push_back(c.line());
+      curve_used_.push_back(used ? 1 : 0);
     }
-    curve_used_.assign(m_.load_curves.size(), 0);
   }
 
   // 0-based index of load curve `number` (1..NUMLC) read in columns c1-c2, or -1 (error)

@@ -3613,6 +3613,7 @@ bool is_ascii_database(const std::string& n) {
 
   void resolve_curves() {
     // renumbered 1..NUMLC in deck order (the fixed format needs 1..NUMLC)
+    curve_used_.assign(curves_.size(), 0);
     for (std::size_t k = 0; k < curves_.size(); ++k) {
       LoadCurve lc = curves_[k];
       const std::string card = "*DEFINE_CURVE " + std::to_string(lc.number);
@@ -3620,8 +3621,12 @@ bool is_ascii_database(const std::string& n) {
       curve_index_.emplace(lc.number, int(k));
       lc.number = int(k) + 1;
       m_.load_curves.push_back(std::move(lc));
+      // a curve a material uses (a flow stress curve: the *MAT card still holds the deck's id)
+      // is used
+      bool used = false;
+      for (const auto& [mid, r] : mats_) used = used || material_uses_curve(r.md, curves_[k].number);
+      if (used) curve_used_[k] = 1;
     }
-    curve_used_.assign(curves_.size(), 0);
     m_.control.numlc = int(m_.load_curves.size());
   }
 

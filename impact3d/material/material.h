@@ -24,6 +24,7 @@ struct MaterialConstants {
   double fail_strain = 0;  // effective plastic strain at which a solid fails (0 = never)
   bool initially_elastic = false;  // the seed's fast path (type 3)
   double tdel = 0;         // a solid whose step falls below this is deleted (0 = never)
+  int fail_history = -1;   // a solid whose history value of this index reaches 1 is deleted (damage)
   // Hardening curve sigma_y(eps_p), piecewise linear, the last slope extended (types with a
   // tabulated flow stress); slope[i] is the slope from point i to i + 1.
   std::vector<double> curve_eps, curve_sig, curve_slope;

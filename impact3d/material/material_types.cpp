@@ -14,6 +14,9 @@ namespace impact3d {
 // One line per type (each defined in impact3d/material/types/mat_*.cpp).
 const MaterialType& mat_elastic_type();
 const MaterialType& mat_plastic_kinematic_type();
+const MaterialType& mat_johnson_cook_type();
+const MaterialType& mat_power_law_type();
+const MaterialType& mat_simplified_johnson_cook_type();
 const MaterialType& mat_piecewise_linear_type();
 const MaterialType& mat_rigid_type();
 
@@ -21,8 +24,11 @@ std::span<const MaterialType* const> material_types() {
   static const MaterialType* const table[] = {  // in increasing number
       &mat_elastic_type(),
       &mat_plastic_kinematic_type(),
+      &mat_johnson_cook_type(),
+      &mat_power_law_type(),
       &mat_rigid_type(),
       &mat_piecewise_linear_type(),
+      &mat_simplified_johnson_cook_type(),
   };
   return table;
 }
@@ -138,6 +144,14 @@ void echo_material_params(std::ostream& os, const MaterialData& md, const Materi
     echo_line(os, p.label, std::string(buf) + (*p.unit ? std::string(" (") + p.unit + ")" : std::string()));
   }
   if (t.echo) t.echo(os, md);
+}
+
+bool material_uses_curve(const MaterialData& md, int curve) {
+  const MaterialType* t = find_material_type(md.type);
+  if (!t || curve == 0) return false;
+  for (const MaterialParam& p : t->params)
+    if (p.check == ParamCheck::curve && param_value(md, p) == double(curve)) return true;
+  return false;
 }
 
 int material_history_count(int type) {

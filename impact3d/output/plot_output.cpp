@@ -1,8 +1,10 @@
 #include "impact3d/output/plot_output.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "impact3d/element/shell_bt.h"
+#include "impact3d/material/material_types.h"
 
 namespace impact3d {
 
@@ -31,6 +33,10 @@ PlotGeometry make_plot_geometry(const Model& m) {
     g.shell_material[std::size_t(k)] = m.shell_material[std::size_t(k)] + 1;
   }
   if (!m.shell_user_id.empty()) g.shell_user_ids = m.shell_user_id;
+  // the materials' history values (NEIPH): as many as the most any solid's material has, the
+  // same count as State::hist_stride
+  for (int e = 0; e < m.num_hexes(); ++e)
+    g.num_solid_history = std::max(g.num_solid_history, material_history_count(m.materials[std::size_t(m.hex_material[std::size_t(e)])].type));
   for (const auto& md : m.materials)
     g.part_titles.push_back(md.title.empty() ? "material " + std::to_string(md.number) : md.title.substr(0, 72));
   // the deck's numbers (NARBS section), so readers show them
@@ -200,6 +206,7 @@ void fill_plot_state(const Model& m, const State& s, const InterfaceForces& ifac
   }
   ps.stress.assign(s.sig.begin(), s.sig.end());
   ps.eps.assign(s.eps_p.begin(), s.eps_p.end());
+  ps.history.assign(s.hist.begin(), s.hist.end());  // hist_stride (= NEIPH) per solid
   ps.alive.resize(ne);
   for (std::size_t e = 0; e < ne; ++e) ps.alive[e] = s.failed[e] ? 0 : 1;  // deleted solids: 0
   const std::size_t ns = std::size_t(s.shells.ns);

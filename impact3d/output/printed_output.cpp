@@ -167,9 +167,15 @@ void write_model_summary(std::ostream& os, const Model& m) {
      << "     minimum step factor .................. " << fmt("%.4g", k.min_step_factor) << "\n\n"
      << " m a t e r i a l s\n\n";
   for (const auto& md : m.materials) {
+    // the moduli and wave speed the kernel uses (its type's derivation: e.g. type 15 takes G
+    // from its own card)
     double G = md.E / (2 * (1 + md.nu));
     double K = md.E / (3 * (1 - 2 * md.nu));
     double c = std::sqrt((K + 4 * G / 3) / md.rho);
+    if (find_material_type(md.type)) {
+      const MaterialConstants mc = derive_constants(md, m);
+      G = mc.G, K = mc.K, c = mc.c;
+    }
     os << "   material " << md.number << ": " << material_type_name(md.type) << " (type " << md.type << ")"
        << (md.title.empty() ? "" : "  \"" + md.title + "\"") << "\n"
        << "     density .............................. " << fmt("%.6e", md.rho) << " (mass/volume)\n"

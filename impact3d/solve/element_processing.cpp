@@ -171,9 +171,10 @@ void store_hex_block(State& s, const GroupPass& gp, const int* elems, const bool
     const std::size_t hs = std::size_t(s.hist_stride);
     for (int h = 0; h < gp.history; ++h) s.hist[hs * E + std::size_t(h)] = k.hist[h][l];
     s.vol[E] = k.v[l];
-    const bool fails = (mc.fail_strain > 0 && k.eps_p[l] >= mc.fail_strain) || (mc.tdel > 0 && k.dt[l] < mc.tdel);
+    const bool fails = (mc.fail_strain > 0 && k.eps_p[l] >= mc.fail_strain) || (mc.tdel > 0 && k.dt[l] < mc.tdel) ||
+                       (mc.fail_history >= 0 && k.hist[mc.fail_history][l] >= 1.0);
     if (gp.dt > 0 && fails) {
-      // Failure (plastic strain, or the step below TDEL): the solid is deleted.  Its stress work up to now stays in the internal
+      // Failure (plastic strain, the step below TDEL, damage): the solid is deleted.  Its stress work up to now stays in the internal
       // energy, its mass on the nodes; the books as for a stress and viscosity that are zero
       // from now on (trapezoid with a zero end): only the old stress and q did work.
       s.failed[E] = 2;

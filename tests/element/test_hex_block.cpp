@@ -228,6 +228,17 @@ TEST(HexBlock, TableKernelsEqualTheirScalarKernels) {
       set_param_defaults(md, *t);
       md.rho = 8930, md.E = 117e9, md.nu = 0.35, md.sigma_y = 3e8, md.E_tan = 1e9, md.beta = 1;
       md.rate_c = rate_c, md.rate_p = 5;
+      // Johnson-Cook constants where the type has them (OFHC-copper-like, hot enough to soften)
+      const std::pair<const char*, double> jc[] = {{"G", 43e9}, {"A", 9e7}, {"B", 2.9e8}, {"N", 0.31}, {"C", 0.025},
+                                                   {"EPSO", 1}, {"M", 1.09}, {"TM", 1356}, {"TR", 293}, {"CP", 383},
+                                                   {"D1", 0.54}, {"D2", 4.89}, {"D3", -3.03}, {"D4", 0.014}, {"D5", 1.12}};
+      if (find_param(*t, "A"))
+        for (const auto& [key, v] : jc)
+          if (const MaterialParam* p = find_param(*t, key)) param_value(md, *p) = v;
+      if (find_param(*t, "K")) {  // power law: the yield strain (E / K)^(1 / (N - 1)) = 4.1e-4
+        param_value(md, *find_param(*t, "K")) = 5e8;
+        param_value(md, *find_param(*t, "N")) = 0.3;
+      }
       if (t->number == 24) {
         const double eps[4] = {0, 0.05, 0.12, 0.18}, es[4] = {3e8, 3.5e8, 3.6e8, 4.5e8};
         for (int i = 0; i < 4; ++i) {
@@ -240,6 +251,8 @@ TEST(HexBlock, TableKernelsEqualTheirScalarKernels) {
       calc_hex_kinematics_block(f.k, f.dt);
       for (int l = 0; l < kLanes; ++l)
         for (int c = 0; c < 6; ++c) f.back[l][c] = f.k.back[c][l] = 0;
+      for (int l = 0; l < kLanes; ++l)
+        for (int h = 0; h < kMaxHistory; ++h) f.k.hist[h][l] = 100.0 * l * (h == 0);  // temperature rises
       const HexBlock before = f.k;
       t->solid.update_block(m, f.k, f.dt);
       int yielded = 0;
@@ -249,11 +262,13 @@ TEST(HexBlock, TableKernelsEqualTheirScalarKernels) {
         for (int c = 0; c < 6; ++c) d[c] = before.d[c][l], s.sig[c] = before.sig[c][l];
         s.eps_p = before.eps_p[l];
         s.yielded = before.yielded[l];
+        for (int h = 0; h < kMaxHistory; ++h) s.hist[h] = before.hist[h][l];
         t->solid.update_point(m, d, f.dt, s);
         for (int c = 0; c < 6; ++c) EXPECT_TRUE(same(s.sig[c], f.k.sig[c][l])) << "type " << t->number << " lane " << l << " c " << c;
         if (t->solid.plastic_strain) {
           EXPECT_TRUE(same(s.eps_p, f.k.eps_p[l])) << "type " << t->number << " lane " << l;
           EXPECT_EQ(s.yielded, f.k.yielded[l]);
+          for (int h = 0; h < int(t->history.size()); ++h) EXPECT_TRUE(same(s.hist[h], f.k.hist[h][l])) << "type " << t->number;
           yielded += s.yielded != 0;
         }
       }

@@ -607,13 +607,13 @@ TEST(KeywordUnsupported, ListedInOnePassOrWarnedWhenLenient) {
 TEST(KeywordUnsupported, PartWithUnsupportedMaterialIsAnErrorEvenWhenLenient) {
   std::string deck = prepost_deck();
   std::string mat = deck.substr(deck.find("*MAT_PLASTIC_KINEMATIC_TITLE"), deck.find("*SET_NODE_LIST") - deck.find("*MAT_PLASTIC_KINEMATIC_TITLE"));
-  deck.replace(deck.find(mat), mat.size(), "*MAT_JOHNSON_COOK\n        127.85000E-9  150000.0      0.34\n");
+  deck.replace(deck.find(mat), mat.size(), "*MAT_ORTHOTROPIC_ELASTIC\n        127.85000E-9  150000.0      0.34\n");
   Read r = read_text(deck, true);
   EXPECT_FALSE(r.ok);
   const Diagnostic* d = r.first(1103);
   ASSERT_NE(d, nullptr) << r.messages();
   EXPECT_EQ(d->where.field, "MID");
-  EXPECT_NE(d->detail.find("*MAT_JOHNSON_COOK"), std::string::npos);
+  EXPECT_NE(d->detail.find("*MAT_ORTHOTROPIC_ELASTIC"), std::string::npos);
 }
 
 // ---------------------------------------------------------------------------- errors

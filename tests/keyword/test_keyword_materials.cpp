@@ -91,6 +91,7 @@ TEST(KeywordMaterials, PiecewiseLinearTableIsReadCheckedAndRoundTrips) {
   EXPECT_EQ(par(a.m, "TDEL"), 1e-12);
   EXPECT_EQ(par(a.m, "EPS3"), 0.05);
   EXPECT_EQ(par(a.m, "ES4"), 380.0);
+  EXPECT_EQ(a.d.count(2004), 1) << a.messages();  // the curve no material uses
   // the printed echo names the table points
   std::ostringstream echo;
   write_model_summary(echo, a.m);
@@ -114,11 +115,13 @@ TEST(KeywordMaterials, PiecewiseLinearCurveIsMappedAndChecked) {
   Read a = read_text(deck);
   ASSERT_TRUE(a.ok) << a.messages();
   EXPECT_EQ(par(a.m, "LCSS"), 1.0);  // curve 33 is the deck's first curve: number 1
+  EXPECT_EQ(a.d.count(2004), 0) << a.messages();  // the curve is used
   std::ostringstream fx;
   write_fixed_deck(fx, a.m, nullptr);
   Read f = read_text(fx.str(), "deck.dyn");
   ASSERT_TRUE(f.ok) << f.messages() << fx.str();
   EXPECT_EQ(join(model_differences(a.m, f.m)), "");
+  EXPECT_EQ(f.d.count(2004), 0) << f.messages();
   // an undefined curve, VP = 1, LCSR and a decreasing table: errors naming the fields
   std::string bad = one_hex_deck(kMat24);
   bad.replace(bad.find("         0         0       0.0\n"), 31, "        34        12       1.0\n");
@@ -147,4 +150,87 @@ TEST(KeywordMaterials, UnknownFixedFormatTypeIsRefused) {
   EXPECT_FALSE(f.ok);
   EXPECT_EQ(f.d.count(1103), 1) << f.messages();
   EXPECT_NE(f.messages().find("24 piecewise-linear plasticity"), std::string::npos) << f.messages();
+}
+
+// *MAT_JOHNSON_COOK (OFHC copper, Johnson and Cook 1985, in mm, t, s, MPa) and
+// *MAT_SIMPLIFIED_JOHNSON_COOK: read into the table's places, and the same model after the
+// converter both ways.
+TEST(KeywordMaterials, JohnsonCookTypesAreReadAndRoundTrip) {
+  const std::string jc =
+      "*MAT_JOHNSON_COOK\n"
+      "$#     mid        ro         g         e        pr       dtf        vp    rateop\n"
+      "         7   8.96E-9   46000.0  124000.0      0.34       0.0       0.0       0.0\n"
+      "$#       a         b         n         c         m        tm        tr      epso\n"
+      "      90.0     292.0      0.31     0.025      1.09    1356.0     293.0       1.0\n"
+      "$#      cp        pc     spall        it        d1        d2        d3        d4\n"
+      "   383.0E6   -1000.0       1.0       0.0      0.54      4.89     -3.03     0.014\n"
+      "$#      d5      c2/p      erod     efmin    numint\n"
+      "      1.12       0.0       0.0       0.0       0.0\n";
+  const std::string sjc =
+      "*MAT_SIMPLIFIED_JOHNSON_COOK\n"
+      "         7   8.96E-9  124000.0      0.34       0.0\n"
+      "      90.0     292.0      0.31     0.025       2.0     600.0       0.0       1.0\n";
+  for (const std::string& mat : {jc, sjc}) {
+    Read a = read_text(one_hex_deck(mat));
+    ASSERT_TRUE(a.ok) << a.messages();
+    const MaterialData& md = a.m.materials[0];
+    const MaterialType& t = material_type(md.type);
+    EXPECT_EQ(param_value(md, *find_param(t, "B")), 292.0);
+    EXPECT_EQ(param_value(md, *find_param(t, "EPSO")), 1.0);
+    if (md.type == 15) {
+      EXPECT_EQ(param_value(md, *find_param(t, "G")), 46000.0);
+      EXPECT_EQ(param_value(md, *find_param(t, "D3")), -3.03);
+      EXPECT_EQ(param_value(md, *find_param(t, "D5")), 1.12);
+    } else {
+      EXPECT_EQ(md.type, 98);
+      EXPECT_EQ(md.fail_strain, 2.0);
+      EXPECT_EQ(param_value(md, *find_param(t, "SIGMAX")), 600.0);
+      EXPECT_EQ(param_value(md, *find_param(t, "SIGSAT")), 1e28);  // 0: none
+    }
+    std::ostringstream kw, fx;
+    write_keyword_deck(kw, a.m);
+    Read k = read_text(kw.str());
+    ASSERT_TRUE(k.ok) << k.messages() << kw.str();
+    EXPECT_EQ(join(model_differences(a.m, k.m)), "");
+    write_fixed_deck(fx, a.m, nullptr);
+    Read f = read_text(fx.str(), "deck.dyn");
+    ASSERT_TRUE(f.ok) << f.messages() << fx.str();
+    EXPECT_EQ(join(model_differences(a.m, f.m)), "") << fx.str();
+  }
+  // spall types 2 and 3, VP = 1, EROD = 1: not supported (1102)
+  std::string bad = jc;
+  bad.replace(bad.find("       1.0       0.0      0.54"), 10, "       2.0");
+  bad.replace(bad.find("      0.34       0.0       0.0       0.0\n"), 41, "      0.34       0.0       1.0       0.0\n");
+  Read b = read_text(one_hex_deck(bad));
+  EXPECT_FALSE(b.ok);
+  EXPECT_EQ(b.d.count(1102), 2) << b.messages();
+}
+
+// *MAT_POWER_LAW_PLASTICITY: read into the table's places and the same model after the
+// converter both ways.
+TEST(KeywordMaterials, PowerLawIsReadAndRoundTrips) {
+  const std::string mat =
+      "*MAT_POWER_LAW_PLASTICITY\n"
+      "$#     mid        ro         e        pr         k         n       src       srp\n"
+      "         7    7.8E-9  200000.0       0.3    1200.0      0.25      40.0       5.0\n"
+      "$#    sigy        vp      epsf\n"
+      "     250.0       0.0       0.9\n";
+  Read a = read_text(one_hex_deck(mat));
+  ASSERT_TRUE(a.ok) << a.messages();
+  const MaterialData& md = a.m.materials[0];
+  const MaterialType& t = material_type(18);
+  EXPECT_EQ(md.type, 18);
+  EXPECT_EQ(param_value(md, *find_param(t, "K")), 1200.0);
+  EXPECT_EQ(param_value(md, *find_param(t, "SIGY")), 250.0);
+  EXPECT_EQ(md.rate_c, 40.0);
+  EXPECT_EQ(md.fail_strain, 0.9);
+  std::ostringstream kw, fx;
+  write_keyword_deck(kw, a.m);
+  Read k = read_text(kw.str());
+  ASSERT_TRUE(k.ok) << k.messages() << kw.str();
+  EXPECT_EQ(join(model_differences(a.m, k.m)), "");
+  write_fixed_deck(fx, a.m, nullptr);
+  Read f = read_text(fx.str(), "deck.dyn");
+  ASSERT_TRUE(f.ok) << f.messages() << fx.str();
+  EXPECT_EQ(join(model_differences(a.m, f.m)), "") << fx.str();
 }

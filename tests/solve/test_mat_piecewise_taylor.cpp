@@ -1,5 +1,6 @@
-// Type 24 (*MAT_PIECEWISE_LINEAR_PLASTICITY) in full runs: a two-point table with type 3's
-// bilinear hardening gives type 3's Taylor bar; deletion at FAIL and below TDEL.
+// Materials that coincide in full runs: type 24 with a two-point table, and Johnson-Cook (15, 98)
+// with n = 1, C = 0 and no heating, with type 3's bilinear hardening give type 3's Taylor bar;
+// type 24 deletes at FAIL and below TDEL.
 
 #include <gtest/gtest.h>
 
@@ -111,5 +112,30 @@ TEST(MatPiecewiseLinearRun, DeletesBelowTdel) {
     run(m, &s);
     const long failed = std::count_if(s.failed.begin(), s.failed.end(), [](unsigned char f) { return f != 0; });
     EXPECT_EQ(failed, tdel > 1e-3 ? long(s.ne) : 0L) << "TDEL " << tdel;
+  }
+}
+
+// Johnson-Cook with A = sigma_y, B = E_p, n = 1, C = 0, no thermal terms: type 3's hardening
+// line; the Newton return converges to 1e-15 (type 15 also rebuilds E and nu from K and G:
+// rounding), so the same tolerances as the two-point table apply.
+TEST(MatPiecewiseLinearRun, LinearJohnsonCookTaylorBarIsTypeThree) {
+  Model m3 = taylor_bar();
+  const Shape a = run(m3);
+  for (int type : {15, 98}) {
+    Model m = m3;
+    MaterialData& md = m.materials[0];
+    const double Ep = md.E * md.E_tan / (md.E - md.E_tan), sy = md.sigma_y, E = md.E, nu = md.nu;
+    const MaterialType& t = material_type(type);
+    md.type = type;
+    set_param_defaults(md, t);
+    md.E = E, md.nu = nu;
+    auto set = [&](const char* k, double v) { param_value(md, *find_param(t, k)) = v; };
+    set("A", sy), set("B", Ep), set("N", 1.0), set("EPSO", 1.0);
+    if (type == 15) set("G", E / (2 * (1 + nu)));
+    const Shape b = run(m);
+    std::printf("Taylor bar: type %d L %.9f mm, eps_max %.7f (relative to type 3 %.2e, %.2e)\n", type, b.length * 1e3,
+                b.eps_max, std::fabs(b.length / a.length - 1), std::fabs(b.eps_max / a.eps_max - 1));
+    EXPECT_NEAR(b.length, a.length, 1e-6 * a.length) << type;
+    EXPECT_NEAR(b.eps_max, a.eps_max, 1e-5 * a.eps_max) << type;
   }
 }

@@ -1,0 +1,32 @@
+#pragma once
+// The radial return of von Mises plasticity with a nonlinear isotropic flow stress: the
+// plastic strain increment de >= 0 that solves q - 3 G de = sigma_y(e0 + de) for the trial von
+// Mises stress q, by Newton's method safeguarded by bisection on [0, q / 3G] (to 1e-15
+// relative).  flow(e, s, ds) gives the flow stress s at plastic strain e and its slope ds
+// (HUGE_VAL where infinite: a bisection step is taken).  Returns 0 when q does not exceed the
+// flow stress at e0.  Scalar code (pow, log inside): block forms call it lane by lane.
+
+#include <cmath>
+
+namespace impact3d {
+
+template <class Flow>
+double solve_radial_return(double q, double G3, double e0, Flow&& flow) {
+  double s, ds;
+  flow(e0, s, ds);
+  if (!(q - s > 0.0)) return 0.0;
+  double lo = 0.0, hi = q / G3, de = 0.0;
+  for (int it = 0; it < 100; ++it) {
+    flow(e0 + de, s, ds);
+    const double g = q - G3 * de - s;
+    if (g > 0.0) lo = de; else hi = de;
+    double next = de + g / (G3 + ds);
+    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+    const bool done = std::fabs(next - de) <= 1e-15 * next || hi - lo <= 1e-15 * hi;
+    de = next;
+    if (done) break;
+  }
+  return de;
+}
+
+}  // namespace impact3d

@@ -1,0 +1,288 @@
+// Johnson-Cook plasticity, two types:
+//   15 *MAT_JOHNSON_COOK: sigma_y = (A + B eps_p^N) (1 + C ln rate*) (1 - T*^M), T* = (T - TR) /
+//      (TM - TR), adiabatic heating dT = sigma_y d eps_p / (rho0 CP) from the plastic work,
+//      pressure cutoff PC, Johnson-Cook damage D = sum d eps_p / eps_f, eps_f = max(EFMIN,
+//      (D1 + D2 exp(D3 sigma*)) (1 + D4 ln rate*) (1 + D5 T*)), deletion at D >= 1, and at the
+//      element step DTF.  LS-DYNA takes the pressure of a solid from an equation of state; here
+//      (no EOS yet) the pressure is hypoelastic with the bulk modulus of E and PR, and G is the
+//      card's shear modulus.
+//   98 *MAT_SIMPLIFIED_JOHNSON_COOK: sigma_y = min((min(A + B eps_p^N, SIGSAT)) (1 + C ln
+//      rate*), SIGMAX), deletion at the plastic strain PSFAIL.
+// rate* = max(rate / EPSO, 1) with rate = sqrt(2/3 D':D') the effective (deviatoric) strain
+// rate of the step (VP = 0: the yield stress is scaled).  The return solves q - 3 G de =
+// sigma_y(eps_p + de) by Newton's method safeguarded by bisection (the flow stress is
+// nonlinear); rate and temperature factors are those of the start of the step.
+//
+// Fixed format (an IMPACT-3D choice; no DYNA3D manual fixes these types): LS-DYNA's cards in
+// order, 8 E10 fields per card from card 3 (type 15: card 3 G, E, PR, DTF, VP, RATEOP; card 4 A,
+// B, N, C, M, TM, TR, EPSO; card 5 CP, PC, SPALL, IT, D1-D4; card 6 D5, C2/P, EROD, EFMIN; type
+// 98: card 3 E, PR, VP; card 4 A, B, N, C, PSFAIL, SIGMAX, SIGSAT, EPSO).
+//
+// The block form runs the scalar kernel lane by lane (pow, log and exp inside a Newton loop do
+// not vectorize); same bits by construction.
+
+#include <cmath>
+#include <cstdio>
+#include <ostream>
+
+#include "impact3d/material/material_block.h"
+#include "impact3d/material/material_types.h"
+#include "impact3d/material/radial_return.h"
+
+namespace impact3d {
+
+namespace {
+
+// MaterialConstants::k
+enum K { kA, kB, kN, kC, kM, kTm, kTr, kEps0, kCp, kPc, kD1, kD2, kD3, kD4, kD5, kEfmin, kSigmax, kSigsat,
+         kThermal, kDamage, kHistory, kNumK };
+static_assert(kNumK <= 24);
+// MaterialData::par (type 15)
+enum P15 { pG, pDtf, pVp, pRateop, pA, pB, pN, pC, pM, pTm, pTr, pEps0, pCp, pPc, pSpall, pIt,
+           pD1, pD2, pD3, pD4, pD5, pC2, pErod, pEfmin, pNumint, kNumPar15 };
+// MaterialData::par (type 98)
+enum P98 { qVp, qA, qB, qN, qC, qSigmax, qSigsat, qEps0, kNumPar98 };
+// history (type 15)
+enum H { hTemperatureRise, hDamage };
+
+double par(const MaterialData& md, int i) { return std::size_t(i) < md.par.size() ? md.par[std::size_t(i)] : 0.0; }
+
+// The flow stress f (A + B e^N) (capped) and its derivative in e; f = rate and thermal factor.
+void calc_flow_stress(const MaterialConstants& m, double f, double e, double& s, double& ds) {
+  const double en = e > 0.0 ? std::pow(e, m.k[kN]) : (m.k[kN] == 0.0 ? 1.0 : 0.0);
+  const double h = m.k[kA] + m.k[kB] * en;
+  const double dh = e > 0.0 ? m.k[kN] * m.k[kB] * std::pow(e, m.k[kN] - 1.0) : HUGE_VAL;
+  const bool sat = h >= m.k[kSigsat];
+  const double sy = f * (sat ? m.k[kSigsat] : h);
+  const bool capped = sy >= m.k[kSigmax];
+  s = capped ? m.k[kSigmax] : sy;
+  ds = capped || sat ? 0.0 : f * dh;
+}
+
+// The plastic strain increment for trial von Mises stress q (0: elastic).
+double calc_plastic_strain_increment(const MaterialConstants& m, double q, double e0, double f) {
+  return solve_radial_return(q, 3.0 * m.G, e0, [&](double e, double& s, double& ds) { calc_flow_stress(m, f, e, s, ds); });
+}
+
+double effective_strain_rate(const double d[6]) {
+  const double tr = (d[0] + d[1] + d[2]) * (1.0 / 3.0);
+  const double a = d[0] - tr, b = d[1] - tr, c = d[2] - tr;
+  return std::sqrt((2.0 / 3.0) * (a * a + b * b + c * c + 2.0 * (d[3] * d[3] + d[4] * d[4] + d[5] * d[5])));
+}
+
+void update_point(const MaterialConstants& m, const double d[6], double dt, SolidPointState& st) {
+  update_stress_elastic(m, d, dt, st.sig);  // elastic trial
+  double* sig = st.sig;
+  const double rs_ = effective_strain_rate(d) / m.k[kEps0];
+  const double lr = rs_ > 1.0 ? std::log(rs_) : 0.0;
+  const double R = 1.0 + m.k[kC] * lr;
+  double tstar = 0.0, theta = 1.0;
+  if (m.k[kThermal] != 0.0) {
+    tstar = st.hist[hTemperatureRise] / (m.k[kTm] - m.k[kTr]);
+    theta = tstar <= 0.0 ? 1.0 : tstar >= 1.0 ? 0.0 : 1.0 - std::pow(tstar, m.k[kM]);
+  }
+  const double p = (sig[0] + sig[1] + sig[2]) * (1.0 / 3.0);
+  double s0 = sig[0] - p, s1 = sig[1] - p, s2 = sig[2] - p;
+  const double q = std::sqrt(1.5 * (s0 * s0 + s1 * s1 + s2 * s2 + 2.0 * (sig[3] * sig[3] + sig[4] * sig[4] + sig[5] * sig[5])));
+  const double de = calc_plastic_strain_increment(m, q, st.eps_p, R * theta);
+  double pm = p;
+  if (m.k[kPc] < 0.0 && pm > -m.k[kPc]) pm = -m.k[kPc];  // pressure cutoff: mean stress <= -PC
+  const double scale = de > 0.0 ? 1.0 - 3.0 * m.G * de / q : 1.0;
+  sig[0] = pm + scale * s0;
+  sig[1] = pm + scale * s1;
+  sig[2] = pm + scale * s2;
+  sig[3] *= scale;
+  sig[4] *= scale;
+  sig[5] *= scale;
+  if (!(de > 0.0)) return;
+  const double qf = q - 3.0 * m.G * de;  // the flow stress reached
+  st.eps_p += de;
+  st.yielded = 1.0;
+  if (m.k[kThermal] != 0.0 && m.k[kCp] > 0.0) st.hist[hTemperatureRise] += qf * de / (m.rho * m.k[kCp]);
+  if (m.k[kDamage] != 0.0) {
+    const double triax = qf > 0.0 ? pm / qf : 0.0;
+    double ef = (m.k[kD1] + m.k[kD2] * std::exp(m.k[kD3] * triax)) * (1.0 + m.k[kD4] * lr) * (1.0 + m.k[kD5] * tstar);
+    if (ef < m.k[kEfmin]) ef = m.k[kEfmin];
+    st.hist[hDamage] += ef > 0.0 ? de / ef : HUGE_VAL;
+  }
+}
+
+void update_block(const MaterialConstants& m, HexBlock& k, double dt) {
+  const int nh = int(m.k[kHistory]);
+  for (int l = 0; l < kLanes; ++l) {
+    SolidPointState st;
+    double d[6];
+    for (int c = 0; c < 6; ++c) d[c] = k.d[c][l], st.sig[c] = k.sig[c][l];
+    st.eps_p = k.eps_p[l];
+    st.yielded = k.yielded[l];
+    for (int h = 0; h < nh; ++h) st.hist[h] = k.hist[h][l];
+    update_point(m, d, dt, st);
+    for (int c = 0; c < 6; ++c) k.sig[c][l] = st.sig[c];
+    k.eps_p[l] = st.eps_p;
+    k.yielded[l] = st.yielded;
+    for (int h = 0; h < nh; ++h) k.hist[h][l] = st.hist[h];
+  }
+}
+
+std::string f6(double v) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.6e", v);
+  return b;
+}
+
+// ---- type 15
+
+void check15(MaterialData& md, const MaterialType& t, const ParamReport& report) {
+  if (!(par(md, pG) > 0)) report(*find_param(t, "G"), 1003, "the shear modulus must be positive");
+  if (par(md, pTm) <= par(md, pTr) && par(md, pM) != 0)
+    report(*find_param(t, "TM"), 1003, "the melt temperature must exceed the room temperature TR");
+  if (par(md, pSpall) != 0 && par(md, pSpall) != 1)
+    report(*find_param(t, "SPALL"), 1102, "spall types 2 and 3 (0 and 1: the pressure cutoff PC)");
+  if (par(md, pEps0) == 0) param_value(md, *find_param(t, "EPSO")) = 1.0;
+}
+
+void derive15(const MaterialData& d, const Model&, MaterialConstants& c) {
+  // K from E and PR (no equation of state yet), G from the card; E and nu made consistent
+  const double K = d.E / (3.0 * (1.0 - 2.0 * d.nu)), G = par(d, pG) > 0 ? par(d, pG) : d.E / (2.0 * (1.0 + d.nu));
+  c.E = 9.0 * K * G / (3.0 * K + G);
+  c.nu = (3.0 * K - 2.0 * G) / (2.0 * (3.0 * K + G));
+  c.beta = 1;
+  c.k[kA] = par(d, pA), c.k[kB] = par(d, pB), c.k[kN] = par(d, pN), c.k[kC] = par(d, pC), c.k[kM] = par(d, pM);
+  c.k[kTm] = par(d, pTm), c.k[kTr] = par(d, pTr), c.k[kEps0] = par(d, pEps0) > 0 ? par(d, pEps0) : 1.0;
+  c.k[kCp] = par(d, pCp), c.k[kPc] = par(d, pPc);
+  for (int i = 0; i < 5; ++i) c.k[std::size_t(kD1 + i)] = par(d, pD1 + i);
+  c.k[kEfmin] = par(d, pEfmin);
+  c.k[kSigmax] = HUGE_VAL, c.k[kSigsat] = HUGE_VAL;
+  c.k[kThermal] = par(d, pTm) > par(d, pTr) ? 1 : 0;  // thermal softening and heating
+  c.k[kHistory] = 2;
+  const bool damage = par(d, pD1) != 0 || par(d, pD2) != 0;
+  c.k[kDamage] = damage ? 1 : 0;
+  if (damage) c.fail_history = hDamage;
+  c.tdel = par(d, pDtf);
+  c.sigma_y = c.k[kA];
+}
+
+void echo15(std::ostream& os, const MaterialData& md) {
+  echo_line(os, "flow stress", "(A + B eps_p^N) (1 + C ln rate*) (1 - T*^M)");
+  echo_line(os, "bulk modulus from", "E and PR (no equation of state)");
+  if (par(md, pD1) != 0 || par(md, pD2) != 0) echo_line(os, "failure", "Johnson-Cook damage D >= 1 deletes the solid");
+  if (par(md, pPc) < 0) echo_line(os, "pressure cutoff (tension)", f6(par(md, pPc)) + " (stress)");
+}
+
+MaterialParam p(const char* key, int kcard, int kfield, int index, ParamCheck check = ParamCheck::none,
+                const char* detail = "", const char* label = nullptr, const char* unit = "") {
+  return {.key = key, .label = label, .kcard = kcard, .kfield = kfield, .fcard = kcard + 3, .fcol = 1 + 10 * kfield,
+          .index = index, .check = check, .detail = detail, .unit = unit};
+}
+
+// ---- type 98
+
+void check98(MaterialData& md, const MaterialType& t, const ParamReport&) {
+  if (par(md, qEps0) == 0) param_value(md, *find_param(t, "EPSO")) = 1.0;
+  if (par(md, qSigmax) == 0) param_value(md, *find_param(t, "SIGMAX")) = 1e28;
+  if (par(md, qSigsat) == 0) param_value(md, *find_param(t, "SIGSAT")) = 1e28;
+  if (md.fail_strain >= 1e16) md.fail_strain = 0;  // LS-DYNA's default 1e17: never
+}
+
+void derive98(const MaterialData& d, const Model&, MaterialConstants& c) {
+  c.beta = 1;
+  c.k[kA] = par(d, qA), c.k[kB] = par(d, qB), c.k[kN] = par(d, qN), c.k[kC] = par(d, qC);
+  c.k[kEps0] = par(d, qEps0) > 0 ? par(d, qEps0) : 1.0;
+  c.k[kSigmax] = par(d, qSigmax) > 0 ? par(d, qSigmax) : HUGE_VAL;
+  c.k[kSigsat] = par(d, qSigsat) > 0 ? par(d, qSigsat) : HUGE_VAL;
+  if (d.fail_strain > 0) c.fail_strain = d.fail_strain;
+  c.sigma_y = c.k[kA];
+}
+
+void echo98(std::ostream& os, const MaterialData& md) {
+  echo_line(os, "flow stress", "min(min(A + B eps_p^N, SIGSAT) (1 + C ln rate*), SIGMAX)");
+  if (md.fail_strain > 0) echo_line(os, "failure plastic strain (deletion)", f6(md.fail_strain));
+}
+
+}  // namespace
+
+const MaterialType& mat_johnson_cook_type() {
+  static const MaterialType t = [] {
+    MaterialType t;
+    t.number = 15;
+    t.name = "Johnson-Cook";
+    t.keywords = {"MAT_JOHNSON_COOK", "MAT_015"};
+    t.params = {
+        {.key = "G", .label = "shear modulus G", .kcard = 0, .kfield = 2, .fcard = 3, .fcol = 1, .index = pG, .unit = "stress"},
+        {.key = "E", .kcard = 0, .kfield = 3, .fcard = 3, .fcol = 11, .field = &MaterialData::E,
+         .check = ParamCheck::positive, .msg = 1208},
+        {.key = "PR", .fname = "nu", .kcard = 0, .kfield = 4, .fcard = 3, .fcol = 21, .field = &MaterialData::nu,
+         .check = ParamCheck::poisson, .msg = 1209},
+        {.key = "DTF", .kcard = 0, .kfield = 5, .fcard = 3, .fcol = 31, .index = pDtf, .check = ParamCheck::non_negative,
+         .detail = "must not be negative (0: no deletion by time step)"},
+        {.key = "VP", .kcard = 0, .kfield = 6, .fcard = 3, .fcol = 41, .index = pVp, .check = ParamCheck::unsupported,
+         .detail = "VP = 1 (viscoplastic); VP = 0 scales the yield stress"},
+        {.key = "RATEOP", .kcard = 0, .kfield = 7, .fcard = 3, .fcol = 51, .index = pRateop, .check = ParamCheck::unsupported,
+         .detail = "rate forms other than RATEOP = 0 (1 + C ln rate*)"},
+        p("A", 1, 0, pA, ParamCheck::non_negative, "must not be negative", "A (yield stress)", "stress"),
+        p("B", 1, 1, pB, ParamCheck::non_negative, "must not be negative", "B (hardening)", "stress"),
+        p("N", 1, 2, pN, ParamCheck::non_negative, "must not be negative", "N (hardening exponent)"),
+        p("C", 1, 3, pC, ParamCheck::non_negative, "must not be negative", "C (rate)"),
+        p("M", 1, 4, pM, ParamCheck::non_negative, "must not be negative", "M (thermal softening exponent)"),
+        p("TM", 1, 5, pTm, ParamCheck::none, "", "melt temperature TM", "temperature"),
+        p("TR", 1, 6, pTr, ParamCheck::none, "", "room temperature TR", "temperature"),
+        p("EPSO", 1, 7, pEps0, ParamCheck::non_negative, "must not be negative (0: 1)", "reference strain rate EPSO", "1/time"),
+        p("CP", 2, 0, pCp, ParamCheck::non_negative, "must not be negative (0: no heating)", "specific heat CP"),
+        p("PC", 2, 1, pPc, ParamCheck::none, "", "pressure cutoff PC (< 0; 0 none)", "stress"),
+        p("SPALL", 2, 2, pSpall),
+        p("IT", 2, 3, pIt),
+        p("D1", 2, 4, pD1, ParamCheck::none, "", "damage D1"),
+        p("D2", 2, 5, pD2, ParamCheck::none, "", "damage D2"),
+        p("D3", 2, 6, pD3, ParamCheck::none, "", "damage D3"),
+        p("D4", 2, 7, pD4, ParamCheck::none, "", "damage D4"),
+        p("D5", 3, 0, pD5, ParamCheck::none, "", "damage D5"),
+        p("C2/P", 3, 1, pC2, ParamCheck::unsupported, "C2/P (rate forms other than RATEOP = 0)"),
+        p("EROD", 3, 2, pErod, ParamCheck::unsupported, "EROD = 1 (no erosion at D >= 1)"),
+        p("EFMIN", 3, 3, pEfmin, ParamCheck::non_negative, "must not be negative", "minimum failure strain EFMIN"),
+        {.key = "NUMINT", .kcard = 3, .kfield = 4, .index = pNumint},
+    };
+    t.num_par = kNumPar15;
+    t.keyword_cards = 4;
+    t.check = check15;
+    t.derive = derive15;
+    t.echo = echo15;
+    t.solid = {HexKernel::deformable, update_point, update_block, true};
+    t.history = {"temperature rise", "damage"};
+    return t;
+  }();
+  return t;
+}
+
+const MaterialType& mat_simplified_johnson_cook_type() {
+  static const MaterialType t = [] {
+    MaterialType t;
+    t.number = 98;
+    t.name = "simplified Johnson-Cook";
+    t.keywords = {"MAT_SIMPLIFIED_JOHNSON_COOK", "MAT_098"};
+    t.params = {
+        young_modulus_param(3, 1),
+        poisson_param(3, 11),
+        {.key = "VP", .kcard = 0, .kfield = 4, .fcard = 3, .fcol = 21, .index = qVp, .check = ParamCheck::unsupported,
+         .detail = "VP = 1 (viscoplastic, shells); VP = 0 scales the yield stress"},
+        p("A", 1, 0, qA, ParamCheck::non_negative, "must not be negative", "A (yield stress)", "stress"),
+        p("B", 1, 1, qB, ParamCheck::non_negative, "must not be negative", "B (hardening)", "stress"),
+        p("N", 1, 2, qN, ParamCheck::non_negative, "must not be negative", "N (hardening exponent)"),
+        p("C", 1, 3, qC, ParamCheck::non_negative, "must not be negative", "C (rate)"),
+        {.key = "PSFAIL", .kcard = 1, .kfield = 4, .fcard = 4, .fcol = 41, .field = &MaterialData::fail_strain,
+         .check = ParamCheck::non_negative, .detail = "must not be negative (0 or >= 1e16: no failure)"},
+        p("SIGMAX", 1, 5, qSigmax, ParamCheck::non_negative, "must not be negative (0: none)", "maximum flow stress SIGMAX", "stress"),
+        p("SIGSAT", 1, 6, qSigsat, ParamCheck::non_negative, "must not be negative (0: none)", "saturation stress SIGSAT", "stress"),
+        p("EPSO", 1, 7, qEps0, ParamCheck::non_negative, "must not be negative (0: 1)", "reference strain rate EPSO", "1/time"),
+    };
+    t.num_par = kNumPar98;
+    t.keyword_cards = 2;
+    t.check = check98;
+    t.derive = derive98;
+    t.echo = echo98;
+    t.solid = {HexKernel::deformable, update_point, update_block, true};
+    return t;
+  }();
+  return t;
+}
+
+}  // namespace impact3d
