@@ -522,6 +522,8 @@ struct RLoad {            // one load or prescribed-motion card, resolved after 
   std::array<int, 4> nodes{};     // *LOAD_SEGMENT
   std::array<Ref, 4> node_refs{};
   std::array<double, 3> dir{};    // *LOAD_BODY_*
+  int cid = 0, vid = 0;           // local system of DOF (loads), vector of DOF 4 (motions)
+  Ref cid_ref, vid_ref;
 };
 struct RHistory {
   bool solid = false;
@@ -1374,7 +1376,7 @@ bool is_ascii_database(const std::string& n) {
         once(b);
         if (!b.data.empty()) {
           KCard c = card(b, 0, "card 1", W(b, 1));
-          body_parts_psid_ = int(c.i(0, "PSID"));
+          body_parts_psid_ = xid(int(c.i(0, "PSID")), b, &IncludeTransform::idsoff);
           body_parts_ref_ = c.ref(0);
         }
       } else if (n == "BOUNDARY_PRESCRIBED_MOTION_NODE" || n == "BOUNDARY_PRESCRIBED_MOTION_SET" ||
@@ -2592,8 +2594,8 @@ bool is_ascii_database(const std::string& n) {
   }
 
   // LCID of a load card: required (a load without a curve does nothing)
-  void read_load_curve_field(KCard& c, int f, RLoad& l) {
-    l.lcid = int(c.i(f, "LCID"));
+  void read_load_curve_field(const Block& b, KCard& c, int f, RLoad& l) {
+    l.lcid = xid(int(c.i(f, "LCID")), b, &IncludeTransform::idfoff);
     l.lc_ref = c.ref(f);
     if (l.lcid == 0) c.error(1003, f, "LCID", "a load curve (*DEFINE_CURVE) is required");
   }
@@ -2606,14 +2608,15 @@ bool is_ascii_database(const std::string& n) {
       RLoad l;
       l.kind = kind;
       l.keyword = upper(b.keyword);
-      l.id = int(c.i(0, idf));
+      l.id = xid(int(c.i(0, idf)), b, kind == RLoad::node ? &IncludeTransform::idnoff : kind == RLoad::node_set ? &IncludeTransform::idsoff : &IncludeTransform::idpoff);
       l.ref = c.ref(0);
       l.dof = int(c.i(1, "DOF"));
       if (l.dof >= 4 && l.dof <= 8) c.error(1102, 1, "DOF", l.dof == 4 ? "follower forces" : l.dof == 8 ? "follower moments" : "moments (solid nodes have no rotations)");
       else if (l.dof < 1 || l.dof > 8) c.error(1006, 1, "DOF", "1 x, 2 y, 3 z");
-      read_load_curve_field(c, 2, l);
+      read_load_curve_field(b, c, 2, l);
       l.sf = c.r(3, "SF", 1.0);
-      if (c.i(4, "CID") != 0) c.error(1102, 4, "CID", "loads in a local coordinate system");
+      l.cid = xid(int(c.i(4, "CID")), b, &IncludeTransform::iddoff);  // DOF along that system's axis
+      l.cid_ref = c.ref(4);
       for (int f = 5; f < 8; ++f) c.i(f, "M1/M2/M3");
       loads_.push_back(l);
     }
@@ -2629,10 +2632,10 @@ bool is_ascii_database(const std::string& n) {
       l.keyword = upper(b.keyword);
       const int o = set ? 1 : 0;
       if (set) {
-        l.id = int(c.i(0, "SSID"));
+        l.id = xid(int(c.i(0, "SSID")), b, &IncludeTransform::idsoff);
         l.ref = c.ref(0);
       }
-      read_load_curve_field(c, o, l);
+      read_load_curve_field(b, c, o, l);
       l.sf = c.r(o + 1, "SF", 1.0);
       l.birth = c.r(o + 2, "AT");
       if (set) {
@@ -2641,7 +2644,7 @@ bool is_ascii_database(const std::string& n) {
       } else {
         const char* names[] = {"N1", "N2", "N3", "N4"};
         for (int q = 0; q < 4; ++q) {
-          l.nodes[std::size_t(q)] = int(c.i(3 + q, names[q]));
+          l.nodes[std::size_t(q)] = xid(int(c.i(3 + q, names[q])), b, &IncludeTransform::idnoff);
           l.node_refs[std::size_t(q)] = c.ref(3 + q);
         }
         if (l.nodes[3] == 0) l.nodes[3] = l.nodes[2];  // a triangle
@@ -2659,11 +2662,12 @@ bool is_ascii_database(const std::string& n) {
     l.kind = RLoad::body;
     l.keyword = upper(b.keyword);
     l.ref = c.ref(0);
-    read_load_curve_field(c, 0, l);
+    read_load_curve_field(b, c, 0, l);
     l.sf = c.r(1, "SF", 1.0);
     if (c.i(2, "LCIDDR") != 0) c.error(2006, 2, "LCIDDR", "no dynamic relaxation");
     for (int f = 3; f < 6; ++f) c.r(f, "XC/YC/ZC");
-    if (c.i(6, "CID") != 0) c.error(1102, 6, "CID", "body loads in a local coordinate system");
+    l.cid = xid(int(c.i(6, "CID")), b, &IncludeTransform::iddoff);  // the direction in that system
+    l.cid_ref = c.ref(6);
     if (axis < 3) {
       l.dir[std::size_t(axis)] = 1;
     } else if (b.data.size() < 2) {
@@ -2687,10 +2691,12 @@ bool is_ascii_database(const std::string& n) {
       RLoad l;
       l.kind = kind;
       l.keyword = upper(b.keyword);
-      l.id = int(c.i(0, idf));
+      l.id = xid(int(c.i(0, idf)), b, kind == RLoad::motion_node ? &IncludeTransform::idnoff : kind == RLoad::motion_set ? &IncludeTransform::idsoff : &IncludeTransform::idpoff);
       l.ref = c.ref(0);
       l.dof = int(c.i(1, "DOF"));
-      if (l.dof == 4 || l.dof == -4) c.error(1102, 1, "DOF", "motion along a vector (VID)");
+      if (l.dof == -4) c.error(1102, 1, "DOF", "motion along a vector with the normal plane held (DOF -4)");
+      else if (l.dof == 4 && kind == RLoad::motion_rigid) c.error(1102, 1, "DOF", "rigid-body motion along a vector");
+      else if (l.dof == 4) {}
       else if (l.dof >= 5 && l.dof <= 8) c.error(1102, 1, "DOF", kind == RLoad::motion_rigid ? "prescribed rotations of rigid bodies" : "rotations (solid nodes have no rotations)");
       else if (l.dof < 1 || l.dof > 3) c.error(kind == RLoad::motion_rigid || l.dof < -4 || l.dof > 11 ? 1006 : 1102, 1, "DOF", "1 x, 2 y, 3 z");
       const long long vad = c.i(2, "VAD");
@@ -2699,9 +2705,11 @@ bool is_ascii_database(const std::string& n) {
       else if (vad == 2) l.vad = MotionKind::displacement;
       else if (vad == 3 || vad == 4) c.error(1102, 2, "VAD", vad == 3 ? "velocity as a function of displacement" : "relative displacement");
       else c.error(1006, 2, "VAD", "0 velocity, 1 acceleration, 2 displacement");
-      read_load_curve_field(c, 3, l);
+      read_load_curve_field(b, c, 3, l);
       l.sf = c.r(4, "SF", 1.0);
-      if (c.i(5, "VID") != 0) c.error(1102, 5, "VID", "motion along a vector (VID)");
+      l.vid = xid(int(c.i(5, "VID")), b, &IncludeTransform::iddoff);  // the direction of DOF 4 (*DEFINE_VECTOR)
+      l.vid_ref = c.ref(5);
+      if (l.dof == 4 && l.vid == 0) c.error(1003, 5, "VID", "DOF 4 moves along a vector: VID (*DEFINE_VECTOR) is required");
       const double death = c.r(6, "DEATH");
       l.death = death > 0 ? death : 1e28;
       l.birth = c.r(7, "BIRTH");
@@ -3683,17 +3691,39 @@ bool is_ascii_database(const std::string& n) {
     return mt;
   }
 
+  // The global unit direction of a load or motion: DOF 1-3 along the axes of its system CID
+  // (global when 0), DOF 4 along its *DEFINE_VECTOR VID, a body load's direction in its CID.
+  // False (error reported) when the system or vector is undefined.
+  bool load_direction(const RLoad& l, std::array<double, 3>& d) {
+    if (l.kind == RLoad::body) {
+      d = l.dir;
+      return global_direction(l.cid, l.cid_ref, l.keyword, "CID", d);
+    }
+    if (l.dof == 4) {
+      if (l.vid == 0) return false;  // (VID required: reported when read)
+      if (!coords_.vector(l.vid, d)) {
+        err(1310, l.vid_ref, l.keyword, "VID", "vector " + std::to_string(l.vid) + " is not defined by *DEFINE_VECTOR");
+        return false;
+      }
+      return true;
+    }
+    d = axis_direction(l.dof);
+    return global_direction(l.cid, l.cid_ref, l.keyword, "CID", d);
+  }
+
   void resolve_loads() {
     std::vector<char> rigid_node;  // nodes of rigid bodies (prescribed node motions refused there)
     for (const RLoad& l : loads_) {
-      const int curve = curve_of(l);
+      int curve = curve_of(l);
+      std::array<double, 3> dir{};
+      if (!load_direction(l, dir)) curve = -1;  // (reported) nothing of it is kept
       const int line = l.ref.line ? l.ref.line->number : l.lc_ref.line ? l.lc_ref.line->number : 0;
       switch (l.kind) {
         case RLoad::node:
         case RLoad::node_set:
           for (int n : load_nodes(l, l.kind == RLoad::node_set, l.kind == RLoad::node ? "NID" : "NSID")) {
             if (curve < 0) continue;
-            m_.nodal_loads.push_back({n, axis_direction(l.dof), curve, l.sf, line});
+            m_.nodal_loads.push_back({n, dir, curve, l.sf, line});
           }
           break;
         case RLoad::rigid_body: {
@@ -3701,7 +3731,7 @@ bool is_ascii_database(const std::string& n) {
           // engine's rigid-body update sums it back into one force, with no moment)
           const int mt = rigid_material_of_part(l);
           if (mt < 0 || curve < 0) break;
-          m_.rigid_body_loads.push_back({mt, axis_direction(l.dof), curve, l.sf, line});
+          m_.rigid_body_loads.push_back({mt, dir, curve, l.sf, line});
           break;
         }
         case RLoad::segment:
@@ -3754,7 +3784,7 @@ bool is_ascii_database(const std::string& n) {
           break;
         }
         case RLoad::body:
-          if (curve >= 0) m_.body_loads.push_back({l.dir, curve, l.sf, line});
+          if (curve >= 0) m_.body_loads.push_back({dir, curve, l.sf, line});
           break;
         case RLoad::motion_node:
         case RLoad::motion_set: {
@@ -3775,7 +3805,7 @@ bool is_ascii_database(const std::string& n) {
             if (curve < 0) continue;
             PrescribedMotion pm;
             pm.node = n;
-            pm.dir = axis_direction(l.dof);
+            pm.dir = dir;
             pm.kind = l.vad;
             pm.curve = curve;
             pm.scale = l.sf;
@@ -3795,7 +3825,7 @@ bool is_ascii_database(const std::string& n) {
           if (mt < 0 || curve < 0) break;
           PrescribedMotion pm;
           pm.rigid_material = mt;
-          pm.dir = axis_direction(l.dof);
+          pm.dir = dir;
           pm.kind = l.vad;
           pm.curve = curve;
           pm.scale = l.sf;
