@@ -233,3 +233,20 @@ TEST(KeywordLoads, LocalSystemsAndVectors) {
   EXPECT_NEAR(r.m.prescribed_motions[0].dir[0], 0.6, 1e-15);
   EXPECT_NEAR(r.m.prescribed_motions[0].dir[2], 0.8, 1e-15);
 }
+
+// The shipped loads example: decks/keyword/bar_pulled.k (prescribed velocity ramp, a side
+// pressure, gravity, an SPC set) and its fixed-format twin decks/bar_pulled.dyn (written by
+// impact3d --write-fixed) are the same model.
+TEST(KeywordLoads, ShippedBarPulledTwinsAreTheSameModel) {
+  const std::string src = IMPACT3D_SOURCE_DIR;
+  Read k, f;
+  InputOptions o;
+  k.ok = read_and_check_deck(src + "/decks/keyword/bar_pulled.k", k.m, k.d, o);
+  f.ok = read_and_check_deck(src + "/decks/bar_pulled.dyn", f.m, f.d, o);
+  ASSERT_TRUE(k.ok) << k.messages();
+  ASSERT_TRUE(f.ok) << f.messages();
+  EXPECT_EQ(join(model_differences(k.m, f.m, 50)), "");
+  EXPECT_EQ(k.m.prescribed_motions.size(), 9u);
+  EXPECT_EQ(k.m.pressure_loads.size(), 40u);
+  EXPECT_EQ(k.m.body_loads.size(), 1u);
+}
