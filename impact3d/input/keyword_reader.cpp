@@ -650,7 +650,7 @@ class KeywordReader {
   double dtinit_ = 0, tssfac_ = 0.9;
   double slsfac_ = 0.1;
   int ikedit_ = 100;
-  double d3plot_dt_ = 0, nodout_dt_ = -1, elout_dt_ = -1, glstat_dt_ = -1, ncforc_dt_ = 0;
+  double d3plot_dt_ = 0, d3thdt_dt_ = -1, nodout_dt_ = -1, elout_dt_ = -1, glstat_dt_ = -1, ncforc_dt_ = 0;
   int spcforc_ = 0;
   int d3dump_ = 0, runrsf_ = 0;
   int ctrl_ihq_ = 0;
@@ -1318,6 +1318,16 @@ bool is_ascii_database(const std::string& n) {
           d3plot_dt_ = c.r(0, "DT");
           if (d3plot_dt_ < 0) c.error(1221, 0, "DT");
           if (!c.blank(1) && c.i(1, "LCDT") != 0) c.error(1102, 1, "LCDT", "plot interval from a load curve");
+        }
+      } else if (n == "DATABASE_BINARY_D3THDT") {
+        // the binary time-history database's interval: IMPACT-3D has one time-history interval
+        // (d3thdt and the ASCII tables), and this DT takes precedence over the ASCII ones
+        once(b);
+        if (!b.data.empty()) {
+          KCard c = card(b, 0, "card 1", W(b, 5));
+          d3thdt_dt_ = c.r(0, "DT");
+          if (d3thdt_dt_ < 0) c.error(1221, 0, "DT");
+          if (!c.blank(1) && c.i(1, "LCDT") != 0) c.error(1102, 1, "LCDT", "time-history interval from a load curve");
         }
       } else if (n == "DATABASE_BINARY_D3DUMP" || n == "DATABASE_BINARY_RUNRSF") {
         once(b);
@@ -3196,7 +3206,7 @@ bool is_ascii_database(const std::string& n) {
     k.penalty_scale = slsfac_;
     k.report_interval = ikedit_;
     k.plot_interval = d3plot_dt_ > 0 ? d3plot_dt_ : end_time_ / 20;
-    double th = nodout_dt_ > 0 ? nodout_dt_ : elout_dt_ > 0 ? elout_dt_ : glstat_dt_ > 0 ? glstat_dt_ : 0;
+    double th = d3thdt_dt_ > 0 ? d3thdt_dt_ : nodout_dt_ > 0 ? nodout_dt_ : elout_dt_ > 0 ? elout_dt_ : glstat_dt_ > 0 ? glstat_dt_ : 0;
     k.th_interval = th > 0 ? th : end_time_ / 1000;
     k.interface_out_interval = ncforc_dt_;
     k.reaction_print_flag = reaction_flag_ >= 0 ? reaction_flag_ : spcforc_;

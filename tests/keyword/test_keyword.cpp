@@ -876,6 +876,23 @@ std::size_t lines_with(const std::string& text, const std::string& what) {
 }
 }  // namespace
 
+TEST(KeywordRead, D3thdtIntervalIsTheTimeHistoryInterval) {
+  // *DATABASE_BINARY_D3THDT DT sets the one time-history interval (d3thdt and the ASCII
+  // tables), ahead of *DATABASE_GLSTAT's; LCDT asks for a curve-driven interval: 1102
+  const std::string base = prepost_deck();
+  Read r = read_text(replaced(base, "*DATABASE_GLSTAT\n", "*DATABASE_BINARY_D3THDT\n$#      dt      lcdt\n   2.5E-7\n*DATABASE_GLSTAT\n"));
+  ASSERT_TRUE(r.ok) << r.messages();
+  EXPECT_EQ(r.m.control.th_interval, 2.5e-7);
+  EXPECT_EQ(r.count(1301) + r.count(2008), 0) << r.messages();
+  Read lc = read_text(replaced(base, "*DATABASE_GLSTAT\n", "*DATABASE_BINARY_D3THDT\n   2.5E-7         3\n*DATABASE_GLSTAT\n"));
+  EXPECT_FALSE(lc.ok);
+  ASSERT_EQ(lc.count(1102), 1) << lc.messages();
+  EXPECT_EQ(lc.first(1102)->where.card, "*DATABASE_BINARY_D3THDT card 1");
+  Read neg = read_text(replaced(base, "*DATABASE_GLSTAT\n", "*DATABASE_BINARY_D3THDT\n  -2.5E-7\n*DATABASE_GLSTAT\n"));
+  EXPECT_FALSE(neg.ok);
+  EXPECT_EQ(neg.count(1221), 1) << neg.messages();
+}
+
 TEST(KeywordRefusals, MessagesAreNeverDroppedOnALargeRefusedDeck) {
   // 1500 bad *NODE cards, an unsupported keyword after them and no elements: every kind of
   // error and the required-keyword message appear, with the count of all errors
