@@ -408,6 +408,12 @@ class KeywordWriter {
             << "$#      v1        v2        v3\n" << kcard({R(b.dir[0]), R(b.dir[1]), R(b.dir[2])}) << "\n";
       }
     }
+    if (m_.damping.active) {
+      const GlobalDamping& g = m_.damping;
+      os_ << "*DAMPING_GLOBAL\n$#    lcid    valdmp       stx       sty       stz       srx       sry       srz\n"
+          << kcard({I(g.curve >= 0 ? lcid(g.curve) : 0), R(g.d), R(g.factor[0]), R(g.factor[1]), R(g.factor[2]), R(0), R(0), R(0)})
+          << "\n";
+    }
     if (!m_.body_loads.empty() && !m_.body_load_materials.empty()) {
       const int sid = 1;
       os_ << "*SET_PART_LIST\n$#     sid\n" << kcard({I(sid)}) << "\n$#    pid1      pid2      pid3      pid4      pid5      pid6      pid7      pid8\n";
@@ -532,6 +538,7 @@ void write_fixed_deck(std::ostream& os, const Model& m, std::vector<std::string>
   if (node_motions < int(m.prescribed_motions.size()) && notes)
     notes->push_back("prescribed motions of rigid bodies have no fixed-format card: not written");
   if (!m.rigid_body_loads.empty() && notes) notes->push_back("rigid-body loads have no fixed-format card: not written");
+  if (m.damping.active && notes) notes->push_back("global mass damping (*DAMPING_GLOBAL) has no fixed-format card: not written");
   std::array<int, 3> base = {-1, -1, -1};  // body load written as each axis's base acceleration
   for (std::size_t j = 0; j < m.body_loads.size(); ++j) {
     const auto& d = m.body_loads[j].dir;
@@ -924,6 +931,12 @@ std::vector<std::string> model_differences(const Model& a, const Model& b, int m
     dir_differs(w, x.dir, y.dir);
     curve_differs(w, x.curve, y.curve);
     D(w + "scale", x.scale, y.scale);
+  }
+  N("global damping", a.damping.active ? 1 : 0, b.damping.active ? 1 : 0);
+  if (a.damping.active && b.damping.active) {
+    curve_differs("global damping ", a.damping.curve, b.damping.curve);
+    D("global damping D", a.damping.d, b.damping.d);
+    for (int q = 0; q < 3; ++q) D("global damping factor " + std::to_string(q + 1), a.damping.factor[std::size_t(q)], b.damping.factor[std::size_t(q)]);
   }
   if (a.body_load_materials != b.body_load_materials) diff("body-load materials", std::to_string(a.body_load_materials.size()), std::to_string(b.body_load_materials.size()));
   N("prescribed motions", long(a.prescribed_motions.size()), long(b.prescribed_motions.size()));

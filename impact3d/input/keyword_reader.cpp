@@ -607,6 +607,8 @@ class KeywordReader {
   std::vector<RSpc> spcs_;
   std::vector<RHistory> histories_;
   std::vector<RLoad> loads_;
+  RLoad damping_;                        // *DAMPING_GLOBAL (lcid, sf = VALDMP, dir = STX STY STZ)
+  bool damping_given_ = false, damping_rotations_ = false;
   int body_parts_psid_ = 0;              // *LOAD_BODY_PARTS
   Ref body_parts_ref_;
   std::map<int, RIdList> solid_sets_, shell_sets_;  // shell sets: read, kept for shell elements
@@ -1319,6 +1321,9 @@ bool is_ascii_database(const std::string& n) {
           if (d3plot_dt_ < 0) c.error(1221, 0, "DT");
           if (!c.blank(1) && c.i(1, "LCDT") != 0) c.error(1102, 1, "LCDT", "plot interval from a load curve");
         }
+      } else if (n == "DAMPING_GLOBAL") {
+        once(b);
+        parse_damping_global(b);
       } else if (n == "DATABASE_BINARY_D3THDT") {
         // the binary time-history database's interval: IMPACT-3D has one time-history interval
         // (d3thdt and the ASCII tables), and this DT takes precedence over the ASCII ones
@@ -2693,6 +2698,32 @@ bool is_ascii_database(const std::string& n) {
     loads_.push_back(l);
   }
 
+  // *DAMPING_GLOBAL: LCID VALDMP STX STY STZ SRX SRY SRZ (all six factors 0: all 1, as LS-DYNA)
+  void parse_damping_global(const Block& b) {
+    if (b.data.empty()) return;  // a card of defaults: no damping
+    KCard c = card(b, 0, "card 1", W(b, 8));
+    damping_ = RLoad();
+    damping_.kind = RLoad::body;
+    damping_.keyword = upper(b.keyword);
+    damping_.lcid = xid(int(c.i(0, "LCID")), b, &IncludeTransform::idfoff);
+    damping_.lc_ref = c.ref(0);
+    damping_.ref = c.ref(0);
+    damping_.sf = c.r(1, "VALDMP");
+    if (damping_.sf < 0) c.error(1003, 1, "VALDMP", "the damping constant must not be negative");
+    static const char* names[6] = {"STX", "STY", "STZ", "SRX", "SRY", "SRZ"};
+    double f[6];
+    bool any = false;
+    for (int k = 0; k < 6; ++k) {
+      f[k] = c.r(2 + k, names[k]);
+      if (f[k] < 0) c.error(1003, 2 + k, names[k], "a scale factor must not be negative");
+      any = any || f[k] != 0;
+    }
+    if (!any) for (double& x : f) x = 1;
+    damping_.dir = {f[0], f[1], f[2]};
+    if (f[3] != 0 || f[4] != 0 || f[5] != 0) damping_rotations_ = true;
+    damping_given_ = damping_.lcid != 0 || damping_.sf > 0;
+  }
+
   // *BOUNDARY_PRESCRIBED_MOTION_NODE / _SET / _RIGID: ID DOF VAD LCID SF VID DEATH BIRTH
   void parse_prescribed_motion(const Block& b, RLoad::Kind kind) {
     const char* idf = kind == RLoad::motion_node ? "NID" : kind == RLoad::motion_set ? "NSID" : "PID";
@@ -3721,7 +3752,23 @@ bool is_ascii_database(const std::string& n) {
     return global_direction(l.cid, l.cid_ref, l.keyword, "CID", d);
   }
 
+  void resolve_damping() {
+    if (!damping_given_) return;
+    GlobalDamping& g = m_.damping;
+    g.active = true;
+    g.d = damping_.sf;
+    g.factor = damping_.dir;
+    g.line = damping_.ref.line ? damping_.ref.line->number : 0;
+    if (damping_.lcid != 0) {
+      g.curve = curve_of(damping_);
+      if (g.curve < 0) g.active = false;  // (reported)
+    }
+    if (damping_rotations_ && m_.num_shells() > 0)
+      err(2006, damping_.ref, damping_.keyword, "SRX", "the rotations of shell nodes are not damped (translations only)");
+  }
+
   void resolve_loads() {
+    resolve_damping();
     std::vector<char> rigid_node;  // nodes of rigid bodies (prescribed node motions refused there)
     for (const RLoad& l : loads_) {
       int curve = curve_of(l);

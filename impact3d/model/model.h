@@ -142,6 +142,16 @@ struct BodyLoad {
   int line = 0;
 };
 
+// Global mass-weighted damping (*DAMPING_GLOBAL): every node feels f = -D m (sx vx, sy vy, sz vz)
+// with D = scale (VALDMP) or, when curve >= 0, the curve's value at t; its work is external work.
+struct GlobalDamping {
+  bool active = false;
+  int curve = -1;                         // 0-based load curve, -1: the constant D
+  double d = 0;                           // VALDMP (1/time) when no curve
+  std::array<double, 3> factor{1, 1, 1}; // STX STY STZ
+  int line = 0;
+};
+
 // A prescribed translation of a node (or of a rigid body's centre of mass) along a unit
 // direction, between its birth and death times; outside them the motion is free.
 enum class MotionKind : int { velocity = 0, acceleration = 1, displacement = 2 };  // LS-DYNA VAD
@@ -214,8 +224,10 @@ struct Model {
   std::vector<BodyLoad> body_loads;
   std::vector<int> body_load_materials;   // 0-based materials the body loads act on; empty = all
   std::vector<PrescribedMotion> prescribed_motions;
+  GlobalDamping damping;
   bool has_loads() const {
-    return !nodal_loads.empty() || !rigid_body_loads.empty() || !pressure_loads.empty() || !body_loads.empty();
+    return !nodal_loads.empty() || !rigid_body_loads.empty() || !pressure_loads.empty() || !body_loads.empty() ||
+           damping.active;
   }
 
   int num_nodes() const { return static_cast<int>(x.size()); }

@@ -86,6 +86,12 @@ void write_loads(std::ostream& os, const Model& m) {
   for (const BodyLoad& b : m.body_loads)
     os << "   body load (base acceleration) along " << direction_text(b.dir) << ": -" << fmt("%.6e", b.scale) << " x curve "
        << curve(b.curve) << " (acceleration)" << (m.body_load_materials.empty() ? ", all materials" : ", listed materials") << "\n";
+  if (m.damping.active) {
+    const GlobalDamping& g = m.damping;
+    os << "   global mass damping f = -D m v: D = " << (g.curve >= 0 ? "curve " + curve(g.curve) : fmt("%.6e", g.d))
+       << " per unit time, factors x y z " << fmt("%.4g", g.factor[0]) << " " << fmt("%.4g", g.factor[1]) << " "
+       << fmt("%.4g", g.factor[2]) << " (its work is external work)\n";
+  }
   if (!m.prescribed_motions.empty()) os << "   prescribed motions: " << m.prescribed_motions.size() << "\n";
   for (std::size_t j = 0; j < std::min(kShown, m.prescribed_motions.size()); ++j) {
     const PrescribedMotion& pm = m.prescribed_motions[j];

@@ -71,6 +71,37 @@ double prescribed_velocity(const Model& m, const PrescribedMotion& pm, double t,
   return 0;
 }
 
+// f = -D m (sx vx, sy vy, sz vz) on v^{n-1/2} (explicit, as mass damping is in central
+// differences); D of this cycle kept for the work book
+void apply_global_damping_to_nodes(const Model& m, State& s, LoadSet& loads, double t) {
+  const GlobalDamping& g = m.damping;
+  const double d = g.curve >= 0 ? curve_value(m, g.curve, t) : g.d;
+  loads.damping_d = d;
+  const double cx = d * g.factor[0], cy = d * g.factor[1], cz = d * g.factor[2];
+  for (int i = 0; i < s.nn; ++i) {
+    const std::size_t k = std::size_t(i);
+    const double mk = s.mass[k];
+    s.fext_x[k] -= cx * mk * s.vx[k];
+    s.fext_y[k] -= cy * mk * s.vy[k];
+    s.fext_z[k] -= cz * mk * s.vz[k];
+  }
+}
+
+// the damping forces' work this cycle: f . (v^{n-1/2} + v^{n+1/2}) / 2 summed over the nodes
+double power_of_global_damping(const Model& m, const State& s, const LoadSet& loads) {
+  const GlobalDamping& g = m.damping;
+  const double d = loads.damping_d;
+  double px = 0, py = 0, pz = 0;
+  for (int i = 0; i < s.nn; ++i) {
+    const std::size_t k = std::size_t(i);
+    const double mk = s.mass[k];
+    px += mk * s.vx_old[k] * (s.vx_old[k] + s.vx[k]);
+    py += mk * s.vy_old[k] * (s.vy_old[k] + s.vy[k]);
+    pz += mk * s.vz_old[k] * (s.vz_old[k] + s.vz[k]);
+  }
+  return -0.5 * d * (g.factor[0] * px + g.factor[1] * py + g.factor[2] * pz);
+}
+
 }  // namespace
 
 void prepare_loads(const Model& m, const State& s, LoadSet& loads) {
@@ -97,6 +128,7 @@ void prepare_loads(const Model& m, const State& s, LoadSet& loads) {
 }
 
 void apply_loads_to_nodes(const Model& m, State& s, LoadSet& loads, double t) {
+  if (m.damping.active) apply_global_damping_to_nodes(m, s, loads, t);
   for (std::size_t j = 0; j < m.nodal_loads.size(); ++j) {
     const NodalLoad& l = m.nodal_loads[j];
     const double v = l.scale * curve_value(m, l.curve, t);
@@ -238,6 +270,7 @@ void book_external_work(const Model& m, State& s, const LoadSet& loads, double d
       w += rb.mass * (v_new - loads.free_velocity[j]) / dt_n * 0.5 * (v_old + v_new);
     }
   }
+  if (m.damping.active) w += power_of_global_damping(m, s, loads);
   s.external_work += dt_n * w;
 }
 

@@ -1,7 +1,8 @@
 #pragma once
 // Loads and prescribed motions in the cycle (docs/developer-guide.md, "Cycle phases"):
 //   forces:    apply_loads_to_nodes      nodal forces, pressures on faces (on the current
-//                                        geometry) and body forces into s.fext_x/y/z at t^n
+//                                        geometry), body forces and global mass damping
+//                                        (-D m v^{n-1/2}) into s.fext_x/y/z at t^n
 //   velocities: (node pass)              a^n and v^{n+1/2} from the internal and external forces
 //   motions:   apply_prescribed_motions  prescribed components of v^{n+1/2} (nodes and rigid bodies)
 //   books:     book_external_work        the work of the loads and of the prescribed motions' reactions
@@ -32,6 +33,7 @@ struct LoadSet {
   // prescribed motions: v^{n+1/2} before the prescription (for the reaction's work)
   std::vector<double> free_velocity;   // 1 per Model::prescribed_motions entry
   std::vector<uint8_t> active;         // 1 when the motion acted this cycle
+  double damping_d = 0;                // this cycle's global damping constant D
   bool has_loads = false, has_motions = false;
 };
 

@@ -250,3 +250,39 @@ TEST(KeywordLoads, ShippedBarPulledTwinsAreTheSameModel) {
   EXPECT_EQ(k.m.pressure_loads.size(), 40u);
   EXPECT_EQ(k.m.body_loads.size(), 1u);
 }
+
+// *DAMPING_GLOBAL: VALDMP or a curve LCID, STX STY STZ (all six factors 0: all 1), refusals,
+// and the keyword converter round trip (the fixed format has no card for it: noted).
+TEST(KeywordLoads, DampingGlobal) {
+  Read c = read_text(block_deck("*DAMPING_GLOBAL\n$#    lcid    valdmp       stx       sty       stz       srx       sry       srz\n"
+                                "         0     250.0\n"));
+  ASSERT_TRUE(c.ok) << c.messages();
+  EXPECT_TRUE(c.m.damping.active);
+  EXPECT_EQ(c.m.damping.curve, -1);
+  EXPECT_EQ(c.m.damping.d, 250.0);
+  EXPECT_EQ(c.m.damping.factor, (std::array<double, 3>{1, 1, 1}));
+  Read k = read_text(block_deck("*DAMPING_GLOBAL\n        12       0.0       1.0       0.5       0.0\n"));
+  ASSERT_TRUE(k.ok) << k.messages();
+  EXPECT_EQ(k.m.damping.curve, 1);  // the second curve (id 12)
+  EXPECT_EQ(k.m.damping.factor, (std::array<double, 3>{1, 0.5, 0}));
+  EXPECT_EQ(k.d.count(2004), 1) << k.messages();  // curve 11 unused; 12 is the damping's
+  std::ostringstream kw;
+  std::vector<std::string> notes;
+  write_keyword_deck(kw, k.m, &notes);
+  Read k2 = read_text(kw.str());
+  ASSERT_TRUE(k2.ok) << k2.messages() << kw.str();
+  EXPECT_EQ(join(model_differences(k.m, k2.m, 50)), "") << kw.str();
+  std::ostringstream fx;
+  notes.clear();
+  write_fixed_deck(fx, k.m, &notes);
+  EXPECT_NE(join(notes).find("*DAMPING_GLOBAL"), std::string::npos);
+  // no damping: a blank card, or VALDMP 0 without a curve
+  Read none = read_text(block_deck("*DAMPING_GLOBAL\n         0       0.0\n"));
+  ASSERT_TRUE(none.ok) << none.messages();
+  EXPECT_FALSE(none.m.damping.active);
+  // refusals: negative constant or factor, undefined curve
+  Read bad = read_text(block_deck("*DAMPING_GLOBAL\n        99    -250.0      -1.0\n"));
+  EXPECT_FALSE(bad.ok);
+  EXPECT_EQ(bad.d.count(1003), 2) << bad.messages();
+  EXPECT_EQ(bad.d.count(1310), 1) << bad.messages();
+}
