@@ -106,6 +106,16 @@ struct Interface {
   int one_pass = 0;   // 0 symmetric (two-pass)
 };
 
+struct Curve {  // load curve: points (t, f), values already rounded to what E10 holds
+  std::vector<double> t, f;
+};
+
+struct Pressure {  // pressure on a face: curve (1-based), nodes n1-n4, pressure scale
+  int curve = 1;
+  std::array<int, 4> nodes{};
+  double scale = 1.0;
+};
+
 struct Deck {
   std::string name;   // file name without .dyn
   std::string title;  // <= 72 chars
@@ -119,6 +129,8 @@ struct Deck {
   std::vector<Wall> walls;
   std::vector<InitVel> vel;
   std::vector<Interface> sis;
+  std::vector<Curve> curves;
+  std::vector<Pressure> pressures;
   double t_end = 0.0, dt_th = 0.0, dt_plot = 0.0, tssf = 0.9;
 };
 
@@ -732,6 +744,88 @@ Deck column_uniaxial_strain(int N) {
   return d;
 }
 
+// A thick cylinder under internal pressure, plane strain (Lame's problem): a quarter of the
+// annulus a <= r <= b (symmetry planes x = 0 and y = 0), nr x nt polar cells and nz layers
+// with every node's z fixed.  The pressure rises smoothly ((1 - cos) / 2, 16 linear pieces)
+// over t_ramp, 12 periods of the breathing mode, then is held: the response stays close to
+// the static one without damping (the fixed format has no damping card).
+Deck thick_cylinder(int N) {
+  Deck d;
+  d.name = "thick_cylinder";
+  d.title = "thick cylinder, internal pressure, plane strain, SI units (m kg s Pa)";
+  const double a = 0.01, b = 0.02, p = 1.0e7, h = 2.5e-3;
+  Material m;
+  m.type = 1;
+  m.rho = 7800.0;
+  m.E = 200.0e9;
+  m.nu = 0.3;
+  m.title = "steel, elastic";
+  d.mats.push_back(m);
+  const int nr = 4 * N, nt = 8 * N, nz = N;
+  const double pi = std::acos(-1.0);
+  const auto round10 = [](double v) { return std::strtod(fmt("%.9e", v).c_str(), nullptr); };
+  const auto node = [&](int i, int j, int k) { return 1 + i + (nr + 1) * (j + (nt + 1) * k); };
+  for (int k = 0; k <= nz; ++k)
+    for (int j = 0; j <= nt; ++j)
+      for (int i = 0; i <= nr; ++i) {
+        const double r = a + (b - a) * i / nr, th = 0.5 * pi * j / nt;
+        const double x = j == nt ? 0.0 : r * std::cos(th), y = j == 0 ? 0.0 : r * std::sin(th);
+        d.X.push_back({round10(x), round10(y), round10(h * k / nz)});
+        d.bc.push_back(j == 0 ? 5 : j == nt ? 6 : 3);  // y+z, z+x, z
+      }
+  for (int k = 0; k < nz; ++k)
+    for (int j = 0; j < nt; ++j)
+      for (int i = 0; i < nr; ++i) {
+        d.hex.push_back({node(i, j, k), node(i + 1, j, k), node(i + 1, j + 1, k), node(i, j + 1, k),
+                         node(i, j, k + 1), node(i + 1, j, k + 1), node(i + 1, j + 1, k + 1),
+                         node(i, j + 1, k + 1)});
+        d.hex_mat.push_back(1);
+      }
+  // inner faces, counter-clockwise seen from the bore: a positive pressure pushes outward
+  for (int k = 0; k < nz; ++k)
+    for (int j = 0; j < nt; ++j)
+      d.pressures.push_back({1, {node(0, j, k), node(0, j, k + 1), node(0, j + 1, k + 1), node(0, j + 1, k)}, p});
+  const double E = m.E, nu = m.nu;
+  const double t_ramp = 200.0e-6, t_hold = 40.0e-6;
+  Curve c;
+  for (int q = 0; q <= 16; ++q) {
+    c.t.push_back(round10(t_ramp * q / 16));
+    c.f.push_back(std::strtod(e10(0.5 * (1.0 - std::cos(pi * q / 16))).c_str(), nullptr));
+  }
+  c.t.push_back(t_ramp + t_hold);
+  c.f.push_back(1.0);
+  d.curves.push_back(c);
+  d.t_end = t_ramp + t_hold;
+  d.dt_th = 1.0e-6;
+  d.dt_plot = d.t_end / 12;
+  d.node_th = {{node(0, 0, 0), node(0, 0, 0)}, {node(nr, 0, 0), node(nr, 0, 0)}};
+  d.solid_th = {{1, 1}};
+  const auto u = [&](double r) {
+    return (1 + nu) * p * a * a / (E * (b * b - a * a)) * ((1 - 2 * nu) * r + b * b / r);
+  };
+  const double rc = a + 0.5 * (b - a) / nr;
+  const double sth = p * a * a * (b * b + rc * rc) / (rc * rc * (b * b - a * a));
+  d.notes = {
+      "Verification (Lame): a long elastic steel cylinder, inner radius 10 mm, outer 20 mm,",
+      "in plane strain (every node's z fixed), internal pressure p = 10 MPa.  Quarter model:",
+      "symmetry planes x = 0 (BC 6) and y = 0 (BC 5).  The pressure (curve 1, times the",
+      "multipliers) rises as (1 - cos(pi t / 200 us)) / 2, sampled at 17 points, then is held",
+      "40 us: the ramp is about 12 periods of the breathing mode (17 us), so the response",
+      "at the end is static to a fraction of a percent, with no damping.",
+      "Lame: u(r) = (1+nu) p a^2 / (E (b^2-a^2)) ((1-2nu) r + b^2/r): u(a) = " +
+          fmt("%.5g", u(a) * 1e6) + " um, u(b) = " + fmt("%.5g", u(b) * 1e6) + " um;",
+      "sigma_theta(r) = p a^2 (b^2+r^2) / (r^2 (b^2-a^2)) = " + fmt("%.5g", sth / 1e6) +
+          " MPa at the centre of the first ring, r = " + fmt("%.5g", rc * 1e3) + " mm.",
+      "Mesh: " + std::to_string(nr) + " radial x " + std::to_string(nt) + " hoop cells, " +
+          std::to_string(nz) + " layer(s) of " + fmt("%.4g", h / nz * 1e3) + " mm: " +
+          std::to_string(d.X.size()) + " nodes, " + std::to_string(d.hex.size()) +
+          " hexahedra, " + std::to_string(d.pressures.size()) + " pressure faces.",
+      "Nodes " + std::to_string(node(0, 0, 0)) + " / " + std::to_string(node(nr, 0, 0)) +
+          ": r = a / r = b on y = 0; element 1: first ring, on y = 0.",
+      "Tests: tests/solve/test_thick_cylinder.cpp."};
+  return d;
+}
+
 // ---------------------------------------------------------------------------------------------
 // Writer
 // ---------------------------------------------------------------------------------------------
@@ -801,7 +895,9 @@ std::string write_deck(const Deck& d) {
   line(out, i10(0) + i5(0) + i5(0) + i5(0) + i5(0) + "e20.0" + i5(0));
   banner(out, "CONTROL CARD #5: loads and conditions");
   {
-    std::string c = i5(0) + i5(0) + i5(0) + i5(0) + i5(static_cast<long long>(d.walls.size())) +
+    std::string c = i5(static_cast<long long>(d.curves.size())) + i5(0) +
+                    i5(static_cast<long long>(d.pressures.size())) + i5(0) +
+                    i5(static_cast<long long>(d.walls.size())) +
                     i5(0) + i5(static_cast<long long>(d.vel.size())) +
                     i5(static_cast<long long>(d.sis.size()));
     for (int i = 0; i < 8; ++i) c += i5(0);
@@ -863,6 +959,23 @@ std::string write_deck(const Deck& d) {
   if (!d.solid_th.empty()) {
     banner(out, "SOLID TIME-HISTORY BLOCKS: first, last");
     for (const auto& b : d.solid_th) line(out, i8(b[0]) + i8(b[1]));
+  }
+  if (!d.curves.empty()) {
+    banner(out, "LOAD CURVES: number, points; time, value");
+    for (std::size_t k = 0; k < d.curves.size(); ++k) {
+      const Curve& c = d.curves[k];
+      line(out, i5(static_cast<long long>(k + 1)) + i5(static_cast<long long>(c.t.size())));
+      for (std::size_t q = 0; q < c.t.size(); ++q) line(out, e10(c.t[q]) + e10(c.f[q]));
+    }
+  }
+  if (!d.pressures.empty()) {
+    banner(out, "PRESSURE CARDS: load curve, n1..n4; multipliers");
+    for (const auto& pr : d.pressures) {
+      std::string c = i5(pr.curve);
+      for (int n : pr.nodes) c += i8(n);
+      line(out, c);
+      line(out, e10(pr.scale) + e10(pr.scale) + e10(pr.scale) + e10(pr.scale));
+    }
   }
   if (!d.walls.empty()) {
     banner(out, "STONEWALLS: nsn, -, tail xyz, head xyz, friction");
@@ -1012,6 +1125,23 @@ std::string write_keyword_deck(const Deck& d) {
         line(out, i10(id) + e10(v.v.x) + e10(v.v.y) + e10(v.v.z));
     }
   }
+  for (std::size_t k = 0; k < d.curves.size(); ++k) {
+    const Curve& c = d.curves[k];
+    line(out, "*DEFINE_CURVE");
+    line(out, "$#    lcid");
+    line(out, i10(static_cast<long long>(k + 1)));
+    line(out, "$#                a1                  o1");
+    for (std::size_t q = 0; q < c.t.size(); ++q) line(out, blank(10) + e10(c.t[q]) + blank(10) + e10(c.f[q]));
+  }
+  if (!d.pressures.empty()) {
+    line(out, "*LOAD_SEGMENT");
+    line(out, "$#    lcid        sf        at        n1        n2        n3        n4");
+    for (const auto& pr : d.pressures) {
+      std::string c = i10(pr.curve) + e10(pr.scale) + e10(0.0);
+      for (int n : pr.nodes) c += i10(n);
+      line(out, c);
+    }
+  }
   line(out, "*END");
   return out;
 }
@@ -1025,7 +1155,8 @@ const std::vector<std::pair<std::string, Builder>>& decks() {
       {"one_hex", one_hex},
       {"bar_wall_elastic", bar_wall_elastic},
       {"two_bars", two_bars},
-      {"column_uniaxial_strain", column_uniaxial_strain}};
+      {"column_uniaxial_strain", column_uniaxial_strain},
+      {"thick_cylinder", thick_cylinder}};
   return all;
 }
 

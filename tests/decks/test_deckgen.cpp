@@ -37,7 +37,7 @@ namespace {
 const std::vector<std::string> kDecks = {"taylor_bar",       "oblique_rod",
                                          "crossed_cylinders", "one_hex",
                                          "bar_wall_elastic",  "two_bars",
-                                         "column_uniaxial_strain"};
+                                         "column_uniaxial_strain", "thick_cylinder"};
 
 std::string generator() { return std::string(IMPACT3D_BINARY_DIR) + "/impact3d_deckgen"; }
 fs::path committed(const std::string& name) {
@@ -116,6 +116,7 @@ struct Deck {
   std::vector<Wall> walls;
   std::vector<std::array<double, 3>> vel;
   std::vector<std::vector<std::array<int, 4>>> slave, master;
+  std::vector<std::array<int, 4>> pressure;  // pressure-card nodes
   std::size_t node_cards = 0, element_cards = 0, extra_cards = 0;
   const Vec& x(int id) const { return X.at(static_cast<std::size_t>(id - 1)); }
 };
@@ -150,6 +151,7 @@ Deck parse(const std::string& text) {
   d.solid_blocks = static_cast<int>(ival(c3, 6, 5));
   EXPECT_EQ(field(c4, 31, 5), "e20.0");
   const int numlc = static_cast<int>(ival(c5, 1, 5));
+  const int npressure = static_cast<int>(ival(c5, 11, 5));
   d.nrw = static_cast<int>(ival(c5, 21, 5));
   d.nvel = static_cast<int>(ival(c5, 31, 5));
   d.nsi = static_cast<int>(ival(c5, 36, 5));
@@ -186,6 +188,13 @@ Deck parse(const std::string& text) {
   for (int lc = 0; lc < numlc; ++lc) {
     const long long npts = ival(next(), 6, 5);
     for (long long p = 0; p < npts; ++p) next();
+  }
+  for (int p = 0; p < npressure; ++p) {  // large format: nodes, then the multipliers card
+    const std::string c = next();
+    std::array<int, 4> q{};
+    for (std::size_t j = 0; j < 4; ++j) q[j] = static_cast<int>(ival(c, 6 + 8 * j, 8));
+    d.pressure.push_back(q);
+    next();
   }
   for (int w = 0; w < d.nrw; ++w) {
     const std::string c = next();
@@ -523,6 +532,28 @@ TEST(DeckGen, ObliqueRodWall) {
   }
   EXPECT_NEAR(zmax - zmin, 0.305, 1e-12);
   for (const auto& v : d.vel) EXPECT_EQ(v[2], -201.7);
+}
+
+// The thick cylinder (plane strain, quarter): z fixed everywhere, x = 0 -> z+x (6), y = 0 ->
+// y+z (5); one pressure face per bore face, its right-hand normal toward the axis (a positive
+// pressure pushes outward), all nodes on r = a.
+TEST(DeckGen, ThickCylinderConstraintsAndPressureFaces) {
+  const Deck d = load("thick_cylinder");
+  for (std::size_t i = 0; i < d.X.size(); ++i) {
+    const int want = d.X[i].x == 0.0 ? 6 : d.X[i].y == 0.0 ? 5 : 3;
+    EXPECT_EQ(d.bc[i], want) << "node " << i + 1;
+  }
+  ASSERT_EQ(d.pressure.size(), 8u);
+  for (const auto& f : d.pressure) {
+    Vec c{0, 0, 0};
+    for (int id : f) {
+      EXPECT_NEAR(std::hypot(d.x(id).x, d.x(id).y), 0.01, 1e-12);
+      c = {c.x + d.x(id).x / 4, c.y + d.x(id).y / 4, c.z + d.x(id).z / 4};
+    }
+    const Vec n = cross(sub(d.x(f[2]), d.x(f[0])), sub(d.x(f[3]), d.x(f[1])));
+    EXPECT_LT(n.x * c.x + n.y * c.y, 0.0);
+    EXPECT_NEAR(n.z, 0.0, 1e-15);
+  }
 }
 
 TEST(DeckGen, SolverReaderAcceptsCommittedDecks) {
