@@ -22,6 +22,11 @@ double shell_rotary_inertia(double corner_mass, double h, double area) {
   return corner_mass * (h * h + area) / 12.0;
 }
 
+double corner_fraction(const std::array<int, 4>& c, int j) {
+  if (c[2] != c[3]) return 0.25;
+  return j < 2 ? 1.0 / 3.0 : 1.0 / 6.0;
+}
+
 namespace {
 
 ShellGroupConstants group_constants(const MaterialData& md, const MaterialConstants& mc) {
@@ -48,11 +53,6 @@ void shell_coordinates(const State& s, int k, double x[4][3]) {
   }
 }
 
-// Corner mass fractions: a quadrilateral 1/4 each; a triangle (n3 == n4) 1/3 per node.
-double corner_fraction(const std::array<int, 4>& c, int j) {
-  if (c[2] != c[3]) return 0.25;
-  return j < 2 ? 1.0 / 3.0 : 1.0 / 6.0;
-}
 
 // The node -> corner map with the shells' corners after the solids' ones at each node.
 void add_shell_corners(State& s) {

@@ -18,6 +18,10 @@ bool has_shell_kernel(int type);
 // rotary inertia of Kennedy, Belytschko and Lin 1986, so that the rotations never set the step).
 double shell_rotary_inertia(double corner_mass, double h, double area);
 
+// Share of a shell's mass at corner j: a quadrilateral 1/4 each; a triangle (n3 == n4) 1/3 per
+// node (corners 3 and 4 are the same node: 1/6 each).
+double corner_fraction(const std::array<int, 4>& c, int j);
+
 // Fills s.shells from the model's shells and adds their masses to s.mass; extends the corner
 // forces (s.cfx...) and the node -> corner map by the shells' 4 corners each.  Call after the
 // solids are initialized (init_elements) and before the initial velocities.

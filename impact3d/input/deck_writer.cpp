@@ -98,9 +98,18 @@ class KeywordWriter {
     os_ << "*KEYWORD\n";
     os_ << "$ written by IMPACT-3D (impact3d --write-keyword); layout: README.md \"Keyword decks\"\n";
     os_ << "*TITLE\n" << m_.title << "\n";
-    os_ << "*CONTROL_TERMINATION\n$#  endtim    endcyc     dtmin\n"
-        << kcard({R(k.end_time), I(k.end_cycle), R(k.min_step_factor)}) << "\n";
-    os_ << "*CONTROL_TIMESTEP\n$#  dtinit    tssfac\n" << kcard({R(k.initial_dt), R(k.tssf)}) << "\n";
+    if (k.end_mass_percent > 0)
+      os_ << "*CONTROL_TERMINATION\n$#  endtim    endcyc     dtmin    endeng    endmas\n"
+          << kcard({R(k.end_time), I(k.end_cycle), R(k.min_step_factor), B(), R(k.end_mass_percent)}) << "\n";
+    else
+      os_ << "*CONTROL_TERMINATION\n$#  endtim    endcyc     dtmin\n"
+          << kcard({R(k.end_time), I(k.end_cycle), R(k.min_step_factor)}) << "\n";
+    if (k.mass_scaling_dt != 0)
+      os_ << "*CONTROL_TIMESTEP\n$#  dtinit    tssfac      isdo    tslimt     dt2ms      lctm     erode     ms1st\n"
+          << kcard({R(k.initial_dt), R(k.tssf), B(), B(), R(k.mass_scaling_dt), B(), B(),
+                    I(k.mass_scaling_first_only ? 1 : 0)}) << "\n";
+    else
+      os_ << "*CONTROL_TIMESTEP\n$#  dtinit    tssfac\n" << kcard({R(k.initial_dt), R(k.tssf)}) << "\n";
     os_ << "*CONTROL_CONTACT\n$#  slsfac\n" << kcard({R(k.penalty_scale)}) << "\n";
     os_ << "*CONTROL_OUTPUT\n$#   npopt    neecho    nrefup    iaccop     opifs    ipnint    ikedit\n"
         << kcard({B(), B(), B(), B(), B(), B(), I(k.report_interval)}) << "\n";
@@ -578,7 +587,13 @@ void write_fixed_deck(std::ostream& os, const Model& m, std::vector<std::string>
   os << "*----- CONTROL CARD #8\n";
   os << L("control card 8").i(1, 5, 0).i(6, 10, 0).r(11, 20, k.min_step_factor).str() << "\n";
   os << "*----- CONTROL CARD #9\n";
-  os << L("control card 9").i(1, 5, 0).i(6, 10, 0).i(11, 15, 0).i(16, 20, 0).str() << "\n";
+  {
+    FixedLine c = L("control card 9");
+    c.i(1, 5, 0).i(6, 10, 0).i(11, 15, 0).i(16, 20, 0);
+    if (k.mass_scaling_dt != 0 || k.end_mass_percent > 0)  // IMPACT-3D choice: cols 46-70
+      c.r(46, 55, k.mass_scaling_dt).i(56, 60, k.mass_scaling_first_only ? 1 : 0).r(61, 70, k.end_mass_percent);
+    os << c.str() << "\n";
+  }
   os << "*----- MATERIALS\n";
   for (std::size_t j = 0; j < m.materials.size(); ++j) {
     const MaterialData& md = m.materials[j];
@@ -779,6 +794,9 @@ std::vector<std::string> model_differences(const Model& a, const Model& b, int m
   D("penalty scale", ka.penalty_scale, kb.penalty_scale);
   N("viscosity flag", ka.viscosity_flag, kb.viscosity_flag);
   D("TSSF", ka.tssf, kb.tssf);
+  D("mass-scaling step DT2MS", ka.mass_scaling_dt, kb.mass_scaling_dt);
+  N("MS1ST", ka.mass_scaling_first_only ? 1 : 0, kb.mass_scaling_first_only ? 1 : 0);
+  D("ENDMAS", ka.end_mass_percent, kb.end_mass_percent);
   D("minimum step factor", ka.min_step_factor, kb.min_step_factor);
   N("materials", long(a.materials.size()), long(b.materials.size()));
   for (std::size_t k = 0; k < std::min(a.materials.size(), b.materials.size()); ++k) {

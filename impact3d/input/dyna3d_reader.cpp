@@ -312,6 +312,13 @@ class Dyna3dReader {
       require_zero(c, 31, 35, "materials with Rayleigh damping", "Rayleigh damping");
       require_zero(c, 36, 40, "materials with initial rotation", "initial rotation");
       require_zero(c, 41, 45, "materials with body force", "body forces");
+      // mass scaling (IMPACT-3D choice: no DYNA3D manual places it; LS-DYNA's DT2MS, MS1ST, ENDMAS)
+      k.mass_scaling_dt = c.e(46, 55, "mass-scaling step DT2MS");
+      const long long ms1st = c.i(56, 60, "mass scaling at the first cycle only MS1ST");
+      if (ms1st != 0 && ms1st != 1) c.error(1006, 56, 60, "MS1ST", "0 (mass scaling every cycle) or 1 (the first cycle only)");
+      k.mass_scaling_first_only = ms1st == 1;
+      k.end_mass_percent = c.e(61, 70, "added-mass limit ENDMAS (percent)");
+      if (k.end_mass_percent < 0) c.error(1003, 61, 70, "ENDMAS", "must not be negative (0 or blank: no limit)");
     }
   }
 

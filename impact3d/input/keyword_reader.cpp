@@ -650,6 +650,8 @@ class KeywordReader {
   int end_cycle_ = 0;
   Ref end_ref_;
   double dtinit_ = 0, tssfac_ = 0.9;
+  double dt2ms_ = 0, endmas_ = 0;
+  bool ms1st_ = false;
   double slsfac_ = 0.1;
   int ikedit_ = 100;
   double d3plot_dt_ = 0, d3thdt_dt_ = -1, nodout_dt_ = -1, elout_dt_ = -1, glstat_dt_ = -1, ncforc_dt_ = 0;
@@ -1871,7 +1873,9 @@ bool is_ascii_database(const std::string& n) {
     dtmin_ = c.r(2, "DTMIN");
     if (dtmin_ < 0 || dtmin_ >= 1) c.error(1003, 2, "DTMIN", "must be in [0, 1)");
     if (c.r(3, "ENDENG") != 0) c.error(1102, 3, "ENDENG", "termination by energy change");
-    c.r(4, "ENDMAS");
+    endmas_ = c.r(4, "ENDMAS");
+    if (endmas_ < 0) c.error(1003, 4, "ENDMAS", "must not be negative (0 or blank: no limit)");
+    if (endmas_ >= 1e8) endmas_ = 0;  // LS-DYNA's default 1e8: no limit
     c.i(5, "NOSOL");
   }
 
@@ -1885,10 +1889,12 @@ bool is_ascii_database(const std::string& n) {
     if (!(tssfac_ > 0 && tssfac_ <= 1)) c.error(1215, 1, "TSSFAC");
     c.i(2, "ISDO");
     if (c.r(3, "TSLIMT") != 0) c.error(2006, 3, "TSLIMT", "shell time-step limit");
-    if (c.r(4, "DT2MS") != 0) c.error(1102, 4, "DT2MS", "mass scaling");
+    dt2ms_ = c.r(4, "DT2MS");
     if (c.i(5, "LCTM") != 0) c.error(1102, 5, "LCTM", "time-step limit from a load curve");
     c.i(6, "ERODE");
-    c.i(7, "MS1ST");
+    const long long ms1st = c.i(7, "MS1ST");
+    if (ms1st != 0 && ms1st != 1) c.error(1006, 7, "MS1ST", "0 (mass scaling every cycle) or 1 (the first cycle only)");
+    ms1st_ = ms1st == 1;
   }
 
   // *INITIAL_VELOCITY: card 1 NSID NSIDEX BOXID IRIGID ICID, card 2 VX VY VZ (VXR-VZR), and
@@ -3234,6 +3240,9 @@ bool is_ascii_database(const std::string& n) {
     k.min_step_factor = dtmin_;
     k.initial_dt = dtinit_;
     k.tssf = tssfac_;
+    k.mass_scaling_dt = dt2ms_;
+    k.mass_scaling_first_only = ms1st_;
+    k.end_mass_percent = endmas_;
     k.penalty_scale = slsfac_;
     k.report_interval = ikedit_;
     k.plot_interval = d3plot_dt_ > 0 ? d3plot_dt_ : end_time_ / 20;

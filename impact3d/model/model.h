@@ -35,6 +35,12 @@ struct ControlData {
   double penalty_scale = 0.10;
   int viscosity_flag = 0;
   double tssf = 0.90;
+  // mass scaling (keyword *CONTROL_TIMESTEP DT2MS, MS1ST; fixed format control card 9):
+  // elements whose step is below |mass_scaling_dt| get mass so that it equals |mass_scaling_dt|;
+  // > 0 also takes mass from elements above it (at the first cycle); 0 = none
+  double mass_scaling_dt = 0;
+  bool mass_scaling_first_only = false;  // MS1ST = 1: only at the first cycle
+  double end_mass_percent = 0;           // ENDMAS: stop when the added mass reaches this % (0: never)
   // card 8
   double min_step_factor = 0;  // error termination when dt < factor * dt0 (0 = no check)
 };

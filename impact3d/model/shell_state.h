@@ -37,6 +37,7 @@ struct ShellState {
   std::vector<std::uint8_t> yielded;          // 1 per point (plastic-kinematic; else empty)
   std::vector<double> hgq;                    // 5 per shell: hourglass resultants (stiffness forms)
   std::vector<double> dt_e;                   // element step
+  std::vector<double> ms_factor;              // mass-scaling factor (empty without mass scaling)
   std::vector<double> de_ie, de_hg;           // this pass's energy increments per shell
   std::vector<double> energy;                 // accumulated internal energy per shell (plot database)
   std::vector<std::uint8_t> bad;              // 1: non-positive area in this pass

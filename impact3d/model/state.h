@@ -99,6 +99,12 @@ struct State {
   std::vector<double> q;               // bulk viscosity
   std::vector<double> cfx, cfy, cfz;   // 8 per slot: corner internal forces (corner_index)
   std::vector<double> dt_e;            // element time step
+  // mass scaling (*CONTROL_TIMESTEP DT2MS; solve/mass_scaling.h): each solid's mass factor
+  // (its mass is factor x rho0 V0 on its nodes; empty without mass scaling), the mass added
+  // so far (all elements, and per material) and the model's mass before any was added
+  std::vector<double> ms_factor;
+  double added_mass = 0, physical_mass = 0;
+  std::vector<double> mat_added_mass;
 
   std::vector<MaterialConstants> mats;
   std::vector<RigidBody> rigid;
@@ -131,6 +137,7 @@ struct State {
     v(vx_old); v(vy_old); v(vz_old); v(fx); v(fy); v(fz); v(fext_x); v(fext_y); v(fext_z);
     v(vol); v(sig); v(back); v(eps_p); v(hist); v(yielded); v(failed); v(hgs); v(q); v(cfx); v(cfy); v(cfz);
     v(dt_e); v(mat_internal); v(mat_hourglass);
+    v(mass); v(shells.inertia); v(ms_factor); v(shells.ms_factor); v(added_mass); v(mat_added_mass);
     v(time); v(cycle); v(dt_half); v(dt_next); v(dt_elem); v(dt0);
     v(kinetic); v(internal); v(hourglass); v(bulk_viscous); v(wall_work); v(contact);
     v(external_work); v(initial_total); v(wall_force); v(wall_disp); v(wall_vel);

@@ -11,6 +11,7 @@
 
 #include "impact3d/material/material.h"
 #include "impact3d/output/plot_output.h"
+#include "impact3d/solve/mass_scaling.h"
 #include "version.h"
 
 namespace impact3d {
@@ -137,6 +138,11 @@ void HistoryOutput::write(const Model& m, const State& s,
                  s.cycle, s.dt_elem >= 0 ? m.hex_id(s.dt_elem) : 0, s.time, s.dt_next, s.kinetic, s.internal, s.hourglass,
                  s.bulk_viscous, s.contact, s.wall_work, s.external_work, s.total_energy(),
                  s.energy_ratio(), ps_.velocity[0], ps_.velocity[1], ps_.velocity[2]);
+    if (m.control.mass_scaling_dt != 0)  // LS-DYNA's two mass-scaling lines
+      std::fprintf(f,
+                   " added mass.....................  %12.5E\n"
+                   " percentage increase............  %12.5E\n",
+                   s.added_mass, added_mass_percent(s));
   (void)cpu_per_zone_ns;  // kept out of the file: the tables are bit-reproducible
   }
   if (FILE* f = files_[kMatsum]) {
@@ -147,6 +153,7 @@ void HistoryOutput::write(const Model& m, const State& s,
                    "               x-mom=  %12.4E  y-mom=  %12.4E  z-mom=  %12.4E\n",
                    m.materials[k].number, ie[k], ke[k], hg[k], mass[k], mass[k] * vel[3 * k], mass[k] * vel[3 * k + 1],
                    mass[k] * vel[3 * k + 2]);
+      if (!s.mat_added_mass.empty()) std::fprintf(f, "               added mass=  %12.4E\n", s.mat_added_mass[k]);
     }
   }
   if (FILE* f = files_[kRwforc]) {

@@ -167,8 +167,15 @@ void write_model_summary(std::ostream& os, const Model& m) {
      << "     restart dump every ................... " << k.restart_dump_cycles << " cycles (0 = none)\n"
      << "     initial time step .................... "
      << (k.initial_dt > 0 ? fmt("%.6e", k.initial_dt) : std::string("computed")) << "\n"
-     << "     time-step scale factor ............... " << fmt("%.4f", k.tssf) << "\n"
-     << "     sliding-interface penalty scale ...... " << fmt("%.4f", k.penalty_scale) << "\n"
+     << "     time-step scale factor ............... " << fmt("%.4f", k.tssf) << "\n";
+  if (k.mass_scaling_dt != 0)
+    os << "     mass scaling DT2MS ................... " << fmt("%.6e", k.mass_scaling_dt)
+       << (k.mass_scaling_dt > 0 ? " (every element's step set to it at the first cycle, then held)"
+                                 : " (elements below |DT2MS| get mass)")
+       << (k.mass_scaling_first_only ? ", first cycle only (MS1ST)" : "") << "\n";
+  if (k.end_mass_percent > 0)
+    os << "     added-mass limit ENDMAS .............. " << fmt("%.4g", k.end_mass_percent) << " %\n";
+  os << "     sliding-interface penalty scale ...... " << fmt("%.4f", k.penalty_scale) << "\n"
      << "     run-log interval ..................... " << k.report_interval << " cycles\n"
      << "     minimum step factor .................. " << fmt("%.4g", k.min_step_factor) << "\n\n"
      << " m a t e r i a l s\n\n";

@@ -9,6 +9,7 @@
 #include "impact3d/init/initialize.h"
 #include "impact3d/solve/element_processing.h"
 #include "impact3d/solve/loads.h"
+#include "impact3d/solve/mass_scaling.h"
 #include "impact3d/solve/node_processing.h"
 #include "impact3d/solve/rigid_body.h"
 #include "impact3d/solve/shell_processing.h"
@@ -64,10 +65,14 @@ StepStatus Engine::process_elements() {
     error_elem_ = r.non_finite_elem;
     return StepStatus::non_finite;
   }
-  double dt = r.dt_min;
+  // mass scaling: elements below the target step get mass (the step is then the scaled one)
+  const ScaledStep sc = scale_masses_for_time_step(m_, s_, r.dt_min, r.dt_elem, s_.cycle == 0 && s_.dt_half == 0);
+  double dt = sc.dt_min;
   if (!std::isfinite(dt)) dt = m_.control.end_time / 1000;  // only rigid bodies
   s_.dt_next = m_.control.tssf * dt;
-  s_.dt_elem = r.dt_elem;
+  s_.dt_elem = sc.dt_elem;
+  if (m_.control.end_mass_percent > 0 && added_mass_percent(s_) >= m_.control.end_mass_percent)
+    added_mass_limit_reached_ = true;
   return StepStatus::ok;
 }
 
@@ -78,9 +83,16 @@ StepStatus Engine::initialize() {
   fixed_walls_ = fixed_walls_for_node_pass(m_);
   if (fixed_walls_.size() > kMaxFusedWalls) fixed_walls_.clear();
   s_.dt_half = 0;
+  init_mass_scaling(m_, s_);
   calc_kinetic_energy();
+  const double work0 = s_.external_work;
   StepStatus st = process_elements();
   if (st != StepStatus::ok) return st;
+  if (m_.control.mass_scaling_dt != 0) {
+    // mass added before the first cycle is part of the initial state, not external work
+    s_.external_work = work0;
+    calc_kinetic_energy();
+  }
   if (m_.control.initial_dt > 0) s_.dt_next = std::min(s_.dt_next, m_.control.initial_dt);
   s_.dt0 = s_.dt_next;
   s_.initial_total = s_.total_energy();

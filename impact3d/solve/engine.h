@@ -41,8 +41,10 @@ class Engine {
   // at the termination time, or past the termination cycle when the deck sets one (ENDCYC)
   bool finished() const {
     return s_.time >= m_.control.end_time * (1 - 1e-12) ||
-           (m_.control.end_cycle > 0 && s_.cycle >= m_.control.end_cycle);
+           (m_.control.end_cycle > 0 && s_.cycle >= m_.control.end_cycle) || added_mass_limit_reached_;
   }
+  // Whether the run ends because the added mass reached ENDMAS (mass scaling).
+  bool added_mass_limit_reached() const { return added_mass_limit_reached_; }
   // Element (0-based) behind the last error, and a description.
   int error_element() const { return error_elem_; }
 
@@ -63,6 +65,7 @@ class Engine {
   State s_;
   SlidingInterfaces contact_;
   int error_elem_ = -1;
+  bool added_mass_limit_reached_ = false;
   PhaseTimes times_;
   LoadSet loads_;
   std::vector<FixedWall> fixed_walls_;  // walls the node pass applies itself (see NodePass)

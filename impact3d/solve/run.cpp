@@ -21,6 +21,7 @@
 #include "impact3d/output/plot_output.h"
 #include "impact3d/output/restart_dump.h"
 #include "impact3d/solve/engine.h"
+#include "impact3d/solve/mass_scaling.h"
 
 namespace impact3d {
 
@@ -102,6 +103,20 @@ std::string energy_report(const State& s) {
   return buf;
 }
 
+// Mass scaling: the target step, the mass added so far and its share of the model's mass.
+std::string mass_scaling_report(const ControlData& k, const State& s) {
+  char buf[400];
+  std::snprintf(buf, sizeof buf,
+                " mass scaling (DT2MS %.5e%s): element steps held at >= %.5e, run step >= %.5e\n"
+                "     added mass ........................... %14.6e\n"
+                "     model mass without it ................ %14.6e\n"
+                "     percentage increase .................. %14.6f",
+                k.mass_scaling_dt, k.mass_scaling_first_only ? ", first cycle only" : "",
+                std::fabs(k.mass_scaling_dt), k.tssf * std::fabs(k.mass_scaling_dt), s.added_mass, s.physical_mass,
+                added_mass_percent(s));
+  return buf;
+}
+
 std::string parent_or_dot(const std::string& path) {
   std::string p = std::filesystem::path(path).parent_path().string();
   return p.empty() ? "." : p;
@@ -157,6 +172,7 @@ int run_simulation(const Model& model, const RunOptions& opt, std::ostream& prin
       std::snprintf(buf, sizeof buf, "\n threads: %d\n first time step %.5e (element %d)\n",
                     omp_get_max_threads(), s.dt_next, s.dt_elem >= 0 ? model.hex_id(s.dt_elem) : 0);
     log.line(buf);
+    if (model.control.mass_scaling_dt != 0) log.line(mass_scaling_report(model.control, s));
     log.line("    cycle         time          dt  element  e-ratio   elapsed  remaining(s)");
   }
 
@@ -317,6 +333,12 @@ int run_simulation(const Model& model, const RunOptions& opt, std::ostream& prin
     log.line(buf);
   }
   log.line("\n energies at the end (time " + std::to_string(s.time) + "):\n" + energy_report(s));
+  if (model.control.mass_scaling_dt != 0) log.line(mass_scaling_report(model.control, s));
+  if (engine.added_mass_limit_reached()) {
+    char buf[200];
+    std::snprintf(buf, sizeof buf, " the added mass reached ENDMAS (%.4g %%): the run ends here", model.control.end_mass_percent);
+    log.line(buf);
+  }
   {
     // summary of the final shape: extents and the largest plastic strain of the live solids
     // (failed solids, and nodes no live solid holds, are left out: as postimpact summary)
