@@ -133,7 +133,29 @@ std::array<double, 3> rigid_omega(const std::array<double, 9>& I, const std::arr
   return {w(0), w(1), w(2)};
 }
 
-void init_rigid_bodies(State& s) {
+// The same with constrained rotations (bits of fix): those components of omega are zero, the
+// free ones solve I_ff omega_f = L_f; the angular momentum becomes I omega (ang_mom).
+std::array<double, 3> constrained_rigid_omega(const std::array<double, 9>& I, const std::array<double, 3>& L,
+                                              unsigned fix, std::array<double, 3>& ang_mom) {
+  std::array<double, 9> Iff{};  // the free block, the constrained rows and columns zeroed
+  std::array<double, 3> Lf{};
+  for (int a = 0; a < 3; ++a) {
+    if (fix & (1u << a)) continue;
+    Lf[std::size_t(a)] = L[std::size_t(a)];
+    for (int b = 0; b < 3; ++b)
+      if (!(fix & (1u << b))) Iff[std::size_t(3 * a + b)] = I[std::size_t(3 * a + b)];
+  }
+  std::array<double, 3> w = rigid_omega(Iff, Lf);
+  for (int a = 0; a < 3; ++a)
+    if (fix & (1u << a)) w[std::size_t(a)] = 0;
+  for (int a = 0; a < 3; ++a) {
+    ang_mom[std::size_t(a)] = 0;
+    for (int b = 0; b < 3; ++b) ang_mom[std::size_t(a)] += I[std::size_t(3 * a + b)] * w[std::size_t(b)];
+  }
+  return w;
+}
+
+void init_rigid_bodies(const Model& m, State& s) {
   for (std::size_t k = 0; k < s.mats.size(); ++k) {
     if (!material_type(s.mats[k].type).rigid) continue;
     RigidBody rb;
@@ -183,10 +205,14 @@ void init_rigid_bodies(State& s) {
     // given nodal velocities (LS-DYNA's rule; the input check warns, 2014, when they were not a
     // rigid motion), so that the first energies booked are the body's.
     rb.omega = rigid_omega(I, L);
-    unsigned fixed = 0;  // as in the run: a fixed node fixes that translation of the body
+    rigid_body_constraints(m.materials[k], rb.fix_translation, rb.fix_rotation);
+    // as in the run: a fixed node fixes that translation of the body; the material's
+    // constraints (CMO/CON1/CON2) its translations and rotations
+    unsigned fixed = rb.fix_translation;
     for (int n : rb.nodes) fixed |= s.fix[std::size_t(n)];
     for (int a = 0; a < 3; ++a)
       if (fixed & (1u << a)) rb.vcom[std::size_t(a)] = 0;
+    if (rb.fix_rotation) rb.omega = constrained_rigid_omega(I, L, rb.fix_rotation, rb.ang_mom);
     for (std::size_t j = 0; j < rb.nodes.size(); ++j) {
       const double* r = &rb.r0[3 * j];
       const std::size_t n = std::size_t(rb.nodes[j]);
@@ -209,7 +235,7 @@ void initialize_state(const Model& m, State& s) {
   init_shells(m, s);
   init_velocities(m, s);
   init_shell_rotational_velocities(m, s);
-  init_rigid_bodies(s);
+  init_rigid_bodies(m, s);
   // net nodal forces: kept only for rigid bodies (their momentum update reads them)
   for (auto* v : {&s.fx, &s.fy, &s.fz}) v->assign(s.rigid.empty() ? 0 : std::size_t(s.nn), 0.0);
   s.wall_force.assign(m.walls.size(), {0, 0, 0});

@@ -421,6 +421,9 @@ class Dyna3dReader {
       std::vector<Card> cards;
       for (int k = 3; k <= 8; ++k) cards.push_back(next(name + " card " + std::to_string(k)));
       if (mt) read_material_params(md, *mt, cards);
+      // rigid-body constraints in a local system need *DEFINE_COORDINATE_SYSTEM (keyword decks)
+      if (md.type == 20 && md.par.size() > 3 && md.par[3] == -1)
+        cards[2].error(1102, 1, 10, "constraint option CMO", "constraints in a local system (CMO = -1: keyword decks, *DEFINE_COORDINATE_SYSTEM)");
       if (number_ok) {
         first_line[md.number - 1] = md.line;
         m_.materials[md.number - 1] = md;

@@ -3058,6 +3058,7 @@ bool is_ascii_database(const std::string& n) {
           if (k < curves_.size()) param_value(md, q) = double(k + 1);
           else err(1310, r.refs[i], "*MAT material " + std::to_string(p.mid), q.key, "*DEFINE_CURVE " + std::to_string(id) + " is not defined");
         }
+        resolve_rigid_constraints(md, r, p.mid);
       }
       if (p.eosid != 0) err(1102, p.eos_ref, card, "EOSID", "equations of state");
       // hourglass and bulk viscosity
@@ -3183,6 +3184,7 @@ bool is_ascii_database(const std::string& n) {
         continue;
       }
       if (md.fail_strain != 0) err(1102, r.ref, "*MAT_PLASTIC_KINEMATIC " + std::to_string(p.mid), "FS", "failure (element deletion) of shells");
+      resolve_rigid_constraints(md, r, p.mid);
       md.shell = true;
       md.shell_section.nip = sit->second.nip;
       md.shell_section.shrf = sit->second.shrf;
@@ -3501,6 +3503,47 @@ bool is_ascii_database(const std::string& n) {
       return false;
     }
     return true;
+  }
+
+  // *MAT_RIGID CMO = -1: CON1 names a local system, CON2 six digits (x y z translations, x y z
+  // rotations in it).  As for *BOUNDARY_SPC: a system whose axes are the global ones (any order
+  // and sign) becomes the global codes (CMO = 1, CON1, CON2 0-7); skew axes are not supported
+  // unless all or none of the translations (and of the rotations) are fixed.
+  void resolve_rigid_constraints(MaterialData& md, const RMat& r, int mid) {
+    if (md.type != 20 || md.par.size() < 6 || md.par[3] != -1) return;
+    const MaterialParam* con1 = find_param(*r.type, "CON1");
+    const Ref& ref = r.refs[std::size_t(con1 - r.type->params.data())];
+    const std::string card = "*MAT_RIGID " + std::to_string(mid);
+    const int cid = int(md.par[4]);
+    const CoordinateSystem* cs = coords_.system(cid);
+    if (!cs) {
+      err(1310, ref, card, "CON1", "coordinate system " + std::to_string(cid) + " is not defined by *DEFINE_COORDINATE_SYSTEM, _NODES or _VECTOR");
+      return;
+    }
+    long long digits = (long long)md.par[5];
+    unsigned local_t = 0, local_r = 0;
+    for (int i = 5; i >= 0; --i, digits /= 10)
+      if (digits % 10) (i < 3 ? local_t : local_r) |= 1u << (i % 3);
+    std::array<int, 3> axis{{0, 1, 2}}, sign{{1, 1, 1}};
+    const bool aligned = cs->axis_aligned(axis, sign);
+    auto global_bits = [&](unsigned local) -> unsigned {
+      if (local == 0 || local == 7) return local;
+      unsigned g = 0;
+      for (int i = 0; i < 3; ++i)
+        if (local & (1u << i)) g |= 1u << axis[std::size_t(i)];
+      return g;
+    };
+    if (!aligned && ((local_t != 0 && local_t != 7) || (local_r != 0 && local_r != 7))) {
+      err(1102, ref, card, "CON1", "rigid-body constraints along skew local axes (the axes of system " + std::to_string(cid) + " are not the global ones)");
+      return;
+    }
+    auto code = [](unsigned b) {  // bits -> the 0-7 code (1 x, 2 y, 3 z, 4 x+y, 5 y+z, 6 z+x, 7 all)
+      static const int c[8] = {0, 1, 2, 4, 3, 6, 5, 7};
+      return c[b & 7u];
+    };
+    md.par[3] = 1;
+    md.par[4] = code(global_bits(local_t));
+    md.par[5] = code(global_bits(local_r));
   }
 
   // The fixed directions (bits x=1, y=2, z=4) of a *BOUNDARY_SPC in the global system: a local

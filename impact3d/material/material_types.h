@@ -126,6 +126,10 @@ inline MaterialParam poisson_param(int fcard, int fcol) {
 // The parameter with this keyword name, or nullptr.
 const MaterialParam* find_param(const MaterialType& t, std::string_view key);
 
+// *MAT_RIGID (type 20) constraints CMO/CON1/CON2 as bits (x=1, y=2, z=4, global axes) of the
+// body's fixed translations and rotations (the keyword reader has turned CMO = -1 into CMO = 1).
+void rigid_body_constraints(const MaterialData& md, unsigned& fix_translation, unsigned& fix_rotation);
+
 // The table: every supported material type, in increasing number.
 std::span<const MaterialType* const> material_types();
 // The type with this DYNA3D number, or nullptr (refused when the deck is read).

@@ -24,6 +24,9 @@ struct RigidBody {
   std::array<double, 3> omega{};            // angular velocity
   std::array<double, 3> ang_mom{};          // angular momentum
   std::vector<double> r0;                   // 3 per node: initial position relative to the COM
+  // *MAT_RIGID CMO/CON1/CON2: constrained translations and rotations of the body (bits x=1,
+  // y=2, z=4, global axes): those components of vcom and omega stay zero
+  unsigned fix_translation = 0, fix_rotation = 0;
 };
 
 struct ElementGroup {

@@ -34,6 +34,35 @@ Vec3 calc_omega(const RigidBody& rb) {
   return es.eigenvectors() * inv.asDiagonal() * es.eigenvectors().transpose() * L;
 }
 
+// With constrained rotations (bits of rb.fix_rotation): those components of omega are zero and
+// the free ones carry the free components of L, I_ff omega_f = L_f; the constraint's moment
+// takes the rest, so L becomes I omega (stored back in rb.ang_mom).
+Vec3 constrained_omega(RigidBody& rb) {
+  const Mat3 R = to_mat(rb.rot);
+  const Mat3 I = R * to_mat(rb.inertia0) * R.transpose();
+  // the free block: constrained rows and columns zeroed (their eigenvalues are then 0 and the
+  // pseudo-inverse, as in calc_omega, leaves those components out)
+  Mat3 Iff = I;
+  Vec3 Lf(rb.ang_mom[0], rb.ang_mom[1], rb.ang_mom[2]);
+  for (int a = 0; a < 3; ++a)
+    if (rb.fix_rotation & (1u << a)) {
+      Iff.row(a).setZero();
+      Iff.col(a).setZero();
+      Lf(a) = 0;
+    }
+  Eigen::SelfAdjointEigenSolver<Mat3> es(Iff);
+  const Vec3 lam = es.eigenvalues();
+  const double tol = 1e-12 * std::max(lam.maxCoeff(), 0.0);
+  Vec3 inv;
+  for (int k = 0; k < 3; ++k) inv(k) = lam(k) > tol ? 1.0 / lam(k) : 0.0;
+  Vec3 w = es.eigenvectors() * inv.asDiagonal() * es.eigenvectors().transpose() * Lf;
+  for (int a = 0; a < 3; ++a)
+    if (rb.fix_rotation & (1u << a)) w(a) = 0;
+  const Vec3 L = I * w;
+  for (int a = 0; a < 3; ++a) rb.ang_mom[std::size_t(a)] = L(a);
+  return w;
+}
+
 Mat3 rotation_of(const Vec3& phi) {
   double a = phi.norm();
   if (a == 0) return Mat3::Identity();
@@ -55,12 +84,13 @@ void update_rigid_body_velocities(State& s, double dt_n, double dt_next) {
       M += r.cross(f);
       fixed |= s.fix[k];
     }
+    fixed |= rb.fix_translation;  // the material's constraints (CMO/CON1/CON2)
     for (int a = 0; a < 3; ++a) {
       rb.vcom[std::size_t(a)] += dt_n * F(a) / rb.mass;
       if (fixed & (1u << a)) rb.vcom[std::size_t(a)] = 0;  // a fixed node fixes that translation
       rb.ang_mom[std::size_t(a)] += dt_n * M(a);
     }
-    Vec3 w = calc_omega(rb);
+    Vec3 w = rb.fix_rotation ? constrained_omega(rb) : calc_omega(rb);
     for (int a = 0; a < 3; ++a) rb.omega[std::size_t(a)] = w(a);
     set_rigid_body_node_velocities(s, rb);
   }
