@@ -218,6 +218,13 @@ class KeywordWriter {
       }
       if (const MaterialType* t = find_material_type(md.type)) {
         write_material(*t, md, id);
+        if (md.erosion.active) {
+          const ErosionData& e = md.erosion;
+          os_ << "*MAT_ADD_EROSION\n$#     mid      excl    mxpres     mneps    effeps    voleps    numfip       ncs\n"
+              << kcard({I(id), R(e.excl), R(e.mxpres), B(), B(), R(e.voleps), B(), I(e.ncs)}) << "\n"
+              << "$#  mnpres     sigp1     sigvm     mxeps     epssh     sigth   impulse    failtm\n"
+              << kcard({R(e.mnpres), R(e.sigp1), R(e.sigvm), B(), B(), B(), B(), R(e.failtm)}) << "\n";
+        }
       } else {
         note("material " + std::to_string(id) + ": type " + std::to_string(md.type) + " cannot be written");
       }
@@ -735,6 +742,14 @@ int write_converted_decks(const Model& m, const std::string& keyword_path, const
           << m.num_shells() << " shells (the fixed format has no shell cards in IMPACT-3D yet; write a keyword deck)\n";
       return exit_code::input_error;
     }
+    if (k == 1) {  // *MAT_ADD_EROSION has no fixed-format card
+      for (std::size_t j = 0; j < m.materials.size(); ++j)
+        if (m.materials[j].erosion.active) {
+          log << " error: the fixed-format deck " << path << " cannot hold this model (not written): material "
+              << j + 1 << " has *MAT_ADD_EROSION criteria (no fixed-format card; write a keyword deck)\n";
+          return exit_code::input_error;
+        }
+    }
     std::vector<std::string> notes;
     if (!write_deck_file(path, m, k == 0, diag, &notes)) {
       diag.print(log);
@@ -811,6 +826,15 @@ std::vector<std::string> model_differences(const Model& a, const Model& b, int m
     D(w + "Q1", x.q1, y.q1);
     D(w + "Q2", x.q2, y.q2);
     if (x.title != y.title) diff(w + "title", x.title, y.title);
+    N(w + "erosion", x.erosion.active ? 1 : 0, y.erosion.active ? 1 : 0);
+    D(w + "erosion EXCL", x.erosion.excl, y.erosion.excl);
+    D(w + "erosion MXPRES", x.erosion.mxpres, y.erosion.mxpres);
+    D(w + "erosion MNPRES", x.erosion.mnpres, y.erosion.mnpres);
+    D(w + "erosion SIGP1", x.erosion.sigp1, y.erosion.sigp1);
+    D(w + "erosion SIGVM", x.erosion.sigvm, y.erosion.sigvm);
+    D(w + "erosion VOLEPS", x.erosion.voleps, y.erosion.voleps);
+    D(w + "erosion FAILTM", x.erosion.failtm, y.erosion.failtm);
+    N(w + "erosion NCS", x.erosion.ncs, y.erosion.ncs);
     D(w + "E", x.E, y.E);
     D(w + "nu", x.nu, y.nu);
     D(w + "sigma_y", x.sigma_y, y.sigma_y);

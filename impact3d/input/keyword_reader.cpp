@@ -597,6 +597,7 @@ class KeywordReader {
   std::vector<std::vector<int>> part_shells_;  // per part: its shells (indices into Model::shell_nodes)
   std::vector<std::pair<int, int>> node_rc_;  // *NODE RC: node id, rotation bits
   std::map<int, RMat> mats_;
+  std::map<int, std::pair<ErosionData, Ref>> erosion_;  // *MAT_ADD_EROSION by MID
   std::map<int, RHourglass> hourglasses_;
   std::map<int, RIdList> node_sets_, part_sets_;
   ParamTable params_;                    // *PARAMETER values
@@ -1206,7 +1207,7 @@ class KeywordReader {
         "SET_SOLID_GENERAL", "SET_SHELL", "SET_SHELL_LIST", "SET_SHELL_GENERATE", "SET_SHELL_LIST_GENERATE",
         "SET_SHELL_GENERATE_INCREMENT", "SET_SHELL_ADD", "SET_SHELL_GENERAL", "SET_SEGMENT_ADD", "SET_SEGMENT_GENERAL", "DEFINE_BOX",
         "DEFINE_COORDINATE_SYSTEM", "DEFINE_COORDINATE_NODES", "DEFINE_COORDINATE_VECTOR", "DEFINE_VECTOR",
-        "DEFINE_VECTOR_NODES", "DEFINE_TRANSFORMATION"};
+        "DEFINE_VECTOR_NODES", "DEFINE_TRANSFORMATION", "MAT_ADD_EROSION"};
     static const std::set<std::string> with_id = {
         "RIGIDWALL_PLANAR", "RIGIDWALL_PLANAR_MOVING", "CONTACT_SURFACE_TO_SURFACE", "CONTACT_AUTOMATIC_SURFACE_TO_SURFACE",
         "CONTACT_NODES_TO_SURFACE", "BOUNDARY_SPC_NODE", "BOUNDARY_SPC_SET",
@@ -1326,6 +1327,8 @@ bool is_ascii_database(const std::string& n) {
       } else if (n == "DAMPING_GLOBAL") {
         once(b);
         parse_damping_global(b);
+      } else if (n == "MAT_ADD_EROSION") {
+        parse_mat_add_erosion(b);
       } else if (n == "DATABASE_BINARY_D3THDT") {
         // the binary time-history database's interval: IMPACT-3D has one time-history interval
         // (d3thdt and the ASCII tables), and this DT takes precedence over the ASCII ones
@@ -2704,6 +2707,50 @@ bool is_ascii_database(const std::string& n) {
     loads_.push_back(l);
   }
 
+  // *MAT_ADD_EROSION: card 1 MID EXCL MXPRES MNEPS EFFEPS VOLEPS NUMFIP NCS, card 2 MNPRES SIGP1
+  // SIGVM MXEPS EPSSH SIGTH IMPULSE FAILTM; the strain criteria, Tuler-Butcher and the damage
+  // cards (3 on) are not supported.  A value equal to EXCL switches its criterion off.
+  void parse_mat_add_erosion(const Block& b) {
+    std::size_t start = skip_option_card(b);
+    if (start >= b.data.size()) { missing_card(b, "card 1"); return; }
+    KCard c = card(b, start, "card 1", W(b, 8));
+    const int mid = xid(int(c.i(0, "MID")), b, &IncludeTransform::idmoff);
+    c.set_card(b.keyword + " material " + std::to_string(mid));
+    ErosionData e;
+    e.active = true;
+    e.line = b.data[start].line->number;
+    e.excl = c.r(1, "EXCL");
+    auto unsupported = [&](KCard& k, int f, const char* name, const char* what) {
+      const double v = k.r(f, name);
+      if (!k.blank(f) && v != e.excl && v != 0) k.error(1102, f, name, what);
+    };
+    e.mxpres = c.r(2, "MXPRES");
+    unsupported(c, 3, "MNEPS", "erosion by the smallest principal strain");
+    unsupported(c, 4, "EFFEPS", "erosion by the effective strain");
+    e.voleps = c.r(5, "VOLEPS");
+    c.r(6, "NUMFIP");  // one integration point per solid here
+    const long long ncs = c.blank(7) ? 1 : c.i(7, "NCS");
+    if (ncs < 0 || ncs > 6) c.error(1003, 7, "NCS", "the number of criteria that must hold at once, 1-6 (0: 1)");
+    e.ncs = ncs <= 0 ? 1 : int(ncs);
+    if (start + 1 < b.data.size()) {
+      KCard d = card(b, start + 1, "material " + std::to_string(mid) + " card 2", W(b, 8));
+      e.mnpres = d.r(0, "MNPRES");
+      e.sigp1 = d.r(1, "SIGP1");
+      e.sigvm = d.r(2, "SIGVM");
+      unsupported(d, 3, "MXEPS", "erosion by the largest principal strain");
+      unsupported(d, 4, "EPSSH", "erosion by the shear strain");
+      unsupported(d, 5, "SIGTH", "Tuler-Butcher erosion");
+      unsupported(d, 6, "IMPULSE", "Tuler-Butcher erosion");
+      e.failtm = d.r(7, "FAILTM");
+    }
+    if (start + 2 < b.data.size()) {
+      KCard d = card(b, start + 2, "material " + std::to_string(mid) + " card 3", W(b, 8));
+      unsupported(d, 0, "IDAM", "damage models of *MAT_ADD_EROSION");
+    }
+    if (erosion_.count(mid)) c.error(1200, 0, "MID", "*MAT_ADD_EROSION of this material also given at " + at(erosion_[mid].second));
+    erosion_[mid] = {e, c.ref(0)};
+  }
+
   // *DAMPING_GLOBAL: LCID VALDMP STX STY STZ SRX SRY SRZ (all six factors 0: all 1, as LS-DYNA)
   void parse_damping_global(const Block& b) {
     if (b.data.empty()) return;  // a card of defaults: no damping
@@ -3004,6 +3051,9 @@ bool is_ascii_database(const std::string& n) {
 
 
   void resolve_materials() {
+    for (const auto& [mid, e] : erosion_)
+      if (!mats_.count(mid) && !unsupported_mids_.count(mid))
+        err(1310, e.second, "*MAT_ADD_EROSION material " + std::to_string(mid), "MID", "material " + std::to_string(mid) + " is not defined by a *MAT keyword");
     part_material_.assign(parts_.size(), -1);
     for (std::size_t k = 0; k < parts_.size(); ++k) {
       const RPart& p = parts_[k];
@@ -3059,6 +3109,10 @@ bool is_ascii_database(const std::string& n) {
           else err(1310, r.refs[i], "*MAT material " + std::to_string(p.mid), q.key, "*DEFINE_CURVE " + std::to_string(id) + " is not defined");
         }
         resolve_rigid_constraints(md, r, p.mid);
+        if (auto eit = erosion_.find(p.mid); eit != erosion_.end()) {
+          if (r.type->rigid) err(1102, eit->second.second, "*MAT_ADD_EROSION material " + std::to_string(p.mid), "MID", "erosion of a rigid body");
+          else md.erosion = eit->second.first;
+        }
       }
       if (p.eosid != 0) err(1102, p.eos_ref, card, "EOSID", "equations of state");
       // hourglass and bulk viscosity
@@ -3185,6 +3239,8 @@ bool is_ascii_database(const std::string& n) {
       }
       if (md.fail_strain != 0) err(1102, r.ref, "*MAT_PLASTIC_KINEMATIC " + std::to_string(p.mid), "FS", "failure (element deletion) of shells");
       resolve_rigid_constraints(md, r, p.mid);
+      if (auto eit = erosion_.find(p.mid); eit != erosion_.end())
+        err(1102, eit->second.second, "*MAT_ADD_EROSION material " + std::to_string(p.mid), "MID", "erosion (element deletion) of shells");
       md.shell = true;
       md.shell_section.nip = sit->second.nip;
       md.shell_section.shrf = sit->second.shrf;

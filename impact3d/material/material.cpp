@@ -3,7 +3,9 @@
 
 #include "impact3d/material/material.h"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace impact3d {
 
@@ -104,6 +106,62 @@ double calc_von_mises(const double sig[6]) {
   const double ss = sx * sx + sy * sy + sz * sz +
                     2.0 * (sig[3] * sig[3] + sig[4] * sig[4] + sig[5] * sig[5]);
   return std::sqrt(1.5 * ss);
+}
+
+}  // namespace impact3d
+
+namespace impact3d {
+
+void derive_erosion_constants(const ErosionData& e, MaterialConstants& m) {
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  auto used = [&](double v) { return v != e.excl && v != 0; };
+  m.erosion = false;
+  m.er_mxpres = used(e.mxpres) ? e.mxpres : inf;
+  m.er_mnpres = used(e.mnpres) ? e.mnpres : -inf;
+  m.er_sigp1 = used(e.sigp1) ? e.sigp1 : inf;
+  m.er_sigvm = used(e.sigvm) ? e.sigvm : inf;
+  m.er_vol_hi = used(e.voleps) && e.voleps > 0 ? e.voleps : inf;
+  m.er_vol_lo = used(e.voleps) && e.voleps < 0 ? e.voleps : -inf;
+  m.er_failtm = used(e.failtm) ? e.failtm : inf;
+  m.er_ncs = e.ncs > 0 ? e.ncs : 1;
+  m.erosion = e.active && (m.er_mxpres < inf || m.er_mnpres > -inf || m.er_sigp1 < inf || m.er_sigvm < inf ||
+                           m.er_vol_hi < inf || m.er_vol_lo > -inf || m.er_failtm < inf);
+}
+
+namespace {
+
+// Largest eigenvalue of a symmetric 3x3 tensor (xx yy zz xy yz zx), trigonometric form.
+double largest_principal(const double s[6]) {
+  const double p1 = s[3] * s[3] + s[4] * s[4] + s[5] * s[5];
+  const double q = (s[0] + s[1] + s[2]) / 3;
+  if (p1 == 0) return std::max({s[0], s[1], s[2]});
+  const double a = s[0] - q, b = s[1] - q, c = s[2] - q;
+  const double p2 = a * a + b * b + c * c + 2 * p1;
+  const double p = std::sqrt(p2 / 6);
+  // det((S - q I) / p) / 2
+  const double B00 = a / p, B11 = b / p, B22 = c / p, B01 = s[3] / p, B12 = s[4] / p, B02 = s[5] / p;
+  const double det = B00 * (B11 * B22 - B12 * B12) - B01 * (B01 * B22 - B12 * B02) + B02 * (B01 * B12 - B11 * B02);
+  const double r = std::clamp(det / 2, -1.0, 1.0);
+  return q + 2 * p * std::cos(std::acos(r) / 3);
+}
+
+}  // namespace
+
+bool erosion_criteria_met(const MaterialConstants& m, const double sig[6], double vol_ratio, double t) {
+  const double pressure = -(sig[0] + sig[1] + sig[2]) / 3;
+  int met = 0;
+  met += pressure >= m.er_mxpres;
+  met += pressure <= m.er_mnpres;
+  met += t >= m.er_failtm;
+  const double ev = vol_ratio - 1;
+  met += ev >= m.er_vol_hi || ev <= m.er_vol_lo;
+  if (m.er_sigvm < std::numeric_limits<double>::infinity()) {
+    const double sx = sig[0] + pressure, sy = sig[1] + pressure, sz = sig[2] + pressure;
+    const double j2 = 0.5 * (sx * sx + sy * sy + sz * sz) + sig[3] * sig[3] + sig[4] * sig[4] + sig[5] * sig[5];
+    met += std::sqrt(3 * j2) >= m.er_sigvm;
+  }
+  if (m.er_sigp1 < std::numeric_limits<double>::infinity()) met += largest_principal(sig) >= m.er_sigp1;
+  return met >= m.er_ncs;
 }
 
 }  // namespace impact3d

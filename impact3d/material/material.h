@@ -6,6 +6,8 @@
 #include <array>
 #include <vector>
 
+#include "impact3d/model/model.h"  // ErosionData
+
 namespace impact3d {
 
 // Constants derived once at initialization from the deck's values.
@@ -25,6 +27,10 @@ struct MaterialConstants {
   bool initially_elastic = false;  // the seed's fast path (type 3)
   double tdel = 0;         // a solid whose step falls below this is deleted (0 = never)
   int fail_history = -1;   // a solid whose history value of this index reaches 1 is deleted (damage)
+  // *MAT_ADD_EROSION: the criteria in use (an unused one is +inf, -inf for MNPRES), NCS
+  bool erosion = false;
+  double er_mxpres = 0, er_mnpres = 0, er_sigp1 = 0, er_sigvm = 0, er_vol_hi = 0, er_vol_lo = 0, er_failtm = 0;
+  int er_ncs = 1;
   // Hardening curve sigma_y(eps_p), piecewise linear, the last slope extended (types with a
   // tabulated flow stress); slope[i] is the slope from point i to i + 1.
   std::vector<double> curve_eps, curve_sig, curve_slope;
@@ -36,6 +42,12 @@ struct MaterialConstants {
 // (E <= 0) but G and K are (the oblique-rod deck), E and nu are filled from them first.
 // E_p = 0 (perfect plasticity) when E_tan <= 0 or E_tan >= E.
 void derive_material_constants(MaterialConstants& m);
+
+// *MAT_ADD_EROSION: the criteria of ErosionData as constants (none used: m.erosion false).
+void derive_erosion_constants(const ErosionData& e, MaterialConstants& m);
+// Whether a solid with stress sig (xx yy zz xy yz zx, tension positive), volume ratio V/V0 at
+// time t meets at least NCS of the material's erosion criteria.
+bool erosion_criteria_met(const MaterialConstants& m, const double sig[6], double vol_ratio, double t);
 
 // sigma <- sigma + dt (W sigma - sigma W)  (rotation of the old stress by the spin).
 void rotate_stress_jaumann(double sig[6], const double w[3], double dt);

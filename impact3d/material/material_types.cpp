@@ -122,6 +122,7 @@ MaterialConstants derive_constants(const MaterialData& md, const Model& m) {
   const MaterialType* t = find_material_type(md.type);
   if (t && t->derive) t->derive(md, m, c);
   derive_material_constants(c);
+  derive_erosion_constants(md.erosion, c);
   return c;
 }
 
@@ -144,6 +145,23 @@ void echo_material_params(std::ostream& os, const MaterialData& md, const Materi
     echo_line(os, p.label, std::string(buf) + (*p.unit ? std::string(" (") + p.unit + ")" : std::string()));
   }
   if (t.echo) t.echo(os, md);
+  if (md.erosion.active) {  // *MAT_ADD_EROSION: the criteria in use
+    const ErosionData& e = md.erosion;
+    auto used = [&](double v) { return v != e.excl && v != 0; };
+    char buf[64];
+    auto line = [&](const char* label, double v) {
+      if (!used(v)) return;
+      std::snprintf(buf, sizeof buf, "%.6e", v);
+      echo_line(os, label, buf);
+    };
+    line("erosion: pressure above MXPRES", e.mxpres);
+    line("erosion: pressure below MNPRES", e.mnpres);
+    line("erosion: principal stress SIGP1", e.sigp1);
+    line("erosion: von Mises stress SIGVM", e.sigvm);
+    line("erosion: volumetric strain VOLEPS", e.voleps);
+    line("erosion: failure time FAILTM", e.failtm);
+    echo_line(os, "erosion: criteria needed at once NCS", std::to_string(e.ncs));
+  }
 }
 
 bool material_uses_curve(const MaterialData& md, int curve) {

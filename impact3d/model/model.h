@@ -53,6 +53,22 @@ struct ShellSectionData {
   int line = 0;
 };
 
+// *MAT_ADD_EROSION of a material (solids): failure criteria besides the material's own.  A
+// criterion whose value equals EXCL (0 by default) is not used; a solid fails when NCS of the
+// used criteria hold at once (solve/element_processing, material/material.h erosion_criteria_met).
+struct ErosionData {
+  bool active = false;
+  double excl = 0;
+  double mxpres = 0;   // pressure (compression positive) >= MXPRES
+  double mnpres = 0;   // pressure <= MNPRES
+  double sigp1 = 0;    // largest principal stress >= SIGP1
+  double sigvm = 0;    // von Mises stress >= SIGVM
+  double voleps = 0;   // volumetric strain V/V0 - 1 beyond VOLEPS (its sign: tension or compression)
+  double failtm = 0;   // time >= FAILTM
+  int ncs = 1;         // criteria that must hold at once
+  int line = 0;
+};
+
 struct MaterialData {
   int number = 0;
   int type = 0;          // DYNA3D type number (material_types.h)
@@ -74,6 +90,7 @@ struct MaterialData {
   bool packed = false;   // parameters were read 8 per card
   int line = 0;          // line of card 1, for messages
   bool shell = false;    // the part is a shell part (its elements are in Model::shell_nodes)
+  ErosionData erosion;   // *MAT_ADD_EROSION (keyword decks)
   ShellSectionData shell_section;
 };
 

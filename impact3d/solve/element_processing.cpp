@@ -32,6 +32,7 @@ struct GroupPass {
   double dt_hg;   // step of the hourglass stiffness forms
   bool with_back; // type 3 with a kinematic part: the back stress is carried
   bool hg_state;  // hourglass types 4, 5 carry resultants
+  double time;    // t^n (erosion by failure time)
 };
 
 // Lane l of a block holds element elems[l], or repeats lane 0's element (padding, inactive).
@@ -171,8 +172,12 @@ void store_hex_block(State& s, const GroupPass& gp, const int* elems, const bool
     const std::size_t hs = std::size_t(s.hist_stride);
     for (int h = 0; h < gp.history; ++h) s.hist[hs * E + std::size_t(h)] = k.hist[h][l];
     s.vol[E] = k.v[l];
-    const bool fails = (mc.fail_strain > 0 && k.eps_p[l] >= mc.fail_strain) || (mc.tdel > 0 && k.dt[l] < mc.tdel) ||
-                       (mc.fail_history >= 0 && k.hist[mc.fail_history][l] >= 1.0);
+    bool fails = (mc.fail_strain > 0 && k.eps_p[l] >= mc.fail_strain) || (mc.tdel > 0 && k.dt[l] < mc.tdel) ||
+                 (mc.fail_history >= 0 && k.hist[mc.fail_history][l] >= 1.0);
+    if (mc.erosion && !fails) {  // *MAT_ADD_EROSION
+      const double sg[6] = {k.sig[0][l], k.sig[1][l], k.sig[2][l], k.sig[3][l], k.sig[4][l], k.sig[5][l]};
+      fails = erosion_criteria_met(mc, sg, k.v[l] / s.vol0[E], gp.time);
+    }
     if (gp.dt > 0 && fails) {
       // Failure (plastic strain, the step below TDEL, damage): the solid is deleted.  Its stress work up to now stays in the internal
       // energy, its mass on the nodes; the books as for a stress and viscosity that are zero
@@ -273,6 +278,7 @@ ElementLoopResult calc_forces_for_elems(const Model& m, State& s) {
     gp.dt_hg = s.dt_next > 0 ? s.dt_next : s.dt_half;
     gp.with_back = group_carries_back_stress(*g.solid, *gp.mc);
     gp.hg_state = group_carries_hourglass_state(*gp.md);
+    gp.time = s.time;
     const int b0 = g.first_block, nb = g.num_blocks;
 #pragma omp parallel for schedule(dynamic, kBlocksPerChunk) if (nb >= kMinBlocksForThreads)
     for (int b = b0; b < b0 + nb; ++b) process_hex_block(s, gp, b);
