@@ -104,9 +104,9 @@ class KeywordWriter {
     else
       os_ << "*CONTROL_TERMINATION\n$#  endtim    endcyc     dtmin\n"
           << kcard({R(k.end_time), I(k.end_cycle), R(k.min_step_factor)}) << "\n";
-    if (k.mass_scaling_dt != 0)
+    if (k.mass_scaling_dt != 0 || k.erode_small_steps)
       os_ << "*CONTROL_TIMESTEP\n$#  dtinit    tssfac      isdo    tslimt     dt2ms      lctm     erode     ms1st\n"
-          << kcard({R(k.initial_dt), R(k.tssf), B(), B(), R(k.mass_scaling_dt), B(), B(),
+          << kcard({R(k.initial_dt), R(k.tssf), B(), B(), R(k.mass_scaling_dt), B(), I(k.erode_small_steps ? 1 : 0),
                     I(k.mass_scaling_first_only ? 1 : 0)}) << "\n";
     else
       os_ << "*CONTROL_TIMESTEP\n$#  dtinit    tssfac\n" << kcard({R(k.initial_dt), R(k.tssf)}) << "\n";
@@ -221,9 +221,9 @@ class KeywordWriter {
         if (md.erosion.active) {
           const ErosionData& e = md.erosion;
           os_ << "*MAT_ADD_EROSION\n$#     mid      excl    mxpres     mneps    effeps    voleps    numfip       ncs\n"
-              << kcard({I(id), R(e.excl), R(e.mxpres), B(), B(), R(e.voleps), B(), I(e.ncs)}) << "\n"
+              << kcard({I(id), R(e.excl), R(e.mxpres), R(e.mneps), R(e.effeps), R(e.voleps), B(), I(e.ncs)}) << "\n"
               << "$#  mnpres     sigp1     sigvm     mxeps     epssh     sigth   impulse    failtm\n"
-              << kcard({R(e.mnpres), R(e.sigp1), R(e.sigvm), B(), B(), B(), B(), R(e.failtm)}) << "\n";
+              << kcard({R(e.mnpres), R(e.sigp1), R(e.sigvm), R(e.mxeps), R(e.epssh), B(), B(), R(e.failtm)}) << "\n";
         }
       } else {
         note("material " + std::to_string(id) + ": type " + std::to_string(md.type) + " cannot be written");
@@ -597,8 +597,9 @@ void write_fixed_deck(std::ostream& os, const Model& m, std::vector<std::string>
   {
     FixedLine c = L("control card 9");
     c.i(1, 5, 0).i(6, 10, 0).i(11, 15, 0).i(16, 20, 0);
-    if (k.mass_scaling_dt != 0 || k.end_mass_percent > 0)  // IMPACT-3D choice: cols 46-70
-      c.r(46, 55, k.mass_scaling_dt).i(56, 60, k.mass_scaling_first_only ? 1 : 0).r(61, 70, k.end_mass_percent);
+    if (k.mass_scaling_dt != 0 || k.end_mass_percent > 0 || k.erode_small_steps)  // IMPACT-3D choice: cols 46-75
+      c.r(46, 55, k.mass_scaling_dt).i(56, 60, k.mass_scaling_first_only ? 1 : 0).r(61, 70, k.end_mass_percent)
+          .i(71, 75, k.erode_small_steps ? 1 : 0);
     os << c.str() << "\n";
   }
   os << "*----- MATERIALS\n";
@@ -812,6 +813,7 @@ std::vector<std::string> model_differences(const Model& a, const Model& b, int m
   D("mass-scaling step DT2MS", ka.mass_scaling_dt, kb.mass_scaling_dt);
   N("MS1ST", ka.mass_scaling_first_only ? 1 : 0, kb.mass_scaling_first_only ? 1 : 0);
   D("ENDMAS", ka.end_mass_percent, kb.end_mass_percent);
+  N("ERODE", ka.erode_small_steps ? 1 : 0, kb.erode_small_steps ? 1 : 0);
   D("minimum step factor", ka.min_step_factor, kb.min_step_factor);
   N("materials", long(a.materials.size()), long(b.materials.size()));
   for (std::size_t k = 0; k < std::min(a.materials.size(), b.materials.size()); ++k) {
@@ -834,6 +836,10 @@ std::vector<std::string> model_differences(const Model& a, const Model& b, int m
     D(w + "erosion SIGVM", x.erosion.sigvm, y.erosion.sigvm);
     D(w + "erosion VOLEPS", x.erosion.voleps, y.erosion.voleps);
     D(w + "erosion FAILTM", x.erosion.failtm, y.erosion.failtm);
+    D(w + "erosion MNEPS", x.erosion.mneps, y.erosion.mneps);
+    D(w + "erosion EFFEPS", x.erosion.effeps, y.erosion.effeps);
+    D(w + "erosion MXEPS", x.erosion.mxeps, y.erosion.mxeps);
+    D(w + "erosion EPSSH", x.erosion.epssh, y.erosion.epssh);
     N(w + "erosion NCS", x.erosion.ncs, y.erosion.ncs);
     D(w + "E", x.E, y.E);
     D(w + "nu", x.nu, y.nu);

@@ -319,6 +319,9 @@ class Dyna3dReader {
       k.mass_scaling_first_only = ms1st == 1;
       k.end_mass_percent = c.e(61, 70, "added-mass limit ENDMAS (percent)");
       if (k.end_mass_percent < 0) c.error(1003, 61, 70, "ENDMAS", "must not be negative (0 or blank: no limit)");
+      const long long erode = c.i(71, 75, "ERODE");  // IMPACT-3D choice: LS-DYNA's *CONTROL_TIMESTEP ERODE
+      if (erode != 0 && erode != 1) c.error(1006, 71, 75, "ERODE", "0 (the run ends below the minimum step) or 1 (solids below it are deleted)");
+      k.erode_small_steps = erode == 1;
     }
   }
 

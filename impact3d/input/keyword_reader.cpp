@@ -652,7 +652,7 @@ class KeywordReader {
   Ref end_ref_;
   double dtinit_ = 0, tssfac_ = 0.9;
   double dt2ms_ = 0, endmas_ = 0;
-  bool ms1st_ = false;
+  bool ms1st_ = false, erode_ = false;
   double slsfac_ = 0.1;
   int ikedit_ = 100;
   double d3plot_dt_ = 0, d3thdt_dt_ = -1, nodout_dt_ = -1, elout_dt_ = -1, glstat_dt_ = -1, ncforc_dt_ = 0;
@@ -1894,7 +1894,9 @@ bool is_ascii_database(const std::string& n) {
     if (c.r(3, "TSLIMT") != 0) c.error(2006, 3, "TSLIMT", "shell time-step limit");
     dt2ms_ = c.r(4, "DT2MS");
     if (c.i(5, "LCTM") != 0) c.error(1102, 5, "LCTM", "time-step limit from a load curve");
-    c.i(6, "ERODE");
+    const long long erode = c.i(6, "ERODE");
+    if (erode != 0 && erode != 1) c.error(1006, 6, "ERODE", "0 (the run ends below DTMIN) or 1 (solids below DTMIN x the first step are deleted)");
+    erode_ = erode == 1;
     const long long ms1st = c.i(7, "MS1ST");
     if (ms1st != 0 && ms1st != 1) c.error(1006, 7, "MS1ST", "0 (mass scaling every cycle) or 1 (the first cycle only)");
     ms1st_ = ms1st == 1;
@@ -2708,8 +2710,8 @@ bool is_ascii_database(const std::string& n) {
   }
 
   // *MAT_ADD_EROSION: card 1 MID EXCL MXPRES MNEPS EFFEPS VOLEPS NUMFIP NCS, card 2 MNPRES SIGP1
-  // SIGVM MXEPS EPSSH SIGTH IMPULSE FAILTM; the strain criteria, Tuler-Butcher and the damage
-  // cards (3 on) are not supported.  A value equal to EXCL switches its criterion off.
+  // SIGVM MXEPS EPSSH SIGTH IMPULSE FAILTM; Tuler-Butcher and the damage cards (3 on) are not
+  // supported.  A value equal to EXCL switches its criterion off.
   void parse_mat_add_erosion(const Block& b) {
     std::size_t start = skip_option_card(b);
     if (start >= b.data.size()) { missing_card(b, "card 1"); return; }
@@ -2725,8 +2727,8 @@ bool is_ascii_database(const std::string& n) {
       if (!k.blank(f) && v != e.excl && v != 0) k.error(1102, f, name, what);
     };
     e.mxpres = c.r(2, "MXPRES");
-    unsupported(c, 3, "MNEPS", "erosion by the smallest principal strain");
-    unsupported(c, 4, "EFFEPS", "erosion by the effective strain");
+    e.mneps = c.r(3, "MNEPS");
+    e.effeps = c.r(4, "EFFEPS");
     e.voleps = c.r(5, "VOLEPS");
     c.r(6, "NUMFIP");  // one integration point per solid here
     const long long ncs = c.blank(7) ? 1 : c.i(7, "NCS");
@@ -2737,8 +2739,8 @@ bool is_ascii_database(const std::string& n) {
       e.mnpres = d.r(0, "MNPRES");
       e.sigp1 = d.r(1, "SIGP1");
       e.sigvm = d.r(2, "SIGVM");
-      unsupported(d, 3, "MXEPS", "erosion by the largest principal strain");
-      unsupported(d, 4, "EPSSH", "erosion by the shear strain");
+      e.mxeps = d.r(3, "MXEPS");
+      e.epssh = d.r(4, "EPSSH");
       unsupported(d, 5, "SIGTH", "Tuler-Butcher erosion");
       unsupported(d, 6, "IMPULSE", "Tuler-Butcher erosion");
       e.failtm = d.r(7, "FAILTM");
@@ -3301,6 +3303,7 @@ bool is_ascii_database(const std::string& n) {
     k.mass_scaling_dt = dt2ms_;
     k.mass_scaling_first_only = ms1st_;
     k.end_mass_percent = endmas_;
+    k.erode_small_steps = erode_;
     k.penalty_scale = slsfac_;
     k.report_interval = ikedit_;
     k.plot_interval = d3plot_dt_ > 0 ? d3plot_dt_ : end_time_ / 20;

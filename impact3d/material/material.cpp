@@ -3,6 +3,7 @@
 
 #include "impact3d/material/material.h"
 
+#include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -124,8 +125,13 @@ void derive_erosion_constants(const ErosionData& e, MaterialConstants& m) {
   m.er_vol_lo = used(e.voleps) && e.voleps < 0 ? e.voleps : -inf;
   m.er_failtm = used(e.failtm) ? e.failtm : inf;
   m.er_ncs = e.ncs > 0 ? e.ncs : 1;
+  m.er_mneps = used(e.mneps) ? e.mneps : -inf;
+  m.er_effeps = used(e.effeps) ? e.effeps : inf;
+  m.er_mxeps = used(e.mxeps) ? e.mxeps : inf;
+  m.er_epssh = used(e.epssh) ? e.epssh : inf;
+  m.er_strain = m.er_mneps > -inf || m.er_effeps < inf || m.er_mxeps < inf || m.er_epssh < inf;
   m.erosion = e.active && (m.er_mxpres < inf || m.er_mnpres > -inf || m.er_sigp1 < inf || m.er_sigvm < inf ||
-                           m.er_vol_hi < inf || m.er_vol_lo > -inf || m.er_failtm < inf);
+                           m.er_vol_hi < inf || m.er_vol_lo > -inf || m.er_failtm < inf || m.er_strain);
 }
 
 namespace {
@@ -147,7 +153,24 @@ double largest_principal(const double s[6]) {
 
 }  // namespace
 
-bool erosion_criteria_met(const MaterialConstants& m, const double sig[6], double vol_ratio, double t) {
+void calc_hex_principal_strains(const double X[8][3], const double x[8][3], double eps[3]) {
+  // dN/dxi at the centre: the corner signs / 8 (corners 1-4 at zeta = -1, 5-8 at +1)
+  static const double sx[8] = {-1, 1, 1, -1, -1, 1, 1, -1}, sy[8] = {-1, -1, 1, 1, -1, -1, 1, 1},
+                      sz[8] = {-1, -1, -1, -1, 1, 1, 1, 1};
+  Eigen::Matrix3d J0 = Eigen::Matrix3d::Zero(), J = Eigen::Matrix3d::Zero();
+  for (int a = 0; a < 8; ++a) {
+    const Eigen::Vector3d g(sx[a] / 8, sy[a] / 8, sz[a] / 8);
+    J0 += Eigen::Vector3d(X[a][0], X[a][1], X[a][2]) * g.transpose();
+    J += Eigen::Vector3d(x[a][0], x[a][1], x[a][2]) * g.transpose();
+  }
+  const Eigen::Matrix3d F = J * J0.inverse();
+  const Eigen::Vector3d lam = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(F * F.transpose()).eigenvalues();
+  // ascending eigenvalues of the left Cauchy-Green tensor: ln sqrt(lambda), descending
+  for (int i = 0; i < 3; ++i) eps[i] = 0.5 * std::log(std::max(lam(2 - i), 1e-300));
+}
+
+bool erosion_criteria_met(const MaterialConstants& m, const double sig[6], double vol_ratio, double t,
+                          const double eps[3]) {
   const double pressure = -(sig[0] + sig[1] + sig[2]) / 3;
   int met = 0;
   met += pressure >= m.er_mxpres;
@@ -161,6 +184,14 @@ bool erosion_criteria_met(const MaterialConstants& m, const double sig[6], doubl
     met += std::sqrt(3 * j2) >= m.er_sigvm;
   }
   if (m.er_sigp1 < std::numeric_limits<double>::infinity()) met += largest_principal(sig) >= m.er_sigp1;
+  if (m.er_strain && eps) {
+    met += eps[0] >= m.er_mxeps;
+    met += eps[2] <= m.er_mneps;
+    met += 0.5 * (eps[0] - eps[2]) >= m.er_epssh;
+    const double em = (eps[0] + eps[1] + eps[2]) / 3;
+    const double d0 = eps[0] - em, d1 = eps[1] - em, d2 = eps[2] - em;
+    met += std::sqrt(2.0 / 3.0 * (d0 * d0 + d1 * d1 + d2 * d2)) >= m.er_effeps;
+  }
   return met >= m.er_ncs;
 }
 

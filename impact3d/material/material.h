@@ -31,6 +31,8 @@ struct MaterialConstants {
   bool erosion = false;
   double er_mxpres = 0, er_mnpres = 0, er_sigp1 = 0, er_sigvm = 0, er_vol_hi = 0, er_vol_lo = 0, er_failtm = 0;
   int er_ncs = 1;
+  bool er_strain = false;  // some strain criterion is used (the solver then computes the strains)
+  double er_mneps = 0, er_effeps = 0, er_mxeps = 0, er_epssh = 0;
   // Hardening curve sigma_y(eps_p), piecewise linear, the last slope extended (types with a
   // tabulated flow stress); slope[i] is the slope from point i to i + 1.
   std::vector<double> curve_eps, curve_sig, curve_slope;
@@ -46,8 +48,13 @@ void derive_material_constants(MaterialConstants& m);
 // *MAT_ADD_EROSION: the criteria of ErosionData as constants (none used: m.erosion false).
 void derive_erosion_constants(const ErosionData& e, MaterialConstants& m);
 // Whether a solid with stress sig (xx yy zz xy yz zx, tension positive), volume ratio V/V0 at
-// time t meets at least NCS of the material's erosion criteria.
-bool erosion_criteria_met(const MaterialConstants& m, const double sig[6], double vol_ratio, double t);
+// time t and principal true strains eps (e1 >= e2 >= e3; read only when m.er_strain) meets at
+// least NCS of the material's erosion criteria.
+bool erosion_criteria_met(const MaterialConstants& m, const double sig[6], double vol_ratio, double t,
+                          const double eps[3] = nullptr);
+// Principal true strains (descending) of a hexahedron at its centre: ln of the principal
+// stretches of F = dx/dX, from its initial (X) and current (x) corner coordinates.
+void calc_hex_principal_strains(const double X[8][3], const double x[8][3], double eps[3]);
 
 // sigma <- sigma + dt (W sigma - sigma W)  (rotation of the old stress by the spin).
 void rotate_stress_jaumann(double sig[6], const double w[3], double dt);

@@ -160,6 +160,10 @@ void echo_material_params(std::ostream& os, const MaterialData& md, const Materi
     line("erosion: von Mises stress SIGVM", e.sigvm);
     line("erosion: volumetric strain VOLEPS", e.voleps);
     line("erosion: failure time FAILTM", e.failtm);
+    line("erosion: smallest principal strain MNEPS", e.mneps);
+    line("erosion: effective strain EFFEPS", e.effeps);
+    line("erosion: largest principal strain MXEPS", e.mxeps);
+    line("erosion: shear strain EPSSH", e.epssh);
     echo_line(os, "erosion: criteria needed at once NCS", std::to_string(e.ncs));
   }
 }

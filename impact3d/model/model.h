@@ -41,6 +41,9 @@ struct ControlData {
   double mass_scaling_dt = 0;
   bool mass_scaling_first_only = false;  // MS1ST = 1: only at the first cycle
   double end_mass_percent = 0;           // ENDMAS: stop when the added mass reaches this % (0: never)
+  // ERODE (*CONTROL_TIMESTEP): solids whose step falls below min_step_factor x the first step
+  // are deleted instead of the run ending (message 4003)
+  bool erode_small_steps = false;
   // card 8
   double min_step_factor = 0;  // error termination when dt < factor * dt0 (0 = no check)
 };
@@ -64,6 +67,11 @@ struct ErosionData {
   double sigp1 = 0;    // largest principal stress >= SIGP1
   double sigvm = 0;    // von Mises stress >= SIGVM
   double voleps = 0;   // volumetric strain V/V0 - 1 beyond VOLEPS (its sign: tension or compression)
+  // true (logarithmic) strains from the deformation gradient at the solid's centre
+  double mneps = 0;    // smallest principal strain <= MNEPS
+  double effeps = 0;   // effective strain sqrt(2/3 e':e') >= EFFEPS
+  double mxeps = 0;    // largest principal strain >= MXEPS
+  double epssh = 0;    // tensorial shear strain (e1 - e3) / 2 >= EPSSH
   double failtm = 0;   // time >= FAILTM
   int ncs = 1;         // criteria that must hold at once
   int line = 0;

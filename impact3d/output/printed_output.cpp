@@ -173,6 +173,8 @@ void write_model_summary(std::ostream& os, const Model& m) {
        << (k.mass_scaling_dt > 0 ? " (every element's step set to it at the first cycle, then held)"
                                  : " (elements below |DT2MS| get mass)")
        << (k.mass_scaling_first_only ? ", first cycle only (MS1ST)" : "") << "\n";
+  if (k.erode_small_steps)
+    os << "     erode solids below the minimum step .. yes (ERODE 1: DTMIN x first step)\n";
   if (k.end_mass_percent > 0)
     os << "     added-mass limit ENDMAS .............. " << fmt("%.4g", k.end_mass_percent) << " %\n";
   os << "     sliding-interface penalty scale ...... " << fmt("%.4f", k.penalty_scale) << "\n"

@@ -33,6 +33,7 @@ struct GroupPass {
   bool with_back; // type 3 with a kinematic part: the back stress is carried
   bool hg_state;  // hourglass types 4, 5 carry resultants
   double time;    // t^n (erosion by failure time)
+  const Model* model;  // initial coordinates (erosion by strain)
 };
 
 // Lane l of a block holds element elems[l], or repeats lane 0's element (padding, inactive).
@@ -176,7 +177,17 @@ void store_hex_block(State& s, const GroupPass& gp, const int* elems, const bool
                  (mc.fail_history >= 0 && k.hist[mc.fail_history][l] >= 1.0);
     if (mc.erosion && !fails) {  // *MAT_ADD_EROSION
       const double sg[6] = {k.sig[0][l], k.sig[1][l], k.sig[2][l], k.sig[3][l], k.sig[4][l], k.sig[5][l]};
-      fails = erosion_criteria_met(mc, sg, k.v[l] / s.vol0[E], gp.time);
+      double eps[3] = {0, 0, 0};
+      if (mc.er_strain) {
+        double X[8][3], x[8][3];
+        for (int j = 0; j < 8; ++j) {
+          const std::size_t n = std::size_t(s.conn[E][std::size_t(j)]);
+          X[j][0] = gp.model->x[n], X[j][1] = gp.model->y[n], X[j][2] = gp.model->z[n];
+          x[j][0] = s.x[n], x[j][1] = s.y[n], x[j][2] = s.z[n];
+        }
+        calc_hex_principal_strains(X, x, eps);
+      }
+      fails = erosion_criteria_met(mc, sg, k.v[l] / s.vol0[E], gp.time, eps);
     }
     if (gp.dt > 0 && fails) {
       // Failure (plastic strain, the step below TDEL, damage): the solid is deleted.  Its stress work up to now stays in the internal
@@ -279,6 +290,7 @@ ElementLoopResult calc_forces_for_elems(const Model& m, State& s) {
     gp.with_back = group_carries_back_stress(*g.solid, *gp.mc);
     gp.hg_state = group_carries_hourglass_state(*gp.md);
     gp.time = s.time;
+    gp.model = &m;
     const int b0 = g.first_block, nb = g.num_blocks;
 #pragma omp parallel for schedule(dynamic, kBlocksPerChunk) if (nb >= kMinBlocksForThreads)
     for (int b = b0; b < b0 + nb; ++b) process_hex_block(s, gp, b);

@@ -95,6 +95,11 @@ StepStatus Engine::initialize() {
   }
   if (m_.control.initial_dt > 0) s_.dt_next = std::min(s_.dt_next, m_.control.initial_dt);
   s_.dt0 = s_.dt_next;
+  // ERODE: a deformable solid whose step TSSF dt_e falls below DTMIN x the first step is deleted
+  // (the element pass's TDEL test) instead of the run ending
+  if (m_.control.erode_small_steps && m_.control.min_step_factor > 0)
+    for (MaterialConstants& mc : s_.mats)
+      mc.tdel = std::max(mc.tdel, m_.control.min_step_factor * s_.dt0 / m_.control.tssf);
   s_.initial_total = s_.total_energy();
   return StepStatus::ok;
 }
@@ -176,7 +181,7 @@ StepStatus Engine::step() {
     error_elem_ = -1;
     return StepStatus::non_finite;
   }
-  if (m_.control.min_step_factor > 0 && s.dt_next < m_.control.min_step_factor * s.dt0 &&
+  if (m_.control.min_step_factor > 0 && !m_.control.erode_small_steps && s.dt_next < m_.control.min_step_factor * s.dt0 &&
       !finished())
     return StepStatus::dt_too_small;
   return finished() ? StepStatus::finished : StepStatus::ok;

@@ -8,6 +8,8 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <functional>
 #include <sstream>
@@ -51,6 +53,28 @@ Model struck_bar(double v_top) {
 
 using Criterion = std::function<bool(const double* sig, double vol_ratio, double t)>;
 
+// Principal true strains (descending) of solid k of the bar from its faces: the stretches along
+// x, y, z are the distances between opposite faces' mean positions over the initial ones (the
+// bar deforms without shear).
+std::array<double, 3> face_strains(const Model& m, const State& s, int k) {
+  const auto& c = s.conn[std::size_t(k)];
+  auto mean = [&](const std::vector<double>& v, std::initializer_list<int> corners) {
+    double t = 0;
+    for (int j : corners) t += v[std::size_t(c[std::size_t(j)])];
+    return t / 4;
+  };
+  auto stretch = [&](const std::vector<double>& cur, const std::vector<double>& ini, std::initializer_list<int> lo,
+                     std::initializer_list<int> hi) {
+    return (mean(cur, hi) - mean(cur, lo)) / (mean(ini, hi) - mean(ini, lo));
+  };
+  std::array<double, 3> e = {std::log(stretch(s.x, m.x, {0, 3, 4, 7}, {1, 2, 5, 6})),
+                             std::log(stretch(s.y, m.y, {0, 1, 4, 5}, {2, 3, 6, 7})),
+                             std::log(stretch(s.z, m.z, {0, 1, 2, 3}, {4, 5, 6, 7}))};
+  std::sort(e.begin(), e.end(), std::greater<double>());
+  return e;
+}
+using StrainCriterion = std::function<bool(const std::array<double, 3>& eps)>;
+
 // First cycle of the plain run where some solid meets the criterion, and those solids.
 std::pair<int, std::vector<int>> first_meeting(const Model& m, const Criterion& met) {
   Engine e(m);
@@ -63,6 +87,21 @@ std::pair<int, std::vector<int>> first_meeting(const Model& m, const Criterion& 
     for (int k = 0; k < s.ne; ++k)
       if (met(&s.sig[6 * std::size_t(k)], s.vol[std::size_t(k)] / s.vol0[std::size_t(k)], s.time)) which.push_back(k);
     if (!which.empty()) return {s.cycle, which};
+  }
+  return {-1, {}};
+}
+
+// The same with a criterion on the solids' principal strains.
+std::pair<int, std::vector<int>> first_meeting_strain(const Model& m, const StrainCriterion& met) {
+  Engine e(m);
+  EXPECT_EQ(e.initialize(), StepStatus::ok);
+  StepStatus st = StepStatus::ok;
+  while (st == StepStatus::ok) {
+    st = e.step();
+    std::vector<int> which;
+    for (int k = 0; k < e.state().ne; ++k)
+      if (met(face_strains(m, e.state(), k))) which.push_back(k);
+    if (!which.empty()) return {e.state().cycle, which};
   }
   return {-1, {}};
 }
@@ -82,6 +121,17 @@ std::pair<int, std::vector<int>> first_deletion(const Model& m) {
 void expect_erosion_matches(const ErosionData& er, const Criterion& met, const char* what, double vz = -20) {
   Model plain = struck_bar(vz);
   const auto expected = first_meeting(plain, met);
+  ASSERT_GT(expected.first, 2) << what << ": the plain run never meets the criterion, or at once";
+  Model eroding = plain;
+  eroding.materials[0].erosion = er;
+  const auto got = first_deletion(eroding);
+  EXPECT_EQ(got.first, expected.first) << what;
+  EXPECT_EQ(got.second, expected.second) << what;
+}
+
+void expect_strain_erosion_matches(const ErosionData& er, const StrainCriterion& met, const char* what, double vz) {
+  Model plain = struck_bar(vz);
+  const auto expected = first_meeting_strain(plain, met);
   ASSERT_GT(expected.first, 2) << what << ": the plain run never meets the criterion, or at once";
   Model eroding = plain;
   eroding.materials[0].erosion = er;
@@ -136,6 +186,104 @@ TEST(Erosion, StressVolumeAndTimeCriteria) {
   e.mxpres = 1;
   e.failtm = 4e-6;
   expect_erosion_matches(e, [](const double*, double, double t) { return t >= 4e-6; }, "EXCL");
+}
+
+// Strain criteria (true strains at the solid's centre): a stretched bar reaches MXEPS, EFFEPS and
+// EPSSH, a squeezed one MNEPS, in the cycle its face-to-face stretches say.
+TEST(Erosion, StrainCriteria) {
+  const double eps_z = 1.5e-3;  // the bar's axial strain grows about 2e-4 a cycle
+  ErosionData e = erosion();
+  e.mxeps = eps_z;
+  expect_strain_erosion_matches(e, [&](const std::array<double, 3>& p) { return p[0] >= eps_z; }, "MXEPS", 20);
+  e = erosion();
+  e.mneps = -eps_z;
+  expect_strain_erosion_matches(e, [&](const std::array<double, 3>& p) { return p[2] <= -eps_z; }, "MNEPS", -20);
+  auto effective = [](const std::array<double, 3>& p) {
+    const double m = (p[0] + p[1] + p[2]) / 3;
+    return std::sqrt(2.0 / 3.0 * ((p[0] - m) * (p[0] - m) + (p[1] - m) * (p[1] - m) + (p[2] - m) * (p[2] - m)));
+  };
+  e = erosion();
+  e.effeps = eps_z;
+  expect_strain_erosion_matches(e, [&](const std::array<double, 3>& p) { return effective(p) >= eps_z; }, "EFFEPS", 20);
+  e = erosion();
+  e.epssh = eps_z / 2;
+  expect_strain_erosion_matches(e, [&](const std::array<double, 3>& p) { return 0.5 * (p[0] - p[2]) >= eps_z / 2; }, "EPSSH", 20);
+}
+
+// The centre strains of a hexahedron stretched by (1.2, 0.9, 1.05) and then turned by a rigid
+// rotation: ln of the stretches, in descending order.
+TEST(Erosion, PrincipalStrainsIgnoreRotation) {
+  double X[8][3], x[8][3];
+  static const double cx[8] = {0, 1, 1, 0, 0, 1, 1, 0}, cy[8] = {0, 0, 1, 1, 0, 0, 1, 1}, cz[8] = {0, 0, 0, 0, 1, 1, 1, 1};
+  const Eigen::Matrix3d R = Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
+  for (int a = 0; a < 8; ++a) {
+    X[a][0] = 0.02 * cx[a];
+    X[a][1] = 0.02 * cy[a];
+    X[a][2] = 0.02 * cz[a];
+    const Eigen::Vector3d y = R * Eigen::Vector3d(1.2 * X[a][0], 0.9 * X[a][1], 1.05 * X[a][2]) + Eigen::Vector3d(1, -2, 3);
+    for (int i = 0; i < 3; ++i) x[a][i] = y(i);
+  }
+  double eps[3];
+  calc_hex_principal_strains(X, x, eps);
+  EXPECT_NEAR(eps[0], std::log(1.2), 1e-12);
+  EXPECT_NEAR(eps[1], std::log(1.05), 1e-12);
+  EXPECT_NEAR(eps[2], std::log(0.9), 1e-12);
+}
+
+// *CONTROL_TIMESTEP ERODE = 1 with DTMIN: a block crushed on its mid-plane (plastic copper,
+// 2 x 400 m/s) whose flattening solids would end the run (message 4003) loses them instead, in
+// the cycle their step TSSF dt_e falls below DTMIN x the first step, and runs to the end.
+TEST(Erosion, ErodeDeletesSolidsBelowTheMinimumStep) {
+  Model m = make_box_model({6, 6, 6, 0.01, 0.01, 0.01, 0, 0, 0}, copper_plastic(), 2e-5);
+  set_velocity_field(m, [](double, double, double z) {
+    const double d = z - 0.005;
+    return std::array<double, 3>{0, 0, d > 1e-9 ? -400.0 : d < -1e-9 ? 400.0 : 0.0};
+  });
+  m.control.min_step_factor = 0.6;
+  // without ERODE the run stops when the step falls below 0.6 dt0
+  Engine plain(m);
+  ASSERT_EQ(plain.initialize(), StepStatus::ok);
+  StepStatus st = StepStatus::ok;
+  std::vector<std::vector<double>> steps;  // each cycle's element steps (before it ends)
+  while (st == StepStatus::ok) {
+    st = plain.step();
+    steps.push_back(plain.state().dt_e);
+  }
+  ASSERT_EQ(st, StepStatus::dt_too_small);
+  const int stop_cycle = plain.state().cycle;
+  const double limit = 0.6 * plain.state().dt0;
+  // the solids whose step first falls below the limit, and when
+  int first = -1;
+  std::vector<int> below;
+  for (std::size_t c = 0; c < steps.size() && first < 0; ++c) {
+    for (int k = 0; k < int(steps[c].size()); ++k)
+      if (m.control.tssf * steps[c][std::size_t(k)] < limit) below.push_back(k);
+    if (!below.empty()) first = int(c) + 1;
+  }
+  ASSERT_GT(first, 1);
+  EXPECT_LE(first, stop_cycle);
+  // with ERODE those solids go in that cycle, and the run reaches its end
+  m.control.erode_small_steps = true;
+  Engine er(m);
+  ASSERT_EQ(er.initialize(), StepStatus::ok);
+  int deleted_at = -1;
+  std::vector<int> deleted;
+  st = StepStatus::ok;
+  while (st == StepStatus::ok) {
+    st = er.step();
+    if (deleted_at < 0 && !er.state().newly_failed.empty()) {
+      deleted_at = er.state().cycle;
+      deleted = er.state().newly_failed;
+    }
+  }
+  EXPECT_EQ(st, StepStatus::finished);
+  EXPECT_EQ(deleted_at, first);
+  EXPECT_EQ(deleted, below);
+  int nfailed = 0;
+  for (auto f : er.state().failed) nfailed += f != 0;
+  EXPECT_GT(nfailed, 0);
+  EXPECT_LT(nfailed, er.state().ne);
+  EXPECT_GE(er.state().dt_next, 0.0);
 }
 
 // The solver's principal-stress check on stresses with known eigenvalues.
@@ -234,17 +382,38 @@ TEST(ErosionInput, ReadsRefusesAndConverts) {
   std::ostringstream flog;
   EXPECT_EQ(write_converted_decks(r.m, "", fixed, flog), exit_code::input_error);
   EXPECT_NE(flog.str().find("*MAT_ADD_EROSION"), std::string::npos) << flog.str();
-  // strain criteria, Tuler-Butcher and damage are not supported (1102, by field); an undefined
-  // material is 1310; a rigid material 1102
+  // Tuler-Butcher and damage are not supported (1102, by field); an undefined material is 1310;
+  // a rigid material 1102
   Read bad = read_text(hex_deck(kElastic,
                                 "*MAT_ADD_EROSION\n         1       0.0       0.0     -0.10      0.30\n"
                                 "       0.0       0.0       0.0      0.20      0.10     1.0E8       1.0\n"
                                 "         1\n"
                                 "*MAT_ADD_EROSION\n         5       0.0     1.0E9\n"));
   EXPECT_FALSE(bad.ok);
-  for (const char* f : {"MNEPS", "EFFEPS", "MXEPS", "EPSSH", "SIGTH", "IMPULSE", "IDAM"})
+  for (const char* f : {"SIGTH", "IMPULSE", "IDAM"})
     EXPECT_NE(bad.messages().find(std::string("\"") + f + "\""), std::string::npos) << f << "\n" << bad.messages();
   EXPECT_NE(bad.messages().find("error 1310"), std::string::npos) << bad.messages();
+  // ERODE (*CONTROL_TIMESTEP field 7) round trips through both formats (fixed: card 9 cols 71-75)
+  std::string ed = hex_deck(kElastic, "*CONTROL_TIMESTEP\n       0.0       0.9         0       0.0       0.0         0         1\n");
+  ed.replace(ed.find("   1.0E-05\n"), 11, "   1.0E-05         0       0.5\n");
+  Read er = read_text(ed);
+  ASSERT_TRUE(er.ok) << er.messages();
+  EXPECT_TRUE(er.m.control.erode_small_steps);
+  EXPECT_DOUBLE_EQ(er.m.control.min_step_factor, 0.5);
+  std::ostringstream elog;
+  ASSERT_EQ(write_converted_decks(er.m, kw, fixed, elog), exit_code::ok) << elog.str();
+  for (const std::string& path : {kw, fixed}) {
+    Read b;
+    DeckFile deck;
+    ASSERT_TRUE(deck.load(path, b.d));
+    InputOptions o;
+    b.ok = read_deck(deck, b.m, b.d, o) && check_model(b.m, b.d);
+    ASSERT_TRUE(b.ok) << path << "\n" << b.messages();
+    EXPECT_TRUE(b.m.control.erode_small_steps) << path;
+  }
+  Read bad_erode = read_text(hex_deck(kElastic, "*CONTROL_TIMESTEP\n       0.0       0.9         0       0.0       0.0         0         2\n"));
+  EXPECT_FALSE(bad_erode.ok);
+  EXPECT_NE(bad_erode.messages().find("ERODE"), std::string::npos) << bad_erode.messages();
   Read rigid = read_text(hex_deck("*MAT_RIGID\n         1    7800.0   2.0e11       0.3\n",
                                   "*MAT_ADD_EROSION\n         1       0.0     1.0E9\n"));
   EXPECT_FALSE(rigid.ok);
