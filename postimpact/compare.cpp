@@ -145,15 +145,36 @@ std::string where(const Diff& d, Database& db) {
 }  // namespace
 
 int compare_databases(const std::string& pa, const std::string& pb, const CompareOptions& opt,
-                      std::ostream& out) {
+                      std::ostream& out0, CompareResult* result) {
+    // what goes to `out` is also kept, so that `problem` can quote the reason for exit 2
+    std::ostringstream out;
+    CompareResult scratch;
+    CompareResult& res = result ? *result : scratch;
+    res = CompareResult{};
+    struct Flush {
+        std::ostream& to;
+        std::ostringstream& from;
+        ~Flush() { to << from.str(); }
+    } flush{out0, out};
+    auto not_comparable = [&]() {
+        const std::string text = out.str();
+        std::string reason = text;
+        if (const auto p = text.rfind("compare: "); p != std::string::npos) reason = text.substr(p + 9);
+        if (const auto r = reason.find("\nresult:"); r != std::string::npos) reason.erase(r);
+        while (!reason.empty() && reason.back() == '\n') reason.pop_back();
+        res.problem = reason;
+        return 2;
+    };
     std::unique_ptr<Database> A, B;
     try {
         A = std::make_unique<Database>(pa);
         B = std::make_unique<Database>(pb);
     } catch (const std::exception& e) {
         out << "compare: cannot open: " << e.what() << "\n";
-        return 2;
+        return not_comparable();
     }
+    res.states_a = A->num_states();
+    res.states_b = B->num_states();
     const auto& ga = A->geometry();
     const auto& gb = B->geometry();
     out << "compare: A = " << pa << " (" << A->num_states() << " states)\n"
@@ -167,7 +188,7 @@ int compare_databases(const std::string& pa, const std::string& pb, const Compar
             out << " (thick shells, beams, shells: A " << ga.num_tshells() << ", " << ga.num_beams() << ", "
                 << ga.num_shells() << "; B " << gb.num_tshells() << ", " << gb.num_beams() << ", " << gb.num_shells() << ")";
         out << "\nresult: NOT COMPARABLE\n";
-        return 2;
+        return not_comparable();
     }
     // match nodes and elements (per family) by user id
     std::vector<int> node_b(static_cast<std::size_t>(ga.num_nodes())), elem_b(static_cast<std::size_t>(num_elements(ga)));
@@ -193,14 +214,14 @@ int compare_databases(const std::string& pa, const std::string& pb, const Compar
                 << " element user id(s) of A are not in B (first: "
                 << (unmatched.empty() ? unmatched_elems.front() : "node " + std::to_string(unmatched.front()))
                 << ")\nresult: NOT COMPARABLE\n";
-            return 2;
+            return not_comparable();
         }
     }
     if (ga.num_rigid_walls != gb.num_rigid_walls || ga.num_interfaces != gb.num_interfaces) {
         out << "compare: the global blocks differ: A has " << ga.num_rigid_walls << " rigid-wall and "
             << ga.num_interfaces << " interface force(s); B has " << gb.num_rigid_walls << " and "
             << gb.num_interfaces << "\nresult: NOT COMPARABLE\n";
-        return 2;
+        return not_comparable();
     }
     {
         // connectivity through the matches: A's element nodes, as B nodes, are B's element nodes
@@ -311,6 +332,7 @@ int compare_databases(const std::string& pa, const std::string& pb, const Compar
             continue;
         }
         outside += f.outside;
+        res.fields.push_back(CompareFieldRow{f.name, f.tol, f.compared, f.outside, f.max_abs.absd, f.max_rel.reld});
         std::snprintf(line, sizeof line, "%-7s %10s %10s  %12s  %12s  %10lld  %s\n", f.name.c_str(), g(f.tol.rel).c_str(),
                       g(f.tol.abs).c_str(), g(f.max_abs.absd).c_str(), g(f.max_rel.reld).c_str(), f.outside,
                       f.max_abs.absd > 0 ? where(f.max_abs, *A).c_str() : "");
@@ -320,6 +342,11 @@ int compare_databases(const std::string& pa, const std::string& pb, const Compar
     std::stable_sort(all_worst.begin(), all_worst.end(), [](const auto& x, const auto& y) {
         return x.second.ratio > y.second.ratio || (x.second.ratio == y.second.ratio && x.second.absd > y.second.absd);
     });
+    for (std::size_t k = 0; k < std::min(keep, all_worst.size()); ++k) {
+        const auto& [name, d] = all_worst[k];
+        res.worst.push_back(CompareFinding{name, d.state + 1, A->time(d.state), d.what, d.id, d.comp, d.a, d.b,
+                                           d.absd, d.reld, d.ratio});
+    }
     if (!all_worst.empty() && keep > 0) {
         out << "\nlargest differences outside tolerance (|a-b| / allowed, worst first):\n";
         for (std::size_t k = 0; k < std::min(keep, all_worst.size()); ++k) {

@@ -5,6 +5,7 @@
 #include <map>
 #include <ostream>
 #include <string>
+#include <vector>
 
 namespace postimpact {
 
@@ -32,6 +33,31 @@ struct CompareOptions {
     int report = 10;  // largest out-of-tolerance differences listed
 };
 
+// What a comparison found, for programs (the suite report, suite.h): one row per field and the
+// worst values outside tolerance, worst first (at most CompareOptions::report of them).
+struct CompareFinding {
+    std::string field;  // time, coords, ...
+    int state = 0;      // 1-based
+    double time = 0;    // of that state in A
+    std::string what;   // "node", "elem", "shell", "material", "wall", "" (a global value)
+    int id = 0;         // user id (node, element), material, wall or interface number
+    std::string comp;   // x, sxx, kinetic, alive, ...
+    double a = 0, b = 0, absd = 0, reld = 0;
+    double ratio = 0;   // |a-b| / allowed (inf when nothing is allowed)
+};
+struct CompareFieldRow {
+    std::string field;
+    Tolerance tol;
+    long long compared = 0, outside = 0;
+    double max_abs = 0, max_rel = 0;
+};
+struct CompareResult {
+    int states_a = 0, states_b = 0;
+    std::vector<CompareFieldRow> fields;
+    std::vector<CompareFinding> worst;
+    std::string problem;  // why the databases are not comparable (exit 2), else empty
+};
+
 // Nodes and elements are matched by user id (per element family), so two databases of the same
 // model written in different orders (ours and LS-DYNA's) compare.  Shells, thick shells and
 // beams: the stresses and EPS at the middle surface (beams: axial and shear stresses, plastic
@@ -40,6 +66,6 @@ struct CompareOptions {
 // states, 1 when not, 2 when they cannot be compared (unreadable, different node or element
 // user ids, different numbers of parts).
 int compare_databases(const std::string& a, const std::string& b, const CompareOptions& opt,
-                      std::ostream& out);
+                      std::ostream& out, CompareResult* result = nullptr);
 
 }  // namespace postimpact

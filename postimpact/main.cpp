@@ -2,14 +2,17 @@
 // Usage: README.md, section POST-IMPACT, and `postimpact --help`.
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "postimpact/command_file.h"
 #include "postimpact/compare.h"
 #include "postimpact/quantities.h"
+#include "postimpact/suite.h"
 #include "postimpact/summary.h"
 #include "version.h"
 
@@ -20,6 +23,8 @@ const char* kUsage =
     "       postimpact compare A B [--tol FILE] [--report N]\n"
     "       postimpact summary DATABASE [--printed FILE] [-o FILE]\n"
     "       postimpact compare-summary A.txt B.txt [--tol FILE]\n"
+    "       postimpact suite SUITE [-o OUT] [-j N] [--deck NAME].. [--impact3d PATH]\n"
+    "                        [--no-pictures] [--update | --list | --job NAME|K | --gather]\n"
     "\n"
     "DATABASE is the root file of a d3plot family (d3plot).  With no -c/-e/-o/--sequence/\n"
     "--frames/--history option the default set is written: eps_first.png, eps_middle.png,\n"
@@ -54,6 +59,12 @@ const char* kUsage =
     "energies, cycle count read from --printed FILE, default d3hsp beside DATABASE).\n"
     "compare-summary: two summaries with the tolerances of --tol FILE (lines summary.KEY,\n"
     "summary.FIELD, FIELD, default, most specific first; field cycles too).\n"
+    "suite: runs every deck of SUITE/decks (N at a time, default the cores), compares each with\n"
+    "its reference (SUITE/reference/NAME/d3plot or SUITE/summaries/NAME.txt) with the\n"
+    "tolerances of SUITE/tolerances.txt (+ SUITE/tolerances/NAME.txt), writes OUT/junit.xml and\n"
+    "OUT/report.html (OUT default suite_out); --job NAME|K runs one deck (K from 1, e.g.\n"
+    "$SLURM_ARRAY_TASK_ID) and --gather writes the reports of jobs run so; --list prints the\n"
+    "decks; --update stores each run as its deck's reference.  Exit 1: a deck failed.\n"
     "Exit status: 0 done (compare, compare-summary: same within tolerance), 1 different,\n"
     "2 usage, input or rendering error.\n";
 
@@ -140,6 +151,69 @@ int run_compare_summary(int argc, char** argv) {
     return postimpact::compare_summaries(a, b, tol, std::cout, pos[0], pos[1]);
 }
 
+int run_suite_command(int argc, char** argv) {
+    postimpact::SuiteOptions opt;
+    std::string job;
+    bool list = false, gather = false;
+    for (int i = 2; i < argc; ++i) {
+        const std::string a = argv[i];
+        auto value = [&]() -> std::string {
+            if (i + 1 >= argc) throw std::runtime_error("option " + a + " needs a value");
+            return argv[++i];
+        };
+        if (a == "-o" || a == "--outdir") opt.outdir = value();
+        else if (a == "-j" || a == "--jobs") {
+            const std::string v = value();
+            char* end = nullptr;
+            const long n = std::strtol(v.c_str(), &end, 10);
+            if (v.empty() || *end != '\0' || n < 1 || n > 4096) throw std::runtime_error("-j: expected a count 1..4096, found '" + v + "'");
+            opt.jobs = static_cast<int>(n);
+        } else if (a == "--deck") opt.decks.push_back(value());
+        else if (a == "--impact3d") opt.impact3d = value();
+        else if (a == "--job") job = value();
+        else if (a == "--no-pictures") opt.pictures = false;
+        else if (a == "--update") opt.update = true;
+        else if (a == "--list") list = true;
+        else if (a == "--gather") gather = true;
+        else if (!a.empty() && a[0] == '-') {
+            std::cerr << "postimpact suite: unknown option " << a << "\n" << kUsage;
+            return 2;
+        } else if (opt.suite.empty()) opt.suite = a;
+        else {
+            std::cerr << "postimpact suite: unexpected argument " << a << "\n" << kUsage;
+            return 2;
+        }
+    }
+    if (opt.suite.empty()) {
+        std::cerr << "postimpact suite: no suite folder given\n" << kUsage;
+        return 2;
+    }
+    if (static_cast<int>(list) + static_cast<int>(gather) + static_cast<int>(!job.empty()) > 1) {
+        std::cerr << "postimpact suite: --list, --job and --gather exclude one another\n";
+        return 2;
+    }
+    const auto decks = postimpact::list_suite(opt.suite);
+    if (list) {
+        for (const auto& d : decks) std::cout << d.name << "\n";
+        return 0;
+    }
+    if (!job.empty()) {
+        const postimpact::SuiteDeck* d = nullptr;
+        char* end = nullptr;
+        const long k = std::strtol(job.c_str(), &end, 10);
+        if (*end == '\0' && k >= 1 && k <= static_cast<long>(decks.size())) d = &decks[static_cast<std::size_t>(k - 1)];
+        for (const auto& x : decks)
+            if (x.name == job) d = &x;
+        if (!d) throw std::runtime_error("--job " + job + ": no such deck (a name, or a number 1.." + std::to_string(decks.size()) + ")");
+        return postimpact::run_suite_deck(opt, *d, std::cout);
+    }
+    if (gather) return postimpact::gather_suite(opt, std::cout);
+    std::error_code ec;
+    opt.self = std::filesystem::read_symlink("/proc/self/exe", ec).string();
+    if (ec || opt.self.empty()) opt.self = argv[0];
+    return postimpact::run_suite(opt, std::cout);
+}
+
 std::vector<std::string> split_commas(const std::string& s) {
     std::vector<std::string> out;
     std::string cur;
@@ -168,6 +242,14 @@ int main(int argc, char** argv) {
             return summary ? run_summary(argc, argv) : run_compare_summary(argc, argv);
         } catch (const std::exception& e) {
             std::cerr << "postimpact " << argv[1] << ": " << e.what() << "\n";
+            return 2;
+        }
+    }
+    if (argc >= 2 && std::strcmp(argv[1], "suite") == 0) {
+        try {
+            return run_suite_command(argc, argv);
+        } catch (const std::exception& e) {
+            std::cerr << "postimpact suite: " << e.what() << "\n";
             return 2;
         }
     }
