@@ -30,14 +30,16 @@ using namespace impact3d;
 namespace {
 
 const char* kUsage =
-    "usage: impact3d i=DECK [o=PRINTED] [g=PLOTDB] [d=DUMP] [ncpu=N] [plotwords=4|8] [x=N] [--check]\n"
-    "       impact3d r=DUMP [o=PRINTED] [g=PLOTDB] [d=DUMP] [ncpu=N]\n"
+    "usage: impact3d i=DECK [o=PRINTED] [g=PLOTDB] [d=DUMP] [s=INTFOR] [ncpu=N] [plotwords=4|8] [x=N] [--check]\n"
+    "       impact3d r=DUMP [o=PRINTED] [g=PLOTDB] [d=DUMP] [s=INTFOR] [ncpu=N]\n"
     "       impact3d --help | --version | --messages\n"
     "\n"
     "  i=DECK     input deck: DYNA3D fixed format or LS-DYNA keyword (chosen by content)\n"
     "  o=FILE     printed output file (default d3hsp)\n"
     "  g=FILE     plot database root name (default d3plot)\n"
     "  d=FILE     restart dump root: dumps are FILE01, FILE02, ... (default d3dump)\n"
+    "  s=FILE     interface-force database root (*DATABASE_BINARY_INTFOR; default intfor\n"
+    "             beside the plot database)\n"
     "  r=FILE     restart from this dump (the deck is inside it; o= and g= default to the\n"
     "             names of the run that wrote it)\n"
     "  plotwords=N  4 (default) or 8 byte words in the plot and time-history databases\n"
@@ -137,7 +139,7 @@ int run_main(int argc, char** argv) {
   InputOptions input_opt;
   std::string write_keyword, write_fixed;
   bool printed_given = false, plot_given = false, dump_given = false, words_given = false,
-       x_given = false;
+       x_given = false, intfor_given = false;
   Diagnostics cmd;
   for (int a = 1; a < argc; ++a) {
     std::string arg = argv[a];
@@ -181,6 +183,9 @@ int run_main(int argc, char** argv) {
     } else if (const char* v = value("g=")) {
       opt.plot = v;
       plot_given = true;
+    } else if (const char* v = value("s=")) {
+      opt.intfor = v;
+      intfor_given = true;
     } else if (const char* v = value("d=")) {
       opt.dump = v;
       dump_given = true;
@@ -244,6 +249,7 @@ int run_main(int argc, char** argv) {
     if (!printed_given) opt.printed = h.printed;
     if (!plot_given) opt.plot = h.plot_root;
     if (!dump_given && !h.dump_root.empty()) opt.dump = h.dump_root;
+    if (!intfor_given && !h.intfor_root.empty()) opt.intfor = h.intfor_root;
     opt.plot_word_size = h.plot_word_size;
     opt.member_size_factor = h.member_size_factor;
     opt.deck = h.deck_name;
@@ -270,6 +276,7 @@ int run_main(int argc, char** argv) {
     if (!printed_given) opt.printed = (dir / std::filesystem::path(opt.printed).filename()).string();
     if (!plot_given) opt.plot = (dir / std::filesystem::path(opt.plot).filename()).string();
     if (!dump_given) opt.dump = (dir / std::filesystem::path(opt.dump).filename()).string();
+    if (!intfor_given && !opt.intfor.empty()) opt.intfor = (dir / std::filesystem::path(opt.intfor).filename()).string();
   }
   std::ofstream printed;
   if (!check_only) {

@@ -40,6 +40,8 @@ struct Surface {
   std::vector<double> pmax;            // largest accepted penetration
   std::vector<int> elem;               // the solid each segment is a face of (-1: none found)
   std::vector<int> nodes;              // sorted, unique
+  std::vector<std::array<int, 4>> local;  // per segment: its nodes' indices in `nodes`
+  std::vector<double> node_force;      // 3 per node: contact force of the last apply() (intfor sides only)
 };
 
 // Bucket grid over the segments of one surface.
@@ -140,7 +142,18 @@ void build_surface(const State& s, const std::vector<std::array<int, 4>>& segs, 
   }
   std::sort(sf.nodes.begin(), sf.nodes.end());
   sf.nodes.erase(std::unique(sf.nodes.begin(), sf.nodes.end()), sf.nodes.end());
+  sf.local.resize(ns);
+  for (std::size_t j = 0; j < ns; ++j)
+    for (int a = 0; a < 4; ++a)
+      sf.local[j][std::size_t(a)] =
+          int(std::lower_bound(sf.nodes.begin(), sf.nodes.end(), segs[j][std::size_t(a)]) - sf.nodes.begin());
 }
+
+// A force transducer: node flags (bit 1 side A, bit 2 side B) over the model's nodes.
+struct Transducer {
+  std::vector<std::uint8_t> flag;
+  bool has_b = false;
+};
 
 void allocate_grid(std::size_t nseg, Grid& g) {
   g.box.assign(6 * nseg, 0.0);
@@ -249,6 +262,7 @@ double elastic_step(const State& s, double tssf) {
 
 struct SlidingInterfaces::Impl {
   std::vector<Interface> ifaces;
+  std::vector<Transducer> transducers;
   std::vector<std::array<double, 3>> forces;
   std::vector<int> contact_nodes;    // union of all surface nodes, sorted
   std::vector<double> cur, prev;     // 3 per node: contact force this cycle / last cycle
@@ -408,7 +422,22 @@ void SlidingInterfaces::initialize(const Model& m, const State& s) {
   }
   std::sort(im.contact_nodes.begin(), im.contact_nodes.end());
   im.contact_nodes.erase(std::unique(im.contact_nodes.begin(), im.contact_nodes.end()), im.contact_nodes.end());
-  im.forces.assign(m.interfaces.size(), {0.0, 0.0, 0.0});
+  // the sides the interface-force database writes record their nodal forces
+  if (m.control.intfor_interval >= 0)
+    for (std::size_t i = 0; i < m.interfaces.size(); ++i)
+      for (int sd = 0; sd < 2; ++sd)
+        if (sd == 0 ? m.interfaces[i].intfor_slave : m.interfaces[i].intfor_master)
+          im.ifaces[i].surf[sd].node_force.assign(3 * im.ifaces[i].surf[sd].nodes.size(), 0.0);
+  im.transducers.resize(m.force_transducers.size());
+  for (std::size_t t = 0; t < m.force_transducers.size(); ++t) {
+    const ForceTransducer& d = m.force_transducers[t];
+    Transducer& tr = im.transducers[t];
+    tr.flag.assign(std::size_t(s.nn), 0);
+    tr.has_b = d.has_b;
+    for (int n : d.a_nodes) tr.flag[std::size_t(n)] |= 1;
+    for (int n : d.b_nodes) tr.flag[std::size_t(n)] |= 2;
+  }
+  im.forces.assign(m.interfaces.size() + m.force_transducers.size(), {0.0, 0.0, 0.0});
   im.cur.assign(3 * std::size_t(s.nn), 0.0);
   im.prev.assign(3 * std::size_t(s.nn), 0.0);
   im.vpred.assign(3 * std::size_t(s.nn), 0.0);
@@ -434,9 +463,12 @@ void SlidingInterfaces::apply(const Model& m, State& s, double dt) {
   im.max_pen = 0;
   im.stats = SearchStats{};
   const double dt_k = im.any_max_stable ? std::max(dt, elastic_step(s, im.tssf)) : dt;
+  const std::size_t nif = im.ifaces.size();
+  for (std::size_t t = 0; t < im.transducers.size(); ++t) im.forces[nif + t] = {0.0, 0.0, 0.0};
   // 2. every interface, every pass
   for (std::size_t i = 0; i < im.ifaces.size(); ++i) {
     Interface& in = im.ifaces[i];
+    for (Surface& sf : in.surf) std::fill(sf.node_force.begin(), sf.node_force.end(), 0.0);
     std::array<double, 3> fres{0.0, 0.0, 0.0};
     for (int p = 0; p < in.npass; ++p) {
       Pass& ps = in.pass[p];
@@ -465,6 +497,32 @@ void SlidingInterfaces::apply(const Model& m, State& s, double dt) {
           for (int a = 0; a < 3; ++a) im.cur[3 * kb + std::size_t(a)] += fa[b][a];
         }
         for (int a = 0; a < 3; ++a) fres[std::size_t(a)] += sign * h.f[a];
+        // the interface-force database: the force on each node of a recorded side
+        if (double* fn = nodes_sf.node_force.empty() ? nullptr : &in.surf[ps.node_side].node_force[3 * q])
+          for (int a = 0; a < 3; ++a) fn[a] += h.f[a];
+        if (!segs.node_force.empty()) {
+          Surface& ss = in.surf[ps.seg_side];
+          for (int b = 0; b < 4; ++b)
+            for (int a = 0; a < 3; ++a)
+              ss.node_force[3 * std::size_t(ss.local[std::size_t(h.seg)][std::size_t(b)]) + std::size_t(a)] += fa[b][a];
+        }
+        // force transducers: the forces on their side-A nodes (from side B only, when given:
+        // the node's force counts when its segment is all in B, the segment's when the node is)
+        for (std::size_t t = 0; t < im.transducers.size(); ++t) {
+          const Transducer& tr = im.transducers[t];
+          auto& ft = im.forces[nif + t];
+          if (tr.flag[k] & 1) {
+            bool from_b = true;
+            if (tr.has_b)
+              for (int b = 0; b < 4; ++b) from_b = from_b && (tr.flag[std::size_t(sg[std::size_t(b)])] & 2);
+            if (from_b)
+              for (int a = 0; a < 3; ++a) ft[std::size_t(a)] += h.f[a];
+          }
+          if (!tr.has_b || (tr.flag[k] & 2))
+            for (int b = 0; b < 4; ++b)
+              if (tr.flag[std::size_t(sg[std::size_t(b)])] & 1)
+                for (int a = 0; a < 3; ++a) ft[std::size_t(a)] += fa[b][a];
+        }
       }
     }
     im.forces[i] = fres;
@@ -513,6 +571,12 @@ bool SlidingInterfaces::empty() const { return impl_->ifaces.empty(); }
 
 const std::vector<std::array<double, 3>>& SlidingInterfaces::interface_forces() const {
   return impl_->forces;
+}
+const std::vector<int>& SlidingInterfaces::surface_nodes(std::size_t i, int side) const {
+  return impl_->ifaces[i].surf[side].nodes;
+}
+const std::vector<double>& SlidingInterfaces::surface_node_forces(std::size_t i, int side) const {
+  return impl_->ifaces[i].surf[side].node_force;
 }
 double SlidingInterfaces::max_penetration() const { return impl_->max_pen; }
 SlidingInterfaces::SearchStats SlidingInterfaces::search_stats() const { return impl_->stats; }

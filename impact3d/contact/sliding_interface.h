@@ -29,7 +29,17 @@ class SlidingInterfaces {
   // Resultant force on the slave side of each interface in the last apply() (the master side
   // takes the opposite): normal and friction parts of both passes.  For the interface-force
   // file.
+  // Then one entry per force transducer (*CONTACT_FORCE_TRANSDUCER_PENALTY, Model::
+  // force_transducers, after the interfaces): the contact force the interfaces put on the nodes
+  // of its side A (only the forces between A and B when it has a side B).  Transducers apply
+  // nothing; their sums are taken in the fixed scatter order (same bits for any thread count).
   const std::vector<std::array<double, 3>>& interface_forces() const;
+  // The interface-force database (intfor): the sorted nodes of side `side` (0 slave, 1 master) of
+  // interface i, and the contact force on each of them in the last apply() (3 per node, both
+  // passes).  Recorded only for the sides the model writes (SlidingInterface::intfor_slave /
+  // intfor_master with Model::control.intfor_interval >= 0); empty otherwise.
+  const std::vector<int>& surface_nodes(std::size_t i, int side) const;
+  const std::vector<double>& surface_node_forces(std::size_t i, int side) const;
   // Largest penetration (over all interfaces and both passes) found in the last apply().
   double max_penetration() const;
   // Search statistics of the last apply(): nodes searched, (node, segment) closest-point

@@ -123,6 +123,7 @@ class KeywordWriter {
     }
     if (k.restart_dump_cycles > 0) os_ << "*DATABASE_BINARY_D3DUMP\n$#    cycl\n" << kcard({I(k.restart_dump_cycles)}) << "\n";
     if (k.running_restart_cycles > 0) os_ << "*DATABASE_BINARY_RUNRSF\n$#    cycl\n" << kcard({I(k.running_restart_cycles)}) << "\n";
+    if (k.intfor_interval >= 0) os_ << "*DATABASE_BINARY_INTFOR\n$#      dt\n" << kcard({R(k.intfor_interval)}) << "\n";
     // IMPACT-3D fields with no LS-DYNA equivalent travel in *COMMENT, which LS-DYNA ignores
     std::string extra;
     if (k.interface_segments_out != 0) extra += "IMPACT-3D INTERFACE_SEGMENTS " + std::to_string(k.interface_segments_out) + "\n";
@@ -471,12 +472,23 @@ class KeywordWriter {
       int a = segment_set(si.slave), b = segment_set(si.master);
       if (si.type != 3) note("sliding interface type " + std::to_string(si.type) + " written as type 3");
       os_ << (si.symmetric ? "*CONTACT_SURFACE_TO_SURFACE\n" : "*CONTACT_NODES_TO_SURFACE\n");
-      os_ << "$#   surfa     surfb  surfatyp  surfbtyp\n" << kcard({I(a), I(b), I(0), I(0)}) << "\n";
+      if (si.intfor_slave || si.intfor_master)
+        os_ << "$#   surfa     surfb  surfatyp  surfbtyp   saboxid   sbboxid      sapr      sbpr\n"
+            << kcard({I(a), I(b), I(0), I(0), I(0), I(0), I(si.intfor_slave ? 1 : 0), I(si.intfor_master ? 1 : 0)}) << "\n";
+      else
+        os_ << "$#   surfa     surfb  surfatyp  surfbtyp\n" << kcard({I(a), I(b), I(0), I(0)}) << "\n";
       os_ << "$#      fs        fd        dc\n" << kcard({R(si.fs), R(si.fd), R(si.decay)}) << "\n";
       double s = si.penalty_scale == 0 ? 1.0 : scale_factor(si.penalty_scale, m_.control.penalty_scale);
       if (si.penalty_scale != 0 && s == 1.0) note("sliding interface penalty scale equal to the control value: written as the default");
       os_ << "$#    sfsa      sfsb\n" << kcard({R(s), R(s)}) << "\n";
       os_ << "$#    soft\n" << kcard({I(si.stiffness_method)}) << "\n";
+    }
+    // force transducers: their sides as node sets (SURFATYP / SURFBTYP 4)
+    for (const ForceTransducer& ft : m_.force_transducers) {
+      const int a = node_set(ft.a_nodes), b = ft.has_b ? node_set(ft.b_nodes) : 0;
+      if (ft.id != 0) os_ << "*CONTACT_FORCE_TRANSDUCER_PENALTY_ID\n$#     cid\n" << kcard({I(ft.id)}) << "\n";
+      else os_ << "*CONTACT_FORCE_TRANSDUCER_PENALTY\n";
+      os_ << "$#   surfa     surfb  surfatyp  surfbtyp\n" << kcard({I(a), I(b), I(4), I(ft.has_b ? 4 : 0)}) << "\n";
     }
   }
 };
@@ -555,6 +567,10 @@ void write_fixed_deck(std::ostream& os, const Model& m, std::vector<std::string>
     notes->push_back("prescribed motions of rigid bodies have no fixed-format card: not written");
   if (!m.rigid_body_loads.empty() && notes) notes->push_back("rigid-body loads have no fixed-format card: not written");
   if (m.damping.active && notes) notes->push_back("global mass damping (*DAMPING_GLOBAL) has no fixed-format card: not written");
+  if (!m.force_transducers.empty() && notes)
+    notes->push_back("force transducers (*CONTACT_FORCE_TRANSDUCER_PENALTY) have no fixed-format card: not written");
+  if (m.control.intfor_interval >= 0 && notes)
+    notes->push_back("the interface-force database (*DATABASE_BINARY_INTFOR, SAPR/SBPR) has no fixed-format card: not written");
   std::array<int, 3> base = {-1, -1, -1};  // body load written as each axis's base acceleration
   for (std::size_t j = 0; j < m.body_loads.size(); ++j) {
     const auto& d = m.body_loads[j].dir;
@@ -943,7 +959,17 @@ std::vector<std::string> model_differences(const Model& a, const Model& b, int m
     N(s + "symmetric", x.symmetric, y.symmetric);
     if (x.slave != y.slave) diff(s + "slave segments", std::to_string(x.slave.size()), std::to_string(y.slave.size()));
     if (x.master != y.master) diff(s + "master segments", std::to_string(x.master.size()), std::to_string(y.master.size()));
+    N(s + "intfor slave side", x.intfor_slave, y.intfor_slave);
+    N(s + "intfor master side", x.intfor_master, y.intfor_master);
   }
+  N("force transducers", long(a.force_transducers.size()), long(b.force_transducers.size()));
+  for (std::size_t i = 0; i < std::min(a.force_transducers.size(), b.force_transducers.size()); ++i) {
+    const ForceTransducer &x = a.force_transducers[i], &y = b.force_transducers[i];
+    std::string s = "force transducer " + std::to_string(i + 1) + " ";
+    if (x.a_nodes != y.a_nodes) diff(s + "side A nodes", std::to_string(x.a_nodes.size()), std::to_string(y.a_nodes.size()));
+    if (x.b_nodes != y.b_nodes || x.has_b != y.has_b) diff(s + "side B nodes", std::to_string(x.b_nodes.size()), std::to_string(y.b_nodes.size()));
+  }
+  D("interface-force database interval", a.control.intfor_interval, b.control.intfor_interval);
   // loads and prescribed motions: what acts (curve values, directions, effective scales)
   auto curve_differs = [&](const std::string& w, int ca, int cb) {
     const LoadCurve &x = a.load_curves[std::size_t(ca)], &y = b.load_curves[std::size_t(cb)];

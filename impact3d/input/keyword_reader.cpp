@@ -472,6 +472,9 @@ struct RContact {
   double fs = 0, fd = 0, dc = 0;
   double sfsa = 1;
   int soft = 0;
+  bool sapr = false, sbpr = false;  // SAPR / SBPR = 1: the side goes to the intfor database
+  bool transducer = false;          // *CONTACT_FORCE_TRANSDUCER_PENALTY
+  int cid = 0;                      // _ID: the contact id
   Ref ref;
   std::string keyword;
 };
@@ -1199,7 +1202,7 @@ class KeywordReader {
     static const std::set<std::string> titled = {
         "SECTION_SOLID", "SECTION_SHELL", "HOURGLASS", "DEFINE_CURVE", "SET_NODE_LIST", "SET_NODE", "SET_PART_LIST",
         "SET_PART", "SET_SEGMENT", "SET_NODE_LIST_GENERATE", "CONTACT_SURFACE_TO_SURFACE",
-        "CONTACT_AUTOMATIC_SURFACE_TO_SURFACE", "CONTACT_NODES_TO_SURFACE",
+        "CONTACT_AUTOMATIC_SURFACE_TO_SURFACE", "CONTACT_NODES_TO_SURFACE", "CONTACT_FORCE_TRANSDUCER_PENALTY",
         // issue 16: sets, boxes, coordinate systems
         "SET_NODE_ADD", "SET_NODE_GENERAL", "SET_NODE_LIST_GENERATE_INCREMENT", "SET_PART_ADD",
         "SET_PART_LIST_GENERATE", "SET_PART_LIST_GENERATE_INCREMENT", "SET_SOLID", "SET_SOLID_LIST",
@@ -1210,7 +1213,7 @@ class KeywordReader {
         "DEFINE_VECTOR_NODES", "DEFINE_TRANSFORMATION", "MAT_ADD_EROSION"};
     static const std::set<std::string> with_id = {
         "RIGIDWALL_PLANAR", "RIGIDWALL_PLANAR_MOVING", "CONTACT_SURFACE_TO_SURFACE", "CONTACT_AUTOMATIC_SURFACE_TO_SURFACE",
-        "CONTACT_NODES_TO_SURFACE", "BOUNDARY_SPC_NODE", "BOUNDARY_SPC_SET",
+        "CONTACT_NODES_TO_SURFACE", "CONTACT_FORCE_TRANSDUCER_PENALTY", "BOUNDARY_SPC_NODE", "BOUNDARY_SPC_SET",
         "BOUNDARY_PRESCRIBED_MOTION_NODE", "BOUNDARY_PRESCRIBED_MOTION_SET", "BOUNDARY_PRESCRIBED_MOTION_RIGID",
         "LOAD_SEGMENT", "LOAD_SEGMENT_SET"};
     if (ends("_TITLE") && (titled.count(n.substr(0, n.size() - 6)) || find_material_type_by_keyword(n.substr(0, n.size() - 6)))) {
@@ -1384,6 +1387,18 @@ bool is_ascii_database(const std::string& n) {
       } else if (n == "CONTACT_SURFACE_TO_SURFACE" || n == "CONTACT_AUTOMATIC_SURFACE_TO_SURFACE" ||
                  n == "CONTACT_NODES_TO_SURFACE") {
         parse_contact(b, n != "CONTACT_NODES_TO_SURFACE");
+      } else if (n == "CONTACT_FORCE_TRANSDUCER_PENALTY") {
+        parse_contact(b, false, true);
+      } else if (n == "DATABASE_BINARY_INTFOR") {
+        // the interface-force database (written with s=, default intfor beside g=)
+        once(b);
+        m_.control.intfor_interval = 0;
+        if (!b.data.empty()) {
+          KCard c = card(b, 0, "card 1", W(b, 5));
+          m_.control.intfor_interval = c.r(0, "DT");
+          if (m_.control.intfor_interval < 0) c.error(1221, 0, "DT");
+          if (!c.blank(1) && c.i(1, "LCDT") != 0) c.error(1102, 1, "LCDT", "interface-force interval from a load curve");
+        }
       } else if (n == "DEFINE_CURVE") {
         parse_curve(b);
       } else if (n == "LOAD_NODE_POINT" || n == "LOAD_NODE_SET" || n == "LOAD_RIGID_BODY") {
@@ -2549,12 +2564,17 @@ bool is_ascii_database(const std::string& n) {
     }
   }
 
-  void parse_contact(const Block& b, bool symmetric) {
+  void parse_contact(const Block& b, bool symmetric, bool transducer = false) {
     std::size_t k = skip_option_card(b);
     if (k >= b.data.size()) { missing_card(b, "card 1"); return; }
     RContact ct;
     ct.symmetric = symmetric;
+    ct.transducer = transducer;
     ct.keyword = b.keyword;
+    if (b.id_opt && k == 1) {
+      KCard ci = card(b, 0, "ID card", W(b, 1));
+      ct.cid = int(ci.i(0, "CID"));
+    }
     KCard c = card(b, k, "card 1", W(b, 8));
     ct.ref = c.ref(0);
     ct.a.id = int(c.i(0, "SURFA"));
@@ -2569,12 +2589,13 @@ bool is_ascii_database(const std::string& n) {
     ct.b.boxid = int(c.i(5, "SBBOXID"));
     ct.a.box_ref = c.ref(4);
     ct.b.box_ref = c.ref(5);
-    c.i(6, "SAPR");
-    c.i(7, "SBPR");
+    ct.sapr = c.i(6, "SAPR") == 1;
+    ct.sbpr = c.i(7, "SBPR") == 1;
     bool ok_a = ct.a.type == 0 || ct.a.type == 2 || ct.a.type == 3 || (ct.a.type == 4 && !symmetric);
     bool ok_b = ct.b.type == 0 || ct.b.type == 2 || ct.b.type == 3;
     if (!ok_a) c.error(1104, 2, "SURFATYP", symmetric ? "0 segment set, 2 part set, 3 part" : "0 segment set, 2 part set, 3 part, 4 node set");
-    if (!ok_b) c.error(1104, 3, "SURFBTYP", "0 segment set, 2 part set, 3 part");
+    if (!ok_b && !(transducer && ct.b.type == 4)) c.error(1104, 3, "SURFBTYP", transducer ? "0 segment set, 2 part set, 3 part, 4 node set" : "0 segment set, 2 part set, 3 part");
+    if (transducer && (ct.sapr || ct.sbpr)) c.error(2006, ct.sapr ? 6 : 7, ct.sapr ? "SAPR" : "SBPR", "a force transducer has no contact segments in the interface-force database");
     if (k + 1 < b.data.size()) {
       KCard c2 = card(b, k + 1, "card 2", W(b, 8));
       ct.fs = c2.r(0, "FS");
@@ -4362,6 +4383,31 @@ bool is_ascii_database(const std::string& n) {
 
   void resolve_contacts() {
     for (const RContact& c : contacts_) {
+      if (c.transducer) {
+        // side A (and B): the nodes of the segments, or of the node set
+        ForceTransducer ft;
+        ft.id = c.cid;
+        ft.line = c.ref.line ? c.ref.line->number : 0;
+        for (int sd = 0; sd < 2; ++sd) {
+          const RSide& side = sd == 0 ? c.a : c.b;
+          if (sd == 1 && side.id == 0) break;  // no side B: every contact force on A
+          std::vector<int>& nodes = sd == 0 ? ft.a_nodes : ft.b_nodes;
+          if (side.type == 4 && side.boxid == 0) {
+            if (const RIdList* s = find_node_set(side.id, side.id_ref, c.keyword, sd == 0 ? "SURFA" : "SURFB"))
+              nodes = set_nodes(*s, "*SET_NODE_LIST " + std::to_string(side.id));
+          } else {
+            std::vector<std::array<int, 4>> segs;
+            std::vector<int> lines, files;
+            resolve_side(side, sd == 0, c.keyword, segs, lines, files);
+            for (const auto& sg : segs) nodes.insert(nodes.end(), sg.begin(), sg.end());
+          }
+          std::sort(nodes.begin(), nodes.end());
+          nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+          if (sd == 1) ft.has_b = true;
+        }
+        m_.force_transducers.push_back(std::move(ft));
+        continue;
+      }
       SlidingInterface si;
       si.type = 3;
       si.fs = c.fs;
@@ -4370,6 +4416,8 @@ bool is_ascii_database(const std::string& n) {
       si.penalty_scale = c.sfsa == 1 ? 0 : c.sfsa * slsfac_;
       si.stiffness_method = c.soft;
       si.symmetric = c.symmetric;
+      si.intfor_slave = c.sapr;
+      si.intfor_master = c.sbpr;
       si.line = c.ref.line ? c.ref.line->number : 0;
       resolve_side(c.a, true, c.keyword, si.slave, si.slave_line, si.slave_file);
       resolve_side(c.b, false, c.keyword, si.master, si.master_line, si.master_file);

@@ -30,6 +30,7 @@ struct ControlData {
   int end_cycle = 0;         // also stop after this many cycles (0: no limit; keyword ENDCYC)
   double th_interval = 0;    // time-history output interval (0 -> end_time / 1000)
   double plot_interval = 0;  // plot-state interval (0 -> end_time / 20)
+  double intfor_interval = -1;  // *DATABASE_BINARY_INTFOR DT: interface-force database interval (< 0: none; 0 -> plot interval)
   int restart_dump_cycles = 0, running_restart_cycles = 0;
   double initial_dt = 0;     // 0 = computed
   double penalty_scale = 0.10;
@@ -123,10 +124,23 @@ struct SlidingInterface {
   double penalty_scale = 0;   // 0 -> control penalty_scale
   int stiffness_method = 0;   // 0 DYNA3D mu K A^2 / V, 1 IMPACT-3D maximum stable
   bool symmetric = true;
+  // *CONTACT card 1 SAPR / SBPR (LS-DYNA's SPR / MPR) = 1: the side's segments go to the
+  // interface-force database (intfor)
+  bool intfor_slave = false, intfor_master = false;
   std::vector<std::array<int, 4>> slave, master;  // 0-based nodes
   std::vector<int> slave_line, master_line;       // deck line of each segment card (messages)
   std::vector<int> slave_file, master_file;       // Model::source_files index of that line (empty: the deck)
   int line = 0;
+};
+
+// *CONTACT_FORCE_TRANSDUCER_PENALTY: a contact that applies no force and measures the contact
+// forces the sliding interfaces put on the nodes of its side A (with a side B: only the forces
+// between A and B).
+struct ForceTransducer {
+  std::vector<int> a_nodes, b_nodes;  // 0-based, sorted, unique; b_nodes empty: no side B
+  bool has_b = false;
+  int id = 0;    // the _ID card's CID (0: none)
+  int line = 0;  // deck line of card 1
 };
 
 struct LoadCurve {
@@ -249,6 +263,9 @@ struct Model {
   std::vector<StoneWall> walls;
   std::vector<InitialVelocity> init_velocities;
   std::vector<SlidingInterface> interfaces;
+  std::vector<ForceTransducer> force_transducers;  // reported after the interfaces (rcforc, globals)
+  // interface-force lines of rcforc and the plot globals: the interfaces, then the transducers
+  int num_interface_outputs() const { return int(interfaces.size() + force_transducers.size()); }
   std::vector<NodalLoad> nodal_loads;
   std::vector<RigidBodyLoad> rigid_body_loads;
   std::vector<PressureLoad> pressure_loads;

@@ -42,7 +42,7 @@ void HistoryOutput::open(const Model& m, const std::string& dir, const std::stri
     for (int n = b[0]; n <= b[1]; ++n) th_nodes_.push_back(n - 1);
   for (const auto& b : m.solid_th_blocks)
     for (int e = b[0]; e <= b[1]; ++e) th_solids_.push_back(e - 1);
-  bool want[kNumAscii] = {true, true, !m.walls.empty(), !m.interfaces.empty(), !th_nodes_.empty(),
+  bool want[kNumAscii] = {true, true, !m.walls.empty(), m.num_interface_outputs() > 0, !th_nodes_.empty(),
                           !th_solids_.empty()};
   for (int k = 0; k < kNumAscii; ++k) {
     if (!want[k]) continue;
@@ -70,6 +70,9 @@ void HistoryOutput::open(const Model& m, const std::string& dir, const std::stri
       if (k == kRcforc)
         std::fprintf(files_[k], " r e s u l t a n t   i n t e r f a c e   f o r c e s  (force on the slave side; the master side carries the opposite)\n"
                                 "        time  interface#        x-force        y-force        z-force\n");
+      if (k == kRcforc && !m.force_transducers.empty())
+        std::fprintf(files_[k], " (interfaces 1-%zu: sliding interfaces; %zu-%zu: force transducers, the force on their side A)\n",
+                     m.interfaces.size(), m.interfaces.size() + 1, m.interfaces.size() + m.force_transducers.size());
     }
   }
   // binary time histories: the solids' nodes plus the listed nodes, in deck order
@@ -86,7 +89,7 @@ void HistoryOutput::open(const Model& m, const std::string& dir, const std::stri
     g.title = m.title;
     g.num_materials = int(m.materials.size());
     g.num_rigid_walls = int(m.walls.size());
-    g.num_interfaces = int(m.interfaces.size());
+    g.num_interfaces = m.num_interface_outputs();
     for (int n : nodes) {
       g.x0.insert(g.x0.end(), {m.x[std::size_t(n)], m.y[std::size_t(n)], m.z[std::size_t(n)]});
       g.node_user_ids.push_back(m.node_id(n));

@@ -13,7 +13,7 @@ PlotGeometry make_plot_geometry(const Model& m) {
   g.title = m.title;
   g.num_materials = int(m.materials.size());
   g.num_rigid_walls = int(m.walls.size());
-  g.num_interfaces = int(m.interfaces.size());
+  g.num_interfaces = m.num_interface_outputs();  // interfaces, then force transducers
   g.x0.resize(std::size_t(3) * m.num_nodes());
   for (int i = 0; i < m.num_nodes(); ++i) {
     g.x0[std::size_t(3 * i)] = m.x[std::size_t(i)];
@@ -111,8 +111,10 @@ void fill_plot_globals(const Model& m, const State& s, const InterfaceForces& if
   }
   // sliding interfaces: resultant force on the slave side, x y z (as rcforc); zero before the
   // first contact pass
-  ps.interface_forces.assign(3 * m.interfaces.size(), 0.0);
-  for (std::size_t i = 0; i < m.interfaces.size() && i < iface.size(); ++i)
+  // first pass; then the force transducers' measured forces
+  const std::size_t nif = std::size_t(m.num_interface_outputs());
+  ps.interface_forces.assign(3 * nif, 0.0);
+  for (std::size_t i = 0; i < nif && i < iface.size(); ++i)
     for (std::size_t a = 0; a < 3; ++a) ps.interface_forces[3 * i + a] = iface[i][a] + 0.0;
 }
 
@@ -227,6 +229,167 @@ void PlotOutput::resume(const Model& m, const std::string& root, int word_size,
 
 void PlotOutput::write(const Model& m, const State& s, const InterfaceForces& iface) {
   fill_plot_state(m, s, iface, ps_);
+  writer_.write_state(ps_);
+  last_time_ = s.time;
+}
+
+// ---- the interface-force database (intfor)
+
+bool IntforOutput::wanted(const Model& m) {
+  if (m.control.intfor_interval < 0) return false;
+  for (const SlidingInterface& si : m.interfaces)
+    if (si.intfor_slave || si.intfor_master) return true;
+  return false;
+}
+
+PlotGeometry IntforOutput::make_geometry(const Model& m) {
+  PlotGeometry g;
+  g.title = m.title;
+  g.num_interfaces = m.num_interface_outputs();
+  std::vector<int> nodes;
+  for (const SlidingInterface& si : m.interfaces)
+    for (int sd = 0; sd < 2; ++sd)
+      if (sd == 0 ? si.intfor_slave : si.intfor_master)
+        for (const auto& sg : sd == 0 ? si.slave : si.master) nodes.insert(nodes.end(), sg.begin(), sg.end());
+  std::sort(nodes.begin(), nodes.end());
+  nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+  for (int n : nodes) {
+    g.x0.insert(g.x0.end(), {m.x[std::size_t(n)], m.y[std::size_t(n)], m.z[std::size_t(n)]});
+    g.node_user_ids.push_back(m.node_id(n));
+  }
+  auto local = [&](int n) { return int(std::lower_bound(nodes.begin(), nodes.end(), n) - nodes.begin()); };
+  for (std::size_t i = 0; i < m.interfaces.size(); ++i)
+    for (int sd = 0; sd < 2; ++sd) {
+      const SlidingInterface& si = m.interfaces[i];
+      if (!(sd == 0 ? si.intfor_slave : si.intfor_master)) continue;
+      ++g.num_materials;
+      g.part_titles.push_back("interface " + std::to_string(i + 1) + (sd == 0 ? " slave side" : " master side"));
+      for (const auto& sg : sd == 0 ? si.slave : si.master) {
+        for (int n : sg) g.shell_nodes.push_back(local(n));
+        g.shell_material.push_back(g.num_materials);
+        g.shell_user_ids.push_back(int(g.shell_user_ids.size()) + 1);
+      }
+    }
+  return g;
+}
+
+void IntforOutput::prepare(const Model& m) {
+  nodes_.clear();
+  for (const SlidingInterface& si : m.interfaces)
+    for (int sd = 0; sd < 2; ++sd)
+      if (sd == 0 ? si.intfor_slave : si.intfor_master)
+        for (const auto& sg : sd == 0 ? si.slave : si.master) nodes_.insert(nodes_.end(), sg.begin(), sg.end());
+  std::sort(nodes_.begin(), nodes_.end());
+  nodes_.erase(std::unique(nodes_.begin(), nodes_.end()), nodes_.end());
+  auto local = [&](int n) { return int(std::lower_bound(nodes_.begin(), nodes_.end(), n) - nodes_.begin()); };
+  sides_.clear();
+  int shell = 0;
+  for (std::size_t i = 0; i < m.interfaces.size(); ++i)
+    for (int sd = 0; sd < 2; ++sd) {
+      const SlidingInterface& si = m.interfaces[i];
+      if (!(sd == 0 ? si.intfor_slave : si.intfor_master)) continue;
+      Side S;
+      S.iface = i;
+      S.side = sd;
+      S.first_shell = shell;
+      std::vector<int> surf;  // the contact surface's nodes (sorted, as SlidingInterfaces keeps them)
+      for (const auto& sg : sd == 0 ? si.slave : si.master) {
+        S.seg.push_back({local(sg[0]), local(sg[1]), local(sg[2]), local(sg[3])});
+        surf.insert(surf.end(), sg.begin(), sg.end());
+      }
+      std::sort(surf.begin(), surf.end());
+      surf.erase(std::unique(surf.begin(), surf.end()), surf.end());
+      for (int n : surf) S.surf_node.push_back(local(n));
+      shell += int(S.seg.size());
+      sides_.push_back(std::move(S));
+    }
+  const std::size_t nn = nodes_.size();
+  area_.assign(nn, 0.0);
+  normal_.assign(3 * nn, 0.0);
+  force_.assign(3 * nn, 0.0);
+  ps_ = PlotState{};
+  ps_.coords.assign(3 * nn, 0.0);
+  ps_.vel.assign(3 * nn, 0.0);
+  ps_.acc.assign(3 * nn, 0.0);
+  ps_.shell_vars.assign(std::size_t(kShellPlotVars) * std::size_t(shell), 0.0);
+  ps_.shell_alive.assign(std::size_t(shell), 1);
+}
+
+void IntforOutput::open(const Model& m, const std::string& root, int word_size, std::int64_t member_words) {
+  prepare(m);
+  writer_.open(root, make_geometry(m), word_size, member_words);
+}
+
+void IntforOutput::resume(const Model& m, const std::string& root, int word_size, std::int64_t member_words,
+                          int keep_states) {
+  prepare(m);
+  writer_.resume(root, make_geometry(m), word_size, member_words, keep_states);
+}
+
+void IntforOutput::write(const Model& m, const State& s, const SlidingInterfaces& contact, const InterfaceForces& iface) {
+  const std::size_t nn = nodes_.size();
+  ps_.time = s.time;
+  const std::size_t nif = std::size_t(m.num_interface_outputs());
+  ps_.interface_forces.assign(3 * nif, 0.0);
+  for (std::size_t i = 0; i < nif && i < iface.size(); ++i)
+    for (std::size_t a = 0; a < 3; ++a) ps_.interface_forces[3 * i + a] = iface[i][a] + 0.0;
+  for (std::size_t k = 0; k < nn; ++k) {
+    const std::size_t n = std::size_t(nodes_[k]);
+    const double x[3] = {s.x[n], s.y[n], s.z[n]}, v[3] = {s.vx[n], s.vy[n], s.vz[n]};
+    for (std::size_t a = 0; a < 3; ++a) {
+      ps_.coords[3 * k + a] = x[a];
+      ps_.vel[3 * k + a] = v[a];
+      ps_.acc[3 * k + a] = 0.0;
+    }
+  }
+  for (const Side& S : sides_) {
+    // this side's nodal forces, tributary areas and normals at the current positions
+    const std::vector<double>& f = contact.surface_node_forces(S.iface, S.side);
+    for (int k : S.surf_node) {
+      area_[std::size_t(k)] = 0.0;
+      for (std::size_t a = 0; a < 3; ++a) normal_[3 * std::size_t(k) + a] = force_[3 * std::size_t(k) + a] = 0.0;
+    }
+    for (std::size_t q = 0; q < S.surf_node.size() && 3 * q + 2 < f.size(); ++q) {
+      const std::size_t k = std::size_t(S.surf_node[q]);
+      for (std::size_t a = 0; a < 3; ++a) {
+        force_[3 * k + a] = f[3 * q + a];
+        ps_.acc[3 * k + a] += f[3 * q + a];
+      }
+    }
+    for (const auto& sg : S.seg) {
+      const double* c[4];
+      for (int j = 0; j < 4; ++j) c[j] = &ps_.coords[3 * std::size_t(sg[std::size_t(j)])];
+      const double d1[3] = {c[2][0] - c[0][0], c[2][1] - c[0][1], c[2][2] - c[0][2]};
+      const double d2[3] = {c[3][0] - c[1][0], c[3][1] - c[1][1], c[3][2] - c[1][2]};
+      const double an[3] = {0.5 * (d1[1] * d2[2] - d1[2] * d2[1]), 0.5 * (d1[2] * d2[0] - d1[0] * d2[2]),
+                            0.5 * (d1[0] * d2[1] - d1[1] * d2[0])};  // area x outward normal
+      for (int j = 0; j < 4; ++j) {
+        const std::size_t k = std::size_t(sg[std::size_t(j)]);
+        area_[k] += 0.25 * std::sqrt(an[0] * an[0] + an[1] * an[1] + an[2] * an[2]);
+        for (std::size_t a = 0; a < 3; ++a) normal_[3 * k + a] += 0.25 * an[a];
+      }
+    }
+    // per segment: the mean of its corners' pressure (compression positive) and shear traction
+    for (std::size_t e = 0; e < S.seg.size(); ++e) {
+      double p = 0, tau = 0;
+      for (int j = 0; j < 4; ++j) {
+        const std::size_t k = std::size_t(S.seg[e][std::size_t(j)]);
+        const double* nv = &normal_[3 * k];
+        const double ln = std::sqrt(nv[0] * nv[0] + nv[1] * nv[1] + nv[2] * nv[2]);
+        if (!(area_[k] > 0) || !(ln > 0)) continue;
+        const double* fk = &force_[3 * k];
+        const double fn = (fk[0] * nv[0] + fk[1] * nv[1] + fk[2] * nv[2]) / ln;  // along the outward normal
+        const double ft[3] = {fk[0] - fn * nv[0] / ln, fk[1] - fn * nv[1] / ln, fk[2] - fn * nv[2] / ln};
+        p += 0.25 * (-fn) / area_[k];
+        tau += 0.25 * std::sqrt(ft[0] * ft[0] + ft[1] * ft[1] + ft[2] * ft[2]) / area_[k];
+      }
+      double* out = &ps_.shell_vars[std::size_t(kShellPlotVars) * (std::size_t(S.first_shell) + e)];
+      for (int layer = 0; layer < 3; ++layer) {
+        out[7 * layer] = out[7 * layer + 1] = out[7 * layer + 2] = -p + 0.0;
+        out[7 * layer + 3] = tau;
+      }
+    }
+  }
   writer_.write_state(ps_);
   last_time_ = s.time;
 }

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "common/plot_database.h"
+#include "impact3d/contact/sliding_interface.h"
 #include "impact3d/model/model.h"
 #include "impact3d/model/state.h"
 
@@ -41,6 +42,49 @@ class PlotOutput {
   double last_time() const { return last_time_; }
 
  private:
+  PlotWriter writer_;
+  PlotState ps_;
+  double last_time_ = -1;
+};
+
+// The interface-force database (*DATABASE_BINARY_INTFOR; file s=, default `intfor` beside the
+// plot database): the d3plot family layout, written with the same PlotWriter (crash-safe states,
+// members), holding the contact segments of the interface sides that ask for it (*CONTACT card 1
+// SAPR / SBPR = 1) as 4-node shells, one part per side.  IMPACT-3D choices (LS-DYNA's own state
+// layout is not public): the nodes are the sides' nodes (deck ids), each state holds their
+// current coordinates, velocities and, in the acceleration words, the contact force on the node
+// (x y z, the sum over the written sides); each segment's shell record holds, in all three
+// layers, sxx = syy = szz = -p (p the contact pressure, so a reader's "pressure" is p) and
+// sxy = the shear traction magnitude; the other words are zero.  Nodal pressure = the normal part
+// of the node's force / its tributary area (a quarter of each of its segments), a segment's the
+// mean of its four corners', so the area-weighted sum over a side is its normal force.  The
+// globals hold the time and the interface (and transducer) forces as the d3plot ones.
+class IntforOutput {
+ public:
+  // Whether the model writes the database: *DATABASE_BINARY_INTFOR and at least one side.
+  static bool wanted(const Model& m);
+  void open(const Model& m, const std::string& root, int word_size, std::int64_t member_words);
+  void resume(const Model& m, const std::string& root, int word_size, std::int64_t member_words,
+              int keep_states);
+  void write(const Model& m, const State& s, const SlidingInterfaces& contact, const InterfaceForces& iface);
+  int states_written() const { return writer_.num_states_written(); }
+  double last_time() const { return last_time_; }
+  // The geometry written (nodes: the sides' nodes; shells: their segments, numbered 1..n side
+  // after side in interface order, slave side first).
+  static PlotGeometry make_geometry(const Model& m);
+
+ private:
+  void prepare(const Model& m);
+  struct Side {
+    std::size_t iface = 0;
+    int side = 0;                         // 0 slave, 1 master
+    std::vector<std::array<int, 4>> seg;  // intfor node indices (0-based)
+    std::vector<int> surf_node;           // the contact surface's node k -> intfor node
+    int first_shell = 0;                  // its first segment's shell index
+  };
+  std::vector<Side> sides_;
+  std::vector<int> nodes_;                // intfor node -> model node
+  std::vector<double> area_, normal_, force_;  // per intfor node: tributary area, 3 normal, 3 force (per side)
   PlotWriter writer_;
   PlotState ps_;
   double last_time_ = -1;

@@ -250,9 +250,25 @@ void write_model_summary(std::ostream& os, const Model& m) {
          << "\n"
          << "     treatment ............................ " << (si.symmetric ? "symmetric (two passes)" : "one pass")
          << "\n";
+      if (si.intfor_slave || si.intfor_master)
+        os << "     interface-force database (intfor) .... "
+           << (si.intfor_slave && si.intfor_master ? "both sides" : si.intfor_slave ? "slave side" : "master side") << "\n";
     }
     os << "\n";
   }
+  if (!m.force_transducers.empty()) {
+    os << " f o r c e   t r a n s d u c e r s\n\n";
+    for (std::size_t t = 0; t < m.force_transducers.size(); ++t) {
+      const ForceTransducer& ft = m.force_transducers[t];
+      os << "   transducer " << t + 1 << " (rcforc interface " << m.interfaces.size() + t + 1 << ")"
+         << (ft.id ? ", id " + std::to_string(ft.id) : std::string()) << ": the contact force on " << ft.a_nodes.size()
+         << " side-A nodes" << (ft.has_b ? " from " + std::to_string(ft.b_nodes.size()) + " side-B nodes" : std::string(" from every interface"))
+         << "; applies no force\n";
+    }
+    os << "\n";
+  }
+  if (m.control.intfor_interval >= 0)
+    os << "     interface-force database interval .... " << fmt("%.4e", m.control.intfor_interval > 0 ? m.control.intfor_interval : m.control.plot_interval) << "\n\n";
   if (!m.init_velocities.empty()) {
     os << " i n i t i a l   v e l o c i t i e s\n\n";
     // Consecutive definitions of one velocity are one line (an *INITIAL_VELOCITY_NODE list of

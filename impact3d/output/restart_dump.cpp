@@ -108,6 +108,7 @@ void write_header_fields(Writer& w, const DumpHeader& h) {
   const OutputCursor& c = h.cursor;
   w(c.next_plot); w(c.next_history); w(c.plot_states); w(c.history_states); w(c.dumps_written);
   for (auto b : c.ascii_bytes) w(b);
+  w(h.intfor_root); w(c.next_intfor); w(c.intfor_states);
 }
 
 void read_header_fields(Reader& r, DumpHeader& h) {
@@ -121,6 +122,7 @@ void read_header_fields(Reader& r, DumpHeader& h) {
   OutputCursor& c = h.cursor;
   r(c.next_plot); r(c.next_history); r(c.plot_states); r(c.history_states); r(c.dumps_written);
   for (auto& b : c.ascii_bytes) r(b);
+  r(h.intfor_root); r(c.next_intfor); r(c.intfor_states);
 }
 
 std::vector<char> read_checked(const std::string& path, std::size_t& payload_start) {

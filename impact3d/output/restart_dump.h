@@ -18,6 +18,8 @@ struct OutputCursor {
   int plot_states = 0;         // plot states to keep in the family on restart
   int history_states = 0;      // time-history (d3thdt) states to keep
   int dumps_written = 0;       // numbered dumps written so far
+  double next_intfor = 0;      // time of the next interface-force database (intfor) state
+  int intfor_states = 0;       // intfor states to keep
   std::uint64_t ascii_bytes[8] = {};  // sizes of the ASCII history files (glstat, ...)
 };
 
@@ -27,6 +29,7 @@ struct DumpHeader {
   std::string plot_root;       // g= of the run that wrote the dump
   std::string printed;         // o= of that run
   std::string dump_root;       // d= of that run
+  std::string intfor_root;     // s= of that run (the interface-force database)
   int plot_word_size = 4;
   int member_size_factor = 7;  // x= of that run
   OutputCursor cursor;
@@ -35,8 +38,9 @@ struct DumpHeader {
 // 1: first format; 2: the sliding interfaces' restart data after the State; 3: d= in the header;
 // 4: x= in the header; 5: the failed-solid flags in the State; 6: moving walls; 8: per-element
 // material history (State::hist) or shells (two branches); 9: both (State::hist and
-// State::shells: stresses, history, rotations).
-constexpr std::uint32_t kDumpVersion = 10;
+// State::shells: stresses, history, rotations); 11: the interface-force database (s=, its
+// cursor) in the header.
+constexpr std::uint32_t kDumpVersion = 11;
 
 // Writes the dump atomically (temporary file, fsync, rename).  Throws std::runtime_error.
 // The contact state (energy books of the sliding interfaces) travels with the State.

@@ -195,6 +195,23 @@ int run_simulation(const Model& model, const RunOptions& opt, std::ostream& prin
                         : "\n E r r o r   t e r m i n a t i o n   (cannot write the output files)");
     return exit_code::file_error;
   }
+  // the interface-force database (*DATABASE_BINARY_INTFOR with SAPR/SBPR sides): s=, default
+  // intfor beside the plot database; its interval DT, else the plot interval
+  IntforOutput intfor;
+  const bool want_intfor = IntforOutput::wanted(model);
+  const double intfor_dt = model.control.intfor_interval > 0 ? model.control.intfor_interval : plot_dt;
+  const std::string intfor_root = !opt.intfor.empty() ? opt.intfor : parent_or_dot(opt.plot) + "/intfor";
+  if (want_intfor) {
+    try {
+      const std::int64_t member_words = std::int64_t(opt.member_size_factor) * 512 * 512;
+      if (restarting) intfor.resume(model, intfor_root, word_size, member_words, cur.intfor_states);
+      else intfor.open(model, intfor_root, word_size, member_words);
+    } catch (const std::exception& ex) {
+      file_error(restarting ? 4006 : 3004, intfor_root, ex.what());
+      log.line("\n E r r o r   t e r m i n a t i o n   (cannot write the output files)");
+      return exit_code::file_error;
+    }
+  }
   try {
     history.open(model, out_dir, out_dir + "/d3thdt", word_size, restarting, cur.ascii_bytes,
                  cur.history_states);
@@ -228,6 +245,18 @@ int run_simulation(const Model& model, const RunOptions& opt, std::ostream& prin
       scheduled_plot_states = plot.states_written();
     }
   };
+  auto write_intfor = [&] {
+    if (!want_intfor || intfor.last_time() == s.time) return;
+    const OutputTimer timer(output_seconds);
+    try {
+      intfor.write(model, s, engine.contact(), engine.interface_forces());
+    } catch (const std::exception& ex) {
+      file_error(4004, intfor_root, ex.what());
+      out_ok = false;
+      return;
+    }
+    cur.next_intfor = (std::floor(s.time / intfor_dt + 1e-9) + 1) * intfor_dt;
+  };
   double last_history_time = -1;
   auto write_history = [&] {
     last_history_time = s.time;
@@ -257,6 +286,8 @@ int run_simulation(const Model& model, const RunOptions& opt, std::ostream& prin
     h.cursor = cur;
     h.cursor.plot_states = scheduled_plot_states;
     h.cursor.history_states = history.thdt_states();
+    h.cursor.intfor_states = intfor.states_written();
+    h.intfor_root = want_intfor ? intfor_root : std::string();
     history.current_sizes(h.cursor.ascii_bytes);
     try {
       write_restart_dump(path, h, s, engine.contact().restart_data());
@@ -273,6 +304,7 @@ int run_simulation(const Model& model, const RunOptions& opt, std::ostream& prin
   if (!restarting && st == StepStatus::ok) {
     write_plot(true);
     write_history();
+    write_intfor();
   }
 
   SenseSwitches switches;
@@ -295,6 +327,7 @@ int run_simulation(const Model& model, const RunOptions& opt, std::ostream& prin
     if (st != StepStatus::ok) break;
     if (s.time >= cur.next_plot * (1 - 1e-9)) write_plot(true);
     if (s.time >= cur.next_history * (1 - 1e-9)) write_history();
+    if (want_intfor && s.time >= cur.next_intfor * (1 - 1e-9)) write_intfor();
     // (a request that lands on a cycle that has just written a state waits one cycle, so the
     // extra state never repeats a time)
     if (g_plot_now && plot.last_time() != s.time) {
@@ -325,12 +358,17 @@ int run_simulation(const Model& model, const RunOptions& opt, std::ostream& prin
   // the final state (normal end) or the last state reached (error termination)
   if (out_ok && !stopped && plot.last_time() != s.time) write_plot(true);
   if (out_ok && !stopped && st == StepStatus::finished && last_history_time != s.time) write_history();
+  if (out_ok && !stopped && st == StepStatus::finished) write_intfor();
   history.flush();
   const double cpu = elapsed();
   {
     char buf[200];
     std::snprintf(buf, sizeof buf, "\n plot database %s: %d state(s) written", opt.plot.c_str(), plot.states_written());
     log.line(buf);
+    if (want_intfor) {
+      std::snprintf(buf, sizeof buf, " interface-force database %s: %d state(s) written", intfor_root.c_str(), intfor.states_written());
+      log.line(buf);
+    }
   }
   log.line("\n energies at the end (time " + std::to_string(s.time) + "):\n" + energy_report(s));
   if (model.control.mass_scaling_dt != 0) log.line(mass_scaling_report(model.control, s));

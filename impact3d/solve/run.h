@@ -14,6 +14,7 @@ struct RunOptions {
   std::string printed = "d3hsp";
   std::string plot = "d3plot";
   std::string dump = "d3dump";
+  std::string intfor;       // s=: the interface-force database root (empty: intfor beside the plot database)
   std::string restart;
   int threads = 0;          // 0 = OpenMP default
   int plot_word_size = 4;   // 4 or 8 byte words in the plot and time-history databases
