@@ -34,13 +34,14 @@ struct alignas(64) HexBlock {
   Lanes bx[8], by[8], bz[8];                    // b = dV/dx / V at the midpoint x^{n-1/2}
   Lanes dvdx[8], dvdy[8], dvdz[8];              // dV/dx at x^n
   Lanes fx[8], fy[8], fz[8];                    // corner forces
-  Lanes v, vm, amax, rho;                       // volume at x^n and midpoint, largest face, density
+  Lanes v, vm, amax, rho, v0;                   // volume at x^n and midpoint, largest face, density, initial volume
   Lanes d[6], w[3], trd;                        // strain rate, spin, trace of d
   Lanes sig[6], old[6], back[6], eps_p, yielded;  // stress (old: at the start of the step)
   Lanes hist[kMaxHistory];                      // the material's history values
   Lanes hgs[12];                                // hourglass resultants (types 4, 5)
   Lanes q, q_old;                               // bulk viscosity
   Lanes de_ie, de_hg, de_bv, dt;                // energy increments, element step
+  Lanes cs;                                     // sound speed per lane (groups with an equation of state)
 };
 
 namespace hex_block_detail {
@@ -285,6 +286,19 @@ inline void calc_hex_hourglass_force_block(HexBlock& k, int type, double qhg, do
 // Element step (calc_hex_time_step) into k.dt.
 inline void calc_hex_time_step_block(HexBlock& k, double c, double q1, double q2) {
   IMPACT3D_FOR_LANES {
+    const double len = k.v[l] / k.amax[l];
+    const double trd = k.trd[l];
+    const double q = trd < 0.0 ? q2 * c + q1 * len * (-trd) : 0.0;
+    const double den = q + std::sqrt(q * q + c * c);
+    const double dt = len / den;
+    k.dt[l] = (k.amax[l] <= 0.0 || den <= 0.0) ? DBL_MAX : dt;
+  }
+}
+
+// The same with a sound speed per lane (k.cs: groups with an equation of state).
+inline void calc_hex_time_step_lanes_block(HexBlock& k, double q1, double q2) {
+  IMPACT3D_FOR_LANES {
+    const double c = k.cs[l];
     const double len = k.v[l] / k.amax[l];
     const double trd = k.trd[l];
     const double q = trd < 0.0 ? q2 * c + q1 * len * (-trd) : 0.0;

@@ -7,6 +7,7 @@
 
 #include "impact3d/element/hexahedron.h"
 #include "impact3d/init/shell_init.h"
+#include "impact3d/material/eos.h"
 #include "impact3d/solve/element_groups.h"
 
 namespace impact3d {
@@ -85,6 +86,12 @@ void init_elements(const Model& m, State& s) {
     // Lumped mass: rho V0 / 8 to each corner (a repeated node of a degenerate element gets
     // its share once per corner).
     for (int j = 0; j < 8; ++j) s.mass[std::size_t(s.conn[std::size_t(e)][std::size_t(j)])] += mc.rho * v / 8;
+    if (mc.eos_form != 0) {  // an equation of state: the initial energy E0 and its pressure
+      const double e0 = m.materials[std::size_t(s.mat[std::size_t(e)])].eos.e0;
+      s.hist[std::size_t(s.hist_stride) * std::size_t(e) + std::size_t(mc.eos_hist)] = e0;
+      const double p0 = calc_eos_initial_pressure(mc, e0);
+      for (int c = 0; c < 3; ++c) s.sig[6 * std::size_t(e) + std::size_t(c)] = -p0;
+    }
   }
   // node -> corner map, in increasing (element, corner) order
   s.corner_start.assign(std::size_t(s.nn) + 1, 0);

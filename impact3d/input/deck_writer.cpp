@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "common/cards.h"
+#include "impact3d/material/eos.h"
 #include "impact3d/material/material_types.h"
 
 namespace impact3d {
@@ -204,6 +205,31 @@ class KeywordWriter {
     }
   }
 
+  // *EOS_...: the form's two cards (material/eos.h), EOSID = the part's id.
+  void write_eos(const EosData& e, int id) {
+    const EosForm* f = find_eos_form(e.form);
+    if (!f) return;
+    os_ << "*" << f->keyword << "\n";
+    for (int c = 0; c < 2; ++c) {
+      std::vector<KField> fields(8, B());
+      std::string head(80, ' ');
+      int n = 0;
+      if (c == 0) fields[0] = I(id), n = 1, head.replace(5, 5, "eosid");
+      for (const EosParam& p : f->params) {
+        if (p.kcard != c || p.slot < 0) continue;
+        fields[std::size_t(p.kfield)] = R(eos_value(e, p));
+        std::string k = p.key;
+        for (char& ch : k) ch = char(std::tolower(static_cast<unsigned char>(ch)));
+        head.replace(std::size_t(10 * p.kfield + 10) - k.size(), k.size(), k);
+        n = std::max(n, p.kfield + 1);
+      }
+      fields.resize(std::size_t(n));
+      head.resize(std::size_t(10 * n));
+      head.replace(0, 2, "$#");
+      os_ << head << "\n" << kcard(fields) << "\n";
+    }
+  }
+
   void materials() {
     os_ << "*SECTION_SOLID\n$#   secid    elform\n" << kcard({I(1), I(1)}) << "\n";
     for (std::size_t k = 0; k < m_.materials.size(); ++k) {
@@ -211,7 +237,7 @@ class KeywordWriter {
       int id = int(k) + 1;
       os_ << "*PART\n$# title\n" << md.title << "\n";
       // a shell part has its own *SECTION_SHELL (secid 1 + pid)
-      os_ << "$#     pid     secid       mid     eosid      hgid\n" << kcard({I(id), I(md.shell ? 1 + id : 1), I(id), I(0), I(id)}) << "\n";
+      os_ << "$#     pid     secid       mid     eosid      hgid\n" << kcard({I(id), I(md.shell ? 1 + id : 1), I(id), I(md.eos.form != 0 ? id : 0), I(id)}) << "\n";
       if (md.shell) {
         const ShellSectionData& sec = md.shell_section;
         os_ << "*SECTION_SHELL\n$#   secid    elform      shrf       nip\n" << kcard({I(1 + id), I(2), R(sec.shrf), I(sec.nip)}) << "\n"
@@ -219,6 +245,7 @@ class KeywordWriter {
       }
       if (const MaterialType* t = find_material_type(md.type)) {
         write_material(*t, md, id);
+        if (md.eos.form != 0) write_eos(md.eos, id);
         if (md.erosion.active) {
           const ErosionData& e = md.erosion;
           os_ << "*MAT_ADD_EROSION\n$#     mid      excl    mxpres     mneps    effeps    voleps    numfip       ncs\n"
@@ -622,7 +649,7 @@ void write_fixed_deck(std::ostream& os, const Model& m, std::vector<std::string>
   for (std::size_t j = 0; j < m.materials.size(); ++j) {
     const MaterialData& md = m.materials[j];
     std::string what = "material " + std::to_string(j + 1);
-    os << L(what + " card 1").i(1, 5, int(j) + 1).i(6, 10, md.type).r(11, 20, md.rho).i(21, 25, 0)
+    os << L(what + " card 1").i(1, 5, int(j) + 1).i(6, 10, md.type).r(11, 20, md.rho).i(21, 25, md.eos.form)
               .i(26, 30, md.hourglass_type).r(31, 40, md.hourglass_coef).i(41, 45, md.bulk_type)
               .r(46, 55, md.q1).r(56, 65, md.q2).i(66, 70, 0).i(76, 80, 0).str() << "\n";
     os << L(what + " title").a(1, 80, md.title).str() << "\n";
@@ -640,6 +667,14 @@ void write_fixed_deck(std::ostream& os, const Model& m, std::vector<std::string>
       }
       const std::string text = line.str();
       os << (text.find_first_not_of(' ') == std::string::npos ? std::string() : text) << "\n";
+    }
+    if (const EosForm* f = find_eos_form(md.eos.form)) {  // the EOS cards (material/eos.h)
+      for (int c = 0; c < 2; ++c) {
+        FixedLine line = L(what + " EOS card " + std::to_string(c + 1));
+        for (const EosParam& p : f->params)
+          if (p.fcard == c && p.slot >= 0) line.r(1 + 10 * p.ffield, 10 + 10 * p.ffield, eos_value(md.eos, p));
+        os << line.str() << "\n";
+      }
     }
   }
   os << "*----- NODES\n";
@@ -845,6 +880,10 @@ std::vector<std::string> model_differences(const Model& a, const Model& b, int m
     D(w + "Q2", x.q2, y.q2);
     if (x.title != y.title) diff(w + "title", x.title, y.title);
     N(w + "erosion", x.erosion.active ? 1 : 0, y.erosion.active ? 1 : 0);
+    N(w + "EOS form", x.eos.form, y.eos.form);
+    for (std::size_t j = 0; j < x.eos.c.size(); ++j) D(w + "EOS constant " + std::to_string(j), x.eos.c[j], y.eos.c[j]);
+    D(w + "EOS E0", x.eos.e0, y.eos.e0);
+    D(w + "EOS V0", x.eos.v0, y.eos.v0);
     D(w + "erosion EXCL", x.erosion.excl, y.erosion.excl);
     D(w + "erosion MXPRES", x.erosion.mxpres, y.erosion.mxpres);
     D(w + "erosion MNPRES", x.erosion.mnpres, y.erosion.mnpres);

@@ -11,6 +11,7 @@
 
 #include "impact3d/input/deck_reader.h"
 #include "impact3d/input/element_shapes.h"
+#include "impact3d/material/eos.h"
 #include "impact3d/material/material_types.h"
 
 namespace impact3d {
@@ -386,8 +387,16 @@ class Dyna3dReader {
       if (!mt) c1.error(1103, 6, 10, "material type", "supported: " + supported_material_types());
       md.rho = c1.e(11, 20, "density");
       if (!(md.rho > 0)) c1.error(1207, 11, 20, "density");
-      long long eos = c1.i(21, 25, "EOS type");
-      if (eos != 0) c1.error(1102, 21, 25, "EOS type", "equations of state");
+      // equation of state (material/eos.h): form 1 or 4, its two cards after card 8
+      const long long eos = c1.i(21, 25, "EOS type");
+      const EosForm* eos_form = eos != 0 ? find_eos_form(int(eos)) : nullptr;
+      if (eos != 0 && !eos_form)
+        c1.error(1102, 21, 25, "EOS type", "EOS form " + std::to_string(eos) + " (supported: " + supported_eos_forms() + ")");
+      else if (eos_form && mt && !mt->accepts_eos)
+        c1.error(1102, 21, 25, "EOS type", std::string("an equation of state with material type ") + std::to_string(md.type) + " " + mt->name + " (types that take one: " + eos_material_types() + ")");
+      else if (eos == 0 && mt && mt->needs_eos)
+        c1.error(1204, 21, 25, "EOS type", std::string("material type ") + std::to_string(md.type) + " " + mt->name + " needs an equation of state (" + supported_eos_forms() + ")");
+      md.eos.form = eos_form ? eos_form->form : 0;
       md.hourglass_type = int(c1.i(26, 30, "hourglass type", 1));
       if (md.hourglass_type == 0) md.hourglass_type = 1;
       if (md.hourglass_type < 1 || md.hourglass_type > 5)
@@ -424,6 +433,18 @@ class Dyna3dReader {
       std::vector<Card> cards;
       for (int k = 3; k <= 8; ++k) cards.push_back(next(name + " card " + std::to_string(k)));
       if (mt) read_material_params(md, *mt, cards);
+      if (eos_form && (!mt || mt->accepts_eos)) {  // (a type that takes none: reported above, no cards read)
+        Card ec[2] = {next(name + " EOS card 1"), next(name + " EOS card 2")};
+        for (const EosParam& p : eos_form->params) {
+          if (p.fcard < 0) continue;
+          const int a = 1 + 10 * p.ffield;
+          eos_value(md.eos, p) = ec[p.fcard].e(a, a + 9, p.key, p.slot == 8 ? 1.0 : 0.0);
+        }
+        check_eos(md.eos, md.rho, [&](const EosParam& p, int msg, const std::string& detail) {
+          const int a = 1 + 10 * (p.fcard < 0 ? 0 : p.ffield);
+          ec[p.fcard < 0 ? 0 : p.fcard].error(msg, a, a + 9, p.key, detail);
+        });
+      }
       // rigid-body constraints in a local system need *DEFINE_COORDINATE_SYSTEM (keyword decks)
       if (md.type == 20 && md.par.size() > 3 && md.par[3] == -1)
         cards[2].error(1102, 1, 10, "constraint option CMO", "constraints in a local system (CMO = -1: keyword decks, *DEFINE_COORDINATE_SYSTEM)");

@@ -8,6 +8,7 @@
 
 #include "impact3d/input/keyword_reader.h"
 #include "impact3d/init/shell_init.h"
+#include "impact3d/material/eos.h"
 #include "impact3d/material/material_types.h"
 
 #include "impact3d/input/deck_reader.h"
@@ -415,6 +416,10 @@ struct RMat {
   std::string title;
   Ref ref;
 };
+struct REos {  // *EOS_LINEAR_POLYNOMIAL, *EOS_GRUNEISEN
+  EosData eos;
+  Ref ref;
+};
 struct RHourglass {
   int ihq = 0;
   double qm = 0, q1 = 0, q2 = 0;
@@ -602,6 +607,8 @@ class KeywordReader {
   std::map<int, RMat> mats_;
   std::map<int, std::pair<ErosionData, Ref>> erosion_;  // *MAT_ADD_EROSION by MID
   std::map<int, RHourglass> hourglasses_;
+  std::map<int, REos> eos_;                   // EOSID -> equation of state (material/eos.h)
+  std::map<int, std::string> unsupported_eosids_;  // EOSID -> the refused *EOS keyword, line
   std::map<int, RIdList> node_sets_, part_sets_;
   ParamTable params_;                    // *PARAMETER values
   std::map<int, RSegSet> seg_sets_;
@@ -1216,7 +1223,8 @@ class KeywordReader {
         "CONTACT_NODES_TO_SURFACE", "CONTACT_FORCE_TRANSDUCER_PENALTY", "BOUNDARY_SPC_NODE", "BOUNDARY_SPC_SET",
         "BOUNDARY_PRESCRIBED_MOTION_NODE", "BOUNDARY_PRESCRIBED_MOTION_SET", "BOUNDARY_PRESCRIBED_MOTION_RIGID",
         "LOAD_SEGMENT", "LOAD_SEGMENT_SET"};
-    if (ends("_TITLE") && (titled.count(n.substr(0, n.size() - 6)) || find_material_type_by_keyword(n.substr(0, n.size() - 6)))) {
+    if (ends("_TITLE") && (titled.count(n.substr(0, n.size() - 6)) || find_material_type_by_keyword(n.substr(0, n.size() - 6)) ||
+                           find_eos_form_by_keyword(n.substr(0, n.size() - 6)))) {
       title = true;
       return n.substr(0, n.size() - 6);
     }
@@ -1289,6 +1297,8 @@ bool is_ascii_database(const std::string& n) {
       } else if (n == "CONTROL_SHELL") {
         once(b);
         parse_control_shell(b);
+      } else if (const EosForm* ef = find_eos_form_by_keyword(n)) {
+        parse_eos(b, *ef);
       } else if (n == "HOURGLASS") {
         parse_hourglass(b);
       } else if (n == "CONTROL_HOURGLASS") {
@@ -1422,14 +1432,14 @@ bool is_ascii_database(const std::string& n) {
         unsupported_.push_back(&b);
         // remember the ids that unsupported material and section keywords define, so that a
         // part using one gets a clear message
-        if ((n.rfind("MAT_", 0) == 0 || n.rfind("SECTION_", 0) == 0) && !b.data.empty()) {
+        if ((n.rfind("MAT_", 0) == 0 || n.rfind("SECTION_", 0) == 0 || n.rfind("EOS_", 0) == 0) && !b.data.empty()) {
           std::size_t k = 0;
           if (n.size() > 6 && n.compare(n.size() - 6, 6, "_TITLE") == 0) k = 1;
           if (k < b.data.size()) {
             Diagnostics quiet;
             KCard c(b.data[k], b.keyword, W(b, 1), quiet);
             long long id = c.i(0, "id", 0);
-            (n[0] == 'M' ? unsupported_mids_ : unsupported_secids_)[int(id)] =
+            (n[0] == 'M' ? unsupported_mids_ : n[0] == 'E' ? unsupported_eosids_ : unsupported_secids_)[int(id)] =
                 b.keyword + " at " + b.kw.file->name() + ":" + std::to_string(b.kw.line->number);
           }
         }
@@ -1821,6 +1831,65 @@ bool is_ascii_database(const std::string& n) {
     if (b.title_opt) m.title = rtrim(b.data[0].line->text);
     if (mats_.count(mid)) c.error(1200, 0, "MID", "also defined at " + at(mats_[mid].ref));
     mats_[mid] = m;
+  }
+
+  // *EOS_LINEAR_POLYNOMIAL / *EOS_GRUNEISEN (_TITLE): the form's cards (material/eos.h); a
+  // *PART's EOSID gives it to the part's material.
+  void parse_eos(const Block& b, const EosForm& f) {
+    const std::size_t start = skip_option_card(b);
+    if (start >= b.data.size()) { missing_card(b, "card 1"); return; }
+    std::vector<KCard> cards;
+    for (std::size_t k = 0; k < 2 && start + k < b.data.size(); ++k)
+      cards.push_back(card(b, start + k, k == 0 ? "card 1" : "card 2", W(b, 8)));
+    const int id = xid(int(cards[0].i(0, "EOSID")), b, &IncludeTransform::idroff);
+    for (std::size_t k = 0; k < cards.size(); ++k) cards[k].set_card(b.keyword + " " + std::to_string(id) + (k ? " card 2" : ""));
+    REos r;
+    r.eos.form = f.form;
+    r.eos.id = id;
+    r.ref = cards[0].ref(0);
+    for (const EosParam& p : f.params) {
+      if (std::size_t(p.kcard) >= cards.size()) continue;
+      KCard& kc = cards[std::size_t(p.kcard)];
+      const double def = p.slot == 8 ? 1.0 : 0.0;
+      double v = kc.r(p.kfield, p.key, def);
+      if (kc.blank(p.kfield)) v = def;
+      if (p.slot < 0) {
+        if (v != 0) kc.error(1102, p.kfield, p.key, p.unsupported);
+        continue;
+      }
+      eos_value(r.eos, p) = v;
+    }
+    check_eos(r.eos, 1.0, [&](const EosParam& p, int msg, const std::string& detail) {
+      KCard& kc = cards[std::min(std::size_t(p.kcard), cards.size() - 1)];
+      kc.error(msg, p.kfield, p.key, detail);
+    });
+    if (eos_.count(id)) cards[0].error(1200, 0, "EOSID", "also defined at " + at(eos_[id].ref));
+    eos_[id] = r;
+  }
+
+  // A solid part's equation of state (*PART EOSID) into its material: refused for a material
+  // that takes none, required by one that needs one (*MAT_NULL).
+  void resolve_part_eos(MaterialData& md, const RPart& p, const std::string& card, const MaterialType* t) {
+    if (p.eosid == 0) {
+      if (t && t->needs_eos)
+        err(1204, p.eos_ref.line ? p.eos_ref : p.mid_ref, card, "EOSID",
+            std::string("*") + t->keywords.front() + " needs an equation of state (*EOS_LINEAR_POLYNOMIAL or *EOS_GRUNEISEN)");
+      return;
+    }
+    auto it = eos_.find(p.eosid);
+    if (it == eos_.end()) {
+      auto u = unsupported_eosids_.find(p.eosid);
+      if (u != unsupported_eosids_.end())
+        err(1102, p.eos_ref, card, "EOSID", "equation of state " + std::to_string(p.eosid) + " is " + u->second + "; supported: *EOS_LINEAR_POLYNOMIAL, *EOS_GRUNEISEN");
+      else
+        err(1310, p.eos_ref, card, "EOSID", "*EOS " + std::to_string(p.eosid) + " is not defined");
+      return;
+    }
+    if (t && !t->accepts_eos) {
+      err(1102, p.eos_ref, card, "EOSID", std::string("an equation of state with *") + t->keywords.front() + " (materials that take one: " + eos_material_types() + ")");
+      return;
+    }
+    md.eos = it->second.eos;
   }
 
   void parse_hourglass(const Block& b) {
@@ -3137,7 +3206,7 @@ bool is_ascii_database(const std::string& n) {
           else md.erosion = eit->second.first;
         }
       }
-      if (p.eosid != 0) err(1102, p.eos_ref, card, "EOSID", "equations of state");
+      resolve_part_eos(md, p, card, mit != mats_.end() ? mit->second.type : nullptr);
       // hourglass and bulk viscosity
       int ihq = ctrl_ihq_;
       double qm = ctrl_qh_;

@@ -9,12 +9,15 @@
 #include <ostream>
 #include <stdexcept>
 
+#include "impact3d/material/eos.h"
+
 namespace impact3d {
 
 // One line per type (each defined in impact3d/material/types/mat_*.cpp).
 const MaterialType& mat_elastic_type();
 const MaterialType& mat_plastic_kinematic_type();
 const MaterialType& mat_johnson_cook_type();
+const MaterialType& mat_null_type();
 const MaterialType& mat_power_law_type();
 const MaterialType& mat_simplified_johnson_cook_type();
 const MaterialType& mat_piecewise_linear_type();
@@ -24,6 +27,7 @@ std::span<const MaterialType* const> material_types() {
   static const MaterialType* const table[] = {  // in increasing number
       &mat_elastic_type(),
       &mat_plastic_kinematic_type(),
+      &mat_null_type(),
       &mat_johnson_cook_type(),
       &mat_power_law_type(),
       &mat_rigid_type(),
@@ -68,6 +72,13 @@ std::string supported_material_types() {
 std::string supported_material_keywords() {
   std::string s;
   for (const MaterialType* t : material_types()) s += (s.empty() ? "*" : ", *") + std::string(t->keywords.front());
+  return s;
+}
+
+std::string eos_material_types() {
+  std::string s;
+  for (const MaterialType* t : material_types())
+    if (t->accepts_eos) s += (s.empty() ? "" : ", ") + std::to_string(t->number) + " " + t->name;
   return s;
 }
 
@@ -122,6 +133,10 @@ MaterialConstants derive_constants(const MaterialData& md, const Model& m) {
   const MaterialType* t = find_material_type(md.type);
   if (t && t->derive) t->derive(md, m, c);
   derive_material_constants(c);
+  if (md.eos.form != 0 && t && t->accepts_eos) {  // the pressure from the equation of state
+    derive_eos_constants(md.eos, c);
+    c.eos_hist = int(t->history.size());
+  }
   derive_erosion_constants(md.erosion, c);
   return c;
 }
@@ -145,6 +160,7 @@ void echo_material_params(std::ostream& os, const MaterialData& md, const Materi
     echo_line(os, p.label, std::string(buf) + (*p.unit ? std::string(" (") + p.unit + ")" : std::string()));
   }
   if (t.echo) t.echo(os, md);
+  echo_eos(os, md.eos);
   if (md.erosion.active) {  // *MAT_ADD_EROSION: the criteria in use
     const ErosionData& e = md.erosion;
     auto used = [&](double v) { return v != e.excl && v != 0; };
@@ -179,6 +195,10 @@ bool material_uses_curve(const MaterialData& md, int curve) {
 int material_history_count(int type) {
   const MaterialType* t = find_material_type(type);
   return t ? int(t->history.size()) : 0;
+}
+
+int material_history_count(const MaterialData& md) {
+  return material_history_count(md.type) + (md.eos.form != 0 ? 1 : 0);
 }
 
 }  // namespace impact3d

@@ -111,6 +111,10 @@ struct MaterialType {
   void (*echo)(std::ostream&, const MaterialData&) = nullptr;
   SolidKernel solid;
   PlaneStressKernel shell;
+  // equations of state (material/eos.h): whether the type takes one (its pressure then comes
+  // from the EOS, its deviatoric stress from the kernel), and whether it needs one
+  bool accepts_eos = false;
+  bool needs_eos = false;
   std::vector<const char*> history;       // names of the per-element history values (<= kMaxHistory)
 };
 
@@ -141,6 +145,8 @@ const MaterialType& material_type(int number);
 // "1 elastic, 3 elastic-plastic, ..." and "*MAT_ELASTIC, ..." for messages.
 std::string supported_material_types();
 std::string supported_material_keywords();
+// "9 null (fluid...), 15 Johnson-Cook": the types that take an equation of state.
+std::string eos_material_types();
 
 // The parameter's value in a material.
 double& param_value(MaterialData& md, const MaterialParam& p);
@@ -159,5 +165,8 @@ void echo_line(std::ostream& os, const std::string& label, const std::string& va
 bool material_uses_curve(const MaterialData& md, int curve);
 // The history values a material's solids carry (0 for none).
 int material_history_count(int type);
+// The history values a material's solids carry: its type's, then (with an equation of state)
+// the internal energy per reference volume.
+int material_history_count(const MaterialData& md);
 
 }  // namespace impact3d

@@ -78,6 +78,17 @@ struct ErosionData {
   int line = 0;
 };
 
+// An equation of state of a material (the pressure of its solids; material/eos.h).  form: 0
+// none, 1 linear polynomial (*EOS_LINEAR_POLYNOMIAL), 4 Gruneisen (*EOS_GRUNEISEN): DYNA3D's
+// EOS form numbers.  c: form 1 C0-C6; form 4 C, S1, S2, S3, GAMMA0, A.  e0: the initial
+// internal energy per reference volume; v0: the initial relative volume (1).
+struct EosData {
+  int form = 0;
+  int id = 0;  // the keyword deck's EOSID (messages, the converter)
+  std::array<double, 7> c{};
+  double e0 = 0, v0 = 1;
+};
+
 struct MaterialData {
   int number = 0;
   int type = 0;          // DYNA3D type number (material_types.h)
@@ -100,6 +111,7 @@ struct MaterialData {
   int line = 0;          // line of card 1, for messages
   bool shell = false;    // the part is a shell part (its elements are in Model::shell_nodes)
   ErosionData erosion;   // *MAT_ADD_EROSION (keyword decks)
+  EosData eos;           // its equation of state (form 0: none; material/eos.h)
   ShellSectionData shell_section;
 };
 

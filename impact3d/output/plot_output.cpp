@@ -36,7 +36,7 @@ PlotGeometry make_plot_geometry(const Model& m) {
   // the materials' history values (NEIPH): as many as the most any solid's material has, the
   // same count as State::hist_stride
   for (int e = 0; e < m.num_hexes(); ++e)
-    g.num_solid_history = std::max(g.num_solid_history, material_history_count(m.materials[std::size_t(m.hex_material[std::size_t(e)])].type));
+    g.num_solid_history = std::max(g.num_solid_history, material_history_count(m.materials[std::size_t(m.hex_material[std::size_t(e)])]));
   for (const auto& md : m.materials)
     g.part_titles.push_back(md.title.empty() ? "material " + std::to_string(md.number) : md.title.substr(0, 72));
   // the deck's numbers (NARBS section), so readers show them

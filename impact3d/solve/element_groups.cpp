@@ -33,7 +33,7 @@ void build_element_groups(State& s) {
     const MaterialType& t = material_type(s.mats[k].type);
     g.kernel = t.solid.kind;
     g.solid = &t.solid;
-    g.history = int(t.history.size());
+    g.history = int(t.history.size()) + (s.mats[k].eos_form != 0 ? 1 : 0);  // and the EOS energy
     g.material = int(k);
     g.first_block = blocks;
     g.num_elems = count[k];

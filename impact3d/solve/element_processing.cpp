@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "impact3d/element/hex_block.h"
+#include "impact3d/material/eos.h"
 #include "impact3d/material/material_block.h"
 #include "impact3d/solve/element_groups.h"
 #include "impact3d/solve/shell_processing.h"
@@ -32,6 +33,7 @@ struct GroupPass {
   double dt_hg;   // step of the hourglass stiffness forms
   bool with_back; // type 3 with a kinematic part: the back stress is carried
   bool hg_state;  // hourglass types 4, 5 carry resultants
+  bool eos;       // the pressure comes from an equation of state (material/eos.h)
   double time;    // t^n (erosion by failure time)
   const Model* model;  // initial coordinates (erosion by strain)
 };
@@ -65,6 +67,7 @@ void gather_hex_block(const State& s, const GroupPass& gp, const int* elems, Hex
     for (int c = 0; c < 6; ++c) k.sig[c][l] = s.sig[6 * E + std::size_t(c)];
     k.q_old[l] = s.q[E];
     k.rho[l] = s.vol0[E];  // rho0 V0 / V once V is known
+    k.v0[l] = s.vol0[E];
   }
   if (gp.solid->plastic_strain) {
     for (int l = 0; l < kLanes; ++l) {
@@ -97,6 +100,17 @@ void update_stress_block(const GroupPass& gp, HexBlock& k) {
   // of that rotation gives the same bits)
   if (gp.with_back) rotate_stress_jaumann_block(k.back, k.w, dt);
   gp.solid->update_block(*gp.mc, k, dt);  // the material type's kernel (material_types.h)
+  if (gp.eos) {  // the pressure from the equation of state, the energy with it (material/eos.h)
+    const int h = gp.mc->eos_hist;
+    for (int l = 0; l < kLanes; ++l) {
+      double old[6], d[6], sig[6];
+      for (int c = 0; c < 6; ++c) old[c] = k.old[c][l], d[c] = k.d[c][l], sig[c] = k.sig[c][l];
+      double e = k.hist[h][l];
+      k.cs[l] = update_stress_eos_point(*gp.mc, old, d, k.v[l], k.vm[l], k.v0[l], dt, k.q_old[l], k.q[l], sig, e);
+      k.hist[h][l] = e;
+      for (int c = 0; c < 6; ++c) k.sig[c][l] = sig[c];
+    }
+  }
   IMPACT3D_FOR_LANES {
     double pw = 0;
     #pragma GCC unroll 16
@@ -112,13 +126,15 @@ void calc_forces_for_hex_block(const GroupPass& gp, HexBlock& k) {
   const MaterialConstants& mc = *gp.mc;
   const MaterialData& md = *gp.md;
   calc_hex_kinematics_block(k, gp.dt);
-  update_stress_block(gp, k);
   IMPACT3D_FOR_LANES k.rho[l] = mc.rho * k.rho[l] / k.v[l];
   // Bulk viscosity from the midpoint strain rate; its work over this step is booked like the
   // stress work (trapezoid): the q of the previous cycle acted in the forces over this step,
-  // the new one acts over the next (see hexahedron.h).
+  // the new one acts over the next (see hexahedron.h).  Computed before the stress (it does not
+  // depend on it) so that an equation of state books its work into the element's energy.
   calc_hex_bulk_viscosity_block(k, mc.c, md.q1, md.q2);
   IMPACT3D_FOR_LANES k.de_bv[l] = -0.5 * (k.q_old[l] + k.q[l]) * k.trd[l] * k.vm[l] * gp.dt;
+  if (gp.eos) IMPACT3D_FOR_LANES k.cs[l] = mc.c;
+  update_stress_block(gp, k);
   calc_hex_stress_force_block(k);
   if (md.hourglass_coef != 0.0) {
     calc_hex_hourglass_force_block(k, md.hourglass_type, md.hourglass_coef, mc.c, mc.G, gp.dt_hg);
@@ -126,7 +142,8 @@ void calc_forces_for_hex_block(const GroupPass& gp, HexBlock& k) {
   } else {
     IMPACT3D_FOR_LANES k.de_hg[l] = 0;
   }
-  calc_hex_time_step_block(k, mc.c, md.q1, md.q2);
+  if (gp.eos) calc_hex_time_step_lanes_block(k, md.q1, md.q2);  // the element's own sound speed
+  else calc_hex_time_step_block(k, mc.c, md.q1, md.q2);
 }
 
 // Writes lane l's corner forces as zero (failed solids, padding).
@@ -289,6 +306,7 @@ ElementLoopResult calc_forces_for_elems(const Model& m, State& s) {
     gp.dt_hg = s.dt_next > 0 ? s.dt_next : s.dt_half;
     gp.with_back = group_carries_back_stress(*g.solid, *gp.mc);
     gp.hg_state = group_carries_hourglass_state(*gp.md);
+    gp.eos = gp.mc->eos_form != 0;
     gp.time = s.time;
     gp.model = &m;
     const int b0 = g.first_block, nb = g.num_blocks;

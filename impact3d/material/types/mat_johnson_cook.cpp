@@ -3,9 +3,11 @@
 //      (TM - TR), adiabatic heating dT = sigma_y d eps_p / (rho0 CP) from the plastic work,
 //      pressure cutoff PC, Johnson-Cook damage D = sum d eps_p / eps_f, eps_f = max(EFMIN,
 //      (D1 + D2 exp(D3 sigma*)) (1 + D4 ln rate*) (1 + D5 T*)), deletion at D >= 1, and at the
-//      element step DTF.  LS-DYNA takes the pressure of a solid from an equation of state; here
-//      (no EOS yet) the pressure is hypoelastic with the bulk modulus of E and PR, and G is the
-//      card's shear modulus.
+//      element step DTF.  G is the card's shear modulus.  With an equation of state (*PART
+//      EOSID, fixed format card 1 columns 21-25; material/eos.h) the pressure comes from it
+//      (the kernel's trial pressure, the old EOS pressure plus K dV, serves the damage
+//      triaxiality; PC < 0 bounds the EOS pressure); without one it is hypoelastic with the
+//      bulk modulus of E and PR.
 //   98 *MAT_SIMPLIFIED_JOHNSON_COOK: sigma_y = min((min(A + B eps_p^N, SIGSAT)) (1 + C ln
 //      rate*), SIGMAX), deletion at the plastic strain PSFAIL.
 // rate* = max(rate / EPSO, 1) with rate = sqrt(2/3 D':D') the effective (deviatoric) strain
@@ -160,11 +162,12 @@ void derive15(const MaterialData& d, const Model&, MaterialConstants& c) {
   if (damage) c.fail_history = hDamage;
   c.tdel = par(d, pDtf);
   c.sigma_y = c.k[kA];
+  c.eos_pc = par(d, pPc) < 0 ? par(d, pPc) : -HUGE_VAL;  // bounds an EOS pressure
 }
 
 void echo15(std::ostream& os, const MaterialData& md) {
   echo_line(os, "flow stress", "(A + B eps_p^N) (1 + C ln rate*) (1 - T*^M)");
-  echo_line(os, "bulk modulus from", "E and PR (no equation of state)");
+  if (md.eos.form == 0) echo_line(os, "bulk modulus from", "E and PR (no equation of state)");
   if (par(md, pD1) != 0 || par(md, pD2) != 0) echo_line(os, "failure", "Johnson-Cook damage D >= 1 deletes the solid");
   if (par(md, pPc) < 0) echo_line(os, "pressure cutoff (tension)", f6(par(md, pPc)) + " (stress)");
 }
@@ -248,6 +251,7 @@ const MaterialType& mat_johnson_cook_type() {
     t.echo = echo15;
     t.solid = {HexKernel::deformable, update_point, update_block, true};
     t.history = {"temperature rise", "damage"};
+    t.accepts_eos = true;
     return t;
   }();
   return t;

@@ -1,0 +1,142 @@
+#pragma once
+// Equations of state: the pressure of a material's solids when its part (keyword decks: *PART
+// EOSID) or its material set (fixed format: card 1 columns 21-25) names one.  The material's
+// kernel gives the deviatoric stress; the EOS replaces the mean stress.  Forms (DYNA3D's
+// numbers):
+//   1 *EOS_LINEAR_POLYNOMIAL: p = C0 + C1 mu + C2 mu^2 + C3 mu^3 + (C4 + C5 mu + C6 mu^2) E
+//     (C2 mu^2 and C6 mu^2 are dropped in tension, mu < 0, as LS-DYNA does);
+//   4 *EOS_GRUNEISEN: in compression (mu > 0)
+//       p = rho0 C^2 mu [1 + (1 - GAMMA0/2) mu - A/2 mu^2] /
+//           [1 - (S1 - 1) mu - S2 mu^2/(mu + 1) - S3 mu^3/(mu + 1)^2]^2 + (GAMMA0 + A mu) E,
+//     in tension p = rho0 C^2 mu + (GAMMA0 + A mu) E;
+// with mu = rho/rho0 - 1 = V0/V - 1 and E the internal energy per reference volume, a history
+// value of the element (initially E0).  Both forms are p = a(mu) + b(mu) E.  The energy update
+// is DYNA3D's: over a step with relative volume change dv (= trD V_mid dt / V0, the increment
+// the stress-work book uses),
+//   E* = E^n + (deviatoric work) - (p^n + q^{n-1} + q^n) dv / 2,
+//   p^{n+1} = (a + b E*) / (1 + b dv / 2),  E^{n+1} = E* - p^{n+1} dv / 2,
+// so that p^{n+1} = a + b E^{n+1} exactly (the EOS holds at the end of the step) and E V0
+// grows by exactly the element's stress and bulk-viscosity work.  A pressure cutoff (the
+// material's PC < 0) bounds p from below.  The element's sound speed for its time step is the
+// isentropic one, c^2 = (K_s + 4G/3) / rho with K_s = (1 + mu) (a' + b' E) + p b / (1 + mu)
+// (never below a tenth of the reference speed, so that an element at the cutoff keeps a
+// finite step: an IMPACT-3D choice).
+//
+// Fixed format (an IMPACT-3D choice: DYNA3D's EOS card layout is not public): a material set
+// whose card 1 columns 21-25 give form 1 or 4 has two more cards after card 8, LS-DYNA's
+// keyword cards without EOSID, 8 E10 fields each: form 1: C0 C1 C2 C3 C4 C5 C6 / E0 V0; form 4:
+// C S1 S2 S3 GAMMA0 A E0 / V0.
+
+#include <cmath>
+#include <functional>
+#include <iosfwd>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "impact3d/material/material.h"
+#include "impact3d/model/model.h"
+
+namespace impact3d {
+
+// One parameter of an EOS form: keyword card (0, 1) and field (0-7, EOSID is field 0 of card
+// 0), fixed-format EOS card (0, 1) and field (0-7); slot 0-6: EosData::c, 7: e0, 8: v0, -1: a
+// field read and refused when nonzero (unsupported).
+struct EosParam {
+  const char* key;
+  int kcard, kfield;
+  int fcard, ffield;
+  int slot;
+  const char* unsupported = nullptr;  // slot -1: the feature, for message 1102
+};
+
+struct EosForm {
+  int form = 0;             // DYNA3D's EOS form number
+  const char* name = "";    // printed name
+  const char* keyword = "";  // LS-DYNA keyword without '*'
+  std::vector<EosParam> params;
+};
+
+// The EOS forms IMPACT-3D has (1 linear polynomial, 4 Gruneisen).
+std::span<const EosForm* const> eos_forms();
+const EosForm* find_eos_form(int form);
+const EosForm* find_eos_form_by_keyword(std::string_view keyword);
+// "1 linear polynomial, 4 Gruneisen" for messages.
+std::string supported_eos_forms();
+// The value a parameter names (slot 0-8).
+double& eos_value(EosData& e, const EosParam& p);
+double eos_value(const EosData& e, const EosParam& p);
+// Checks after reading (V0 blank/0 -> 1); problems go to report (message, detail).
+void check_eos(EosData& e, double rho0, const std::function<void(const EosParam& p, int msg, const std::string& detail)>& report);
+// The kernel constants: eos_form, eos[], K (the isentropic bulk modulus at the initial state),
+// lambda, c; E and nu made consistent with K and G.  eos_pc and eos_hist are the caller's.
+void derive_eos_constants(const EosData& e, MaterialConstants& c);
+// The pressure at the initial state (mu = 0, E = E0).
+double calc_eos_initial_pressure(const MaterialConstants& c, double e0);
+// The printed echo of a material's EOS (nothing for form 0).
+void echo_eos(std::ostream& os, const EosData& e);
+
+// p = a + b E and the derivatives a', b' in mu.
+inline void calc_eos_coefficients(const MaterialConstants& m, double mu, double& a, double& b, double& da, double& db) {
+  const double* k = m.eos.data();
+  if (m.eos_form == 1) {
+    const double c2 = mu < 0.0 ? 0.0 : k[2], c6 = mu < 0.0 ? 0.0 : k[6];
+    a = k[0] + mu * (k[1] + mu * (c2 + mu * k[3]));
+    b = k[4] + mu * (k[5] + mu * c6);
+    da = k[1] + mu * (2.0 * c2 + 3.0 * mu * k[3]);
+    db = k[5] + 2.0 * c6 * mu;
+    return;
+  }
+  // Gruneisen: k = rho0 C^2, S1, S2, S3, GAMMA0, A
+  b = k[4] + k[5] * mu;
+  db = k[5];
+  if (mu <= 0.0) {
+    a = k[0] * mu;
+    da = k[0];
+    return;
+  }
+  const double m1 = mu + 1.0;
+  const double num = k[0] * mu * (1.0 + (1.0 - 0.5 * k[4]) * mu - 0.5 * k[5] * mu * mu);
+  const double dnum = k[0] * (1.0 + 2.0 * (1.0 - 0.5 * k[4]) * mu - 1.5 * k[5] * mu * mu);
+  const double den = 1.0 - (k[1] - 1.0) * mu - k[2] * mu * mu / m1 - k[3] * mu * mu * mu / (m1 * m1);
+  const double dden = -(k[1] - 1.0) - k[2] * mu * (mu + 2.0) / (m1 * m1) - k[3] * mu * mu * (mu + 3.0) / (m1 * m1 * m1);
+  a = num / (den * den);
+  da = dnum / (den * den) - 2.0 * num * dden / (den * den * den);
+}
+
+// The EOS step of one solid after its material's update (sig holds the material's new stress,
+// old the stress at the start of the step, both tension positive): replaces the mean stress by
+// -p^{n+1}, updates e (internal energy per reference volume) and returns the sound speed.
+// v: volume at the end of the step, vm: midpoint volume, vol0: initial volume, q_old, q_new:
+// the bulk viscosity of the last step and this one.  Same operations for the scalar and block
+// callers (the block calls it lane by lane).
+inline double update_stress_eos_point(const MaterialConstants& m, const double old[6], const double d[6], double v,
+                                      double vm, double vol0, double dt, double q_old, double q_new, double sig[6],
+                                      double& e) {
+  const double pt = (sig[0] + sig[1] + sig[2]) * (1.0 / 3.0);
+  const double s0 = sig[0] - pt, s1 = sig[1] - pt, s2 = sig[2] - pt;
+  const double po = -(old[0] + old[1] + old[2]) * (1.0 / 3.0);
+  const double o0 = old[0] + po, o1 = old[1] + po, o2 = old[2] + po;
+  const double w = 0.5 * ((o0 + s0) * d[0] + (o1 + s1) * d[1] + (o2 + s2) * d[2]) +
+                   ((old[3] + sig[3]) * d[3] + (old[4] + sig[4]) * d[4] + (old[5] + sig[5]) * d[5]);
+  const double scale = vm * dt / vol0;
+  const double dv = (d[0] + d[1] + d[2]) * scale;
+  const double es = e + w * scale - 0.5 * (po + q_old + q_new) * dv;
+  const double mu = vol0 / v - 1.0;
+  double a, b, da, db;
+  calc_eos_coefficients(m, mu, a, b, da, db);
+  double p = (a + b * es) / (1.0 + 0.5 * b * dv);
+  p = p < m.eos_pc ? m.eos_pc : p;
+  e = es - 0.5 * p * dv;
+  sig[0] = s0 - p;
+  sig[1] = s1 - p;
+  sig[2] = s2 - p;
+  const double m1 = 1.0 + mu;
+  const double ks = m1 * (da + db * e) + p * b / m1;
+  const double c2 = (ks + (4.0 / 3.0) * m.G) / (m.rho * m1);
+  const double floor2 = 0.01 * m.c * m.c;
+  return std::sqrt(c2 > floor2 ? c2 : floor2);
+}
+
+}  // namespace impact3d

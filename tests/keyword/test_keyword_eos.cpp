@@ -1,0 +1,184 @@
+// Equations of state in both deck formats: *EOS_LINEAR_POLYNOMIAL / *EOS_GRUNEISEN named by
+// *PART EOSID (keyword) or by the material set's EOS type with its two EOS cards (fixed
+// format), *MAT_NULL; read, echoed, through the converter both ways, and the refusals.
+
+#include <gtest/gtest.h>
+
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "impact3d/input/deck_reader.h"
+#include "impact3d/input/deck_writer.h"
+#include "impact3d/material/material_types.h"
+#include "impact3d/output/printed_output.h"
+
+using namespace impact3d;
+
+namespace {
+
+struct Read {
+  Model m;
+  Diagnostics d;
+  bool ok = false;
+  std::string messages() const {
+    std::ostringstream os;
+    d.print(os);
+    return os.str();
+  }
+};
+
+Read read_text(const std::string& text, const std::string& name = "deck.k") {
+  Read r;
+  DeckFile deck;
+  deck.load_from_string(name, text);
+  r.ok = read_deck(deck, r.m, r.d, InputOptions{});
+  if (r.ok) r.ok = check_model(r.m, r.d);
+  return r;
+}
+
+std::string join(const std::vector<std::string>& v) {
+  std::string s;
+  for (const auto& x : v) s += x + "\n";
+  return s;
+}
+
+// One unit hexahedron of part 1 with material 7 and EOS eosid (the given cards).
+std::string deck(const std::string& cards, const std::string& eosid = "3") {
+  return "*KEYWORD\n*CONTROL_TERMINATION\n   1.0E-05\n*DATABASE_BINARY_D3PLOT\n    5.0E-7\n"
+         "*PART\nblock\n         1         1         7" + std::string(10 - eosid.size(), ' ') + eosid + "\n"
+         "*SECTION_SOLID\n         1         1\n" + cards +
+         "*NODE\n"
+         "       1             0.0             0.0             0.0\n"
+         "       2             1.0             0.0             0.0\n"
+         "       3             1.0             1.0             0.0\n"
+         "       4             0.0             1.0             0.0\n"
+         "       5             0.0             0.0             1.0\n"
+         "       6             1.0             0.0             1.0\n"
+         "       7             1.0             1.0             1.0\n"
+         "       8             0.0             1.0             1.0\n"
+         "*ELEMENT_SOLID\n       1       1       1       2       3       4       5       6       7       8\n"
+         "*END\n";
+}
+
+const std::string kNull =
+    "*MAT_NULL\n$#     mid        ro        pc        mu     terod     cerod        ym        pr\n"
+    "         7    8930.0    -1.0E9    1.0E-3\n";
+const std::string kGruneisen =
+    "*EOS_GRUNEISEN_TITLE\ncopper\n$#   eosid         c        s1        s2        s3    gamma0         a        e0\n"
+    "         3    3940.0      1.49       0.0       0.0      2.02      0.47     1.0E5\n$#      v0\n       0.0\n";
+const std::string kLinear =
+    "*EOS_LINEAR_POLYNOMIAL\n         3       0.0    1.4E11    2.0E11       0.0      2.02       0.0       0.0\n"
+    "       0.0       1.0\n";
+
+void round_trips(const Read& a) {
+  std::ostringstream kw, fx;
+  write_keyword_deck(kw, a.m);
+  Read k = read_text(kw.str());
+  ASSERT_TRUE(k.ok) << k.messages() << kw.str();
+  EXPECT_EQ(join(model_differences(a.m, k.m)), "") << kw.str();
+  EXPECT_EQ(k.m.materials[0].eos.form, a.m.materials[0].eos.form);
+  write_fixed_deck(fx, a.m, nullptr);
+  Read f = read_text(fx.str(), "deck.dyn");
+  ASSERT_TRUE(f.ok) << f.messages() << fx.str();
+  EXPECT_EQ(join(model_differences(a.m, f.m)), "") << fx.str();
+}
+
+}  // namespace
+
+TEST(KeywordEos, NullWithGruneisenIsReadEchoedAndRoundTrips) {
+  Read a = read_text(deck(kNull + kGruneisen));
+  ASSERT_TRUE(a.ok) << a.messages();
+  const MaterialData& md = a.m.materials[0];
+  EXPECT_EQ(md.type, 9);
+  EXPECT_EQ(md.eos.form, 4);
+  EXPECT_EQ(md.eos.c[0], 3940.0);
+  EXPECT_EQ(md.eos.c[4], 2.02);
+  EXPECT_EQ(md.eos.c[5], 0.47);
+  EXPECT_EQ(md.eos.e0, 1e5);
+  EXPECT_EQ(md.eos.v0, 1.0);  // 0: 1
+  EXPECT_EQ(param_value(md, *find_param(material_type(9), "PC")), -1e9);
+  EXPECT_EQ(param_value(md, *find_param(material_type(9), "MU")), 1e-3);
+  std::ostringstream echo;
+  write_model_summary(echo, a.m);
+  EXPECT_NE(echo.str().find("Gruneisen (form 4, EOSID 3)"), std::string::npos) << echo.str();
+  EXPECT_NE(echo.str().find("EOS GAMMA0"), std::string::npos) << echo.str();
+  round_trips(a);
+}
+
+TEST(KeywordEos, JohnsonCookWithLinearPolynomialIsReadAndRoundTrips) {
+  const std::string jc =
+      "*MAT_JOHNSON_COOK\n"
+      "         7    8930.0    46.0E9   124.0E9      0.34\n"
+      "     90.E6    292.E6      0.31     0.025      1.09    1356.0     293.0       1.0\n"
+      "     383.0       0.0       0.0       0.0\n"
+      "       0.0\n";
+  Read a = read_text(deck(jc + kLinear));
+  ASSERT_TRUE(a.ok) << a.messages();
+  EXPECT_EQ(a.m.materials[0].type, 15);
+  EXPECT_EQ(a.m.materials[0].eos.form, 1);
+  EXPECT_EQ(a.m.materials[0].eos.c[2], 2e11);
+  round_trips(a);
+}
+
+TEST(KeywordEos, RefusalsNameTheField) {
+  auto count = [](const std::string& text, int msg) {
+    Read r = read_text(text);
+    EXPECT_FALSE(r.ok) << text;
+    if (r.d.count(msg) != 1) ADD_FAILURE() << r.messages();
+    return r.d.count(msg);
+  };
+  // an EOSID nothing defines; *MAT_NULL without one; an EOS on a material that takes none
+  EXPECT_EQ(count(deck(kNull + kGruneisen, "4"), 1310), 1);
+  EXPECT_EQ(count(deck(kNull, "0"), 1204), 1);
+  const std::string elastic = "*MAT_ELASTIC\n         7    8930.0   117.0E9      0.35\n";
+  EXPECT_EQ(count(deck(elastic + kGruneisen), 1102), 1);
+  // a refused EOS keyword: the keyword (1301) and the part naming it (1102)
+  const std::string tab = "*EOS_TABULATED\n         3       1.0\n";
+  EXPECT_EQ(count(deck(kNull + tab), 1102), 1);
+  // V0 other than 1, LCID, TEROD / CEROD, C <= 0
+  std::string v0 = kGruneisen;
+  v0.replace(v0.find("       0.0\n"), 11, "       0.9\n");
+  EXPECT_EQ(count(deck(kNull + v0), 1102), 1);
+  std::string lcid = kGruneisen;
+  lcid.replace(lcid.find("       0.0\n"), 11, "       0.0         0        12\n");
+  EXPECT_EQ(count(deck(kNull + lcid), 1102), 1);
+  std::string terod = kNull;
+  terod.replace(terod.find("1.0E-3\n"), 7, "1.0E-3       1.2\n");
+  EXPECT_EQ(count(deck(terod + kGruneisen), 1102), 1);
+  std::string c0 = kGruneisen;
+  c0.replace(c0.find("    3940.0"), 10, "       0.0");
+  EXPECT_GE(count(deck(kNull + c0), 1003), 1);
+}
+
+TEST(KeywordEos, FixedFormatEosTypeAndCards) {
+  Read a = read_text(deck(kNull + kGruneisen));
+  ASSERT_TRUE(a.ok) << a.messages();
+  std::ostringstream fx;
+  write_fixed_deck(fx, a.m, nullptr);
+  const std::string text = fx.str();
+  // card 1 columns 21-25: the form; the two EOS cards after card 8
+  const std::size_t at = text.find("*----- MATERIALS\n") + 17;
+  const std::string card1 = text.substr(at, text.find('\n', at) - at);
+  EXPECT_EQ(card1.substr(20, 5), "    4") << card1;
+  EXPECT_NE(text.find("    3940.0      1.49       0.0       0.0      2.02      0.47     1.0e5"), std::string::npos) << text;
+  // an EOS form IMPACT-3D lacks, an EOS with type 1, a null material without one
+  auto refused = [&](const std::string& from, const std::string& to, int msg) {
+    std::string t = text;
+    const std::size_t c1 = t.find("*----- MATERIALS\n") + 17;
+    ASSERT_EQ(t.substr(c1, 25).substr(20, 5), from);
+    t.replace(c1 + 20, 5, to);
+    Read r = read_text(t, "deck.dyn");
+    EXPECT_FALSE(r.ok);
+    EXPECT_GE(r.d.count(msg), 1) << r.messages();
+  };
+  refused("    4", "    2", 1102);
+  std::string t1 = text;
+  {
+    const std::size_t c1 = t1.find("*----- MATERIALS\n") + 17;
+    t1.replace(c1 + 9, 1, "1");  // type 9 -> 1 (E and nu blank: 1208 as well)
+    Read r = read_text(t1, "deck.dyn");
+    EXPECT_FALSE(r.ok);
+    EXPECT_GE(r.d.count(1102), 1) << r.messages();
+  }
+}

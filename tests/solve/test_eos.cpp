@@ -1,0 +1,279 @@
+// Equations of state (impact3d/material/eos.h) through the whole cycle:
+//  (a) one solid squeezed and stretched uniaxially by prescribed velocities: its pressure is the
+//      EOS formula of its own volume and energy at every cycle (linear polynomial, exactly the
+//      polynomial when it does not depend on E, the mu^2 terms dropped in tension; Gruneisen
+//      with GAMMA0 = 0 exactly the Hugoniot p_H = rho0 C^2 mu (1 + mu) / [1 - (S1 - 1) mu]^2,
+//      with GAMMA0 = 2.02 p_H + GAMMA0 (E - E_H) with E_H = p_H mu / (2 (1 + mu))), and its
+//      energy E V0 equals the stress and bulk-viscosity work the global books hold;
+//  (b) a copper flyer plate (MAT_NULL + Gruneisen) hitting a like target at v: behind the shock
+//      the particle velocity is v/2, the pressure rho0 Us up with Us = C + S1 up, and the shock
+//      runs at Us (arrival times).
+// Units SI.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <vector>
+
+#include "impact3d/material/eos.h"
+#include "impact3d/material/material_types.h"
+#include "impact3d/solve/engine.h"
+#include "tests/solve/test_models.h"
+
+using namespace impact3d;
+using namespace solve_test;
+
+namespace {
+
+MaterialData null_material(double rho, const EosData& eos) {
+  MaterialData md;
+  md.number = 1;
+  md.type = 9;
+  set_param_defaults(md, material_type(9));
+  md.rho = rho;
+  md.eos = eos;
+  md.title = "null + EOS";
+  return md;
+}
+
+EosData linear_polynomial(std::array<double, 7> c, double e0) {
+  EosData e;
+  e.form = 1;
+  e.c = c;
+  e.e0 = e0;
+  return e;
+}
+
+// Copper (Steinberg's us-up fit): C 3940 m/s, S1 1.49, GAMMA0 2.02 (A = 0).
+EosData gruneisen_copper(double gamma0) {
+  EosData e;
+  e.form = 4;
+  e.c = {3940, 1.49, 0, 0, gamma0, 0, 0};
+  return e;
+}
+
+double pressure(const State& s, int e) {
+  const double* g = &s.sig[6 * std::size_t(e)];
+  return -(g[0] + g[1] + g[2]) / 3;
+}
+
+// One 1 mm cube, bottom fixed, sides on rollers, the top face moving at -V for T then +V for
+// 1.5 T (mu from 0 to 0.111 and back to -0.048).
+Model squeezed_cube(const MaterialData& md, double V, double T) {
+  Box b;
+  b.lx = b.ly = b.lz = 1e-3;
+  Model m = make_box_model(b, md, 2.5 * T, 4);
+  for (int n = 0; n < m.num_nodes(); ++n)
+    if (m.z[std::size_t(n)] == 0) m.bc[std::size_t(n)] = 7;
+  LoadCurve lc;
+  lc.number = 1;
+  lc.t = {0, T, T * 1.0000001, 3 * T};
+  lc.f = {-V, -V, V, V};
+  m.load_curves = {lc};
+  m.control.numlc = 1;
+  for (int n = 0; n < m.num_nodes(); ++n) {
+    if (m.z[std::size_t(n)] == 0) continue;
+    PrescribedMotion pm;
+    pm.node = n;
+    pm.dir = {0, 0, 1};
+    pm.curve = 0;
+    m.prescribed_motions.push_back(pm);
+  }
+  m.control.tssf = 0.5;
+  return m;
+}
+
+// Runs the cube; calls check(mu, p, E) after every cycle; returns the largest |mu| reached in
+// compression and tension.
+template <class F>
+void run_cube(Model& m, F check, double& mu_max, double& mu_min) {
+  ScopedThreads one(1);
+  Engine eng(m);
+  ASSERT_EQ(eng.initialize(), StepStatus::ok);
+  const State& s = eng.state();
+  const int h = s.mats[0].eos_hist;
+  ASSERT_GE(h, 0);
+  mu_max = 0, mu_min = 0;
+  StepStatus st = StepStatus::ok;
+  int cycles = 0;
+  while ((st = eng.step()) == StepStatus::ok) {
+    const double mu = s.vol0[0] / s.vol[0] - 1;
+    const double E = s.hist[std::size_t(h)];
+    check(mu, pressure(s, 0), E);
+    // the element's energy is the work the books hold (stress and bulk viscosity), plus E0 V0
+    const double e0 = m.materials[0].eos.e0;
+    EXPECT_NEAR(E * s.vol0[0], e0 * s.vol0[0] + s.internal + s.bulk_viscous, 1e-9 * (std::fabs(e0 * s.vol0[0]) + std::fabs(s.internal) + 1e-12));
+    mu_max = std::max(mu_max, mu), mu_min = std::min(mu_min, mu);
+    ++cycles;
+  }
+  EXPECT_EQ(st, StepStatus::finished);
+  EXPECT_GT(cycles, 20);
+}
+
+}  // namespace
+
+TEST(EquationOfState, LinearPolynomialIsThePolynomialOfTheSolidsVolumeAndEnergy) {
+  // without E terms: the polynomial, C2 mu^2 dropped in tension
+  const std::array<double, 7> c = {1e5, 2.2e9, 9e9, 3e10, 0, 0, 0};
+  Model m = squeezed_cube(null_material(1000, linear_polynomial(c, 0)), 10, 10e-6);
+  double worst = 0, mu_max = 0, mu_min = 0;
+  run_cube(m, [&](double mu, double p, double) {
+    const double c2 = mu < 0 ? 0 : c[2];
+    const double want = c[0] + c[1] * mu + c2 * mu * mu + c[3] * mu * mu * mu;
+    worst = std::max(worst, std::fabs(p - want) / std::fabs(c[1] * mu + c[0]));
+  }, mu_max, mu_min);
+  std::printf("linear polynomial (no E terms): mu %.4f .. %.4f, worst |p - formula| / |p| = %.2e\n", mu_min, mu_max, worst);
+  EXPECT_GT(mu_max, 0.1);
+  EXPECT_LT(mu_min, -0.04);
+  EXPECT_LT(worst, 1e-12);
+  // with E terms: p = a(mu) + b(mu) E with the solid's own E
+  const std::array<double, 7> ce = {0, 2.2e9, 9e9, 3e10, 0.4, 0.3, 0.2};
+  Model me = squeezed_cube(null_material(1000, linear_polynomial(ce, 2e8)), 10, 10e-6);
+  worst = 0;
+  run_cube(me, [&](double mu, double p, double E) {
+    const double k2 = mu < 0 ? 0 : ce[2], k6 = mu < 0 ? 0 : ce[6];
+    const double want = ce[1] * mu + k2 * mu * mu + ce[3] * mu * mu * mu + (ce[4] + ce[5] * mu + k6 * mu * mu) * E;
+    worst = std::max(worst, std::fabs(p - want) / std::fabs(want));
+  }, mu_max, mu_min);
+  std::printf("linear polynomial (E terms): worst |p - (a + b E)| / |p| = %.2e\n", worst);
+  EXPECT_LT(worst, 1e-12);
+}
+
+TEST(EquationOfState, GruneisenOnTheHugoniotAndOffIt) {
+  auto hugoniot = [](double mu) {
+    const double den = 1 - (1.49 - 1) * mu;
+    return 8930.0 * 3940 * 3940 * mu * (1 + mu) / (den * den);
+  };
+  // GAMMA0 = 0: the compressed form is the Hugoniot whatever E; tension rho0 C^2 mu
+  Model m = squeezed_cube(null_material(8930, gruneisen_copper(0)), 50, 2e-6);
+  double worst = 0, mu_max = 0, mu_min = 0;
+  run_cube(m, [&](double mu, double p, double) {
+    const double want = mu > 0 ? hugoniot(mu) : 8930.0 * 3940 * 3940 * mu;
+    worst = std::max(worst, std::fabs(p - want) / std::fabs(want));
+  }, mu_max, mu_min);
+  std::printf("Gruneisen GAMMA0 = 0: mu %.4f .. %.4f, worst |p - p_H| / p_H = %.2e\n", mu_min, mu_max, worst);
+  EXPECT_GT(mu_max, 0.1);
+  EXPECT_LT(worst, 1e-12);
+  // GAMMA0 = 2.02, no bulk viscosity (E is the isentrope's -int p dV): p = p_H + GAMMA0 (E - E_H)
+  MaterialData md = null_material(8930, gruneisen_copper(2.02));
+  md.q1 = md.q2 = 0;
+  Model mg = squeezed_cube(md, 50, 2e-6);
+  worst = 0;
+  double below = 0;
+  run_cube(mg, [&](double mu, double p, double E) {
+    if (mu <= 0) return;
+    const double pH = hugoniot(mu), EH = pH * mu / (2 * (1 + mu));
+    const double want = pH + 2.02 * (E - EH);
+    worst = std::max(worst, std::fabs(p - want) / want);
+    if (mu > 0.1) below = std::max(below, (pH - p) / pH);
+  }, mu_max, mu_min);
+  std::printf("Gruneisen GAMMA0 = 2.02: worst |p - (p_H + G0 (E - E_H))| / p = %.2e; isentrope below the Hugoniot by %.3f%% at mu > 0.1\n",
+              worst, 100 * below);
+  EXPECT_LT(worst, 1e-12);
+  // the isentrope lies below the Hugoniot by a third-order amount: 0 < (p_H - p_s) / p_H < 2% at mu = 0.11
+  EXPECT_GT(below, 0);
+  EXPECT_LT(below, 0.02);
+}
+
+TEST(EquationOfState, JohnsonCookTakesItsPressureFromTheEos) {
+  // type 15, perfectly plastic (A = 100 MPa, B = 0), Gruneisen copper: p = p_H (GAMMA0 = 0)
+  // and the deviatoric stress on the yield surface, sigma_zz - sigma_xx = -A in compression
+  const MaterialType& t = material_type(15);
+  MaterialData md;
+  md.type = 15;
+  set_param_defaults(md, t);
+  md.rho = 8930, md.E = 117e9, md.nu = 0.35;
+  param_value(md, *find_param(t, "G")) = 46e9;
+  param_value(md, *find_param(t, "A")) = 1e8;
+  md.eos = gruneisen_copper(0);
+  Model m = squeezed_cube(md, 50, 2e-6);
+  double worst = 0, worst_dev = 0, mu_max = 0, mu_min = 0;
+  run_cube(m, [&](double mu, double p, double) {
+    if (mu <= 0.01) return;
+    const double den = 1 - 0.49 * mu;
+    const double want = 8930.0 * 3940 * 3940 * mu * (1 + mu) / (den * den);
+    worst = std::max(worst, std::fabs(p - want) / want);
+  }, mu_max, mu_min);
+  std::printf("Johnson-Cook + Gruneisen: worst |p - p_H| / p_H = %.2e\n", worst);
+  EXPECT_LT(worst, 1e-12);
+  // the deviatoric part after the run (stretched back into tension: on the yield surface)
+  ScopedThreads one(1);
+  Engine eng(m);
+  ASSERT_EQ(eng.initialize(), StepStatus::ok);
+  for (int c = 0; c < 30; ++c) ASSERT_EQ(eng.step(), StepStatus::ok);
+  const double* g = &eng.state().sig[0];
+  worst_dev = std::fabs(std::fabs(g[0] - g[2]) - 1e8) / 1e8;
+  std::printf("Johnson-Cook + Gruneisen: sigma_xx - sigma_zz = %.6e (A = 1e8)\n", g[0] - g[2]);
+  EXPECT_LT(worst_dev, 1e-9);
+}
+
+// (b) Flyer plate: copper on copper, MAT_NULL + Gruneisen (GAMMA0 2.02), v = 500 m/s.  A column
+// of 1 x 1 x 0.1 mm solids (lateral faces on rollers: uniaxial strain): flyer 20 mm (z < 0) at v,
+// target 40 mm at rest, the interface nodes at v/2.  Hugoniot: up = v/2 = 250 m/s, Us = C + S1
+// up = 4312.5 m/s, p = rho0 Us up = 9.628 GPa.  At t = 6 us the shock is 25.9 mm into the
+// target; the release from the flyer's free back (from 4.64 us) has not reached the interface.
+TEST(EquationOfState, FlyerPlateGivesTheHugoniotState) {
+  ScopedThreads one(1);
+  const double v = 500, C = 3940, S1 = 1.49, rho0 = 8930;
+  const double up = v / 2, Us = C + S1 * up, pH = rho0 * Us * up;
+  const double dz = 1e-4;
+  const int nf = 200, nt = 400;
+  Box b;
+  b.lx = b.ly = 1e-3;
+  b.nz = nf + nt;
+  b.lz = dz * b.nz;
+  b.z0 = -dz * nf;
+  Model m = make_box_model(b, null_material(rho0, gruneisen_copper(2.02)), 6e-6, 4);
+  set_velocity_field(m, [&](double, double, double z) -> std::array<double, 3> {
+    return {0, 0, z < -0.5 * dz ? v : z < 0.5 * dz ? v / 2 : 0.0};
+  });
+  Engine eng(m);
+  ASSERT_EQ(eng.initialize(), StepStatus::ok);
+  const State& s = eng.state();
+  // arrival time at each target solid: p crosses pH / 2 (linear in time between cycles)
+  std::vector<double> arrival(std::size_t(nt), -1), p_prev(std::size_t(nt), 0);
+  double t_prev = 0;
+  StepStatus st;
+  while ((st = eng.step()) == StepStatus::ok) {
+    for (int k = 0; k < nt; ++k) {
+      const double p = pressure(s, nf + k);
+      if (arrival[std::size_t(k)] < 0 && p >= 0.5 * pH)
+        arrival[std::size_t(k)] = t_prev + (s.time - t_prev) * (0.5 * pH - p_prev[std::size_t(k)]) / (p - p_prev[std::size_t(k)]);
+      p_prev[std::size_t(k)] = p;
+    }
+    t_prev = s.time;
+  }
+  ASSERT_EQ(st, StepStatus::finished);
+  // the shocked target between 3 and 20 mm: pressure and particle velocity
+  double pm = 0, pmin = 1e300, pmax = 0;
+  int np = 0;
+  for (int k = 30; k < 200; ++k, ++np) {
+    const double p = pressure(s, nf + k);
+    pm += p, pmin = std::min(pmin, p), pmax = std::max(pmax, p);
+  }
+  pm /= np;
+  double vm = 0;
+  int nv = 0;
+  for (int n = 0; n < s.nn; ++n) {
+    const double z = m.z[std::size_t(n)];
+    if (z > 3e-3 && z < 20e-3) vm += s.vz[std::size_t(n)], ++nv;
+  }
+  vm /= nv;
+  // shock speed: least-squares line through (arrival time, position) of target solids 50-250
+  double st_ = 0, sz = 0, stt = 0, stz = 0;
+  int ns = 0;
+  for (int k = 50; k < 250; ++k, ++ns) {
+    const double t = arrival[std::size_t(k)], z = (k + 0.5) * dz;
+    ASSERT_GT(t, 0) << k;
+    st_ += t, sz += z, stt += t * t, stz += t * z;
+  }
+  const double us = (ns * stz - st_ * sz) / (ns * stt - st_ * st_);
+  std::printf("flyer plate: up %.2f m/s (v/2 = %.1f, %+.3f%%), p %.4f GPa (rho0 Us up = %.4f, %+.3f%%; plateau %.4f..%.4f), "
+              "Us from arrivals %.1f m/s (C + S1 up = %.1f, %+.3f%%)\n",
+              vm, up, 100 * (vm / up - 1), pm * 1e-9, pH * 1e-9, 100 * (pm / pH - 1), pmin * 1e-9, pmax * 1e-9, us, Us,
+              100 * (us / Us - 1));
+  EXPECT_NEAR(vm / up, 1.0, 0.001);   // 0.1% (measured 1e-6)
+  EXPECT_NEAR(pm / pH, 1.0, 0.001);   // 0.1% (measured 1e-5)
+  EXPECT_NEAR(us / Us, 1.0, 0.002);   // 0.2% (measured 3e-5)
+}
