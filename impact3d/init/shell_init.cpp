@@ -130,6 +130,7 @@ void init_shells(const Model& m, State& s) {
   for (auto* v : {&sh.dt_e, &sh.de_ie, &sh.de_hg, &sh.energy}) v->assign(std::size_t(ns), 0.0);
   sh.bad.assign(std::size_t(ns), 0);
   sh.rigid_elem.assign(std::size_t(ns), 0);
+  sh.failed.assign(std::size_t(ns), 0);
   // geometry, masses; rotational dofs on the nodes of deformable shells
   sh.node_rot.assign(std::size_t(s.nn), -1);
   std::vector<double> inertia_of_node(std::size_t(s.nn), 0.0);

@@ -3329,7 +3329,6 @@ bool is_ascii_database(const std::string& n) {
                                               ") has no shell form; supported for shells: *MAT_ELASTIC, *MAT_PLASTIC_KINEMATIC, *MAT_RIGID");
         continue;
       }
-      if (md.fail_strain != 0) err(1102, r.ref, "*MAT_PLASTIC_KINEMATIC " + std::to_string(p.mid), "FS", "failure (element deletion) of shells");
       resolve_rigid_constraints(md, r, p.mid);
       if (auto eit = erosion_.find(p.mid); eit != erosion_.end())
         err(1102, eit->second.second, "*MAT_ADD_EROSION material " + std::to_string(p.mid), "MID", "erosion (element deletion) of shells");

@@ -42,6 +42,7 @@ struct ShellState {
   std::vector<double> energy;                 // accumulated internal energy per shell (plot database)
   std::vector<std::uint8_t> bad;              // 1: non-positive area in this pass
   std::vector<std::uint8_t> rigid_elem;       // 1: shell of a rigid material
+  std::vector<std::uint8_t> failed;           // 1: deleted (every point past the material's FS)
   std::size_t corner_base = 0;                // shell k's corner j is cfx[corner_base + 4 k + j]
   std::vector<double> cmx, cmy, cmz;          // 4 per shell: corner moments (global)
   // rotational degrees of freedom: only the nodes that deformable shells use

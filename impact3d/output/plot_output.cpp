@@ -215,6 +215,7 @@ void fill_plot_state(const Model& m, const State& s, const InterfaceForces& ifac
   ps.shell_vars.resize(std::size_t(kShellPlotVars) * ns);
   for (std::size_t k = 0; k < ns; ++k) fill_shell_plot_vars(s, int(k), &ps.shell_vars[std::size_t(kShellPlotVars) * k]);
   ps.shell_alive.assign(ns, 1);
+  for (std::size_t k = 0; k < ns && k < s.shells.failed.size(); ++k) ps.shell_alive[k] = s.shells.failed[k] ? 0 : 1;
 }
 
 void PlotOutput::open(const Model& m, const std::string& root, int word_size,

@@ -46,6 +46,13 @@ void gather_shell(const State& s, int k, double dt, ShellKernelIO& io) {
 
 void process_shell(State& s, const ShellGroup& g, int k, double dt) {
   ShellState& sh = s.shells;
+  if (sh.failed[std::size_t(k)]) {  // deleted: no forces, no step, no energy (its mass stays)
+    zero_shell_corners(s, k);
+    sh.dt_e[std::size_t(k)] = std::numeric_limits<double>::infinity();
+    sh.de_ie[std::size_t(k)] = sh.de_hg[std::size_t(k)] = 0;
+    sh.bad[std::size_t(k)] = 0;
+    return;
+  }
   ShellKernelIO io;
   gather_shell(s, k, dt, io);
   const std::size_t ip = std::size_t(sh.ip_start[std::size_t(k)]);
@@ -74,6 +81,14 @@ void process_shell(State& s, const ShellGroup& g, int k, double dt) {
     sh.cmx[q] = io.m[j][0];
     sh.cmy[q] = io.m[j][1];
     sh.cmz[q] = io.m[j][2];
+  }
+  // failure (type 3 FS): when every point through the thickness has reached it, the shell is
+  // deleted; this pass's forces still act, from the next pass on it carries none
+  const double fs = s.mats[std::size_t(g.material)].fail_strain;
+  if (plastic && fs > 0 && dt > 0) {
+    bool all = true;
+    for (int i = 0; i < sh.nip[std::size_t(k)] && all; ++i) all = sh.eps_p[ip + std::size_t(i)] >= fs;
+    if (all) sh.failed[std::size_t(k)] = 2;  // 2: in this pass (the books count it)
   }
 }
 
@@ -114,9 +129,14 @@ ShellPassResult calc_forces_for_shells(const Model& m, State& s) {
         if (out.bad_shell < 0 || k < out.bad_shell) out.bad_shell = k;
         continue;
       }
+      if (sh.failed[K] == 2) {
+        sh.failed[K] = 1;
+        ++out.failed_now;
+      }
       gie += sh.de_ie[K];
       sh.energy[K] += sh.de_ie[K];
       ghg += sh.de_hg[K];
+      if (sh.failed[K] == 1 && sh.dt_e[K] == std::numeric_limits<double>::infinity()) continue;
       if (sh.dt_e[K] < out.dt_min || (sh.dt_e[K] == out.dt_min && k < out.dt_shell)) {
         out.dt_min = sh.dt_e[K];
         out.dt_shell = k;

@@ -14,6 +14,7 @@ struct ShellPassResult {
   double dt_min = 0;             // smallest shell step and its shell (lowest index on ties)
   int dt_shell = -1;
   int bad_shell = -1, non_finite_shell = -1;  // lowest such shell, or -1
+  int failed_now = 0;            // shells deleted in this pass (failure strain FS)
 };
 
 // Element pass of the shells at t^n (x^n, v^{n-1/2}, omega^{n-1/2}, dt^{n-1/2}): stresses,
