@@ -3925,7 +3925,8 @@ bool is_ascii_database(const std::string& n) {
     }
     const int mt = part_material_[std::size_t(p->second)];
     if (mt < 0) return -1;
-    if (!material_type(m_.materials[std::size_t(mt)].type).rigid) {
+    const MaterialType* t = find_material_type(m_.materials[std::size_t(mt)].type);  // (null: its *MAT was refused)
+    if (!t || !t->rigid) {
       err(1006, l.ref, l.keyword, "PID", "part " + std::to_string(l.id) + " is not a rigid body (*MAT_RIGID)");
       return -1;
     }
@@ -4049,7 +4050,8 @@ bool is_ascii_database(const std::string& n) {
             rigid_node.assign(std::size_t(m_.num_nodes()), 0);
             for (int e = 0; e < m_.num_hexes(); ++e) {
               const int mt = m_.hex_material[std::size_t(e)];
-              if (mt >= 0 && material_type(m_.materials[std::size_t(mt)].type).rigid)
+              const MaterialType* t = mt >= 0 ? find_material_type(m_.materials[std::size_t(mt)].type) : nullptr;
+              if (t && t->rigid)
                 for (int n : m_.hex_nodes[std::size_t(e)]) if (n >= 0) rigid_node[std::size_t(n)] = 1;
             }
           }
