@@ -578,10 +578,10 @@ void write_fixed_deck(std::ostream& os, const Model& m, std::vector<std::string>
   os << "*----- written by IMPACT-3D (impact3d --write-fixed); layout: README.md \"Deck format\"\n";
   os << "*----- CONTROL CARD #2: counts\n";
   os << L("control card 2").i(1, 5, int(m.materials.size())).i(6, 15, m.num_nodes()).i(16, 25, m.num_hexes())
-            .i(26, 35, 0).i(36, 45, 0).i(46, 55, 0).i(56, 65, k.interface_segments_out).r(66, 75, k.interface_out_interval).str() << "\n";
+            .i(26, 35, 0).i(36, 45, m.num_shells()).i(46, 55, 0).i(56, 65, k.interface_segments_out).r(66, 75, k.interface_out_interval).str() << "\n";
   os << "*----- CONTROL CARD #3\n";
   os << L("control card 3").i(1, 5, int(m.node_th_blocks.size())).i(6, 10, int(m.solid_th_blocks.size()))
-            .i(11, 15, 0).i(16, 20, 0).i(21, 25, 0).i(26, 30, k.report_interval).i(31, 35, k.reaction_print_flag)
+            .i(11, 15, 0).i(16, 20, int(m.shell_th_blocks.size())).i(21, 25, 0).i(26, 30, k.report_interval).i(31, 35, k.reaction_print_flag)
             .i(36, 40, 0).i(41, 45, 0).str() << "\n";
   os << "*----- CONTROL CARD #4\n";
   os << L("control card 4").i(1, 10, 0).i(11, 15, 0).i(16, 20, 0).i(21, 25, 0).i(26, 30, 0).a(31, 35, "e20.0").i(36, 40, 0).str() << "\n";
@@ -651,7 +651,7 @@ void write_fixed_deck(std::ostream& os, const Model& m, std::vector<std::string>
     std::string what = "material " + std::to_string(j + 1);
     os << L(what + " card 1").i(1, 5, int(j) + 1).i(6, 10, md.type).r(11, 20, md.rho).i(21, 25, md.eos.form)
               .i(26, 30, md.hourglass_type).r(31, 40, md.hourglass_coef).i(41, 45, md.bulk_type)
-              .r(46, 55, md.q1).r(56, 65, md.q2).i(66, 70, 0).i(76, 80, 0).str() << "\n";
+              .r(46, 55, md.q1).r(56, 65, md.q2).i(66, 70, md.shell ? 2 : 0).i(76, 80, 0).str() << "\n";
     os << L(what + " title").a(1, 80, md.title).str() << "\n";
     // cards 3-8: each parameter where the type's table puts it (material_types.h)
     const MaterialType* t = find_material_type(md.type);
@@ -678,9 +678,19 @@ void write_fixed_deck(std::ostream& os, const Model& m, std::vector<std::string>
     }
   }
   os << "*----- NODES\n";
-  for (int n = 0; n < m.num_nodes(); ++n)
+  static const int rot_code[8] = {0, 1, 2, 4, 3, 6, 5, 7};  // bits (0 rx, 1 ry, 2 rz) -> code 0-7
+  for (int n = 0; n < m.num_nodes(); ++n) {
+    const int rc = std::size_t(n) < m.rot_bc.size() ? rot_code[m.rot_bc[std::size_t(n)] & 7] : 0;
+    if (md.shell) {  // the shell section card (IMPACT-3D choice): SHRF, NIP, QR, T1-T4
+      const ShellSectionData& sec = md.shell_section;
+      FixedLine line = L(what + " shell section card");
+      line.r(1, 10, sec.shrf).i(11, 20, sec.nip).i(21, 30, 0);
+      for (int j = 0; j < 4; ++j) line.r(31 + 10 * j, 40 + 10 * j, sec.t[std::size_t(j)]);
+      os << line.str() << "\n";
+    }
     os << L("node " + std::to_string(n + 1)).i(1, 8, n + 1).i(9, 13, m.bc[std::size_t(n)]).r(14, 33, m.x[std::size_t(n)])
-              .r(34, 53, m.y[std::size_t(n)]).r(54, 73, m.z[std::size_t(n)]).i(74, 78, 0).str() << "\n";
+              .r(34, 53, m.y[std::size_t(n)]).r(54, 73, m.z[std::size_t(n)]).i(74, 78, rc).str() << "\n";
+  }
   os << "*----- SOLID ELEMENTS\n";
   for (int e = 0; e < m.num_hexes(); ++e) {
     FixedLine c = L("solid " + std::to_string(e + 1));
@@ -699,9 +709,20 @@ void write_fixed_deck(std::ostream& os, const Model& m, std::vector<std::string>
   }
   if (!m.nodal_loads.empty()) os << "*----- NODAL LOADS: node, direction, load curve, scale\n";
   for (const NodalLoad& l : m.nodal_loads) {
+  if (m.num_shells() > 0) os << "*----- SHELL ELEMENTS: id, material, n1-n4; thicknesses t1-t4\n";
+  for (int e = 0; e < m.num_shells(); ++e) {
+    FixedLine c = L("shell " + std::to_string(e + 1));
+    c.i(1, 8, e + 1).i(9, 13, m.shell_material[std::size_t(e)] + 1);
+    for (int j = 0; j < 4; ++j) c.i(14 + 8 * j, 21 + 8 * j, m.shell_nodes[std::size_t(e)][std::size_t(j)] + 1);
+    os << c.str() << "\n";
+    FixedLine t = L("shell " + std::to_string(e + 1) + " thicknesses");
+    for (int j = 0; j < 4; ++j) t.r(1 + 10 * j, 10 + 10 * j, m.shell_thickness[std::size_t(e)][std::size_t(j)]);
+    os << t.str() << "\n";
+  }
     int d = 0;
     for (int q = 0; q < 3; ++q) if (l.dir[std::size_t(q)] == 1) d = q + 1;
     if (d == 0 && notes) notes->push_back("nodal load direction not along an axis: written as x");
+  for (const auto& b : m.shell_th_blocks) os << L("shell time-history block").i(1, 8, b[0]).i(9, 16, b[1]).str() << "\n";
     os << L("nodal load").i(1, 8, l.node + 1).i(9, 13, d == 0 ? 1 : d).i(14, 18, l.curve + 1).r(19, 28, l.scale).str() << "\n";
   }
   if (!m.pressure_loads.empty()) os << "*----- PRESSURE LOADS: load curve, n1-n4; multipliers, arrival time (71-80)\n";
@@ -789,10 +810,15 @@ int write_converted_decks(const Model& m, const std::string& keyword_path, const
   for (int k = 0; k < 2; ++k) {
     const std::string& path = k == 0 ? keyword_path : fixed_path;
     if (path.empty()) continue;
-    if (k == 1 && m.num_shells() > 0) {  // the fixed-format shell cards are not defined yet
-      log << " error: the fixed-format deck " << path << " cannot hold this model (not written): "
-          << m.num_shells() << " shells (the fixed format has no shell cards in IMPACT-3D yet; write a keyword deck)\n";
-      return exit_code::input_error;
+    if (k == 1 && m.num_shells() > 0) {  // what the fixed-format shell cards cannot hold
+      bool omega = false;
+      for (const auto& w : m.init_omega) omega = omega || w[0] != 0 || w[1] != 0 || w[2] != 0;
+      if (omega || m.shell_rotary_scale != 1.0) {
+        log << " error: the fixed-format deck " << path << " cannot hold this model (not written): "
+            << (omega ? "initial rotational velocities of shell nodes" : "a rotary inertia scale (*CONTROL_SHELL ROTASCL)")
+            << " (no fixed-format field; write a keyword deck)\n";
+        return exit_code::input_error;
+      }
     }
     if (k == 1) {  // *MAT_ADD_EROSION has no fixed-format card
       for (std::size_t j = 0; j < m.materials.size(); ++j)
@@ -952,6 +978,7 @@ std::vector<std::string> model_differences(const Model& a, const Model& b, int m
   D("rotary inertia scale", a.shell_rotary_scale, b.shell_rotary_scale);
   auto blocks = [&](const char* w, const std::vector<std::array<int, 2>>& x, const std::vector<std::array<int, 2>>& y) {
     if (x != y) diff(w, std::to_string(x.size()) + " block(s)", std::to_string(y.size()) + " block(s), or other ranges");
+    for (int j = 0; j < 4; ++j) D(w + "section T" + std::to_string(j + 1), x.shell_section.t[std::size_t(j)], y.shell_section.t[std::size_t(j)]);
   };
   blocks("node time-history blocks", a.node_th_blocks, b.node_th_blocks);
   blocks("solid time-history blocks", a.solid_th_blocks, b.solid_th_blocks);
@@ -966,6 +993,7 @@ std::vector<std::string> model_differences(const Model& a, const Model& b, int m
     const StoneWall &x = a.walls[w], &y = b.walls[w];
     std::string s = "wall " + std::to_string(w + 1) + " ";
     for (int q = 0; q < 3; ++q) {
+  blocks("shell time-history blocks", a.shell_th_blocks, b.shell_th_blocks);
       D(s + "tail", x.tail[std::size_t(q)], y.tail[std::size_t(q)]);
       D(s + "head", x.head[std::size_t(q)], y.head[std::size_t(q)]);
     }

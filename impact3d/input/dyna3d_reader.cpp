@@ -11,6 +11,7 @@
 
 #include "impact3d/input/deck_reader.h"
 #include "impact3d/input/element_shapes.h"
+#include "impact3d/init/shell_init.h"
 #include "impact3d/material/eos.h"
 #include "impact3d/material/material_types.h"
 
@@ -34,6 +35,7 @@ class Dyna3dReader {
     read_materials();
     read_nodes();
     read_solids();
+    read_shells();
     read_time_history_blocks();
     read_load_curves();
     read_nodal_loads();
@@ -64,6 +66,9 @@ class Dyna3dReader {
   int idw_ = 8;  // width of id fields: 8 large, 5 small
   std::vector<int> curve_lines_;   // header line of each load curve
   std::vector<char> curve_used_;   // a load or motion refers to it
+  int numels_ = 0;                 // control card 2 NUMELS: 4-node shells
+  int shell_th_blocks_ = 0;        // control card 3 field 4
+  std::vector<int> rot_code_line_; // per node: line of a node card with a rotational code (0: none)
 
   Card next(const std::string& card_name, const std::string& expected = {}) {
     if (diag_.error_count() > 500) {
@@ -149,7 +154,7 @@ class Dyna3dReader {
         k.numnp = int(c.i(6, 15, "NUMNP"));
         k.numelh = int(c.i(16, 25, "NUMELH"));
         require_zero(c, 26, 35, "NUMELB", "beam elements");
-        require_zero(c, 36, 45, "NUMELS", "shell elements");
+        numels_ = int(c.i(36, 45, "NUMELS"));
         require_zero(c, 46, 55, "NUMELT", "thick shell elements");
         k.interface_segments_out = int(c.i(56, 65, "interface segments"));
         k.interface_out_interval = c.e(66, 75, "interface output interval");
@@ -158,7 +163,7 @@ class Dyna3dReader {
         k.numnp = int(c.i(6, 10, "NUMNP"));
         k.numelh = int(c.i(11, 15, "NUMELH"));
         require_zero(c, 16, 20, "NUMELB", "beam elements");
-        require_zero(c, 21, 25, "NUMELS", "shell elements");
+        numels_ = int(c.i(21, 25, "NUMELS"));
         require_zero(c, 26, 30, "NUMELT", "thick shell elements");
         k.interface_segments_out = int(c.i(31, 35, "interface segments"));
         k.interface_out_interval = c.e(36, 45, "interface output interval");
@@ -166,7 +171,10 @@ class Dyna3dReader {
       if (k.nmmat < 1) c.error(1003, 1, 5, "NMMAT", "at least 1 material");
       int w = m_.large_format ? 10 : 5;
       if (k.numnp < 1) c.error(1003, 6, 5 + w, "NUMNP", "at least 1 node");
-      if (k.numelh < 1) c.error(1003, 6 + w, 5 + 2 * w, "NUMELH", "at least 1 solid element");
+      if (k.numelh < 0 || (k.numelh == 0 && numels_ < 1))
+        c.error(1003, 6 + w, 5 + 2 * w, "NUMELH", "at least 1 element (solids NUMELH or shells NUMELS)");
+      const int s1 = m_.large_format ? 36 : 21, s2 = m_.large_format ? 45 : 25;
+      if (numels_ < 0) c.error(1003, s1, s2, "NUMELS", "must not be negative");
       if (k.interface_out_interval < 0) {
         if (m_.large_format) c.error(1221, 66, 75, "interface output interval");
         else c.error(1221, 36, 45, "interface output interval");
@@ -181,6 +189,11 @@ class Dyna3dReader {
         c.error(1205, 6 + w, 5 + 2 * w, "NUMELH", "the deck has only " + std::to_string(avail) + " cards left");
         k.numelh = 0;
       }
+      if (numels_ > avail / 2) {
+        c.error(1205, s1, s2, "NUMELS", "the deck has only " + std::to_string(avail) + " cards left (two per shell)");
+        numels_ = 0;
+      }
+      numels_ = std::max(numels_, 0);
       if (k.nmmat > avail / 8 + 1) {
         c.error(1205, 1, 5, "NMMAT", "the deck cannot hold that many 8-card material sets");
         k.nmmat = 0;
@@ -194,7 +207,7 @@ class Dyna3dReader {
       k.node_th_blocks = int(c.i(1, 5, "node time-history blocks"));
       k.solid_th_blocks = int(c.i(6, 10, "solid time-history blocks"));
       require_zero(c, 11, 15, "beam time-history blocks", "beam time histories");
-      require_zero(c, 16, 20, "shell time-history blocks", "shell time histories");
+      shell_th_blocks_ = int(c.i(16, 20, "shell time-history blocks"));
       require_zero(c, 21, 25, "thick shell time-history blocks", "thick shell time histories");
       k.report_interval = int(c.i(26, 30, "report interval", 100));
       if (k.report_interval == 0) k.report_interval = 100;
@@ -207,6 +220,8 @@ class Dyna3dReader {
       long avail = remaining_cards();
       if (k.node_th_blocks > avail) { c.error(1205, 1, 5, "node time-history blocks"); k.node_th_blocks = 0; }
       if (k.solid_th_blocks > avail) { c.error(1205, 6, 10, "solid time-history blocks"); k.solid_th_blocks = 0; }
+      if (shell_th_blocks_ < 0) { c.error(1003, 16, 20, "shell time-history blocks", "must not be negative"); shell_th_blocks_ = 0; }
+      if (shell_th_blocks_ > avail) { c.error(1205, 16, 20, "shell time-history blocks"); shell_th_blocks_ = 0; }
       k.node_th_blocks = std::max(k.node_th_blocks, 0);
       k.solid_th_blocks = std::max(k.solid_th_blocks, 0);
     }
@@ -363,6 +378,34 @@ class Dyna3dReader {
     });
   }
 
+  // The shell section card of a shell material (element type 2), after card 8 (IMPACT-3D
+  // choice, LS-DYNA's *SECTION_SHELL fields): SHRF (1-10), NIP (11-20), QR (21-30, 0 Gauss only),
+  // T1-T4 (31-70; T2-T4 blank = T1).
+  void read_shell_section(MaterialData& md, const std::string& name) {
+    Card c = next(name + " shell section card", "a shell material (element type 2) has a section card after card 8");
+    ShellSectionData& sec = md.shell_section;
+    sec.line = c.line();
+    sec.shrf = c.e(1, 10, "shear factor SHRF", 1.0);
+    if (c.blank(1, 10) || sec.shrf == 0) sec.shrf = 1.0;
+    if (!(sec.shrf > 0 && sec.shrf <= 1)) c.error(1003, 1, 10, "shear factor SHRF", "shear factor in (0, 1] (5/6 for isotropic shells)");
+    const double nip = c.e(11, 20, "NIP", 2);
+    sec.nip = (c.blank(11, 20) || nip == 0) ? 2 : int(nip);
+    if (nip != std::floor(nip) || nip < 0 || nip > 1e9) { c.error(1003, 11, 20, "NIP", "integration points 1-10"); sec.nip = 2; }
+    else if (nip > 10) { c.error(1102, 11, 20, "NIP", "more than 10 Gauss points (user-defined integration rules)"); sec.nip = 2; }
+    if (c.e(21, 30, "quadrature rule QR") != 0) c.error(1102, 21, 30, "quadrature rule QR", "user-defined and trapezoidal integration rules (Gauss only)");
+    for (int j = 0; j < 4; ++j) {
+      const std::string f = "T" + std::to_string(j + 1);
+      sec.t[std::size_t(j)] = c.e(31 + 10 * j, 40 + 10 * j, f.c_str());
+    }
+    for (int j = 1; j < 4; ++j)
+      if (sec.t[std::size_t(j)] == 0) sec.t[std::size_t(j)] = sec.t[0];
+    for (int j = 0; j < 4; ++j)
+      if (sec.t[std::size_t(j)] < 0) {
+        const std::string f = "T" + std::to_string(j + 1);
+        c.error(1241, 31 + 10 * j, 40 + 10 * j, f.c_str());
+      }
+  }
+
   void read_materials() {
     int n = m_.control.nmmat;
     m_.materials.assign(static_cast<std::size_t>(n), MaterialData{});
@@ -416,15 +459,23 @@ class Dyna3dReader {
       // element type as DYNA3D deck writers (FEMGV's DYNA interface) settle it: 0 solid, 1
       // beam, 2 shell, 3 thick shell
       long long et = c1.i(66, 70, "element type");
-      if (et >= 1 && et <= 3) {
-        static const char* const kind[] = {"", "beams (element type 1)", "shells (element type 2)", "thick shells (element type 3)"};
-        c1.error(1102, 66, 70, "element type", std::string(kind[et]) + ": IMPACT-3D has solids (element type 0) only");
-      } else if (et != 0) {
+      if (et == 1 || et == 3) {
+        static const char* const kind[] = {"", "beams (element type 1)", "", "thick shells (element type 3)"};
+        c1.error(1102, 66, 70, "element type", std::string(kind[et]) + ": IMPACT-3D has solids (0) and shells (2)");
+      } else if (et != 0 && et != 2) {
         c1.error(1006, 66, 70, "element type", "0 solid, 1 beam, 2 shell, 3 thick shell");
       }
+      md.shell = et == 2;
+      if (md.shell && mt && !has_shell_kernel(md.type))
+        c1.error(1103, 6, 10, "material type", "type " + std::to_string(md.type) + " has no shell form; shells (element type 2) take types 1, 3 and 20");
+      if (md.shell && eos != 0) c1.error(1102, 21, 25, "EOS type", "an equation of state for shells (element type 2)");
       c1.i(71, 75, "unused");
       long long ef = c1.i(76, 80, "element formulation");
-      if (ef != 0 && ef != 1) c1.error(1102, 76, 80, "element formulation", "only the one-point hexahedron (0 or 1)");
+      if (md.shell) {  // shells: Belytschko-Tsay (LS-DYNA ELFORM 2; 0 = the default, 2)
+        if (ef != 0 && ef != 2) c1.error(1102, 76, 80, "element formulation", "shell formulation " + std::to_string(ef) + "; only 2 (Belytschko-Tsay, also 0)");
+      } else if (ef != 0 && ef != 1) {
+        c1.error(1102, 76, 80, "element formulation", "only the one-point hexahedron (0 or 1)");
+      }
 
       Card c2 = next(name + " card 2 (title)");
       md.title = c2.a(1, 80);
@@ -433,7 +484,8 @@ class Dyna3dReader {
       std::vector<Card> cards;
       for (int k = 3; k <= 8; ++k) cards.push_back(next(name + " card " + std::to_string(k)));
       if (mt) read_material_params(md, *mt, cards);
-      if (eos_form && (!mt || mt->accepts_eos)) {  // (a type that takes none: reported above, no cards read)
+      if (md.shell) read_shell_section(md, name);
+      if (eos_form && (!mt || mt->accepts_eos) && !md.shell) {  // (a type that takes none: reported above, no cards read)
         Card ec[2] = {next(name + " EOS card 1"), next(name + " EOS card 2")};
         for (const EosParam& p : eos_form->params) {
           if (p.fcard < 0) continue;
@@ -475,7 +527,6 @@ class Dyna3dReader {
     const bool L = m_.large_format;
     const int i1 = 1, i2 = L ? 8 : 5, b1 = i2 + 1, b2 = i2 + 5;
     const int x1 = b2 + 1, y1 = x1 + 20, z1 = y1 + 20, r1 = z1 + 20;
-    int rotational = 0, rot_line = 0;
     int unread = 0;  // node cards with text in the columns after the rotational code
     Location unread_where;
     for (int k = 0; k < n; ++k) {
@@ -509,7 +560,14 @@ class Dyna3dReader {
       if (!c.blank(r1 + 5, 80) && unread++ == 0) unread_where = c.where(r1 + 5, 80, "unread columns");
       if (code < 0 || code > 7) c.error(1216, b1, b2, "boundary code");
       if (rc < 0 || rc > 7) c.error(1216, r1, r1 + 4, "rotational code");
-      else if (rc != 0) { ++rotational; if (!rot_line) rot_line = c.line(); }
+      else if (rc != 0 && id >= 1 && id <= n) {
+        // the rotations it fixes act on shell nodes (read_shells); on the others: warning 2005
+        if (m_.rot_bc.empty()) m_.rot_bc.assign(std::size_t(n), 0);
+        if (rot_code_line_.empty()) rot_code_line_.assign(std::size_t(n), 0);
+        static const std::uint8_t bits[8] = {0, 1, 2, 4, 3, 6, 5, 7};  // code 0-7 -> bit 0 rx, 1 ry, 2 rz
+        m_.rot_bc[std::size_t(id - 1)] = bits[rc];
+        rot_code_line_[std::size_t(id - 1)] = c.line();
+      }
       if (id < 1 || id > n) {
         c.error(1201, i1, i2, "node number", "must be 1.." + std::to_string(n) + " (NUMNP)");
         continue;
@@ -523,12 +581,6 @@ class Dyna3dReader {
       m_.y[std::size_t(id - 1)] = y;
       m_.z[std::size_t(id - 1)] = z;
       m_.bc[std::size_t(id - 1)] = (code >= 0 && code <= 7) ? code : 0;
-    }
-    if (rotational) {
-      Location loc;
-      loc.file = deck_.name();
-      loc.line = rot_line;
-      diag_.add(2005, loc, std::to_string(rotational) + " node(s)");
     }
     if (unread)
       diag_.add(2020, unread_where, std::to_string(unread) + " node card(s) (this is the first) hold text in columns " +
@@ -638,6 +690,122 @@ class Dyna3dReader {
     report_missing(seen, "solid element");
   }
 
+  // Shell element cards (NUMELS shells after the solids, two cards each, as the Silo reader of
+  // TrueGrid's DYNA3D decks finds them): card 1 the shell number (ID), material (I5) and n1-n4
+  // (4 ID), the solid card's columns; card 2 the nodal thicknesses t1-t4 (4 E10, columns 1-40;
+  // all blank: the material's shell section T1-T4).  n4 = n3 (or blank) is a triangle.  Then the
+  // solids' materials must be solid materials, the shells' shell materials (element type 2), and
+  // the rotational codes of the node cards act on shell nodes (warning 2005 for the others).
+  void read_shells() {
+    const int n = numels_;
+    std::array<int, 4> undefined;
+    undefined.fill(-1);
+    m_.shell_nodes.assign(std::size_t(n), undefined);
+    m_.shell_material.assign(std::size_t(n), -1);
+    m_.shell_thickness.assign(std::size_t(n), std::array<double, 4>{});
+    m_.shell_line.assign(std::size_t(n), 0);
+    std::vector<int> seen(std::size_t(n), 0);
+    const int w = idw_;
+    const int last = w + 5 + 4 * w;  // the last column read (node n4)
+    const auto is_shell_mat = [&](int mat) {  // 1-based
+      return mat >= 1 && mat <= int(m_.materials.size()) && m_.materials[std::size_t(mat - 1)].shell;
+    };
+    for (int k = 0; k < n; ++k) {
+      Card c = next("shell element card " + std::to_string(k + 1) + " of " + std::to_string(n),
+                    "expected " + std::to_string(n) + " shell elements, two cards each (control card 2 NUMELS), found " + std::to_string(k));
+      const int id = int(c.i(1, w, "element number"));
+      c.set_name("shell element card for element " + std::to_string(id));
+      const int mat = int(c.i(w + 1, w + 5, "material number"));
+      std::array<int, 4> nodes{};
+      bool ok = true;
+      for (int j = 0; j < 4; ++j) {
+        const int c1 = w + 6 + j * w;
+        const std::string fname = "node n" + std::to_string(j + 1);
+        int nid = int(c.i(c1, c1 + w - 1, fname.c_str()));
+        if (j == 3 && c.blank(c1, c1 + w - 1)) nid = nodes[2] + 1;  // a triangle given with three nodes
+        if (nid < 1 || nid > m_.control.numnp) {
+          c.error(1202, c1, c1 + w - 1, fname.c_str(), "nodes are 1.." + std::to_string(m_.control.numnp));
+          ok = false;
+        }
+        nodes[std::size_t(j)] = nid - 1;
+      }
+      if (!c.blank(last + 1, 80))
+        diag_.add(2020, c.where(last + 1, 80, "unread columns"), "after node n4: IMPACT-3D reads nothing there");
+      if (mat < 1 || mat > m_.control.nmmat) {
+        c.error(1203, w + 1, w + 5, "material number", "materials are 1.." + std::to_string(m_.control.nmmat));
+        ok = false;
+      } else if (!is_shell_mat(mat)) {
+        c.error(1203, w + 1, w + 5, "material number", "material " + std::to_string(mat) + " is not a shell material (material card 1 columns 66-70 element type 2)");
+        ok = false;
+      }
+      if (ok && (nodes[0] == nodes[1] || nodes[0] == nodes[2] || nodes[1] == nodes[2] || nodes[0] == nodes[3] || nodes[1] == nodes[3])) {
+        c.error(1222, w + 6, last, "nodes n1-n4", "a shell is a quadrilateral or a triangle with n4 = n3");
+        ok = false;
+      }
+      Card c2 = next("shell element " + std::to_string(id) + " thickness card",
+                     "each shell element has a second card with its thicknesses t1-t4");
+      std::array<double, 4> t{};
+      for (int j = 0; j < 4; ++j) {
+        const std::string f = "thickness t" + std::to_string(j + 1);
+        t[std::size_t(j)] = c2.e(1 + 10 * j, 10 + 10 * j, f.c_str());
+        if (t[std::size_t(j)] < 0) { c2.error(1241, 1 + 10 * j, 10 + 10 * j, f.c_str()); ok = false; }
+      }
+      if (!c2.blank(41, 80)) diag_.add(2020, c2.where(41, 80, "unread columns"), "after t4: IMPACT-3D reads nothing there");
+      if (id < 1 || id > n) {
+        c.error(1201, 1, w, "element number", "must be 1.." + std::to_string(n) + " (NUMELS)");
+        continue;
+      }
+      if (seen[std::size_t(id - 1)]) {
+        c.error(1200, 1, w, "element number", "shell " + std::to_string(id) + " already defined on line " + std::to_string(seen[std::size_t(id - 1)]));
+        continue;
+      }
+      seen[std::size_t(id - 1)] = c.line();
+      m_.shell_line[std::size_t(id - 1)] = c.line();
+      if (!ok) continue;
+      if (t[0] == 0 && t[1] == 0 && t[2] == 0 && t[3] == 0) t = m_.materials[std::size_t(mat - 1)].shell_section.t;
+      m_.shell_nodes[std::size_t(id - 1)] = nodes;
+      m_.shell_material[std::size_t(id - 1)] = mat - 1;
+      m_.shell_thickness[std::size_t(id - 1)] = t;
+    }
+    report_missing(seen, "shell element");
+    // solids of shell materials
+    int solid_of_shell = 0;
+    for (std::size_t e = 0; e < m_.hex_material.size(); ++e) {
+      const int mat = m_.hex_material[e];
+      if (mat < 0 || !m_.materials[std::size_t(mat)].shell) continue;
+      Location loc;
+      loc.file = deck_.name();
+      loc.line = m_.hex_line[e];
+      loc.card = "solid element card for element " + std::to_string(e + 1);
+      loc.field = "material number";
+      loc.col_first = idw_ + 1;
+      loc.col_last = idw_ + 5;
+      ++solid_of_shell;
+      diag_.add(1203, loc, "material " + std::to_string(mat + 1) + " is a shell material (element type 2); solids need element type 0");
+      m_.hex_material[e] = -1;
+      m_.hex_nodes[e].fill(-1);
+    }
+    // rotational codes on nodes no shell uses
+    if (!rot_code_line_.empty()) {
+      std::vector<char> shell_node(std::size_t(m_.control.numnp), 0);
+      for (const auto& q : m_.shell_nodes)
+        for (int v : q)
+          if (v >= 0) shell_node[std::size_t(v)] = 1;
+      int count = 0, first_line = 0;
+      for (std::size_t i = 0; i < rot_code_line_.size(); ++i)
+        if (rot_code_line_[i] && !shell_node[i]) {
+          if (!first_line || rot_code_line_[i] < first_line) first_line = rot_code_line_[i];
+          ++count;
+          m_.rot_bc[i] = 0;
+        }
+      if (count) {
+        Location loc;
+        loc.file = deck_.name();
+        loc.line = first_line;
+        diag_.add(2005, loc, std::to_string(count) + " node(s) that no shell uses");
+      }
+    }
+  }
 
   int read_id(Card& c, int c1, const char* field, int limit, int id_error) {
     int v = int(c.i(c1, c1 + idw_ - 1, field));
@@ -649,10 +817,10 @@ class Dyna3dReader {
   }
 
   void read_time_history_blocks() {
-    for (int which = 0; which < 2; ++which) {
-      int nb = which == 0 ? m_.control.node_th_blocks : m_.control.solid_th_blocks;
-      int limit = which == 0 ? m_.control.numnp : m_.control.numelh;
-      const char* what = which == 0 ? "node" : "solid";
+    for (int which = 0; which < 3; ++which) {  // nodes, solids, shells (control card 3 order)
+      int nb = which == 0 ? m_.control.node_th_blocks : which == 1 ? m_.control.solid_th_blocks : shell_th_blocks_;
+      int limit = which == 0 ? m_.control.numnp : which == 1 ? m_.control.numelh : numels_;
+      const char* what = which == 0 ? "node" : which == 1 ? "solid" : "shell";
       for (int b = 0; b < nb; ++b) {
         Card c = next(std::string(what) + " time-history block " + std::to_string(b + 1),
                       "expected " + std::to_string(nb) + " " + what + " time-history blocks (control card 3)");
@@ -661,7 +829,7 @@ class Dyna3dReader {
         int last = c.blank(1 + idw_, 2 * idw_) ? first : read_id(c, 1 + idw_, "last", limit, err);
         if (first > 0 && last > 0) {
           if (last < first) c.error(1003, 1 + idw_, 2 * idw_, "last", "must not be below first");
-          else (which == 0 ? m_.node_th_blocks : m_.solid_th_blocks).push_back({first, last});
+          else (which == 0 ? m_.node_th_blocks : which == 1 ? m_.solid_th_blocks : m_.shell_th_blocks).push_back({first, last});
         }
       }
     }
@@ -948,7 +1116,7 @@ class Dyna3dReader {
         if (si.type >= 1 && si.type <= 9)
           c.error(1104, 17, 20, "type", std::string("type ") + names[si.type] + ": IMPACT-3D has type 3 (sliding with impact, separation and friction)");
         else
-          c.error(1006, 17, 20, "type", "DYNA3D sliding interface types are 1-9; IMPACT-3D has type 3");
+          c.error(1006, 17, 20, "type", "DYNA3D sliding interface types are 1-9; IMPACT-3D has types 3 and 4");
       }
       si.fs = c.e(21, 30, "static friction");
       si.fd = c.e(31, 40, "dynamic friction");

@@ -271,6 +271,7 @@ struct Model {
   int shell_id(int k) const { return shell_user_id.empty() ? k + 1 : shell_user_id[std::size_t(k)]; }
 
   std::vector<std::array<int, 2>> node_th_blocks, solid_th_blocks;  // deck numbers, inclusive
+  std::vector<std::array<int, 2>> shell_th_blocks;                  // shell numbers 1..N, inclusive
   std::vector<LoadCurve> load_curves;
   std::vector<StoneWall> walls;
   std::vector<InitialVelocity> init_velocities;

@@ -47,8 +47,9 @@ TEST(Dyna3dWriters, MaterialElementTypeIsSolidBeamShellOrThickShell) {
     Diagnostics d;
     EXPECT_TRUE(read_string(small_deck(0), m, d)) << all_messages(d);
   }
-  const char* kinds[] = {"", "beams (element type 1)", "shells (element type 2)", "thick shells (element type 3)"};
-  for (int et = 1; et <= 3; ++et) {
+  // (element type 2, shells: tests/input/test_shell_cards.cpp)
+  const char* kinds[] = {"", "beams (element type 1)", "", "thick shells (element type 3)"};
+  for (int et = 1; et <= 3; et += 2) {
     Model m;
     Diagnostics d;
     EXPECT_FALSE(read_string(small_deck(et), m, d));
