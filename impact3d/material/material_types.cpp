@@ -18,6 +18,7 @@ const MaterialType& mat_elastic_type();
 const MaterialType& mat_plastic_kinematic_type();
 const MaterialType& mat_johnson_cook_type();
 const MaterialType& mat_null_type();
+const MaterialType& mat_elastic_plastic_hydro_type();
 const MaterialType& mat_power_law_type();
 const MaterialType& mat_simplified_johnson_cook_type();
 const MaterialType& mat_piecewise_linear_type();
@@ -28,6 +29,7 @@ std::span<const MaterialType* const> material_types() {
       &mat_elastic_type(),
       &mat_plastic_kinematic_type(),
       &mat_null_type(),
+      &mat_elastic_plastic_hydro_type(),
       &mat_johnson_cook_type(),
       &mat_power_law_type(),
       &mat_rigid_type(),

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -119,6 +120,54 @@ TEST(KeywordEos, JohnsonCookWithLinearPolynomialIsReadAndRoundTrips) {
   EXPECT_EQ(a.m.materials[0].eos.form, 1);
   EXPECT_EQ(a.m.materials[0].eos.c[2], 2e11);
   round_trips(a);
+}
+
+TEST(KeywordEos, ElasticPlasticHydroWithItsTableIsReadEchoedAndRoundTrips) {
+  // type 10: G, SIGY, EH, PC, FS; the 16-point table on cards 2-5 (EPS1-8, EPS9-16, ES1-8, ES9-16)
+  std::string eps[2], es[2];
+  for (int i = 0; i < 16; ++i) {
+    char b[16];
+    std::snprintf(b, sizeof b, "%10.4f", 0.01 * i * i);
+    eps[i / 8] += b;
+    std::snprintf(b, sizeof b, "%10.3e", 1e8 * (2 + 0.1 * i));
+    es[i / 8] += b;
+  }
+  const std::string hydro = "*MAT_ELASTIC_PLASTIC_HYDRO_TITLE\naluminium\n"
+                            "         7    2700.0    26.0E9     2.0E8     1.0E9    -1.0E8      0.85\n" +
+                            eps[0] + "\n" + eps[1] + "\n" + es[0] + "\n" + es[1] + "\n";
+  Read a = read_text(deck(hydro + kLinear));
+  ASSERT_TRUE(a.ok) << a.messages();
+  const MaterialData& md = a.m.materials[0];
+  const MaterialType& t = material_type(10);
+  EXPECT_EQ(md.type, 10);
+  EXPECT_EQ(md.eos.form, 1);
+  EXPECT_EQ(param_value(md, *find_param(t, "G")), 26e9);
+  EXPECT_EQ(md.sigma_y, 2e8);
+  EXPECT_EQ(param_value(md, *find_param(t, "EH")), 1e9);
+  EXPECT_EQ(param_value(md, *find_param(t, "PC")), -1e8);
+  EXPECT_EQ(md.fail_strain, 0.85);
+  EXPECT_EQ(param_value(md, *find_param(t, "EPS16")), 0.01 * 15 * 15);
+  EXPECT_EQ(param_value(md, *find_param(t, "ES9")), 2.8e8);
+  std::ostringstream echo;
+  write_model_summary(echo, a.m);
+  EXPECT_NE(echo.str().find("flow stress point 16"), std::string::npos) << echo.str();
+  EXPECT_NE(echo.str().find("linear polynomial (form 1, EOSID 3)"), std::string::npos) << echo.str();
+  round_trips(a);
+  // without a table: SIGY and EH, and the fixed format's card 3 (G SIGY EH PC FS)
+  const std::string plain = "*MAT_010\n         7    2700.0    26.0E9     2.0E8     1.0E9\n";
+  Read b = read_text(deck(plain + kLinear));
+  ASSERT_TRUE(b.ok) << b.messages();
+  round_trips(b);
+  std::ostringstream fx;
+  write_fixed_deck(fx, b.m, nullptr);
+  EXPECT_NE(fx.str().find("\n    2.6e10     2.0e8     1.0e9       0.0\n"), std::string::npos) << fx.str();
+  // no EOS: 1204; CHARL: 1102; FS < 0: 1102
+  Read c = read_text(deck(plain, "0"));
+  EXPECT_FALSE(c.ok);
+  EXPECT_EQ(c.d.count(1204), 1) << c.messages();
+  Read d = read_text(deck("*MAT_010\n         7    2700.0    26.0E9     2.0E8     1.0E9       0.0      -1.0       0.1\n" + kLinear));
+  EXPECT_FALSE(d.ok);
+  EXPECT_EQ(d.d.count(1102), 2) << d.messages();
 }
 
 TEST(KeywordEos, RefusalsNameTheField) {
