@@ -304,6 +304,17 @@ void Session::execute(const std::vector<std::string>& w, const std::string& wher
                 for (std::size_t i = 1; i < w.size(); ++i) t += (i > 1 ? " " : "") + w[i];
                 ps_.title = t;
             }
+        } else if (c == "mark") {
+            if (na == 1 && w[1] == "off") { ps_.marks.clear(); return; }
+            if (na < 2) throw CommandError("mark: usage: mark node|elem|solid|tshell|beam|shell ID [LABEL] | mark off");
+            static const char* const kinds[] = {"node", "elem", "element", "solid", "tshell", "beam", "shell"};
+            if (std::find(std::begin(kinds), std::end(kinds), w[1]) == std::end(kinds))
+                throw CommandError("mark: unknown kind '" + w[1] + "' (node elem solid tshell beam shell)");
+            PictureMark m;
+            m.what = w[1] == "element" ? "elem" : w[1];
+            if (!to_int(w[2], m.id) || m.id <= 0) throw CommandError("mark: expected a positive user id, not '" + w[2] + "'");
+            for (std::size_t i = 3; i < w.size(); ++i) m.label += (i > 3 ? " " : "") + w[i];
+            ps_.marks.push_back(m);
         } else if (c == "state") {
             need(1, 1, "state N|first|middle|last|t=TIME");
             state_ = parse_state(w[1], c);
@@ -314,7 +325,7 @@ void Session::execute(const std::vector<std::string>& w, const std::string& wher
             if (d.num_states() == 0) throw CommandError("picture: the database has no states");
             if (dry_run_) { d.state(si); return; }
             const std::string path = out_path(with_ext(w[1], ".png"));
-            write_png(path, make_picture(d, {si}, ps_, renderer(), font()));
+            write_png(path, make_picture(d, {si}, ps_, renderer(), font(), {}, &mark_spots_));
             wrote(path);
         } else if (c == "sequence") {
             if (na < 1) throw CommandError("sequence: usage: sequence FILE [STATES...|all|every K|count N]");

@@ -47,6 +47,8 @@ public:
     int actions() const { return actions_; }  // pictures / plots written so far
     const std::vector<std::string>& written() const { return written_; }
     PictureSettings& settings() { return ps_; }
+    // Where the last picture drew its marks (`mark`), in pixels from its top-left corner.
+    const std::vector<MarkSpot>& mark_spots() const { return mark_spots_; }
 
 private:
     Database& db(const std::string& cmd);
@@ -71,6 +73,7 @@ private:
     double t0_wall_ = 0, t0_cpu_ = 0;  // start of the current action
     int actions_ = 0;
     std::vector<std::string> written_;
+    std::vector<MarkSpot> mark_spots_;
 };
 
 }  // namespace postimpact

@@ -31,10 +31,38 @@ struct ShownState {
     std::vector<Rgb> elem_color;
 };
 
+// The 0-based node (node = true) or element index of a mark.
+int find_marked(Database& db, const PictureMark& m, bool& node) {
+    node = m.what == "node";
+    int idx = -1;
+    if (node) idx = db.node_index(m.id);
+    else if (m.what == "elem" || m.what == "element") idx = db.element_index(m.id);
+    else if (m.what == "solid") idx = db.element_index(m.id, static_cast<int>(Family::Solid));
+    else if (m.what == "tshell" || m.what == "thick shell") idx = db.element_index(m.id, static_cast<int>(Family::ThickShell));
+    else if (m.what == "beam") idx = db.element_index(m.id, static_cast<int>(Family::Beam));
+    else if (m.what == "shell") idx = db.element_index(m.id, static_cast<int>(Family::Shell));
+    else throw std::invalid_argument("mark: unknown kind '" + m.what + "' (node elem solid tshell beam shell)");
+    if (idx < 0) throw std::invalid_argument("mark: no " + m.what + " " + std::to_string(m.id) + " in the database");
+    return idx;
+}
+
+// Anti-aliased ring of radius r and line width w (pixels) around (cx, cy).
+void draw_ring(Image& img, double cx, double cy, double r, double w, Rgb c) {
+    const int x0 = static_cast<int>(std::floor(cx - r - w)), x1 = static_cast<int>(std::ceil(cx + r + w));
+    const int y0 = static_cast<int>(std::floor(cy - r - w)), y1 = static_cast<int>(std::ceil(cy + r + w));
+    for (int y = y0; y <= y1; ++y)
+        for (int x = x0; x <= x1; ++x) {
+            const double d = std::hypot(x - cx, y - cy);
+            const double cov = std::clamp(0.5 * w + 0.5 - std::fabs(d - r), 0.0, 1.0);
+            if (cov > 0) img.blend(x, y, c, cov);
+        }
+}
+
 }  // namespace
 
 Image make_picture(Database& db, const std::vector<int>& states, const PictureSettings& ps,
-                   Renderer& renderer, const Font& font, const std::vector<int>& fit_states0) {
+                   Renderer& renderer, const Font& font, const std::vector<int>& fit_states0,
+                   std::vector<MarkSpot>* spots) {
     if (states.empty()) throw std::invalid_argument("picture: no state");
     const auto& g = db.geometry();
     const std::vector<int>& fit_states = fit_states0.empty() ? states : fit_states0;
@@ -295,6 +323,43 @@ Image make_picture(Database& db, const std::vector<int>& states, const PictureSe
             img.line(ox, oy, ox + dx * len, oy + dy * len, cols[a], 2.0);
             font.draw(img, static_cast<int>(ox + dx * (len + unit / 2)), static_cast<int>(oy + dy * (len + unit / 2)) + label_px / 3,
                       names[a], label_px, cols[a], HAlign::Center);
+        }
+    }
+
+    // ---- marks: a ring with four ticks at the projected node / element centroid, and a label
+    if (spots) spots->clear();
+    for (const PictureMark& m : ps.marks) {
+        bool node = false;
+        const int idx = find_marked(db, m, node);
+        const std::string label = m.label.empty() ? m.what + " " + std::to_string(m.id) : m.label;
+        for (int i = 0; i < n; ++i) {
+            const std::vector<double>& X = ordered[i].coords;
+            double c[3] = {0, 0, 0};
+            if (node) {
+                for (int k = 0; k < 3; ++k) c[k] = X[3 * static_cast<std::size_t>(idx) + k];
+            } else {
+                int count = 0;
+                const int* en = element_nodes(g, idx, count);
+                for (int j = 0; j < count; ++j)
+                    for (int k = 0; k < 3; ++k) c[k] += X[3 * static_cast<std::size_t>(en[j]) + k] / count;
+            }
+            const RenderPanel& p = panels[static_cast<std::size_t>(i)];
+            // glOrtho's window onto the panel's pixels (pixel centres at +0.5)
+            const double px = p.x + (cam.sx(c) - (win.cx - win.half_w)) / (2 * win.half_w) * p.w - 0.5;
+            const double py = p.y + ((win.cy + win.half_h) - cam.sy(c)) / (2 * win.half_h) * p.h - 0.5;
+            const double r = unit * 1.2, lw = std::max(2.0, unit / 4.0);
+            draw_ring(img, px, py, r, lw, kMarkColor);
+            for (int a = 0; a < 4; ++a) {
+                const double dx = a == 0 ? 1 : a == 1 ? -1 : 0, dy = a == 2 ? 1 : a == 3 ? -1 : 0;
+                img.line(px + dx * (r + lw), py + dy * (r + lw), px + dx * (r + lw + unit * 0.6), py + dy * (r + lw + unit * 0.6),
+                         kMarkColor, lw);
+            }
+            // the label on a white box above right of the ring (dark magenta: never mistaken for the ring)
+            const int tx = static_cast<int>(px + r + unit * 0.6), ty = static_cast<int>(py - r - unit * 0.4);
+            const int tw = font.measure(label, label_px);
+            img.fill_rect(tx - 2, ty - font.ascent(label_px) - 2, tx + tw + 3, ty + font.descent(label_px) + 2, {255, 255, 255});
+            font.draw(img, tx, ty, label, label_px, {130, 0, 130});
+            if (spots) spots->push_back({px, py, i});
         }
     }
     return img;

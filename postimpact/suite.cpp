@@ -1,6 +1,7 @@
 #include "postimpact/suite.h"
 
 #include <fcntl.h>
+#include <signal.h>
 #include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -37,6 +38,22 @@ namespace fs = std::filesystem;
 
 bool SuiteDeck::plot_reference() const { return fs::exists(fs::path(ref_dir) / "d3plot"); }
 bool SuiteDeck::summary_reference() const { return fs::exists(summary); }
+std::string SuiteDeck::mode() const {
+    return summary_check || (!plot_reference() && summary_reference()) ? "summary" : "plot";
+}
+
+std::vector<std::string> SuiteDeck::impact3d_args() const {
+    std::vector<std::string> out{"i=" + deck, "o=d3hsp", "g=d3plot", "ncpu=1", "plotwords=8"};
+    for (const auto& a : args) {
+        const auto eq = a.find('=');
+        bool replaced = false;
+        if (eq != std::string::npos)
+            for (auto& o : out)
+                if (o.compare(0, eq + 1, a, 0, eq + 1) == 0) o = a, replaced = true;
+        if (!replaced) out.push_back(a);
+    }
+    return out;
+}
 
 std::string xml_escape(const std::string& s) {
     std::string o;
@@ -57,26 +74,96 @@ std::string xml_escape(const std::string& s) {
     return o;
 }
 
+namespace {
+
+// options.txt / options/NAME.txt: "timeout SECONDS", "args WORD...", "reference plot|summary";
+// '#' comments.  Later lines override earlier ones ("args" lines add up).
+void read_deck_options(const fs::path& file, SuiteDeck& d) {
+    std::ifstream f(file);
+    if (!f) throw std::runtime_error(file.string() + ": cannot be read");
+    int line_no = 0;
+    for (std::string line; std::getline(f, line);) {
+        ++line_no;
+        const std::string where = file.string() + ":" + std::to_string(line_no) + ": ";
+        std::vector<std::string> w;
+        try {
+            w = split_command(line);
+        } catch (const std::exception& e) {
+            throw std::runtime_error(where + e.what());
+        }
+        if (w.empty()) continue;
+        if (w[0] == "timeout") {
+            char* end = nullptr;
+            const double t = w.size() == 2 ? std::strtod(w[1].c_str(), &end) : -1.0;
+            if (w.size() != 2 || *end != '\0' || !(t >= 0) || !std::isfinite(t))
+                throw std::runtime_error(where + "timeout: expected seconds >= 0 (0: none), as in 'timeout 600'");
+            d.timeout = t;
+        } else if (w[0] == "args") {
+            for (std::size_t i = 1; i < w.size(); ++i) {
+                if (w[i].rfind("i=", 0) == 0)
+                    throw std::runtime_error(where + "args: the deck (i=) is the suite's; give the others");
+                d.args.push_back(w[i]);
+            }
+        } else if (w[0] == "reference") {
+            if (w.size() != 2 || (w[1] != "plot" && w[1] != "summary"))
+                throw std::runtime_error(where + "reference: expected plot or summary");
+            d.summary_check = w[1] == "summary";
+        } else {
+            throw std::runtime_error(where + "unknown option '" + w[0] + "' (timeout, args, reference)");
+        }
+    }
+}
+
+}  // namespace
+
 std::vector<SuiteDeck> list_suite(const std::string& suite) {
-    const fs::path root = fs::absolute(suite);
+    const fs::path root = fs::absolute(suite).lexically_normal();
     const fs::path decks = root / "decks";
     if (!fs::is_directory(decks)) throw std::runtime_error("suite " + suite + ": no folder " + decks.string());
     std::map<std::string, SuiteDeck> found;
+    auto add = [&](const fs::path& p, bool summary_check) {
+        const std::string name = p.stem().string();
+        if (found.count(name))
+            throw std::runtime_error("suite " + suite + ": two decks named " + name + " (" + found[name].deck + ", " +
+                                     p.string() + ")");
+        SuiteDeck d;
+        d.name = name;
+        d.deck = p.lexically_normal().string();
+        d.ref_dir = (root / "reference" / name).string();
+        d.summary = (root / "summaries" / (name + ".txt")).string();
+        d.summary_check = summary_check;
+        found[name] = d;
+    };
     for (const auto& e : fs::directory_iterator(decks)) {
         if (!e.is_regular_file()) continue;
         const fs::path p = e.path();
         const std::string ext = p.extension().string();
         if (ext != ".dyn" && ext != ".k" && ext != ".key") continue;
-        const std::string name = p.stem().string();
-        if (found.count(name))
-            throw std::runtime_error("suite " + suite + ": two decks named " + name + " (" + found[name].deck + ", " +
-                                     p.string() + ")");
-        found[name] = SuiteDeck{name, p.lexically_normal().string(), (root / "reference" / name).string(),
-                                (root / "summaries" / (name + ".txt")).string()};
+        add(p, false);
+    }
+    // big decks kept by their summary, anywhere (paths from the suite folder)
+    if (const fs::path list = root / "summary_decks.txt"; fs::exists(list)) {
+        std::ifstream f(list);
+        int line_no = 0;
+        for (std::string line; std::getline(f, line);) {
+            ++line_no;
+            while (!line.empty() && (line.back() == ' ' || line.back() == '\t' || line.back() == '\r')) line.pop_back();
+            const auto b = line.find_first_not_of(" \t");
+            if (b == std::string::npos || line[b] == '#') continue;
+            const fs::path p = fs::path(line.substr(b)).is_absolute() ? fs::path(line.substr(b)) : root / line.substr(b);
+            if (!fs::is_regular_file(p))
+                throw std::runtime_error(list.string() + ":" + std::to_string(line_no) + ": no deck " + p.lexically_normal().string());
+            add(p, true);
+        }
     }
     if (found.empty()) throw std::runtime_error("suite " + suite + ": no decks (*.dyn, *.k, *.key) in " + decks.string());
+    const fs::path all = root / "options.txt";
     std::vector<SuiteDeck> out;
-    for (auto& [k, d] : found) out.push_back(std::move(d));
+    for (auto& [k, d] : found) {
+        if (fs::exists(all)) read_deck_options(all, d);
+        if (const fs::path own = root / "options" / (d.name + ".txt"); fs::exists(own)) read_deck_options(own, d);
+        out.push_back(std::move(d));
+    }
     return out;
 }
 
@@ -135,20 +222,50 @@ pid_t spawn(const std::vector<std::string>& argv, const std::string& cwd, const 
     av.push_back(nullptr);
     for (const auto& e : env) ev.push_back(const_cast<char*>(e.c_str()));
     ev.push_back(nullptr);
+    // its own process group, so that a timeout kills whatever it started too
+    posix_spawnattr_t attr;
+    posix_spawnattr_init(&attr);
+    posix_spawnattr_setflags(&attr, POSIX_SPAWN_SETPGROUP);
+    posix_spawnattr_setpgroup(&attr, 0);
     pid_t pid = 0;
-    const int rc = posix_spawn(&pid, av[0], &fa, nullptr, av.data(), ev.data());
+    const int rc = posix_spawn(&pid, av[0], &fa, &attr, av.data(), ev.data());
+    posix_spawnattr_destroy(&attr);
     posix_spawn_file_actions_destroy(&fa);
     if (rc != 0) throw std::runtime_error("cannot start " + argv[0] + ": " + std::strerror(rc));
     return pid;
+}
+
+int exit_code(int st) {
+    if (WIFEXITED(st)) return WEXITSTATUS(st);
+    if (WIFSIGNALED(st)) return 128 + WTERMSIG(st);
+    return 127;
 }
 
 int wait_exit(pid_t pid) {
     int st = 0;
     while (waitpid(pid, &st, 0) < 0)
         if (errno != EINTR) return 127;
-    if (WIFEXITED(st)) return WEXITSTATUS(st);
-    if (WIFSIGNALED(st)) return 128 + WTERMSIG(st);
-    return 127;
+    return exit_code(st);
+}
+
+// Waits for pid at most `timeout` seconds (0: no limit); past it, kills its process group
+// (SIGKILL) and sets timed_out.
+int wait_exit(pid_t pid, double timeout, bool& timed_out) {
+    timed_out = false;
+    if (timeout <= 0) return wait_exit(pid);
+    const double end = now_s() + timeout;
+    for (;;) {
+        int st = 0;
+        const pid_t r = waitpid(pid, &st, WNOHANG);
+        if (r == pid) return exit_code(st);
+        if (r < 0 && errno != EINTR) return 127;
+        if (now_s() >= end) {
+            timed_out = true;
+            kill(-pid, SIGKILL);
+            return wait_exit(pid);
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
 }
 
 std::string tail_lines(const std::string& path, int n) {
@@ -188,8 +305,22 @@ struct Picture {
 };
 
 // Reference and new pictures at one state with one fringe range, and time-history overlays.
+// The mark command's kind for a finding's location ("" when it has none: a global or material value).
+std::string mark_kind(const CompareFinding& f) {
+    if (f.id <= 0) return "";
+    if (f.what == "node") return "node";
+    if (f.what == "elem" || f.what == "solid") return "solid";
+    if (f.what == "thick shell") return "tshell";
+    if (f.what == "shell" || f.what == "beam") return f.what;
+    return "";
+}
+
+// The reference and new pictures mark the worst location (the node or element of the largest
+// difference outside tolerance): kv gets "marked" (what, which quantity) and "mark_FILE" (the
+// pixel where each picture has it).
 std::vector<Picture> make_pictures(const std::string& ref, const std::string& run, const fs::path& dir,
-                                   const CompareFinding* worst, std::ostream& log) {
+                                   const CompareFinding* worst, std::map<std::string, std::string>& kv,
+                                   std::ostream& log) {
     std::vector<Picture> pics;
     Database A(ref), B(run);
     std::string key = worst ? quantity_for(*worst) : "";
@@ -224,13 +355,25 @@ std::vector<Picture> make_pictures(const std::string& ref, const std::string& ru
     s.execute({"fringe", key});
     s.execute({"range", range_lo, range_hi});
     const std::string st = std::to_string(state + 1);
-    s.execute({"open", ref});
-    s.execute({"title", "Reference"});
-    s.execute({"picture", "ref.png", st});
-    s.execute({"open", run});
-    s.execute({"title", "New run"});
-    s.execute({"picture", "new.png", st});
-    const std::string what = q.label + ", state " + st + " (t " + g6(B.time(state)) + ")";
+    const std::string kind = worst ? mark_kind(*worst) : "";
+    std::string marked;
+    if (!kind.empty()) {
+        marked = (worst->what == "elem" ? std::string("elem") : worst->what) + " " + std::to_string(worst->id);
+        const std::string label = marked + (worst->comp.empty() ? " " + worst->field : " " + worst->comp);
+        s.execute({"mark", kind, std::to_string(worst->id), label});
+        kv["marked"] = label + " (" + worst->field + " at state " + std::to_string(worst->state) + ": the largest difference outside tolerance)";
+    }
+    auto picture = [&](const std::string& db, const std::string& title, const std::string& file) {
+        s.execute({"open", db});
+        s.execute({"title", title});
+        s.execute({"picture", file, st});
+        if (!kind.empty() && !s.mark_spots().empty())
+            kv["mark_" + file] = g6(s.mark_spots().front().x) + " " + g6(s.mark_spots().front().y);
+    };
+    picture(ref, "Reference", "ref.png");
+    picture(run, "New run", "new.png");
+    const std::string what = q.label + ", state " + st + " (t " + g6(B.time(state)) + ")" +
+                             (marked.empty() ? "" : ", " + marked + " ringed");
     pics.push_back({"ref.png", "Reference: " + what});
     pics.push_back({"new.png", "New run: " + what});
 
@@ -316,7 +459,7 @@ std::string finding_text(const CompareFinding& f) {
 }
 
 struct DeckResult {
-    std::string name, status = "missing", mode, message, deck;
+    std::string name, status = "missing", mode, message, deck, marked;
     double run_s = 0, compare_s = 0;
     std::vector<std::string> findings;
     std::vector<Picture> pictures;
@@ -337,6 +480,7 @@ DeckResult read_result(const fs::path& dir, const std::string& name) {
         else if (k == "mode") r.mode = v;
         else if (k == "message") r.message = v;
         else if (k == "deck") r.deck = v;
+        else if (k == "marked") r.marked = v;
         else if (k == "run_seconds") r.run_s = std::atof(v.c_str());
         else if (k == "compare_seconds") r.compare_s = std::atof(v.c_str());
         else if (k == "finding") r.findings.push_back(v);
@@ -381,16 +525,26 @@ int run_suite_deck(const SuiteOptions& opt, const SuiteDeck& d, std::ostream& lo
     std::map<std::string, std::string> kv{{"name", d.name}, {"deck", d.deck}};
     std::vector<std::string> findings;
     std::vector<Picture> pics;
-    const std::string mode = d.plot_reference() || (!d.summary_reference()) ? "plot" : "summary";
+    const std::string mode = d.mode();
     kv["mode"] = mode;
+    if (d.timeout > 0) kv["timeout"] = g6(d.timeout);
+    if (!d.args.empty()) {
+        std::string a;
+        for (const auto& w : d.args) a += (a.empty() ? "" : " ") + w;
+        kv["args"] = a;
+    }
     auto finish = [&](const std::string& status, const std::string& message) {
         kv["status"] = status;
         kv["message"] = message;
         write_result(dir, kv, findings, pics);
         log << d.name << ": " << (status == "pass" ? "PASS" : status == "fail" ? "FAIL" : status == "update" ? "UPDATED" : "ERROR")
             << (message.empty() ? "" : " (" + message + ")") << "\n";
+        if (status == "fail" || status == "error")
+            for (const auto& f : findings) log << "  " << f << "\n";
         return status == "pass" || status == "update" ? 0 : status == "fail" ? 1 : 2;
     };
+    if (!opt.update && mode == "summary" && !d.summary_reference())
+        return finish("error", "no reference: no " + d.summary + " (postimpact suite SUITE --update stores one)");
     if (!opt.update && !d.plot_reference() && !d.summary_reference())
         return finish("error", "no reference: neither " + d.ref_dir + "/d3plot nor " + d.summary +
                                    " (postimpact suite SUITE --update stores one)");
@@ -403,14 +557,21 @@ int run_suite_deck(const SuiteOptions& opt, const SuiteDeck& d, std::ostream& lo
     // the run
     const double t0 = now_s();
     int rc = 0;
+    bool timed_out = false;
     try {
-        rc = wait_exit(spawn({find_impact3d(opt), "i=" + d.deck, "o=d3hsp", "g=d3plot", "ncpu=1", "plotwords=8"},
-                             run.string(), (dir / "run.log").string()));
+        std::vector<std::string> argv = d.impact3d_args();
+        argv.insert(argv.begin(), find_impact3d(opt));
+        rc = wait_exit(spawn(argv, run.string(), (dir / "run.log").string()), d.timeout, timed_out);
     } catch (const std::exception& e) {
         return finish("error", e.what());
     }
     kv["run_seconds"] = g6(now_s() - t0);
     kv["run_exit"] = std::to_string(rc);
+    if (timed_out) {
+        const std::string why = "timeout after " + g6(d.timeout) + " s";
+        findings.push_back(why + ": impact3d was killed; the end of run.log: " + tail_lines((dir / "run.log").string(), 3));
+        return finish("fail", why + " (impact3d killed)");
+    }
     if (rc != 0) {
         findings.push_back("impact3d exited with " + std::to_string(rc) + "; the end of run.log: " +
                            tail_lines((dir / "run.log").string(), 3));
@@ -426,8 +587,16 @@ int run_suite_deck(const SuiteOptions& opt, const SuiteDeck& d, std::ostream& lo
                 if (e.path().filename().string().rfind("d3plot", 0) == 0) fs::copy_file(e.path(), fs::path(d.ref_dir) / e.path().filename());
             return finish("update", "stored " + d.ref_dir + "/d3plot*");
         }
-        std::ofstream f(d.summary);
-        write_summary(summarize(new_db, (run / "d3hsp").string()), f);
+        try {
+            const Summary sm = summarize(new_db, (run / "d3hsp").string());
+            fs::create_directories(fs::path(d.summary).parent_path());
+            std::ofstream f(d.summary);
+            write_summary(sm, f);
+            f.close();
+            if (!f) throw std::runtime_error("cannot write " + d.summary);
+        } catch (const std::exception& e) {
+            return finish("error", e.what());
+        }
         return finish("update", "stored " + d.summary);
     }
     // the comparison
@@ -481,7 +650,7 @@ int run_suite_deck(const SuiteOptions& opt, const SuiteDeck& d, std::ostream& lo
     if (opt.pictures && mode == "plot" && crc != 2) {
         try {
             pics = make_pictures((fs::path(d.ref_dir) / "d3plot").string(), new_db, dir,
-                                 res.worst.empty() ? nullptr : &res.worst.front(), log);
+                                 res.worst.empty() ? nullptr : &res.worst.front(), kv, log);
         } catch (const std::exception& e) {
             log << d.name << ": no pictures: " << e.what() << "\n";
         }
@@ -500,6 +669,7 @@ int run_suite(const SuiteOptions& opt, std::ostream& log) {
         << impact3d << ", results in " << out.string() << "\n";
     std::map<pid_t, std::string> running;
     std::size_t next = 0;
+    int failed_jobs = 0;
     auto reap = [&]() {
         int st = 0;
         const pid_t pid = waitpid(-1, &st, 0);
@@ -508,7 +678,15 @@ int run_suite(const SuiteOptions& opt, std::ostream& log) {
         if (it == running.end()) return;
         const std::string name = it->second;
         running.erase(it);
-        log << tail_lines(out / name / "job.log", 1) << std::flush;
+        if (exit_code(st) != 0) ++failed_jobs;
+        // the job's verdict line (findings follow it)
+        std::ifstream jl(out / name / "job.log");
+        std::string verdict;
+        for (std::string l; std::getline(jl, l);)
+            for (const char* v : {": PASS", ": FAIL", ": UPDATED", ": ERROR"})
+                if (l.rfind(name + v, 0) == 0) verdict = l;
+        log << (verdict.empty() ? name + ": (no verdict in job.log, exit " + std::to_string(exit_code(st)) + ")" : verdict)
+            << "\n" << std::flush;
     };
     while (next < decks.size() || !running.empty()) {
         if (next < decks.size() && static_cast<int>(running.size()) < jobs) {
@@ -523,7 +701,7 @@ int run_suite(const SuiteOptions& opt, std::ostream& log) {
             reap();
         }
     }
-    if (opt.update) return 0;
+    if (opt.update) return failed_jobs == 0 ? 0 : 1;  // a deck whose run failed stores nothing
     return gather_suite(opt, log);
 }
 
@@ -562,7 +740,9 @@ int gather_suite(const SuiteOptions& opt, std::ostream& log) {
                 const std::string cmp = read_file(out / r.name / "compare.txt");
                 if (!cmp.empty()) body += "\n" + cmp;
                 x << "      <" << (fail ? "failure" : "error") << " type=\""
-                  << (fail ? "outside tolerance" : r.status == "missing" ? "no result" : "error") << "\" message=\""
+                  << (fail ? (r.message.rfind("timeout after ", 0) == 0 ? "timeout" : "outside tolerance")
+                           : r.status == "missing" ? "no result" : "error")
+                  << "\" message=\""
                   << xml_escape(r.message) << "\">" << xml_escape(body) << "</" << (fail ? "failure" : "error") << ">\n";
             }
             x << "    </testcase>\n";
@@ -581,7 +761,7 @@ int gather_suite(const SuiteOptions& opt, std::ostream& log) {
              "section{margin-top:1.5em;border-top:2px solid #888}section.fail,section.error,section.missing{border-top:4px solid #c00}\n"
              ".pics{display:flex;flex-wrap:wrap;gap:10px}figure{margin:0}figcaption{font-size:90%}\n"
              "img{max-width:640px;border:1px solid #ccc}pre{font-size:85%;background:#f4f4f4;padding:6px;overflow:auto}\n"
-             "li.diff{color:#a00}\n</style>\n</head>\n<body>\n";
+             "li.diff{color:#a00}.mark{color:#909}\n</style>\n</head>\n<body>\n";
         h << "<h1>Suite " << xml_escape(suite_name) << ": " << (rs.size() - failures - errors) << " passed, "
           << failures << " failed, " << errors << " error(s)</h1>\n";
         h << "<p>" << xml_escape(fs::absolute(opt.suite).lexically_normal().string()) << " &mdash; " << rs.size()
@@ -602,6 +782,8 @@ int gather_suite(const SuiteOptions& opt, std::ostream& log) {
                 for (const auto& f : r.findings) h << "<li class=\"diff\">" << xml_escape(f) << "</li>\n";
                 h << "</ul>\n";
             }
+            if (!r.marked.empty())
+                h << "<p class=\"mark\">Marked on the pictures (magenta ring): " << xml_escape(r.marked) << "</p>\n";
             if (!r.pictures.empty()) {
                 h << "<div class=\"pics\">\n";
                 for (const auto& p : r.pictures)

@@ -713,3 +713,81 @@ TEST(Render, GoldenImage) {
     EXPECT_LE(differ, 0.005 * npx) << differ << " pixels differ from " << golden;
     EXPECT_LT(sum / (3 * npx), 1.0);
 }
+
+// Marks (the suite report's worst location): the ring is drawn where the node or element
+// centroid projects.  Checked against the drawn mesh itself: one hexahedron (no edges, legend or
+// triad; material colour, the only coloured pixels), whose centroid projects to the centre of the
+// mesh's bounding box in pixels, and whose rightmost node (from the camera) to the rightmost
+// mesh pixel.
+TEST(Render, MarkRingsTheProjectedElementCentroidAndNode) {
+    TempDir d;
+    PlotGeometry g = block(1, 1, 1, 1e-2);
+    g.title = "one hex";
+    impact3d::PlotWriter w;
+    w.open(d.str("d3plot"), g);
+    PlotState st;
+    st.time = 0;
+    st.coords = g.x0;
+    st.vel.assign(g.x0.size(), 0.0);
+    st.eps.assign(1, 0.0);
+    st.stress.assign(6, 0.0);
+    w.write_state(st);
+    w.close();
+    Database db(d.str("d3plot"));
+    Renderer r;
+    Font font;
+    PictureSettings ps;
+    ps.width = 800;
+    ps.height = 600;
+    ps.fringe = "material";
+    ps.edges = ps.legend = ps.triad = false;
+    ASSERT_TRUE(named_view("iso", ps.view));
+    ps.view.azimuth = 30;  // no two corners tie for the rightmost place
+    ps.view.elevation = 20;
+    const Image plain = make_picture(db, {0}, ps, r, font);
+    auto coloured = [](Rgb p) { return std::max({p.r, p.g, p.b}) - std::min({p.r, p.g, p.b}) > 40; };
+    auto magenta = [](Rgb p) { return p.r >= 200 && p.g <= 80 && p.b >= 200; };
+    int xmin = 1 << 30, xmax = -1, ymin = 1 << 30, ymax = -1;
+    for (int y = 0; y < plain.height; ++y)
+        for (int x = 0; x < plain.width; ++x) {
+            ASSERT_FALSE(magenta(plain.get(x, y))) << x << " " << y;
+            if (!coloured(plain.get(x, y))) continue;
+            xmin = std::min(xmin, x), xmax = std::max(xmax, x), ymin = std::min(ymin, y), ymax = std::max(ymax, y);
+        }
+    ASSERT_GT(xmax - xmin, 100);
+    // the top of the rightmost mesh pixels (up = z: a vertical edge is rightmost)
+    int yr = -1;
+    for (int y = ymin; y <= ymax && yr < 0; ++y)
+        if (coloured(plain.get(xmax, y))) yr = y;
+
+    // the upper end of the rightmost edge on screen, from the camera
+    const Camera cam = make_camera(ps.view);
+    int right = 0;
+    for (int i = 1; i < 8; ++i) {
+        const double dx = cam.sx(&g.x0[3 * i]) - cam.sx(&g.x0[3 * right]);
+        if (dx > 1e-12 || (dx > -1e-12 && cam.sy(&g.x0[3 * i]) > cam.sy(&g.x0[3 * right]))) right = i;
+    }
+    ps.marks = {PictureMark{"elem", 1, "elem 1 szz"}, PictureMark{"node", db.node_id(right), ""}};
+    std::vector<MarkSpot> spots;
+    const Image marked = make_picture(db, {0}, ps, r, font, {}, &spots);
+    ASSERT_EQ(spots.size(), 2u);
+    EXPECT_NEAR(spots[0].x, 0.5 * (xmin + xmax), 1.0);
+    EXPECT_NEAR(spots[0].y, 0.5 * (ymin + ymax), 1.0);
+    EXPECT_NEAR(spots[1].x, xmax, 1.5);
+    EXPECT_NEAR(spots[1].y, yr, 2.0);
+    // the ring: magenta pixels around each spot (none elsewhere), centred on it
+    for (const MarkSpot& s : spots) {
+        double sx = 0, sy = 0;
+        int n = 0;
+        for (int y = static_cast<int>(s.y) - 40; y <= static_cast<int>(s.y) + 40; ++y)
+            for (int x = static_cast<int>(s.x) - 40; x <= static_cast<int>(s.x) + 40; ++x)
+                if (marked.inside(x, y) && std::hypot(x - s.x, y - s.y) < 32 && magenta(marked.get(x, y)))
+                    sx += x, sy += y, ++n;
+        EXPECT_GT(n, 60) << "ring pixels";
+        EXPECT_NEAR(sx / n, s.x, 1.0);
+        EXPECT_NEAR(sy / n, s.y, 1.0);
+    }
+    // an unknown element is refused
+    ps.marks = {PictureMark{"elem", 99, ""}};
+    EXPECT_THROW(make_picture(db, {0}, ps, r, font), std::invalid_argument);
+}

@@ -21,6 +21,8 @@
 #include <unistd.h>
 
 #include "postimpact/database.h"
+#include "postimpact/image.h"
+#include "postimpact/png_io.h"
 #include "postimpact/suite.h"
 
 namespace fs = std::filesystem;
@@ -159,6 +161,39 @@ TEST(Suite, DamagedReferenceFailsExactlyThatDeck) {
     EXPECT_NE(html.find("element " + std::to_string(dmg.elem) + " " + dmg.comp + ": reference and new run"),
               std::string::npos);
 
+    // the worst location marked: the HTML names the element and quantity, and both pictures ring
+    // it (magenta pixels centred on the spot recorded in result.txt; none on a passing deck's)
+    EXPECT_NE(html.find("Marked on the pictures (magenta ring): " + what + " (" + where + ":"), std::string::npos) << html;
+    const std::string result = slurp(out / "column_uniaxial_strain" / "result.txt");
+    auto magenta = [](postimpact::Rgb p) { return p.r >= 200 && p.g <= 80 && p.b >= 200; };
+    auto count_magenta = [&](const postimpact::Image& img, double cx, double cy, double radius, double& mx, double& my) {
+        int n = 0;
+        mx = my = 0;
+        for (int y = 0; y < img.height; ++y)
+            for (int x = 0; x < img.width; ++x)
+                if (std::hypot(x - cx, y - cy) < radius && magenta(img.get(x, y))) mx += x, my += y, ++n;
+        if (n) mx /= n, my /= n;
+        return n;
+    };
+    for (const char* pic : {"ref.png", "new.png"}) {
+        const auto at = result.find(std::string("\nmark_") + pic + " ");
+        ASSERT_NE(at, std::string::npos) << pic << "\n" << result;
+        double sx = 0, sy = 0;
+        std::istringstream(result.substr(at + 7 + std::strlen(pic))) >> sx >> sy;
+        const postimpact::Image img = postimpact::read_png((out / "column_uniaxial_strain" / pic).string());
+        ASSERT_TRUE(img.inside(static_cast<int>(sx), static_cast<int>(sy))) << pic << " " << sx << " " << sy;
+        double mx = 0, my = 0;
+        EXPECT_GT(count_magenta(img, sx, sy, 32, mx, my), 60) << pic;
+        EXPECT_NEAR(mx, sx, 1.5) << pic;
+        EXPECT_NEAR(my, sy, 1.5) << pic;
+        double ax = 0, ay = 0;  // nothing magenta away from the ring
+        EXPECT_EQ(count_magenta(img, 0, 0, 1e9, ax, ay), count_magenta(img, sx, sy, 32, mx, my)) << pic;
+    }
+    {
+        double ax = 0, ay = 0;
+        EXPECT_EQ(count_magenta(postimpact::read_png((out / "one_hex" / "ref.png").string()), 0, 0, 1e9, ax, ay), 0);
+    }
+
     // the per-deck job mode (a Slurm array: --job 1..3) and the gather step agree
     const fs::path jobs = dir / "jobs";
     for (int k = 1; k <= 3; ++k)
@@ -178,4 +213,117 @@ TEST(Suite, DamagedReferenceFailsExactlyThatDeck) {
 
 TEST(Suite, XmlEscape) {
     EXPECT_EQ(postimpact::xml_escape("a<b & \"c\" 'd'>\x01"), "a&lt;b &amp; &quot;c&quot; &#39;d&#39;&gt;?");
+}
+
+// Per-deck options and summary decks (README.md, "Regression suites for users"): a deck with
+// extra impact3d words (ncpu=2 against a reference run on one thread: the same bits, so it
+// passes), a deck kept by its summary through options ("reference summary"), two big decks of
+// summary_decks.txt outside the suite folder (tests/regression's layout), one of them with a
+// damaged summary value, the other killed by its timeout and reported as such in junit.xml
+// and report.html; a bad options file is refused naming file, line and option.
+TEST(Suite, DeckOptionsTimeoutAndSummaryDecks) {
+    const fs::path dir = fs::path(IMPACT3D_BINARY_DIR) / ("test_suite_opts_" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    const fs::path suite = dir / "suite";
+    fs::create_directories(suite / "decks");
+    fs::create_directories(suite / "options");
+    fs::create_directories(dir / "big");
+    const fs::path reg = fs::path(IMPACT3D_SOURCE_DIR) / "tests/regression";
+    for (const char* n : {"one_hex", "column_uniaxial_strain"})
+        fs::copy_file(reg / "decks" / (std::string(n) + ".dyn"), suite / "decks" / (std::string(n) + ".dyn"));
+    for (const char* n : {"taylor_bar", "crossed_cylinders"})
+        fs::copy_file(fs::path(IMPACT3D_SOURCE_DIR) / "decks" / (std::string(n) + ".dyn"), dir / "big" / (std::string(n) + ".dyn"));
+    fs::copy_file(reg / "tolerances.txt", suite / "tolerances.txt");
+    std::ofstream(suite / "summary_decks.txt") << "# big decks, from this folder\n../big/taylor_bar.dyn\n\n"
+                                               << (dir / "big" / "crossed_cylinders.dyn").string() << "\n";
+    std::ofstream(suite / "options" / "column_uniaxial_strain.txt") << "reference summary   # keep a summary only\n";
+    const std::string base = "'" + kPostimpact + "' suite '" + suite.string() + "' --impact3d '" + kImpact3d + "' ";
+    ASSERT_EQ(run(base + "--list > '" + (dir / "list.txt").string() + "'"), 0);
+    EXPECT_EQ(slurp(dir / "list.txt"), "column_uniaxial_strain\ncrossed_cylinders\none_hex\ntaylor_bar\n");
+
+    // --update: plot database for one_hex, summaries for the other three (and nothing else)
+    const fs::path upd = dir / "update";
+    ASSERT_EQ(run(base + "--update --no-pictures -j 2 -o '" + upd.string() + "' > '" + (dir / "update.log").string() + "'"), 0)
+        << slurp(dir / "update.log");
+    EXPECT_TRUE(fs::exists(suite / "reference" / "one_hex" / "d3plot"));
+    EXPECT_FALSE(fs::exists(suite / "summaries" / "one_hex.txt"));
+    for (const char* n : {"column_uniaxial_strain", "crossed_cylinders", "taylor_bar"}) {
+        EXPECT_FALSE(fs::exists(suite / "reference" / n)) << n;
+        // the stored summary is `postimpact summary` of that run, byte for byte
+        const fs::path r = upd / n / "run";
+        ASSERT_EQ(run("'" + kPostimpact + "' summary '" + (r / "d3plot").string() + "' --printed '" + (r / "d3hsp").string() +
+                      "' -o '" + (dir / (std::string(n) + ".txt")).string() + "'"),
+                  0);
+        EXPECT_EQ(slurp(suite / "summaries" / (std::string(n) + ".txt")), slurp(dir / (std::string(n) + ".txt"))) << n;
+    }
+    EXPECT_NE(slurp(suite / "summaries" / "taylor_bar.txt").find("\nsolids 972\n"), std::string::npos);
+
+    // options: one_hex on two threads, taylor_bar limited to 0.1 s (its run takes about 1 s and
+    // more); one crossed_cylinders summary value damaged by 1% (its tolerance: 0.2%)
+    std::ofstream(suite / "options" / "one_hex.txt") << "# threads: results are the same bits\nargs ncpu=2\n";
+    std::ofstream(suite / "options" / "taylor_bar.txt") << "timeout 0.1\n";
+    {
+        std::string s = slurp(suite / "summaries" / "crossed_cylinders.txt");
+        const auto at = s.find("\nmax_eps ");
+        ASSERT_NE(at, std::string::npos);
+        const auto end = s.find('\n', at + 1);
+        const double v = std::stod(s.substr(at + 9, end - at - 9));
+        char b[64];
+        std::snprintf(b, sizeof b, "%.17g", v * 1.01);
+        s.replace(at + 9, end - at - 9, b);
+        std::ofstream(suite / "summaries" / "crossed_cylinders.txt", std::ios::trunc) << s;
+    }
+    const fs::path out = dir / "out";
+    const std::string log = (dir / "run.log").string();
+    EXPECT_EQ(run(base + "-j 2 -o '" + out.string() + "' > '" + log + "'"), 1) << slurp(log);
+    const std::string text = slurp(log);
+    EXPECT_NE(text.find("2 passed, 2 failed, 0 error(s)"), std::string::npos) << text;
+    EXPECT_NE(text.find("taylor_bar: fail: timeout after 0.1 s (impact3d killed)"), std::string::npos) << text;
+    EXPECT_NE(text.find("crossed_cylinders: fail: summary max_eps"), std::string::npos) << text;
+    // the extra word reached impact3d, and the run passed against its one-thread reference
+    EXPECT_NE(slurp(out / "one_hex" / "run" / "d3hsp").find("threads: 2"), std::string::npos);
+    EXPECT_NE(("\n" + slurp(out / "one_hex" / "result.txt")).find("\nargs ncpu=2\n"), std::string::npos);
+    EXPECT_NE(slurp(out / "column_uniaxial_strain" / "result.txt").find("\nmode summary\n"), std::string::npos);
+    // killed on time: the run stopped well before its normal end
+    {
+        const std::string r = slurp(out / "taylor_bar" / "result.txt");
+        const auto at = r.find("\nrun_seconds ");
+        ASSERT_NE(at, std::string::npos) << r;
+        const double t = std::stod(r.substr(at + 13));
+        EXPECT_GE(t, 0.1);
+        EXPECT_LT(t, 0.6);
+        EXPECT_EQ(slurp(out / "taylor_bar" / "run" / "d3hsp").find("N o r m a l"), std::string::npos);
+    }
+    // junit.xml: the timeout is a failure of type timeout with its reason
+    const std::string py =
+        "import sys, xml.etree.ElementTree as ET\n"
+        "r = ET.parse(sys.argv[1]).getroot()\n"
+        "print(r.get('tests'), r.get('failures'), r.get('errors'))\n"
+        "for c in r.findall('./testsuite/testcase'):\n"
+        "    f = c.find('failure')\n"
+        "    print(c.get('name'), 'ok' if f is None else f.get('type') + ': ' + f.get('message'))\n";
+    std::ofstream(dir / "check.py") << py;
+    ASSERT_EQ(run("python3 '" + (dir / "check.py").string() + "' '" + (out / "junit.xml").string() + "' > '" +
+                  (dir / "junit.txt").string() + "'"),
+              0);
+    const std::string junit = slurp(dir / "junit.txt");
+    EXPECT_EQ(junit.substr(0, junit.find('\n')), "4 2 0") << junit;
+    EXPECT_NE(junit.find("taylor_bar timeout: timeout after 0.1 s (impact3d killed)"), std::string::npos) << junit;
+    EXPECT_NE(junit.find("crossed_cylinders outside tolerance: summary max_eps"), std::string::npos) << junit;
+    EXPECT_NE(junit.find("one_hex ok"), std::string::npos) << junit;
+    EXPECT_NE(junit.find("column_uniaxial_strain ok"), std::string::npos) << junit;
+    const std::string html = slurp(out / "report.html");
+    EXPECT_NE(html.find("<section class=\"fail\" id=\"taylor_bar\">"), std::string::npos);
+    EXPECT_NE(html.find("<td>timeout after 0.1 s (impact3d killed)</td>"), std::string::npos) << html;
+
+    // a bad options file: the suite is refused (exit 2) naming file, line and option
+    std::ofstream(suite / "options" / "one_hex.txt", std::ios::trunc) << "args ncpu=2\nthreads 2\n";
+    EXPECT_EQ(run(base + "--list > /dev/null 2> '" + (dir / "err.txt").string() + "'"), 2);
+    EXPECT_NE(slurp(dir / "err.txt").find((suite / "options" / "one_hex.txt").string() + ":2: unknown option 'threads'"),
+              std::string::npos)
+        << slurp(dir / "err.txt");
+    std::ofstream(suite / "options" / "one_hex.txt", std::ios::trunc) << "timeout soon\n";
+    EXPECT_EQ(run(base + "--list > /dev/null 2> '" + (dir / "err.txt").string() + "'"), 2);
+    EXPECT_NE(slurp(dir / "err.txt").find("one_hex.txt:1: timeout: expected seconds"), std::string::npos) << slurp(dir / "err.txt");
+    fs::remove_all(dir);
 }
