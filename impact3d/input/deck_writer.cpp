@@ -135,6 +135,7 @@ class KeywordWriter {
     if (!extra.empty()) os_ << "*COMMENT\n" << extra;
     for (const auto& b : m_.node_th_blocks) history(b, false);
     for (const auto& b : m_.solid_th_blocks) history(b, true);
+    for (const auto& b : m_.shell_th_blocks) history(b, true, true);
     materials();
     nodes();
     elements();
@@ -160,8 +161,8 @@ class KeywordWriter {
   int nid(int idx) const { return m_.node_user_id.empty() ? idx + 1 : m_.node_user_id[std::size_t(idx)]; }
   int eid(int idx) const { return m_.hex_user_id.empty() ? idx + 1 : m_.hex_user_id[std::size_t(idx)]; }
 
-  void history(const std::array<int, 2>& b, bool solid) {
-    os_ << (solid ? "*DATABASE_HISTORY_SOLID\n$#     eid\n" : "*DATABASE_HISTORY_NODE\n$#     nid\n");
+  void history(const std::array<int, 2>& b, bool solid, bool shell = false) {
+    os_ << (shell ? "*DATABASE_HISTORY_SHELL\n$#     eid\n" : solid ? "*DATABASE_HISTORY_SOLID\n$#     eid\n" : "*DATABASE_HISTORY_NODE\n$#     nid\n");
     std::vector<KField> f;
     for (int n = b[0]; n <= b[1]; ++n) {
       f.push_back(I(solid ? eid(n - 1) : nid(n - 1)));

@@ -38,12 +38,15 @@ void HistoryOutput::open(const Model& m, const std::string& dir, const std::stri
   dir_ = dir.empty() ? "." : dir;
   th_nodes_.clear();
   th_solids_.clear();
+  th_shells_.clear();
+  for (const auto& b : m.shell_th_blocks)
+    for (int k = b[0]; k <= b[1]; ++k) th_shells_.push_back(k - 1);
   for (const auto& b : m.node_th_blocks)
     for (int n = b[0]; n <= b[1]; ++n) th_nodes_.push_back(n - 1);
   for (const auto& b : m.solid_th_blocks)
     for (int e = b[0]; e <= b[1]; ++e) th_solids_.push_back(e - 1);
   bool want[kNumAscii] = {true, true, !m.walls.empty(), m.num_interface_outputs() > 0, !th_nodes_.empty(),
-                          !th_solids_.empty()};
+                          !th_solids_.empty() || !th_shells_.empty()};
   for (int k = 0; k < kNumAscii; ++k) {
     if (!want[k]) continue;
     const std::string path = dir_ + "/" + kNames[k];
@@ -75,12 +78,14 @@ void HistoryOutput::open(const Model& m, const std::string& dir, const std::stri
                      m.interfaces.size(), m.interfaces.size() + 1, m.interfaces.size() + m.force_transducers.size());
     }
   }
-  // binary time histories: the solids' nodes plus the listed nodes, in deck order
-  if (!th_nodes_.empty() || !th_solids_.empty()) {
+  // binary time histories: the solids' and shells' nodes plus the listed nodes, in deck order
+  if (!th_nodes_.empty() || !th_solids_.empty() || !th_shells_.empty()) {
     thdt_node_of_.assign(std::size_t(m.num_nodes()), -1);
     std::vector<int> nodes = th_nodes_;
     for (int e : th_solids_)
       for (int n : m.hex_nodes[std::size_t(e)]) nodes.push_back(n);
+    for (int k : th_shells_)
+      for (int n : m.shell_nodes[std::size_t(k)]) nodes.push_back(n);
     std::sort(nodes.begin(), nodes.end());
     nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
     subset_nodes_ = nodes;
@@ -98,6 +103,11 @@ void HistoryOutput::open(const Model& m, const std::string& dir, const std::stri
       for (int n : m.hex_nodes[std::size_t(e)]) g.hex_nodes.push_back(thdt_node_of_[std::size_t(n)]);
       g.hex_material.push_back(m.hex_material[std::size_t(e)] + 1);
       g.hex_user_ids.push_back(m.hex_id(e));
+    }
+    for (int k : th_shells_) {
+      for (int n : m.shell_nodes[std::size_t(k)]) g.shell_nodes.push_back(thdt_node_of_[std::size_t(n)]);
+      g.shell_material.push_back(m.shell_material[std::size_t(k)] + 1);
+      g.shell_user_ids.push_back(m.shell_id(k));
     }
     for (const auto& md : m.materials)
       g.part_titles.push_back(md.title.empty() ? "material " + std::to_string(md.number) : md.title.substr(0, 72));
@@ -186,7 +196,7 @@ void HistoryOutput::write(const Model& m, const State& s,
                    s.ax[i], s.ay[i], s.az[i], s.x[i], s.y[i], s.z[i]);
     }
   }
-  if (FILE* f = files_[kElout]) {
+  if (FILE* f = files_[kElout]; f && !th_solids_.empty()) {
     std::fprintf(f,
                  "\n e l e m e n t   s t r e s s   c a l c u l a t i o n s   f o r   t i m e   s t e p %8d   ( at time %12.5E )\n"
                  "  element  materl     sig-xx       sig-yy       sig-zz       sig-xy       sig-yz       sig-zx"
@@ -197,6 +207,27 @@ void HistoryOutput::write(const Model& m, const State& s,
       std::fprintf(f, "%9d %7d %12.4E %12.4E %12.4E %12.4E %12.4E %12.4E %12.4E %12.4E %12.4E\n", m.hex_id(e),
                    m.materials[std::size_t(s.mat[std::size_t(e)])].number, sg[0], sg[1], sg[2], sg[3], sg[4],
                    sg[5], -(sg[0] + sg[1] + sg[2]) / 3 + 0.0, calc_von_mises(sg), s.eps_p[std::size_t(e)]);
+    }
+  }
+  if (FILE* f = files_[kElout]; f && !th_shells_.empty()) {
+    // shells: the mid-surface, inner and outer stresses (global axes, the plot database's words)
+    // and the plastic strain of the middle, lowest and highest integration point
+    std::fprintf(f,
+                 "\n s h e l l   e l e m e n t   s t r e s s e s   f o r   t i m e   s t e p %8d   ( at time %12.5E )\n"
+                 "  element  materl surface      sig-xx       sig-yy       sig-zz       sig-xy       sig-yz       sig-zx"
+                 "    von-mises   eff-plastic\n",
+                 s.cycle, s.time);
+    static const char* const kSurface[3] = {"mid", "inner", "outer"};
+    shell_words_.resize(kShellPlotVars);
+    for (int k : th_shells_) {
+      fill_shell_plot_vars(s, k, shell_words_.data());
+      const int mat = m.materials[std::size_t(m.shell_material[std::size_t(k)])].number;
+      for (int layer = 0; layer < 3; ++layer) {
+        const double* sg = &shell_words_[std::size_t(7 * layer)];
+        std::fprintf(f, "%9d %7d %7s %12.4E %12.4E %12.4E %12.4E %12.4E %12.4E %12.4E %12.4E%s\n", m.shell_id(k), mat,
+                     kSurface[layer], sg[0] + 0.0, sg[1] + 0.0, sg[2] + 0.0, sg[3] + 0.0, sg[4] + 0.0, sg[5] + 0.0,
+                     calc_von_mises(sg), sg[6], s.shells.failed.empty() || !s.shells.failed[std::size_t(k)] ? "" : "  deleted");
+      }
     }
   }
   for (FILE* f : files_)
@@ -220,6 +251,14 @@ void HistoryOutput::write(const Model& m, const State& s,
       ps_.alive[k] = s.failed[e] ? 0 : 1;
       for (int c = 0; c < 6; ++c) ps_.stress[6 * k + std::size_t(c)] = s.sig[6 * e + std::size_t(c)];
       ps_.eps[k] = s.eps_p[e];
+    }
+    const std::size_t nsh = th_shells_.size();
+    ps_.shell_vars.resize(std::size_t(kShellPlotVars) * nsh);
+    ps_.shell_alive.resize(nsh);
+    for (std::size_t k = 0; k < nsh; ++k) {
+      const int q = th_shells_[k];
+      fill_shell_plot_vars(s, q, &ps_.shell_vars[std::size_t(kShellPlotVars) * k]);
+      ps_.shell_alive[k] = !s.shells.failed.empty() && s.shells.failed[std::size_t(q)] ? 0 : 1;
     }
     thdt_->write_state(ps_);
   }

@@ -1,6 +1,6 @@
 #pragma once
 // Time histories at the deck's time-history interval: the binary time-history database
-// (d3thdt family: the d3plot layout restricted to the time-history nodes and solids) and the
+// (d3thdt family: the d3plot layout restricted to the time-history nodes, solids and shells) and the
 // ASCII tables in the LS-DYNA style: glstat, matsum, rwforc, rcforc, nodout, elout.
 
 #include <array>
@@ -42,10 +42,11 @@ class HistoryOutput {
   std::string dir_;
   FILE* files_[kNumAscii] = {};
   std::unique_ptr<PlotWriter> thdt_;
-  std::vector<int> th_nodes_, th_solids_;  // 0-based, deck order
+  std::vector<int> th_nodes_, th_solids_, th_shells_;  // 0-based, deck order
   std::vector<int> thdt_node_of_;          // subset: global node -> subset index
   std::vector<int> subset_nodes_;          // subset index -> global node
   PlotState ps_;
+  std::vector<double> shell_words_;  // one shell's plot words (elout)
 };
 
 }  // namespace impact3d

@@ -134,6 +134,8 @@ void shell_stress_to_global(const double e[3][3], const double l[5], double* g) 
   }
 }
 
+}  // namespace
+
 // One shell's kShellPlotVars words (plot_database.h): surface stresses from the linear fit of
 // the points (N/h + 12 M z / h^3: exact for an elastic section), the plastic strain of the
 // lowest, middle and highest point, the resultants, thickness, energy.
@@ -186,8 +188,6 @@ void fill_shell_plot_vars(const State& s, int k, double* out) {
   out[31] = 0;
   out[32] = sh.energy.empty() ? 0.0 : sh.energy[K];
 }
-
-}  // namespace
 
 void fill_plot_state(const Model& m, const State& s, const InterfaceForces& iface, PlotState& ps) {
   const std::size_t nn = std::size_t(s.nn), ne = std::size_t(s.ne);

@@ -20,6 +20,10 @@ namespace impact3d {
 using InterfaceForces = std::vector<std::array<double, 3>>;
 
 PlotGeometry make_plot_geometry(const Model& m);
+// One shell's kShellPlotVars words (plot_database.h) from the State: mid-surface, inner and
+// outer stresses in global axes (xx yy zz xy yz zx) each with a plastic strain, the resultants,
+// thickness and internal energy.  Shared by the plot and time-history databases and elout.
+void fill_shell_plot_vars(const State& s, int k, double* out);
 // The global block of a state: time, energies, whole-model velocity, per-material books,
 // rigid-wall normal forces and interface forces.  Shared by the plot and time-history databases
 // and the glstat/matsum tables.  ps is reused: no allocation after the first call.

@@ -2,9 +2,11 @@
 
 #include "impact3d/material/material_types.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <set>
+#include <vector>
 
 namespace impact3d {
 
@@ -132,6 +134,75 @@ void write_constraints(std::ostream& os, const Model& m) {
   }
   if (any) os << "\n";
 }
+
+// The shells: per shell part (material) its count, triangles, thickness and area ranges; the
+// first kShown shells (deck id, material, nodes, thicknesses), then the count of the rest; the
+// rotational constraints of shell nodes, one line per combination (count, first nodes).
+void write_shells(std::ostream& os, const Model& m) {
+  if (m.num_shells() == 0) return;
+  os << " s h e l l   e l e m e n t s   (Belytschko-Tsay)\n\n";
+  const std::size_t nm = m.materials.size();
+  std::vector<long long> count(nm, 0), tri(nm, 0);
+  std::vector<double> tmin(nm, 1e300), tmax(nm, -1e300), amin(nm, 1e300), amax(nm, -1e300);
+  for (int k = 0; k < m.num_shells(); ++k) {
+    const int mat = m.shell_material[std::size_t(k)];
+    const auto& n = m.shell_nodes[std::size_t(k)];
+    if (mat < 0 || std::size_t(mat) >= nm || n[0] < 0) continue;
+    const std::size_t q = std::size_t(mat);
+    ++count[q];
+    const bool triangle = n[2] == n[3];
+    tri[q] += triangle ? 1 : 0;
+    const auto& t = m.shell_thickness[std::size_t(k)];
+    for (int j = 0; j < (triangle ? 3 : 4); ++j) {
+      tmin[q] = std::min(tmin[q], t[std::size_t(j)]);
+      tmax[q] = std::max(tmax[q], t[std::size_t(j)]);
+    }
+    // area: half the cross product of the diagonals
+    const std::size_t a = std::size_t(n[0]), b = std::size_t(n[1]), c = std::size_t(n[2]), d = std::size_t(n[3]);
+    const double d1[3] = {m.x[c] - m.x[a], m.y[c] - m.y[a], m.z[c] - m.z[a]};
+    const double d2[3] = {m.x[d] - m.x[b], m.y[d] - m.y[b], m.z[d] - m.z[b]};
+    const double cx = d1[1] * d2[2] - d1[2] * d2[1], cy = d1[2] * d2[0] - d1[0] * d2[2], cz = d1[0] * d2[1] - d1[1] * d2[0];
+    const double area = 0.5 * std::sqrt(cx * cx + cy * cy + cz * cz);
+    amin[q] = std::min(amin[q], area);
+    amax[q] = std::max(amax[q], area);
+  }
+  for (std::size_t q = 0; q < nm; ++q) {
+    if (!count[q]) continue;
+    os << "   material " << m.materials[q].number << ": " << count[q] << " shell(s)";
+    if (tri[q]) os << " (" << tri[q] << " triangle(s))";
+    os << ", thickness " << fmt("%.4e", tmin[q]) << " to " << fmt("%.4e", tmax[q]) << " (length), area "
+       << fmt("%.4e", amin[q]) << " to " << fmt("%.4e", amax[q]) << " (length^2)\n";
+  }
+  constexpr int kShown = 10;
+  os << "\n   shell  material        n1        n2        n3        n4   thicknesses t1-t4\n";
+  for (int k = 0; k < m.num_shells() && k < kShown; ++k) {
+    const auto& n = m.shell_nodes[std::size_t(k)];
+    const auto& t = m.shell_thickness[std::size_t(k)];
+    char buf[256];
+    std::snprintf(buf, sizeof buf, "%8d %9d %9d %9d %9d %9d   %.4e %.4e %.4e %.4e\n", m.shell_id(k),
+                  m.shell_material[std::size_t(k)] + 1, n[0] < 0 ? 0 : m.node_id(n[0]), n[1] < 0 ? 0 : m.node_id(n[1]),
+                  n[2] < 0 ? 0 : m.node_id(n[2]), n[3] < 0 ? 0 : m.node_id(n[3]), t[0], t[1], t[2], t[3]);
+    os << buf;
+  }
+  if (m.num_shells() > kShown) os << "   ... and " << (m.num_shells() - kShown) << " more shell(s)\n";
+  // rotational constraints, one line per combination
+  static const char* const kRot[8] = {"", "rx", "ry", "rx ry", "rz", "rx rz", "ry rz", "rx ry rz"};
+  long long rc[8] = {};
+  std::string first[8];
+  for (std::size_t i = 0; i < m.rot_bc.size(); ++i) {
+    const int b = m.rot_bc[i] & 7;
+    if (!b) continue;
+    if (rc[b]++ < 5) first[b] += (first[b].empty() ? "" : ", ") + std::to_string(m.node_id(int(i)));
+  }
+  bool any = false;
+  for (int b = 1; b < 8; ++b) {
+    if (!rc[b]) continue;
+    if (!any) os << "\n   rotations fixed on shell nodes:\n";
+    any = true;
+    os << "     " << kRot[b] << ": " << rc[b] << " node(s): " << first[b] << (rc[b] > 5 ? ", ..." : "") << "\n";
+  }
+  os << "\n";
+}
 }  // namespace
 
 void write_counts(std::ostream& os, const Model& m) {
@@ -146,7 +217,9 @@ void write_counts(std::ostream& os, const Model& m) {
      << "     number of load curves ................ " << m.load_curves.size() << "\n"
      << "     number of initial-velocity cards ..... " << m.init_velocities.size() << "\n"
      << "     node / solid time-history blocks ..... " << m.node_th_blocks.size() << " / "
-     << m.solid_th_blocks.size() << "\n";
+     << m.solid_th_blocks.size() << "\n"
+     << (m.shell_th_blocks.empty() ? std::string()
+                                   : "     shell time-history blocks ............ " + std::to_string(m.shell_th_blocks.size()) + "\n");
 }
 
 void write_model_summary(std::ostream& os, const Model& m) {
@@ -235,6 +308,7 @@ void write_model_summary(std::ostream& os, const Model& m) {
     os << "\n";
   }
   write_constraints(os, m);
+  write_shells(os, m);
   if (!m.interfaces.empty()) {
     os << " s l i d i n g   i n t e r f a c e s\n\n";
     for (std::size_t i = 0; i < m.interfaces.size(); ++i) {
@@ -309,10 +383,12 @@ void write_model_summary(std::ostream& os, const Model& m) {
     os << "\n";
   }
   write_loads(os, m);
-  if (!m.node_th_blocks.empty() || !m.solid_th_blocks.empty()) {
+  if (!m.node_th_blocks.empty() || !m.solid_th_blocks.empty() || !m.shell_th_blocks.empty()) {
     os << " t i m e   h i s t o r i e s\n\n";
     for (const auto& b : m.node_th_blocks) os << "   nodes " << b[0] << " to " << b[1] << "\n";
     for (const auto& b : m.solid_th_blocks) os << "   solids " << b[0] << " to " << b[1] << "\n";
+    for (const auto& b : m.shell_th_blocks)
+      os << "   shells " << m.shell_id(b[0] - 1) << " to " << m.shell_id(b[1] - 1) << "\n";
     os << "\n";
   }
 }
