@@ -44,7 +44,7 @@ const std::vector<MessageDef> kCatalog = {
     {1215, S::error, "time-step scale factor must be in (0, 1]"},
     {1216, S::error, "boundary-condition code must be 0-7"},
     {1217, S::error, "load-curve times must increase"},
-    {1218, S::error, "segment is not a face of any solid element"},
+    {1218, S::error, "segment is not a face of any solid element nor a shell"},
     {1219, S::error, "friction coefficient must be in [0, 1] or stick (1)"},
     {1220, S::error, "viscosity or hourglass coefficient must not be negative"},
     {1221, S::error, "output interval must not be negative"},

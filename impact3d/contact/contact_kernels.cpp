@@ -193,6 +193,63 @@ SegmentHit closest_point_on_segment(const SegX& X, const double p[3], std::uint8
   return h;
 }
 
+SegmentHit closest_point_on_shell_segment(const SegX& X, const double p[3], double tol) {
+  SegmentHit h;
+  h.valid = true;
+  double xi, eta;
+  project_to_patch(X, p, xi, eta);
+  if (std::abs(xi) <= 1 + tol && std::abs(eta) <= 1 + tol) {
+    double x[3], a[3], b[3];
+    segment_point(X, xi, eta, x, a, b);
+    h.xi = std::clamp(xi, -1.0, 1.0);
+    h.eta = std::clamp(eta, -1.0, 1.0);
+    double ns[3];
+    segment_normal(X, h.xi, h.eta, ns);
+    for (int i = 0; i < 3; ++i) h.xp[i] = x[i];
+    const double e[3] = {p[0] - x[0], p[1] - x[1], p[2] - x[2]};
+    const double d = dot(e, ns);
+    const double sgn = d < 0 ? -1.0 : 1.0;
+    for (int i = 0; i < 3; ++i) h.n[i] = sgn * ns[i];
+    h.gap = h.dist = std::abs(d);
+    return h;
+  }
+  int best_e = 0;
+  double best_t = 0, best_d2 = 0;
+  for (int e = 0; e < 4; ++e) {
+    const double* A = X[e];
+    const double* B = X[(e + 1) % 4];
+    const double ab[3] = {B[0] - A[0], B[1] - A[1], B[2] - A[2]};
+    const double ap[3] = {p[0] - A[0], p[1] - A[1], p[2] - A[2]};
+    const double l2 = dot(ab, ab);
+    const double t = l2 > 0 ? std::clamp(dot(ap, ab) / l2, 0.0, 1.0) : 0.0;
+    const double d[3] = {ap[0] - t * ab[0], ap[1] - t * ab[1], ap[2] - t * ab[2]};
+    const double d2 = dot(d, d);
+    if (e == 0 || d2 < best_d2) {
+      best_e = e;
+      best_t = t;
+      best_d2 = d2;
+    }
+  }
+  h.on_edge = true;
+  edge_param(best_e, best_t, h.xi, h.eta);
+  const double* A = X[best_e];
+  const double* B = X[(best_e + 1) % 4];
+  for (int i = 0; i < 3; ++i) h.xp[i] = A[i] + best_t * (B[i] - A[i]);
+  const double e[3] = {p[0] - h.xp[0], p[1] - h.xp[1], p[2] - h.xp[2]};
+  h.dist = norm(e);
+  h.gap = h.dist;
+  if (h.dist <= 1e-12 * std::sqrt(segment_area(X))) {
+    segment_normal(X, h.xi, h.eta, h.n);
+    return h;
+  }
+  for (int i = 0; i < 3; ++i) h.n[i] = e[i] / h.dist;
+  return h;
+}
+
+double shell_stiffness(double mu, double bulk_modulus, double area, double max_diagonal) {
+  return max_diagonal > 0 ? mu * bulk_modulus * area / max_diagonal : 0.0;
+}
+
 double dyna3d_stiffness(double mu, double bulk_modulus, double area, double volume) {
   return volume > 0 ? mu * bulk_modulus * area * area / volume : 0.0;
 }

@@ -60,6 +60,20 @@ struct SegmentHit {
 SegmentHit closest_point_on_segment(const SegX& X, const double p[3], std::uint8_t boundary_edges,
                                     double tol);
 
+// The closest point of a node on a shell segment (the shell's mid-surface, both sides usable):
+//  - projection inside the square (+ tol): x_p on the patch, n = +-(patch normal) on the node's
+//    side, dist = |(x_node - x_p) . n_patch|;
+//  - otherwise the nearest point on the four straight edges (free rim or not): the contact
+//    surface is rounded about the edge (LS-DYNA's automatic contacts), n = the unit offset
+//    x_node - x_p, dist = its length (a node on the edge itself: n the patch normal).
+// gap = dist: the caller subtracts the thickness offsets (half the shell's thickness, plus half
+// the node's own shell thickness), penetration = offset - dist.  Always valid.
+SegmentHit closest_point_on_shell_segment(const SegX& X, const double p[3], double tol);
+
+// Penalty stiffness of a shell segment, choice 0 (LS-DYNA's shell form of the DYNA3D
+// stiffness): k = mu K A / (longest diagonal).
+double shell_stiffness(double mu, double bulk_modulus, double area, double max_diagonal);
+
 // Penalty stiffness, choice 0 (DYNA3D, Hallquist; seed eq. 6): k = mu K A^2 / V.
 double dyna3d_stiffness(double mu, double bulk_modulus, double area, double volume);
 

@@ -39,6 +39,13 @@ struct Surface {
   std::vector<double> k0;              // DYNA3D stiffness mu K A^2 / V (initial geometry)
   std::vector<double> pmax;            // largest accepted penetration
   std::vector<int> elem;               // the solid each segment is a face of (-1: none found)
+  std::vector<int> shell;              // the shell each segment is (-1: a solid face): both sides
+  std::vector<double> offset;          // per segment: half the shell's thickness (0 for a solid face)
+  std::vector<double> node_off;        // per node: half the thickest shell on it (0: no shell)
+  double node_off_max = 0;
+  // single-surface contact: per node, its ring (the sorted nodes of the segments that have it);
+  // a segment with a node of the ring is not a candidate for the node
+  std::vector<int> ring_start, ring;
   std::vector<int> nodes;              // sorted, unique
   std::vector<std::array<int, 4>> local;  // per segment: its nodes' indices in `nodes`
   std::vector<double> node_force;      // 3 per node: contact force of the last apply() (intfor sides only)
@@ -76,6 +83,7 @@ struct Interface {
   int method = 0;
   double mu = 0.1, fs = 0, fd = 0, decay = 0;
   bool symmetric = true;
+  bool single = false;  // single surface (DYNA3D type 4): surface 0 against itself, one pass
 };
 
 void seg_coords(const State& s, const std::array<int, 4>& sg, double X[4][3]) {
@@ -101,7 +109,33 @@ int element_of_segment(const State& s, const std::array<int, 4>& sg) {
   return -1;
 }
 
-void build_surface(const State& s, const std::vector<std::array<int, 4>>& segs, double mu,
+// Sorted node key of a segment (a triangle's repeated node once, -1 padded).
+std::array<int, 4> segment_key(std::array<int, 4> f) {
+  std::sort(f.begin(), f.end());
+  auto end = std::unique(f.begin(), f.end());
+  for (auto it = end; it != f.end(); ++it) *it = -1;
+  return f;
+}
+
+// Shell lookup of the segments (by their nodes) and half the thickest shell on each node.
+struct ShellIndex {
+  std::map<std::array<int, 4>, int> by_key;
+  std::vector<double> node_half;  // per model node
+};
+
+ShellIndex build_shell_index(const State& s) {
+  ShellIndex ix;
+  const ShellState& sh = s.shells;
+  ix.node_half.assign(std::size_t(s.nn), 0.0);
+  for (int k = 0; k < sh.ns; ++k) {
+    ix.by_key.try_emplace(segment_key(sh.conn[std::size_t(k)]), k);
+    for (int n : sh.conn[std::size_t(k)])
+      ix.node_half[std::size_t(n)] = std::max(ix.node_half[std::size_t(n)], 0.5 * sh.thick[std::size_t(k)]);
+  }
+  return ix;
+}
+
+void build_surface(const State& s, const ShellIndex& shx, const std::vector<std::array<int, 4>>& segs, double mu,
                    Surface& sf) {
   sf.seg = segs;
   const std::size_t ns = segs.size();
@@ -109,6 +143,8 @@ void build_surface(const State& s, const std::vector<std::array<int, 4>>& segs, 
   sf.k0.assign(ns, 0.0);
   sf.pmax.assign(ns, 0.0);
   sf.elem.assign(ns, -1);
+  sf.shell.assign(ns, -1);
+  sf.offset.assign(ns, 0.0);
   // rim edges: used by one segment only (a collapsed edge of a triangle is skipped)
   std::map<std::pair<int, int>, int> edge_count;
   for (const auto& sg : segs)
@@ -128,16 +164,32 @@ void build_surface(const State& s, const std::vector<std::array<int, 4>>& segs, 
     const double area = contact::segment_area(X);
     const int el = element_of_segment(s, sg);
     sf.elem[j] = el;
-    double vol = 0, K = 0;
-    if (el >= 0) {
-      vol = s.vol0[std::size_t(el)];
-      K = s.mats[std::size_t(s.mat[std::size_t(el)])].K;
+    const auto it = el < 0 ? shx.by_key.find(segment_key(sg)) : shx.by_key.end();
+    if (it != shx.by_key.end()) {
+      // a shell: its mid-surface with the contact surfaces at +-t/2, both sides usable;
+      // k = mu K A / (longest diagonal) (LS-DYNA's shell form); a node is in contact down to
+      // the mid-surface (past it, it is on the other side)
+      const int k = it->second;
+      sf.shell[j] = k;
+      const double half = 0.5 * s.shells.thick[std::size_t(k)];
+      sf.offset[j] = half;
+      const double d1 = std::hypot(X[2][0] - X[0][0], X[2][1] - X[0][1], X[2][2] - X[0][2]);
+      const double d2 = std::hypot(X[3][0] - X[1][0], X[3][1] - X[1][1], X[3][2] - X[1][2]);
+      sf.k0[j] = contact::shell_stiffness(mu, s.mats[std::size_t(s.shells.mat[std::size_t(k)])].K, area,
+                                          std::max(d1, d2));
+      sf.pmax[j] = half;
+    } else {
+      double vol = 0, K = 0;
+      if (el >= 0) {
+        vol = s.vol0[std::size_t(el)];
+        K = s.mats[std::size_t(s.mat[std::size_t(el)])].K;
+      }
+      sf.k0[j] = contact::dyna3d_stiffness(mu, K, area, vol);
+      // deeper than half the element or half the segment's width: not a contact of this segment
+      // (it keeps the grown boxes, and so the search, proportional to the segments)
+      const double thick = (el >= 0 && area > 0) ? vol / area : std::sqrt(area);
+      sf.pmax[j] = kDepthFactor * std::min(thick, std::sqrt(area));
     }
-    sf.k0[j] = contact::dyna3d_stiffness(mu, K, area, vol);
-    // deeper than half the element or half the segment's width: not a contact of this segment
-    // (it keeps the grown boxes, and so the search, proportional to the segments)
-    const double thick = (el >= 0 && area > 0) ? vol / area : std::sqrt(area);
-    sf.pmax[j] = kDepthFactor * std::min(thick, std::sqrt(area));
     for (int n : sg) sf.nodes.push_back(n);
   }
   std::sort(sf.nodes.begin(), sf.nodes.end());
@@ -147,6 +199,30 @@ void build_surface(const State& s, const std::vector<std::array<int, 4>>& segs, 
     for (int a = 0; a < 4; ++a)
       sf.local[j][std::size_t(a)] =
           int(std::lower_bound(sf.nodes.begin(), sf.nodes.end(), segs[j][std::size_t(a)]) - sf.nodes.begin());
+  // the nodes' own shell offsets: a shell node touches at half its shell's thickness
+  sf.node_off.assign(sf.nodes.size(), 0.0);
+  sf.node_off_max = 0;
+  for (std::size_t q = 0; q < sf.nodes.size(); ++q) {
+    sf.node_off[q] = shx.node_half[std::size_t(sf.nodes[q])];
+    sf.node_off_max = std::max(sf.node_off_max, sf.node_off[q]);
+  }
+}
+
+// The rings of a single surface: for each node the nodes of the segments that have it.
+void build_rings(Surface& sf) {
+  const std::size_t nn = sf.nodes.size();
+  std::vector<std::vector<int>> r(nn);
+  for (const auto& lc : sf.local)
+    for (int a : lc)
+      for (int b : lc) r[std::size_t(a)].push_back(sf.nodes[std::size_t(b)]);
+  sf.ring_start.assign(nn + 1, 0);
+  sf.ring.clear();
+  for (std::size_t q = 0; q < nn; ++q) {
+    std::sort(r[q].begin(), r[q].end());
+    r[q].erase(std::unique(r[q].begin(), r[q].end()), r[q].end());
+    sf.ring.insert(sf.ring.end(), r[q].begin(), r[q].end());
+    sf.ring_start[q + 1] = int(sf.ring.size());
+  }
 }
 
 // A force transducer: node flags (bit 1 side A, bit 2 side B) over the model's nodes.
@@ -169,7 +245,8 @@ inline int cell_coord(const Grid& g, int a, double v) {
 
 // Grown boxes of the segments at the current positions, then the grid (counting sort, segments
 // in increasing order in every cell).
-void rebuild_grid(const State& s, const Surface& sf, Grid& g) {
+// extra: the largest offset of the nodes searched (their own shell half-thickness).
+void rebuild_grid(const State& s, const Surface& sf, double extra, Grid& g) {
   const std::size_t ns = sf.seg.size();
   double hmax = 0;
   for (int a = 0; a < 3; ++a) {
@@ -187,7 +264,7 @@ void rebuild_grid(const State& s, const Surface& sf, Grid& g) {
     double ext = 0;
     for (int a = 0; a < 3; ++a) ext = std::max(ext, hi[a] - lo[a]);
     // the interior tolerance extends the patch by tol * (half its size) at most
-    const double grow = sf.pmax[j] + kInteriorTol * ext;
+    const double grow = sf.pmax[j] + extra + kInteriorTol * ext;
     for (int a = 0; a < 3; ++a) {
       double* b = &g.box[6 * j];
       b[a] = lo[a] - grow;
@@ -255,6 +332,13 @@ double elastic_step(const State& s, double tssf) {
     const double amax = calc_hex_max_face_area(x, y, z);
     if (amax > 0) dtmin = std::min(dtmin, s.vol[E] / amax / c);
   }
+  // shells: their elastic step (they have no bulk viscosity)
+  const ShellState& sh = s.shells;
+  for (int k = 0; k < sh.ns; ++k) {
+    const std::size_t K = std::size_t(k);
+    if (sh.rigid_elem[K] || sh.failed[K]) continue;
+    if (sh.dt_e[K] > 0 && sh.dt_e[K] < dtmin) dtmin = sh.dt_e[K];
+  }
   return tssf * dtmin;
 }
 
@@ -302,32 +386,48 @@ void SlidingInterfaces::Impl::node_pass(const Model&, const State& s, Interface&
         p[2] > g.hi[2])
       continue;
     const int c = cell_coord(g, 0, p[0]) + g.dim[0] * (cell_coord(g, 1, p[1]) + g.dim[1] * cell_coord(g, 2, p[2]));
+    // the node's own offset: half its shell's thickness (0 for a solid's node)
+    const double r_node = nodes_sf.node_off[std::size_t(q)];
+    const int* ring = in.single ? nodes_sf.ring.data() + nodes_sf.ring_start[std::size_t(q)] : nullptr;
+    const int* ring_end = in.single ? nodes_sf.ring.data() + nodes_sf.ring_start[std::size_t(q) + 1] : nullptr;
     int best = -1;
+    double best_key = 0, best_r = 0;
     contact::SegmentHit bh;
     for (int e = g.cell_start[std::size_t(c)]; e < g.cell_start[std::size_t(c) + 1]; ++e) {
       const int j = g.entries[std::size_t(e)];
       if (!in_box(&g.box[6 * std::size_t(j)], p)) continue;
       const auto& sg = segs.seg[std::size_t(j)];
       if (sg[0] == node || sg[1] == node || sg[2] == node || sg[3] == node) continue;
-      // the face of a failed (deleted) solid no longer exists
+      // single surface: not the segments around the node nor their neighbours
+      if (ring && std::any_of(sg.begin(), sg.end(), [&](int v) { return std::binary_search(ring, ring_end, v); }))
+        continue;
+      // the face of a failed (deleted) solid, or a deleted shell, no longer exists
       if (const int el = segs.elem[std::size_t(j)]; el >= 0 && s.failed[std::size_t(el)]) continue;
+      const int shl = segs.shell[std::size_t(j)];
+      if (shl >= 0 && s.shells.failed[std::size_t(shl)]) continue;
       double X[4][3];
       seg_coords(s, sg, X);
       ++hit.evaluations;
-      contact::SegmentHit h = contact::closest_point_on_segment(X, p, segs.boundary[std::size_t(j)], kInteriorTol);
+      contact::SegmentHit h = shl >= 0 ? contact::closest_point_on_shell_segment(X, p, kInteriorTol)
+                                       : contact::closest_point_on_segment(X, p, segs.boundary[std::size_t(j)], kInteriorTol);
       if (!h.valid) continue;
-      // nearest point; at equal distance a face point before an edge point, then the lower
-      // segment (the order of the candidates is the segment order)
-      const double key = h.dist * (h.on_edge ? 1 + 1e-9 : 1.0);
-      const double best_key = best < 0 ? 0.0 : bh.dist * (bh.on_edge ? 1 + 1e-9 : 1.0);
+      // nearest contact surface (the mid-surface distance less the offsets); at equal distance
+      // a face point before an edge point, then the lower segment (the order of the candidates
+      // is the segment order)
+      const double r = segs.offset[std::size_t(j)] + r_node;
+      const double key = r == 0 ? h.dist * (h.on_edge ? 1 + 1e-9 : 1.0) : h.dist + (h.on_edge ? 1e-9 * h.dist : 0.0) - r;
       if (best < 0 || key < best_key) {
         best = j;
+        best_key = key;
+        best_r = r;
         bh = h;
       }
     }
     if (best < 0) continue;
-    const double pen = -bh.gap;
-    if (!(pen > 0) || pen > segs.pmax[std::size_t(best)]) continue;
+    // penetration of the contact surfaces: the offsets less the gap of the mid-surfaces
+    const double pen = best_r - bh.gap;
+    const double pmax = segs.pmax[std::size_t(best)] + r_node;
+    if (!(pen > 0) || pen > pmax) continue;
     double N[4];
     contact::shape4(bh.xi, bh.eta, N);
     double kpen;
@@ -360,7 +460,7 @@ void SlidingInterfaces::Impl::node_pass(const Model&, const State& s, Interface&
     // gave it.
     const double approach = -(vrel[0] * bh.n[0] + vrel[1] * bh.n[1] + vrel[2] * bh.n[2]);
     const double pen_before = kpen > 0 ? prev_force_norm(k) / kpen : 0.0;
-    if (pen > pen_before + 2.0 * std::max(approach, 0.0) * s.dt_half + 0.1 * segs.pmax[std::size_t(best)]) {
+    if (pen > pen_before + 2.0 * std::max(approach, 0.0) * s.dt_half + 0.1 * pmax) {
       hit.refused = true;
       continue;
     }
@@ -397,6 +497,7 @@ void SlidingInterfaces::initialize(const Model& m, const State& s) {
   im = Impl{};
   im.tssf = m.control.tssf;
   im.ifaces.resize(m.interfaces.size());
+  const ShellIndex shx = build_shell_index(s);
   for (std::size_t i = 0; i < m.interfaces.size(); ++i) {
     const SlidingInterface& d = m.interfaces[i];
     Interface& in = im.ifaces[i];
@@ -408,12 +509,15 @@ void SlidingInterfaces::initialize(const Model& m, const State& s) {
     in.symmetric = d.symmetric;
     in.npass = d.symmetric ? 2 : 1;
     im.any_max_stable = im.any_max_stable || in.method == 1;
-    build_surface(s, d.slave, in.mu, in.surf[0]);
-    build_surface(s, d.master, in.mu, in.surf[1]);
+    in.single = d.type == 4;
+    if (in.single) in.npass = 1;
+    build_surface(s, shx, d.slave, in.mu, in.surf[0]);
+    build_surface(s, shx, in.single ? std::vector<std::array<int, 4>>{} : d.master, in.mu, in.surf[1]);
+    if (in.single) build_rings(in.surf[0]);
     for (int p = 0; p < in.npass; ++p) {
       Pass& ps = in.pass[p];
       ps.node_side = p == 0 ? 0 : 1;
-      ps.seg_side = 1 - ps.node_side;
+      ps.seg_side = in.single ? 0 : 1 - ps.node_side;
       allocate_grid(in.surf[ps.seg_side].seg.size(), ps.grid);
       ps.hits.assign(in.surf[ps.node_side].nodes.size(), Hit{});
     }
@@ -475,7 +579,7 @@ void SlidingInterfaces::apply(const Model& m, State& s, double dt) {
       const Surface& nodes_sf = in.surf[ps.node_side];
       const Surface& segs = in.surf[ps.seg_side];
       if (segs.seg.empty()) continue;
-      rebuild_grid(s, segs, ps.grid);
+      rebuild_grid(s, segs, nodes_sf.node_off_max, ps.grid);
       im.node_pass(m, s, in, ps, dt, dt_k);
       // 3. scatter in node order
       const double sign = ps.node_side == 0 ? 1.0 : -1.0;  // force on the slave side

@@ -497,6 +497,17 @@ class KeywordWriter {
 
   void interfaces() {
     for (const SlidingInterface& si : m_.interfaces) {
+      if (si.type == 4) {  // single surface: side A only, a segment set
+        const int a = segment_set(si.slave);
+        os_ << "*CONTACT_AUTOMATIC_SINGLE_SURFACE\n";
+        os_ << "$#   surfa     surfb  surfatyp  surfbtyp   saboxid   sbboxid      sapr\n"
+            << kcard({I(a), I(0), I(0), I(0), I(0), I(0), I(si.intfor_slave ? 1 : 0)}) << "\n";
+        os_ << "$#      fs        fd        dc\n" << kcard({R(si.fs), R(si.fd), R(si.decay)}) << "\n";
+        double s = si.penalty_scale == 0 ? 1.0 : scale_factor(si.penalty_scale, m_.control.penalty_scale);
+        os_ << "$#    sfsa      sfsb\n" << kcard({R(s), R(s)}) << "\n";
+        os_ << "$#    soft\n" << kcard({I(si.stiffness_method)}) << "\n";
+        continue;
+      }
       int a = segment_set(si.slave), b = segment_set(si.master);
       if (si.type != 3) note("sliding interface type " + std::to_string(si.type) + " written as type 3");
       os_ << (si.symmetric ? "*CONTACT_SURFACE_TO_SURFACE\n" : "*CONTACT_NODES_TO_SURFACE\n");

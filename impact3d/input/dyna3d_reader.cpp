@@ -1108,13 +1108,13 @@ class Dyna3dReader {
       int nss = int(c.i(1, 8, "NSS"));
       int nms = int(c.i(9, 16, "NMS"));
       si.type = int(c.i(17, 20, "type"));
-      if (si.type != 3) {
+      if (si.type != 3 && si.type != 4) {
         // the DYNA3D types, by name (after deck writers of DYNA3D decks)
         static const char* const names[] = {"", "1 sliding only", "2 tied", "3 sliding with impact and friction", "4 single surface",
                                             "5 nodes to surface", "6 nodes tied to surface", "7 shell edge tied to surface",
                                             "8 spot weld", "9 tiebreak"};
         if (si.type >= 1 && si.type <= 9)
-          c.error(1104, 17, 20, "type", std::string("type ") + names[si.type] + ": IMPACT-3D has type 3 (sliding with impact, separation and friction)");
+          c.error(1104, 17, 20, "type", std::string("type ") + names[si.type] + ": IMPACT-3D has types 3 (sliding with impact, separation and friction) and 4 (single surface)");
         else
           c.error(1006, 17, 20, "type", "DYNA3D sliding interface types are 1-9; IMPACT-3D has types 3 and 4");
       }
@@ -1124,7 +1124,7 @@ class Dyna3dReader {
       si.penalty_scale = c.e(51, 60, "penalty scale factor");
       si.stiffness_method = int(c.i(61, 65, "stiffness method"));
       int one_pass = int(c.i(66, 70, "one-pass flag"));
-      si.symmetric = one_pass == 0;
+      si.symmetric = one_pass == 0 && si.type != 4;  // (single surface: one pass over its own nodes)
       if (si.fs < 0) c.error(1219, 21, 30, "static friction");
       if (si.fd < 0) c.error(1219, 31, 40, "dynamic friction");
       if (si.decay < 0) c.error(1003, 41, 50, "decay coefficient", "must not be negative");
@@ -1133,7 +1133,9 @@ class Dyna3dReader {
       if (one_pass != 0 && one_pass != 1) c.error(1006, 66, 70, "one-pass flag", "0 or 1");
       long avail = remaining_cards();
       if (nss < 1 || nss > avail) { c.error(1003, 1, 8, "NSS", "1 to the cards left in the deck"); nss = 0; }
-      if (nms < 1 || nms > avail) { c.error(1003, 9, 16, "NMS", "1 to the cards left in the deck"); nms = 0; }
+      if (si.type == 4) {  // single surface: the NSS segments against themselves, no master side
+        if (nms != 0) { c.error(1003, 9, 16, "NMS", "must be 0 for a single-surface interface (type 4)"); nms = 0; }
+      } else if (nms < 1 || nms > avail) { c.error(1003, 9, 16, "NMS", "1 to the cards left in the deck"); nms = 0; }
       counts.push_back({nss, nms});
       m_.interfaces.push_back(std::move(si));
     }

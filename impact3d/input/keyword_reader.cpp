@@ -479,6 +479,7 @@ struct RContact {
   int soft = 0;
   bool sapr = false, sbpr = false;  // SAPR / SBPR = 1: the side goes to the intfor database
   bool transducer = false;          // *CONTACT_FORCE_TRANSDUCER_PENALTY
+  bool single = false;              // *CONTACT_AUTOMATIC_SINGLE_SURFACE (SURFA only)
   int cid = 0;                      // _ID: the contact id
   Ref ref;
   std::string keyword;
@@ -1211,6 +1212,7 @@ class KeywordReader {
         "SECTION_SOLID", "SECTION_SHELL", "HOURGLASS", "DEFINE_CURVE", "SET_NODE_LIST", "SET_NODE", "SET_PART_LIST",
         "SET_PART", "SET_SEGMENT", "SET_NODE_LIST_GENERATE", "CONTACT_SURFACE_TO_SURFACE",
         "CONTACT_AUTOMATIC_SURFACE_TO_SURFACE", "CONTACT_NODES_TO_SURFACE", "CONTACT_FORCE_TRANSDUCER_PENALTY",
+        "CONTACT_AUTOMATIC_SINGLE_SURFACE", "CONTACT_AUTOMATIC_NODES_TO_SURFACE",
         // issue 16: sets, boxes, coordinate systems
         "SET_NODE_ADD", "SET_NODE_GENERAL", "SET_NODE_LIST_GENERATE_INCREMENT", "SET_PART_ADD",
         "SET_PART_LIST_GENERATE", "SET_PART_LIST_GENERATE_INCREMENT", "SET_SOLID", "SET_SOLID_LIST",
@@ -1221,7 +1223,8 @@ class KeywordReader {
         "DEFINE_VECTOR_NODES", "DEFINE_TRANSFORMATION", "MAT_ADD_EROSION"};
     static const std::set<std::string> with_id = {
         "RIGIDWALL_PLANAR", "RIGIDWALL_PLANAR_MOVING", "CONTACT_SURFACE_TO_SURFACE", "CONTACT_AUTOMATIC_SURFACE_TO_SURFACE",
-        "CONTACT_NODES_TO_SURFACE", "CONTACT_FORCE_TRANSDUCER_PENALTY", "BOUNDARY_SPC_NODE", "BOUNDARY_SPC_SET",
+        "CONTACT_NODES_TO_SURFACE", "CONTACT_FORCE_TRANSDUCER_PENALTY", "CONTACT_AUTOMATIC_SINGLE_SURFACE",
+        "CONTACT_AUTOMATIC_NODES_TO_SURFACE", "BOUNDARY_SPC_NODE", "BOUNDARY_SPC_SET",
         "BOUNDARY_PRESCRIBED_MOTION_NODE", "BOUNDARY_PRESCRIBED_MOTION_SET", "BOUNDARY_PRESCRIBED_MOTION_RIGID",
         "LOAD_SEGMENT", "LOAD_SEGMENT_SET"};
     if (ends("_TITLE") && (titled.count(n.substr(0, n.size() - 6)) || find_material_type_by_keyword(n.substr(0, n.size() - 6)) ||
@@ -1396,8 +1399,10 @@ bool is_ascii_database(const std::string& n) {
       } else if (n == "RIGIDWALL_PLANAR") {
         parse_rigidwall(b);
       } else if (n == "CONTACT_SURFACE_TO_SURFACE" || n == "CONTACT_AUTOMATIC_SURFACE_TO_SURFACE" ||
-                 n == "CONTACT_NODES_TO_SURFACE") {
-        parse_contact(b, n != "CONTACT_NODES_TO_SURFACE");
+                 n == "CONTACT_NODES_TO_SURFACE" || n == "CONTACT_AUTOMATIC_NODES_TO_SURFACE") {
+        parse_contact(b, n != "CONTACT_NODES_TO_SURFACE" && n != "CONTACT_AUTOMATIC_NODES_TO_SURFACE");
+      } else if (n == "CONTACT_AUTOMATIC_SINGLE_SURFACE") {
+        parse_contact(b, false, false, true);
       } else if (n == "CONTACT_FORCE_TRANSDUCER_PENALTY") {
         parse_contact(b, false, true);
       } else if (n == "DATABASE_BINARY_INTFOR") {
@@ -2636,12 +2641,13 @@ bool is_ascii_database(const std::string& n) {
     }
   }
 
-  void parse_contact(const Block& b, bool symmetric, bool transducer = false) {
+  void parse_contact(const Block& b, bool symmetric, bool transducer = false, bool single = false) {
     std::size_t k = skip_option_card(b);
     if (k >= b.data.size()) { missing_card(b, "card 1"); return; }
     RContact ct;
     ct.symmetric = symmetric;
     ct.transducer = transducer;
+    ct.single = single;
     ct.keyword = b.keyword;
     if (b.id_opt && k == 1) {
       KCard ci = card(b, 0, "ID card", W(b, 1));
@@ -2663,9 +2669,20 @@ bool is_ascii_database(const std::string& n) {
     ct.b.box_ref = c.ref(5);
     ct.sapr = c.i(6, "SAPR") == 1;
     ct.sbpr = c.i(7, "SBPR") == 1;
-    bool ok_a = ct.a.type == 0 || ct.a.type == 2 || ct.a.type == 3 || (ct.a.type == 4 && !symmetric);
+    bool ok_a = ct.a.type == 0 || ct.a.type == 2 || ct.a.type == 3 || (ct.a.type == 4 && !symmetric && !single) ||
+                (ct.a.type == 5 && single);
     bool ok_b = ct.b.type == 0 || ct.b.type == 2 || ct.b.type == 3;
-    if (!ok_a) c.error(1104, 2, "SURFATYP", symmetric ? "0 segment set, 2 part set, 3 part" : "0 segment set, 2 part set, 3 part, 4 node set");
+    if (single) {
+      // one surface against itself: SURFA = 0 (or SURFATYP 5) is every part; side B unused
+      if (ok_a && ct.a.id == 0) ct.a.type = 5;
+      if (ct.b.id != 0 || ct.b.type != 0) c.error(2006, ct.b.id != 0 ? 1 : 3, ct.b.id != 0 ? "SURFB" : "SURFBTYP", "a single-surface contact has only side A");
+      if (ct.sbpr) c.error(2006, 7, "SBPR", "a single-surface contact has only side A");
+      ct.sbpr = false;
+      ct.b = RSide{};
+      ok_b = true;
+    }
+    if (!ok_a) c.error(1104, 2, "SURFATYP", single ? "0 segment set, 2 part set, 3 part, 5 all parts (single surface)"
+                                            : symmetric ? "0 segment set, 2 part set, 3 part" : "0 segment set, 2 part set, 3 part, 4 node set");
     if (!ok_b && !(transducer && ct.b.type == 4)) c.error(1104, 3, "SURFBTYP", transducer ? "0 segment set, 2 part set, 3 part, 4 node set" : "0 segment set, 2 part set, 3 part");
     if (transducer && (ct.sapr || ct.sbpr)) c.error(2006, ct.sapr ? 6 : 7, ct.sapr ? "SAPR" : "SBPR", "a force transducer has no contact segments in the interface-force database");
     if (k + 1 < b.data.size()) {
@@ -4296,6 +4313,28 @@ bool is_ascii_database(const std::string& n) {
   }
   const std::vector<int>* element_filter_ = nullptr;  // exterior_faces of these elements instead of parts'
 
+  // The shells of the parts (or, with a node filter, every shell whose nodes are all in it) as
+  // contact segments, in shell order: n1 n2 n3 n4 (both sides of a shell are used).
+  void shell_segments(const std::vector<int>& parts, const std::vector<char>* node_filter,
+                      std::vector<std::array<int, 4>>& out, std::vector<int>& lines, std::vector<int>& files) {
+    std::vector<int> shells;
+    if (node_filter) {
+      for (int k = 0; k < m_.num_shells(); ++k) shells.push_back(k);
+    } else {
+      for (int p : parts) shells.insert(shells.end(), part_shells_[std::size_t(p)].begin(), part_shells_[std::size_t(p)].end());
+      std::sort(shells.begin(), shells.end());
+      shells.erase(std::unique(shells.begin(), shells.end()), shells.end());
+    }
+    for (int k : shells) {
+      const auto& n = m_.shell_nodes[std::size_t(k)];
+      if (n[0] < 0) continue;
+      if (node_filter && !std::all_of(n.begin(), n.end(), [&](int v) { return (*node_filter)[std::size_t(v)] != 0; })) continue;
+      out.push_back(n);
+      lines.push_back(m_.shell_line[std::size_t(k)]);
+      files.push_back(m_.shell_file.empty() ? -1 : m_.shell_file[std::size_t(k)]);
+    }
+  }
+
   // Exterior faces of the elements of the parts (faces not shared by two of those elements),
   // in element and face order, outward counter-clockwise; triangles as n1 n2 n3 n3.
   void exterior_faces(const std::vector<int>& parts, const std::vector<char>* node_filter,
@@ -4412,24 +4451,26 @@ bool is_ascii_database(const std::string& n) {
         return;
       }
       segment_set_segments(it->second, side.id, out, lines, files);
-    } else if (side.type == 2 || side.type == 3) {
-      const std::vector<int> parts = parts_of(side.type == 2, side.id, side.id_ref, card, field);
-      for (int p : parts)
-        if (!part_shells_[std::size_t(p)].empty()) {  // (contact on shells: not yet)
-          err(1102, side.id_ref, card, field, "shell part " + std::to_string(parts_[std::size_t(p)].pid) + " in a contact (shells in contact are not implemented yet)");
-          return;
-        }
+    } else if (side.type == 2 || side.type == 3 || side.type == 5) {
+      // a part's segments: the exterior faces of its solids, then its shells (both sides)
+      std::vector<int> parts;
+      if (side.type == 5)
+        for (std::size_t p = 0; p < parts_.size(); ++p) parts.push_back(int(p));
+      else
+        parts = parts_of(side.type == 2, side.id, side.id_ref, card, field);
       exterior_faces(parts, nullptr, out, lines, files);
+      shell_segments(parts, nullptr, out, lines, files);
     } else if (side.type == 4) {
       if (const RIdList* s = find_node_set(side.id, side.id_ref, card, field)) {
         std::vector<char> mark(std::size_t(m_.num_nodes()), 0);
         for (int n : set_nodes(*s, "*SET_NODE_LIST " + std::to_string(side.id))) mark[std::size_t(n)] = 1;
         exterior_faces({}, &mark, out, lines, files);
+        shell_segments({}, &mark, out, lines, files);
       }
     }
     if (side.boxid != 0) keep_segments_in_box(side, slave, card, out, lines, files);
     if (out.empty() && diag_.error_count() == errors_before &&
-        (side.type == 0 || side.type == 2 || side.type == 3 || side.type == 4))
+        (side.type == 0 || side.type == 2 || side.type == 3 || side.type == 4 || side.type == 5))
       err(1314, side.boxid != 0 ? side.box_ref : side.id_ref, card, side.boxid != 0 ? (slave ? "SABOXID" : "SBBOXID") : field,
           side.boxid != 0 ? "no segment has its centroid in the box" : "no segments");
   }
@@ -4487,7 +4528,7 @@ bool is_ascii_database(const std::string& n) {
         continue;
       }
       SlidingInterface si;
-      si.type = 3;
+      si.type = c.single ? 4 : 3;
       si.fs = c.fs;
       si.fd = c.fd;
       si.decay = c.dc;
@@ -4498,7 +4539,7 @@ bool is_ascii_database(const std::string& n) {
       si.intfor_master = c.sbpr;
       si.line = c.ref.line ? c.ref.line->number : 0;
       resolve_side(c.a, true, c.keyword, si.slave, si.slave_line, si.slave_file);
-      resolve_side(c.b, false, c.keyword, si.master, si.master_line, si.master_file);
+      if (!c.single) resolve_side(c.b, false, c.keyword, si.master, si.master_line, si.master_file);
       m_.interfaces.push_back(std::move(si));
     }
     m_.control.num_interfaces = int(m_.interfaces.size());

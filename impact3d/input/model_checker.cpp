@@ -339,6 +339,12 @@ bool check_model(const Model& m, Diagnostics& diag) {
       auto it = faces.find(key);
       if (it != faces.end()) it->second = true;
     });
+    // a shell is a segment too (both its sides)
+    for (const auto& sn : m.shell_nodes) {
+      if (sn[0] < 0) continue;
+      auto it = faces.find(face_key(sn));
+      if (it != faces.end()) it->second = true;
+    }
   }
   for (std::size_t k = 0; k < mat_used.size(); ++k) {
     if (!mat_used[k] && m.materials[k].number != 0) {

@@ -92,7 +92,7 @@ TEST(Dyna3dWriters, SlidingInterfaceTypesAreRefusedByName) {
   const char* names[] = {"", "1 sliding only", "2 tied", "", "4 single surface", "5 nodes to surface", "6 nodes tied to surface",
                          "7 shell edge tied to surface", "8 spot weld", "9 tiebreak"};
   for (int type = 1; type <= 9; ++type) {
-    if (type == 3) continue;
+    if (type == 3 || type == 4) continue;  // (4: single surface, read)
     std::string s = deck;
     s.replace(s.find(card), card.size(), "       4       4" + I(type, 4) + "0.0000e+00");
     Model m;
@@ -100,6 +100,15 @@ TEST(Dyna3dWriters, SlidingInterfaceTypesAreRefusedByName) {
     EXPECT_FALSE(read_string(s, m, d));
     ASSERT_EQ(d.count(1104), 1) << type << all_messages(d);
     EXPECT_NE(all_messages(d).find(std::string("type ") + names[type]), std::string::npos) << all_messages(d);
+  }
+  {  // type 4 (single surface) takes its NSS segments only: NMS must be 0
+    std::string s = deck;
+    s.replace(s.find(card), card.size(), "       4       4   40.0000e+00");
+    Model m;
+    Diagnostics d;
+    EXPECT_FALSE(read_string(s, m, d));
+    EXPECT_EQ(d.count(1003), 1) << all_messages(d);
+    EXPECT_NE(all_messages(d).find("single-surface"), std::string::npos) << all_messages(d);
   }
   std::string s = deck;
   s.replace(s.find(card), card.size(), "       4       4  120.0000e+00");

@@ -218,16 +218,18 @@ TEST(KeywordShells, RestartDumpContinuesBitForBit) {
   EXPECT_EQ(a.state().internal, b.state().internal);
 }
 
-// Contact on shell parts is not implemented yet: a contact naming one is refused (1102) rather
-// than left without segments.
-TEST(KeywordShells, ContactOnAShellPartIsRefused) {
+// A contact naming a shell part takes its shells as segments (n1 n2 n3 n4, both sides used;
+// tests/contact/test_shell_contact.cpp runs them).
+TEST(KeywordShells, ContactOnAShellPartTakesItsShellsAsSegments) {
   const std::string contact =
       "*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE\n"
       "         1         1         3         3\n"
       "       0.0       0.0       0.0\n"
       "       1.0       1.0\n";
   ShellRead r = read_shell_text(strip_deck(2, kSection, contact));
-  EXPECT_FALSE(r.ok);
-  EXPECT_GE(r.d.count(1102), 1) << r.messages();
-  EXPECT_NE(r.messages().find("shells in contact"), std::string::npos) << r.messages();
+  ASSERT_TRUE(r.ok) << r.messages();
+  ASSERT_EQ(r.m.interfaces.size(), 1u);
+  ASSERT_EQ(r.m.interfaces[0].slave.size(), 2u);
+  EXPECT_EQ(r.m.interfaces[0].slave[1], r.m.shell_nodes[1]);
+  EXPECT_EQ(r.m.interfaces[0].master, r.m.interfaces[0].slave);
 }

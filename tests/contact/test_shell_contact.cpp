@@ -1,0 +1,371 @@
+// Contact with shells (issue 14, "Contact"): shell segments in sliding interfaces (thickness
+// offsets, both sides), *CONTACT_AUTOMATIC_SINGLE_SURFACE and *CONTACT_AUTOMATIC_NODES_TO_SURFACE.
+// Closed forms: two rigid bodies meeting through penalty springs are a harmonic oscillator of
+// the reduced mass mu = m1 m2 / (m1 + m2) on the summed stiffness K: contact time pi sqrt(mu/K),
+// largest penetration v0 sqrt(mu/K), elastic-collision velocities after; the force is K p; the
+// momentum exchanged is the impulse of the interface force; nothing acts after separation.
+// Steel, SI units.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "common/messages.h"
+#include "impact3d/contact/contact_kernels.h"
+#include "impact3d/input/deck_reader.h"
+#include "impact3d/solve/engine.h"
+#include "../support/box_mesh.h"
+
+using namespace impact3d;
+
+namespace {
+
+constexpr double kE = 210e9, kNu = 0.3, kRho = 7850;
+const double kBulk = kE / (3 * (1 - 2 * kNu));
+
+std::string fld(double v, int w) {
+  char b[64];
+  std::snprintf(b, sizeof b, "%*.*g", w, w > 10 ? 9 : 6, v);
+  return b;
+}
+std::string ifld(long v, int w) {
+  char b[64];
+  std::snprintf(b, sizeof b, "%*ld", w, v);
+  return b;
+}
+
+// A keyword deck built from plates of shells and blocks of hexahedra; each body is a part with
+// its own section and material, and its own node range (0-based [first, last)).
+struct DeckBuilder {
+  std::ostringstream nodes, shells, solids, parts, extra;
+  int nid = 0, eid = 0;
+  struct Body { int first = 0, last = 0, pid = 0; };
+
+  int node(double x, double y, double z) {
+    ++nid;
+    nodes << ifld(nid, 8) << fld(x, 16) << fld(y, 16) << fld(z, 16) << "\n";
+    return nid;
+  }
+  void part(int pid, bool shell, bool rigid, double t) {
+    parts << "*PART\nbody " << pid << "\n" << ifld(pid, 10) << ifld(pid, 10) << ifld(pid, 10) << "\n";
+    if (shell) parts << "*SECTION_SHELL\n" << ifld(pid, 10) << ifld(2, 10) << fld(1.0, 10) << ifld(2, 10) << "\n" << fld(t, 10) << "\n";
+    else parts << "*SECTION_SOLID\n" << ifld(pid, 10) << ifld(1, 10) << "\n";
+    parts << (rigid ? "*MAT_RIGID\n" : "*MAT_ELASTIC\n") << ifld(pid, 10) << fld(kRho, 10) << fld(kE, 10) << fld(kNu, 10) << "\n";
+  }
+  // nx x ny shells over [x0, x0 + lx] x [y0, y0 + ly] at height z
+  Body plate(int pid, bool rigid, double t, double x0, double y0, double z, double lx, double ly, int nx, int ny) {
+    part(pid, true, rigid, t);
+    Body b{nid, 0, pid};
+    const int base = nid + 1;
+    for (int j = 0; j <= ny; ++j)
+      for (int i = 0; i <= nx; ++i) node(x0 + lx * i / nx, y0 + ly * j / ny, z);
+    for (int j = 0; j < ny; ++j)
+      for (int i = 0; i < nx; ++i) {
+        const int n1 = base + i + (nx + 1) * j;
+        shells << ifld(++eid, 8) << ifld(pid, 8) << ifld(n1, 8) << ifld(n1 + 1, 8) << ifld(n1 + nx + 2, 8)
+               << ifld(n1 + nx + 1, 8) << "\n";
+      }
+    b.last = nid;
+    return b;
+  }
+  Body block(int pid, bool rigid, double x0, double y0, double z0, double l, int n) {
+    part(pid, false, rigid, 0);
+    Body b{nid, 0, pid};
+    const int base = nid + 1;
+    for (int k = 0; k <= n; ++k)
+      for (int j = 0; j <= n; ++j)
+        for (int i = 0; i <= n; ++i) node(x0 + l * i / n, y0 + l * j / n, z0 + l * k / n);
+    auto id = [&](int i, int j, int k) { return base + i + (n + 1) * (j + (n + 1) * k); };
+    for (int k = 0; k < n; ++k)
+      for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+          solids << ifld(++eid, 8) << ifld(pid, 8);
+          for (int v : {id(i, j, k), id(i + 1, j, k), id(i + 1, j + 1, k), id(i, j + 1, k), id(i, j, k + 1),
+                        id(i + 1, j, k + 1), id(i + 1, j + 1, k + 1), id(i, j + 1, k + 1)})
+            solids << ifld(v, 8);
+          solids << "\n";
+        }
+    b.last = nid;
+    return b;
+  }
+  // initial velocity of a body's nodes (a node set numbered after the part)
+  void velocity(const Body& b, double vx, double vy, double vz) {
+    extra << "*SET_NODE_LIST\n" << ifld(100 + b.pid, 10) << "\n";
+    int c = 0;
+    for (int n = b.first + 1; n <= b.last; ++n) {
+      extra << ifld(n, 10);
+      if (++c % 8 == 0) extra << "\n";
+    }
+    if (c % 8) extra << "\n";
+    extra << "*INITIAL_VELOCITY\n" << ifld(100 + b.pid, 10) << "\n" << fld(vx, 10) << fld(vy, 10) << fld(vz, 10) << "\n";
+  }
+  std::string text(double end_time, const std::string& contact) const {
+    std::ostringstream d;
+    d << "*KEYWORD\n*TITLE\nshell contact test\n*CONTROL_TERMINATION\n" << fld(end_time, 10) << "\n";
+    d << "*NODE\n" << nodes.str() << parts.str();
+    if (!shells.str().empty()) d << "*ELEMENT_SHELL\n" << shells.str();
+    if (!solids.str().empty()) d << "*ELEMENT_SOLID\n" << solids.str();
+    d << extra.str() << contact << "*END\n";
+    return d.str();
+  }
+};
+
+// *CONTACT_<kind> between parts a and b (SURFATYP 3), penalty scale SFSA
+std::string contact_card(const std::string& kind, int a, int b, double sfsa, int atype = 3, int btype = 3, int soft = 0) {
+  return "*CONTACT_" + kind + "\n" + ifld(a, 10) + ifld(b, 10) + ifld(atype, 10) + ifld(btype, 10) + "\n" +
+         fld(0, 10) + "\n" + fld(sfsa, 10) + fld(sfsa, 10) + "\n" + ifld(soft, 10) + "\n";
+}
+
+struct Read {
+  Model m;
+  Diagnostics d;
+  bool ok = false;
+  std::string messages() const {
+    std::ostringstream os;
+    d.print(os);
+    return os.str();
+  }
+};
+
+Read read_text(const std::string& text) {
+  Read r;
+  DeckFile deck;
+  deck.load_from_string("shell_contact.k", text);
+  r.ok = read_deck(deck, r.m, r.d, InputOptions{});
+  if (r.ok) {
+    orient_interface_segments(r.m, r.d);
+    r.ok = check_model(r.m, r.d);
+  }
+  return r;
+}
+
+double body_momentum(const State& s, const DeckBuilder::Body& b, int axis) {
+  double p = 0;
+  for (int n = b.first; n < b.last; ++n) {
+    const std::size_t k = std::size_t(n);
+    p += s.mass[k] * (axis == 0 ? s.vx[k] : axis == 1 ? s.vy[k] : s.vz[k]);
+  }
+  return p;
+}
+double body_mass(const State& s, const DeckBuilder::Body& b) {
+  double m = 0;
+  for (int n = b.first; n < b.last; ++n) m += s.mass[std::size_t(n)];
+  return m;
+}
+
+// One run, cycle by cycle: the interface force on the slave side, its impulse sum F^n dt_n,
+// the cycles in contact, the largest penetration and the force / penetration ratio.
+struct Trace {
+  double impulse_z = 0;      // sum over cycles of F_z dt_n (interface 1, slave side)
+  double contact_time = 0;   // sum of dt_n over the cycles with a contact force
+  double first = -1, last = -1;  // times of the first and last cycle with a force
+  double max_pen = 0;
+  double k_min = 1e300, k_max = 0;  // |F| / p over the cycles in contact
+  double force_after = 0;    // largest |F| after the last contact (must be 0)
+  double ratio_min = 1, ratio_max = 1;
+  long cycles = 0;
+  bool finished = false;
+};
+
+Trace run(const Model& m, Engine& e, double fmin = 0) {
+  Trace t;
+  State& s = e.state();
+  StepStatus st = StepStatus::ok;
+  while (st == StepStatus::ok) {
+    const double dt_before = s.dt_half, time = s.time;
+    const int cycle = s.cycle;
+    st = e.step();
+    const double dt_n = cycle == 0 ? 0.5 * s.dt_half : 0.5 * (dt_before + s.dt_half);
+    const auto& f = e.interface_forces()[0];
+    const double fz = f[2], fabs = std::sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]);
+    const double pen = e.contact().max_penetration();
+    t.impulse_z += fz * dt_n;
+    if (fabs > fmin) {
+      if (t.first < 0) t.first = time;
+      t.last = time;
+      t.contact_time += dt_n;
+      t.force_after = 0;
+      if (pen > 0) {
+        t.k_min = std::min(t.k_min, fabs / pen);
+        t.k_max = std::max(t.k_max, fabs / pen);
+      }
+    } else if (t.first >= 0) {
+      t.force_after = std::max(t.force_after, fabs);
+    }
+    t.max_pen = std::max(t.max_pen, pen);
+    t.ratio_min = std::min(t.ratio_min, s.energy_ratio());
+    t.ratio_max = std::max(t.ratio_max, s.energy_ratio());
+    ++t.cycles;
+  }
+  t.finished = st == StepStatus::finished;
+  (void)m;
+  return t;
+}
+
+}  // namespace
+
+// ---- kernels
+
+// A node above or below a flat shell segment: the contact normal points to the node's side and
+// the gap is its distance to the mid-surface (the caller subtracts the offsets); beyond an edge
+// the surface is rounded about it; the shell stiffness is mu K A / (longest diagonal).
+TEST(ShellContactKernels, BothSidesRoundedEdgesAndStiffness) {
+  const contact::SegX X = {{0, 0, 0}, {2, 0, 0}, {2, 1, 0}, {0, 1, 0}};
+  const double above[3] = {0.5, 0.25, 0.3}, below[3] = {1.5, 0.75, -0.2}, beyond[3] = {2.3, 0.5, 0.4};
+  contact::SegmentHit h = contact::closest_point_on_shell_segment(X, above, 0.01);
+  EXPECT_TRUE(h.valid);
+  EXPECT_FALSE(h.on_edge);
+  EXPECT_NEAR(h.gap, 0.3, 1e-14);
+  EXPECT_NEAR(h.n[2], 1.0, 1e-14);
+  EXPECT_NEAR(h.xi, -0.5, 1e-12);
+  EXPECT_NEAR(h.eta, -0.5, 1e-12);
+  h = contact::closest_point_on_shell_segment(X, below, 0.01);
+  EXPECT_NEAR(h.gap, 0.2, 1e-14);
+  EXPECT_NEAR(h.n[2], -1.0, 1e-14);
+  h = contact::closest_point_on_shell_segment(X, beyond, 0.01);
+  EXPECT_TRUE(h.on_edge);
+  EXPECT_NEAR(h.gap, 0.5, 1e-14);  // |(0.3, 0, 0.4)|
+  EXPECT_NEAR(h.n[0], 0.6, 1e-14);
+  EXPECT_NEAR(h.n[2], 0.8, 1e-14);
+  EXPECT_NEAR(h.xi, 1.0, 1e-14);
+  EXPECT_NEAR(h.eta, 0.0, 1e-14);
+  EXPECT_DOUBLE_EQ(contact::shell_stiffness(0.1, 175e9, 2.0, std::sqrt(5.0)), 0.1 * 175e9 * 2.0 / std::sqrt(5.0));
+}
+
+// ---- shell segments in sliding interfaces
+
+namespace {
+
+// A rigid 2 x 2 x 2 block (50 mm, its nodes over the plate's nodes) meeting a rigid 4 x 4
+// plate of shells (0.1 m, t = 2 mm) at 5 m/s, from above (side = +1) or below (-1); a 1 mm
+// elastic cube far away sets the step (0.15 us: about 300 steps per contact).
+struct RigidDrop {
+  DeckBuilder d;
+  DeckBuilder::Body plate, block, timer;
+  static constexpr double t = 0.002, gap = 1e-4, v0 = 5, sfsa = 0.1;
+  explicit RigidDrop(int side) {
+    plate = d.plate(1, true, t, 0, 0, 0, 0.1, 0.1, 4, 4);
+    const double zb = side > 0 ? t / 2 + gap : -t / 2 - gap - 0.05;
+    block = d.block(2, true, 0.025, 0.025, zb, 0.05, 2);
+    timer = d.block(3, false, 1, 1, 1, 0.001, 1);
+    d.velocity(block, 0, 0, -side * v0);
+  }
+};
+
+void check_rigid_drop(int side) {
+  RigidDrop rd(side);
+  Read r = read_text(rd.d.text(1.2e-4, contact_card("AUTOMATIC_SURFACE_TO_SURFACE", 2, 1, RigidDrop::sfsa)));
+  ASSERT_TRUE(r.ok) << r.messages();
+  ASSERT_EQ(r.m.interfaces.size(), 1u);
+  EXPECT_EQ(r.m.interfaces[0].master.size(), 16u);  // the plate's shells
+  Engine e(r.m);
+  ASSERT_EQ(e.initialize(), StepStatus::ok);
+  const State& s = e.state();
+  const double m1 = body_mass(s, rd.block), m2 = body_mass(s, rd.plate);
+  EXPECT_NEAR(m1, kRho * 0.05 * 0.05 * 0.05, 1e-12);
+  EXPECT_NEAR(m2, kRho * 0.1 * 0.1 * RigidDrop::t, 1e-12);
+  const double pb0 = body_momentum(s, rd.block, 2), pp0 = body_momentum(s, rd.plate, 2);
+  // K: 9 block nodes on shell segments (k = mu K A / diagonal) and 9 shell nodes on block faces
+  // (k = mu K A^2 / V), all at the same penetration
+  const double mu_pen = RigidDrop::sfsa * 0.1, a_s = 0.025 * 0.025;
+  const double k_s = mu_pen * kBulk * a_s / (0.025 * std::sqrt(2.0)), k_b = mu_pen * kBulk * a_s * a_s / (a_s * 0.025);
+  const double K = 9 * (k_s + k_b), mu = m1 * m2 / (m1 + m2);
+  const Trace tr = run(r.m, e);
+  ASSERT_TRUE(tr.finished);
+  const double T = M_PI * std::sqrt(mu / K), pmax = RigidDrop::v0 * std::sqrt(mu / K);
+  const double dt = s.dt_half;
+  std::printf("rigid block on rigid shell plate (side %+d): contact %.4g us (closed form %.4g us, dt %.3g us), "
+              "max penetration %.4g um (closed form %.4g um), k %.6g..%.6g N/m (K %.6g)\n",
+              side, tr.contact_time * 1e6, T * 1e6, dt * 1e6, tr.max_pen * 1e6, pmax * 1e6, tr.k_min, tr.k_max, K);
+  // force = K p in every cycle in contact (the rigid bodies keep the penetration uniform)
+  EXPECT_NEAR(tr.k_min / K, 1.0, 1e-6);
+  EXPECT_NEAR(tr.k_max / K, 1.0, 1e-6);
+  // contact time within two steps, largest penetration within 1 %
+  EXPECT_NEAR(tr.contact_time, T, 2 * dt);
+  EXPECT_NEAR(tr.max_pen / pmax, 1.0, 0.01);
+  EXPECT_LT(tr.max_pen, RigidDrop::t / 2);  // the block never reaches the mid-surface
+  EXPECT_EQ(tr.force_after, 0.0);           // no force after separation
+  // elastic collision: v1' = v0 (m1 - m2)/(m1 + m2), v2' = 2 m1 v0 / (m1 + m2) (along -side z)
+  const double v = -side * RigidDrop::v0;
+  const double pb1 = body_momentum(s, rd.block, 2), pp1 = body_momentum(s, rd.plate, 2);
+  EXPECT_NEAR(pb1 / (m1 * v * (m1 - m2) / (m1 + m2)), 1.0, 0.005);
+  EXPECT_NEAR(pp1 / (m2 * 2 * m1 * v / (m1 + m2)), 1.0, 0.005);
+  // momentum: conserved, and the block's change is the impulse of the interface force
+  EXPECT_NEAR(pb1 + pp1, pb0 + pp0, 1e-12 * std::abs(pb0));
+  EXPECT_NEAR(tr.impulse_z / (pb1 - pb0), 1.0, 1e-10);
+  EXPECT_NEAR(s.energy_ratio(), 1.0, 0.005);
+}
+
+}  // namespace
+
+TEST(ShellContact, RigidBlockDroppedOnRigidShellPlateIsTheClosedFormOscillator) { check_rigid_drop(+1); }
+TEST(ShellContact, RigidBlockRisingOntoTheUndersideOfAShellPlate) { check_rigid_drop(-1); }
+
+namespace {
+
+// An elastic block (40 mm, 2 x 2 x 2) dropped at 5 m/s on a free elastic plate of 10 x 10
+// shells (0.1 m, t = 2 mm), run to 150 us (the block, 3.2 times the plate's mass, drives it).
+struct ElasticDrop {
+  DeckBuilder d;
+  DeckBuilder::Body plate, block;
+  static constexpr double t = 0.002;
+  ElasticDrop() {
+    plate = d.plate(1, false, t, 0, 0, 0, 0.1, 0.1, 10, 10);
+    block = d.block(2, false, 0.03, 0.03, t / 2 + 2e-4, 0.04, 2);
+    d.velocity(block, 0, 0, -5);
+  }
+  std::string text(double sfsa = 1.0, int soft = 0) const {
+    return d.text(1.5e-4, contact_card("SURFACE_TO_SURFACE", 2, 1, sfsa, 3, 3, soft));
+  }
+};
+
+}  // namespace
+
+// Deformable bodies: total momentum is conserved, the block's momentum change equals the
+// impulse of the interface force, the block never gets past the shell's offset surface to its
+// mid-surface, the energy balance holds with the contact energy booked, and the run has the
+// same bits for 1 and 2 threads.
+TEST(ShellContact, ElasticBlockOnElasticShellPlateConservesMomentumAndEnergy) {
+  ElasticDrop ed;
+  Read r = read_text(ed.text(0.1));
+  ASSERT_TRUE(r.ok) << r.messages();
+  std::vector<double> x1;
+  for (int threads : {1, 2}) {
+    test_support::ScopedThreads th(threads);
+    Engine e(r.m);
+    ASSERT_EQ(e.initialize(), StepStatus::ok);
+    const State& s = e.state();
+    const double pb0 = body_momentum(s, ed.block, 2), pp0 = body_momentum(s, ed.plate, 2);
+    const Trace tr = run(r.m, e);
+    ASSERT_TRUE(tr.finished);
+    const double pb1 = body_momentum(s, ed.block, 2), pp1 = body_momentum(s, ed.plate, 2);
+    if (threads == 1) {
+      std::printf("elastic block on elastic shell plate: %ld cycles, contact %.4g..%.4g us, max penetration %.4g um of "
+                  "t/2 = %.4g um, block momentum %.6g -> %.6g N s, plate %.6g, impulse %.9g (rel. %.2g), "
+                  "energy ratio %.6f..%.6f, end %.6f\n",
+                  tr.cycles, tr.first * 1e6, tr.last * 1e6, tr.max_pen * 1e6, ElasticDrop::t / 2 * 1e6, pb0, pb1, pp1,
+                  tr.impulse_z, tr.impulse_z / (pb1 - pb0) - 1, tr.ratio_min, tr.ratio_max, s.energy_ratio());
+      EXPECT_GT(tr.first, 0);
+      EXPECT_NEAR(pb1 + pp1, pb0 + pp0, 1e-12 * std::abs(pb0));
+      EXPECT_NEAR(tr.impulse_z / (pb1 - pb0), 1.0, 1e-10);
+      EXPECT_LT(pp1, -0.3);  // the plate is struck (the lighter body: the block goes on)
+      EXPECT_LT(tr.max_pen, 0.1 * ElasticDrop::t / 2);
+      // energy: measured 0.99983..1.00365 (penalty scale 0.1; with the default 1.0 the peak is
+      // 1.020 during the impact, 1.006 after: the contact springs of the 0.16 g shell nodes
+      // near the step limit)
+      EXPECT_GT(tr.ratio_min, 0.99);
+      EXPECT_LT(tr.ratio_max, 1.01);
+      x1 = s.z;
+      for (std::size_t k = 0; k < s.vx.size(); ++k) x1.push_back(s.vz[k]);
+    } else {
+      std::vector<double> x2 = s.z;
+      for (std::size_t k = 0; k < s.vx.size(); ++k) x2.push_back(s.vz[k]);
+      EXPECT_TRUE(x1 == x2) << "1 and 2 threads differ";
+    }
+  }
+}
