@@ -211,21 +211,22 @@ class KeywordWriter {
     const EosForm* f = find_eos_form(e.form);
     if (!f) return;
     os_ << "*" << f->keyword << "\n";
-    for (int c = 0; c < 2; ++c) {
-      std::vector<KField> fields(8, B());
+    for (int c = 0; c < int(f->widths.size()); ++c) {
+      const int w = f->widths[std::size_t(c)];
+      std::vector<KField> fields(std::size_t(eos_card_fields(*f, c)), B(w));
       std::string head(80, ' ');
       int n = 0;
       if (c == 0) fields[0] = I(id), n = 1, head.replace(5, 5, "eosid");
       for (const EosParam& p : f->params) {
         if (p.kcard != c || p.slot < 0) continue;
-        fields[std::size_t(p.kfield)] = R(eos_value(e, p));
+        fields[std::size_t(p.kfield)] = R(eos_value(e, p), w);
         std::string k = p.key;
         for (char& ch : k) ch = char(std::tolower(static_cast<unsigned char>(ch)));
-        head.replace(std::size_t(10 * p.kfield + 10) - k.size(), k.size(), k);
+        head.replace(std::size_t(w * p.kfield + w) - k.size(), k.size(), k);
         n = std::max(n, p.kfield + 1);
       }
       fields.resize(std::size_t(n));
-      head.resize(std::size_t(10 * n));
+      head.resize(std::size_t(w * n));
       head.replace(0, 2, "$#");
       os_ << head << "\n" << kcard(fields) << "\n";
     }
@@ -681,15 +682,16 @@ void write_fixed_deck(std::ostream& os, const Model& m, std::vector<std::string>
       os << (text.find_first_not_of(' ') == std::string::npos ? std::string() : text) << "\n";
     }
     if (const EosForm* f = find_eos_form(md.eos.form)) {  // the EOS cards (material/eos.h)
-      for (int c = 0; c < 2; ++c) {
+      for (int c = 0; c < int(f->widths.size()); ++c) {
         FixedLine line = L(what + " EOS card " + std::to_string(c + 1));
         for (const EosParam& p : f->params)
-          if (p.fcard == c && p.slot >= 0) line.r(1 + 10 * p.ffield, 10 + 10 * p.ffield, eos_value(md.eos, p));
+          if (p.fcard == c && p.slot >= 0) line.r(1 + w * p.ffield, w + w * p.ffield, eos_value(md.eos, p));
         os << line.str() << "\n";
       }
     }
   }
   os << "*----- NODES\n";
+        const int w = f->widths[std::size_t(c)];
   static const int rot_code[8] = {0, 1, 2, 4, 3, 6, 5, 7};  // bits (0 rx, 1 ry, 2 rz) -> code 0-7
   for (int n = 0; n < m.num_nodes(); ++n) {
     const int rc = std::size_t(n) < m.rot_bc.size() ? rot_code[m.rot_bc[std::size_t(n)] & 7] : 0;

@@ -430,7 +430,7 @@ class Dyna3dReader {
       if (!mt) c1.error(1103, 6, 10, "material type", "supported: " + supported_material_types());
       md.rho = c1.e(11, 20, "density");
       if (!(md.rho > 0)) c1.error(1207, 11, 20, "density");
-      // equation of state (material/eos.h): form 1 or 4, its two cards after card 8
+      // equation of state (material/eos.h): form 1, 4 or 9, its cards after card 8
       const long long eos = c1.i(21, 25, "EOS type");
       const EosForm* eos_form = eos != 0 ? find_eos_form(int(eos)) : nullptr;
       if (eos != 0 && !eos_form)
@@ -486,15 +486,16 @@ class Dyna3dReader {
       if (mt) read_material_params(md, *mt, cards);
       if (md.shell) read_shell_section(md, name);
       if (eos_form && (!mt || mt->accepts_eos) && !md.shell) {  // (a type that takes none: reported above, no cards read)
-        Card ec[2] = {next(name + " EOS card 1"), next(name + " EOS card 2")};
+        std::vector<Card> ec;
+        for (std::size_t c = 0; c < eos_form->widths.size(); ++c) ec.push_back(next(name + " EOS card " + std::to_string(c + 1)));
         for (const EosParam& p : eos_form->params) {
           if (p.fcard < 0) continue;
-          const int a = 1 + 10 * p.ffield;
-          eos_value(md.eos, p) = ec[p.fcard].e(a, a + 9, p.key, p.slot == 8 ? 1.0 : 0.0);
+          const int w = eos_form->widths[std::size_t(p.fcard)], a = 1 + w * p.ffield;
+          eos_value(md.eos, p) = ec[std::size_t(p.fcard)].e(a, a + w - 1, p.key, p.slot == kEosSlotV0 ? 1.0 : 0.0);
         }
         check_eos(md.eos, md.rho, [&](const EosParam& p, int msg, const std::string& detail) {
-          const int a = 1 + 10 * (p.fcard < 0 ? 0 : p.ffield);
-          ec[p.fcard < 0 ? 0 : p.fcard].error(msg, a, a + 9, p.key, detail);
+          const int c = p.fcard < 0 ? 0 : p.fcard, w = eos_form->widths[std::size_t(c)], a = 1 + w * (p.fcard < 0 ? 0 : p.ffield);
+          ec[std::size_t(c)].error(msg, a, a + w - 1, p.key, detail);
         });
       }
       // rigid-body constraints in a local system need *DEFINE_COORDINATE_SYSTEM (keyword decks)

@@ -1839,16 +1839,16 @@ bool is_ascii_database(const std::string& n) {
     mats_[mid] = m;
   }
 
-  // *EOS_LINEAR_POLYNOMIAL / *EOS_GRUNEISEN (_TITLE): the form's cards (material/eos.h); a
+  // *EOS_LINEAR_POLYNOMIAL / *EOS_GRUNEISEN / *EOS_TABULATED (_TITLE): the form's cards (material/eos.h); a
   // *PART's EOSID gives it to the part's material.
   void parse_eos(const Block& b, const EosForm& f) {
     const std::size_t start = skip_option_card(b);
     if (start >= b.data.size()) { missing_card(b, "card 1"); return; }
     std::vector<KCard> cards;
-    for (std::size_t k = 0; k < 2 && start + k < b.data.size(); ++k)
-      cards.push_back(card(b, start + k, k == 0 ? "card 1" : "card 2", W(b, 8)));
+    for (std::size_t k = 0; k < f.widths.size() && start + k < b.data.size(); ++k)
+      cards.push_back(card(b, start + k, "card " + std::to_string(k + 1), W(b, eos_card_fields(f, int(k)), f.widths[k])));
     const int id = xid(int(cards[0].i(0, "EOSID")), b, &IncludeTransform::idroff);
-    for (std::size_t k = 0; k < cards.size(); ++k) cards[k].set_card(b.keyword + " " + std::to_string(id) + (k ? " card 2" : ""));
+    for (std::size_t k = 0; k < cards.size(); ++k) cards[k].set_card(b.keyword + " " + std::to_string(id) + (k ? " card " + std::to_string(k + 1) : ""));
     REos r;
     r.eos.form = f.form;
     r.eos.id = id;
@@ -1856,7 +1856,7 @@ bool is_ascii_database(const std::string& n) {
     for (const EosParam& p : f.params) {
       if (std::size_t(p.kcard) >= cards.size()) continue;
       KCard& kc = cards[std::size_t(p.kcard)];
-      const double def = p.slot == 8 ? 1.0 : 0.0;
+      const double def = p.slot == kEosSlotV0 ? 1.0 : 0.0;
       double v = kc.r(p.kfield, p.key, def);
       if (kc.blank(p.kfield)) v = def;
       if (p.slot < 0) {
@@ -1879,14 +1879,14 @@ bool is_ascii_database(const std::string& n) {
     if (p.eosid == 0) {
       if (t && t->needs_eos)
         err(1204, p.eos_ref.line ? p.eos_ref : p.mid_ref, card, "EOSID",
-            std::string("*") + t->keywords.front() + " needs an equation of state (*EOS_LINEAR_POLYNOMIAL or *EOS_GRUNEISEN)");
+            std::string("*") + t->keywords.front() + " needs an equation of state (*EOS_LINEAR_POLYNOMIAL, *EOS_GRUNEISEN or *EOS_TABULATED)");
       return;
     }
     auto it = eos_.find(p.eosid);
     if (it == eos_.end()) {
       auto u = unsupported_eosids_.find(p.eosid);
       if (u != unsupported_eosids_.end())
-        err(1102, p.eos_ref, card, "EOSID", "equation of state " + std::to_string(p.eosid) + " is " + u->second + "; supported: *EOS_LINEAR_POLYNOMIAL, *EOS_GRUNEISEN");
+        err(1102, p.eos_ref, card, "EOSID", "equation of state " + std::to_string(p.eosid) + " is " + u->second + "; supported: *EOS_LINEAR_POLYNOMIAL, *EOS_GRUNEISEN, *EOS_TABULATED");
       else
         err(1310, p.eos_ref, card, "EOSID", "*EOS " + std::to_string(p.eosid) + " is not defined");
       return;

@@ -15,16 +15,35 @@ const EosForm& linear_polynomial() {
   static const EosForm f = {1, "linear polynomial", "EOS_LINEAR_POLYNOMIAL",
                             {{"C0", 0, 1, 0, 0, 0}, {"C1", 0, 2, 0, 1, 1}, {"C2", 0, 3, 0, 2, 2}, {"C3", 0, 4, 0, 3, 3},
                              {"C4", 0, 5, 0, 4, 4}, {"C5", 0, 6, 0, 5, 5}, {"C6", 0, 7, 0, 6, 6},
-                             {"E0", 1, 0, 1, 0, 7}, {"V0", 1, 1, 1, 1, 8}}};
+                             {"E0", 1, 0, 1, 0, kEosSlotE0}, {"V0", 1, 1, 1, 1, kEosSlotV0}}};
   return f;
 }
 
 const EosForm& gruneisen() {
   static const EosForm f = {4, "Gruneisen", "EOS_GRUNEISEN",
                             {{"C", 0, 1, 0, 0, 0}, {"S1", 0, 2, 0, 1, 1}, {"S2", 0, 3, 0, 2, 2}, {"S3", 0, 4, 0, 3, 3},
-                             {"GAMMA0", 0, 5, 0, 4, 4}, {"A", 0, 6, 0, 5, 5}, {"E0", 0, 7, 0, 6, 7},
-                             {"V0", 1, 0, 1, 0, 8}, {"LCID", 1, 1, -1, 0, -1, "LCID (GAMMA0 from a curve of the energy)"},
+                             {"GAMMA0", 0, 5, 0, 4, 4}, {"A", 0, 6, 0, 5, 5}, {"E0", 0, 7, 0, 6, kEosSlotE0},
+                             {"V0", 1, 0, 1, 0, kEosSlotV0}, {"LCID", 1, 1, -1, 0, -1, "LCID (GAMMA0 from a curve of the energy)"},
                              {"LCID", 1, 2, -1, 0, -1, "LCID (GAMMA0 from a curve of the energy)"}}};
+  return f;
+}
+
+// LS-DYNA's EOS 9: card 1 EOSID GAMA E0 V0; cards 2-7 (5 E16 each) EV1-5, EV6-10, C1-5, C6-10,
+// T1-5, T6-10.  c: EV1-10 (0-9), C1-10 (10-19), T1-10 (20-29), GAMMA (30).
+const EosForm& tabulated() {
+  static const EosForm f = [] {
+    EosForm f;
+    f.form = 9;
+    f.name = "tabulated";
+    f.keyword = "EOS_TABULATED";
+    f.params = {{"GAMA", 0, 1, 0, 0, 30}, {"E0", 0, 2, 0, 1, kEosSlotE0}, {"V0", 0, 3, 0, 2, kEosSlotV0}};
+    static const char* const names[30] = {"EV1", "EV2", "EV3", "EV4", "EV5", "EV6", "EV7", "EV8", "EV9", "EV10",
+                                          "C1",  "C2",  "C3",  "C4",  "C5",  "C6",  "C7",  "C8",  "C9",  "C10",
+                                          "T1",  "T2",  "T3",  "T4",  "T5",  "T6",  "T7",  "T8",  "T9",  "T10"};
+    for (int j = 0; j < 30; ++j) f.params.push_back({names[j], 1 + j / 5, j % 5, 1 + j / 5, j % 5, j});
+    f.widths = {10, 16, 16, 16, 16, 16, 16};
+    return f;
+  }();
   return f;
 }
 
@@ -37,7 +56,7 @@ std::string f6(double v) {
 }  // namespace
 
 std::span<const EosForm* const> eos_forms() {
-  static const EosForm* const table[] = {&linear_polynomial(), &gruneisen()};
+  static const EosForm* const table[] = {&linear_polynomial(), &gruneisen(), &tabulated()};
   return table;
 }
 
@@ -61,18 +80,25 @@ std::string supported_eos_forms() {
 
 double& eos_value(EosData& e, const EosParam& p) {
   static thread_local double sink = 0;
-  if (p.slot >= 0 && p.slot < 7) return e.c[std::size_t(p.slot)];
-  if (p.slot == 7) return e.e0;
-  if (p.slot == 8) return e.v0;
+  if (p.slot >= 0 && p.slot < kEosConstants) return e.c[std::size_t(p.slot)];
+  if (p.slot == kEosSlotE0) return e.e0;
+  if (p.slot == kEosSlotV0) return e.v0;
   sink = 0;
   return sink;
 }
 
 double eos_value(const EosData& e, const EosParam& p) {
-  if (p.slot >= 0 && p.slot < 7) return e.c[std::size_t(p.slot)];
-  if (p.slot == 7) return e.e0;
-  if (p.slot == 8) return e.v0;
+  if (p.slot >= 0 && p.slot < kEosConstants) return e.c[std::size_t(p.slot)];
+  if (p.slot == kEosSlotE0) return e.e0;
+  if (p.slot == kEosSlotV0) return e.v0;
   return 0;
+}
+
+int eos_table_points(const EosData& e) {
+  if (e.form != 9) return 0;
+  int n = 1;
+  while (n < 10 && e.c[std::size_t(n)] < e.c[std::size_t(n - 1)]) ++n;
+  return n;
 }
 
 void check_eos(EosData& e, double rho0, const std::function<void(const EosParam& p, int msg, const std::string& detail)>& report) {
@@ -84,7 +110,18 @@ void check_eos(EosData& e, double rho0, const std::function<void(const EosParam&
     return f->params.front();
   };
   if (e.v0 == 0) e.v0 = 1;
-  if (e.v0 != 1) report(param("V0"), 1102, "an initial relative volume V0 other than 1 (a precompressed or expanded start)");
+  if (!(e.v0 > 0)) report(param("V0"), 1003, "the initial relative volume V0 must be positive (blank or 0: 1)");
+  if (e.form == 9) {
+    static const char* const ev[10] = {"EV1", "EV2", "EV3", "EV4", "EV5", "EV6", "EV7", "EV8", "EV9", "EV10"};
+    const int n = eos_table_points(e);
+    if (n < 2) report(param("EV2"), 1003, "the table needs at least two points with EV decreasing (EV1 > EV2: compression is negative)");
+    for (int j = n; j < 10 && n >= 2; ++j)
+      if (e.c[std::size_t(j)] != 0 || e.c[std::size_t(10 + j)] != 0 || e.c[std::size_t(20 + j)] != 0) {
+        report(param(ev[j]), 1003, "the volumetric strains EV must decrease (ln V: compression negative); points after the table's last must be blank");
+        break;
+      }
+    if (n < 2) return;
+  }
   if (e.form == 4 && !(e.c[0] > 0)) report(param("C"), 1003, "the bulk sound speed C must be positive");
   if (e.form == 4 && e.c[1] < 1) report(param("S1"), 1003, "the slope S1 of the us-up line must be at least 1");
   // a sound speed at the initial state (the time step and the hourglass and bulk viscosity need one)
@@ -92,18 +129,22 @@ void check_eos(EosData& e, double rho0, const std::function<void(const EosParam&
   c.rho = rho0;
   derive_eos_constants(e, c);
   if (!(c.K > 0))
-    report(param(e.form == 1 ? "C1" : "C"), 1003,
+    report(param(e.form == 1 ? "C1" : e.form == 9 ? "C1" : "C"), 1003,
            "the equation of state gives no sound speed at its initial state (isentropic bulk modulus " + f6(c.K) + " <= 0)");
 }
 
 void derive_eos_constants(const EosData& e, MaterialConstants& c) {
   c.eos_form = e.form;
-  c.eos = e.c;
+  for (std::size_t j = 0; j < e.c.size(); ++j) c.eos[j] = e.c[j];
   if (e.form == 4) c.eos[0] = c.rho * e.c[0] * e.c[0];
+  if (e.form == 9) c.eos[31] = eos_table_points(e);
+  c.eos_v0 = e.v0 > 0 ? e.v0 : 1.0;
+  // the isentropic bulk modulus at the initial state, V = V0 (mu0 = 1/V0 - 1)
+  const double m1 = 1.0 / c.eos_v0;
   double a, b, da, db;
-  calc_eos_coefficients(c, 0.0, a, b, da, db);
+  calc_eos_coefficients(c, m1 - 1.0, a, b, da, db);
   const double p0 = a + b * e.e0;
-  c.K = da + db * e.e0 + p0 * b;
+  c.K = m1 * (da + db * e.e0) + p0 * b / m1;
   const double G = c.G;
   c.lambda = c.K - 2.0 * G / 3.0;
   c.E = G > 0 ? 9.0 * c.K * G / (3.0 * c.K + G) : 0.0;
@@ -113,7 +154,7 @@ void derive_eos_constants(const EosData& e, MaterialConstants& c) {
 
 double calc_eos_initial_pressure(const MaterialConstants& c, double e0) {
   double a, b, da, db;
-  calc_eos_coefficients(c, 0.0, a, b, da, db);
+  calc_eos_coefficients(c, 1.0 / c.eos_v0 - 1.0, a, b, da, db);
   const double p = a + b * e0;
   return p < c.eos_pc ? c.eos_pc : p;
 }
@@ -122,8 +163,9 @@ void echo_eos(std::ostream& os, const EosData& e) {
   const EosForm* f = find_eos_form(e.form);
   if (!f) return;
   echo_line(os, "equation of state", std::string(f->name) + " (form " + std::to_string(f->form) + (e.id ? ", EOSID " + std::to_string(e.id) : std::string()) + ")");
+  const int n = eos_table_points(e);
   for (const EosParam& p : f->params)
-    if (p.slot >= 0) echo_line(os, std::string("  EOS ") + p.key, f6(eos_value(e, p)));
+    if (p.slot >= 0 && (e.form != 9 || p.slot >= 30 || p.slot % 10 < n)) echo_line(os, std::string("  EOS ") + p.key, f6(eos_value(e, p)));
   echo_line(os, "pressure from", "the equation of state (deviatoric stress from the material)");
 }
 

@@ -9,23 +9,31 @@
 //       p = rho0 C^2 mu [1 + (1 - GAMMA0/2) mu - A/2 mu^2] /
 //           [1 - (S1 - 1) mu - S2 mu^2/(mu + 1) - S3 mu^3/(mu + 1)^2]^2 + (GAMMA0 + A mu) E,
 //     in tension p = rho0 C^2 mu + (GAMMA0 + A mu) E;
-// with mu = rho/rho0 - 1 = V0/V - 1 and E the internal energy per reference volume, a history
-// value of the element (initially E0).  Both forms are p = a(mu) + b(mu) E.  The energy update
+//   9 *EOS_TABULATED: p = C(eps_v) + GAMMA T(eps_v) E, eps_v = ln V, C and T piecewise linear in
+//     eps_v through the points (EV_i, C_i), (EV_i, T_i) (EV decreasing from EV1; up to 10 points,
+//     those after the first that does not decrease must be blank), beyond the first and last
+//     points the end segments extended (an IMPACT-3D choice);
+// with V the relative volume, mu = 1/V - 1 and E the internal energy per reference volume, a
+// history value of the element (initially E0).  V = V0 x (volume / initial volume): V0 (the
+// EOS's initial relative volume, 1 by default) starts the solid precompressed (V0 < 1) or
+// expanded; its mass stays RO x its initial volume, its reference volume is the initial volume
+// / V0.  All forms are p = a(mu) + b(mu) E.  The energy update
 // is DYNA3D's: over a step with relative volume change dv (= trD V_mid dt / V0, the increment
-// the stress-work book uses),
+// the stress-work book uses, times V0),
 //   E* = E^n + (deviatoric work) - (p^n + q^{n-1} + q^n) dv / 2,
 //   p^{n+1} = (a + b E*) / (1 + b dv / 2),  E^{n+1} = E* - p^{n+1} dv / 2,
-// so that p^{n+1} = a + b E^{n+1} exactly (the EOS holds at the end of the step) and E V0
-// grows by exactly the element's stress and bulk-viscosity work.  A pressure cutoff (the
+// so that p^{n+1} = a + b E^{n+1} exactly (the EOS holds at the end of the step) and E times
+// the reference volume grows by exactly the element's stress and bulk-viscosity work.  A pressure cutoff (the
 // material's PC < 0) bounds p from below.  The element's sound speed for its time step is the
 // isentropic one, c^2 = (K_s + 4G/3) / rho with K_s = (1 + mu) (a' + b' E) + p b / (1 + mu)
 // (never below a tenth of the reference speed, so that an element at the cutoff keeps a
 // finite step: an IMPACT-3D choice).
 //
 // Fixed format (an IMPACT-3D choice: DYNA3D's EOS card layout is not public): a material set
-// whose card 1 columns 21-25 give form 1 or 4 has two more cards after card 8, LS-DYNA's
-// keyword cards without EOSID, 8 E10 fields each: form 1: C0 C1 C2 C3 C4 C5 C6 / E0 V0; form 4:
-// C S1 S2 S3 GAMMA0 A E0 / V0.
+// whose card 1 columns 21-25 give form 1, 4 or 9 has the form's cards after card 8, LS-DYNA's
+// keyword cards without EOSID: form 1: C0 C1 C2 C3 C4 C5 C6 / E0 V0; form 4: C S1 S2 S3 GAMMA0
+// A E0 / V0 (8 E10 fields each); form 9: GAMMA E0 V0 (E10), then EV1-5 / EV6-10 / C1-5 / C6-10
+// / T1-5 / T6-10 (5 E16 fields each).
 
 #include <cmath>
 #include <functional>
@@ -40,8 +48,11 @@
 
 namespace impact3d {
 
-// One parameter of an EOS form: keyword card (0, 1) and field (0-7, EOSID is field 0 of card
-// 0), fixed-format EOS card (0, 1) and field (0-7); slot 0-6: EosData::c, 7: e0, 8: v0, -1: a
+// Where an EosParam's value goes: EosData::c[slot] for slot < kEosConstants, else e0 or v0.
+constexpr int kEosSlotE0 = kEosConstants, kEosSlotV0 = kEosConstants + 1;
+
+// One parameter of an EOS form: keyword card (0, 1, ...) and field (EOSID is field 0 of card 0),
+// fixed-format EOS card and field; slot: EosData::c index, kEosSlotE0, kEosSlotV0, or -1: a
 // field read and refused when nonzero (unsupported).
 struct EosParam {
   const char* key;
@@ -56,23 +67,28 @@ struct EosForm {
   const char* name = "";    // printed name
   const char* keyword = "";  // LS-DYNA keyword without '*'
   std::vector<EosParam> params;
+  std::vector<int> widths = {10, 10};  // per card (both formats): the field width; its size: the cards
 };
+// Fields per card of a form (80 columns).
+inline int eos_card_fields(const EosForm& f, int card) { return 80 / f.widths[std::size_t(card)]; }
 
-// The EOS forms IMPACT-3D has (1 linear polynomial, 4 Gruneisen).
+// The EOS forms IMPACT-3D has (1 linear polynomial, 4 Gruneisen, 9 tabulated).
 std::span<const EosForm* const> eos_forms();
 const EosForm* find_eos_form(int form);
 const EosForm* find_eos_form_by_keyword(std::string_view keyword);
 // "1 linear polynomial, 4 Gruneisen" for messages.
 std::string supported_eos_forms();
-// The value a parameter names (slot 0-8).
+// The value a parameter names.
 double& eos_value(EosData& e, const EosParam& p);
 double eos_value(const EosData& e, const EosParam& p);
+// The number of points of a tabulated EOS's table (form 9).
+int eos_table_points(const EosData& e);
 // Checks after reading (V0 blank/0 -> 1); problems go to report (message, detail).
 void check_eos(EosData& e, double rho0, const std::function<void(const EosParam& p, int msg, const std::string& detail)>& report);
 // The kernel constants: eos_form, eos[], K (the isentropic bulk modulus at the initial state),
 // lambda, c; E and nu made consistent with K and G.  eos_pc and eos_hist are the caller's.
 void derive_eos_constants(const EosData& e, MaterialConstants& c);
-// The pressure at the initial state (mu = 0, E = E0).
+// The pressure at the initial state (V = V0, E = E0).
 double calc_eos_initial_pressure(const MaterialConstants& c, double e0);
 // The printed echo of a material's EOS (nothing for form 0).
 void echo_eos(std::ostream& os, const EosData& e);
@@ -80,6 +96,21 @@ void echo_eos(std::ostream& os, const EosData& e);
 // p = a + b E and the derivatives a', b' in mu.
 inline void calc_eos_coefficients(const MaterialConstants& m, double mu, double& a, double& b, double& da, double& db) {
   const double* k = m.eos.data();
+  if (m.eos_form == 9) {
+    // tabulated: k = EV1-10, C1-10, T1-10, GAMMA, points; the segment i that holds eps_v (the
+    // end segments extended)
+    const int n = int(k[31]);
+    const double ev = -std::log(1.0 + mu);
+    int i = 0;
+    while (i + 2 < n && ev < k[i + 1]) ++i;
+    const double h = k[i + 1] - k[i];
+    const double sc = (k[11 + i] - k[10 + i]) / h, st = (k[21 + i] - k[20 + i]) / h;
+    a = k[10 + i] + sc * (ev - k[i]);
+    b = k[30] * (k[20 + i] + st * (ev - k[i]));
+    da = -sc / (1.0 + mu);  // d eps_v / d mu = -1 / (1 + mu)
+    db = -k[30] * st / (1.0 + mu);
+    return;
+  }
   if (m.eos_form == 1) {
     const double c2 = mu < 0.0 ? 0.0 : k[2], c6 = mu < 0.0 ? 0.0 : k[6];
     a = k[0] + mu * (k[1] + mu * (c2 + mu * k[3]));
@@ -120,10 +151,10 @@ inline double update_stress_eos_point(const MaterialConstants& m, const double o
   const double o0 = old[0] + po, o1 = old[1] + po, o2 = old[2] + po;
   const double w = 0.5 * ((o0 + s0) * d[0] + (o1 + s1) * d[1] + (o2 + s2) * d[2]) +
                    ((old[3] + sig[3]) * d[3] + (old[4] + sig[4]) * d[4] + (old[5] + sig[5]) * d[5]);
-  const double scale = vm * dt / vol0;
+  const double scale = vm * dt / vol0 * m.eos_v0;
   const double dv = (d[0] + d[1] + d[2]) * scale;
   const double es = e + w * scale - 0.5 * (po + q_old + q_new) * dv;
-  const double mu = vol0 / v - 1.0;
+  const double mu = vol0 / (m.eos_v0 * v) - 1.0;
   double a, b, da, db;
   calc_eos_coefficients(m, mu, a, b, da, db);
   double p = (a + b * es) / (1.0 + 0.5 * b * dv);
@@ -134,7 +165,7 @@ inline double update_stress_eos_point(const MaterialConstants& m, const double o
   sig[2] = s2 - p;
   const double m1 = 1.0 + mu;
   const double ks = m1 * (da + db * e) + p * b / m1;
-  const double c2 = (ks + (4.0 / 3.0) * m.G) / (m.rho * m1);
+  const double c2 = (ks + (4.0 / 3.0) * m.G) / (m.rho * m1 * m.eos_v0);  // rho V0 / V
   const double floor2 = 0.01 * m.c * m.c;
   return std::sqrt(c2 > floor2 ? c2 : floor2);
 }

@@ -37,12 +37,14 @@ struct MaterialConstants {
   // Hardening curve sigma_y(eps_p), piecewise linear, the last slope extended (types with a
   // tabulated flow stress); slope[i] is the slope from point i to i + 1.
   std::vector<double> curve_eps, curve_sig, curve_slope;
-  // Equation of state (material/eos.h): form 0 none, 1 linear polynomial, 4 Gruneisen; its
-  // constants (form 1 C0-C6, form 4 rho0 C^2, S1, S2, S3, GAMMA0, A); the pressure cutoff
-  // (p >= eos_pc; -inf none); the history value that holds the internal energy per reference
-  // volume
+  // Equation of state (material/eos.h): form 0 none, 1 linear polynomial, 4 Gruneisen, 9
+  // tabulated; its constants (form 1 C0-C6, form 4 rho0 C^2, S1, S2, S3, GAMMA0, A; form 9
+  // EV1-EV10, C1-C10, T1-T10, GAMMA, then the number of points); the initial relative volume
+  // V0; the pressure cutoff (p >= eos_pc; -inf none); the history value that holds the internal
+  // energy per reference volume
   int eos_form = 0;
-  std::array<double, 7> eos{};
+  std::array<double, kEosConstants + 1> eos{};
+  double eos_v0 = 1;
   double eos_pc = -HUGE_VAL;
   int eos_hist = -1;
   // the type's other constants (its file names their places)

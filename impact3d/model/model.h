@@ -80,12 +80,14 @@ struct ErosionData {
 
 // An equation of state of a material (the pressure of its solids; material/eos.h).  form: 0
 // none, 1 linear polynomial (*EOS_LINEAR_POLYNOMIAL), 4 Gruneisen (*EOS_GRUNEISEN): DYNA3D's
-// EOS form numbers.  c: form 1 C0-C6; form 4 C, S1, S2, S3, GAMMA0, A.  e0: the initial
-// internal energy per reference volume; v0: the initial relative volume (1).
+// EOS form numbers; 9 tabulated (*EOS_TABULATED).  c: form 1 C0-C6; form 4 C, S1, S2, S3,
+// GAMMA0, A; form 9 EV1-EV10, C1-C10, T1-T10, GAMMA.  e0: the initial internal energy per
+// reference volume; v0: the initial relative volume (1).
+constexpr int kEosConstants = 31;
 struct EosData {
   int form = 0;
   int id = 0;  // the keyword deck's EOSID (messages, the converter)
-  std::array<double, 7> c{};
+  std::array<double, kEosConstants> c{};
   double e0 = 0, v0 = 1;
 };
 

@@ -11,6 +11,7 @@
 
 #include "impact3d/input/deck_reader.h"
 #include "impact3d/input/deck_writer.h"
+#include "impact3d/material/eos.h"
 #include "impact3d/material/material_types.h"
 #include "impact3d/output/printed_output.h"
 
@@ -170,6 +171,57 @@ TEST(KeywordEos, ElasticPlasticHydroWithItsTableIsReadEchoedAndRoundTrips) {
   EXPECT_EQ(d.d.count(1102), 2) << d.messages();
 }
 
+// *EOS_TABULATED: card 1 EOSID GAMA E0 V0; cards 2-7 EV, C, T (5 E16 each).
+const std::string kTabulated =
+    "*EOS_TABULATED_TITLE\nwater-like\n"
+    "$#   eosid      gama        e0        v0\n"
+    "         3       0.3     2.0E5      0.98\n"
+    "             0.0          -0.025           -0.05           -0.08           -0.12\n"
+    "           -0.17\n"
+    "             0.0          5.6E07          1.25E8          2.35E8          4.40E8\n"
+    "          8.00E8\n"
+    "             1.0             1.0             1.1             1.2             1.3\n"
+    "             1.4\n";
+
+TEST(KeywordEos, TabulatedIsReadEchoedAndRoundTrips) {
+  Read a = read_text(deck(kNull + kTabulated));
+  ASSERT_TRUE(a.ok) << a.messages();
+  const EosData& e = a.m.materials[0].eos;
+  EXPECT_EQ(e.form, 9);
+  EXPECT_EQ(e.c[30], 0.3);
+  EXPECT_EQ(e.e0, 2e5);
+  EXPECT_EQ(e.v0, 0.98);
+  EXPECT_EQ(e.c[5], -0.17);   // EV6
+  EXPECT_EQ(e.c[13], 2.35e8);  // C4
+  EXPECT_EQ(e.c[25], 1.4);    // T6
+  EXPECT_EQ(e.c[6], 0.0);     // EV7 blank
+  EXPECT_EQ(eos_table_points(e), 6);
+  std::ostringstream echo;
+  write_model_summary(echo, a.m);
+  EXPECT_NE(echo.str().find("tabulated (form 9, EOSID 3)"), std::string::npos) << echo.str();
+  EXPECT_NE(echo.str().find("EOS EV6"), std::string::npos) << echo.str();
+  EXPECT_EQ(echo.str().find("EOS EV7"), std::string::npos) << echo.str();  // past the table
+  round_trips(a);
+  // the fixed format: EOS type 9 in card 1 columns 21-25, 7 EOS cards after card 8
+  std::ostringstream fx;
+  write_fixed_deck(fx, a.m, nullptr);
+  EXPECT_NE(fx.str().find("\n       0.3     2.0e5      0.98\n"), std::string::npos) << fx.str();
+  EXPECT_NE(fx.str().find("\n           -0.17             0.0"), std::string::npos) << fx.str();
+  // refusals: EV not decreasing; a point after the table's last; V0 negative
+  auto refused = [&](const std::string& from, const std::string& to, const char* field) {
+    std::string t = kTabulated;
+    ASSERT_NE(t.find(from), std::string::npos) << from;
+    t.replace(t.find(from), from.size(), to);
+    Read r = read_text(deck(kNull + t));
+    EXPECT_FALSE(r.ok);
+    EXPECT_EQ(r.d.count(1003), 1) << r.messages();
+    EXPECT_NE(r.messages().find(field), std::string::npos) << r.messages();
+  };
+  refused("          -0.025", "           0.025", "EV2");
+  refused("           -0.17\n", "           -0.17            0.01\n", "EV7");
+  refused("      0.98\n", "     -0.98\n", "V0");
+}
+
 TEST(KeywordEos, RefusalsNameTheField) {
   auto count = [](const std::string& text, int msg) {
     Read r = read_text(text);
@@ -183,12 +235,12 @@ TEST(KeywordEos, RefusalsNameTheField) {
   const std::string elastic = "*MAT_ELASTIC\n         7    8930.0   117.0E9      0.35\n";
   EXPECT_EQ(count(deck(elastic + kGruneisen), 1102), 1);
   // a refused EOS keyword: the keyword (1301) and the part naming it (1102)
-  const std::string tab = "*EOS_TABULATED\n         3       1.0\n";
+  const std::string tab = "*EOS_JWL\n         3     3.7E11\n";
   EXPECT_EQ(count(deck(kNull + tab), 1102), 1);
-  // V0 other than 1, LCID, TEROD / CEROD, C <= 0
+  // V0 negative, LCID, TEROD / CEROD, C <= 0
   std::string v0 = kGruneisen;
-  v0.replace(v0.find("       0.0\n"), 11, "       0.9\n");
-  EXPECT_EQ(count(deck(kNull + v0), 1102), 1);
+  v0.replace(v0.find("       0.0\n"), 11, "      -0.9\n");
+  EXPECT_EQ(count(deck(kNull + v0), 1003), 1);
   std::string lcid = kGruneisen;
   lcid.replace(lcid.find("       0.0\n"), 11, "       0.0         0        12\n");
   EXPECT_EQ(count(deck(kNull + lcid), 1102), 1);

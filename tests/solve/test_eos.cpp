@@ -14,6 +14,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <set>
 #include <vector>
 
 #include "impact3d/material/eos.h"
@@ -40,7 +41,7 @@ MaterialData null_material(double rho, const EosData& eos) {
 EosData linear_polynomial(std::array<double, 7> c, double e0) {
   EosData e;
   e.form = 1;
-  e.c = c;
+  for (std::size_t j = 0; j < c.size(); ++j) e.c[j] = c[j];
   e.e0 = e0;
   return e;
 }
@@ -101,9 +102,10 @@ void run_cube(Model& m, F check, double& mu_max, double& mu_min) {
     const double mu = s.vol0[0] / s.vol[0] - 1;
     const double E = s.hist[std::size_t(h)];
     check(mu, pressure(s, 0), E);
-    // the element's energy is the work the books hold (stress and bulk viscosity), plus E0 V0
-    const double e0 = m.materials[0].eos.e0;
-    EXPECT_NEAR(E * s.vol0[0], e0 * s.vol0[0] + s.internal + s.bulk_viscous, 1e-9 * (std::fabs(e0 * s.vol0[0]) + std::fabs(s.internal) + 1e-12));
+    // the element's energy is the work the books hold (stress and bulk viscosity), plus E0
+    // times the reference volume (the initial volume / V0)
+    const double e0 = m.materials[0].eos.e0, vref = s.vol0[0] / m.materials[0].eos.v0;
+    EXPECT_NEAR(E * vref, e0 * vref + s.internal + s.bulk_viscous, 1e-9 * (std::fabs(e0 * vref) + std::fabs(s.internal) + 1e-12));
     mu_max = std::max(mu_max, mu), mu_min = std::min(mu_min, mu);
     ++cycles;
   }
@@ -174,6 +176,125 @@ TEST(EquationOfState, GruneisenOnTheHugoniotAndOffIt) {
   // the isentrope lies below the Hugoniot by a third-order amount: 0 < (p_H - p_s) / p_H < 2% at mu = 0.11
   EXPECT_GT(below, 0);
   EXPECT_LT(below, 0.02);
+}
+
+// *EOS_TABULATED (form 9): 7 points, EV1 = 0 down to -0.2, C convex, T falling, GAMMA 1.6.
+EosData tabulated(double v0, double e0) {
+  EosData e;
+  e.form = 9;
+  const double ev[7] = {0, -0.01, -0.03, -0.05, -0.08, -0.12, -0.2};
+  const double c[7] = {0, 0.9e9, 2.9e9, 5.2e9, 9.4e9, 16e9, 34e9};
+  const double t[7] = {1.0, 0.99, 0.96, 0.93, 0.9, 0.85, 0.8};
+  for (int j = 0; j < 7; ++j) e.c[std::size_t(j)] = ev[j], e.c[std::size_t(10 + j)] = c[j], e.c[std::size_t(20 + j)] = t[j];
+  e.c[30] = 1.6;
+  e.e0 = e0;
+  e.v0 = v0;
+  return e;
+}
+
+// The table's p = C(eps_v) + GAMMA T(eps_v) E, by an independent lookup (end segments extended).
+double tabulated_pressure(const EosData& e, double V, double E, int* segment = nullptr) {
+  const double ev = std::log(V);
+  int n = 1;
+  while (n < 10 && e.c[std::size_t(n)] < e.c[std::size_t(n - 1)]) ++n;
+  int i = 0;
+  for (int j = 0; j + 1 < n; ++j)
+    if (ev <= e.c[std::size_t(j)]) i = j;  // the last segment whose upper end is above ev
+  if (segment) *segment = ev > e.c[0] ? -1 : ev < e.c[std::size_t(n - 1)] ? n - 1 : i;
+  auto lerp = [&](int off) {
+    const double x0 = e.c[std::size_t(i)], x1 = e.c[std::size_t(i + 1)];
+    const double y0 = e.c[std::size_t(off + i)], y1 = e.c[std::size_t(off + i + 1)];
+    return y0 + (y1 - y0) * (ev - x0) / (x1 - x0);
+  };
+  return lerp(10) + e.c[30] * lerp(20) * E;
+}
+
+TEST(EquationOfState, TabulatedLookupAndSlopes) {
+  // the coefficients at points, between them and beyond both ends, and a' b' against differences
+  const EosData e = tabulated(1, 0);
+  MaterialConstants m;
+  m.rho = 1000;
+  derive_eos_constants(e, m);
+  EXPECT_EQ(m.eos_form, 9);
+  EXPECT_NEAR(m.K, 0.9e9 / 0.01, 1e-6);  // -dC/d eps_v at V = 1 (p0 = 0)
+  double worst = 0, worst_slope = 0;
+  for (double V : {1.03, 1.0, 0.995, std::exp(-0.01), 0.97, std::exp(-0.05), 0.93, 0.9, 0.85, std::exp(-0.2), 0.75}) {
+    const double mu = 1 / V - 1, E = 3e8;
+    double a, b, da, db;
+    calc_eos_coefficients(m, mu, a, b, da, db);
+    const double want = tabulated_pressure(e, V, E);
+    worst = std::max(worst, std::fabs(a + b * E - want) / std::fabs(want));
+    // slopes: central differences inside a segment (not at a point)
+    const double h = 1e-7 * (1 + mu);
+    double a1, b1, a2, b2, x;
+    calc_eos_coefficients(m, mu + h, a1, b1, x, x);
+    calc_eos_coefficients(m, mu - h, a2, b2, x, x);
+    int seg_hi, seg_lo;
+    tabulated_pressure(e, 1 / (1 + mu + h), 0, &seg_hi);
+    tabulated_pressure(e, 1 / (1 + mu - h), 0, &seg_lo);
+    if (seg_hi == seg_lo) {
+      worst_slope = std::max(worst_slope, std::fabs((a1 - a2) / (2 * h) - da) / std::fabs(da));
+      worst_slope = std::max(worst_slope, std::fabs((b1 - b2) / (2 * h) - db) / std::max(std::fabs(db), 1e-3));
+    }
+  }
+  std::printf("tabulated EOS: worst |p - table| / p %.2e, slopes %.2e\n", worst, worst_slope);
+  EXPECT_LT(worst, 1e-13);
+  EXPECT_LT(worst_slope, 1e-6);
+}
+
+TEST(EquationOfState, TabulatedIsTheTableOfTheSolidsVolumeAndEnergy) {
+  // squeezed to mu = 0.111 (eps_v = -0.105: 5 segments) and stretched to eps_v = +0.047 (beyond
+  // EV1: the first segment extended); E0 = 1e8 and GAMMA T E
+  for (double v0 : {1.0, 0.96}) {
+    const EosData e = tabulated(v0, 1e8);
+    Model m = squeezed_cube(null_material(1000, e), 10, 10e-6);
+    double worst = 0, mu_max = 0, mu_min = 0;
+    std::set<int> segments;
+    run_cube(m, [&](double mu, double p, double E) {
+      const double V = v0 / (1 + mu);  // the EOS's relative volume
+      int seg;
+      const double want = tabulated_pressure(e, V, E, &seg);
+      segments.insert(seg);
+      worst = std::max(worst, std::fabs(p - want) / std::max(std::fabs(want), 1e6));
+    }, mu_max, mu_min);
+    // the initial pressure: the table at V0 with E0
+    Engine eng(m);
+    ASSERT_EQ(eng.initialize(), StepStatus::ok);
+    const double p0 = pressure(eng.state(), 0), p0_want = tabulated_pressure(e, v0, 1e8);
+    std::printf("tabulated EOS, V0 = %.2f: eps_v %.4f .. %.4f, %zu segments (-1: beyond EV1), worst |p - table| / p %.2e; "
+                "p0 %.6e (table %.6e)\n",
+                v0, std::log(v0 / (1 + mu_max)), std::log(v0 / (1 + mu_min)), segments.size(), worst, p0, p0_want);
+    EXPECT_LT(worst, 1e-12);
+    EXPECT_NEAR(p0, p0_want, 1e-15 * std::fabs(p0_want) + 1e-9);
+    EXPECT_GE(segments.size(), 5u);
+    EXPECT_TRUE(segments.count(-1));
+    if (v0 != 1) {
+      EXPECT_GT(p0, 1e9);  // precompressed: eps_v = ln 0.96 = -0.041
+    }
+  }
+}
+
+TEST(EquationOfState, InitialRelativeVolumeShiftsTheLinearPolynomial) {
+  // V0 = 0.9: the solid starts at mu = 1/0.9 - 1 = 0.111 (p0 = C1 mu0), its mass stays RO V
+  const std::array<double, 7> c = {0, 2.2e9, 0, 0, 0, 0, 0};
+  EosData e = linear_polynomial(c, 0);
+  e.v0 = 0.9;
+  Model m = squeezed_cube(null_material(1000, e), 10, 10e-6);
+  double worst = 0, mu_max = 0, mu_min = 0;
+  run_cube(m, [&](double mu, double p, double) {
+    const double V = 0.9 / (1 + mu), want = c[1] * (1 / V - 1);
+    worst = std::max(worst, std::fabs(p - want) / want);
+  }, mu_max, mu_min);
+  Engine eng(m);
+  ASSERT_EQ(eng.initialize(), StepStatus::ok);
+  const State& s = eng.state();
+  std::printf("linear polynomial, V0 = 0.9: p0 %.6e (C1 (1/V0 - 1) = %.6e), worst |p - C1 (V0^-1 V - 1)| / p %.2e\n",
+              pressure(s, 0), c[1] / 9, worst);
+  EXPECT_NEAR(pressure(s, 0), c[1] * (1 / 0.9 - 1), 1e-15 * c[1]);
+  EXPECT_LT(worst, 1e-12);
+  EXPECT_NEAR(s.mass_e[0], 1000 * 1e-9, 1e-21);  // RO times the initial volume
+  // the sound speed: sqrt((1 + mu0) C1 / rho0) with the actual density (mass / volume)
+  EXPECT_NEAR(s.mats[0].K, c[1] / 0.9, 1e-6 * c[1]);
 }
 
 TEST(EquationOfState, JohnsonCookTakesItsPressureFromTheEos) {
