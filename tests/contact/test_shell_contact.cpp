@@ -18,6 +18,7 @@
 #include "common/messages.h"
 #include "impact3d/contact/contact_kernels.h"
 #include "impact3d/input/deck_reader.h"
+#include "impact3d/input/deck_writer.h"
 #include "impact3d/solve/engine.h"
 #include "../support/box_mesh.h"
 
@@ -58,8 +59,9 @@ struct DeckBuilder {
     parts << (rigid ? "*MAT_RIGID\n" : "*MAT_ELASTIC\n") << ifld(pid, 10) << fld(kRho, 10) << fld(kE, 10) << fld(kNu, 10) << "\n";
   }
   // nx x ny shells over [x0, x0 + lx] x [y0, y0 + ly] at height z
-  Body plate(int pid, bool rigid, double t, double x0, double y0, double z, double lx, double ly, int nx, int ny) {
-    part(pid, true, rigid, t);
+  Body plate(int pid, bool rigid, double t, double x0, double y0, double z, double lx, double ly, int nx, int ny,
+             bool new_part = true) {
+    if (new_part) part(pid, true, rigid, t);
     Body b{nid, 0, pid};
     const int base = nid + 1;
     for (int j = 0; j <= ny; ++j)
@@ -93,16 +95,18 @@ struct DeckBuilder {
     b.last = nid;
     return b;
   }
-  // initial velocity of a body's nodes (a node set numbered after the part)
+  // initial velocity of a body's nodes (through a node set 101, 102, ...)
+  int nsets = 0;
   void velocity(const Body& b, double vx, double vy, double vz) {
-    extra << "*SET_NODE_LIST\n" << ifld(100 + b.pid, 10) << "\n";
+    const int sid = 100 + ++nsets;
+    extra << "*SET_NODE_LIST\n" << ifld(sid, 10) << "\n";
     int c = 0;
     for (int n = b.first + 1; n <= b.last; ++n) {
       extra << ifld(n, 10);
       if (++c % 8 == 0) extra << "\n";
     }
     if (c % 8) extra << "\n";
-    extra << "*INITIAL_VELOCITY\n" << ifld(100 + b.pid, 10) << "\n" << fld(vx, 10) << fld(vy, 10) << fld(vz, 10) << "\n";
+    extra << "*INITIAL_VELOCITY\n" << ifld(sid, 10) << "\n" << fld(vx, 10) << fld(vy, 10) << fld(vz, 10) << "\n";
   }
   std::string text(double end_time, const std::string& contact) const {
     std::ostringstream d;
@@ -368,4 +372,199 @@ TEST(ShellContact, ElasticBlockOnElasticShellPlateConservesMomentumAndEnergy) {
       EXPECT_TRUE(x1 == x2) << "1 and 2 threads differ";
     }
   }
+}
+
+// ---- single surface and automatic nodes to surface
+
+namespace {
+
+double mean_z(const State& s, const DeckBuilder::Body& b) {
+  double z = 0;
+  for (int n = b.first; n < b.last; ++n) z += s.z[std::size_t(n)];
+  return z / (b.last - b.first);
+}
+
+// Two single 50 mm shells (t = 2 mm, elastic steel), one above the other 2.1 mm apart
+// (mid-surfaces), nodes over nodes, meeting at +-2 m/s; a 1 mm elastic cube far away sets the
+// step.  `contact` names the contact; `k_per_node` is how many node springs act per node.
+struct TwoShells {
+  DeckBuilder d;
+  DeckBuilder::Body a, b, timer;
+  static constexpr double t = 0.002, L = 0.05, v0 = 2, sfsa = 0.1;
+  explicit TwoShells(bool same_part) {
+    a = d.plate(1, false, t, 0, 0, 0, L, L, 1, 1);
+    b = d.plate(same_part ? 1 : 2, false, t, 0, 0, t + 1e-4, L, L, 1, 1, !same_part);
+    timer = d.block(3, false, 1, 1, 1, 0.001, 1);
+    d.velocity(a, 0, 0, v0);
+    d.velocity(b, 0, 0, -v0);
+  }
+};
+
+// The closed form of two equal free plates meeting through n_springs node springs of the shell
+// stiffness k = mu K A / d: mu_red = M / 2, contact pi sqrt(mu_red / K), largest penetration of
+// the offsets (t/2 + t/2) 2 v0 sqrt(mu_red / K), velocities reversed.
+void check_two_shells(const std::string& contact, bool same_part, int n_springs, const char* what) {
+  TwoShells ts(same_part);
+  Read r = read_text(ts.d.text(8e-5, contact));
+  ASSERT_TRUE(r.ok) << r.messages();
+  Engine e(r.m);
+  ASSERT_EQ(e.initialize(), StepStatus::ok);
+  State& s = e.state();
+  const double M = kRho * TwoShells::t * TwoShells::L * TwoShells::L;
+  EXPECT_NEAR(body_mass(s, ts.a), M, 1e-12 * M);
+  const double k = TwoShells::sfsa * 0.1 * kBulk * TwoShells::L * TwoShells::L / (TwoShells::L * std::sqrt(2.0));
+  const double K = n_springs * k, mu = M / 2;
+  const double T = M_PI * std::sqrt(mu / K), pmax = 2 * TwoShells::v0 * std::sqrt(mu / K);
+  const double p0 = body_momentum(s, ts.a, 2) + body_momentum(s, ts.b, 2);
+  double gap_min = 1;
+  Trace tr;
+  StepStatus st = StepStatus::ok;
+  while (st == StepStatus::ok) {
+    const double dt_before = s.dt_half;
+    const int cycle = s.cycle;
+    st = e.step();
+    const double dt_n = cycle == 0 ? 0.5 * s.dt_half : 0.5 * (dt_before + s.dt_half);
+    const double f = std::abs(e.interface_forces()[0][2]);
+    const double pen = e.contact().max_penetration();
+    if (pen > 0) {  // (a single surface's interface force is the sum over its nodes: ~0)
+      tr.contact_time += dt_n;
+      tr.k_min = std::min(tr.k_min, f / pen);
+      tr.k_max = std::max(tr.k_max, f / pen);
+    }
+    tr.max_pen = std::max(tr.max_pen, pen);
+    tr.ratio_min = std::min(tr.ratio_min, s.energy_ratio());
+    tr.ratio_max = std::max(tr.ratio_max, s.energy_ratio());
+    gap_min = std::min(gap_min, mean_z(s, ts.b) - mean_z(s, ts.a));
+  }
+  ASSERT_EQ(st, StepStatus::finished);
+  const double va = body_momentum(s, ts.a, 2) / M, vb = body_momentum(s, ts.b, 2) / M;
+  std::printf("%s: contact %.4g us (closed form %.4g, dt %.3g us), max penetration %.4g um (closed form %.4g), "
+              "smallest mid-surface gap %.5g mm (t = %.3g mm), velocities after %.5g / %.5g m/s, energy ratio %.7f..%.7f\n",
+              what, tr.contact_time * 1e6, T * 1e6, s.dt_half * 1e6, tr.max_pen * 1e6, pmax * 1e6, gap_min * 1e3,
+              TwoShells::t * 1e3, va, vb, tr.ratio_min, tr.ratio_max);
+  EXPECT_NEAR(tr.contact_time, T, 2 * s.dt_half);
+  EXPECT_NEAR(tr.max_pen / pmax, 1.0, 0.01);
+  EXPECT_NEAR(gap_min, TwoShells::t - pmax, 0.01 * pmax);  // they stop at the thickness gap
+  EXPECT_NEAR(va, -TwoShells::v0, 0.005 * TwoShells::v0);
+  EXPECT_NEAR(vb, TwoShells::v0, 0.005 * TwoShells::v0);
+  EXPECT_NEAR(body_momentum(s, ts.a, 2) + body_momentum(s, ts.b, 2), p0, 1e-12 * M * TwoShells::v0);
+  // the interface force on side A is K p (single surface: the force on all its nodes, ~0)
+  if (!same_part) {
+    EXPECT_NEAR(tr.k_min / K, 1.0, 1e-6);
+    EXPECT_NEAR(tr.k_max / K, 1.0, 1e-6);
+  }
+  EXPECT_GT(tr.ratio_min, 1 - 1e-3);
+  EXPECT_LT(tr.ratio_max, 1 + 1e-3);
+}
+
+}  // namespace
+
+// *CONTACT_AUTOMATIC_SINGLE_SURFACE, SURFA = 0 (every part): each node against the other
+// shell (node offsets t/2 + segment offset t/2) both ways, 8 springs of k.
+TEST(ShellContact, SingleSurfaceStopsTwoShellsOfOnePartAtTheThicknessGap) {
+  check_two_shells("*CONTACT_AUTOMATIC_SINGLE_SURFACE\n         0\n       0.0\n       0.1       0.1\n", true, 8,
+                   "single surface, two shells of one part");
+}
+
+// *CONTACT_AUTOMATIC_NODES_TO_SURFACE, SURFA a node set (the lower shell's nodes), SURFB the
+// upper shell's part: one pass, 4 springs of k.
+TEST(ShellContact, AutomaticNodesToSurfaceIsOneWay) {
+  const std::string contact =
+      "*SET_NODE_LIST\n        50\n         1         2         3         4\n" +
+      contact_card("AUTOMATIC_NODES_TO_SURFACE", 50, 2, TwoShells::sfsa, 4, 3);
+  check_two_shells(contact, false, 4, "automatic nodes to surface");
+}
+
+// Two free 8 x 8 plates of one part (80 mm, t = 2 mm, elastic), the upper one shifted by half a
+// shell in x and y so that nodes land inside the other's segments, meeting at +-2 m/s under a
+// single-surface contact on a part set: the flat plates find no contact of their own (their
+// shells' neighbours are excluded, the others are farther than the offsets), they stop at the
+// thickness gap and rebound; momentum conserved, energy balanced with the contact energy
+// booked, 1 and 2 threads the same bits.
+TEST(ShellContact, SingleSurfacePlatesOfOnePartRebound) {
+  DeckBuilder d;
+  constexpr double t = 0.002, v0 = 2;
+  const auto a = d.plate(1, false, t, 0, 0, 0, 0.08, 0.08, 8, 8);
+  const auto b = d.plate(1, false, t, 0.005, 0.005, t + 2e-4, 0.08, 0.08, 8, 8, false);
+  d.velocity(a, 0, 0, v0);
+  d.velocity(b, 0, 0, -v0);
+  const std::string contact = "*SET_PART_LIST\n        60\n         1\n"
+                              "*CONTACT_AUTOMATIC_SINGLE_SURFACE\n        60         0         2\n       0.0\n       0.1       0.1\n";
+  Read r = read_text(d.text(1.5e-4, contact));
+  ASSERT_TRUE(r.ok) << r.messages();
+  ASSERT_EQ(r.m.interfaces.size(), 1u);
+  EXPECT_EQ(r.m.interfaces[0].type, 4);
+  EXPECT_EQ(r.m.interfaces[0].slave.size(), 128u);
+  EXPECT_TRUE(r.m.interfaces[0].master.empty());
+  std::vector<double> first;
+  for (int threads : {1, 2}) {
+    test_support::ScopedThreads th(threads);
+    Engine e(r.m);
+    ASSERT_EQ(e.initialize(), StepStatus::ok);
+    State& s = e.state();
+    const double pa0 = body_momentum(s, a, 2), pb0 = body_momentum(s, b, 2);
+    double gap_min = 1, ratio_min = 1, ratio_max = 1, max_pen = 0, first_contact = -1, dt_before_first = 0;
+    StepStatus st = StepStatus::ok;
+    while (st == StepStatus::ok) {
+      const double time = s.time, dt_before = s.dt_half;
+      st = e.step();
+      const double pen = e.contact().max_penetration();
+      if (pen > 0 && first_contact < 0) first_contact = time, dt_before_first = dt_before;
+      max_pen = std::max(max_pen, pen);
+      gap_min = std::min(gap_min, mean_z(s, b) - mean_z(s, a));
+      ratio_min = std::min(ratio_min, s.energy_ratio());
+      ratio_max = std::max(ratio_max, s.energy_ratio());
+    }
+    ASSERT_EQ(st, StepStatus::finished);
+    const double pa1 = body_momentum(s, a, 2), pb1 = body_momentum(s, b, 2);
+    std::vector<double> bits = s.z;
+    bits.insert(bits.end(), s.vz.begin(), s.vz.end());
+    bits.push_back(s.contact);
+    if (threads == 1) {
+      std::printf("single surface, two 8 x 8 plates of one part: first contact %.4g us (gap closes at %.4g us), max "
+                  "penetration %.4g um, smallest mean gap %.5g mm (t %.3g mm), momentum %.6g %.6g -> %.6g %.6g N s, "
+                  "contact energy %.4g J, energy ratio %.6f..%.6f\n",
+                  first_contact * 1e6, 2e-4 / (2 * v0) * 1e6, max_pen * 1e6, gap_min * 1e3, t * 1e3, pa0, pb0, pa1, pb1,
+                  s.contact, ratio_min, ratio_max);
+      // no contact before the offsets meet (the flat plates do not touch themselves)
+      // (found at the first x^n past the meeting time: within the step before)
+      EXPECT_GE(first_contact, 2e-4 / (2 * v0));
+      EXPECT_LT(first_contact - dt_before_first, 2e-4 / (2 * v0));
+      EXPECT_GT(gap_min, t - 0.1 * t / 2);
+      EXPECT_LT(max_pen, 0.1 * t / 2);
+      EXPECT_NEAR(pa1 + pb1, pa0 + pb0, 1e-12 * std::abs(pa0));
+      EXPECT_LT(pa1, -0.8 * pa0);  // rebound
+      EXPECT_GT(ratio_min, 0.99);
+      EXPECT_LT(ratio_max, 1.01);
+      first = bits;
+    } else {
+      EXPECT_TRUE(bits == first) << "1 and 2 threads differ";
+    }
+  }
+}
+
+// The single-surface card: SURFATYP 4 refused by name (1104), a side B warned (2006) and
+// ignored; the converter writes *CONTACT_AUTOMATIC_SINGLE_SURFACE with a segment set and reads
+// back the same Model.
+TEST(ShellContact, SingleSurfaceCardChecksAndRoundTrip) {
+  TwoShells ts(true);
+  Read bad = read_text(ts.d.text(8e-5, "*CONTACT_AUTOMATIC_SINGLE_SURFACE\n         1         0         4\n"));
+  EXPECT_FALSE(bad.ok);
+  EXPECT_EQ(bad.d.count(1104), 1) << bad.messages();
+  EXPECT_NE(bad.messages().find("SURFATYP"), std::string::npos) << bad.messages();
+  Read warned = read_text(ts.d.text(8e-5, "*CONTACT_AUTOMATIC_SINGLE_SURFACE\n         1         1         3         3\n"));
+  ASSERT_TRUE(warned.ok) << warned.messages();
+  EXPECT_EQ(warned.d.count(2006), 1) << warned.messages();
+  ASSERT_EQ(warned.m.interfaces.size(), 1u);
+  EXPECT_EQ(warned.m.interfaces[0].slave.size(), 2u);  // part 1's two shells
+  EXPECT_TRUE(warned.m.interfaces[0].master.empty());
+  std::ostringstream os;
+  write_keyword_deck(os, warned.m);
+  Read back = read_text(os.str());
+  ASSERT_TRUE(back.ok) << back.messages() << os.str();
+  const auto diffs = model_differences(warned.m, back.m);
+  EXPECT_TRUE(diffs.empty()) << (diffs.empty() ? "" : diffs[0]);
+  ASSERT_EQ(back.m.interfaces.size(), 1u);
+  EXPECT_EQ(back.m.interfaces[0].type, 4);
+  EXPECT_EQ(back.m.interfaces[0].slave, warned.m.interfaces[0].slave);
 }
