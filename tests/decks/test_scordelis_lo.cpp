@@ -1,0 +1,68 @@
+// The Scordelis-Lo roof (MacNeal-Harder 1985 shell benchmark), decks/keyword/scordelis_lo_roof.k:
+// a quarter model of 16 x 16 Belytschko-Tsay shells under self weight, brought to the static
+// answer by dynamic relaxation (*DAMPING_GLOBAL).  Reference: vertical displacement 0.3024 at
+// the middle of the free edge.  README "Shells" states what is measured and what is not
+// understood: IMPACT-3D's one-point BT shells converge with refinement to about 1.11 x the
+// reference at this load (8 x 8 1.158, 16 x 16 1.114, 32 x 32 1.107 at QM 0.1) and to about
+// 1.47 x in the linear regime (1% of the load); plate bending, twist and a curved strip agree
+// with their closed forms, so the gap is an open question of the element, not of the mesh.
+// This test checks
+//   * the static state is reached: the displacement changes by less than 1e-4 of itself over the
+//     last tenth of the run, and the kinetic energy (rotations are not damped) is below 1% of the
+//     internal energy;
+//   * the energy balance: energy ratio 1 to 1e-3 (gravity work = strain + damped + kinetic);
+//   * the work of the gravity loads on the final displacements, sum m g w, is 2 U (Clapeyron) to
+//     within the 10% the geometric stiffening allows (measured 1.082);
+//   * the free-edge displacement: above 0.3024 and within 12% of it (the stated gap), and within
+//     0.5% of this build's 0.3368 (a regression check of the documented number).
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "impact3d/input/deck_reader.h"
+#include "impact3d/solve/engine.h"
+
+using namespace impact3d;
+
+TEST(ScordelisLoRoof, DynamicRelaxationReachesTheBenchmarkWithinTheBtError) {
+  const std::string path = std::string(IMPACT3D_SOURCE_DIR) + "/decks/keyword/scordelis_lo_roof.k";
+  Model m;
+  Diagnostics d;
+  ASSERT_TRUE(read_and_check_deck(path, m, d));
+  const int n = 16;
+  ASSERT_EQ(m.num_shells(), n * n);
+  const int node = n * (n + 1);  // 0-based index of node 1 + n (n + 1): x = 0, 40 degrees
+  ASSERT_NEAR(m.x[std::size_t(node)], 0.0, 1e-12);
+  ASSERT_NEAR(std::atan2(m.y[std::size_t(node)], m.z[std::size_t(node)]), 40.0 * M_PI / 180.0, 1e-9);
+  Engine eng(m);
+  ASSERT_EQ(eng.initialize(), StepStatus::ok);
+  const State& s = eng.state();
+  double w90 = 0;
+  StepStatus st = StepStatus::ok;
+  while (st == StepStatus::ok) {
+    st = eng.step();
+    if (w90 == 0 && s.time >= 0.9 * m.control.end_time) w90 = s.z[std::size_t(node)] - m.z[std::size_t(node)];
+  }
+  ASSERT_EQ(st, StepStatus::finished);
+  const double w = -(s.z[std::size_t(node)] - m.z[std::size_t(node)]);
+  // static state reached
+  EXPECT_LT(std::fabs(w + w90), 1e-4 * w) << "w " << w << " at 0.9 T " << -w90;
+  EXPECT_LT(s.kinetic, 1e-2 * s.internal);
+  EXPECT_NEAR(s.energy_ratio(), 1.0, 1e-3);
+  // Clapeyron: the loads' work on the final displacements = twice the strain energy
+  double load_work = 0;
+  for (int i = 0; i < m.num_nodes(); ++i) load_work += s.mass[std::size_t(i)] * 1.0 * -(s.z[std::size_t(i)] - m.z[std::size_t(i)]);
+  const double strain_energy = s.internal + s.hourglass;
+  const double clapeyron = load_work / (2 * strain_energy);
+  std::printf("Scordelis-Lo roof: sum m g w / 2U = %.4f, energy ratio %.6f\n", clapeyron, s.energy_ratio());
+  EXPECT_GT(clapeyron, 1.0);   // stiffening: the loads did more than twice the stored energy's work
+  EXPECT_LT(clapeyron, 1.10);
+  // the benchmark
+  const double ref = 0.3024;
+  std::printf("Scordelis-Lo roof 16 x 16: w = %.5f, %.4f x the reference 0.3024\n", w, w / ref);
+  EXPECT_GT(w, ref);
+  EXPECT_LT(w, 1.12 * ref);
+  EXPECT_NEAR(w, 0.3368, 0.005 * 0.3368);
+}
