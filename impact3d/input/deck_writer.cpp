@@ -165,7 +165,7 @@ class KeywordWriter {
     os_ << (shell ? "*DATABASE_HISTORY_SHELL\n$#     eid\n" : solid ? "*DATABASE_HISTORY_SOLID\n$#     eid\n" : "*DATABASE_HISTORY_NODE\n$#     nid\n");
     std::vector<KField> f;
     for (int n = b[0]; n <= b[1]; ++n) {
-      f.push_back(I(solid ? eid(n - 1) : nid(n - 1)));
+      f.push_back(I(shell ? m_.shell_id(n - 1) : solid ? eid(n - 1) : nid(n - 1)));
       if (f.size() == 8) { os_ << kcard(f) << "\n"; f.clear(); }
     }
     if (!f.empty()) os_ << kcard(f) << "\n";
@@ -681,20 +681,6 @@ void write_fixed_deck(std::ostream& os, const Model& m, std::vector<std::string>
       const std::string text = line.str();
       os << (text.find_first_not_of(' ') == std::string::npos ? std::string() : text) << "\n";
     }
-    if (const EosForm* f = find_eos_form(md.eos.form)) {  // the EOS cards (material/eos.h)
-      for (int c = 0; c < int(f->widths.size()); ++c) {
-        FixedLine line = L(what + " EOS card " + std::to_string(c + 1));
-        for (const EosParam& p : f->params)
-          if (p.fcard == c && p.slot >= 0) line.r(1 + w * p.ffield, w + w * p.ffield, eos_value(md.eos, p));
-        os << line.str() << "\n";
-      }
-    }
-  }
-  os << "*----- NODES\n";
-        const int w = f->widths[std::size_t(c)];
-  static const int rot_code[8] = {0, 1, 2, 4, 3, 6, 5, 7};  // bits (0 rx, 1 ry, 2 rz) -> code 0-7
-  for (int n = 0; n < m.num_nodes(); ++n) {
-    const int rc = std::size_t(n) < m.rot_bc.size() ? rot_code[m.rot_bc[std::size_t(n)] & 7] : 0;
     if (md.shell) {  // the shell section card (IMPACT-3D choice): SHRF, NIP, QR, T1-T4
       const ShellSectionData& sec = md.shell_section;
       FixedLine line = L(what + " shell section card");
@@ -702,6 +688,20 @@ void write_fixed_deck(std::ostream& os, const Model& m, std::vector<std::string>
       for (int j = 0; j < 4; ++j) line.r(31 + 10 * j, 40 + 10 * j, sec.t[std::size_t(j)]);
       os << line.str() << "\n";
     }
+    if (const EosForm* f = find_eos_form(md.eos.form)) {  // the EOS cards (material/eos.h)
+      for (int c = 0; c < int(f->widths.size()); ++c) {
+        FixedLine line = L(what + " EOS card " + std::to_string(c + 1));
+        const int w = f->widths[std::size_t(c)];
+        for (const EosParam& p : f->params)
+          if (p.fcard == c && p.slot >= 0) line.r(1 + w * p.ffield, w + w * p.ffield, eos_value(md.eos, p));
+        os << line.str() << "\n";
+      }
+    }
+  }
+  os << "*----- NODES\n";
+  static const int rot_code[8] = {0, 1, 2, 4, 3, 6, 5, 7};  // bits (0 rx, 1 ry, 2 rz) -> code 0-7
+  for (int n = 0; n < m.num_nodes(); ++n) {
+    const int rc = std::size_t(n) < m.rot_bc.size() ? rot_code[m.rot_bc[std::size_t(n)] & 7] : 0;
     os << L("node " + std::to_string(n + 1)).i(1, 8, n + 1).i(9, 13, m.bc[std::size_t(n)]).r(14, 33, m.x[std::size_t(n)])
               .r(34, 53, m.y[std::size_t(n)]).r(54, 73, m.z[std::size_t(n)]).i(74, 78, rc).str() << "\n";
   }
@@ -712,17 +712,6 @@ void write_fixed_deck(std::ostream& os, const Model& m, std::vector<std::string>
     for (int j = 0; j < 8; ++j) c.i(14 + 8 * j, 21 + 8 * j, m.hex_nodes[std::size_t(e)][std::size_t(j)] + 1);
     os << c.str() << "\n";
   }
-  os << "*----- TIME-HISTORY BLOCKS\n";
-  for (const auto& b : m.node_th_blocks) os << L("node time-history block").i(1, 8, b[0]).i(9, 16, b[1]).str() << "\n";
-  for (const auto& b : m.solid_th_blocks) os << L("solid time-history block").i(1, 8, b[0]).i(9, 16, b[1]).str() << "\n";
-  if (!m.load_curves.empty()) os << "*----- LOAD CURVES\n";
-  for (std::size_t c = 0; c < m.load_curves.size(); ++c) {
-    const LoadCurve& lc = m.load_curves[c];
-    os << L("load curve").i(1, 5, int(c) + 1).i(6, 10, int(lc.t.size())).str() << "\n";
-    for (std::size_t p = 0; p < lc.t.size(); ++p) os << L("load curve point").r(1, 10, lc.t[p]).r(11, 20, lc.f[p]).str() << "\n";
-  }
-  if (!m.nodal_loads.empty()) os << "*----- NODAL LOADS: node, direction, load curve, scale\n";
-  for (const NodalLoad& l : m.nodal_loads) {
   if (m.num_shells() > 0) os << "*----- SHELL ELEMENTS: id, material, n1-n4; thicknesses t1-t4\n";
   for (int e = 0; e < m.num_shells(); ++e) {
     FixedLine c = L("shell " + std::to_string(e + 1));
@@ -733,10 +722,21 @@ void write_fixed_deck(std::ostream& os, const Model& m, std::vector<std::string>
     for (int j = 0; j < 4; ++j) t.r(1 + 10 * j, 10 + 10 * j, m.shell_thickness[std::size_t(e)][std::size_t(j)]);
     os << t.str() << "\n";
   }
+  os << "*----- TIME-HISTORY BLOCKS\n";
+  for (const auto& b : m.node_th_blocks) os << L("node time-history block").i(1, 8, b[0]).i(9, 16, b[1]).str() << "\n";
+  for (const auto& b : m.solid_th_blocks) os << L("solid time-history block").i(1, 8, b[0]).i(9, 16, b[1]).str() << "\n";
+  for (const auto& b : m.shell_th_blocks) os << L("shell time-history block").i(1, 8, b[0]).i(9, 16, b[1]).str() << "\n";
+  if (!m.load_curves.empty()) os << "*----- LOAD CURVES\n";
+  for (std::size_t c = 0; c < m.load_curves.size(); ++c) {
+    const LoadCurve& lc = m.load_curves[c];
+    os << L("load curve").i(1, 5, int(c) + 1).i(6, 10, int(lc.t.size())).str() << "\n";
+    for (std::size_t p = 0; p < lc.t.size(); ++p) os << L("load curve point").r(1, 10, lc.t[p]).r(11, 20, lc.f[p]).str() << "\n";
+  }
+  if (!m.nodal_loads.empty()) os << "*----- NODAL LOADS: node, direction, load curve, scale\n";
+  for (const NodalLoad& l : m.nodal_loads) {
     int d = 0;
     for (int q = 0; q < 3; ++q) if (l.dir[std::size_t(q)] == 1) d = q + 1;
     if (d == 0 && notes) notes->push_back("nodal load direction not along an axis: written as x");
-  for (const auto& b : m.shell_th_blocks) os << L("shell time-history block").i(1, 8, b[0]).i(9, 16, b[1]).str() << "\n";
     os << L("nodal load").i(1, 8, l.node + 1).i(9, 13, d == 0 ? 1 : d).i(14, 18, l.curve + 1).r(19, 28, l.scale).str() << "\n";
   }
   if (!m.pressure_loads.empty()) os << "*----- PRESSURE LOADS: load curve, n1-n4; multipliers, arrival time (71-80)\n";
@@ -981,6 +981,7 @@ std::vector<std::string> model_differences(const Model& a, const Model& b, int m
     N(w + "shell", x.shell, y.shell);
     N(w + "NIP", x.shell_section.nip, y.shell_section.nip);
     D(w + "SHRF", x.shell_section.shrf, y.shell_section.shrf);
+    for (int j = 0; j < 4; ++j) D(w + "section T" + std::to_string(j + 1), x.shell_section.t[std::size_t(j)], y.shell_section.t[std::size_t(j)]);
   }
   auto nonzero = [](const auto& v) {
     for (const auto& x : v)
@@ -992,10 +993,10 @@ std::vector<std::string> model_differences(const Model& a, const Model& b, int m
   D("rotary inertia scale", a.shell_rotary_scale, b.shell_rotary_scale);
   auto blocks = [&](const char* w, const std::vector<std::array<int, 2>>& x, const std::vector<std::array<int, 2>>& y) {
     if (x != y) diff(w, std::to_string(x.size()) + " block(s)", std::to_string(y.size()) + " block(s), or other ranges");
-    for (int j = 0; j < 4; ++j) D(w + "section T" + std::to_string(j + 1), x.shell_section.t[std::size_t(j)], y.shell_section.t[std::size_t(j)]);
   };
   blocks("node time-history blocks", a.node_th_blocks, b.node_th_blocks);
   blocks("solid time-history blocks", a.solid_th_blocks, b.solid_th_blocks);
+  blocks("shell time-history blocks", a.shell_th_blocks, b.shell_th_blocks);
   N("load curves", long(a.load_curves.size()), long(b.load_curves.size()));
   for (std::size_t c = 0; c < std::min(a.load_curves.size(), b.load_curves.size()); ++c) {
     const LoadCurve &x = a.load_curves[c], &y = b.load_curves[c];
@@ -1007,7 +1008,6 @@ std::vector<std::string> model_differences(const Model& a, const Model& b, int m
     const StoneWall &x = a.walls[w], &y = b.walls[w];
     std::string s = "wall " + std::to_string(w + 1) + " ";
     for (int q = 0; q < 3; ++q) {
-  blocks("shell time-history blocks", a.shell_th_blocks, b.shell_th_blocks);
       D(s + "tail", x.tail[std::size_t(q)], y.tail[std::size_t(q)]);
       D(s + "head", x.head[std::size_t(q)], y.head[std::size_t(q)]);
     }

@@ -536,8 +536,8 @@ struct RLoad {            // one load or prescribed-motion card, resolved after 
 };
 struct RHistory {
   bool solid = false;
-  bool sets = false;  // *DATABASE_HISTORY_NODE_SET / _SOLID_SET: the ids are set ids
   bool shell = false;  // *DATABASE_HISTORY_SHELL (_ID): shell ids
+  bool sets = false;  // *DATABASE_HISTORY_NODE_SET / _SOLID_SET: the ids are set ids
   std::vector<int> ids;
   std::vector<Ref> refs;
 };
@@ -2556,12 +2556,12 @@ bool is_ascii_database(const std::string& n) {
   void parse_history(const Block& b) {
     RHistory h;
     h.solid = b.name.rfind("DATABASE_HISTORY_SOLID", 0) == 0;
+    h.shell = b.name.rfind("DATABASE_HISTORY_SHELL", 0) == 0;
     h.sets = b.name.size() > 4 && b.name.compare(b.name.size() - 4, 4, "_SET") == 0;
     const bool with_heading = b.name.size() > 3 && b.name.compare(b.name.size() - 3, 3, "_ID") == 0;
     const char* field = h.sets ? "ID" : (h.solid || h.shell) ? "EID" : "NID";
     for (std::size_t k = 0; k < b.data.size(); ++k) {
       if (is_blank(b.data[k].line->text)) continue;
-    h.shell = b.name.rfind("DATABASE_HISTORY_SHELL", 0) == 0;
       KCard c = card(b, k, "", with_heading ? std::vector<int>{10, 70} : W(b, 8));
       for (int f = 0; f < (with_heading ? 1 : 8); ++f) {
         long long id = c.i(f, field);
