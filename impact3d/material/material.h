@@ -28,6 +28,9 @@ struct MaterialConstants {
   bool initially_elastic = false;  // the seed's fast path (type 3)
   double tdel = 0;         // a solid whose step falls below this is deleted (0 = never)
   int fail_history = -1;   // a solid whose history value of this index reaches 1 is deleted (damage)
+  // *MAT_NULL TEROD / CEROD: a solid whose volume ratio V/V0 exceeds vol_erode_hi or falls
+  // below vol_erode_lo is deleted (0: off)
+  double vol_erode_hi = 0, vol_erode_lo = 0;
   // *MAT_ADD_EROSION: the criteria in use (an unused one is +inf, -inf for MNPRES), NCS
   bool erosion = false;
   double er_mxpres = 0, er_mnpres = 0, er_sigp1 = 0, er_sigvm = 0, er_vol_hi = 0, er_vol_lo = 0, er_failtm = 0;

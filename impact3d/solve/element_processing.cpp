@@ -191,7 +191,9 @@ void store_hex_block(State& s, const GroupPass& gp, const int* elems, const bool
     for (int h = 0; h < gp.history; ++h) s.hist[hs * E + std::size_t(h)] = k.hist[h][l];
     s.vol[E] = k.v[l];
     bool fails = (mc.fail_strain > 0 && k.eps_p[l] >= mc.fail_strain) || (mc.tdel > 0 && k.dt[l] < mc.tdel) ||
-                 (mc.fail_history >= 0 && k.hist[mc.fail_history][l] >= 1.0);
+                 (mc.fail_history >= 0 && k.hist[mc.fail_history][l] >= 1.0) ||
+                 (mc.vol_erode_hi > 0 && k.v[l] / s.vol0[E] > mc.vol_erode_hi) ||
+                 (mc.vol_erode_lo > 0 && k.v[l] / s.vol0[E] < mc.vol_erode_lo);
     if (mc.erosion && !fails) {  // *MAT_ADD_EROSION
       const double sg[6] = {k.sig[0][l], k.sig[1][l], k.sig[2][l], k.sig[3][l], k.sig[4][l], k.sig[5][l]};
       double eps[3] = {0, 0, 0};
@@ -207,7 +209,7 @@ void store_hex_block(State& s, const GroupPass& gp, const int* elems, const bool
       fails = erosion_criteria_met(mc, sg, k.v[l] / s.vol0[E], gp.time, eps);
     }
     if (gp.dt > 0 && fails) {
-      // Failure (plastic strain, the step below TDEL, damage): the solid is deleted.  Its stress work up to now stays in the internal
+      // Failure (plastic strain, the step below TDEL, damage, relative volume): the solid is deleted.  Its stress work up to now stays in the internal
       // energy, its mass on the nodes; the books as for a stress and viscosity that are zero
       // from now on (trapezoid with a zero end): only the old stress and q did work.
       s.failed[E] = 2;

@@ -237,7 +237,7 @@ TEST(KeywordEos, RefusalsNameTheField) {
   // a refused EOS keyword: the keyword (1301) and the part naming it (1102)
   const std::string tab = "*EOS_JWL\n         3     3.7E11\n";
   EXPECT_EQ(count(deck(kNull + tab), 1102), 1);
-  // V0 negative, LCID, TEROD / CEROD, C <= 0
+  // V0 negative, LCID, TEROD below 1, C <= 0
   std::string v0 = kGruneisen;
   v0.replace(v0.find("       0.0\n"), 11, "      -0.9\n");
   EXPECT_EQ(count(deck(kNull + v0), 1003), 1);
@@ -245,8 +245,8 @@ TEST(KeywordEos, RefusalsNameTheField) {
   lcid.replace(lcid.find("       0.0\n"), 11, "       0.0         0        12\n");
   EXPECT_EQ(count(deck(kNull + lcid), 1102), 1);
   std::string terod = kNull;
-  terod.replace(terod.find("1.0E-3\n"), 7, "1.0E-3       1.2\n");
-  EXPECT_EQ(count(deck(terod + kGruneisen), 1102), 1);
+  terod.replace(terod.find("1.0E-3\n"), 7, "1.0E-3       0.8\n");  // TEROD must exceed 1
+  EXPECT_EQ(count(deck(terod + kGruneisen), 1003), 1);
   std::string c0 = kGruneisen;
   c0.replace(c0.find("    3940.0"), 10, "       0.0");
   EXPECT_GE(count(deck(kNull + c0), 1003), 1);

@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <functional>
 #include <sstream>
 #include <string>
@@ -19,6 +20,7 @@
 #include "impact3d/input/deck_reader.h"
 #include "impact3d/input/deck_writer.h"
 #include "impact3d/material/material.h"
+#include "impact3d/material/material_types.h"
 #include "impact3d/solve/engine.h"
 #include "tests/solve/test_models.h"
 
@@ -186,6 +188,45 @@ TEST(Erosion, StressVolumeAndTimeCriteria) {
   e.mxpres = 1;
   e.failtm = 4e-6;
   expect_erosion_matches(e, [](const double*, double, double t) { return t >= 4e-6; }, "EXCL");
+}
+
+// *MAT_NULL TEROD / CEROD: the struck bar of a null material (water-like: linear polynomial,
+// p = 2.2 GPa mu; sides on rollers: uniaxial strain) is deleted in the first cycle the plain run's V/V0 exceeds TEROD (stretched) or
+// falls below CEROD (squeezed), solid by solid; the other limit never acts.
+TEST(Erosion, NullMaterialErodesByRelativeVolume) {
+  auto null_bar = [](double v_top, double terod, double cerod) {
+    Model m = struck_bar(v_top);
+    MaterialData& md = m.materials[0];
+    md.type = 9;
+    set_param_defaults(md, material_type(9));
+    md.rho = 1000;
+    md.eos.form = 1;
+    md.eos.c[1] = 2.2e9;
+    param_value(md, *find_param(material_type(9), "TEROD")) = terod;
+    param_value(md, *find_param(material_type(9), "CEROD")) = cerod;
+    for (int n = 0; n < m.num_nodes(); ++n) m.bc[std::size_t(n)] = m.z[std::size_t(n)] < 1e-12 ? 7 : 4;  // sides on rollers
+    m.control.end_time = 4e-5;
+    m.control.tssf = 0.5;  // a free column one solid wide: its breathing mode needs a smaller step than 0.9 L / c
+    return m;
+  };
+  for (double v_top : {40.0, -40.0}) {
+    const double terod = 1.01, cerod = 0.99;
+    Model plain = null_bar(v_top, 0, 0);
+    const auto expected = first_meeting(plain, [&](const double*, double v, double) { return v > terod || v < cerod; });
+    ASSERT_GT(expected.first, 10) << v_top;
+    // only the limit on this side is set, then both
+    const auto one = first_deletion(null_bar(v_top, v_top > 0 ? terod : 0, v_top > 0 ? 0 : cerod));
+    const auto both = first_deletion(null_bar(v_top, terod, cerod));
+    std::printf("MAT_NULL %s: V/V0 %s %.3f first in cycle %d (%zu solids); deleted in cycle %d (%zu solids)\n",
+                v_top > 0 ? "TEROD" : "CEROD", v_top > 0 ? ">" : "<", v_top > 0 ? terod : cerod, expected.first,
+                expected.second.size(), one.first, one.second.size());
+    EXPECT_EQ(one.first, expected.first);
+    EXPECT_EQ(one.second, expected.second);
+    EXPECT_EQ(both.first, expected.first);
+    EXPECT_EQ(both.second, expected.second);
+    // the limit on the other side alone deletes nothing
+    EXPECT_EQ(first_deletion(null_bar(v_top, v_top > 0 ? 0 : terod, v_top > 0 ? cerod : 0)).first, -1);
+  }
 }
 
 // Strain criteria (true strains at the solid's centre): a stretched bar reaches MXEPS, EFFEPS and

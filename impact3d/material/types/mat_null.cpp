@@ -1,8 +1,10 @@
 // Type 9, *MAT_NULL: a fluid-like material.  Its pressure comes from its equation of state
 // (required: material/eos.h), its deviatoric stress is viscous only, s = 2 MU D' (MU the dynamic
 // viscosity; 0: none), recomputed every step (no elastic shear).  PC < 0 is a pressure cutoff
-// (p >= PC); 0: none (an IMPACT-3D choice, as type 15's PC).  TEROD / CEROD (erosion by
-// relative volume) are refused; YM and PR (LS-DYNA: null shells and beams) are read and ignored.
+// (p >= PC); 0: none (an IMPACT-3D choice, as type 15's PC).  TEROD / CEROD (> 0): the solid is
+// deleted (as by type 3's failure strain) in the cycle its volume ratio V/V0 (current over
+// initial volume) exceeds TEROD or falls below CEROD; 0: off.  YM and PR (LS-DYNA: null shells
+// and beams) are read and ignored.
 //
 // Fixed format (an IMPACT-3D choice: no DYNA3D manual fixes it): card 3 PC, MU, TEROD, CEROD,
 // YM, PR (E10 each), the EOS type in card 1 columns 21-25 and the EOS cards after card 8.
@@ -52,12 +54,18 @@ void update_block(const MaterialConstants& m, HexBlock& k, double) {
 
 void check(MaterialData& md, const MaterialType& t, const ParamReport& report) {
   if (par(md, pPc) > 0) report(*find_param(t, "PC"), 1003, "the pressure cutoff must not be positive (< 0: p >= PC; 0: none)");
+  if (par(md, pTerod) != 0 && !(par(md, pTerod) > 1))
+    report(*find_param(t, "TEROD"), 1003, "the relative volume for erosion in tension must exceed 1 (0: off)");
+  if (par(md, pCerod) != 0 && !(par(md, pCerod) > 0 && par(md, pCerod) < 1))
+    report(*find_param(t, "CEROD"), 1003, "the relative volume for erosion in compression must lie between 0 and 1 (0: off)");
 }
 
 void derive(const MaterialData& d, const Model&, MaterialConstants& c) {
   c.E = 0, c.nu = 0;  // no shear stiffness; K and the wave speed come from the EOS
   c.k[kMu] = par(d, pMu);
   c.eos_pc = par(d, pPc) < 0 ? par(d, pPc) : -HUGE_VAL;
+  c.vol_erode_hi = par(d, pTerod);
+  c.vol_erode_lo = par(d, pCerod);
 }
 
 void echo(std::ostream& os, const MaterialData& md) {
@@ -86,8 +94,8 @@ const MaterialType& mat_null_type() {
     t.params = {
         p("PC", 2, pPc, ParamCheck::none, "", "pressure cutoff PC (< 0; 0 none)", "stress"),
         p("MU", 3, pMu, ParamCheck::non_negative, "the viscosity must not be negative", "dynamic viscosity MU", "stress x time"),
-        p("TEROD", 4, pTerod, ParamCheck::unsupported, "erosion by relative volume in tension (TEROD)", nullptr),
-        p("CEROD", 5, pCerod, ParamCheck::unsupported, "erosion by relative volume in compression (CEROD)", nullptr),
+        p("TEROD", 4, pTerod, ParamCheck::none, "", "erosion above relative volume TEROD (0 off)"),
+        p("CEROD", 5, pCerod, ParamCheck::none, "", "erosion below relative volume CEROD (0 off)"),
         p("YM", 6, pYm, ParamCheck::ignored, "YM (LS-DYNA uses it for null shells and beams only)", nullptr),
         p("PR", 7, pPr, ParamCheck::ignored, "PR (LS-DYNA uses it for null shells and beams only)", nullptr),
     };
