@@ -222,14 +222,9 @@ pid_t spawn(const std::vector<std::string>& argv, const std::string& cwd, const 
     av.push_back(nullptr);
     for (const auto& e : env) ev.push_back(const_cast<char*>(e.c_str()));
     ev.push_back(nullptr);
-    // its own process group, so that a timeout kills whatever it started too
-    posix_spawnattr_t attr;
-    posix_spawnattr_init(&attr);
-    posix_spawnattr_setflags(&attr, POSIX_SPAWN_SETPGROUP);
-    posix_spawnattr_setpgroup(&attr, 0);
+    // the caller's process group: Ctrl-C on the terminal stops the jobs and their runs too
     pid_t pid = 0;
-    const int rc = posix_spawn(&pid, av[0], &fa, &attr, av.data(), ev.data());
-    posix_spawnattr_destroy(&attr);
+    const int rc = posix_spawn(&pid, av[0], &fa, nullptr, av.data(), ev.data());
     posix_spawn_file_actions_destroy(&fa);
     if (rc != 0) throw std::runtime_error("cannot start " + argv[0] + ": " + std::strerror(rc));
     return pid;
@@ -248,8 +243,8 @@ int wait_exit(pid_t pid) {
     return exit_code(st);
 }
 
-// Waits for pid at most `timeout` seconds (0: no limit); past it, kills its process group
-// (SIGKILL) and sets timed_out.
+// Waits for pid at most `timeout` seconds (0: no limit); past it, kills it (SIGKILL: impact3d is
+// one process, its threads go with it) and sets timed_out.
 int wait_exit(pid_t pid, double timeout, bool& timed_out) {
     timed_out = false;
     if (timeout <= 0) return wait_exit(pid);
@@ -261,7 +256,7 @@ int wait_exit(pid_t pid, double timeout, bool& timed_out) {
         if (r < 0 && errno != EINTR) return 127;
         if (now_s() >= end) {
             timed_out = true;
-            kill(-pid, SIGKILL);
+            kill(pid, SIGKILL);
             return wait_exit(pid);
         }
         std::this_thread::sleep_for(std::chrono::milliseconds(10));

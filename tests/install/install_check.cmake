@@ -17,7 +17,7 @@ if(NOT rc EQUAL 0)
   message(FATAL_ERROR "cmake --install failed (${rc}):\n${out}\n${err}")
 endif()
 set(docdir "${PREFIX}/share/doc/impact3d")
-set(expected bin/impact3d bin/impact3d_deckgen share/doc/impact3d/README.md
+set(expected bin/impact3d bin/impact3d_deckgen share/doc/impact3d/README.md share/doc/impact3d/copyright
              share/doc/impact3d/docs/developer-guide.md share/doc/impact3d/examples/one_hex.dyn
              share/doc/impact3d/examples/taylor_bar.dyn share/doc/impact3d/examples/keyword/taylor_bar.k)
 if(POSTIMPACT)

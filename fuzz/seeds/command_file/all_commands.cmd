@@ -21,7 +21,10 @@ title auto
 state middle
 state t=5e-6
 state -1
+mark elem 1 "worst szz"
+mark node 2
 picture eps_end.png last
+mark off
 sequence shapes.png 1 6 11
 sequence shapes2.png 1:3 5
 sequence shapes3.png every 2
