@@ -40,6 +40,12 @@ struct Surface {
   std::vector<double> pmax;            // largest accepted penetration
   std::vector<int> elem;               // the solid each segment is a face of (-1: none found)
   std::vector<int> shell;              // the shell each segment is (-1: a solid face): both sides
+  // eroding interfaces: the solid on the face's other side (-1: none).  A face is in the surface
+  // while its solid lives and the other one (if any) has failed: interior faces join the
+  // surface as failures expose them.  A node is in the surface while one of its faces is.
+  std::vector<int> other;
+  std::vector<int> node_seg_start, node_seg;  // per node: its segments (eroding only)
+  bool eroding = false;
   std::vector<double> offset;          // per segment: half the shell's thickness (0 for a solid face)
   std::vector<double> node_off;        // per node: half the thickest shell on it (0: no shell)
   double node_off_max = 0;
@@ -135,10 +141,51 @@ ShellIndex build_shell_index(const State& s) {
   return ix;
 }
 
+// Eroding surfaces: the solids that have all the segment's nodes; elem the one the segment's
+// normal points out of, other the second (-1: none).
+void elements_of_eroding_segment(const State& s, const std::array<int, 4>& sg, int& elem, int& other) {
+  elem = other = -1;
+  double X[4][3];
+  seg_coords(s, sg, X);
+  const double d1[3] = {X[2][0] - X[0][0], X[2][1] - X[0][1], X[2][2] - X[0][2]};
+  const double d2[3] = {X[3][0] - X[1][0], X[3][1] - X[1][1], X[3][2] - X[1][2]};
+  const double n[3] = {d1[1] * d2[2] - d1[2] * d2[1], d1[2] * d2[0] - d1[0] * d2[2], d1[0] * d2[1] - d1[1] * d2[0]};
+  double fc[3] = {0, 0, 0};
+  for (int a = 0; a < 4; ++a)
+    for (int i = 0; i < 3; ++i) fc[i] += 0.25 * X[a][i];
+  const int n0 = sg[0];
+  for (int c = s.corner_start[std::size_t(n0)]; c < s.corner_start[std::size_t(n0) + 1]; ++c) {
+    const int e = s.corner_element(std::size_t(s.corner_list[std::size_t(c)]));
+    if (e < 0) continue;
+    const auto& hn = s.conn[std::size_t(e)];
+    bool all = true;
+    for (int a = 1; a < 4 && all; ++a) all = std::find(hn.begin(), hn.end(), sg[std::size_t(a)]) != hn.end();
+    if (!all) continue;
+    double ec[3] = {0, 0, 0};
+    for (int v : hn) {
+      ec[0] += 0.125 * s.x[std::size_t(v)];
+      ec[1] += 0.125 * s.y[std::size_t(v)];
+      ec[2] += 0.125 * s.z[std::size_t(v)];
+    }
+    const bool out = n[0] * (fc[0] - ec[0]) + n[1] * (fc[1] - ec[1]) + n[2] * (fc[2] - ec[2]) > 0;
+    if (out && elem < 0) elem = e;
+    else if (other < 0) other = e;
+  }
+  if (elem < 0) std::swap(elem, other);  // (given inward: the face of that element all the same)
+}
+
 void build_surface(const State& s, const ShellIndex& shx, const std::vector<std::array<int, 4>>& segs, double mu,
-                   Surface& sf) {
+                   Surface& sf, bool eroding = false) {
   sf.seg = segs;
+  sf.eroding = eroding;
   const std::size_t ns = segs.size();
+  sf.other.assign(ns, -1);
+  if (eroding)
+    for (std::size_t j = 0; j < ns; ++j) {
+      int el, ot;
+      elements_of_eroding_segment(s, segs[j], el, ot);
+      sf.other[j] = ot;
+    }
   sf.boundary.assign(ns, 0);
   sf.k0.assign(ns, 0.0);
   sf.pmax.assign(ns, 0.0);
@@ -146,12 +193,16 @@ void build_surface(const State& s, const ShellIndex& shx, const std::vector<std:
   sf.shell.assign(ns, -1);
   sf.offset.assign(ns, 0.0);
   // rim edges: used by one segment only (a collapsed edge of a triangle is skipped)
+  // (eroding: the rim of the initial surface, the faces without a second solid)
   std::map<std::pair<int, int>, int> edge_count;
-  for (const auto& sg : segs)
+  for (std::size_t j = 0; j < ns; ++j) {
+    if (sf.other[j] >= 0) continue;
+    const auto& sg = segs[j];
     for (int e = 0; e < 4; ++e) {
       const int a = sg[std::size_t(e)], b = sg[std::size_t((e + 1) % 4)];
       if (a != b) ++edge_count[{std::min(a, b), std::max(a, b)}];
     }
+  }
   for (std::size_t j = 0; j < ns; ++j) {
     const auto& sg = segs[j];
     for (int e = 0; e < 4; ++e) {
@@ -162,7 +213,11 @@ void build_surface(const State& s, const ShellIndex& shx, const std::vector<std:
     double X[4][3];
     seg_coords(s, sg, X);
     const double area = contact::segment_area(X);
-    const int el = element_of_segment(s, sg);
+    int el = element_of_segment(s, sg);
+    if (eroding) {
+      int ot;
+      elements_of_eroding_segment(s, sg, el, ot);
+    }
     sf.elem[j] = el;
     const auto it = el < 0 ? shx.by_key.find(segment_key(sg)) : shx.by_key.end();
     if (it != shx.by_key.end()) {
@@ -199,6 +254,22 @@ void build_surface(const State& s, const ShellIndex& shx, const std::vector<std:
     for (int a = 0; a < 4; ++a)
       sf.local[j][std::size_t(a)] =
           int(std::lower_bound(sf.nodes.begin(), sf.nodes.end(), segs[j][std::size_t(a)]) - sf.nodes.begin());
+  if (eroding) {  // per node its segments (CSR, segment order)
+    sf.node_seg_start.assign(sf.nodes.size() + 1, 0);
+    for (const auto& lc : sf.local)
+      for (int a = 0; a < 4; ++a)
+        if (a == 0 || std::find(lc.begin(), lc.begin() + a, lc[std::size_t(a)]) == lc.begin() + a)
+          ++sf.node_seg_start[std::size_t(lc[std::size_t(a)]) + 1];
+    for (std::size_t q = 0; q < sf.nodes.size(); ++q) sf.node_seg_start[q + 1] += sf.node_seg_start[q];
+    sf.node_seg.assign(std::size_t(sf.node_seg_start.back()), 0);
+    std::vector<int> cur(sf.node_seg_start.begin(), sf.node_seg_start.end() - 1);
+    for (std::size_t j = 0; j < ns; ++j) {
+      const auto& lc = sf.local[j];
+      for (int a = 0; a < 4; ++a)
+        if (a == 0 || std::find(lc.begin(), lc.begin() + a, lc[std::size_t(a)]) == lc.begin() + a)
+          sf.node_seg[std::size_t(cur[std::size_t(lc[std::size_t(a)])]++)] = int(j);
+    }
+  }
   // the nodes' own shell offsets: a shell node touches at half its shell's thickness
   sf.node_off.assign(sf.nodes.size(), 0.0);
   sf.node_off_max = 0;
@@ -304,6 +375,16 @@ void rebuild_grid(const State& s, const Surface& sf, double extra, Grid& g) {
     for_cells(j, [&](int c) { g.entries[std::size_t(g.cursor[std::size_t(c)]++)] = int(j); });
 }
 
+// Whether segment j is in the surface now: the face of a failed (deleted) solid, or a deleted
+// shell, no longer exists; an eroding surface's interior face exists once the solid on its
+// other side has failed.
+inline bool segment_active(const State& s, const Surface& sf, std::size_t j) {
+  if (const int el = sf.elem[j]; el >= 0 && s.failed[std::size_t(el)]) return false;
+  if (const int ot = sf.other[j]; ot >= 0 && !s.failed[std::size_t(ot)]) return false;
+  if (const int sh = sf.shell[j]; sh >= 0 && s.shells.failed[std::size_t(sh)]) return false;
+  return true;
+}
+
 inline bool in_box(const double* b, const double p[3]) {
   return p[0] >= b[0] && p[0] <= b[3] && p[1] >= b[1] && p[1] <= b[4] && p[2] >= b[2] &&
          p[2] <= b[5];
@@ -386,6 +467,13 @@ void SlidingInterfaces::Impl::node_pass(const Model&, const State& s, Interface&
         p[2] > g.hi[2])
       continue;
     const int c = cell_coord(g, 0, p[0]) + g.dim[0] * (cell_coord(g, 1, p[1]) + g.dim[1] * cell_coord(g, 2, p[2]));
+    // eroding: a node none of whose faces is in the surface (its solids failed) is not
+    if (nodes_sf.eroding) {
+      bool on = false;
+      for (int c2 = nodes_sf.node_seg_start[std::size_t(q)]; c2 < nodes_sf.node_seg_start[std::size_t(q) + 1] && !on; ++c2)
+        on = segment_active(s, nodes_sf, std::size_t(nodes_sf.node_seg[std::size_t(c2)]));
+      if (!on) continue;
+    }
     // the node's own offset: half its shell's thickness (0 for a solid's node)
     const double r_node = nodes_sf.node_off[std::size_t(q)];
     const int* ring = in.single ? nodes_sf.ring.data() + nodes_sf.ring_start[std::size_t(q)] : nullptr;
@@ -401,10 +489,8 @@ void SlidingInterfaces::Impl::node_pass(const Model&, const State& s, Interface&
       // single surface: not the segments around the node nor their neighbours
       if (ring && std::any_of(sg.begin(), sg.end(), [&](int v) { return std::binary_search(ring, ring_end, v); }))
         continue;
-      // the face of a failed (deleted) solid, or a deleted shell, no longer exists
-      if (const int el = segs.elem[std::size_t(j)]; el >= 0 && s.failed[std::size_t(el)]) continue;
+      if (!segment_active(s, segs, std::size_t(j))) continue;
       const int shl = segs.shell[std::size_t(j)];
-      if (shl >= 0 && s.shells.failed[std::size_t(shl)]) continue;
       double X[4][3];
       seg_coords(s, sg, X);
       ++hit.evaluations;
@@ -511,8 +597,8 @@ void SlidingInterfaces::initialize(const Model& m, const State& s) {
     im.any_max_stable = im.any_max_stable || in.method == 1;
     in.single = d.type == 4;
     if (in.single) in.npass = 1;
-    build_surface(s, shx, d.slave, in.mu, in.surf[0]);
-    build_surface(s, shx, in.single ? std::vector<std::array<int, 4>>{} : d.master, in.mu, in.surf[1]);
+    build_surface(s, shx, d.slave, in.mu, in.surf[0], d.eroding);
+    build_surface(s, shx, in.single ? std::vector<std::array<int, 4>>{} : d.master, in.mu, in.surf[1], d.eroding);
     if (in.single) build_rings(in.surf[0]);
     for (int p = 0; p < in.npass; ++p) {
       Pass& ps = in.pass[p];

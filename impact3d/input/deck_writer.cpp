@@ -500,18 +500,20 @@ class KeywordWriter {
     for (const SlidingInterface& si : m_.interfaces) {
       if (si.type == 4) {  // single surface: side A only, a segment set
         const int a = segment_set(si.slave);
-        os_ << "*CONTACT_AUTOMATIC_SINGLE_SURFACE\n";
+        os_ << (si.eroding ? "*CONTACT_ERODING_SINGLE_SURFACE\n" : "*CONTACT_AUTOMATIC_SINGLE_SURFACE\n");
         os_ << "$#   surfa     surfb  surfatyp  surfbtyp   saboxid   sbboxid      sapr\n"
             << kcard({I(a), I(0), I(0), I(0), I(0), I(0), I(si.intfor_slave ? 1 : 0)}) << "\n";
         os_ << "$#      fs        fd        dc\n" << kcard({R(si.fs), R(si.fd), R(si.decay)}) << "\n";
         double s = si.penalty_scale == 0 ? 1.0 : scale_factor(si.penalty_scale, m_.control.penalty_scale);
         os_ << "$#    sfsa      sfsb\n" << kcard({R(s), R(s)}) << "\n";
+        if (si.eroding) os_ << "$#    isym    erosop      iadj\n" << kcard({I(0), I(1), I(0)}) << "\n";
         os_ << "$#    soft\n" << kcard({I(si.stiffness_method)}) << "\n";
         continue;
       }
       int a = segment_set(si.slave), b = segment_set(si.master);
       if (si.type != 3) note("sliding interface type " + std::to_string(si.type) + " written as type 3");
-      os_ << (si.symmetric ? "*CONTACT_SURFACE_TO_SURFACE\n" : "*CONTACT_NODES_TO_SURFACE\n");
+      if (si.eroding) os_ << (si.symmetric ? "*CONTACT_ERODING_SURFACE_TO_SURFACE\n" : "*CONTACT_ERODING_NODES_TO_SURFACE\n");
+      else os_ << (si.symmetric ? "*CONTACT_SURFACE_TO_SURFACE\n" : "*CONTACT_NODES_TO_SURFACE\n");
       if (si.intfor_slave || si.intfor_master)
         os_ << "$#   surfa     surfb  surfatyp  surfbtyp   saboxid   sbboxid      sapr      sbpr\n"
             << kcard({I(a), I(b), I(0), I(0), I(0), I(0), I(si.intfor_slave ? 1 : 0), I(si.intfor_master ? 1 : 0)}) << "\n";
@@ -521,6 +523,7 @@ class KeywordWriter {
       double s = si.penalty_scale == 0 ? 1.0 : scale_factor(si.penalty_scale, m_.control.penalty_scale);
       if (si.penalty_scale != 0 && s == 1.0) note("sliding interface penalty scale equal to the control value: written as the default");
       os_ << "$#    sfsa      sfsb\n" << kcard({R(s), R(s)}) << "\n";
+      if (si.eroding) os_ << "$#    isym    erosop      iadj\n" << kcard({I(0), I(1), I(0)}) << "\n";
       os_ << "$#    soft\n" << kcard({I(si.stiffness_method)}) << "\n";
     }
     // force transducers: their sides as node sets (SURFATYP / SURFBTYP 4)
@@ -834,6 +837,13 @@ int write_converted_decks(const Model& m, const std::string& keyword_path, const
         return exit_code::input_error;
       }
     }
+    if (k == 1)  // eroding contact has no fixed-format card (its sides hold interior faces)
+      for (std::size_t j = 0; j < m.interfaces.size(); ++j)
+        if (m.interfaces[j].eroding) {
+          log << " error: the fixed-format deck " << path << " cannot hold this model (not written): sliding interface "
+              << j + 1 << " is an eroding contact (*CONTACT_ERODING_*: no fixed-format card; write a keyword deck)\n";
+          return exit_code::input_error;
+        }
     if (k == 1) {  // *MAT_ADD_EROSION has no fixed-format card
       for (std::size_t j = 0; j < m.materials.size(); ++j)
         if (m.materials[j].erosion.active) {
@@ -1038,6 +1048,7 @@ std::vector<std::string> model_differences(const Model& a, const Model& b, int m
     D(s + "penalty scale", x.penalty_scale, y.penalty_scale);
     N(s + "stiffness method", x.stiffness_method, y.stiffness_method);
     N(s + "symmetric", x.symmetric, y.symmetric);
+    N(s + "eroding", x.eroding, y.eroding);
     if (x.slave != y.slave) diff(s + "slave segments", std::to_string(x.slave.size()), std::to_string(y.slave.size()));
     if (x.master != y.master) diff(s + "master segments", std::to_string(x.master.size()), std::to_string(y.master.size()));
     N(s + "intfor slave side", x.intfor_slave, y.intfor_slave);

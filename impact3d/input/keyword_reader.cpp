@@ -480,6 +480,7 @@ struct RContact {
   bool sapr = false, sbpr = false;  // SAPR / SBPR = 1: the side goes to the intfor database
   bool transducer = false;          // *CONTACT_FORCE_TRANSDUCER_PENALTY
   bool single = false;              // *CONTACT_AUTOMATIC_SINGLE_SURFACE (SURFA only)
+  bool eroding = false;             // *CONTACT_ERODING_* with EROSOP 1: interior faces join
   int cid = 0;                      // _ID: the contact id
   Ref ref;
   std::string keyword;
@@ -1212,7 +1213,8 @@ class KeywordReader {
         "SECTION_SOLID", "SECTION_SHELL", "HOURGLASS", "DEFINE_CURVE", "SET_NODE_LIST", "SET_NODE", "SET_PART_LIST",
         "SET_PART", "SET_SEGMENT", "SET_NODE_LIST_GENERATE", "CONTACT_SURFACE_TO_SURFACE",
         "CONTACT_AUTOMATIC_SURFACE_TO_SURFACE", "CONTACT_NODES_TO_SURFACE", "CONTACT_FORCE_TRANSDUCER_PENALTY",
-        "CONTACT_AUTOMATIC_SINGLE_SURFACE", "CONTACT_AUTOMATIC_NODES_TO_SURFACE",
+        "CONTACT_AUTOMATIC_SINGLE_SURFACE", "CONTACT_AUTOMATIC_NODES_TO_SURFACE", "CONTACT_ERODING_SURFACE_TO_SURFACE",
+        "CONTACT_ERODING_NODES_TO_SURFACE", "CONTACT_ERODING_SINGLE_SURFACE",
         // issue 16: sets, boxes, coordinate systems
         "SET_NODE_ADD", "SET_NODE_GENERAL", "SET_NODE_LIST_GENERATE_INCREMENT", "SET_PART_ADD",
         "SET_PART_LIST_GENERATE", "SET_PART_LIST_GENERATE_INCREMENT", "SET_SOLID", "SET_SOLID_LIST",
@@ -1224,7 +1226,8 @@ class KeywordReader {
     static const std::set<std::string> with_id = {
         "RIGIDWALL_PLANAR", "RIGIDWALL_PLANAR_MOVING", "CONTACT_SURFACE_TO_SURFACE", "CONTACT_AUTOMATIC_SURFACE_TO_SURFACE",
         "CONTACT_NODES_TO_SURFACE", "CONTACT_FORCE_TRANSDUCER_PENALTY", "CONTACT_AUTOMATIC_SINGLE_SURFACE",
-        "CONTACT_AUTOMATIC_NODES_TO_SURFACE", "BOUNDARY_SPC_NODE", "BOUNDARY_SPC_SET",
+        "CONTACT_AUTOMATIC_NODES_TO_SURFACE", "CONTACT_ERODING_SURFACE_TO_SURFACE", "CONTACT_ERODING_NODES_TO_SURFACE",
+        "CONTACT_ERODING_SINGLE_SURFACE", "BOUNDARY_SPC_NODE", "BOUNDARY_SPC_SET",
         "BOUNDARY_PRESCRIBED_MOTION_NODE", "BOUNDARY_PRESCRIBED_MOTION_SET", "BOUNDARY_PRESCRIBED_MOTION_RIGID",
         "LOAD_SEGMENT", "LOAD_SEGMENT_SET"};
     if (ends("_TITLE") && (titled.count(n.substr(0, n.size() - 6)) || find_material_type_by_keyword(n.substr(0, n.size() - 6)) ||
@@ -1403,6 +1406,9 @@ bool is_ascii_database(const std::string& n) {
         parse_contact(b, n != "CONTACT_NODES_TO_SURFACE" && n != "CONTACT_AUTOMATIC_NODES_TO_SURFACE");
       } else if (n == "CONTACT_AUTOMATIC_SINGLE_SURFACE") {
         parse_contact(b, false, false, true);
+      } else if (n == "CONTACT_ERODING_SURFACE_TO_SURFACE" || n == "CONTACT_ERODING_NODES_TO_SURFACE" ||
+                 n == "CONTACT_ERODING_SINGLE_SURFACE") {
+        parse_contact(b, n == "CONTACT_ERODING_SURFACE_TO_SURFACE", false, n == "CONTACT_ERODING_SINGLE_SURFACE", true);
       } else if (n == "CONTACT_FORCE_TRANSDUCER_PENALTY") {
         parse_contact(b, false, true);
       } else if (n == "DATABASE_BINARY_INTFOR") {
@@ -2641,7 +2647,7 @@ bool is_ascii_database(const std::string& n) {
     }
   }
 
-  void parse_contact(const Block& b, bool symmetric, bool transducer = false, bool single = false) {
+  void parse_contact(const Block& b, bool symmetric, bool transducer = false, bool single = false, bool eroding = false) {
     std::size_t k = skip_option_card(b);
     if (k >= b.data.size()) { missing_card(b, "card 1"); return; }
     RContact ct;
@@ -2710,8 +2716,20 @@ bool is_ascii_database(const std::string& n) {
       if (sfsb != ct.sfsa) c3.error(2006, 1, "SFSB", "one penalty scale per interface: SFSA is used for both sides");
       for (int f = 2; f < 8; ++f) c3.r(f, "SAST/SBST/SFSAT/SFSBT/FSF/VSF");
     }
-    if (k + 3 < b.data.size()) {
-      KCard ca = card(b, k + 3, "optional card A", W(b, 8));
+    std::size_t ka = k + 3;  // optional card A
+    if (eroding) {
+      // the _ERODING_ card: ISYM EROSOP IADJ (LS-DYNA: EROSOP 0 keeps the exterior only)
+      if (k + 3 >= b.data.size()) { missing_card(b, "the _ERODING_ card (ISYM EROSOP IADJ)"); return; }
+      KCard ce = card(b, k + 3, "eroding card", W(b, 8));
+      if (ce.i(0, "ISYM") != 0) ce.error(1102, 0, "ISYM", "symmetry-plane options of eroding contact");
+      const long erosop = ce.i(1, "EROSOP");
+      if (erosop != 0 && erosop != 1) ce.error(1006, 1, "EROSOP", "0 exterior faces only, 1 faces exposed by failed solids join");
+      ct.eroding = erosop == 1;
+      if (ce.i(2, "IADJ") != 0) ce.error(2006, 2, "IADJ", "shell edges do not join an eroding surface");
+      ka = k + 4;
+    }
+    if (ka < b.data.size()) {
+      KCard ca = card(b, ka, "optional card A", W(b, 8));
       ct.soft = int(ca.i(0, "SOFT"));
       if (ct.soft == 2 || ct.soft == 4 || ct.soft == 6) ca.error(1102, 0, "SOFT", "contact formulation SOFT = " + std::to_string(ct.soft) + " (IMPACT-3D has 0 penalty and 1 soft constraint)");
       else if (ct.soft != 0 && ct.soft != 1) ca.error(1006, 0, "SOFT", "0 penalty (DYNA3D), 1 soft constraint (IMPACT-3D maximum stable stiffness)");
@@ -4312,6 +4330,7 @@ bool is_ascii_database(const std::string& n) {
     element_filter_ = nullptr;
   }
   const std::vector<int>* element_filter_ = nullptr;  // exterior_faces of these elements instead of parts'
+  bool all_faces_ = false;  // exterior_faces gives every face (an eroding contact's sides), one per solid
 
   // The shells of the parts (or, with a node filter, every shell whose nodes are all in it) as
   // contact segments, in shell order: n1 n2 n3 n4 (both sides of a shell are used).
@@ -4370,7 +4389,7 @@ bool is_ascii_database(const std::string& n) {
         std::array<int, 4> s = face(e, f);
         std::array<int, 4> k = key(s);
         if (k[2] < 0) continue;  // collapsed face (edge or point)
-        if (count[k] != 1) continue;
+        if (count[k] != 1 && !all_faces_) continue;
         if (k[3] < 0) {
           // triangle: rotate the cycle so that the repeated node is n3 = n4
           for (int r = 0; r < 4 && s[2] != s[3]; ++r) s = {s[1], s[2], s[3], s[0]};
@@ -4529,6 +4548,8 @@ bool is_ascii_database(const std::string& n) {
       }
       SlidingInterface si;
       si.type = c.single ? 4 : 3;
+      si.eroding = c.eroding;
+      all_faces_ = c.eroding;  // an eroding side holds every face of its solids
       si.fs = c.fs;
       si.fd = c.fd;
       si.decay = c.dc;
@@ -4540,6 +4561,7 @@ bool is_ascii_database(const std::string& n) {
       si.line = c.ref.line ? c.ref.line->number : 0;
       resolve_side(c.a, true, c.keyword, si.slave, si.slave_line, si.slave_file);
       if (!c.single) resolve_side(c.b, false, c.keyword, si.master, si.master_line, si.master_file);
+      all_faces_ = false;
       m_.interfaces.push_back(std::move(si));
     }
     m_.control.num_interfaces = int(m_.interfaces.size());

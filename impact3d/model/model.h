@@ -138,6 +138,10 @@ struct SlidingInterface {
   double penalty_scale = 0;   // 0 -> control penalty_scale
   int stiffness_method = 0;   // 0 DYNA3D mu K A^2 / V, 1 IMPACT-3D maximum stable
   bool symmetric = true;
+  // *CONTACT_ERODING_*: the sides hold every face of their solids (an interior face once per
+  // solid, outward from it); a face is in the surface while its solid lives and the other solid
+  // of the face (if any) has failed
+  bool eroding = false;
   // *CONTACT card 1 SAPR / SBPR (LS-DYNA's SPR / MPR) = 1: the side's segments go to the
   // interface-force database (intfor)
   bool intfor_slave = false, intfor_master = false;

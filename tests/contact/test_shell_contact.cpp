@@ -568,3 +568,151 @@ TEST(ShellContact, SingleSurfaceCardChecksAndRoundTrip) {
   EXPECT_EQ(back.m.interfaces[0].type, 4);
   EXPECT_EQ(back.m.interfaces[0].slave, warned.m.interfaces[0].slave);
 }
+
+// ---- eroding contact
+
+namespace {
+
+// A column of two 20 mm solids: the lower L rigid (part 3, free), the upper U elastic (part 1)
+// on L's top nodes, and a rigid 10 mm cube (part 2) 0.1 mm above its middle falling at 10 m/s;
+// a 1 mm elastic cube far away sets the step.  `fail_upper`: U is deleted at t = 0 (its
+// failure, set by hand: the element pass then gives it no force, as after a failure criterion).
+struct ErodingRun {
+  double first = -1, dt_before_first = 0;  // time of the first contact force, the step before it
+  double p_imp0 = 0, p_imp1 = 0, p_tot0 = 0, p_tot1 = 0, impulse = 0, force_after = 0, contact_time = 0;
+  double m_imp = 0, m_col = 0, dt = 0;
+  int segments = 0;
+};
+
+double body_mass_lower_rigid(const ErodingRun& r) { return r.m_col; }
+
+ErodingRun eroding_run(const std::string& kind, bool fail_upper, bool eroding_card, int erosop = 1,
+                       std::string* converted = nullptr) {
+  DeckBuilder d;
+  const auto lower = d.block(3, true, 0, 0, 0, 0.02, 1);
+  d.part(1, false, false, 0);
+  {  // the upper solid on the lower one's top nodes
+    const int base = lower.last - 3;  // the 4 top nodes of the lower solid: ids base..base+3
+    std::vector<int> top;
+    for (int j = 0; j < 2; ++j)
+      for (int i = 0; i < 2; ++i) top.push_back(d.node(0.02 * i, 0.02 * j, 0.04));
+    d.solids << ifld(++d.eid, 8) << ifld(1, 8);
+    for (int v : {base, base + 1, base + 3, base + 2, top[0], top[1], top[3], top[2]}) d.solids << ifld(v, 8);
+    d.solids << "\n";
+  }
+  const auto imp = d.block(2, true, 0.005, 0.005, 0.04 + 1e-4, 0.01, 1);
+  d.block(4, false, 1, 1, 1, 0.001, 1);
+  d.velocity(imp, 0, 0, -10);
+  std::string contact = "*SET_PART_LIST\n        70\n         1         3\n*CONTACT_" + kind + "\n" + ifld(2, 10) + ifld(70, 10) +
+                        ifld(3, 10) + ifld(2, 10) + "\n" +
+                        fld(0, 10) + "\n" + fld(0.1, 10) + fld(0.1, 10) + "\n";
+  if (eroding_card) contact += ifld(0, 10) + ifld(erosop, 10) + ifld(0, 10) + "\n";
+  Read r = read_text(d.text(3e-3, contact));
+  EXPECT_TRUE(r.ok) << r.messages();
+  ErodingRun out;
+  if (!r.ok) return out;
+  out.segments = int(r.m.interfaces[0].master.size());
+  if (converted) {  // the converter's keyword deck read back: the same Model
+    std::ostringstream os;
+    write_keyword_deck(os, r.m);
+    *converted = os.str();
+    Read back = read_text(os.str());
+    EXPECT_TRUE(back.ok) << back.messages();
+    const auto diffs = model_differences(r.m, back.m);
+    EXPECT_TRUE(diffs.empty()) << (diffs.empty() ? "" : diffs[0]);
+    EXPECT_TRUE(back.m.interfaces[0].eroding);
+  }
+  Engine e(r.m);
+  EXPECT_EQ(e.initialize(), StepStatus::ok);
+  State& s = e.state();
+  if (fail_upper) s.failed[1] = 1;
+  out.m_imp = body_mass(s, imp);
+  out.m_col = body_mass(s, lower);  // L's rigid body: its nodes' masses (half of U's mass stays on them)
+  const DeckBuilder::Body all{0, s.nn, 0};
+  out.p_imp0 = body_momentum(s, imp, 2);
+  out.p_tot0 = body_momentum(s, all, 2);
+  StepStatus st = StepStatus::ok;
+  while (st == StepStatus::ok) {
+    const double dt_before = s.dt_half, time = s.time;
+    const int cycle = s.cycle;
+    st = e.step();
+    const double dt_n = cycle == 0 ? 0.5 * s.dt_half : 0.5 * (dt_before + s.dt_half);
+    const double fz = e.interface_forces()[0][2];
+    out.impulse += fz * dt_n;
+    if (fz != 0 && out.first < 0) out.first = time, out.dt_before_first = dt_before;
+    if (fz != 0) out.contact_time += dt_n;
+    if (fz == 0 && out.first >= 0) out.force_after = 0;
+    if (fz != 0) out.force_after = std::abs(fz);
+  }
+  EXPECT_EQ(st, StepStatus::finished) << s.time;
+  out.p_imp1 = body_momentum(s, imp, 2);
+  out.p_tot1 = body_momentum(s, all, 2);
+  out.dt = s.dt_half;
+  return out;
+}
+
+}  // namespace
+
+// *CONTACT_ERODING_SURFACE_TO_SURFACE (EROSOP 1): the face between the column's two solids
+// joins the surface once the upper one has failed: the falling cube passes where the upper
+// solid was and strikes the exposed face at t = (20 mm + 0.1 mm) / 10 m/s = 2.01 ms, rebounds;
+// momentum conserved and the impulse is the cube's momentum change.  With both solids alive
+// the interior face takes no part (first contact at the top, 10 us); without the eroding
+// option the failed solid's faces just leave (no contact in the 3 ms).
+TEST(ShellContact, ErodingContactAddsTheFacesFailedSolidsExpose) {
+  std::string converted;
+  const ErodingRun er = eroding_run("ERODING_SURFACE_TO_SURFACE", true, true, 1, &converted);
+  EXPECT_NE(converted.find("*CONTACT_ERODING_SURFACE_TO_SURFACE"), std::string::npos);
+  EXPECT_EQ(er.segments, 12);  // both solids' 6 faces (the shared one twice, once per solid)
+  const double t1 = (0.02 + 1e-4) / 10;
+  std::printf("eroding contact: first contact %.5g ms (exposed face reached at %.5g ms), cube momentum %.5g -> %.5g N s, "
+              "impulse %.6g (rel. %.2g), total momentum %.3g -> %.3g\n",
+              er.first * 1e3, t1 * 1e3, er.p_imp0, er.p_imp1, er.impulse, er.impulse / (er.p_imp1 - er.p_imp0) - 1,
+              er.p_tot0, er.p_tot1);
+  EXPECT_GE(er.first, t1);
+  EXPECT_LT(er.first - er.dt_before_first, t1);
+  // the rigid cube on the rigid lower solid (with its nodes' masses: U's share stays on them):
+  // an oscillator of the reduced mass on 4 springs mu K A^2 / V, elastic collision
+  const double m1 = er.m_imp, m2 = body_mass_lower_rigid(er);
+  const double K = 4 * 0.01 * kBulk * 4e-4 * 4e-4 / 8e-6, mu = m1 * m2 / (m1 + m2);
+  std::printf("  contact %.4g us (closed form %.4g us), cube velocity after %.5g m/s (closed form %.5g)\n", er.contact_time * 1e6,
+              M_PI * std::sqrt(mu / K) * 1e6, er.p_imp1 / m1, -10 * (m1 - m2) / (m1 + m2));
+  EXPECT_NEAR(er.contact_time / (M_PI * std::sqrt(mu / K)), 1.0, 0.01);  // measured -0.47 %
+  EXPECT_NEAR(er.p_imp1 / m1, -10 * (m1 - m2) / (m1 + m2), 1e-3 * 10);   // measured 1e-5
+  EXPECT_NEAR(er.impulse / (er.p_imp1 - er.p_imp0), 1.0, 1e-10);
+  EXPECT_NEAR(er.p_tot1, er.p_tot0, 1e-12 * std::abs(er.p_tot0));
+  EXPECT_EQ(er.force_after, 0.0);
+  // both alive: the top face is hit first (t = 0.1 mm / 10 m/s)
+  const ErodingRun alive = eroding_run("ERODING_SURFACE_TO_SURFACE", false, true);
+  EXPECT_GE(alive.first, 1e-5);
+  EXPECT_LT(alive.first - alive.dt_before_first, 1e-5);
+  // not eroding: the failed solid's faces leave, the exposed one does not join
+  const ErodingRun plain = eroding_run("SURFACE_TO_SURFACE", true, false);
+  EXPECT_EQ(plain.segments, 10);  // the exterior faces
+  EXPECT_LT(plain.first, 0.0);
+  EXPECT_EQ(plain.p_imp1, plain.p_imp0);
+  // EROSOP 0 (LS-DYNA: only the exterior is kept): as without the option
+  const ErodingRun erosop0 = eroding_run("ERODING_SURFACE_TO_SURFACE", true, true, 0);
+  EXPECT_EQ(erosop0.segments, 10);
+  EXPECT_LT(erosop0.first, 0.0);
+}
+
+// *CONTACT_ERODING_SINGLE_SURFACE reads as an eroding single surface (its card after card 3);
+// a missing _ERODING_ card is error 1316, ISYM 1102.
+TEST(ShellContact, ErodingSingleSurfaceCards) {
+  TwoShells ts(true);
+  Read r = read_text(ts.d.text(8e-5, "*CONTACT_ERODING_SINGLE_SURFACE\n         0\n       0.0\n       0.1       0.1\n"
+                                       "         0         1         0\n"));
+  ASSERT_TRUE(r.ok) << r.messages();
+  ASSERT_EQ(r.m.interfaces.size(), 1u);
+  EXPECT_EQ(r.m.interfaces[0].type, 4);
+  EXPECT_TRUE(r.m.interfaces[0].eroding);
+  EXPECT_EQ(r.m.interfaces[0].slave.size(), 2u + 6u);  // the two shells and the timing cube's faces
+  Read missing = read_text(ts.d.text(8e-5, "*CONTACT_ERODING_SINGLE_SURFACE\n         0\n       0.0\n       0.1       0.1\n"));
+  EXPECT_FALSE(missing.ok);
+  EXPECT_EQ(missing.d.count(1316), 1) << missing.messages();
+  Read isym = read_text(ts.d.text(8e-5, "*CONTACT_ERODING_NODES_TO_SURFACE\n         1         2         3         3\n       0.0\n"
+                                        "       0.1       0.1\n         1         1\n"));
+  EXPECT_FALSE(isym.ok);
+  EXPECT_EQ(isym.d.count(1102), 1) << isym.messages();
+}
