@@ -596,7 +596,12 @@ void SlidingInterfaces::initialize(const Model& m, const State& s) {
     in.npass = d.symmetric ? 2 : 1;
     im.any_max_stable = im.any_max_stable || in.method == 1;
     in.single = d.type == 4;
-    if (in.single) in.npass = 1;
+    if (in.single) {
+      // one pass, but every pair of the surface is met both ways (a node of each against the
+      // other's segment): the maximum stable stiffness takes the symmetric constant
+      in.npass = 1;
+      in.symmetric = true;
+    }
     build_surface(s, shx, d.slave, in.mu, in.surf[0], d.eroding);
     build_surface(s, shx, in.single ? std::vector<std::array<int, 4>>{} : d.master, in.mu, in.surf[1], d.eroding);
     if (in.single) build_rings(in.surf[0]);

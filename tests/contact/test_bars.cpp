@@ -121,6 +121,32 @@ TEST(BarImpact, HeadOnContactTimeVelocitiesMomentumEnergy) {
   EXPECT_LT(r.max_ratio, 1.02);
 }
 
+// The same interface as a single surface (type 4: both bars' segments in one surface, one
+// pass, each node against the segments it does not touch): the same bar theory and tolerances.
+TEST(BarImpact, SingleSurfaceGivesTheSameBarTheory) {
+  ScopedThreads one(1);
+  Model m = read_deck("two_bars.dyn");
+  ASSERT_EQ(m.interfaces.size(), 1u);
+  auto& si = m.interfaces[0];
+  si.type = 4;
+  si.symmetric = false;
+  si.slave.insert(si.slave.end(), si.master.begin(), si.master.end());
+  si.master.clear();
+  const BarRun r = run_bars(m);
+  const double t_exact = 2 * kL / c0_copper();
+  const double f_exact = 8930 * c0_copper() * kV * kArea;
+  std::printf("  single surface: contact time ratio %.4f, force ratio %.4f, velocities %.4f / %.4f m/s, momentum error "
+              "%.2e, energy ratio [%.5f, %.5f]\n",
+              r.t_contact / t_exact, r.f_plateau / f_exact, r.v1, r.v2, r.max_p_err, r.min_ratio, r.max_ratio);
+  EXPECT_NEAR(r.t_contact / t_exact, 1.0, 0.05);
+  EXPECT_NEAR(r.f_plateau / f_exact, 1.0, 0.05);
+  EXPECT_NEAR(r.v1, -kV, 0.03 * kV);
+  EXPECT_NEAR(r.v2, kV, 0.03 * kV);
+  EXPECT_LT(r.max_p_err, 1e-12);
+  EXPECT_GT(r.min_ratio, 0.98);
+  EXPECT_LT(r.max_ratio, 1.02);
+}
+
 // Striker on a bar at rest: the striker stops, the target leaves at v (3% of v).
 TEST(BarImpact, StrikerStopsTargetLeavesAtV) {
   ScopedThreads one(1);
