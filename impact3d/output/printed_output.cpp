@@ -313,16 +313,19 @@ void write_model_summary(std::ostream& os, const Model& m) {
     os << " s l i d i n g   i n t e r f a c e s\n\n";
     for (std::size_t i = 0; i < m.interfaces.size(); ++i) {
       const auto& si = m.interfaces[i];
-      os << "   interface " << i + 1 << ": type " << si.type << " (sliding with impact and separation), "
-         << si.slave.size() << " slave / " << si.master.size() << " master segments\n"
+      const bool single = si.type == 4;
+      os << "   interface " << i + 1 << ": type " << si.type
+         << (single ? " (single surface)" : " (sliding with impact and separation)") << (si.eroding ? ", eroding" : "") << ", "
+         << (single ? std::to_string(si.slave.size()) + " segments\n"
+                    : std::to_string(si.slave.size()) + " slave / " + std::to_string(si.master.size()) + " master segments\n")
          << "     friction static/dynamic/decay ........ " << fmt("%.4g", si.fs) << " / "
          << fmt("%.4g", si.fd) << " / " << fmt("%.4g", si.decay) << "\n"
          << "     penalty stiffness .................... "
-         << (si.stiffness_method == 0 ? "DYNA3D mu K A^2 / V, mu = " +
+         << (si.stiffness_method == 0 ? "DYNA3D mu K A^2 / V (shells mu K A / diagonal), mu = " +
                                             fmt("%.4g", si.penalty_scale > 0 ? si.penalty_scale : m.control.penalty_scale)
                                       : std::string("IMPACT-3D maximum stable, alpha = 1 - TSSF^2"))
          << "\n"
-         << "     treatment ............................ " << (si.symmetric ? "symmetric (two passes)" : "one pass")
+         << "     treatment ............................ " << (single ? "one pass over the surface, each node against the segments not around it" : si.symmetric ? "symmetric (two passes)" : "one pass")
          << "\n";
       if (si.intfor_slave || si.intfor_master)
         os << "     interface-force database (intfor) .... "
