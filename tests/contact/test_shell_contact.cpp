@@ -575,13 +575,13 @@ namespace {
 
 // A column of two 20 mm solids: the lower L rigid (part 3, free), the upper U elastic (part 1)
 // on L's top nodes, and a rigid 10 mm cube (part 2) 0.1 mm above its middle falling at 10 m/s;
-// a 1 mm elastic cube far away sets the step.  `fail_upper`: U is deleted at t = 0 (its
-// failure, set by hand: the element pass then gives it no force, as after a failure criterion).
+// a 1 mm elastic cube far away sets the step.  `fail_upper`: U fails at 1 us (*MAT_ADD_EROSION
+// FAILTM: the element pass deletes it).
 struct ErodingRun {
   double first = -1, dt_before_first = 0;  // time of the first contact force, the step before it
   double p_imp0 = 0, p_imp1 = 0, p_tot0 = 0, p_tot1 = 0, impulse = 0, force_after = 0, contact_time = 0;
   double m_imp = 0, m_col = 0, dt = 0;
-  int segments = 0;
+  int segments = 0, failed = 0;
 };
 
 double body_mass_lower_rigid(const ErodingRun& r) { return r.m_col; }
@@ -607,6 +607,9 @@ ErodingRun eroding_run(const std::string& kind, bool fail_upper, bool eroding_ca
                         ifld(3, 10) + ifld(2, 10) + "\n" +
                         fld(0, 10) + "\n" + fld(0.1, 10) + fld(0.1, 10) + "\n";
   if (eroding_card) contact += ifld(0, 10) + ifld(erosop, 10) + ifld(0, 10) + "\n";
+  // the upper solid fails at 1 us by *MAT_ADD_EROSION's FAILTM (the element pass deletes it)
+  if (fail_upper) contact += "*MAT_ADD_EROSION\n" + ifld(1, 10) + "\n" + fld(0, 10) + fld(0, 10) + fld(0, 10) + fld(0, 10) +
+                             fld(0, 10) + fld(0, 10) + fld(0, 10) + fld(1e-6, 10) + "\n";
   Read r = read_text(d.text(3e-3, contact));
   EXPECT_TRUE(r.ok) << r.messages();
   ErodingRun out;
@@ -625,7 +628,6 @@ ErodingRun eroding_run(const std::string& kind, bool fail_upper, bool eroding_ca
   Engine e(r.m);
   EXPECT_EQ(e.initialize(), StepStatus::ok);
   State& s = e.state();
-  if (fail_upper) s.failed[1] = 1;
   out.m_imp = body_mass(s, imp);
   out.m_col = body_mass(s, lower);  // L's rigid body: its nodes' masses (half of U's mass stays on them)
   const DeckBuilder::Body all{0, s.nn, 0};
@@ -648,6 +650,7 @@ ErodingRun eroding_run(const std::string& kind, bool fail_upper, bool eroding_ca
   out.p_imp1 = body_momentum(s, imp, 2);
   out.p_tot1 = body_momentum(s, all, 2);
   out.dt = s.dt_half;
+  for (int k = 0; k < s.ne; ++k) out.failed += s.failed[std::size_t(k)] ? 1 : 0;
   return out;
 }
 
@@ -664,6 +667,7 @@ TEST(ShellContact, ErodingContactAddsTheFacesFailedSolidsExpose) {
   const ErodingRun er = eroding_run("ERODING_SURFACE_TO_SURFACE", true, true, 1, &converted);
   EXPECT_NE(converted.find("*CONTACT_ERODING_SURFACE_TO_SURFACE"), std::string::npos);
   EXPECT_EQ(er.segments, 12);  // both solids' 6 faces (the shared one twice, once per solid)
+  EXPECT_EQ(er.failed, 1);
   const double t1 = (0.02 + 1e-4) / 10;
   std::printf("eroding contact: first contact %.5g ms (exposed face reached at %.5g ms), cube momentum %.5g -> %.5g N s, "
               "impulse %.6g (rel. %.2g), total momentum %.3g -> %.3g\n",
@@ -691,6 +695,7 @@ TEST(ShellContact, ErodingContactAddsTheFacesFailedSolidsExpose) {
   EXPECT_EQ(plain.segments, 10);  // the exterior faces
   EXPECT_LT(plain.first, 0.0);
   EXPECT_EQ(plain.p_imp1, plain.p_imp0);
+  EXPECT_EQ(plain.failed, 1);
   // EROSOP 0 (LS-DYNA: only the exterior is kept): as without the option
   const ErodingRun erosop0 = eroding_run("ERODING_SURFACE_TO_SURFACE", true, true, 0);
   EXPECT_EQ(erosop0.segments, 10);
