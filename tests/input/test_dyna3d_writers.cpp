@@ -110,6 +110,18 @@ TEST(Dyna3dWriters, SlidingInterfaceTypesAreRefusedByName) {
     EXPECT_EQ(d.count(1003), 1) << all_messages(d);
     EXPECT_NE(all_messages(d).find("single-surface"), std::string::npos) << all_messages(d);
   }
+  {  // type 4 with NSS = the 8 segment cards and NMS = 0: one surface of 8 segments, one pass
+    std::string s = deck;
+    s.replace(s.find(card), card.size(), "       8       0   40.0000e+00");
+    Model m;
+    Diagnostics d;
+    ASSERT_TRUE(read_string(s, m, d)) << all_messages(d);
+    ASSERT_EQ(m.interfaces.size(), 1u);
+    EXPECT_EQ(m.interfaces[0].type, 4);
+    EXPECT_EQ(m.interfaces[0].slave.size(), 8u);
+    EXPECT_TRUE(m.interfaces[0].master.empty());
+    EXPECT_FALSE(m.interfaces[0].symmetric);
+  }
   std::string s = deck;
   s.replace(s.find(card), card.size(), "       4       4  120.0000e+00");
   Model m;
