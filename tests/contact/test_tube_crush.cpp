@@ -11,6 +11,8 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <fstream>
 #include <sstream>
 #include <string>
 
@@ -182,9 +184,26 @@ TEST(TubeCrush, ShortCoarseTubeFoldsWithSingleSurfaceContact) {
 }
 
 // The full version (manual benchmark): 2.5 mm shells (16 per side, 32 along 80 mm).
-TEST(TubeCrush, DISABLED_FullTube) {
+Tube full_tube() {
   Tube T;
   T.per_side = 16;
   T.nz = 32;
-  crush(T);
+  return T;
+}
+TEST(TubeCrush, DISABLED_FullTube) { crush(full_tube()); }
+
+// The full version is also shipped as a deck for the command line
+// (tests/contact/square_tube_crush.k: impact3d i=square_tube_crush.k); it is this generator's
+// text (IMPACT3D_WRITE_TUBE_DECK=1 rewrites it).
+TEST(TubeCrush, ShippedDeckIsTheFullTube) {
+  const std::string path = std::string(IMPACT3D_SOURCE_DIR) + "/tests/contact/square_tube_crush.k";
+  const std::string text = tube_deck(full_tube());
+  if (std::getenv("IMPACT3D_WRITE_TUBE_DECK")) {
+    std::ofstream(path) << text;
+  }
+  std::ifstream in(path);
+  ASSERT_TRUE(in.good()) << path;
+  std::stringstream ss;
+  ss << in.rdbuf();
+  EXPECT_TRUE(ss.str() == text) << path << " differs from tube_deck(full_tube())";
 }
