@@ -1,0 +1,70 @@
+// The pinched cylinder (MacNeal-Harder 1985 shell benchmark), decks/keyword/pinched_cylinder.k
+// (written by decks/generator/pinched_cylinder.py): R 300, L 600, t 3, E 3e6, nu 0.3, rigid
+// diaphragms at the ends, two opposite radial loads P = 1 at mid-length; an octant model of
+// 16 x 16 Belytschko-Tsay shells (P/4 on the loaded node), brought to the static answer by
+// dynamic relaxation (*DAMPING_GLOBAL).  Reference: radial displacement 1.8248e-5 under the load.
+// Measured by hand with the generator's --n (README "Shells"): 8 x 8 0.832, 16 x 16 1.027,
+// 32 x 32 1.085 x the reference, converging past it (to about 1.1 x by the increments), as the
+// Scordelis-Lo roof does: the 16 x 16 value being near the reference is a mesh coincidence, not
+// a passed verification.  This test checks
+//   * the static state: over the last fifth of the run (two periods of the slowest oscillation
+//     left: *DAMPING_GLOBAL does not damp the shells' rotations, and a mode of period about 30
+//     keeps +-0.07 % of w) the displacement stays within 3e-3 of its mean, which is the measured
+//     w; the kinetic energy is below 1e-3 of the internal energy;
+//   * the energy balance (load work = strain energy + damped energy + kinetic) to 1e-3;
+//   * Clapeyron: the load's work on the final displacement (P/4) w = 2 U (linear) to 2e-3;
+//   * the displacement: within 0.5 % of this build's 1.8742e-5 (1.027 x the reference; a
+//     regression check of the documented number, not an agreement with the reference).
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "impact3d/input/deck_reader.h"
+#include "impact3d/solve/engine.h"
+
+using namespace impact3d;
+
+TEST(PinchedCylinder, DynamicRelaxationMeasuredAgainstTheReference) {
+  const std::string path = std::string(IMPACT3D_SOURCE_DIR) + "/decks/keyword/pinched_cylinder.k";
+  Model m;
+  Diagnostics d;
+  ASSERT_TRUE(read_and_check_deck(path, m, d));
+  ASSERT_EQ(m.num_shells(), 16 * 16);
+  ASSERT_NEAR(m.x[0], 0.0, 1e-12);  // node 1: the loaded point, x = 0 on top (z = R)
+  ASSERT_NEAR(m.y[0], 0.0, 1e-12);
+  ASSERT_NEAR(m.z[0], 300.0, 1e-9);
+  Engine eng(m);
+  ASSERT_EQ(eng.initialize(), StepStatus::ok);
+  const State& s = eng.state();
+  double w_min = 1, w_max = 0, w_sum = 0, t_sum = 0;
+  StepStatus st = StepStatus::ok;
+  while (st == StepStatus::ok) {
+    const double dt = s.dt_half;
+    st = eng.step();
+    if (s.time >= 0.8 * m.control.end_time) {
+      const double wn = -(s.z[0] - m.z[0]);
+      w_min = std::min(w_min, wn);
+      w_max = std::max(w_max, wn);
+      w_sum += wn * dt;
+      t_sum += dt;
+    }
+  }
+  ASSERT_EQ(st, StepStatus::finished);
+  const double w = w_sum / t_sum, w_end = -(s.z[0] - m.z[0]);
+  const double strain_energy = s.internal + s.hourglass;
+  const double clapeyron = 0.25 * w_end / (2 * strain_energy);
+  const double ref = 1.8248e-5;
+  std::printf("pinched cylinder 16 x 16: w = %.5g (mean over the last fifth), %.4f x the reference 1.8248e-5; "
+              "range there %.5g..%.5g, kinetic / internal %.2g, energy ratio %.7f, (P/4) w / 2U = %.5f\n",
+              w, w / ref, w_min, w_max, s.kinetic / strain_energy, s.energy_ratio(), clapeyron);
+  EXPECT_LT(w_max - w, 3e-3 * w);
+  EXPECT_LT(w - w_min, 3e-3 * w);
+  EXPECT_LT(s.kinetic, 1e-3 * strain_energy);
+  EXPECT_NEAR(s.energy_ratio(), 1.0, 1e-3);
+  EXPECT_NEAR(clapeyron, 1.0, 2e-3);
+  EXPECT_NEAR(w, 1.8742e-5, 0.005 * 1.8742e-5);
+}
