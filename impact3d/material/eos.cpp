@@ -19,6 +19,24 @@ const EosForm& linear_polynomial() {
   return f;
 }
 
+// LS-DYNA's EOS 2: EOSID A B R1 R2 OMEG E0 V0 (one card).  c: A, B, R1, R2, OMEG.
+const EosForm& jwl() {
+  static const EosForm f = {2, "JWL", "EOS_JWL",
+                            {{"A", 0, 1, 0, 0, 0}, {"B", 0, 2, 0, 1, 1}, {"R1", 0, 3, 0, 2, 2}, {"R2", 0, 4, 0, 3, 3},
+                             {"OMEG", 0, 5, 0, 4, 4}, {"E0", 0, 6, 0, 5, kEosSlotE0}, {"V0", 0, 7, 0, 6, kEosSlotV0}},
+                            {10}};
+  return f;
+}
+
+// LS-DYNA's EOS 3: EOSID A1 A2 A3 B1 B2 E0 V0 (one card).  c: A1, A2, A3, B1, B2.
+const EosForm& sack_tuesday() {
+  static const EosForm f = {3, "Sack Tuesday", "EOS_SACK_TUESDAY",
+                            {{"A1", 0, 1, 0, 0, 0}, {"A2", 0, 2, 0, 1, 1}, {"A3", 0, 3, 0, 2, 2}, {"B1", 0, 4, 0, 3, 3},
+                             {"B2", 0, 5, 0, 4, 4}, {"E0", 0, 6, 0, 5, kEosSlotE0}, {"V0", 0, 7, 0, 6, kEosSlotV0}},
+                            {10}};
+  return f;
+}
+
 const EosForm& gruneisen() {
   static const EosForm f = {4, "Gruneisen", "EOS_GRUNEISEN",
                             {{"C", 0, 1, 0, 0, 0}, {"S1", 0, 2, 0, 1, 1}, {"S2", 0, 3, 0, 2, 2}, {"S3", 0, 4, 0, 3, 3},
@@ -56,7 +74,7 @@ std::string f6(double v) {
 }  // namespace
 
 std::span<const EosForm* const> eos_forms() {
-  static const EosForm* const table[] = {&linear_polynomial(), &gruneisen(), &tabulated()};
+  static const EosForm* const table[] = {&linear_polynomial(), &jwl(), &sack_tuesday(), &gruneisen(), &tabulated()};
   return table;
 }
 
@@ -122,6 +140,9 @@ void check_eos(EosData& e, double rho0, const std::function<void(const EosParam&
       }
     if (n < 2) return;
   }
+  if (e.form == 2 && !(e.c[2] > 0)) report(param("R1"), 1003, "R1 must be positive");
+  if (e.form == 2 && !(e.c[3] > 0)) report(param("R2"), 1003, "R2 must be positive");
+  if (e.form == 2 && (!(e.c[2] > 0) || !(e.c[3] > 0))) return;
   if (e.form == 4 && !(e.c[0] > 0)) report(param("C"), 1003, "the bulk sound speed C must be positive");
   if (e.form == 4 && e.c[1] < 1) report(param("S1"), 1003, "the slope S1 of the us-up line must be at least 1");
   // a sound speed at the initial state (the time step and the hourglass and bulk viscosity need one)
@@ -129,7 +150,7 @@ void check_eos(EosData& e, double rho0, const std::function<void(const EosParam&
   c.rho = rho0;
   derive_eos_constants(e, c);
   if (!(c.K > 0))
-    report(param(e.form == 1 ? "C1" : e.form == 9 ? "C1" : "C"), 1003,
+    report(param(e.form == 1 || e.form == 9 ? "C1" : e.form == 2 ? "A" : e.form == 3 ? "A1" : "C"), 1003,
            "the equation of state gives no sound speed at its initial state (isentropic bulk modulus " + f6(c.K) + " <= 0)");
 }
 

@@ -5,6 +5,8 @@
 // numbers):
 //   1 *EOS_LINEAR_POLYNOMIAL: p = C0 + C1 mu + C2 mu^2 + C3 mu^3 + (C4 + C5 mu + C6 mu^2) E
 //     (C2 mu^2 and C6 mu^2 are dropped in tension, mu < 0, as LS-DYNA does);
+//   2 *EOS_JWL: p = A (1 - OMEG/(R1 V)) exp(-R1 V) + B (1 - OMEG/(R2 V)) exp(-R2 V) + OMEG E / V;
+//   3 *EOS_SACK_TUESDAY: p = A1 V^-A2 exp(-A3 V) (1 - B1/V) + B2 E / V;
 //   4 *EOS_GRUNEISEN: in compression (mu > 0)
 //       p = rho0 C^2 mu [1 + (1 - GAMMA0/2) mu - A/2 mu^2] /
 //           [1 - (S1 - 1) mu - S2 mu^2/(mu + 1) - S3 mu^3/(mu + 1)^2]^2 + (GAMMA0 + A mu) E,
@@ -30,8 +32,9 @@
 // finite step: an IMPACT-3D choice).
 //
 // Fixed format (an IMPACT-3D choice: DYNA3D's EOS card layout is not public): a material set
-// whose card 1 columns 21-25 give form 1, 4 or 9 has the form's cards after card 8, LS-DYNA's
-// keyword cards without EOSID: form 1: C0 C1 C2 C3 C4 C5 C6 / E0 V0; form 4: C S1 S2 S3 GAMMA0
+// whose card 1 columns 21-25 give form 1, 2, 3, 4 or 9 has the form's cards after card 8, LS-DYNA's
+// keyword cards without EOSID: form 1: C0 C1 C2 C3 C4 C5 C6 / E0 V0; form 2: A B R1 R2 OMEG E0
+// V0 (one card); form 3: A1 A2 A3 B1 B2 E0 V0 (one card); form 4: C S1 S2 S3 GAMMA0
 // A E0 / V0 (8 E10 fields each); form 9: GAMMA E0 V0 (E10), then EV1-5 / EV6-10 / C1-5 / C6-10
 // / T1-5 / T6-10 (5 E16 fields each).
 
@@ -109,6 +112,28 @@ inline void calc_eos_coefficients(const MaterialConstants& m, double mu, double&
     b = k[30] * (k[20 + i] + st * (ev - k[i]));
     da = -sc / (1.0 + mu);  // d eps_v / d mu = -1 / (1 + mu)
     db = -k[30] * st / (1.0 + mu);
+    return;
+  }
+  if (m.eos_form == 2 || m.eos_form == 3) {
+    // JWL: k = A, B, R1, R2, OMEG; Sack Tuesday: k = A1, A2, A3, B1, B2; both functions of
+    // V = 1 / (1 + mu), dV/dmu = -V^2
+    const double V = 1.0 / (1.0 + mu);
+    double dadv;
+    if (m.eos_form == 2) {
+      const double x1 = k[0] * std::exp(-k[2] * V), x2 = k[1] * std::exp(-k[3] * V);
+      const double w = k[4];
+      a = x1 * (1.0 - w / (k[2] * V)) + x2 * (1.0 - w / (k[3] * V));
+      dadv = x1 * (w / (k[2] * V * V) - k[2] + w / V) + x2 * (w / (k[3] * V * V) - k[3] + w / V);
+      b = w / V;
+    } else {
+      const double g = k[0] * std::pow(V, -k[1]) * std::exp(-k[2] * V);
+      const double h = 1.0 - k[3] / V;
+      a = g * h;
+      dadv = g * (-k[1] / V - k[2]) * h + g * k[3] / (V * V);
+      b = k[4] / V;
+    }
+    da = -V * V * dadv;
+    db = k[4];  // b = k4 / V = k4 (1 + mu)
     return;
   }
   if (m.eos_form == 1) {

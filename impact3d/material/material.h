@@ -40,8 +40,12 @@ struct MaterialConstants {
   // Hardening curve sigma_y(eps_p), piecewise linear, the last slope extended (types with a
   // tabulated flow stress); slope[i] is the slope from point i to i + 1.
   std::vector<double> curve_eps, curve_sig, curve_slope;
-  // Equation of state (material/eos.h): form 0 none, 1 linear polynomial, 4 Gruneisen, 9
-  // tabulated; its constants (form 1 C0-C6, form 4 rho0 C^2, S1, S2, S3, GAMMA0, A; form 9
+  // Strain-rate scaling curve of the yield stress (type 24 LCSR): rate -> factor, piecewise
+  // linear, its end values held beyond the first and last points; rate_slope[i] from i to i + 1.
+  std::vector<double> rate_x, rate_f, rate_slope;
+  // Equation of state (material/eos.h): form 0 none, 1 linear polynomial, 2 JWL, 3 Sack
+  // Tuesday, 4 Gruneisen, 9 tabulated; its constants (form 1 C0-C6, form 2 A, B, R1, R2, OMEG,
+  // form 3 A1, A2, A3, B1, B2, form 4 rho0 C^2, S1, S2, S3, GAMMA0, A; form 9
   // EV1-EV10, C1-C10, T1-T10, GAMMA, then the number of points); the initial relative volume
   // V0; the pressure cutoff (p >= eos_pc; -inf none); the history value that holds the internal
   // energy per reference volume

@@ -218,11 +218,14 @@ TEST(HexBlock, CubeRootIsWithinOneUlpOfTheExactRoot) {
 
 // Every deformable type of the table: its block kernel gives the bits of its scalar kernel, lane
 // by lane (types 24 and 10 with a 4-point table spanning the lanes' plastic strains, with and without
-// rate effects; types 1 and 3 as above, through the table).
+// rate effects, type 24 also viscoplastic, VP = 1; types 1 and 3 as above, through the table).
 TEST(HexBlock, TableKernelsEqualTheirScalarKernels) {
   for (const MaterialType* t : material_types()) {
     if (t->rigid) continue;
-    for (double rate_c : {0.0, 1e7}) {
+    for (double rate_c : {0.0, 1e7, -1e7}) {
+      const bool viscoplastic = rate_c < 0;
+      if (viscoplastic && t->number != 24) continue;
+      rate_c = std::fabs(rate_c);
       MaterialData md;
       md.type = t->number;
       set_param_defaults(md, *t);
@@ -240,6 +243,7 @@ TEST(HexBlock, TableKernelsEqualTheirScalarKernels) {
         param_value(md, *find_param(*t, "N")) = 0.3;
       }
       if (t->number == 10) param_value(md, *find_param(*t, "G")) = 43e9;  // K from its EOS in a run
+      if (viscoplastic) param_value(md, *find_param(*t, "VP")) = 1;
       if (t->number == 24 || t->number == 10) {
         const double eps[4] = {0, 0.05, 0.12, 0.18}, es[4] = {3e8, 3.5e8, 3.6e8, 4.5e8};
         for (int i = 0; i < 4; ++i) {

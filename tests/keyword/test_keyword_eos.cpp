@@ -222,6 +222,55 @@ TEST(KeywordEos, TabulatedIsReadEchoedAndRoundTrips) {
   refused("      0.98\n", "     -0.98\n", "V0");
 }
 
+// *EOS_JWL (form 2) and *EOS_SACK_TUESDAY (form 3): one card each, read, echoed, through the
+// converter both ways (fixed format: EOS type 2 / 3 in card 1 columns 21-25, one EOS card);
+// JWL's R1 <= 0 refused.
+TEST(KeywordEos, JwlAndSackTuesdayAreReadEchoedAndRoundTrip) {
+  const std::string jwl =
+      "*EOS_JWL\n$#   eosid         a         b        r1        r2      omeg        e0        v0\n"
+      "         3  3.712E11  3.231E09      4.15      0.95       0.3     7.0E9       1.0\n";
+  Read a = read_text(deck(kNull + jwl));
+  ASSERT_TRUE(a.ok) << a.messages();
+  const EosData& e = a.m.materials[0].eos;
+  EXPECT_EQ(e.form, 2);
+  EXPECT_EQ(e.c[0], 3.712e11);
+  EXPECT_EQ(e.c[1], 3.231e9);
+  EXPECT_EQ(e.c[2], 4.15);
+  EXPECT_EQ(e.c[3], 0.95);
+  EXPECT_EQ(e.c[4], 0.3);
+  EXPECT_EQ(e.e0, 7e9);
+  EXPECT_EQ(e.v0, 1.0);
+  std::ostringstream echo;
+  write_model_summary(echo, a.m);
+  EXPECT_NE(echo.str().find("JWL (form 2, EOSID 3)"), std::string::npos) << echo.str();
+  EXPECT_NE(echo.str().find("EOS OMEG"), std::string::npos) << echo.str();
+  round_trips(a);
+  std::ostringstream fx;
+  write_fixed_deck(fx, a.m, nullptr);
+  const std::string text = fx.str();
+  const std::size_t at = text.find("*----- MATERIALS\n") + 17;
+  EXPECT_EQ(text.substr(at + 20, 5), "    2") << text;
+  std::string r1 = jwl;
+  r1.replace(r1.find("      4.15"), 10, "       0.0");
+  Read b = read_text(deck(kNull + r1));
+  EXPECT_FALSE(b.ok);
+  EXPECT_EQ(b.d.count(1003), 1) << b.messages();
+  EXPECT_NE(b.messages().find("R1"), std::string::npos) << b.messages();
+
+  const std::string sack =
+      "*EOS_SACK_TUESDAY_TITLE\nproducts\n         3     2.0E9       1.2       0.5       0.1       0.4     1.0E8       1.0\n";
+  Read s = read_text(deck(kNull + sack));
+  ASSERT_TRUE(s.ok) << s.messages();
+  EXPECT_EQ(s.m.materials[0].eos.form, 3);
+  EXPECT_EQ(s.m.materials[0].eos.c[3], 0.1);
+  EXPECT_EQ(s.m.materials[0].eos.c[4], 0.4);
+  EXPECT_EQ(s.m.materials[0].eos.e0, 1e8);
+  std::ostringstream se;
+  write_model_summary(se, s.m);
+  EXPECT_NE(se.str().find("Sack Tuesday (form 3, EOSID 3)"), std::string::npos) << se.str();
+  round_trips(s);
+}
+
 TEST(KeywordEos, RefusalsNameTheField) {
   auto count = [](const std::string& text, int msg) {
     Read r = read_text(text);
@@ -235,7 +284,7 @@ TEST(KeywordEos, RefusalsNameTheField) {
   const std::string elastic = "*MAT_ELASTIC\n         7    8930.0   117.0E9      0.35\n";
   EXPECT_EQ(count(deck(elastic + kGruneisen), 1102), 1);
   // a refused EOS keyword: the keyword (1301) and the part naming it (1102)
-  const std::string tab = "*EOS_JWL\n         3     3.7E11\n";
+  const std::string tab = "*EOS_TABULATED_COMPACTION\n         3     3.7E11\n";
   EXPECT_EQ(count(deck(kNull + tab), 1102), 1);
   // V0 negative, LCID, TEROD below 1, C <= 0
   std::string v0 = kGruneisen;
@@ -273,7 +322,7 @@ TEST(KeywordEos, FixedFormatEosTypeAndCards) {
     EXPECT_FALSE(r.ok);
     EXPECT_GE(r.d.count(msg), 1) << r.messages();
   };
-  refused("    4", "    2", 1102);
+  refused("    4", "    8", 1102);
   std::string t1 = text;
   {
     const std::size_t c1 = t1.find("*----- MATERIALS\n") + 17;

@@ -122,9 +122,9 @@ TEST(KeywordMaterials, PiecewiseLinearCurveIsMappedAndChecked) {
   ASSERT_TRUE(f.ok) << f.messages() << fx.str();
   EXPECT_EQ(join(model_differences(a.m, f.m)), "");
   EXPECT_EQ(f.d.count(2004), 0) << f.messages();
-  // an undefined curve, VP = 1, LCSR and a decreasing table: errors naming the fields
+  // an undefined curve (LCSS and LCSR), VP = 2 and a decreasing table: errors naming the fields
   std::string bad = one_hex_deck(kMat24);
-  bad.replace(bad.find("         0         0       0.0\n"), 31, "        34        12       1.0\n");
+  bad.replace(bad.find("         0         0       0.0\n"), 31, "        34        12       2.0\n");
   bad.replace(bad.find("     250.0     300.0     350.0     380.0"), 40, "     250.0     300.0     290.0     380.0");
   Read b = read_text(bad);
   EXPECT_FALSE(b.ok);
@@ -133,7 +133,35 @@ TEST(KeywordMaterials, PiecewiseLinearCurveIsMappedAndChecked) {
   EXPECT_NE(msg.find("LCSR"), std::string::npos) << msg;
   EXPECT_NE(msg.find("VP"), std::string::npos) << msg;
   EXPECT_NE(msg.find("ES3"), std::string::npos) << msg;
-  EXPECT_EQ(b.d.count(1102), 2) << msg;
+  EXPECT_EQ(b.d.count(1102), 1) << msg;  // VP = 2
+}
+
+// Rate effects: LCSR names a curve (rate -> factor; mapped to its number), VP = 1 the
+// viscoplastic form; C and P beside LCSR draw warning 2006; echo and converter both ways.
+TEST(KeywordMaterials, PiecewiseLinearRateCurveAndViscoplasticRoundTrip) {
+  std::string deck = one_hex_deck(kMat24);
+  deck.replace(deck.find("         0         0       0.0\n"), 31, "         0        33       1.0\n");
+  Read a = read_text(deck);
+  ASSERT_TRUE(a.ok) << a.messages();
+  EXPECT_EQ(par(a.m, "LCSR"), 1.0);
+  EXPECT_EQ(par(a.m, "VP"), 1.0);
+  EXPECT_EQ(a.d.count(2004), 0) << a.messages();  // the curve is used
+  EXPECT_EQ(a.d.count(2006), 1) << a.messages();  // C and P are not used
+  std::ostringstream echo;
+  write_model_summary(echo, a.m);
+  EXPECT_NE(echo.str().find("load curve 1 (rate -> factor)"), std::string::npos) << echo.str();
+  EXPECT_NE(echo.str().find("plastic strain rate (VP = 1, viscoplastic)"), std::string::npos) << echo.str();
+  std::ostringstream kw, fx;
+  write_keyword_deck(kw, a.m);
+  Read k = read_text(kw.str());
+  ASSERT_TRUE(k.ok) << k.messages() << kw.str();
+  EXPECT_EQ(join(model_differences(a.m, k.m)), "");
+  write_fixed_deck(fx, a.m, nullptr);
+  Read f = read_text(fx.str(), "deck.dyn");
+  ASSERT_TRUE(f.ok) << f.messages() << fx.str();
+  EXPECT_EQ(join(model_differences(a.m, f.m)), "") << fx.str();
+  EXPECT_EQ(par(f.m, "LCSR"), 1.0);
+  EXPECT_EQ(par(f.m, "VP"), 1.0);
 }
 
 // A fixed-format deck with a type the table does not have: error 1103 listing the types.

@@ -1,10 +1,12 @@
 // Type 24 (*MAT_PIECEWISE_LINEAR_PLASTICITY) through single-point strain paths against closed
 // forms: the flow stress against plastic strain in uniaxial strain and in shear, with and
-// without Cowper-Symonds rate scaling, elastic unloading; the table of material types.
+// without Cowper-Symonds rate scaling, with an LCSR curve, the viscoplastic form (VP = 1),
+// elastic unloading; the table of material types.
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <string>
 #include <utility>
 #include <vector>
@@ -61,7 +63,8 @@ struct Path {
   MaterialConstants m;
   SolidPointState s;
   const SolidKernel* k;
-  explicit Path(const MaterialData& md) : m(derive_constants(md, Model{})), k(&material_type(24).solid) {}
+  explicit Path(const MaterialData& md, const Model& model = Model{})
+      : m(derive_constants(md, model)), k(&material_type(24).solid) {}
   void step(const double d[6], double dt) { k->update_point(m, d, dt, s); }
 };
 
@@ -163,6 +166,103 @@ TEST(MatPiecewiseLinear, RateScalesTheFlowStress) {
   EXPECT_NEAR(p.s.eps_p, ep, 1e-12);
   EXPECT_NEAR(p.s.sig[0] - p.s.sig[1], R * flow(kTable, ep), 1e-11);
   EXPECT_NEAR(p.s.sig[0], K * eps + 2.0 / 3.0 * R * flow(kTable, ep), 1e-10);
+}
+
+namespace {
+
+// A model holding one load curve: the LCSR curve rate -> factor (1 at rates up to 0.1, 1.2 at
+// 0.1, 1.5 at 1 and beyond: the end values held).
+Model rate_curve_model() {
+  Model model;
+  LoadCurve lc;
+  lc.number = 1;
+  lc.t = {0.0, 0.1, 1.0};
+  lc.f = {1.0, 1.2, 1.5};
+  model.load_curves = {lc};
+  return model;
+}
+double rate_curve(double r) { return r <= 0.1 ? 1.0 + 2.0 * r : r >= 1.0 ? 1.5 : 1.2 + (r - 0.1) / 3.0; }
+
+MaterialData rate_material(double C, double P, double lcsr, double vp) {
+  MaterialData md = table_material(kTable, C, P);
+  param_value(md, *find_param(material_type(24), "LCSR")) = lcsr;
+  param_value(md, *find_param(material_type(24), "VP")) = vp;
+  return md;
+}
+
+}  // namespace
+
+// LCSR (VP = 0): the flow stress is scaled by R = LCSR(rate), rate = sqrt(D:D) = |d_xx| in
+// uniaxial strain; C and P beside it are not used.  Rate 0.25 and 2 (beyond the last point).
+TEST(MatPiecewiseLinear, RateCurveScalesTheFlowStress) {
+  const Model model = rate_curve_model();
+  for (double rate : {0.25, 2.0}) {
+    Path p(rate_material(10, 2, 1, 0), model);
+    const double G = p.m.G;
+    const double dt = 0.2 / rate / 800;  // to eps 0.2
+    const double R = rate_curve(rate);
+    for (int n = 1; n <= 800; ++n) {
+      const double d[6] = {rate, 0, 0, 0, 0, 0};
+      p.step(d, dt);
+    }
+    const double eps = 800 * rate * dt;
+    const double ep = plastic_strain_for(kTable, G, 2 * G * eps, R);
+    EXPECT_GT(ep, 0.05);
+    EXPECT_NEAR(p.s.eps_p, ep, 1e-12) << rate;
+    EXPECT_NEAR(p.s.sig[0] - p.s.sig[1], R * flow(kTable, ep), 1e-11) << rate;
+  }
+  EXPECT_NEAR(rate_curve(0.25), 1.25, 1e-15);
+}
+
+// VP = 1 (viscoplastic): the factor is that of the plastic strain rate.  Perfect plasticity
+// (flow stress 0.4) in uniaxial strain at the constant rate r: at the steady state the stress no
+// longer changes, the deviatoric strain rate is all plastic and the effective plastic strain
+// rate is sqrt(2/3 d':d') = 2 r / 3, so q = 0.4 R(2 r / 3) (Cowper-Symonds and LCSR), against
+// R(r) with VP = 0 (the total strain rate sqrt(D:D) = r).  With hardening, every step meets
+// q = R(d eps_p / dt) flow(eps_p).  Tolerances: 1e-12 of the stress (the return is solved to
+// 1e-15 relative).
+TEST(MatPiecewiseLinear, ViscoplasticRateIsThePlasticStrainRate) {
+  const Model model = rate_curve_model();
+  const std::vector<std::pair<double, double>> perfect = {{0.0, 0.4}, {1.0, 0.4}};
+  const double C = 10, P = 2;
+  for (double lcsr : {0.0, 1.0}) {
+    for (double rate : {0.25, 0.9}) {
+      auto R = [&](double r) { return lcsr > 0 ? rate_curve(r) : 1 + std::pow(r / C, 1 / P); };
+      for (double vp : {0.0, 1.0}) {
+        MaterialData md = table_material(perfect, C, P);
+        param_value(md, *find_param(material_type(24), "LCSR")) = lcsr;
+        param_value(md, *find_param(material_type(24), "VP")) = vp;
+        Path p(md, model);
+        const double dt = 1e-4;
+        for (int n = 1; n <= 4000; ++n) {  // eps to 0.1 (0.36) at rate 0.25 (0.9)
+          const double d[6] = {rate, 0, 0, 0, 0, 0};
+          p.step(d, dt);
+        }
+        const double q = p.s.sig[0] - p.s.sig[1];
+        const double want = 0.4 * R(vp == 1 ? 2 * rate / 3 : rate);
+        EXPECT_NEAR(q, want, 1e-12) << "LCSR " << lcsr << " rate " << rate << " VP " << vp;
+        std::printf("LCSR %g rate %g VP %g: q %.15f, closed form 0.4 R(%s) = %.15f\n", lcsr, rate, vp, q,
+                    vp == 1 ? "2r/3" : "r", want);
+      }
+    }
+  }
+  // hardening table, VP = 1, Cowper-Symonds: each step's stress is R(d eps_p / dt) flow(eps_p)
+  Path h(rate_material(C, P, 0, 1));
+  const double dt = 1e-3, rate = 0.25;
+  int plastic_steps = 0;
+  for (int n = 1; n <= 800; ++n) {
+    const double e0 = h.s.eps_p;
+    const double d[6] = {rate, 0, 0, 0, 0, 0};
+    h.step(d, dt);
+    const double dep = h.s.eps_p - e0;
+    if (dep > 0) {
+      ++plastic_steps;
+      const double want = (1 + std::pow(dep / dt / C, 1 / P)) * flow(kTable, h.s.eps_p);
+      ASSERT_NEAR(h.s.sig[0] - h.s.sig[1], want, 1e-12 * want) << n;
+    }
+  }
+  EXPECT_GT(h.s.eps_p, 0.05);
+  EXPECT_GT(plastic_steps, 700);
 }
 
 // Neither table nor curve: SIGY and the linear modulus E_p = E ETAN / (E - ETAN), as type 3:

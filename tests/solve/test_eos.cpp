@@ -398,3 +398,79 @@ TEST(EquationOfState, FlyerPlateGivesTheHugoniotState) {
   EXPECT_NEAR(pm / pH, 1.0, 0.001);   // 0.1% (measured 1e-5)
   EXPECT_NEAR(us / Us, 1.0, 0.002);   // 0.2% (measured 3e-5)
 }
+
+namespace {
+
+// TNT detonation products (Dobratz & Crawford, LLNL Explosives Handbook, the constants LS-DYNA's
+// manual quotes): A 371.2 GPa, B 3.231 GPa, R1 4.15, R2 0.95, OMEG 0.30, E0 7 GJ/m^3, rho 1630.
+EosData jwl_tnt() {
+  EosData e;
+  e.form = 2;
+  e.c = {3.712e11, 3.231e9, 4.15, 0.95, 0.30};
+  e.e0 = 7e9;
+  e.v0 = 1;
+  return e;
+}
+double jwl_pressure(double V, double E) {
+  const double A = 3.712e11, B = 3.231e9, R1 = 4.15, R2 = 0.95, w = 0.30;
+  return A * (1 - w / (R1 * V)) * std::exp(-R1 * V) + B * (1 - w / (R2 * V)) * std::exp(-R2 * V) + w * E / V;
+}
+EosData sack_tuesday() {
+  EosData e;
+  e.form = 3;
+  e.c = {2e9, 1.2, 0.5, 0.1, 0.4};
+  e.e0 = 1e8;
+  e.v0 = 1;
+  return e;
+}
+double sack_pressure(double V, double E) {
+  return 2e9 * std::pow(V, -1.2) * std::exp(-0.5 * V) * (1 - 0.1 / V) + 0.4 * E / V;
+}
+
+}  // namespace
+
+// JWL (form 2) and Sack Tuesday (form 3): p = a(mu) + b(mu) E at V = 0.5 .. 3 and three
+// energies against the formulas written out here (1e-14 relative), the slopes a', b' against
+// central differences (1e-7 relative: the difference's truncation); then through the cycle: the
+// squeezed cube's pressure is the formula of its own volume and energy (1e-12 relative).
+TEST(EquationOfState, JwlAndSackTuesdayAreTheirFormulas) {
+  struct Form { EosData e; double (*p)(double, double); const char* name; };
+  const Form forms[] = {{jwl_tnt(), jwl_pressure, "JWL"}, {sack_tuesday(), sack_pressure, "Sack Tuesday"}};
+  for (const Form& f : forms) {
+    MaterialConstants m;
+    m.rho = 1630;
+    derive_eos_constants(f.e, m);
+    EXPECT_EQ(m.eos_form, f.e.form);
+    EXPECT_GT(m.K, 0);
+    double worst = 0, worst_d = 0;
+    for (double V : {0.5, 0.7, 0.9, 1.0, 1.3, 2.0, 3.0}) {
+      for (double E : {0.0, 2e9, 7e9}) {
+        const double mu = 1 / V - 1;
+        double a, b, da, db;
+        calc_eos_coefficients(m, mu, a, b, da, db);
+        const double want = f.p(V, E);
+        worst = std::max(worst, std::fabs(a + b * E - want) / std::fabs(want));
+        // the slope in mu of p at fixed E
+        const double h = 1e-5 * (1 + mu);
+        const double dp = (f.p(1 / (1 + mu + h), E) - f.p(1 / (1 + mu - h), E)) / (2 * h);
+        worst_d = std::max(worst_d, std::fabs(da + db * E - dp) / std::fabs(dp));
+      }
+    }
+    std::printf("%s: worst |a + b E - p(V, E)| / p = %.2e, worst slope error %.2e\n", f.name, worst, worst_d);
+    EXPECT_LT(worst, 1e-14) << f.name;
+    EXPECT_LT(worst_d, 1e-7) << f.name;
+  }
+  std::printf("JWL TNT p(V = 1, E0 = 7 GJ/m^3) = %.6e Pa\n", jwl_pressure(1, 7e9));
+  for (const Form& f : forms) {
+    Model m = squeezed_cube(null_material(1630, f.e), 10, 10e-6);
+    double worst = 0, mu_max = 0, mu_min = 0;
+    run_cube(m, [&](double mu, double p, double E) {
+      const double want = f.p(1 / (1 + mu), E);
+      worst = std::max(worst, std::fabs(p - want) / std::fabs(want));
+    }, mu_max, mu_min);
+    std::printf("%s through the cycle: mu %.4f .. %.4f, worst |p - p(V, E)| / p = %.2e\n", f.name, mu_min, mu_max, worst);
+    EXPECT_GT(mu_max, 0.1);
+    EXPECT_LT(mu_min, -0.04);
+    EXPECT_LT(worst, 1e-12) << f.name;
+  }
+}

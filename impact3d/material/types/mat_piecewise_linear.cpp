@@ -1,14 +1,20 @@
 // Type 24, *MAT_PIECEWISE_LINEAR_PLASTICITY: von Mises plasticity with isotropic hardening
 // sigma_y(eps_p) from the EPS/ES table (up to 8 points), an LCSS curve, or (neither) SIGY and
-// the linear plastic modulus E_p = E ETAN / (E - ETAN) (as type 3); Cowper-Symonds rate
-// scaling of the yield stress (VP = 0); deletion at the plastic strain FAIL and below the
-// element step TDEL.
+// the linear plastic modulus E_p = E ETAN / (E - ETAN) (as type 3); rate effects: the yield
+// stress scaled by R = 1 + (rate/C)^(1/P) (Cowper-Symonds) or R = LCSR(rate) (a load curve of
+// the rate, taking precedence over C and P; piecewise linear, its end values held beyond its
+// first and last points: an IMPACT-3D choice), with rate the norm sqrt(D:D) of the step's
+// strain rate (VP = 0, as type 3) or the effective plastic strain rate de/dt of the step
+// (VP = 1, viscoplastic); deletion at the plastic strain FAIL and below the element step TDEL.
 //
 // The radial return is exact for the piecewise-linear curve: with the trial von Mises stress
 // q, the rate factor R and the curve's segment i (sigma_y = s_i + H_i (eps - e_i), the first
 // and last segments extended), the plastic strain increment solves q - 3 G de = R sigma_y(eps0
 // + de), i.e. de = (q - R h_i(eps0)) / (3 G + R H_i) in the segment that contains eps0 + de
-// (the left side minus the right decreases strictly in de: one root, one segment).
+// (the left side minus the right decreases strictly in de: one root, one segment).  With VP = 1
+// the factor depends on de: q - 3 G de = R(de/dt) sigma_y(eps0 + de) is solved by Newton's
+// method safeguarded by bisection (radial_return.h; yielding when q exceeds R(0) sigma_y(eps0)),
+// and the block form runs the scalar kernel lane by lane.
 //
 // Fixed format (an IMPACT-3D choice; no DYNA3D manual fixes type 24): card 3 E, nu, SIGY,
 // ETAN, FAIL, TDEL; card 4 C, P, LCSS, LCSR, VP; card 5 EPS1-8; card 6 ES1-8 (8 E10 each).
@@ -19,12 +25,15 @@
 
 #include "impact3d/material/material_block.h"
 #include "impact3d/material/material_types.h"
+#include "impact3d/material/radial_return.h"
 
 namespace impact3d {
 
 namespace {
 
 enum Par { kTdel, kLcss, kLcsr, kVP, kLcf, kEps1, kEs1 = kEps1 + 8, kNumPar = kEs1 + 8 };
+// MaterialConstants::k: the viscoplastic flag (VP = 1)
+enum K { kViscoplastic };
 
 // A parameter (0 when a programmatic MaterialData leaves par short).
 double par(const MaterialData& md, int i) { return std::size_t(i) < md.par.size() ? md.par[std::size_t(i)] : 0.0; }
@@ -40,7 +49,11 @@ int table_points(const MaterialData& md) {
 }
 
 void check(MaterialData& md, const MaterialType& t, const ParamReport& report) {
-  if (md.rate_c > 0 && !(md.rate_p > 0)) report(*find_param(t, "P"), 1003, "must be positive when C is given");
+  if (md.rate_c > 0 && !(md.rate_p > 0) && par(md, kLcsr) == 0) report(*find_param(t, "P"), 1003, "must be positive when C is given");
+  if (md.rate_c > 0 && par(md, kLcsr) > 0) report(*find_param(t, "C"), 2006, "C and P (the curve LCSR scales the yield stress)");
+  const double vp = par(md, kVP);
+  if (vp != 0 && vp != 1)
+    report(*find_param(t, "VP"), 1102, "VP other than 0 (the yield stress scaled by the strain rate) and 1 (viscoplastic)");
   if (md.fail_strain < 0) report(*find_param(t, "FAIL"), 1102, "a user failure subroutine (FAIL < 0)");
   if (md.fail_strain >= 1e19) md.fail_strain = 0;  // LS-DYNA's default 1e21: never
   const int n = table_points(md);
@@ -59,10 +72,21 @@ void derive(const MaterialData& d, const Model& m, MaterialConstants& c) {
   c.sigma_y = d.sigma_y;
   c.E_tan = d.E_tan;
   c.beta = 1;
-  if (d.rate_c > 0 && d.rate_p > 0) {
+  const int lcsr = int(par(d, kLcsr));
+  c.rate_x.clear();
+  c.rate_f.clear();
+  c.rate_slope.clear();
+  if (lcsr > 0 && std::size_t(lcsr) <= m.load_curves.size()) {
+    const LoadCurve& lc = m.load_curves[std::size_t(lcsr - 1)];
+    c.rate_x = lc.t;
+    c.rate_f = lc.f;
+    for (std::size_t i = 0; i + 1 < lc.t.size(); ++i)
+      c.rate_slope.push_back(lc.t[i + 1] > lc.t[i] ? (lc.f[i + 1] - lc.f[i]) / (lc.t[i + 1] - lc.t[i]) : 0.0);
+  } else if (d.rate_c > 0 && d.rate_p > 0) {
     c.rate_c = d.rate_c;
     c.rate_inv_p = 1.0 / d.rate_p;
   }
+  c.k[kViscoplastic] = par(d, kVP) == 1 && (c.rate_c > 0 || !c.rate_x.empty()) ? 1.0 : 0.0;
   if (d.fail_strain > 0) c.fail_strain = d.fail_strain;
   c.tdel = par(d, kTdel);
   const int lcss = int(par(d, kLcss));
@@ -111,10 +135,15 @@ void echo(std::ostream& os, const MaterialData& md) {
     echo_line(os, "tangent modulus", f6(md.E_tan) + " (stress)");
     echo_line(os, "plastic hardening modulus (derived)", f6(Ep) + " (stress)");
   }
-  if (md.rate_c > 0) {
+  const char* rate = par(md, kVP) == 1 ? "plastic strain rate (VP = 1, viscoplastic)" : "total strain rate sqrt(D:D) (VP = 0)";
+  if (par(md, kLcsr) > 0) {
+    echo_line(os, "strain-rate factor", "load curve " + std::to_string(int(par(md, kLcsr))) + " (rate -> factor)");
+    echo_line(os, "rate of the factor", rate);
+  } else if (md.rate_c > 0) {
     char p[32];
     std::snprintf(p, sizeof p, "%.4g", md.rate_p);
     echo_line(os, "strain-rate factor (Cowper-Symonds)", "1 + (rate/C)^(1/P), C " + f6(md.rate_c) + " (1/time), P " + p);
+    echo_line(os, "rate of the factor", rate);
   }
   if (md.fail_strain > 0) echo_line(os, "failure plastic strain (deletion)", f6(md.fail_strain));
   if (par(md, kTdel) > 0) echo_line(os, "deletion below element step TDEL", f6(par(md, kTdel)) + " (time)");
@@ -122,6 +151,48 @@ void echo(std::ostream& os, const MaterialData& md) {
 
 double rate_norm(const double d[6]) {
   return std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2] + 2.0 * (d[3] * d[3] + d[4] * d[4] + d[5] * d[5]));
+}
+
+// The rate factor R at this rate and its slope dR (Cowper-Symonds or the LCSR curve; 1, 0
+// without rate effects).
+void calc_rate_factor(const MaterialConstants& m, double rate, double& R, double& dR) {
+  const int n = int(m.rate_x.size());
+  if (n > 0) {
+    const double* x = m.rate_x.data();
+    if (n == 1 || rate <= x[0]) {
+      R = m.rate_f[0];
+      dR = 0.0;
+      return;
+    }
+    if (rate >= x[n - 1]) {
+      R = m.rate_f[std::size_t(n - 1)];
+      dR = 0.0;
+      return;
+    }
+    int i = 0;
+    while (i + 2 < n && rate > x[i + 1]) ++i;
+    dR = m.rate_slope[std::size_t(i)];
+    R = m.rate_f[std::size_t(i)] + dR * (rate - x[i]);
+    return;
+  }
+  if (m.rate_c > 0.0) {
+    const double r = rate / m.rate_c;
+    R = 1.0 + std::pow(r, m.rate_inv_p);
+    dR = r > 0.0 ? m.rate_inv_p * std::pow(r, m.rate_inv_p - 1.0) / m.rate_c : (m.rate_inv_p < 1.0 ? HUGE_VAL : m.rate_inv_p == 1.0 ? 1.0 / m.rate_c : 0.0);
+    return;
+  }
+  R = 1.0;
+  dR = 0.0;
+}
+
+// The flow stress of the hardening curve at plastic strain e and its slope (the end segments
+// extended).
+void calc_curve_flow(const MaterialConstants& m, double e, double& s, double& ds) {
+  const int ns = int(m.curve_slope.size());
+  int i = 0;
+  while (i + 1 < ns && e > m.curve_eps[std::size_t(i + 1)]) ++i;
+  ds = m.curve_slope[std::size_t(i)];
+  s = m.curve_sig[std::size_t(i)] + ds * (e - m.curve_eps[std::size_t(i)]);
 }
 
 // The plastic strain increment for trial von Mises stress q, plastic strain e0, rate factor R
@@ -149,6 +220,18 @@ double calc_plastic_strain_increment(const MaterialConstants& m, double q, doubl
   return de > 0.0 ? de : 0.0;
 }
 
+// VP = 1: the plastic strain increment of q - 3 G de = R(de/dt) sigma_y(e0 + de).
+double calc_viscoplastic_strain_increment(const MaterialConstants& m, double q, double e0, double dt) {
+  const double inv_dt = dt > 0.0 ? 1.0 / dt : 0.0;
+  return solve_radial_return(q, 3.0 * m.G, e0, [&](double e, double& s, double& ds) {
+    double h, dh, R, dR;
+    calc_curve_flow(m, e, h, dh);
+    calc_rate_factor(m, (e - e0) * inv_dt, R, dR);
+    s = R * h;
+    ds = dR >= HUGE_VAL ? HUGE_VAL : R * dh + dR * inv_dt * h;
+  });
+}
+
 void update_point(const MaterialConstants& m, const double d[6], double dt, SolidPointState& s) {
   update_stress_elastic(m, d, dt, s.sig);  // elastic trial
   double* sig = s.sig;
@@ -156,8 +239,14 @@ void update_point(const MaterialConstants& m, const double d[6], double dt, Soli
   const double s0 = sig[0] - p, s1 = sig[1] - p, s2 = sig[2] - p;
   const double xx = s0 * s0 + s1 * s1 + s2 * s2 + 2.0 * (sig[3] * sig[3] + sig[4] * sig[4] + sig[5] * sig[5]);
   const double q = std::sqrt(1.5 * xx);
-  const double R = m.rate_c > 0.0 ? 1.0 + std::pow(rate_norm(d) / m.rate_c, m.rate_inv_p) : 1.0;
-  const double de = calc_plastic_strain_increment(m, q, s.eps_p, R);
+  double de;
+  if (m.k[kViscoplastic] != 0.0) {
+    de = calc_viscoplastic_strain_increment(m, q, s.eps_p, dt);
+  } else {
+    double R = 1.0, dR;
+    if (m.rate_c > 0.0 || !m.rate_x.empty()) calc_rate_factor(m, rate_norm(d), R, dR);
+    de = calc_plastic_strain_increment(m, q, s.eps_p, R);
+  }
   if (!(de > 0.0)) return;
   const double rs = 3.0 * m.G * de / q;
   sig[0] -= rs * s0;
@@ -171,14 +260,31 @@ void update_point(const MaterialConstants& m, const double d[6], double dt, Soli
 }
 
 void update_block(const MaterialConstants& m, HexBlock& k, double dt) {
+  if (m.k[kViscoplastic] != 0.0) {  // Newton per lane: the scalar kernel lane by lane
+    for (int l = 0; l < kLanes; ++l) {
+      SolidPointState st;
+      double d[6];
+      for (int c = 0; c < 6; ++c) d[c] = k.d[c][l], st.sig[c] = k.sig[c][l];
+      st.eps_p = k.eps_p[l];
+      st.yielded = k.yielded[l];
+      update_point(m, d, dt, st);
+      for (int c = 0; c < 6; ++c) k.sig[c][l] = st.sig[c];
+      k.eps_p[l] = st.eps_p;
+      k.yielded[l] = st.yielded;
+    }
+    return;
+  }
   update_stress_elastic_block(m, k.d, dt, k.sig);  // elastic trial
   alignas(64) Lanes R, q, de, found;
-  if (m.rate_c > 0.0) {
+  if (m.rate_c > 0.0 || !m.rate_x.empty()) {
     IMPACT3D_FOR_LANES {
       R[l] = std::sqrt(k.d[0][l] * k.d[0][l] + k.d[1][l] * k.d[1][l] + k.d[2][l] * k.d[2][l] +
                        2.0 * (k.d[3][l] * k.d[3][l] + k.d[4][l] * k.d[4][l] + k.d[5][l] * k.d[5][l]));
     }
-    for (int l = 0; l < kLanes; ++l) R[l] = 1.0 + std::pow(R[l] / m.rate_c, m.rate_inv_p);
+    for (int l = 0; l < kLanes; ++l) {
+      double dR;
+      calc_rate_factor(m, R[l], R[l], dR);
+    }
   } else {
     IMPACT3D_FOR_LANES R[l] = 1.0;
   }
@@ -255,10 +361,10 @@ const MaterialType& mat_piecewise_linear_type() {
         {.key = "P", .kcard = 1, .kfield = 1, .fcard = 4, .fcol = 11, .field = &MaterialData::rate_p, .optional_write = true},
         {.key = "LCSS", .kcard = 1, .kfield = 2, .fcard = 4, .fcol = 21, .index = kLcss, .check = ParamCheck::curve,
          .detail = "a load-curve number (0: none)", .optional_write = true},
-        {.key = "LCSR", .kcard = 1, .kfield = 3, .fcard = 4, .fcol = 31, .index = kLcsr, .check = ParamCheck::unsupported,
-         .detail = "the strain-rate scaling curve LCSR (use C and P)"},
-        {.key = "VP", .kcard = 1, .kfield = 4, .fcard = 4, .fcol = 41, .index = kVP, .check = ParamCheck::unsupported,
-         .detail = "VP other than 0 (VP = 0 scales the yield stress)"},
+        {.key = "LCSR", .kcard = 1, .kfield = 3, .fcard = 4, .fcol = 31, .index = kLcsr, .check = ParamCheck::curve,
+         .detail = "a load-curve number (0: none; strain rate -> yield-stress factor)", .optional_write = true},
+        {.key = "VP", .kcard = 1, .kfield = 4, .fcard = 4, .fcol = 41, .index = kVP,
+         .detail = "VP: 0 the yield stress scaled by the strain rate, 1 viscoplastic", .optional_write = true},
         {.key = "LCF", .kcard = 1, .kfield = 5, .index = kLcf, .check = ParamCheck::unsupported,
          .detail = "the failure curve LCF"},
         table_param("EPS1", 3, 0, kEps1 + 0), table_param("EPS2", 3, 1, kEps1 + 1),
