@@ -190,7 +190,7 @@ void BM_ShellBTKernel(benchmark::State& st) {
   g.c_plate = 5400;
   double sig[50] = {}, back[60] = {}, eps[10] = {};
   unsigned char yielded[10] = {};
-  ShellPointState ps{sig, plastic ? back : nullptr, plastic ? eps : nullptr, plastic ? yielded : nullptr, nullptr};
+  ShellPointState ps{sig, plastic ? back : nullptr, plastic ? eps : nullptr, plastic ? yielded : nullptr, nullptr, nullptr};
   ShellKernelIO io;
   const double X[4][3] = {{0, 0, 0}, {0.01, 0.001, 0}, {0.011, 0.01, 0.0005}, {0, 0.009, 0}};
   for (int i = 0; i < 4; ++i)

@@ -164,6 +164,14 @@ void calc_shell_bt_forces(const ShellGroupConstants& g, const MaterialConstants&
   }
   gxz += 0.25 * swy;   // 2 d_xz
   gyz -= 0.25 * swx;   // 2 d_yz
+  // drilling: the corners' rotation rates about e3 less the in-plane spin
+  double drate[4] = {0, 0, 0, 0};
+  if (st.drill) {
+    double spin = 0;
+    for (int i = 0; i < 4; ++i) spin += fm.b1[i] * vl[i][1] - fm.b2[i] * vl[i][0];
+    spin *= 0.5;
+    for (int i = 0; i < 4; ++i) drate[i] = dot(fm.e[2], io.w[i]) - spin;
+  }
   io.strain_rate_membrane[0] = dxx;
   io.strain_rate_membrane[1] = dyy;
   io.strain_rate_membrane[2] = 0.5 * gxy;
@@ -280,11 +288,31 @@ void calc_shell_bt_forces(const ShellGroupConstants& g, const MaterialConstants&
       ml[i][1] += gam[i] * Q[4];
     }
   }
+  // drilling constraint: corner moments about e3 (integrated over the step, kept in the
+  // co-rotational frame as the hourglass resultants) and their reaction on the in-plane spin
+  double mz[4] = {0, 0, 0, 0};
+  if (st.drill && g.drill_coef > 0) {
+    const double kd = g.drill_coef * g.G * h * A / 4.0;
+    double msum = 0, dwork = 0;
+    for (int i = 0; i < 4; ++i) {
+      const double m0 = st.drill[i];
+      const double m1 = m0 + kd * drate[i] * dt;
+      st.drill[i] = m1;
+      mz[i] = m1;
+      msum += m1;
+      dwork += 0.5 * (m0 + m1) * drate[i] * dt;
+    }
+    io.de_ie += dwork;
+    for (int i = 0; i < 4; ++i) {
+      fl[i][0] += 0.5 * msum * fr.b2[i];
+      fl[i][1] -= 0.5 * msum * fr.b1[i];
+    }
+  }
   // to the global frame
   for (int i = 0; i < 4; ++i)
     for (int a = 0; a < 3; ++a) {
       io.f[i][a] = fl[i][0] * fr.e[0][a] + fl[i][1] * fr.e[1][a] + fl[i][2] * fr.e[2][a];
-      io.m[i][a] = ml[i][0] * fr.e[0][a] + ml[i][1] * fr.e[1][a];
+      io.m[i][a] = ml[i][0] * fr.e[0][a] + ml[i][1] * fr.e[1][a] + mz[i] * fr.e[2][a];
     }
   const bool tri = io.x[2][0] == io.x[3][0] && io.x[2][1] == io.x[3][1] && io.x[2][2] == io.x[3][2];
   io.dt_e = calc_shell_step_length(io.x, A, tri) / g.c_plate;

@@ -13,12 +13,27 @@
 //   2 d_xz = B1.vz + sum(wy)/4,   2 d_yz = B2.vz - sum(wx)/4
 // and the nodal forces and moments are their work conjugates (virtual power), so the element
 // books exactly the work its forces do.
+//
+// Drilling constraint (Hughes and Brezzi 1989, as a penalty on the corners): the nodal
+// rotation about the shell normal is tied to the element's in-plane spin
+//   omega_z = (dvy/dx - dvx/dy) / 2 = sum(B1 vy - B2 vx) / 2,
+// corner moment rate dM_i/dt = k_d (w_i.e3 - omega_z), k_d = drill_coef G h A / 4, with the
+// moments' reaction on the translations (work conjugate).  A rigid rotation gives no moment.
+// Without it, a node's rotation about the normal is free, and on a curved (faceted) mesh it
+// projects on the neighbours' in-plane axes with opposite signs: it enters their twist as
+// -theta_n / R and takes away the twisting stiffness of a curved shell (the Scordelis-Lo roof
+// 1.47 x the reference; README "Shells").
 
 #include "impact3d/material/material.h"
 
 namespace impact3d {
 
 constexpr int kMaxShellIntegrationPoints = 10;
+
+// The drilling constraint's coefficient (ShellGroupConstants::drill_coef) of IMPACT-3D's shells:
+// corner stiffness 0.01 G h A / 4 (small against the membrane stiffness E h A B.B; the answers
+// hardly depend on it: README "Shells").
+constexpr double kShellDrillingCoef = 0.01;
 
 // Through-thickness Gauss-Legendre rule on [-1, 1] with n points (1-10): points and weights
 // (sum 2).
@@ -33,6 +48,7 @@ struct ShellGroupConstants {
   double hourglass_coef = 0.1;
   double rho = 0, E = 0, nu = 0, G = 0;
   double c_plate = 0;       // sqrt(E / (rho (1 - nu^2))): membrane wave speed, the step's
+  double drill_coef = 0;    // drilling constraint: corner stiffness drill_coef G h A / 4 (0: none)
 };
 
 // One shell's data for the kernel.  x at t^n, v and w (angular velocities) at t^{n-1/2}.
@@ -69,6 +85,7 @@ struct ShellPointState {
   double* eps_p;           // 1 per point (plastic-kinematic), else null
   unsigned char* yielded;  // 1 per point (plastic-kinematic), else null
   double* hgq;             // 5 hourglass resultants (stiffness forms), else null
+  double* drill;           // 4 corner drilling moments (about e3), else null: no constraint
 };
 
 // The whole element: kinematics at the midpoint geometry x^{n-1/2} = x^n - dt/2 v, stress

@@ -41,6 +41,7 @@ ShellGroupConstants group_constants(const MaterialData& md, const MaterialConsta
   g.nu = mc.nu;
   g.G = mc.G;
   g.c_plate = mc.rho > 0 ? std::sqrt(mc.E / (mc.rho * (1 - mc.nu * mc.nu))) : 0.0;
+  g.drill_coef = kShellDrillingCoef;
   return g;
 }
 
@@ -127,6 +128,7 @@ void init_shells(const Model& m, State& s) {
   sh.eps_p.assign(plastic ? nip_total : 0, 0.0);
   sh.yielded.assign(plastic ? nip_total : 0, 0);
   sh.hgq.assign(hg_state ? 5 * std::size_t(ns) : 0, 0.0);
+  sh.drill.assign(4 * std::size_t(ns), 0.0);
   for (auto* v : {&sh.dt_e, &sh.de_ie, &sh.de_hg, &sh.energy}) v->assign(std::size_t(ns), 0.0);
   sh.bad.assign(std::size_t(ns), 0);
   sh.rigid_elem.assign(std::size_t(ns), 0);

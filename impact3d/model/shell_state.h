@@ -36,6 +36,7 @@ struct ShellState {
   std::vector<double> eps_p;                  // 1 per point (plastic-kinematic; else empty)
   std::vector<std::uint8_t> yielded;          // 1 per point (plastic-kinematic; else empty)
   std::vector<double> hgq;                    // 5 per shell: hourglass resultants (stiffness forms)
+  std::vector<double> drill;                  // 4 per shell: corner drilling moments (about e3)
   std::vector<double> dt_e;                   // element step
   std::vector<double> ms_factor;              // mass-scaling factor (empty without mass scaling)
   std::vector<double> de_ie, de_hg;           // this pass's energy increments per shell

@@ -145,7 +145,7 @@ struct State {
     v(kinetic); v(internal); v(hourglass); v(bulk_viscous); v(wall_work); v(contact);
     v(external_work); v(initial_total); v(wall_force); v(wall_disp); v(wall_vel);
     v(shells.area); v(shells.sig); v(shells.back); v(shells.eps_p); v(shells.yielded);
-    v(shells.hgq); v(shells.dt_e); v(shells.energy); v(shells.failed); v(shells.cmx); v(shells.cmy); v(shells.cmz);
+    v(shells.hgq); v(shells.drill); v(shells.dt_e); v(shells.energy); v(shells.failed); v(shells.cmx); v(shells.cmy); v(shells.cmz);
     v(shells.wx); v(shells.wy); v(shells.wz); v(shells.rot_kinetic);
     for (RigidBody& rb : rigid) {
       v(rb.com); v(rb.vcom); v(rb.rot); v(rb.omega); v(rb.ang_mom);

@@ -39,8 +39,8 @@ struct DumpHeader {
 // 4: x= in the header; 5: the failed-solid flags in the State; 6: moving walls; 8: per-element
 // material history (State::hist) or shells (two branches); 9: both (State::hist and
 // State::shells: stresses, history, rotations); 11: the interface-force database (s=, its
-// cursor) in the header.
-constexpr std::uint32_t kDumpVersion = 11;
+// cursor) in the header; 12: the shells' corner drilling moments.
+constexpr std::uint32_t kDumpVersion = 12;
 
 // Writes the dump atomically (temporary file, fsync, rename).  Throws std::runtime_error.
 // The contact state (energy books of the sliding interfaces) travels with the State.

@@ -59,7 +59,8 @@ void process_shell(State& s, const ShellGroup& g, int k, double dt) {
   const bool plastic = g.kernel == ShellKernel::plastic_kinematic;
   ShellPointState st{&sh.sig[5 * ip], plastic ? &sh.back[6 * ip] : nullptr,
                      plastic ? &sh.eps_p[ip] : nullptr, plastic ? &sh.yielded[ip] : nullptr,
-                     sh.hgq.empty() ? nullptr : &sh.hgq[5 * std::size_t(k)]};
+                     sh.hgq.empty() ? nullptr : &sh.hgq[5 * std::size_t(k)],
+                     &sh.drill[4 * std::size_t(k)]};
   calc_shell_bt_forces(g.constants, s.mats[std::size_t(g.material)], material_kind(g.kernel), io, st);
   sh.bad[std::size_t(k)] = io.bad;
   if (io.bad) {

@@ -3,18 +3,19 @@
 // diaphragms at the ends, two opposite radial loads P = 1 at mid-length; an octant model of
 // 16 x 16 Belytschko-Tsay shells (P/4 on the loaded node), brought to the static answer by
 // dynamic relaxation (*DAMPING_GLOBAL).  Reference: radial displacement 1.8248e-5 under the load.
-// Measured by hand with the generator's --n (README "Shells"): 8 x 8 0.832, 16 x 16 1.027,
-// 32 x 32 1.085 x the reference, converging past it (to about 1.1 x by the increments), as the
-// Scordelis-Lo roof does: the 16 x 16 value being near the reference is a mesh coincidence, not
-// a passed verification.  This test checks
+// Measured by hand with the generator's --n (README "Shells"): 8 x 8 0.792, 16 x 16 0.954,
+// 32 x 32 0.999 x the reference, converging to it from below as 4-node shells do (before the
+// shells' drilling constraint: 0.832, 1.027, 1.085, converging past it to about 1.1 x, as the
+// Scordelis-Lo roof did).  This test checks
 //   * the static state: over the last fifth of the run (two periods of the slowest oscillation
 //     left: *DAMPING_GLOBAL does not damp the shells' rotations, and a mode of period about 30
 //     keeps +-0.07 % of w) the displacement stays within 3e-3 of its mean, which is the measured
 //     w; the kinetic energy is below 1e-3 of the internal energy;
 //   * the energy balance (load work = strain energy + damped energy + kinetic) to 1e-3;
 //   * Clapeyron: the load's work on the final displacement (P/4) w = 2 U (linear) to 2e-3;
-//   * the displacement: within 0.5 % of this build's 1.8742e-5 (1.027 x the reference; a
-//     regression check of the documented number, not an agreement with the reference).
+//   * the displacement: below the reference and within 6 % of it (16 x 16 is 4.6 % below: the
+//     mesh's error, 0.1 % at 32 x 32), and within 0.5 % of this build's 1.7400e-5 (a regression
+//     check of the documented number).
 
 #include <gtest/gtest.h>
 
@@ -28,7 +29,7 @@
 
 using namespace impact3d;
 
-TEST(PinchedCylinder, DynamicRelaxationMeasuredAgainstTheReference) {
+TEST(PinchedCylinder, DynamicRelaxationAgreesWithTheReference) {
   const std::string path = std::string(IMPACT3D_SOURCE_DIR) + "/decks/keyword/pinched_cylinder.k";
   Model m;
   Diagnostics d;
@@ -66,5 +67,7 @@ TEST(PinchedCylinder, DynamicRelaxationMeasuredAgainstTheReference) {
   EXPECT_LT(s.kinetic, 1e-3 * strain_energy);
   EXPECT_NEAR(s.energy_ratio(), 1.0, 1e-3);
   EXPECT_NEAR(clapeyron, 1.0, 2e-3);
-  EXPECT_NEAR(w, 1.8742e-5, 0.005 * 1.8742e-5);
+  EXPECT_LT(w, ref);
+  EXPECT_GT(w, 0.94 * ref);
+  EXPECT_NEAR(w, 1.7400e-5, 0.005 * 1.7400e-5);
 }

@@ -1,24 +1,23 @@
 // The Scordelis-Lo roof (MacNeal-Harder 1985 shell benchmark), decks/keyword/scordelis_lo_roof.k:
-// a quarter model of 16 x 16 Belytschko-Tsay shells under self weight, brought to the static
-// answer by dynamic relaxation (*DAMPING_GLOBAL).  Reference: vertical displacement 0.3024 at
-// the middle of the free edge.  README "Shells" states what is measured and what is not
-// understood: IMPACT-3D's one-point BT shells converge with refinement to about 1.11 x the
-// reference at this load (8 x 8 1.158, 16 x 16 1.114, 32 x 32 1.107 at QM 0.1) and to about
-// 1.47 x in the linear regime (1% of the load); plate bending, twist and a curved strip agree
-// with their closed forms, so the gap is an open question of the element, not of the mesh.
+// a quarter model of 16 x 16 Belytschko-Tsay shells under 1 % of the self weight (the reference is
+// a linear answer: README "Shells"), brought to the static answer by dynamic relaxation
+// (*DAMPING_GLOBAL).  Reference: vertical displacement 0.3024 at the middle of the free edge.
+// Without the shells' drilling constraint the roof converged to 1.47 x the reference (8/16/32:
+// 1.52/1.48/1.47); with it 8 x 8 1.013, 16 x 16 0.990, 32 x 32 0.984 (measured with the
+// generator's --n; the pinched cylinder likewise: tests/decks/test_pinched_cylinder.cpp).
 // This test checks
 //   * the static state is reached: the displacement changes by less than 1e-4 of itself over the
 //     last tenth of the run, and the kinetic energy (rotations are not damped) is below 1% of the
 //     internal energy;
 //   * the energy balance: energy ratio 1 to 1e-3 (gravity work = strain + damped + kinetic);
-//   * the work of the gravity loads on the final displacements, sum m g w, is 2 U (Clapeyron) to
-//     within the 10% the geometric stiffening allows (measured 1.082);
-//   * the free-edge displacement: above 0.3024 and within 12% of it (the stated gap), and within
-//     0.5% of this build's 0.3368 (a regression check of the documented number).
-
+//   * Clapeyron (linear): the work of the gravity loads on the final displacements, sum m g w,
+//     is 2 U to 1e-2;
+//   * the benchmark: w / 0.01 within 2 % of 0.3024 (measured 0.2993, -1.0 %), and within 0.5 % of
+//     this build's 0.2993 (a regression check of the documented number).
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include "impact3d/input/deck_reader.h"
@@ -26,7 +25,7 @@
 
 using namespace impact3d;
 
-TEST(ScordelisLoRoof, DynamicRelaxationReachesTheBenchmarkWithinTheBtError) {
+TEST(ScordelisLoRoof, DynamicRelaxationAgreesWithTheReference) {
   const std::string path = std::string(IMPACT3D_SOURCE_DIR) + "/decks/keyword/scordelis_lo_roof.k";
   Model m;
   Diagnostics d;
@@ -46,6 +45,7 @@ TEST(ScordelisLoRoof, DynamicRelaxationReachesTheBenchmarkWithinTheBtError) {
     if (w90 == 0 && s.time >= 0.9 * m.control.end_time) w90 = s.z[std::size_t(node)] - m.z[std::size_t(node)];
   }
   ASSERT_EQ(st, StepStatus::finished);
+  const double load = 0.01;  // *LOAD_BODY_Z SF: 1 % of the self weight
   const double w = -(s.z[std::size_t(node)] - m.z[std::size_t(node)]);
   // static state reached
   EXPECT_LT(std::fabs(w + w90), 1e-4 * w) << "w " << w << " at 0.9 T " << -w90;
@@ -53,16 +53,16 @@ TEST(ScordelisLoRoof, DynamicRelaxationReachesTheBenchmarkWithinTheBtError) {
   EXPECT_NEAR(s.energy_ratio(), 1.0, 1e-3);
   // Clapeyron: the loads' work on the final displacements = twice the strain energy
   double load_work = 0;
-  for (int i = 0; i < m.num_nodes(); ++i) load_work += s.mass[std::size_t(i)] * 1.0 * -(s.z[std::size_t(i)] - m.z[std::size_t(i)]);
+  for (int i = 0; i < m.num_nodes(); ++i)
+    load_work += s.mass[std::size_t(i)] * load * -(s.z[std::size_t(i)] - m.z[std::size_t(i)]);
   const double strain_energy = s.internal + s.hourglass;
   const double clapeyron = load_work / (2 * strain_energy);
   std::printf("Scordelis-Lo roof: sum m g w / 2U = %.4f, energy ratio %.6f\n", clapeyron, s.energy_ratio());
-  EXPECT_GT(clapeyron, 1.0);   // stiffening: the loads did more than twice the stored energy's work
-  EXPECT_LT(clapeyron, 1.10);
+  EXPECT_NEAR(clapeyron, 1.0, 1e-2);
   // the benchmark
   const double ref = 0.3024;
-  std::printf("Scordelis-Lo roof 16 x 16: w = %.5f, %.4f x the reference 0.3024\n", w, w / ref);
-  EXPECT_GT(w, ref);
-  EXPECT_LT(w, 1.12 * ref);
-  EXPECT_NEAR(w, 0.3368, 0.005 * 0.3368);
+  std::printf("Scordelis-Lo roof 16 x 16: w / load = %.5f, %.4f x the reference 0.3024\n", w / load,
+              w / load / ref);
+  EXPECT_NEAR(w / load, ref, 0.02 * ref);
+  EXPECT_NEAR(w / load, 0.2993, 0.005 * 0.2993);
 }
