@@ -19,23 +19,14 @@ dynamics of the relaxation depend on it).  The static answer is reached by dynam
 import argparse
 import math
 
-
-def e16(v):
-    s = "%.9e" % v
-    return "%16s" % s
-
-
-def i(v, w=10):
-    return "%*d" % (w, v)
+from shell_benchmark import (add_common_arguments, i, symmetry_and_diaphragm_flags, write_controls, write_curve,
+                             write_damping_and_end, write_elastic_shell_part, write_grid, write_spc)
 
 
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--n", type=int, default=16, help="shells per side of the octant model")
-    ap.add_argument("--ihq", type=int, default=4, help="hourglass type (4: stiffness)")
-    ap.add_argument("--qm", type=float, default=0.1, help="hourglass coefficient")
-    ap.add_argument("--damping", type=float, default=0.5, help="*DAMPING_GLOBAL VALDMP (1/time)")
-    ap.add_argument("--end", type=float, default=300.0, help="termination time")
+    add_common_arguments(ap, damping=0.5, end=300.0)
     a = ap.parse_args()
     n = a.n
     R, half_len, t = 300.0, 300.0, 3.0
@@ -47,76 +38,30 @@ def main():
     w("$ Pinched cylinder (MacNeal-Harder 1985): R 300, L 600, t 3, E 3e6, nu 0.3, rigid diaphragms,")
     w("$ two opposite loads P = 1 at mid-length; octant model %d x %d Belytschko-Tsay shells, P/4 on" % (n, n))
     w("$ node 1; reference radial displacement 1.8248e-5 under the load.")
-    w("$ Static answer by dynamic relaxation (*DAMPING_GLOBAL). README \"Shells\".")
-    w("*TITLE")
-    w("Pinched cylinder, octant model %dx%d, dynamic relaxation" % (n, n))
-    w("*CONTROL_TERMINATION")
-    w("%10g" % a.end)
-    w("*DATABASE_BINARY_D3PLOT")
-    w("%10g" % (a.end / 4))
-    w("*DATABASE_NODOUT")
-    w("%10g" % (a.end / 200))
-    w("*DATABASE_HISTORY_NODE")
-    w(i(1))
-    w("*PART")
-    w("cylinder")
-    w("$     pid     secid       mid     eosid      hgid")
-    w(i(1) + i(1) + i(1) + i(0) + i(1))
-    w("*SECTION_SHELL")
-    w("$   secid    elform      shrf       nip")
-    w(i(1) + i(2) + "%10.7f" % (5.0 / 6.0) + i(2))
-    w("%10g" % t)
-    w("*MAT_ELASTIC")
-    w("$     mid        ro         e        pr")
-    w(i(1) + "%10g" % 1.0 + "%10g" % 3e6 + "%10g" % 0.3)
-    w("*HOURGLASS")
-    w("$    hgid       ihq        qm")
-    w(i(1) + i(a.ihq) + "%10g" % a.qm)
-    w("*NODE")
-    # node (k along x, j along the arc): id = 1 + j (n + 1) + k, x = 300 k / n, angle 90 j / n
-    # from the top; the loaded point (x = 0, top) is node 1
-    for j in range(n + 1):
+    write_controls(w, "Pinched cylinder, octant model %dx%d, dynamic relaxation" % (n, n), a.end, 1)
+    write_elastic_shell_part(w, "cylinder", t, 1.0, 3e6, 0.3, a.ihq, a.qm)
+
+    # x = 300 k / n along the axis, angle 90 j / n from the top; the loaded point (x = 0, top)
+    # is node 1; the side (j = n) exactly on z = 0
+    def position(j, k):
         th = 0.5 * math.pi * j / n
-        for k in range(n + 1):
-            x = half_len * k / n
-            y = R if j == n else R * math.sin(th)
-            z = 0.0 if j == n else R * math.cos(th)
-            w("%8d" % (1 + j * (n + 1) + k) + e16(x) + e16(y) + e16(z))
-    w("*ELEMENT_SHELL")
-    e = 0
-    for j in range(n):
-        for k in range(n):
-            e += 1
-            n1 = 1 + j * (n + 1) + k
-            # outward normal: x cross (the arc's direction) points out of the cylinder
-            w("%8d%8d%8d%8d%8d%8d" % (e, 1, n1, n1 + 1, n1 + 1 + n + 1, n1 + n + 1))
-    w("*BOUNDARY_SPC_NODE")
-    w("$     nid       cid      dofx      dofy      dofz     dofrx     dofry     dofrz")
-    for j in range(n + 1):
-        for k in range(n + 1):
-            f = [0] * 6
-            if k == 0:       # midspan symmetry plane x = 0
-                f[0] = f[4] = f[5] = 1
-            if k == n:       # rigid diaphragm
-                f[1] = f[2] = 1
-            if j == 0:       # symmetry plane y = 0 (through the loads)
-                f[1] = f[3] = f[5] = 1
-            if j == n:       # symmetry plane z = 0
-                f[2] = f[3] = f[4] = 1
-            if any(f):
-                w(i(1 + j * (n + 1) + k) + i(0) + "".join(i(v) for v in f))
-    w("*DEFINE_CURVE")
-    w(i(1))
-    w("%20g%20g" % (0.0, 0.0))
-    w("%20g%20g" % (a.end / 5, 1.0))
-    w("%20g%20g" % (1e6, 1.0))
+        return half_len * k / n, R if j == n else R * math.sin(th), 0.0 if j == n else R * math.cos(th)
+
+    write_grid(w, n, position)
+
+    # the shared constraints (symmetry plane y = 0 through the loads) and the symmetry plane z = 0
+    def flags(j, k):
+        f = symmetry_and_diaphragm_flags(n, j, k)
+        if j == n:
+            f[2] = f[3] = f[4] = 1
+        return f
+
+    write_spc(w, n, flags)
+    write_curve(w, [(0.0, 0.0), (a.end / 5, 1.0), (1e6, 1.0)])
     w("*LOAD_NODE_POINT")
     w("$     nid       dof      lcid        sf")
     w(i(1) + i(3) + i(1) + "%10g" % -0.25)
-    w("*DAMPING_GLOBAL")
-    w("$    lcid    valdmp")
-    w(i(0) + "%10g" % a.damping)
-    w("*END")
+    write_damping_and_end(w, a.damping)
     print("\n".join(out))
 
 
