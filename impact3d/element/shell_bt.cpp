@@ -190,9 +190,12 @@ void calc_shell_bt_forces(const ShellGroupConstants& g, const MaterialConstants&
     if (dt > 0) {
       if (kind == ShellMaterialKind::elastic) {
         update_plane_stress_elastic(mc, d, dt, s);
-      } else {
+      } else if (kind == ShellMaterialKind::plastic_kinematic) {
         PlaneStressPlastic hp{st.back + 6 * p, st.eps_p + p, st.yielded + p};
         update_plane_stress_plastic_kinematic(mc, d, dt, s, hp);
+      } else {
+        PlaneStressPlastic hp{nullptr, st.eps_p + p, st.yielded + p};
+        update_plane_stress_piecewise_linear(mc, d, dt, s, hp);
       }
       // work on the true rates (the shear stress is SHRF times the elastic one)
       const double pw = 0.5 * ((old[0] + s[0]) * d[0] + (old[1] + s[1]) * d[1]) +

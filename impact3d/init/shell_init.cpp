@@ -1,21 +1,71 @@
 #include "impact3d/init/shell_init.h"
 
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <stdexcept>
 #include <string>
 
 namespace impact3d {
 
-bool has_shell_kernel(int type) { return type == 1 || type == 3 || type == 20; }
+namespace {
+
+// The one table of material types that shells take: type, kernel, and the type's fields that
+// shells refuse when nonzero (message 1102) with the feature's name.
+struct ShellMaterial {
+  int type;
+  ShellKernel kernel;
+  const char* refused_field;
+  const char* refused_feature;
+};
+constexpr ShellMaterial kShellMaterials[] = {
+    {1, ShellKernel::elastic, nullptr, nullptr},
+    {3, ShellKernel::plastic_kinematic, nullptr, nullptr},
+    {20, ShellKernel::rigid, nullptr, nullptr},
+    {24, ShellKernel::piecewise_linear, "TDEL", "deletion of shells by their time step (TDEL)"},
+};
+
+const ShellMaterial* find_shell_material(int type) {
+  for (const ShellMaterial& s : kShellMaterials)
+    if (s.type == type) return &s;
+  return nullptr;
+}
+
+}  // namespace
+
+bool has_shell_kernel(int type) { return find_shell_material(type) != nullptr; }
 
 ShellKernel shell_kernel_for_material_type(int type) {
-  switch (type) {
-    case 1: return ShellKernel::elastic;
-    case 3: return ShellKernel::plastic_kinematic;
-    case 20: return ShellKernel::rigid;
-    default: throw std::logic_error("no shell kernel for material type " + std::to_string(type));
+  if (const ShellMaterial* s = find_shell_material(type)) return s->kernel;
+  throw std::logic_error("no shell kernel for material type " + std::to_string(type));
+}
+
+std::string shell_material_keywords() {
+  std::string out;
+  for (const ShellMaterial& s : kShellMaterials) {
+    if (!out.empty()) out += ", ";
+    out += std::string("*") + material_type(s.type).keywords[0];
   }
+  return out;
+}
+
+std::string shell_material_numbers() {
+  std::string out;
+  const std::size_t n = std::size(kShellMaterials);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (i > 0) out += i + 1 == n ? " and " : ", ";
+    out += std::to_string(kShellMaterials[i].type);
+  }
+  return out;
+}
+
+const MaterialParam* refused_shell_param(const MaterialData& md, const char** feature) {
+  const ShellMaterial* s = find_shell_material(md.type);
+  if (!s || !s->refused_field) return nullptr;
+  const MaterialParam* p = find_param(material_type(md.type), s->refused_field);
+  if (!p || param_value(md, *p) == 0) return nullptr;
+  *feature = s->refused_feature;
+  return p;
 }
 
 double shell_rotary_inertia(double corner_mass, double h, double area) {
@@ -97,7 +147,7 @@ void init_shells(const Model& m, State& s) {
   for (int k = 0; k < ns; ++k) ++count[std::size_t(sh.mat[std::size_t(k)])];
   std::vector<int> first(s.mats.size(), 0);
   int placed = 0;
-  bool plastic = false, hg_state = false;
+  bool plastic = false, kinematic = false, hg_state = false;
   for (std::size_t k = 0; k < s.mats.size(); ++k) {
     if (count[k] == 0) continue;
     ShellGroup g;
@@ -108,7 +158,8 @@ void init_shells(const Model& m, State& s) {
     g.count = count[k];
     first[k] = placed;
     placed += count[k];
-    plastic = plastic || g.kernel == ShellKernel::plastic_kinematic;
+    plastic = plastic || shell_kernel_is_plastic(g.kernel);
+    kinematic = kinematic || g.kernel == ShellKernel::plastic_kinematic;
     hg_state = hg_state || (g.kernel != ShellKernel::rigid && g.constants.hourglass_type >= 4 &&
                             g.constants.hourglass_coef > 0);
     sh.groups.push_back(g);
@@ -124,7 +175,7 @@ void init_shells(const Model& m, State& s) {
   }
   const std::size_t nip_total = std::size_t(sh.ip_start[std::size_t(ns)]);
   sh.sig.assign(5 * nip_total, 0.0);
-  sh.back.assign(plastic ? 6 * nip_total : 0, 0.0);
+  sh.back.assign(kinematic ? 6 * nip_total : 0, 0.0);
   sh.eps_p.assign(plastic ? nip_total : 0, 0.0);
   sh.yielded.assign(plastic ? nip_total : 0, 0);
   sh.hgq.assign(hg_state ? 5 * std::size_t(ns) : 0, 0.0);

@@ -2,6 +2,9 @@
 // Initialization of the shells (State::shells): groups, integration points, masses and rotary
 // inertias, the shells' corners in the node -> corner map, the rotational degrees of freedom.
 
+#include <string>
+
+#include "impact3d/material/material_types.h"
 #include "impact3d/model/model.h"
 #include "impact3d/model/state.h"
 
@@ -13,6 +16,13 @@ namespace impact3d {
 ShellKernel shell_kernel_for_material_type(int type);
 // Whether shells of a material type have a kernel (the input phase refuses the others).
 bool has_shell_kernel(int type);
+// The materials shells take, for the readers' messages: "*MAT_ELASTIC, *MAT_PLASTIC_KINEMATIC,
+// ..." (their first keywords) and "1, 3, 20 and 24".
+std::string shell_material_keywords();
+std::string shell_material_numbers();
+// A parameter of md that shells refuse when nonzero (message 1102; *feature names what it
+// asks for), or nullptr.
+const MaterialParam* refused_shell_param(const MaterialData& md, const char** feature);
 
 // Rotary inertia that a shell corner of mass m gives its node: m (h^2 + A) / 12 (the scaled
 // rotary inertia of Kennedy, Belytschko and Lin 1986, so that the rotations never set the step).

@@ -48,6 +48,11 @@ struct SolidKernel {
   bool plastic_strain = false;  // reads and writes eps_p / yielded
 };
 
+// The 3-D point update of type 24 (*MAT_PIECEWISE_LINEAR_PLASTICITY: elastic trial, the
+// radial return on its flow curve with its rate factor; types/mat_piecewise_linear.cpp), the
+// solid kernel's scalar form, shared with the shells' plane-stress form (plane_stress.h).
+void update_stress_piecewise_linear(const MaterialConstants& m, const double d[6], double dt, SolidPointState& s);
+
 // A plane-stress kernel for shells: empty today (the shell family still picks its kernel in
 // impact3d/init/shell_init.cpp, shell_kernel_for_material_type; to move here).
 struct PlaneStressKernel {

@@ -4,6 +4,8 @@
 
 #include <cmath>
 
+#include "impact3d/material/material_types.h"
+
 namespace impact3d {
 
 double update_plane_stress_elastic(const MaterialConstants& m, const double d[5], double dt,
@@ -20,27 +22,50 @@ double update_plane_stress_elastic(const MaterialConstants& m, const double d[5]
 
 namespace {
 
-// One 3-D radial return from the saved state with thickness rate dzz: the resulting 3-D stress
-// (s3), back stress and plastic strain; returns sigma_zz.
-struct Trial {
-  double s3[6], back[6], eps_p;
-  unsigned char yielded;
-};
+// LS-DYNA's iterative plane stress: the thickness strain rate d_zz for which the 3-D update
+// from the saved state gives sigma_zz = 0.  trial(dzz) runs that update into the caller's trial
+// state (its 3-D stress s3, xx yy zz xy yz zx) and returns sigma_zz; the last trial is the
+// result.  The elastic guess first (exact when the point stays elastic), then the incompressible
+// rate and secant steps to |sigma_zz| <= 1e-10 (sigma_y + |sigma|), at most
+// kPlaneStressIterations.  Returns d_zz.
+template <class Trial3D>
+double solve_thickness_rate(const MaterialConstants& m, const double d[5], double dt, const double* s3,
+                            Trial3D&& trial) {
+  double z0 = -m.nu / (1.0 - m.nu) * (d[0] + d[1]);
+  double f0 = trial(z0);
+  const double scale = m.sigma_y + std::fabs(s3[0]) + std::fabs(s3[1]) + std::fabs(s3[3]);
+  const double tol = 1e-10 * scale;
+  if (std::fabs(f0) > tol) {
+    double z1 = -(d[0] + d[1]);
+    if (z1 == z0) z1 = z0 + 1e-6 * (std::fabs(z0) + 1e-30 / (dt > 0 ? dt : 1.0));
+    double f1 = trial(z1);
+    for (int it = 0; it < kPlaneStressIterations && std::fabs(f1) > tol && f1 != f0; ++it) {
+      const double z2 = z1 - f1 * (z1 - z0) / (f1 - f0);
+      z0 = z1;
+      f0 = f1;
+      z1 = z2;
+      f1 = trial(z1);
+    }
+    z0 = z1;
+  }
+  return z0;
+}
 
-double radial_return_with_dzz(const MaterialConstants& m, const double d[5], double dzz, double dt,
-                              const double sig0[5], const PlaneStressPlastic& h, Trial& t) {
-  const double d3[6] = {d[0], d[1], dzz, d[2], d[3], d[4]};
-  t.s3[0] = sig0[0];
-  t.s3[1] = sig0[1];
-  t.s3[2] = 0.0;
-  t.s3[3] = sig0[2];
-  t.s3[4] = sig0[3];
-  t.s3[5] = sig0[4];
-  for (int k = 0; k < 6; ++k) t.back[k] = h.back[k];
-  t.eps_p = *h.eps_p;
-  t.yielded = *h.yielded;
-  update_stress_elastic_plastic(m, d3, dt, t.s3, t.back, t.eps_p, t.yielded);
-  return t.s3[2];
+// The 3-D stress of a shell point (sigma_zz = 0) and back.
+void load_stress_3d(const double sig[5], double s3[6]) {
+  s3[0] = sig[0];
+  s3[1] = sig[1];
+  s3[2] = 0.0;
+  s3[3] = sig[2];
+  s3[4] = sig[3];
+  s3[5] = sig[4];
+}
+void store_stress_3d(const double s3[6], double sig[5]) {
+  sig[0] = s3[0];
+  sig[1] = s3[1];
+  sig[2] = s3[3];
+  sig[3] = s3[4];
+  sig[4] = s3[5];
 }
 
 }  // namespace
@@ -48,36 +73,40 @@ double radial_return_with_dzz(const MaterialConstants& m, const double d[5], dou
 double update_plane_stress_plastic_kinematic(const MaterialConstants& m, const double d[5],
                                              double dt, double sig[5],
                                              const PlaneStressPlastic& h) {
-  const double sig0[5] = {sig[0], sig[1], sig[2], sig[3], sig[4]};
-  Trial t;
-  // elastic guess: exact when the point stays elastic
-  double z0 = -m.nu / (1.0 - m.nu) * (d[0] + d[1]);
-  double f0 = radial_return_with_dzz(m, d, z0, dt, sig0, h, t);
-  const double scale = m.sigma_y + std::fabs(t.s3[0]) + std::fabs(t.s3[1]) + std::fabs(t.s3[3]);
-  const double tol = 1e-10 * scale;
-  if (std::fabs(f0) > tol) {
-    // second point: the incompressible (fully plastic) rate; then secant steps
-    double z1 = -(d[0] + d[1]);
-    if (z1 == z0) z1 = z0 + 1e-6 * (std::fabs(z0) + 1e-30 / (dt > 0 ? dt : 1.0));
-    double f1 = radial_return_with_dzz(m, d, z1, dt, sig0, h, t);
-    for (int it = 0; it < kPlaneStressIterations && std::fabs(f1) > tol && f1 != f0; ++it) {
-      const double z2 = z1 - f1 * (z1 - z0) / (f1 - f0);
-      z0 = z1;
-      f0 = f1;
-      z1 = z2;
-      f1 = radial_return_with_dzz(m, d, z1, dt, sig0, h, t);
-    }
-    z0 = z1;
-  }
-  sig[0] = t.s3[0];
-  sig[1] = t.s3[1];
-  sig[2] = t.s3[3];
-  sig[3] = t.s3[4];
-  sig[4] = t.s3[5];
-  for (int k = 0; k < 6; ++k) h.back[k] = t.back[k];
+  double s3[6], back[6], eps_p = 0;
+  unsigned char yielded = 0;
+  const double z = solve_thickness_rate(m, d, dt, s3, [&](double dzz) {
+    const double d3[6] = {d[0], d[1], dzz, d[2], d[3], d[4]};
+    load_stress_3d(sig, s3);
+    for (int k = 0; k < 6; ++k) back[k] = h.back[k];
+    eps_p = *h.eps_p;
+    yielded = *h.yielded;
+    update_stress_elastic_plastic(m, d3, dt, s3, back, eps_p, yielded);
+    return s3[2];
+  });
+  store_stress_3d(s3, sig);
+  for (int k = 0; k < 6; ++k) h.back[k] = back[k];
+  *h.eps_p = eps_p;
+  *h.yielded = yielded;
+  return z;
+}
+
+double update_plane_stress_piecewise_linear(const MaterialConstants& m, const double d[5],
+                                            double dt, double sig[5],
+                                            const PlaneStressPlastic& h) {
+  SolidPointState t;
+  const double z = solve_thickness_rate(m, d, dt, t.sig, [&](double dzz) {
+    const double d3[6] = {d[0], d[1], dzz, d[2], d[3], d[4]};
+    load_stress_3d(sig, t.sig);
+    t.eps_p = *h.eps_p;
+    t.yielded = *h.yielded;
+    update_stress_piecewise_linear(m, d3, dt, t);
+    return t.sig[2];
+  });
+  store_stress_3d(t.sig, sig);
   *h.eps_p = t.eps_p;
-  *h.yielded = t.yielded;
-  return z0;
+  *h.yielded = t.yielded != 0.0;
+  return z;
 }
 
 }  // namespace impact3d

@@ -31,4 +31,13 @@ double update_plane_stress_plastic_kinematic(const MaterialConstants& m, const d
                                              double dt, double sig[5],
                                              const PlaneStressPlastic& h);
 
+// Type 24 (piecewise-linear plasticity, *MAT_024): the same iterative plane stress as type 3
+// around type 24's own 3-D update (update_stress_piecewise_linear: its flow curve, EPS/ES table
+// or LCSS, extended beyond the last point; its rate factor, Cowper-Symonds C/P or LCSR, of the
+// 3-D rate norm sqrt(D:D) with the iterated d_zz (VP = 0: the yield stress scaled) or of the
+// plastic strain rate (VP = 1, viscoplastic)).  h.back is not used (may be null).  Returns d_zz.
+double update_plane_stress_piecewise_linear(const MaterialConstants& m, const double d[5],
+                                            double dt, double sig[5],
+                                            const PlaneStressPlastic& h);
+
 }  // namespace impact3d

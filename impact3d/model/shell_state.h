@@ -11,8 +11,14 @@
 
 namespace impact3d {
 
-// Shell kernels, chosen per group from the material type (one table: shell_kernel_for_material_type).
-enum class ShellKernel : std::uint8_t { rigid, elastic, plastic_kinematic };
+// Shell kernels, chosen per group from the material type (one table: kShellMaterials in
+// init/shell_init.cpp).
+enum class ShellKernel : std::uint8_t { rigid, elastic, plastic_kinematic, piecewise_linear };
+
+// Whether a kernel keeps a plastic strain per integration point (eps_p, yielded; FAIL deletes).
+inline bool shell_kernel_is_plastic(ShellKernel k) {
+  return k == ShellKernel::plastic_kinematic || k == ShellKernel::piecewise_linear;
+}
 
 struct ShellGroup {
   ShellKernel kernel = ShellKernel::rigid;
@@ -32,9 +38,9 @@ struct ShellState {
   std::vector<int> nip;                       // integration points of each shell
   std::vector<int> ip_start;                  // first integration point of each shell
   std::vector<double> sig;                    // 5 per point: local xx yy xy yz zx
-  std::vector<double> back;                   // 6 per point (plastic-kinematic groups; else empty)
-  std::vector<double> eps_p;                  // 1 per point (plastic-kinematic; else empty)
-  std::vector<std::uint8_t> yielded;          // 1 per point (plastic-kinematic; else empty)
+  std::vector<double> back;                   // 6 per point (with a plastic-kinematic group; else empty)
+  std::vector<double> eps_p;                  // 1 per point (with a plastic group; else empty)
+  std::vector<std::uint8_t> yielded;          // 1 per point (with a plastic group; else empty)
   std::vector<double> hgq;                    // 5 per shell: hourglass resultants (stiffness forms)
   std::vector<double> drill;                  // 4 per shell: corner drilling moments (about e3)
   std::vector<double> dt_e;                   // element step

@@ -11,7 +11,8 @@ constexpr int kMinShellsForThreads = 4096;
 
 ShellMaterialKind material_kind(ShellKernel k) {
   return k == ShellKernel::plastic_kinematic ? ShellMaterialKind::plastic_kinematic
-                                             : ShellMaterialKind::elastic;
+         : k == ShellKernel::piecewise_linear ? ShellMaterialKind::piecewise_linear
+                                              : ShellMaterialKind::elastic;
 }
 
 void zero_shell_corners(State& s, int k) {
@@ -56,8 +57,8 @@ void process_shell(State& s, const ShellGroup& g, int k, double dt) {
   ShellKernelIO io;
   gather_shell(s, k, dt, io);
   const std::size_t ip = std::size_t(sh.ip_start[std::size_t(k)]);
-  const bool plastic = g.kernel == ShellKernel::plastic_kinematic;
-  ShellPointState st{&sh.sig[5 * ip], plastic ? &sh.back[6 * ip] : nullptr,
+  const bool plastic = shell_kernel_is_plastic(g.kernel);
+  ShellPointState st{&sh.sig[5 * ip], g.kernel == ShellKernel::plastic_kinematic ? &sh.back[6 * ip] : nullptr,
                      plastic ? &sh.eps_p[ip] : nullptr, plastic ? &sh.yielded[ip] : nullptr,
                      sh.hgq.empty() ? nullptr : &sh.hgq[5 * std::size_t(k)],
                      &sh.drill[4 * std::size_t(k)]};
@@ -83,7 +84,7 @@ void process_shell(State& s, const ShellGroup& g, int k, double dt) {
     sh.cmy[q] = io.m[j][1];
     sh.cmz[q] = io.m[j][2];
   }
-  // failure (type 3 FS): when every point through the thickness has reached it, the shell is
+  // failure (type 3 FS, type 24 FAIL): when every point through the thickness has reached it, the shell is
   // deleted; this pass's forces still act, from the next pass on it carries none
   const double fs = s.mats[std::size_t(g.material)].fail_strain;
   if (plastic && fs > 0 && dt > 0) {

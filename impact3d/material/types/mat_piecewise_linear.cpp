@@ -340,6 +340,10 @@ MaterialParam table_param(const char* key, int card, int field, int index) {
 
 }  // namespace
 
+void update_stress_piecewise_linear(const MaterialConstants& m, const double d[6], double dt, SolidPointState& s) {
+  update_point(m, d, dt, s);
+}
+
 const MaterialType& mat_piecewise_linear_type() {
   static const MaterialType t = [] {
     MaterialType t;
