@@ -431,8 +431,6 @@ struct SlidingInterfaces::Impl {
   std::vector<std::array<double, 3>> forces;
   std::vector<int> contact_nodes;    // union of all surface nodes, sorted
   std::vector<double> cur, prev;     // 3 per node: contact force this cycle / last cycle
-  std::vector<double> vpred;         // 3 per node: predicted v^{n+1/2} of the last cycle
-  double prev_dtn = 0;
   bool has_prev = false;
   double tssf = 0.9;
   bool any_max_stable = false;
@@ -635,24 +633,13 @@ void SlidingInterfaces::initialize(const Model& m, const State& s) {
   im.forces.assign(m.interfaces.size() + m.force_transducers.size(), {0.0, 0.0, 0.0});
   im.cur.assign(3 * std::size_t(s.nn), 0.0);
   im.prev.assign(3 * std::size_t(s.nn), 0.0);
-  im.vpred.assign(3 * std::size_t(s.nn), 0.0);
 }
 
 void SlidingInterfaces::apply(const Model& m, State& s, double dt) {
   Impl& im = *impl_;
   if (im.ifaces.empty()) return;
-  // 1. the rest of the previous cycle's work: its forces were booked on a predicted
-  //    v^{n+1/2}; the difference to the velocity reached (rigid bodies, walls) is booked now
-  if (im.has_prev) {
-    double w = 0;
-    for (int n : im.contact_nodes) {
-      const std::size_t k = std::size_t(n);
-      w += im.prev[3 * k] * (s.vx[k] - im.vpred[3 * k]) +
-           im.prev[3 * k + 1] * (s.vy[k] - im.vpred[3 * k + 1]) +
-           im.prev[3 * k + 2] * (s.vz[k] - im.vpred[3 * k + 2]);
-    }
-    s.contact -= 0.5 * im.prev_dtn * w;
-  }
+  // (the contact energy of these forces is booked by book_energy() once the cycle's velocities
+  // are final)
   for (int n : im.contact_nodes)
     for (int a = 0; a < 3; ++a) im.cur[3 * std::size_t(n) + std::size_t(a)] = 0.0;
   im.max_pen = 0;
@@ -728,38 +715,24 @@ void SlidingInterfaces::apply(const Model& m, State& s, double dt) {
     s.fext_y[k] += im.cur[3 * k + 1];
     s.fext_z[k] += im.cur[3 * k + 2];
   }
-  // 4. contact energy: the work of this cycle's forces on the mean velocity
-  //    (v^{n-1/2} + v^{n+1/2}) / 2 over dt_n, the form that balances the central-difference
-  //    kinetic energy.  v^{n+1/2} is predicted as the engine will compute it (same operations,
-  //    same bits) from the corner forces already at hand; for a free node it is exact.
-  const double dtn = s.cycle == 0 ? 0.5 * dt : 0.5 * (s.dt_half + dt);
+  im.prev.swap(im.cur);
+  im.has_prev = true;
+}
+
+// Contact energy: the work of the last apply()'s forces on the mean velocity
+// (v^{n-1/2} + v^{n+1/2}) / 2 over dt_n, the form that balances the central-difference kinetic
+// energy, taken with the velocities the cycle reached: after the rigid bodies (whose nodes move
+// with their body's resultant, not their own force), the walls and the prescribed motions.
+void SlidingInterfaces::book_energy(State& s, double dt_n) const {
+  const Impl& im = *impl_;
+  if (im.ifaces.empty() || !im.has_prev) return;
   double w = 0;
   for (int n : im.contact_nodes) {
     const std::size_t k = std::size_t(n);
-    double fx = 0, fy = 0, fz = 0;
-    for (int c = s.corner_start[k]; c < s.corner_start[k + 1]; ++c) {
-      const std::size_t cc = std::size_t(s.corner_list[std::size_t(c)]);
-      fx += s.cfx[cc];
-      fy += s.cfy[cc];
-      fz += s.cfz[cc];
-    }
-    const double inv_m = s.mass[k] > 0 ? 1.0 / s.mass[k] : 0.0;
-    double ax = (s.fext_x[k] - fx) * inv_m, ay = (s.fext_y[k] - fy) * inv_m,
-           az = (s.fext_z[k] - fz) * inv_m;
-    if (s.fix[k] & 1) ax = 0;
-    if (s.fix[k] & 2) ay = 0;
-    if (s.fix[k] & 4) az = 0;
-    double* vp = &im.vpred[3 * k];
-    vp[0] = s.vx[k] + dtn * ax;
-    vp[1] = s.vy[k] + dtn * ay;
-    vp[2] = s.vz[k] + dtn * az;
-    w += im.cur[3 * k] * 0.5 * (s.vx[k] + vp[0]) + im.cur[3 * k + 1] * 0.5 * (s.vy[k] + vp[1]) +
-         im.cur[3 * k + 2] * 0.5 * (s.vz[k] + vp[2]);
+    w += im.prev[3 * k] * 0.5 * (s.vx_old[k] + s.vx[k]) + im.prev[3 * k + 1] * 0.5 * (s.vy_old[k] + s.vy[k]) +
+         im.prev[3 * k + 2] * 0.5 * (s.vz_old[k] + s.vz[k]);
   }
-  s.contact -= dtn * w;
-  im.prev.swap(im.cur);
-  im.prev_dtn = dtn;
-  im.has_prev = true;
+  s.contact -= dt_n * w;
 }
 
 bool SlidingInterfaces::empty() const { return impl_->ifaces.empty(); }
@@ -776,12 +749,10 @@ const std::vector<double>& SlidingInterfaces::surface_node_forces(std::size_t i,
 double SlidingInterfaces::max_penetration() const { return impl_->max_pen; }
 SlidingInterfaces::SearchStats SlidingInterfaces::search_stats() const { return impl_->stats; }
 SlidingInterfaces::RestartData SlidingInterfaces::restart_data() const {
-  return {impl_->prev, impl_->vpred, impl_->prev_dtn, impl_->has_prev};
+  return {impl_->prev, {}, 0.0, impl_->has_prev};
 }
 void SlidingInterfaces::restore(const RestartData& d) {
   impl_->prev = d.forces;
-  impl_->vpred = d.vpred;
-  impl_->prev_dtn = d.dtn;
   impl_->has_prev = d.has;
 }
 

@@ -21,9 +21,13 @@ class SlidingInterfaces {
   // Builds segments, node lists and search structures from the model (after initialize_state).
   void initialize(const Model& m, const State& s);
   // Adds the penalty forces at the current positions x^n to s.fext_x/y/z (which the engine
-  // zeroes before) and books the contact energy in s.contact.  dt is the step about to be
-  // taken (dt^{n+1/2}).  The result must not depend on the thread count.
+  // zeroes before).  dt is the step about to be taken (dt^{n+1/2}).  The result must not
+  // depend on the thread count.
   void apply(const Model& m, State& s, double dt);
+  // Books the contact energy of the last apply()'s forces in s.contact: their work on the mean
+  // velocity (s.vx_old... + s.vx...) / 2 over dt_n.  The engine calls it once the cycle's
+  // velocities v^{n+1/2} are final (after rigid bodies, walls, prescribed motions).
+  void book_energy(State& s, double dt_n) const;
   bool empty() const;
 
   // Resultant force on the slave side of each interface in the last apply() (the master side
@@ -50,15 +54,13 @@ class SlidingInterfaces {
   };
   SearchStats search_stats() const;
 
-  // Contact energy (s.contact) is the work of the contact forces on the mean velocity
-  // (v^{n-1/2} + v^{n+1/2}) / 2 over dt_n, booked in apply() with v^{n+1/2} predicted from the
-  // corner forces; where the engine changes a velocity afterwards (rigid bodies, walls) the
-  // difference is booked in the next apply().  A restart dump must carry this small state
-  // (3 doubles per node twice, dt_n, a flag) for the energy books to go on bit for bit; the
-  // forces themselves depend only on the State.
+  // A restart dump carries the last cycle's contact forces (3 doubles per node, and a flag):
+  // the penetration-growth rule reads them.  vpred and dtn are kept for the dump's layout and
+  // are no longer used (empty and 0: book_energy() needs no state across cycles; they once
+  // held a predicted v^{n+1/2} whose error for rigid bodies was booked a cycle late).
   struct RestartData {
-    std::vector<double> forces, vpred;  // 3 per node
-    double dtn = 0;
+    std::vector<double> forces, vpred;  // 3 per node (vpred: unused, empty)
+    double dtn = 0;                     // unused
     bool has = false;
   };
   RestartData restart_data() const;

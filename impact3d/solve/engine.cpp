@@ -55,6 +55,7 @@ StepStatus Engine::process_elements() {
       }
   }
   s_.internal += r.die;
+  s_.external_work += r.dsrc;  // an equation of state's energy deposition (form 6)
   s_.hourglass += r.dhg;
   s_.bulk_viscous += r.dbv;
   if (r.bad_volume_elem >= 0) {
@@ -158,6 +159,11 @@ StepStatus Engine::step() {
     update_positions_for_nodes(s, dt_next);
   }
   times_.nodes += seconds_since(t);
+  if (!contact_.empty()) {  // the contact forces' work, on the velocities the cycle reached
+    t = Clock::now();
+    contact_.book_energy(s, dt_n);
+    times_.contact += seconds_since(t);
+  }
   if (loads_.has_loads || loads_.has_motions) {
     t = Clock::now();
     book_external_work(m_, s, loads_, dt_n);
