@@ -22,8 +22,9 @@ namespace impact3d {
 constexpr int kLanes = 8;
 using Lanes = double[kLanes];
 // Per-element history values a material may carry beyond stress, back stress and plastic
-// strain (material_types.h); a group gathers only as many as its material has.
-constexpr int kMaxHistory = 4;
+// strain (material_types.h); a group gathers only as many as its material has (at most:
+// Johnson-Cook's three and a two-value equation of state).
+constexpr int kMaxHistory = 5;
 
 #define IMPACT3D_FOR_LANES _Pragma("omp simd") for (int l = 0; l < kLanes; ++l)
 
@@ -41,6 +42,7 @@ struct alignas(64) HexBlock {
   Lanes hgs[12];                                // hourglass resultants (types 4, 5)
   Lanes q, q_old;                               // bulk viscosity
   Lanes de_ie, de_hg, de_bv, dt;                // energy increments, element step
+  Lanes de_src;                                 // energy an equation of state deposited (in de_ie too)
   Lanes cs;                                     // sound speed per lane (groups with an equation of state)
 };
 

@@ -225,13 +225,47 @@ TEST(KeywordMaterials, JohnsonCookTypesAreReadAndRoundTrip) {
     ASSERT_TRUE(f.ok) << f.messages() << fx.str();
     EXPECT_EQ(join(model_differences(a.m, f.m)), "") << fx.str();
   }
-  // spall types 2 and 3, VP = 1, EROD = 1: not supported (1102)
+  // spall type 3, VP = 1, RATEOP = 1 with C2, EROD = 1: read, and the same after both converters
+  std::string opt = jc;
+  opt.replace(opt.find("       1.0       0.0      0.54"), 10, "       3.0");
+  opt.replace(opt.find("      0.34       0.0       0.0       0.0\n"), 41, "      0.34       0.0       1.0       1.0\n");
+  opt.replace(opt.find("      1.12       0.0       0.0"), 30, "      1.12     0.002       1.0");
+  Read o = read_text(one_hex_deck(opt));
+  ASSERT_TRUE(o.ok) << o.messages();
+  {
+    const MaterialData& md = o.m.materials[0];
+    const MaterialType& t = material_type(15);
+    EXPECT_EQ(param_value(md, *find_param(t, "SPALL")), 3.0);
+    EXPECT_EQ(param_value(md, *find_param(t, "VP")), 1.0);
+    EXPECT_EQ(param_value(md, *find_param(t, "RATEOP")), 1.0);
+    EXPECT_EQ(param_value(md, *find_param(t, "C2/P")), 0.002);
+    EXPECT_EQ(param_value(md, *find_param(t, "EROD")), 1.0);
+    std::ostringstream kw, fx;
+    write_keyword_deck(kw, o.m);
+    Read k = read_text(kw.str());
+    ASSERT_TRUE(k.ok) << k.messages() << kw.str();
+    EXPECT_EQ(join(model_differences(o.m, k.m)), "");
+    write_fixed_deck(fx, o.m, nullptr);
+    Read f = read_text(fx.str(), "deck.dyn");
+    ASSERT_TRUE(f.ok) << f.messages() << fx.str();
+    EXPECT_EQ(join(model_differences(o.m, f.m)), "") << fx.str();
+  }
+  // RATEOP 4 (nonlinear rate coefficient): not supported (1102); SPALL 5, VP 2, RATEOP 3 with
+  // P = 0: out of range (1003)
   std::string bad = jc;
-  bad.replace(bad.find("       1.0       0.0      0.54"), 10, "       2.0");
-  bad.replace(bad.find("      0.34       0.0       0.0       0.0\n"), 41, "      0.34       0.0       1.0       0.0\n");
+  bad.replace(bad.find("       1.0       0.0      0.54"), 10, "       5.0");
+  bad.replace(bad.find("      0.34       0.0       0.0       0.0\n"), 41, "      0.34       0.0       2.0       4.0\n");
   Read b = read_text(one_hex_deck(bad));
   EXPECT_FALSE(b.ok);
-  EXPECT_EQ(b.d.count(1102), 2) << b.messages();
+  EXPECT_EQ(b.d.count(1102), 1) << b.messages();
+  EXPECT_EQ(b.d.count(1003), 2) << b.messages();
+  EXPECT_NE(b.messages().find("RATEOP"), std::string::npos) << b.messages();
+  std::string cs = jc;
+  cs.replace(cs.find("      0.34       0.0       0.0       0.0\n"), 41, "      0.34       0.0       0.0       3.0\n");
+  Read c = read_text(one_hex_deck(cs));
+  EXPECT_FALSE(c.ok);
+  EXPECT_EQ(c.d.count(1003), 1) << c.messages();
+  EXPECT_NE(c.messages().find("Cowper-Symonds"), std::string::npos) << c.messages();
 }
 
 // *MAT_POWER_LAW_PLASTICITY: read into the table's places and the same model after the

@@ -1,7 +1,9 @@
 // Johnson-Cook plasticity (types 15 and 98) through single-point strain paths against closed
 // forms: flow stress against plastic strain, strain rate and temperature; with n = 1, C = 0
 // and no heating it is bilinear hardening (type 24 with a two-point table); adiabatic heating
-// books the plastic work; Johnson-Cook damage; the pressure cutoff; SIGMAX.
+// books the plastic work; Johnson-Cook damage, with and without erosion (EROD); the pressure
+// cutoff and the spall types; the rate forms (RATEOP 0-3); the viscoplastic form (VP = 1);
+// SIGMAX.
 
 #include <gtest/gtest.h>
 
@@ -162,9 +164,9 @@ TEST(MatJohnsonCook, DamageInShear) {
   EXPECT_GT(p.s.hist[1], 1.0);  // past failure: the element pass deletes the solid
 }
 
-// Pressure cutoff: hydrostatic tension stops at mean stress -PC.
+// Pressure cutoff (SPALL 1): hydrostatic tension stops at mean stress -PC.
 TEST(MatJohnsonCook, PressureCutoff) {
-  Point p(jc_material(15, {{"A", 0.4}, {"PC", -0.2}}));
+  Point p(jc_material(15, {{"A", 0.4}, {"PC", -0.2}, {"SPALL", 1}}));
   for (int k = 0; k < 10; ++k) {
     const double d[6] = {1e-4, 1e-4, 1e-4, 0, 0, 0};
     p.step(d, 1.0);
@@ -181,4 +183,163 @@ TEST(MatJohnsonCook, SimplifiedCapsAtSigmax) {
     p.step(d, 1.0);
   }
   EXPECT_NEAR(p.q(), 0.7, 1e-12);
+}
+
+// Uniaxial strain in tension, elastic (A large): sigma_xx = (K + 4G/3) eps is the largest
+// principal stress, K eps the mean stress.  PC = -0.201, eps 1e-5 a step: SPALL 1 bounds the
+// mean stress at 0.201 and keeps the deviator (2G (eps - eps/3); 1e-13); SPALL 2 (and 0,
+// LS-DYNA's default) spalls in the first step with sigma_xx >= 0.201 (step 75: 269.2 * 7.5e-4 =
+// 0.2019; step 74 0.1992), SPALL 3 in the first with K eps >= 0.201 (step 121: 166.7 * 1.21e-3
+// = 0.2017; step 120 0.2000); spalled, the stress is zero in tension and a pure pressure K
+// tr(eps) in compression afterwards (no deviator).  PC = 0: no limit, no spall.
+TEST(MatJohnsonCook, SpallTypesAtTheirThresholds) {
+  const double de = 1e-5;
+  for (double spall : {0.0, 1.0, 2.0, 3.0}) {
+    for (double pc : {-0.201, 0.0}) {
+      Point p(jc_material(15, {{"A", 100}, {"PC", pc}, {"SPALL", spall}}));
+      const double K = p.m.K, G = p.m.G, M = K + 4 * G / 3;
+      const int mode = pc == 0 ? 0 : spall == 0 ? 2 : int(spall);
+      int spalled_at = 0, expect_at = 0;
+      double sx = 0, sm = 0;  // the kernel's own sums of the elastic path
+      for (int k = 1; k <= 200; ++k) {
+        const double d[6] = {de, 0, 0, 0, 0, 0};
+        p.step(d, 1.0);
+        sx += M * de, sm += K * de;
+        if (expect_at == 0 && ((mode == 2 && sx >= 0.201) || (mode == 3 && sm >= 0.201))) expect_at = k;
+        if (spalled_at == 0 && p.s.hist[2] != 0) spalled_at = k;
+        const double e = k * de;
+        if (mode == 1) {  // the mean stress bounded, the deviator kept
+          const double m = std::min(K * e, 0.201);
+          EXPECT_NEAR(p.s.sig[0], m + 4 * G * e / 3, 1e-13) << k;
+          EXPECT_NEAR(p.s.sig[1], m - 2 * G * e / 3, 1e-13) << k;
+        } else if (expect_at == 0) {  // elastic
+          EXPECT_NEAR(p.s.sig[0], M * e, 1e-13) << spall << " " << k;
+          EXPECT_NEAR(p.s.sig[1], (K - 2 * G / 3) * e, 1e-13) << spall << " " << k;
+        } else {  // spalled: no tension
+          for (int c = 0; c < 6; ++c) EXPECT_EQ(p.s.sig[c], 0.0) << spall << " " << k;
+        }
+      }
+      EXPECT_EQ(spalled_at, expect_at) << spall << " " << pc;
+      if (mode == 2) {
+        EXPECT_EQ(spalled_at, 75);
+      } else if (mode == 3) {
+        EXPECT_EQ(spalled_at, 121);
+      }
+      if (mode < 2) continue;
+      for (int k = 1; k <= 20; ++k) {  // compressed again: a pressure, no deviator
+        const double d[6] = {-de, 0, 0, 0, 0, 0};
+        p.step(d, 1.0);
+        for (int c = 0; c < 3; ++c) EXPECT_NEAR(p.s.sig[c], -K * de * k, 1e-15) << k;
+        for (int c = 3; c < 6; ++c) EXPECT_EQ(p.s.sig[c], 0.0);
+      }
+    }
+  }
+}
+
+// The rate forms at constant rate (VP = 0) in uniaxial strain at rate r: x = 2r/3 / EPSO, the
+// flow stress R(x) (A + B ep^n) with R = 1 + C ln x + C2 ln^2 x (RATEOP 1, Huh-Kang), x^C (2,
+// Allen-Rule-Jones), 1 + (2r/3 / C)^(1/P) (3, Cowper-Symonds, the rate itself), R = 1 for x <= 1
+// in forms 1 and 2.  Tolerances as for RATEOP 0 above (1e-12 in plastic strain, 1e-11 in stress).
+TEST(MatJohnsonCook, RateFormsAgainstTheirFormulas) {
+  const double A = 0.4, B = 0.6, n = 0.3;
+  for (int form : {1, 2, 3}) {
+    for (double r : {0.3, 30.0, 3000.0}) {
+      const double C = form == 3 ? 40.0 : form == 2 ? 0.03 : 0.05, C2 = form == 3 ? 5.0 : 0.004;
+      Point p(jc_material(15, {{"A", A}, {"B", B}, {"N", n}, {"C", C}, {"EPSO", 2.0}, {"RATEOP", form}, {"C2/P", C2}}));
+      const double dt = 1e-3 / r;
+      for (int k = 0; k < 300; ++k) {
+        const double d[6] = {r, 0, 0, 0, 0, 0};
+        p.step(d, dt);
+      }
+      const double x = 2 * r / 3 / 2.0, lx = std::log(x);
+      const double R = form == 3 ? 1 + std::pow(2 * r / 3 / C, 1 / C2)
+                       : x <= 1  ? 1.0
+                       : form == 1 ? 1 + C * lx + C2 * lx * lx
+                                   : std::pow(x, C);
+      const double ep = plastic_strain_for(p.m.G, 300 * 1e-3, R, A, B, n);
+      EXPECT_GT(ep, 0.05);
+      EXPECT_NEAR(p.s.eps_p, ep, 1e-12) << form << " rate " << r;
+      EXPECT_NEAR(p.q(), R * (A + B * std::pow(ep, n)), 1e-11) << form << " rate " << r;
+    }
+  }
+}
+
+// VP = 1: the rate in R is the plastic strain rate of the step.  (a) No hardening (B = 0), uniaxial
+// strain at rate r: in steady flow the stress stops changing, so the plastic strain rate is the
+// effective strain rate 2r/3 and q = A R(2r/3), for each rate form (the fixed point is reached
+// geometrically; after 400 steps to 1e-12).  (b) With hardening the point's equation holds each
+// step, q = R(d eps_p / dt) (A + B eps_p^n) (1e-12), and the flow stress lies below VP = 0's (the
+// plastic strain rate is below the total one) by more than 1e-5 at the end (Allen-Rule-Jones,
+// C = 0.03, the least: 6e-5).  Type 98 (VP = 1,
+// RATEOP 0) as type 15.
+TEST(MatJohnsonCook, ViscoplasticRateIsThePlasticStrainRate) {
+  const double A = 0.4, B = 0.6, n = 0.3, r = 30.0, dt = 1e-3 / r;
+  auto R_of = [](int form, double rate) {
+    const double x = rate / 2.0, lx = std::log(x);
+    return form == 3 ? 1 + std::pow(rate / 40.0, 1 / 5.0) : x <= 1 ? 1.0 : form == 2 ? std::pow(x, 0.03) : 1 + 0.05 * lx + (form == 1 ? 0.004 * lx * lx : 0.0);
+  };
+  for (int type : {15, 98}) {
+    for (int form : {0, 1, 2, 3}) {
+      if (type == 98 && form != 0) continue;
+      const double C = form == 3 ? 40.0 : form == 2 ? 0.03 : 0.05, C2 = form == 3 ? 5.0 : form == 1 ? 0.004 : 0.0;
+      std::map<std::string, double> v = {{"A", A}, {"B", 0.0}, {"N", n}, {"C", C}, {"EPSO", 2.0}, {"VP", 1}};
+      if (type == 15) v["RATEOP"] = form, v["C2/P"] = C2;
+      Point p(jc_material(type, v));
+      double ep_old = 0;
+      for (int k = 0; k < 400; ++k) {
+        const double d[6] = {r, 0, 0, 0, 0, 0};
+        ep_old = p.s.eps_p;
+        p.step(d, dt);
+      }
+      EXPECT_NEAR((p.s.eps_p - ep_old) / dt, 2 * r / 3, 1e-9 * r) << type << " " << form;
+      EXPECT_NEAR(p.q(), A * R_of(form, 2 * r / 3), 1e-12) << type << " " << form;
+      // (b) hardening
+      v["B"] = B;
+      Point h(jc_material(type, v));
+      v["VP"] = 0;
+      Point h0(jc_material(type, v));
+      for (int k = 0; k < 300; ++k) {
+        const double d[6] = {r, 0, 0, 0, 0, 0};
+        const double e0 = h.s.eps_p;
+        h.step(d, dt);
+        h0.step(d, dt);
+        const double de = h.s.eps_p - e0;
+        if (de > 0) {
+          EXPECT_NEAR(h.q(), R_of(form, de / dt) * (A + B * std::pow(h.s.eps_p, n)), 1e-12) << type << " " << form << " " << k;
+        }
+      }
+      EXPECT_GT(h.s.eps_p, 0.1);
+      EXPECT_LT(h.q(), h0.q() - 1e-5) << type << " " << form;
+    }
+  }
+}
+
+// EROD = 1: the damaged point is not deleted (no failure history for the element pass); at D >= 1
+// its deviatoric stress is zero and stays zero, while it still carries a pressure (K tr eps).
+TEST(MatJohnsonCook, NoErosionZeroesTheDeviatoricStress) {
+  const double D1 = 0.05, D2 = 0.25;
+  Point p(jc_material(15, {{"A", 0.4}, {"B", 0.6}, {"N", 0.3}, {"EPSO", 1e6}, {"D1", D1}, {"D2", D2}, {"D3", -3}, {"EROD", 1}}));
+  EXPECT_EQ(p.m.fail_history, -1);
+  int failed_at = 0;
+  for (int k = 1; k <= 4000 && failed_at == 0; ++k) {
+    const double d[6] = {0, 0, 0, 2e-4, 0, 0};
+    p.step(d, 1.0);
+    EXPECT_NEAR(p.s.hist[1], p.s.eps_p / (D1 + D2), 1e-12);
+    if (p.s.hist[1] >= 1) {
+      failed_at = k;
+    } else if (p.s.eps_p > 0) {
+      EXPECT_GT(p.s.sig[3], 0.2);  // yielded: the shear flow stress, at least A / sqrt(3)
+    }
+  }
+  ASSERT_GT(failed_at, 0);
+  EXPECT_NEAR(p.s.eps_p, D1 + D2, 3e-4);  // fails within a step's plastic strain (2.3e-4) of D1 + D2
+  for (int k = 1; k <= 10; ++k) {
+    const double d[6] = {-1e-4, -1e-4, -1e-4, 2e-4, 0, 0};
+    const double m0 = p.s.sig[0];
+    p.step(d, 1.0);
+    for (int c = 3; c < 6; ++c) EXPECT_EQ(p.s.sig[c], 0.0);
+    EXPECT_NEAR(p.s.sig[0], m0 - 3 * p.m.K * 1e-4, 1e-14);
+    EXPECT_EQ(p.s.sig[0], p.s.sig[1]);
+    EXPECT_EQ(p.s.sig[0], p.s.sig[2]);
+  }
 }

@@ -1,6 +1,6 @@
 // The plot database carries the materials' history values (NEIPH): a Johnson-Cook Taylor bar
-// (type 15: temperature rise and damage per solid) written with 8-byte words reads back with
-// NEIPH = 2, NV3D = 9 and the State's history values bit for bit; restart dumps carry them.
+// (type 15: temperature rise, damage and the spall flag per solid) written with 8-byte words reads back with
+// NEIPH = 3, NV3D = 10 and the State's history values bit for bit; restart dumps carry them.
 
 #include <gtest/gtest.h>
 
@@ -38,7 +38,7 @@ TEST(PlotHistory, JohnsonCookHistoryValuesAreWrittenAsNeiph) {
   ASSERT_EQ(eng.initialize(), StepStatus::ok);
   for (int c = 0; c < 300; ++c) ASSERT_EQ(eng.step(), StepStatus::ok);
   const State& s = eng.state();
-  ASSERT_EQ(s.hist_stride, 2);
+  ASSERT_EQ(s.hist_stride, 3);
   const fs::path dir = fs::temp_directory_path() / ("impact3d_plot_history_" + std::to_string(::getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);
@@ -50,15 +50,15 @@ TEST(PlotHistory, JohnsonCookHistoryValuesAreWrittenAsNeiph) {
   }
   PlotReader r;
   r.open(root);
-  EXPECT_EQ(r.control().neiph, 2);
-  EXPECT_EQ(r.control().nv3d, 9);
+  EXPECT_EQ(r.control().neiph, 3);
+  EXPECT_EQ(r.control().nv3d, 10);
   ASSERT_EQ(r.num_states(), 1);
   const PlotState ps = r.state(0);
   ASSERT_EQ(ps.history.size(), s.hist.size());
   double tmax = 0;
   for (std::size_t k = 0; k < s.hist.size(); ++k) {
     EXPECT_EQ(ps.history[k], s.hist[k]) << k;
-    if (k % 2 == 0) tmax = std::max(tmax, s.hist[k]);
+    if (k % 3 == 0) tmax = std::max(tmax, s.hist[k]);
   }
   EXPECT_GT(tmax, 10.0);  // the impact face has heated by more than 10 K
   EXPECT_EQ(ps.eps, s.eps_p);
@@ -103,7 +103,7 @@ TEST(PlotHistory, RestartDumpCarriesTheHistoryValues) {
   }
   EXPECT_TRUE(a.state().hist == b.state().hist && a.state().sig == b.state().sig && a.state().x == b.state().x);
   double tmax = 0;
-  for (std::size_t k = 0; k < a.state().hist.size(); k += 2) tmax = std::max(tmax, a.state().hist[k]);
+  for (std::size_t k = 0; k < a.state().hist.size(); k += 3) tmax = std::max(tmax, a.state().hist[k]);
   EXPECT_GT(tmax, 1.0);
   fs::remove_all(dir);
 }
