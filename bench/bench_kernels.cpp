@@ -14,6 +14,7 @@
 #include "impact3d/material/material_block.h"
 #include "impact3d/input/deck_reader.h"
 #include "impact3d/material/material.h"
+#include "impact3d/material/material_types.h"
 #include "impact3d/solve/element_processing.h"
 #include "impact3d/solve/engine.h"
 #include "impact3d/element/shell_bt.h"
@@ -166,9 +167,11 @@ void BM_TaylorBarWholeRun(benchmark::State& st) {
 BENCHMARK(BM_TaylorBarWholeRun)->Arg(1)->Arg(2)->Unit(benchmark::kSecond)->Iterations(1);
 
 // Belytschko-Tsay shells: one shell through the scalar kernel (elastic NIP 2; plastic NIP 5,
-// yielding), and a whole cycle of a 100 x 100 plate (clamped edge, transverse velocity).
+// yielding: type 3, and type 24 with a 4-point table), and a whole cycle of a 100 x 100 plate
+// (clamped edge, transverse velocity).
 void BM_ShellBTKernel(benchmark::State& st) {
-  const bool plastic = st.range(0) == 3;
+  const bool table = st.range(0) == 24;
+  const bool plastic = st.range(0) == 3 || table;
   MaterialData md = shell_test::steel_shell(plastic ? 3 : 1, plastic ? 5 : 2);
   MaterialConstants mc;
   mc.type = md.type;
@@ -179,6 +182,17 @@ void BM_ShellBTKernel(benchmark::State& st) {
   mc.E_tan = md.E_tan;
   mc.beta = 0.5;
   derive_material_constants(mc);
+  if (table) {  // yields every cycle: the table starts at 1 kPa
+    MaterialData m24 = shell_test::steel_shell(24, 5);
+    const MaterialType& t = material_type(24);
+    set_param_defaults(m24, t);
+    const double eps[4] = {0, 0.01, 0.05, 0.2}, es[4] = {1e3, 3e8, 3.8e8, 4.2e8};
+    for (int i = 0; i < 4; ++i) {
+      param_value(m24, *find_param(t, "EPS" + std::to_string(i + 1))) = eps[i];
+      param_value(m24, *find_param(t, "ES" + std::to_string(i + 1))) = es[i];
+    }
+    mc = derive_constants(m24, Model{});
+  }
   ShellGroupConstants g;
   g.nip = md.shell_section.nip;
   gauss_legendre_rule(g.nip, g.zeta, g.weight);
@@ -190,7 +204,7 @@ void BM_ShellBTKernel(benchmark::State& st) {
   g.c_plate = 5400;
   double sig[50] = {}, back[60] = {}, eps[10] = {};
   unsigned char yielded[10] = {};
-  ShellPointState ps{sig, plastic ? back : nullptr, plastic ? eps : nullptr, plastic ? yielded : nullptr, nullptr, nullptr};
+  ShellPointState ps{sig, plastic && !table ? back : nullptr, plastic ? eps : nullptr, plastic ? yielded : nullptr, nullptr, nullptr};
   ShellKernelIO io;
   const double X[4][3] = {{0, 0, 0}, {0.01, 0.001, 0}, {0.011, 0.01, 0.0005}, {0, 0.009, 0}};
   for (int i = 0; i < 4; ++i)
@@ -201,14 +215,16 @@ void BM_ShellBTKernel(benchmark::State& st) {
     }
   io.h = 0.001;
   io.dt = 1e-7;
-  const ShellMaterialKind kind = plastic ? ShellMaterialKind::plastic_kinematic : ShellMaterialKind::elastic;
+  const ShellMaterialKind kind = table ? ShellMaterialKind::piecewise_linear
+                                 : plastic ? ShellMaterialKind::plastic_kinematic
+                                           : ShellMaterialKind::elastic;
   for (auto _ : st) {
     calc_shell_bt_forces(g, mc, kind, io, ps);
     benchmark::DoNotOptimize(io.f[0][0]);
   }
   st.SetItemsProcessed(st.iterations());
 }
-BENCHMARK(BM_ShellBTKernel)->Arg(1)->Arg(3);
+BENCHMARK(BM_ShellBTKernel)->Arg(1)->Arg(3)->Arg(24);
 
 void BM_Cycle_ShellPlate(benchmark::State& st) {
   omp_set_num_threads(1);
