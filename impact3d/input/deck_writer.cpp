@@ -206,7 +206,7 @@ class KeywordWriter {
     }
   }
 
-  // *EOS_...: the form's two cards (material/eos.h), EOSID = the part's id.
+  // *EOS_...: the form's cards (material/eos.h), EOSID = the part's id.
   void write_eos(const EosData& e, int id) {
     const EosForm* f = find_eos_form(e.form);
     if (!f) return;
@@ -219,7 +219,7 @@ class KeywordWriter {
       if (c == 0) fields[0] = I(id), n = 1, head.replace(5, 5, "eosid");
       for (const EosParam& p : f->params) {
         if (p.kcard != c || p.slot < 0) continue;
-        fields[std::size_t(p.kfield)] = R(eos_value(e, p), w);
+        fields[std::size_t(p.kfield)] = e.form == 6 && p.slot == kEosLeakCurve ? I((long long)eos_value(e, p), w) : R(eos_value(e, p), w);
         std::string k = p.key;
         for (char& ch : k) ch = char(std::tolower(static_cast<unsigned char>(ch)));
         head.replace(std::size_t(w * p.kfield + w) - k.size(), k.size(), k);
@@ -692,11 +692,15 @@ void write_fixed_deck(std::ostream& os, const Model& m, std::vector<std::string>
       os << line.str() << "\n";
     }
     if (const EosForm* f = find_eos_form(md.eos.form)) {  // the EOS cards (material/eos.h)
-      for (int c = 0; c < int(f->widths.size()); ++c) {
+      const std::vector<int>& fw = eos_fixed_widths(*f);
+      for (int c = 0; c < int(fw.size()); ++c) {
         FixedLine line = L(what + " EOS card " + std::to_string(c + 1));
-        const int w = f->widths[std::size_t(c)];
-        for (const EosParam& p : f->params)
-          if (p.fcard == c && p.slot >= 0) line.r(1 + w * p.ffield, w + w * p.ffield, eos_value(md.eos, p));
+        const int w = fw[std::size_t(c)];
+        for (const EosParam& p : f->params) {
+          if (p.fcard != c || p.slot < 0) continue;
+          if (md.eos.form == 6 && p.slot == kEosLeakCurve) line.i(1 + w * p.ffield, w + w * p.ffield, int(eos_value(md.eos, p)));
+          else line.r(1 + w * p.ffield, w + w * p.ffield, eos_value(md.eos, p));
+        }
         os << line.str() << "\n";
       }
     }

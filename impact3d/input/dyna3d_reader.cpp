@@ -467,7 +467,7 @@ class Dyna3dReader {
       }
       md.shell = et == 2;
       if (md.shell && mt && !has_shell_kernel(md.type))
-        c1.error(1103, 6, 10, "material type", "type " + std::to_string(md.type) + " has no shell form; shells (element type 2) take types 1, 3 and 20");
+        c1.error(1103, 6, 10, "material type", "type " + std::to_string(md.type) + " has no shell form; shells (element type 2) take types " + shell_material_numbers());
       if (md.shell && eos != 0) c1.error(1102, 21, 25, "EOS type", "an equation of state for shells (element type 2)");
       c1.i(71, 75, "unused");
       long long ef = c1.i(76, 80, "element formulation");
@@ -484,17 +484,22 @@ class Dyna3dReader {
       std::vector<Card> cards;
       for (int k = 3; k <= 8; ++k) cards.push_back(next(name + " card " + std::to_string(k)));
       if (mt) read_material_params(md, *mt, cards);
+      if (const char* feature = nullptr; mt && md.shell) {
+        if (const MaterialParam* q = refused_shell_param(md, &feature); q && q->fcard >= 3)
+          cards[std::size_t(q->fcard - 3)].error(1102, q->fcol, q->fcol + 9, q->key, std::string(feature) + " (a shell material, element type 2)");
+      }
       if (md.shell) read_shell_section(md, name);
       if (eos_form && (!mt || mt->accepts_eos) && !md.shell) {  // (a type that takes none: reported above, no cards read)
         std::vector<Card> ec;
-        for (std::size_t c = 0; c < eos_form->widths.size(); ++c) ec.push_back(next(name + " EOS card " + std::to_string(c + 1)));
+        const std::vector<int>& ew = eos_fixed_widths(*eos_form);
+        for (std::size_t c = 0; c < ew.size(); ++c) ec.push_back(next(name + " EOS card " + std::to_string(c + 1)));
         for (const EosParam& p : eos_form->params) {
           if (p.fcard < 0) continue;
-          const int w = eos_form->widths[std::size_t(p.fcard)], a = 1 + w * p.ffield;
+          const int w = ew[std::size_t(p.fcard)], a = 1 + w * p.ffield;
           eos_value(md.eos, p) = ec[std::size_t(p.fcard)].e(a, a + w - 1, p.key, p.slot == kEosSlotV0 ? 1.0 : 0.0);
         }
         check_eos(md.eos, md.rho, [&](const EosParam& p, int msg, const std::string& detail) {
-          const int c = p.fcard < 0 ? 0 : p.fcard, w = eos_form->widths[std::size_t(c)], a = 1 + w * (p.fcard < 0 ? 0 : p.ffield);
+          const int c = p.fcard < 0 ? 0 : p.fcard, w = ew[std::size_t(c)], a = 1 + w * (p.fcard < 0 ? 0 : p.ffield);
           ec[std::size_t(c)].error(msg, a, a + w - 1, p.key, detail);
         });
       }

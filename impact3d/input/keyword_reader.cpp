@@ -416,9 +416,10 @@ struct RMat {
   std::string title;
   Ref ref;
 };
-struct REos {  // *EOS_LINEAR_POLYNOMIAL, *EOS_GRUNEISEN
+struct REos {  // *EOS_... (material/eos.h)
   EosData eos;
   Ref ref;
+  Ref lcid_ref;  // form 6: the LCID field
 };
 struct RHourglass {
   int ihq = 0;
@@ -1845,8 +1846,8 @@ bool is_ascii_database(const std::string& n) {
     mats_[mid] = m;
   }
 
-  // *EOS_LINEAR_POLYNOMIAL / *EOS_GRUNEISEN / *EOS_TABULATED (_TITLE): the form's cards (material/eos.h); a
-  // *PART's EOSID gives it to the part's material.
+  // *EOS_... (_TITLE), the forms of material/eos.h: the form's cards; a *PART's EOSID gives it to
+  // the part's material.
   void parse_eos(const Block& b, const EosForm& f) {
     const std::size_t start = skip_option_card(b);
     if (start >= b.data.size()) { missing_card(b, "card 1"); return; }
@@ -1870,6 +1871,10 @@ bool is_ascii_database(const std::string& n) {
         continue;
       }
       eos_value(r.eos, p) = v;
+      if (r.eos.form == 6 && p.slot == kEosLeakCurve) {
+        r.lcid_ref = kc.ref(p.kfield);
+        if (v > 0 && v == std::floor(v) && v < 1e9) eos_value(r.eos, p) = xid(int(v), b, &IncludeTransform::idfoff);
+      }
     }
     check_eos(r.eos, 1.0, [&](const EosParam& p, int msg, const std::string& detail) {
       KCard& kc = cards[std::min(std::size_t(p.kcard), cards.size() - 1)];
@@ -1885,14 +1890,14 @@ bool is_ascii_database(const std::string& n) {
     if (p.eosid == 0) {
       if (t && t->needs_eos)
         err(1204, p.eos_ref.line ? p.eos_ref : p.mid_ref, card, "EOSID",
-            std::string("*") + t->keywords.front() + " needs an equation of state (*EOS_LINEAR_POLYNOMIAL, *EOS_GRUNEISEN or *EOS_TABULATED)");
+            std::string("*") + t->keywords.front() + " needs an equation of state (" + supported_eos_keywords() + ")");
       return;
     }
     auto it = eos_.find(p.eosid);
     if (it == eos_.end()) {
       auto u = unsupported_eosids_.find(p.eosid);
       if (u != unsupported_eosids_.end())
-        err(1102, p.eos_ref, card, "EOSID", "equation of state " + std::to_string(p.eosid) + " is " + u->second + "; supported: *EOS_LINEAR_POLYNOMIAL, *EOS_GRUNEISEN, *EOS_TABULATED");
+        err(1102, p.eos_ref, card, "EOSID", "equation of state " + std::to_string(p.eosid) + " is " + u->second + "; supported: " + supported_eos_keywords());
       else
         err(1310, p.eos_ref, card, "EOSID", "*EOS " + std::to_string(p.eosid) + " is not defined");
       return;
@@ -1902,6 +1907,12 @@ bool is_ascii_database(const std::string& n) {
       return;
     }
     md.eos = it->second.eos;
+    if (const int lc = eos_curve(md.eos); lc > 0) {  // *DEFINE_CURVE id -> the curve's number 1..NUMLC
+      std::size_t k = 0;
+      while (k < curves_.size() && curves_[k].number != lc) ++k;
+      if (k < curves_.size()) md.eos.c[kEosLeakCurve] = double(k + 1);
+      else err(1310, it->second.lcid_ref, "*EOS " + std::to_string(p.eosid), "LCID", "*DEFINE_CURVE " + std::to_string(lc) + " is not defined");
+    }
   }
 
   void parse_hourglass(const Block& b) {
@@ -3352,7 +3363,7 @@ bool is_ascii_database(const std::string& n) {
       }
       if (mit == mats_.end()) {
         auto u = unsupported_mids_.find(p.mid);
-        if (u != unsupported_mids_.end()) err(1103, p.mid_ref, card, "MID", "material " + std::to_string(p.mid) + " is " + u->second + "; supported for shells: *MAT_ELASTIC, *MAT_PLASTIC_KINEMATIC, *MAT_RIGID");
+        if (u != unsupported_mids_.end()) err(1103, p.mid_ref, card, "MID", "material " + std::to_string(p.mid) + " is " + u->second + "; supported for shells: " + shell_material_keywords());
         else err(1310, p.mid_ref, card, "MID", "material " + std::to_string(p.mid) + " is not defined by a *MAT keyword");
         continue;
       }
@@ -3364,7 +3375,13 @@ bool is_ascii_database(const std::string& n) {
       md.line = p.line;
       if (!has_shell_kernel(md.type)) {
         err(1103, p.mid_ref, card, "MID", "material " + std::to_string(p.mid) + " (type " + std::to_string(md.type) +
-                                              ") has no shell form; supported for shells: *MAT_ELASTIC, *MAT_PLASTIC_KINEMATIC, *MAT_RIGID");
+                                              ") has no shell form; supported for shells: " + shell_material_keywords());
+        continue;
+      }
+      if (const char* feature = nullptr; const MaterialParam* q = refused_shell_param(md, &feature)) {
+        const std::size_t qi = std::size_t(q - r.type->params.data());
+        err(1102, qi < r.refs.size() && r.refs[qi].line ? r.refs[qi] : p.mid_ref, "*MAT material " + std::to_string(p.mid), q->key,
+            std::string(feature) + " (part " + std::to_string(p.pid) + " is of shells)");
         continue;
       }
       resolve_rigid_constraints(md, r, p.mid);
@@ -3917,6 +3934,7 @@ bool is_ascii_database(const std::string& n) {
       // is used
       bool used = false;
       for (const auto& [mid, r] : mats_) used = used || material_uses_curve(r.md, curves_[k].number);
+      for (const auto& [eid, r] : eos_) used = used || eos_curve(r.eos) == curves_[k].number;  // an EOS energy deposition
       if (used) curve_used_[k] = 1;
     }
     m_.control.numlc = int(m_.load_curves.size());

@@ -14,6 +14,7 @@
 #include "impact3d/element/shell_bt.h"
 #include "impact3d/input/deck_reader.h"
 #include "impact3d/material/material_types.h"
+#include "impact3d/material/eos.h"
 
 namespace impact3d {
 
@@ -264,6 +265,24 @@ void check_material_curves(const Model& m, Diagnostics& diag, const Location& fi
   for (const MaterialData& md : m.materials) {
     const MaterialType* t = find_material_type(md.type);
     if (!t) continue;
+    if (const int lc = eos_curve(md.eos); lc > 0) {  // an EOS's energy deposition rate (form 6)
+      Location loc = file_loc;
+      loc.line = md.line;
+      loc.card = "material " + std::to_string(md.number) + " EOS";
+      loc.field = "LCID";
+      const LoadCurve* c = nullptr;
+      for (const LoadCurve& l : m.load_curves)
+        if (l.number == lc) c = &l;
+      if (!c) {
+        diag.add(1310, loc, "load curve " + std::to_string(lc) + " is not defined");
+      } else {
+        for (double f : c->f)
+          if (f < 0) {
+            diag.add(1003, loc, "the energy deposition rate must not be negative (LS-DYNA: a leak goes through the EOS constants, e.g. C4 < 0)");
+            break;
+          }
+      }
+    }
     for (const MaterialParam& p : t->params) {
       if (p.check != ParamCheck::curve) continue;
       const int lc = int(param_value(md, p));

@@ -2,6 +2,7 @@
 
 #include "impact3d/material/eos.h"
 
+#include <cmath>
 #include <cstdio>
 #include <ostream>
 
@@ -65,6 +66,69 @@ const EosForm& tabulated() {
   return f;
 }
 
+// LS-DYNA's EOS 5: card 1 EOSID; cards 2-8 (4 E20 each) A_i0-A_i3 for i = 1..7; card 9 A14
+// A24; card 10 ALPHA BETA E0 V0.  The fixed format: cards 2-10 (9 cards).  c: F1 A10-A14 (0-4),
+// F2 A20-A24 (5-9), F3-F7 A_i0-A_i3 (10-29), ALPHA (30), BETA (31).
+const EosForm& ratio_of_polynomials() {
+  static const EosForm f = [] {
+    EosForm f;
+    f.form = 5;
+    f.name = "ratio of polynomials";
+    f.keyword = "EOS_RATIO_OF_POLYNOMIALS";
+    static const char* const names[7][5] = {{"A10", "A11", "A12", "A13", "A14"}, {"A20", "A21", "A22", "A23", "A24"},
+                                            {"A30", "A31", "A32", "A33", ""},    {"A40", "A41", "A42", "A43", ""},
+                                            {"A50", "A51", "A52", "A53", ""},    {"A60", "A61", "A62", "A63", ""},
+                                            {"A70", "A71", "A72", "A73", ""}};
+    for (int i = 0; i < 7; ++i)
+      for (int j = 0; j < 4; ++j) f.params.push_back({names[i][j], 1 + i, j, i, j, i < 2 ? 5 * i + j : kEosRpF3 + 4 * (i - 2) + j});
+    f.params.push_back({"A14", 8, 0, 7, 0, 4});
+    f.params.push_back({"A24", 8, 1, 7, 1, 9});
+    f.params.push_back({"ALPHA", 9, 0, 8, 0, kEosRpAlpha});
+    f.params.push_back({"BETA", 9, 1, 8, 1, kEosRpBeta});
+    f.params.push_back({"E0", 9, 2, 8, 2, kEosSlotE0});
+    f.params.push_back({"V0", 9, 3, 8, 3, kEosSlotV0});
+    f.widths = {10, 20, 20, 20, 20, 20, 20, 20, 20, 20};
+    f.fixed_widths = {20, 20, 20, 20, 20, 20, 20, 20, 20};
+    return f;
+  }();
+  return f;
+}
+
+// LS-DYNA's EOS 6: form 1's cards, card 2 E0 V0 LCID (the energy deposition rate's curve).
+const EosForm& linear_polynomial_with_energy_leak() {
+  static const EosForm f = {6, "linear polynomial with energy deposition", "EOS_LINEAR_POLYNOMIAL_WITH_ENERGY_LEAK",
+                            {{"C0", 0, 1, 0, 0, 0}, {"C1", 0, 2, 0, 1, 1}, {"C2", 0, 3, 0, 2, 2}, {"C3", 0, 4, 0, 3, 3},
+                             {"C4", 0, 5, 0, 4, 4}, {"C5", 0, 6, 0, 5, 5}, {"C6", 0, 7, 0, 6, 6},
+                             {"E0", 1, 0, 1, 0, kEosSlotE0}, {"V0", 1, 1, 1, 1, kEosSlotV0}, {"LCID", 1, 2, 1, 2, kEosLeakCurve}}};
+  return f;
+}
+
+// LS-DYNA's EOS 8: card 1 EOSID GAMA E0 V0 (LCC LCT LCK LCID: the tables as curves and an energy
+// deposition, refused); cards 2-9 (5 E16 each) EV1-5, EV6-10, C1-5, C6-10, T1-5, T6-10, K1-5,
+// K6-10.  c: form 9's layout, K1-10 at 31-40.
+const EosForm& tabulated_compaction() {
+  static const EosForm f = [] {
+    EosForm f;
+    f.form = 8;
+    f.name = "tabulated compaction";
+    f.keyword = "EOS_TABULATED_COMPACTION";
+    f.params = {{"GAMA", 0, 1, 0, 0, kEosTabGamma}, {"E0", 0, 2, 0, 1, kEosSlotE0}, {"V0", 0, 3, 0, 2, kEosSlotV0},
+                {"LCC", 0, 4, -1, 0, -1, "LCC (the C table as a load curve)"},
+                {"LCT", 0, 5, -1, 0, -1, "LCT (the T table as a load curve)"},
+                {"LCK", 0, 6, -1, 0, -1, "LCK (the K table as a load curve)"},
+                {"LCID", 0, 7, -1, 0, -1, "LCID (an energy deposition curve)"}};
+    static const char* const names[40] = {"EV1", "EV2", "EV3", "EV4", "EV5", "EV6", "EV7", "EV8", "EV9", "EV10",
+                                          "C1",  "C2",  "C3",  "C4",  "C5",  "C6",  "C7",  "C8",  "C9",  "C10",
+                                          "T1",  "T2",  "T3",  "T4",  "T5",  "T6",  "T7",  "T8",  "T9",  "T10",
+                                          "K1",  "K2",  "K3",  "K4",  "K5",  "K6",  "K7",  "K8",  "K9",  "K10"};
+    for (int j = 0; j < 40; ++j) f.params.push_back({names[j], 1 + j / 5, j % 5, 1 + j / 5, j % 5, j < 30 ? j : kEosTabK + j - 30});
+    f.widths = {10, 16, 16, 16, 16, 16, 16, 16, 16};
+    f.history = 2;
+    return f;
+  }();
+  return f;
+}
+
 std::string f6(double v) {
   char b[32];
   std::snprintf(b, sizeof b, "%.6e", v);
@@ -74,7 +138,8 @@ std::string f6(double v) {
 }  // namespace
 
 std::span<const EosForm* const> eos_forms() {
-  static const EosForm* const table[] = {&linear_polynomial(), &jwl(), &sack_tuesday(), &gruneisen(), &tabulated()};
+  static const EosForm* const table[] = {&linear_polynomial(),  &jwl(), &sack_tuesday(), &gruneisen(), &ratio_of_polynomials(),
+                                         &linear_polynomial_with_energy_leak(), &tabulated_compaction(), &tabulated()};
   return table;
 }
 
@@ -96,6 +161,19 @@ std::string supported_eos_forms() {
   return s;
 }
 
+std::string supported_eos_keywords() {
+  std::string s;
+  for (const EosForm* f : eos_forms()) s += (s.empty() ? "*" : ", *") + std::string(f->keyword);
+  return s;
+}
+
+int eos_history_count(int form) {
+  const EosForm* f = form != 0 ? find_eos_form(form) : nullptr;
+  return f ? f->history : 0;
+}
+
+int eos_curve(const EosData& e) { return e.form == 6 ? int(e.c[kEosLeakCurve]) : 0; }
+
 double& eos_value(EosData& e, const EosParam& p) {
   static thread_local double sink = 0;
   if (p.slot >= 0 && p.slot < kEosConstants) return e.c[std::size_t(p.slot)];
@@ -113,7 +191,7 @@ double eos_value(const EosData& e, const EosParam& p) {
 }
 
 int eos_table_points(const EosData& e) {
-  if (e.form != 9) return 0;
+  if (e.form != 9 && e.form != 8) return 0;
   int n = 1;
   while (n < 10 && e.c[std::size_t(n)] < e.c[std::size_t(n - 1)]) ++n;
   return n;
@@ -129,16 +207,30 @@ void check_eos(EosData& e, double rho0, const std::function<void(const EosParam&
   };
   if (e.v0 == 0) e.v0 = 1;
   if (!(e.v0 > 0)) report(param("V0"), 1003, "the initial relative volume V0 must be positive (blank or 0: 1)");
-  if (e.form == 9) {
+  if (e.form == 9 || e.form == 8) {
     static const char* const ev[10] = {"EV1", "EV2", "EV3", "EV4", "EV5", "EV6", "EV7", "EV8", "EV9", "EV10"};
+    static const char* const kk[10] = {"K1", "K2", "K3", "K4", "K5", "K6", "K7", "K8", "K9", "K10"};
     const int n = eos_table_points(e);
     if (n < 2) report(param("EV2"), 1003, "the table needs at least two points with EV decreasing (EV1 > EV2: compression is negative)");
     for (int j = n; j < 10 && n >= 2; ++j)
-      if (e.c[std::size_t(j)] != 0 || e.c[std::size_t(10 + j)] != 0 || e.c[std::size_t(20 + j)] != 0) {
+      if (e.c[std::size_t(j)] != 0 || e.c[std::size_t(10 + j)] != 0 || e.c[std::size_t(20 + j)] != 0 ||
+          (e.form == 8 && e.c[std::size_t(kEosTabK + j)] != 0)) {
         report(param(ev[j]), 1003, "the volumetric strains EV must decrease (ln V: compression negative); points after the table's last must be blank");
         break;
       }
     if (n < 2) return;
+    for (int j = 0; j < n && e.form == 8; ++j)
+      if (!(e.c[std::size_t(kEosTabK + j)] > 0)) {
+        report(param(kk[j]), 1003, "the unloading bulk modulus K must be positive at every point of the table");
+        return;
+      }
+  }
+  if (e.form == 5 && e.c[0] == 1)
+    report(param("A10"), 1102, "A10 = 1 (LS-DYNA's switch to its delta-phase pressure model)");
+  if (e.form == 6) {
+    const double lc = e.c[kEosLeakCurve];
+    if (!(lc >= 0 && lc == std::floor(lc) && lc < 1e9))
+      report(param("LCID"), 1003, "a load-curve number (the energy deposition rate against time; 0: none)");
   }
   if (e.form == 2 && !(e.c[2] > 0)) report(param("R1"), 1003, "R1 must be positive");
   if (e.form == 2 && !(e.c[3] > 0)) report(param("R2"), 1003, "R2 must be positive");
@@ -150,7 +242,7 @@ void check_eos(EosData& e, double rho0, const std::function<void(const EosParam&
   c.rho = rho0;
   derive_eos_constants(e, c);
   if (!(c.K > 0))
-    report(param(e.form == 1 || e.form == 9 ? "C1" : e.form == 2 ? "A" : e.form == 3 ? "A1" : "C"), 1003,
+    report(param(e.form == 1 || e.form == 6 || e.form == 8 || e.form == 9 ? "C1" : e.form == 2 ? "A" : e.form == 3 ? "A1" : e.form == 5 ? "A11" : "C"), 1003,
            "the equation of state gives no sound speed at its initial state (isentropic bulk modulus " + f6(c.K) + " <= 0)");
 }
 
@@ -158,12 +250,13 @@ void derive_eos_constants(const EosData& e, MaterialConstants& c) {
   c.eos_form = e.form;
   for (std::size_t j = 0; j < e.c.size(); ++j) c.eos[j] = e.c[j];
   if (e.form == 4) c.eos[0] = c.rho * e.c[0] * e.c[0];
-  if (e.form == 9) c.eos[31] = eos_table_points(e);
+  if (e.form == 9 || e.form == 8) c.eos[kEosConstants] = eos_table_points(e);
   c.eos_v0 = e.v0 > 0 ? e.v0 : 1.0;
+  c.eos_ln_v0 = std::log(c.eos_v0);
   // the isentropic bulk modulus at the initial state, V = V0 (mu0 = 1/V0 - 1)
   const double m1 = 1.0 / c.eos_v0;
   double a, b, da, db;
-  calc_eos_coefficients(c, m1 - 1.0, a, b, da, db);
+  calc_eos_coefficients(c, m1 - 1.0, e.e0, HUGE_VAL, a, b, da, db);
   const double p0 = a + b * e.e0;
   c.K = m1 * (da + db * e.e0) + p0 * b / m1;
   const double G = c.G;
@@ -173,9 +266,22 @@ void derive_eos_constants(const EosData& e, MaterialConstants& c) {
   c.c = c.rho > 0.0 && c.K + 4.0 * G / 3.0 > 0.0 ? std::sqrt((c.K + 4.0 * G / 3.0) / c.rho) : 0.0;
 }
 
+void derive_eos_curve(const EosData& e, const Model& m, MaterialConstants& c) {
+  c.eos_curve_t.clear(), c.eos_curve_f.clear(), c.eos_curve_F.clear();
+  const int lc = eos_curve(e);
+  for (const LoadCurve& l : m.load_curves)
+    if (lc > 0 && l.number == lc && l.t.size() >= 2) {
+      c.eos_curve_t = l.t;
+      c.eos_curve_f = l.f;
+      c.eos_curve_F.assign(l.t.size(), 0.0);
+      for (std::size_t j = 1; j < l.t.size(); ++j)
+        c.eos_curve_F[j] = c.eos_curve_F[j - 1] + 0.5 * (l.f[j - 1] + l.f[j]) * (l.t[j] - l.t[j - 1]);
+    }
+}
+
 double calc_eos_initial_pressure(const MaterialConstants& c, double e0) {
   double a, b, da, db;
-  calc_eos_coefficients(c, 1.0 / c.eos_v0 - 1.0, a, b, da, db);
+  calc_eos_coefficients(c, 1.0 / c.eos_v0 - 1.0, e0, HUGE_VAL, a, b, da, db);
   const double p = a + b * e0;
   return p < c.eos_pc ? c.eos_pc : p;
 }
@@ -185,8 +291,13 @@ void echo_eos(std::ostream& os, const EosData& e) {
   if (!f) return;
   echo_line(os, "equation of state", std::string(f->name) + " (form " + std::to_string(f->form) + (e.id ? ", EOSID " + std::to_string(e.id) : std::string()) + ")");
   const int n = eos_table_points(e);
-  for (const EosParam& p : f->params)
-    if (p.slot >= 0 && (e.form != 9 || p.slot >= 30 || p.slot % 10 < n)) echo_line(os, std::string("  EOS ") + p.key, f6(eos_value(e, p)));
+  for (const EosParam& p : f->params) {
+    if (p.slot < 0) continue;
+    const bool table = (e.form == 9 || e.form == 8) && p.slot != kEosTabGamma && p.slot < kEosConstants;
+    if (table && (p.slot < kEosTabGamma ? p.slot % 10 : p.slot - kEosTabK) >= n) continue;  // past the table
+    const double v = eos_value(e, p);
+    echo_line(os, std::string("  EOS ") + p.key, e.form == 6 && p.slot == kEosLeakCurve ? std::to_string(int(v)) : f6(v));
+  }
   echo_line(os, "pressure from", "the equation of state (deviatoric stress from the material)");
 }
 

@@ -44,16 +44,20 @@ struct MaterialConstants {
   // linear, its end values held beyond the first and last points; rate_slope[i] from i to i + 1.
   std::vector<double> rate_x, rate_f, rate_slope;
   // Equation of state (material/eos.h): form 0 none, 1 linear polynomial, 2 JWL, 3 Sack
-  // Tuesday, 4 Gruneisen, 9 tabulated; its constants (form 1 C0-C6, form 2 A, B, R1, R2, OMEG,
-  // form 3 A1, A2, A3, B1, B2, form 4 rho0 C^2, S1, S2, S3, GAMMA0, A; form 9
-  // EV1-EV10, C1-C10, T1-T10, GAMMA, then the number of points); the initial relative volume
-  // V0; the pressure cutoff (p >= eos_pc; -inf none); the history value that holds the internal
-  // energy per reference volume
+  // Tuesday, 4 Gruneisen, 5 ratio of polynomials, 6 linear polynomial with energy deposition,
+  // 8 tabulated compaction, 9 tabulated; its constants (form 1 and 6 C0-C6, form 2 A, B, R1,
+  // R2, OMEG, form 3 A1, A2, A3, B1, B2, form 4 rho0 C^2, S1, S2, S3, GAMMA0, A; form 5 the
+  // A_ij, ALPHA, BETA; forms 8, 9 EV1-EV10, C1-C10, T1-T10, GAMMA, form 8 K1-K10; then (index
+  // kEosConstants) the number of table points); the initial relative volume V0; the pressure
+  // cutoff (p >= eos_pc; -inf none); the first of the history values it keeps (the internal
+  // energy per reference volume; form 8 then the most compacted ln V - ln V0); form 6's deposition
+  // curve (times, rates, the rate's integral from the first time to each point)
   int eos_form = 0;
   std::array<double, kEosConstants + 1> eos{};
-  double eos_v0 = 1;
+  double eos_v0 = 1, eos_ln_v0 = 0;  // V0 and ln V0
   double eos_pc = -HUGE_VAL;
   int eos_hist = -1;
+  std::vector<double> eos_curve_t, eos_curve_f, eos_curve_F;
   // the type's other constants (its file names their places)
   std::array<double, 24> k{};
 };

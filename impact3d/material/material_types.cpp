@@ -137,6 +137,7 @@ MaterialConstants derive_constants(const MaterialData& md, const Model& m) {
   derive_material_constants(c);
   if (md.eos.form != 0 && t && t->accepts_eos) {  // the pressure from the equation of state
     derive_eos_constants(md.eos, c);
+    derive_eos_curve(md.eos, m, c);
     c.eos_hist = int(t->history.size());
   }
   derive_erosion_constants(md.erosion, c);
@@ -189,6 +190,7 @@ void echo_material_params(std::ostream& os, const MaterialData& md, const Materi
 bool material_uses_curve(const MaterialData& md, int curve) {
   const MaterialType* t = find_material_type(md.type);
   if (!t || curve == 0) return false;
+  if (eos_curve(md.eos) == curve) return true;  // an EOS energy deposition (form 6)
   for (const MaterialParam& p : t->params)
     if (p.check == ParamCheck::curve && param_value(md, p) == double(curve)) return true;
   return false;
@@ -200,7 +202,7 @@ int material_history_count(int type) {
 }
 
 int material_history_count(const MaterialData& md) {
-  return material_history_count(md.type) + (md.eos.form != 0 ? 1 : 0);
+  return material_history_count(md.type) + eos_history_count(md.eos.form);
 }
 
 }  // namespace impact3d

@@ -1,7 +1,9 @@
 #pragma once
 // Model: what the deck says, in the deck's own numbering, after the input phase has read and
 // checked it.  Nodes and solids are numbered 1..NUMNP and 1..NUMELH in the deck (each number
-// once, any order); the arrays here are indexed by number - 1.  Element node references are
+// once, any order); the arrays here are indexed by number - 1, until the starter renumbers the
+// mesh for locality (init/mesh_order.h: then node_order / hex_order say where each deck number
+// went and node_user_id / hex_user_id hold the deck's ids).  Element node references are
 // 0-based node indices.
 
 #include <algorithm>
@@ -79,11 +81,13 @@ struct ErosionData {
 };
 
 // An equation of state of a material (the pressure of its solids; material/eos.h).  form: 0
-// none, 1 linear polynomial (*EOS_LINEAR_POLYNOMIAL), 4 Gruneisen (*EOS_GRUNEISEN): DYNA3D's
-// EOS form numbers; 9 tabulated (*EOS_TABULATED).  c: form 1 C0-C6; form 4 C, S1, S2, S3,
-// GAMMA0, A; form 9 EV1-EV10, C1-C10, T1-T10, GAMMA.  e0: the initial internal energy per
-// reference volume; v0: the initial relative volume (1).
-constexpr int kEosConstants = 31;
+// none, else DYNA3D's EOS form number (1 *EOS_LINEAR_POLYNOMIAL, 2 *EOS_JWL, 3
+// *EOS_SACK_TUESDAY, 4 *EOS_GRUNEISEN, 5 *EOS_RATIO_OF_POLYNOMIALS, 6
+// *EOS_LINEAR_POLYNOMIAL_WITH_ENERGY_LEAK, 8 *EOS_TABULATED_COMPACTION, 9 *EOS_TABULATED).
+// c: the form's constants (material/eos.h names their places: form 1 C0-C6; form 4 C, S1, S2,
+// S3, GAMMA0, A; form 9 EV1-EV10, C1-C10, T1-T10, GAMMA; form 8 those and K1-K10).  e0: the
+// initial internal energy per reference volume; v0: the initial relative volume (1).
+constexpr int kEosConstants = 41;
 struct EosData {
   int form = 0;
   int id = 0;  // the keyword deck's EOSID (messages, the converter)
@@ -307,6 +311,16 @@ struct Model {
     return hex_user_id.empty() ? e + 1 : hex_user_id[std::size_t(e)];
   }
   int num_hexes() const { return static_cast<int>(hex_nodes.size()); }
+
+  // Mesh ordering (init/mesh_order.h): when the starter renumbered the nodes and solids for
+  // locality, node_order[k] / hex_order[k] is the internal index of the node / solid that is
+  // k-th in deck order (the readers' numbering 1..N); empty: not renumbered (identity).  The
+  // time-history blocks and initial-velocity ranges keep deck-order numbers: resolve them with
+  // node_of_deck_number / hex_of_deck_number.
+  std::vector<int> node_order, hex_order;
+  bool renumbered() const { return !node_order.empty() || !hex_order.empty(); }
+  int node_of_deck_number(int n) const { return node_order.empty() ? n - 1 : node_order[std::size_t(n - 1)]; }
+  int hex_of_deck_number(int e) const { return hex_order.empty() ? e - 1 : hex_order[std::size_t(e - 1)]; }
 };
 
 // Which translational components a boundary-condition code 0-7 fixes.

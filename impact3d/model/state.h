@@ -40,6 +40,7 @@ struct ElementGroup {
 // What one block of the element pass hands to the reductions.
 struct BlockResult {
   double die = 0, dhg = 0, dbv = 0;   // energy increments, summed over the lanes in lane order
+  double dsrc = 0;                     // energy deposited by equations of state (in die too)
   double dt_min = 0;                   // smallest element step and its element (lowest on ties)
   int dt_elem = -1;
   int bad_volume_elem = -1, non_finite_elem = -1;  // lowest such element, or -1

@@ -1,5 +1,7 @@
 #include "impact3d/solve/element_groups.h"
 
+#include "impact3d/material/eos.h"
+
 #include <stdexcept>
 #include <string>
 
@@ -33,7 +35,7 @@ void build_element_groups(State& s) {
     const MaterialType& t = material_type(s.mats[k].type);
     g.kernel = t.solid.kind;
     g.solid = &t.solid;
-    g.history = int(t.history.size()) + (s.mats[k].eos_form != 0 ? 1 : 0);  // and the EOS energy
+    g.history = int(t.history.size()) + eos_history_count(s.mats[k].eos_form);  // and the EOS's
     g.material = int(k);
     g.first_block = blocks;
     g.num_elems = count[k];

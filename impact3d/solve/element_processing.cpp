@@ -91,6 +91,7 @@ void gather_hex_block(const State& s, const GroupPass& gp, const int* elems, Hex
 void update_stress_block(const GroupPass& gp, HexBlock& k) {
   for (int c = 0; c < 6; ++c) IMPACT3D_FOR_LANES k.old[c][l] = k.sig[c][l];
   const double dt = gp.dt;
+  IMPACT3D_FOR_LANES k.de_src[l] = 0;
   if (!(dt > 0)) {
     IMPACT3D_FOR_LANES k.de_ie[l] = 0;
     return;
@@ -101,13 +102,14 @@ void update_stress_block(const GroupPass& gp, HexBlock& k) {
   if (gp.with_back) rotate_stress_jaumann_block(k.back, k.w, dt);
   gp.solid->update_block(*gp.mc, k, dt);  // the material type's kernel (material_types.h)
   if (gp.eos) {  // the pressure from the equation of state, the energy with it (material/eos.h)
-    const int h = gp.mc->eos_hist;
+    const int h = gp.mc->eos_hist, nh = gp.history - h;  // its history values: h .. h + nh - 1
     for (int l = 0; l < kLanes; ++l) {
-      double old[6], d[6], sig[6];
+      double old[6], d[6], sig[6], hv[2] = {0, 0};
       for (int c = 0; c < 6; ++c) old[c] = k.old[c][l], d[c] = k.d[c][l], sig[c] = k.sig[c][l];
-      double e = k.hist[h][l];
-      k.cs[l] = update_stress_eos_point(*gp.mc, old, d, k.v[l], k.vm[l], k.v0[l], dt, k.q_old[l], k.q[l], sig, e);
-      k.hist[h][l] = e;
+      for (int j = 0; j < nh && j < 2; ++j) hv[j] = k.hist[h + j][l];
+      k.cs[l] = update_stress_eos_point(*gp.mc, old, d, k.v[l], k.vm[l], k.v0[l], dt, k.q_old[l], k.q[l], sig, hv,
+                                        gp.time, k.de_src[l]);
+      for (int j = 0; j < nh && j < 2; ++j) k.hist[h + j][l] = hv[j];
       for (int c = 0; c < 6; ++c) k.sig[c][l] = sig[c];
     }
   }
@@ -116,7 +118,7 @@ void update_stress_block(const GroupPass& gp, HexBlock& k) {
     #pragma GCC unroll 16
     for (int c = 0; c < 3; ++c) pw += 0.5 * (k.old[c][l] + k.sig[c][l]) * k.d[c][l];
     for (int c = 3; c < 6; ++c) pw += (k.old[c][l] + k.sig[c][l]) * k.d[c][l];  // 2 * 0.5 for shear pairs
-    k.de_ie[l] = pw * k.vm[l] * dt;
+    k.de_ie[l] = pw * k.vm[l] * dt + k.de_src[l];
   }
 }
 
@@ -233,6 +235,7 @@ void store_hex_block(State& s, const GroupPass& gp, const int* elems, const bool
       for (int m = 0; m < 12; ++m) s.hgs[12 * E + std::size_t(m)] = k.hgs[m][l];
     s.dt_e[E] = k.dt[l];
     r.die += k.de_ie[l];
+    r.dsrc += k.de_src[l];
     r.dhg += k.de_hg[l];
     r.dbv += k.de_bv[l];
     if (k.dt[l] < r.dt_min) {  // lanes in increasing element order: the lowest wins ties
@@ -316,7 +319,7 @@ ElementLoopResult calc_forces_for_elems(const Model& m, State& s) {
     for (int b = b0; b < b0 + nb; ++b) process_hex_block(s, gp, b);
   }
   // Reductions group by group, blocks in order (same bits for any thread count and schedule).
-  double die = 0, dhg = 0, dbv = 0;
+  double die = 0, dhg = 0, dbv = 0, dsrc = 0;
   double dtmin = std::numeric_limits<double>::infinity();
   int arg = -1, bad = -1, nonfin = -1, failed = 0;
   for (const ElementGroup& g : s.groups) {
@@ -325,6 +328,7 @@ ElementLoopResult calc_forces_for_elems(const Model& m, State& s) {
       const BlockResult& r = s.block_results[std::size_t(b)];
       gie += r.die;
       ghg += r.dhg;
+      dsrc += r.dsrc;
       dbv += r.dbv;
       // smallest step, lowest element on ties (blocks go group by group, not in element order)
       if (r.dt_elem >= 0 && (r.dt_min < dtmin || (r.dt_min == dtmin && (arg < 0 || r.dt_elem < arg)))) {
@@ -346,6 +350,7 @@ ElementLoopResult calc_forces_for_elems(const Model& m, State& s) {
   out.die = die;
   out.dhg = dhg;
   out.dbv = dbv;
+  out.dsrc = dsrc;
   out.bad_volume_elem = bad;
   out.non_finite_elem = nonfin;
   out.dt_min = dtmin;

@@ -10,6 +10,7 @@ struct ElementLoopResult {
   double dt_min = 0;          // smallest element time step (before the scale factor)
   int dt_elem = -1;           // its element (lowest index on ties)
   double die = 0, dhg = 0, dbv = 0;  // energy increments of this pass (block sums in block order)
+  double dsrc = 0;                   // energy deposited by equations of state (in die too: external work)
   int failed_now = 0;         // solids that failed in this pass (s.failed == 2)
 };
 

@@ -55,6 +55,7 @@ StepStatus Engine::process_elements() {
       }
   }
   s_.internal += r.die;
+  s_.external_work += r.dsrc;  // an equation of state's energy deposition (form 6)
   s_.hourglass += r.dhg;
   s_.bulk_viscous += r.dbv;
   if (r.bad_volume_elem >= 0) {

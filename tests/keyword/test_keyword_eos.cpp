@@ -284,7 +284,7 @@ TEST(KeywordEos, RefusalsNameTheField) {
   const std::string elastic = "*MAT_ELASTIC\n         7    8930.0   117.0E9      0.35\n";
   EXPECT_EQ(count(deck(elastic + kGruneisen), 1102), 1);
   // a refused EOS keyword: the keyword (1301) and the part naming it (1102)
-  const std::string tab = "*EOS_TABULATED_COMPACTION\n         3     3.7E11\n";
+  const std::string tab = "*EOS_IGNITION_AND_GROWTH_OF_REACTION_IN_HE\n         3     3.7E11\n";
   EXPECT_EQ(count(deck(kNull + tab), 1102), 1);
   // V0 negative, LCID, TEROD below 1, C <= 0
   std::string v0 = kGruneisen;
@@ -322,7 +322,7 @@ TEST(KeywordEos, FixedFormatEosTypeAndCards) {
     EXPECT_FALSE(r.ok);
     EXPECT_GE(r.d.count(msg), 1) << r.messages();
   };
-  refused("    4", "    8", 1102);
+  refused("    4", "    7", 1102);  // ignition and growth
   std::string t1 = text;
   {
     const std::size_t c1 = t1.find("*----- MATERIALS\n") + 17;
@@ -331,4 +331,125 @@ TEST(KeywordEos, FixedFormatEosTypeAndCards) {
     EXPECT_FALSE(r.ok);
     EXPECT_GE(r.d.count(1102), 1) << r.messages();
   }
+}
+
+namespace {
+
+// *EOS_RATIO_OF_POLYNOMIALS (form 5): card 1 EOSID; cards 2-8 A_i0-A_i3 (4 E20 each); card 9
+// A14 A24; card 10 ALPHA BETA E0 V0.
+std::string ratio_of_polynomials(const std::string& a10 = "                 0.0") {
+  return "*EOS_RATIO_OF_POLYNOMIALS\n         3\n" + a10 +
+         "              2.0E09              5.0E09              1.0E10\n"
+         "                 0.5                 0.3                 0.0                 0.0\n"
+         "              1.0E-9                 0.0                 0.0                 0.0\n"
+         "                 0.0                 0.0                 0.0                 0.0\n"
+         "                 1.0                 0.1                 0.0                 0.0\n"
+         "             1.0E-10                 0.0                 0.0                 0.0\n"
+         "                 0.0                 0.0                 0.0                 0.0\n"
+         "              2.0E10                0.02\n"
+         "                 0.1               1.0E9               2.0E8                 1.0\n";
+}
+
+// *EOS_LINEAR_POLYNOMIAL_WITH_ENERGY_LEAK (form 6): form 1's cards, card 2 E0 V0 LCID; and the
+// curve it names.
+std::string energy_leak(const std::string& lcid = "        11", const std::string& rate = "             1.0E13") {
+  return "*EOS_LINEAR_POLYNOMIAL_WITH_ENERGY_LEAK\n         3       0.0    2.2E09       0.0       0.0       0.4       0.0       0.0\n"
+         "     1.0E8       1.0" + lcid + "\n"
+         "*DEFINE_CURVE\n        11\n                 0.0" + rate + "\n              1.0E-5              2.0E13\n";
+}
+
+// *EOS_TABULATED_COMPACTION (form 8): card 1 EOSID GAMA E0 V0 LCC LCT LCK LCID; cards 2-9 EV,
+// C, T, K (5 E16 each).
+const std::string kCompaction =
+    "*EOS_TABULATED_COMPACTION_TITLE\nsand-like\n"
+    "$#   eosid      gama        e0        v0       lcc       lct       lck      lcid\n"
+    "         3       0.5       0.0       1.0\n"
+    "             0.0           -0.05            -0.1            -0.2            -0.3\n"
+    "\n"
+    "             0.0          5.0E07          1.5E08          5.0E08          1.2E09\n"
+    "\n"
+    "             1.0             1.0             0.9             0.8             0.8\n"
+    "\n"
+    "          2.0E09          3.0E09          5.0E09          8.0E09          1.2E10\n"
+    "\n";
+
+}  // namespace
+
+// Forms 5, 6 and 8: read (the table's columns in their places), echoed, through the converter
+// both ways (fixed format: the form in card 1 columns 21-25, its cards after card 8).
+TEST(KeywordEos, RatioOfPolynomialsEnergyLeakAndCompactionAreReadEchoedAndRoundTrip) {
+  Read a = read_text(deck(kNull + ratio_of_polynomials()));
+  ASSERT_TRUE(a.ok) << a.messages();
+  const EosData& e = a.m.materials[0].eos;
+  EXPECT_EQ(e.form, 5);
+  EXPECT_EQ(e.c[1], 2e9);     // A11
+  EXPECT_EQ(e.c[4], 2e10);    // A14
+  EXPECT_EQ(e.c[5], 0.5);     // A20
+  EXPECT_EQ(e.c[9], 0.02);    // A24
+  EXPECT_EQ(e.c[kEosRpF3], 1e-9);           // A30
+  EXPECT_EQ(e.c[kEosRpF3 + 4 * 2 + 1], 0.1);  // A51
+  EXPECT_EQ(e.c[kEosRpF3 + 4 * 3], 1e-10);  // A60
+  EXPECT_EQ(e.c[kEosRpAlpha], 0.1);
+  EXPECT_EQ(e.c[kEosRpBeta], 1e9);
+  EXPECT_EQ(e.e0, 2e8);
+  std::ostringstream echo;
+  write_model_summary(echo, a.m);
+  EXPECT_NE(echo.str().find("ratio of polynomials (form 5, EOSID 3)"), std::string::npos) << echo.str();
+  EXPECT_NE(echo.str().find("EOS BETA"), std::string::npos) << echo.str();
+  round_trips(a);
+  std::ostringstream fx;
+  write_fixed_deck(fx, a.m, nullptr);
+  EXPECT_NE(fx.str().find("\n                 0.1               1.0e9               2.0e8                 1.0\n"), std::string::npos) << fx.str();
+
+  Read b = read_text(deck(kNull + energy_leak()));
+  ASSERT_TRUE(b.ok) << b.messages();
+  EXPECT_EQ(b.m.materials[0].eos.form, 6);
+  EXPECT_EQ(b.m.materials[0].eos.c[4], 0.4);
+  EXPECT_EQ(eos_curve(b.m.materials[0].eos), 1);  // *DEFINE_CURVE 11: the deck's first curve
+  EXPECT_EQ(b.d.count(2004), 0) << b.messages();  // the curve is used
+  std::ostringstream be;
+  write_model_summary(be, b.m);
+  EXPECT_NE(be.str().find("linear polynomial with energy deposition (form 6, EOSID 3)"), std::string::npos) << be.str();
+  round_trips(b);
+
+  Read c = read_text(deck(kNull + kCompaction));
+  ASSERT_TRUE(c.ok) << c.messages();
+  const EosData& t = c.m.materials[0].eos;
+  EXPECT_EQ(t.form, 8);
+  EXPECT_EQ(t.c[kEosTabGamma], 0.5);
+  EXPECT_EQ(t.c[3], -0.2);              // EV4
+  EXPECT_EQ(t.c[kEosTabC + 4], 1.2e9);  // C5
+  EXPECT_EQ(t.c[kEosTabT + 2], 0.9);    // T3
+  EXPECT_EQ(t.c[kEosTabK + 1], 3e9);    // K2
+  EXPECT_EQ(eos_table_points(t), 5);
+  EXPECT_EQ(material_history_count(c.m.materials[0]), 2);  // E and the most compacted ln V
+  std::ostringstream ce;
+  write_model_summary(ce, c.m);
+  EXPECT_NE(ce.str().find("tabulated compaction (form 8, EOSID 3)"), std::string::npos) << ce.str();
+  EXPECT_NE(ce.str().find("EOS K5"), std::string::npos) << ce.str();
+  EXPECT_EQ(ce.str().find("EOS K6"), std::string::npos) << ce.str();  // past the table
+  round_trips(c);
+}
+
+// The new forms' refusals name the field: a non-monotonic EV table and a K <= 0 (1003), the
+// curve fields LCC-LCID (1102), A10 = 1 (1102), an undefined or negative deposition curve
+// (1310, 1003).
+TEST(KeywordEos, RatioLeakAndCompactionRefusalsNameTheField) {
+  auto refused = [&](const std::string& text, int msg, const char* field) {
+    Read r = read_text(text);
+    EXPECT_FALSE(r.ok);
+    EXPECT_EQ(r.d.count(msg), 1) << r.messages();
+    EXPECT_NE(r.messages().find(field), std::string::npos) << r.messages();
+  };
+  auto swap = [](std::string t, const std::string& from, const std::string& to) {
+    EXPECT_NE(t.find(from), std::string::npos) << from;
+    t.replace(t.find(from), from.size(), to);
+    return t;
+  };
+  refused(deck(kNull + swap(kCompaction, "            -0.1", "           -0.01")), 1003, "EV3");  // -0.05, -0.01: not decreasing
+  refused(deck(kNull + swap(kCompaction, "          3.0E09", "         -3.0E09")), 1003, "K2");
+  refused(deck(kNull + swap(kCompaction, "       1.0\n", "       1.0         5\n")), 1102, "LCC");
+  refused(deck(kNull + ratio_of_polynomials("                 1.0")), 1102, "A10");
+  refused(deck(kNull + energy_leak("        12")), 1310, "LCID");
+  refused(deck(kNull + energy_leak("        11", "            -1.0E13")), 1003, "LCID");
 }

@@ -20,23 +20,14 @@
 #include "impact3d/material/eos.h"
 #include "impact3d/material/material_types.h"
 #include "impact3d/solve/engine.h"
+#include "tests/material/eos_test_util.h"
 #include "tests/solve/test_models.h"
 
 using namespace impact3d;
 using namespace solve_test;
+using namespace eos_test;  // null_material, pressure, squeezed_cube, run_cube
 
 namespace {
-
-MaterialData null_material(double rho, const EosData& eos) {
-  MaterialData md;
-  md.number = 1;
-  md.type = 9;
-  set_param_defaults(md, material_type(9));
-  md.rho = rho;
-  md.eos = eos;
-  md.title = "null + EOS";
-  return md;
-}
 
 EosData linear_polynomial(std::array<double, 7> c, double e0) {
   EosData e;
@@ -52,65 +43,6 @@ EosData gruneisen_copper(double gamma0) {
   e.form = 4;
   e.c = {3940, 1.49, 0, 0, gamma0, 0, 0};
   return e;
-}
-
-double pressure(const State& s, int e) {
-  const double* g = &s.sig[6 * std::size_t(e)];
-  return -(g[0] + g[1] + g[2]) / 3;
-}
-
-// One 1 mm cube, bottom fixed, sides on rollers, the top face moving at -V for T then +V for
-// 1.5 T (mu from 0 to 0.111 and back to -0.048).
-Model squeezed_cube(const MaterialData& md, double V, double T) {
-  Box b;
-  b.lx = b.ly = b.lz = 1e-3;
-  Model m = make_box_model(b, md, 2.5 * T, 4);
-  for (int n = 0; n < m.num_nodes(); ++n)
-    if (m.z[std::size_t(n)] == 0) m.bc[std::size_t(n)] = 7;
-  LoadCurve lc;
-  lc.number = 1;
-  lc.t = {0, T, T * 1.0000001, 3 * T};
-  lc.f = {-V, -V, V, V};
-  m.load_curves = {lc};
-  m.control.numlc = 1;
-  for (int n = 0; n < m.num_nodes(); ++n) {
-    if (m.z[std::size_t(n)] == 0) continue;
-    PrescribedMotion pm;
-    pm.node = n;
-    pm.dir = {0, 0, 1};
-    pm.curve = 0;
-    m.prescribed_motions.push_back(pm);
-  }
-  m.control.tssf = 0.5;
-  return m;
-}
-
-// Runs the cube; calls check(mu, p, E) after every cycle; returns the largest |mu| reached in
-// compression and tension.
-template <class F>
-void run_cube(Model& m, F check, double& mu_max, double& mu_min) {
-  ScopedThreads one(1);
-  Engine eng(m);
-  ASSERT_EQ(eng.initialize(), StepStatus::ok);
-  const State& s = eng.state();
-  const int h = s.mats[0].eos_hist;
-  ASSERT_GE(h, 0);
-  mu_max = 0, mu_min = 0;
-  StepStatus st = StepStatus::ok;
-  int cycles = 0;
-  while ((st = eng.step()) == StepStatus::ok) {
-    const double mu = s.vol0[0] / s.vol[0] - 1;
-    const double E = s.hist[std::size_t(h)];
-    check(mu, pressure(s, 0), E);
-    // the element's energy is the work the books hold (stress and bulk viscosity), plus E0
-    // times the reference volume (the initial volume / V0)
-    const double e0 = m.materials[0].eos.e0, vref = s.vol0[0] / m.materials[0].eos.v0;
-    EXPECT_NEAR(E * vref, e0 * vref + s.internal + s.bulk_viscous, 1e-9 * (std::fabs(e0 * vref) + std::fabs(s.internal) + 1e-12));
-    mu_max = std::max(mu_max, mu), mu_min = std::min(mu_min, mu);
-    ++cycles;
-  }
-  EXPECT_EQ(st, StepStatus::finished);
-  EXPECT_GT(cycles, 20);
 }
 
 }  // namespace
