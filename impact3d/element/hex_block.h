@@ -200,7 +200,8 @@ inline void calc_hex_stress_force_block(HexBlock& k) {
 }
 
 // Hourglass forces added to the corner forces (calc_hex_hourglass_force); power in k.de_hg
-// (times dt by the caller).  type as in HourglassInput; qhg != 0.  dt_hg is the step of the
+// (times dt by the caller; for the stiffness forms the mean resultant's, as the scalar
+// kernel's).  type as in HourglassInput; qhg != 0.  dt_hg is the step of the
 // stiffness forms.
 inline void calc_hex_hourglass_force_block(HexBlock& k, int type, double qhg, double c,
                                            double shear_modulus, double dt_hg) {
@@ -248,6 +249,7 @@ inline void calc_hex_hourglass_force_block(HexBlock& k, int type, double qhg, do
   }
   alignas(64) Lanes qf[12];  // the hourglass resultants Q_ia that act
   alignas(64) Lanes root;
+  alignas(64) Lanes mean_corr;  // stiffness forms: kappa dt |h|^2 / 2 (the mean resultant's power)
   if (type <= 3) {
     IMPACT3D_FOR_LANES root[l] = cbrt_positive(k.v[l] * k.v[l]);
     IMPACT3D_FOR_LANES {
@@ -265,6 +267,10 @@ inline void calc_hex_hourglass_force_block(HexBlock& k, int type, double qhg, do
         k.hgs[m][l] += kdt * h[m][l];
         qf[m][l] = k.hgs[m][l];
       }
+      double hh = 0.0;
+      #pragma GCC unroll 16
+      for (int m = 0; m < 12; ++m) hh += h[m][l] * h[m][l];
+      mean_corr[l] = 0.5 * kdt * hh;
     }
   }
   IMPACT3D_FOR_LANES k.de_hg[l] = 0.0;  // the power, summed node by node
@@ -283,6 +289,7 @@ inline void calc_hex_hourglass_force_block(HexBlock& k, int type, double qhg, do
       k.de_hg[l] += ax * k.vx[n][l] + ay * k.vy[n][l] + az * k.vz[n][l];
     }
   }
+  if (type > 3) IMPACT3D_FOR_LANES k.de_hg[l] = k.de_hg[l] - mean_corr[l];
 }
 
 // Element step (calc_hex_time_step) into k.dt.

@@ -259,7 +259,10 @@ double calc_hex_hourglass_force(const HourglassInput& in, const double x[8], con
   const double kappa = 0.25 * in.qhg * in.shear_modulus * cbrt_positive(in.volume);
   const double kdt = kappa * in.dt;
   for (int k = 0; k < 12; ++k) hgs[k] += kdt * h[k];
-  return add_hourglass_forces(g, hgs, vx, vy, vz, fx, fy, fz);
+  double hh = 0.0;
+  for (int k = 0; k < 12; ++k) hh += h[k] * h[k];
+  // the mean resultant's power (Q^n + Q^{n+1}) / 2 . h (hexahedron.h)
+  return add_hourglass_forces(g, hgs, vx, vy, vz, fx, fy, fz) - 0.5 * kdt * hh;
 }
 
 double calc_bulk_viscosity(double rho, double c, double l, double trace_d, double q1,

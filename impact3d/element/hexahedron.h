@@ -41,7 +41,11 @@ void calc_hex_stress_force(const double sig[6], const double dvdx[8], const doub
 //   type 4, 5  : Flanagan-Belytschko stiffness: hourglass resultants hgs[12] accumulate
 //                qhg * G-scaled stiffness * dt * hourglass velocity (type 5 adds 0 viscous part)
 // hgs[12] is the element's hourglass state (used by types 4/5 only, zero initially).
-// Returns the hourglass power (force . velocity, >= 0 for viscous forms) for the energy books.
+// Returns the hourglass power for the energy books: force . velocity (>= 0) for the viscous
+// forms; for the stiffness forms the mean resultant's, (Q^n + Q^{n+1}) / 2 . h = the updated
+// force's power less kappa dt |h|^2 / 2, which books the springs' stored energy |Q|^2 / 2 kappa
+// exactly (the updated resultant's power overbooked it by (Q^{n+1} - Q^n) . h / 2 every step,
+// as the internal energy would with the new stress instead of the mean).
 struct HourglassInput {
   int type;          // 1..5
   double qhg;        // coefficient
