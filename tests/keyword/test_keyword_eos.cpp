@@ -453,3 +453,23 @@ TEST(KeywordEos, RatioLeakAndCompactionRefusalsNameTheField) {
   refused(deck(kNull + energy_leak("        12")), 1310, "LCID");
   refused(deck(kNull + energy_leak("        11", "            -1.0E13")), 1003, "LCID");
 }
+
+// Form 6 in the fixed format: LCID (card 2 columns 21-30) is a load-curve number; one the deck
+// lacks is refused (1310 naming LCID), the deck's own reads.
+TEST(KeywordEos, FixedFormatEnergyLeakCurve) {
+  Read a = read_text(deck(kNull + energy_leak()));
+  ASSERT_TRUE(a.ok) << a.messages();
+  std::ostringstream fx;
+  write_fixed_deck(fx, a.m, nullptr);
+  std::string text = fx.str();
+  const std::string card2 = "\n     1.0e8       1.0         1\n";
+  ASSERT_NE(text.find(card2), std::string::npos) << text;
+  Read f = read_text(text, "deck.dyn");
+  ASSERT_TRUE(f.ok) << f.messages();
+  EXPECT_EQ(eos_curve(f.m.materials[0].eos), 1);
+  text.replace(text.find(card2), card2.size(), "\n     1.0e8       1.0         5\n");
+  Read r = read_text(text, "deck.dyn");
+  EXPECT_FALSE(r.ok);
+  EXPECT_EQ(r.d.count(1310), 1) << r.messages();
+  EXPECT_NE(r.messages().find("LCID"), std::string::npos) << r.messages();
+}
