@@ -2,13 +2,16 @@
 // hexahedra on 1 and 2 threads; memory per hexahedron; the input phase's rate.
 //
 //   build/bench/impact3d_bench_scaling [--hex N[,N...]] [--threads T[,T...]] [--contact]
-//                                      [--seconds S] [--no-input]
+//                                      [--seconds S] [--no-input] [--shuffle]
+//                                      [--reorder auto|on|off]
 //
 // Model: a copper bar (the Taylor bar's material: elastic-plastic, isotropic hardening,
 // hourglass type 1, q1 1.2) of n x n x 4n hexahedra, 1 mm cells, at 227 m/s onto a stonewall;
 // with --contact, two such bars of half the size meeting head on through a symmetric sliding
 // interface (no wall).  Each size runs a few warm-up cycles, then as many cycles as fill about
-// S seconds (default 2) of one thread.  Printed per size and thread count:
+// S seconds (default 2) of one thread.  --shuffle numbers the nodes and solids in a random
+// order (a fixed seed), as a deck with scattered numbering would; --reorder is impact3d's
+// reorder= (init/mesh_order.h, default auto), applied after it.  Printed per size and thread count:
 //   elements, nodes, walls, contact: ns per hexahedron-cycle of each phase (Engine::phase_times)
 //   cycle: the whole cycle, ns per hexahedron-cycle (wall clock)
 //   cpu: CPU time of all threads over the same cycles, ns per hexahedron-cycle
@@ -35,12 +38,14 @@
 #include <vector>
 
 #include "common/messages.h"
+#include "impact3d/init/mesh_order.h"
 #include "impact3d/input/deck_reader.h"
 #include "impact3d/input/deck_writer.h"
 #include "impact3d/output/plot_output.h"
 #include "impact3d/solve/engine.h"
 #include "impact3d/solve/thread_policy.h"
 #include "tests/support/box_mesh.h"
+#include "tests/support/shuffle_mesh.h"
 
 using namespace impact3d;
 
@@ -220,7 +225,8 @@ int main(int argc, char** argv) {
   ensure_passive_openmp_wait(argv);  // as impact3d does (thread_policy.h)
   std::vector<int> sizes = {1000, 10000, 100000, 1000000};
   std::vector<int> threads = {1, 2};
-  bool contact = false, input = true;
+  bool contact = false, input = true, shuffle = false;
+  MeshOrderMode reorder = MeshOrderMode::automatic;
   double seconds = 2.0;
   for (int a = 1; a < argc; ++a) {
     const std::string arg = argv[a];
@@ -229,8 +235,10 @@ int main(int argc, char** argv) {
     else if (arg == "--seconds" && a + 1 < argc) seconds = std::atof(argv[++a]);
     else if (arg == "--contact") contact = true;
     else if (arg == "--no-input") input = false;
+    else if (arg == "--shuffle") shuffle = true;
+    else if (arg == "--reorder" && a + 1 < argc && parse_mesh_order_mode(argv[a + 1], reorder)) ++a;
     else {
-      std::fprintf(stderr, "usage: %s [--hex N,...] [--threads T,...] [--contact] [--seconds S] [--no-input]\n", argv[0]);
+      std::fprintf(stderr, "usage: %s [--hex N,...] [--threads T,...] [--contact] [--seconds S] [--no-input] [--shuffle] [--reorder auto|on|off]\n", argv[0]);
       return 3;
     }
   }
@@ -241,12 +249,18 @@ int main(int argc, char** argv) {
   for (int hex : sizes) {
     const double rss0 = proc_status_bytes("VmRSS:");
     Model m = make_model(hex, contact);
+    if (shuffle) test_support::shuffle_mesh_numbering(m, 20261125);
+    {
+      const auto t = Clock::now();
+      const MeshOrderReport r = order_mesh_for_locality(m, reorder);
+      std::printf("   %s%s  (%.3f s)\n", shuffle ? "shuffled;" : "", mesh_order_line(r).c_str(), since(t));
+    }
     bool first = true;
     for (int t : threads) {
       print_row(run_cycles(m, t, seconds, first, rss0));
       first = false;
     }
-    if (input) time_input(m);
+    if (input) time_input(m.renumbered() ? model_in_deck_order(m) : m);
   }
   std::printf("peak resident memory of this process: %.0f MB\n", proc_status_bytes("VmHWM:") / 1e6);
   return 0;

@@ -18,6 +18,7 @@
 
 #include "common/messages.h"
 #include "impact3d/input/deck_reader.h"
+#include "impact3d/init/mesh_order.h"
 #include "impact3d/input/deck_writer.h"
 #include "impact3d/output/printed_output.h"
 #include "impact3d/output/restart_dump.h"
@@ -30,7 +31,8 @@ using namespace impact3d;
 namespace {
 
 const char* kUsage =
-    "usage: impact3d i=DECK [o=PRINTED] [g=PLOTDB] [d=DUMP] [s=INTFOR] [ncpu=N] [plotwords=4|8] [x=N] [--check]\n"
+    "usage: impact3d i=DECK [o=PRINTED] [g=PLOTDB] [d=DUMP] [s=INTFOR] [ncpu=N] [plotwords=4|8] [x=N]\n"
+    "                [reorder=auto|on|off] [--check]\n"
     "       impact3d r=DUMP [o=PRINTED] [g=PLOTDB] [d=DUMP] [s=INTFOR] [ncpu=N]\n"
     "       impact3d --help | --version | --messages\n"
     "\n"
@@ -48,6 +50,9 @@ const char* kUsage =
     "             go to a folder named by the case's JOBID (or caseID) unless o=, g=, d= are given\n"
     "  ncpu=N     number of threads (default: OMP_NUM_THREADS or all cores); results do not\n"
     "             depend on it\n"
+    "  reorder=M  renumber nodes and solids internally for memory locality: auto (default:\n"
+    "             when the model is large and the deck's numbering scattered), on, off; ids in\n"
+    "             every input and output stay the deck's\n"
     "  --check    read and check the deck only; print the summary; write nothing else\n"
     "  --lenient-keywords  unsupported LS-DYNA keywords are warnings, not errors\n"
     "  --write-keyword=FILE, --write-fixed=FILE  convert: write the deck read as an LS-DYNA\n"
@@ -74,8 +79,11 @@ bool file_crc(const std::string& path, unsigned long& crc, std::uint64_t& size) 
   return true;
 }
 
-// The model written as one keyword deck, if it reads back as the same model (else empty).
-std::string model_as_keyword_text(const std::string& path, const Model& model) {
+// The model written as one keyword deck, if it reads back as the same model (else empty).  A
+// renumbered model (reorder=) is written in deck order: the restart renumbers it again.
+std::string model_as_keyword_text(const std::string& path, const Model& renumbered_or_not) {
+  const Model deck_order = renumbered_or_not.renumbered() ? model_in_deck_order(renumbered_or_not) : Model{};
+  const Model& model = renumbered_or_not.renumbered() ? deck_order : renumbered_or_not;
   std::ostringstream os;
   write_keyword_deck(os, model);
   DeckFile back;
@@ -139,7 +147,8 @@ int run_main(int argc, char** argv) {
   InputOptions input_opt;
   std::string write_keyword, write_fixed;
   bool printed_given = false, plot_given = false, dump_given = false, words_given = false,
-       x_given = false, intfor_given = false;
+       x_given = false, intfor_given = false, reorder_given = false;
+  MeshOrderMode mesh_order = MeshOrderMode::automatic;
   Diagnostics cmd;
   for (int a = 1; a < argc; ++a) {
     std::string arg = argv[a];
@@ -204,6 +213,9 @@ int run_main(int argc, char** argv) {
       else bad_value("x must be an integer 1-1024 (member size in units of 512 x 512 words)");
     } else if (const char* v = value("case=")) {
       if (!parse_count(v, 1, 2147483647, input_opt.case_id)) bad_value("case must be a positive case id (*CASE)");
+    } else if (const char* v = value("reorder=")) {
+      if (parse_mesh_order_mode(v, mesh_order)) reorder_given = true;
+      else bad_value("reorder must be auto, on or off");
     } else if (const char* v = value("ncpu=")) {
       if (!parse_count(v, 1, 1024, opt.threads)) bad_value("ncpu must be an integer 1-1024");
     } else {
@@ -237,12 +249,13 @@ int run_main(int argc, char** argv) {
       std::cout << "\n E r r o r   t e r m i n a t i o n   (restart dump is invalid)\n";
       return exit_code::file_error;
     }
-    if (words_given || x_given) {
+    if (words_given || x_given || reorder_given) {
       Location loc;
-      loc.found = words_given ? "plotwords=" : "x=";
+      loc.found = words_given ? "plotwords=" : x_given ? "x=" : "reorder=";
       loc.show_found = true;
       Diagnostic d{3005, Severity::error, loc,
-                   "plotwords= and x= cannot change on a restart: the plot database continues"};
+                   "plotwords=, x= and reorder= cannot change on a restart: the plot database and the dump's "
+                   "numbering continue"};
       std::cerr << "impact3d: " << render(d) << "\n";
       return exit_code::usage_error;
     }
@@ -252,6 +265,7 @@ int run_main(int argc, char** argv) {
     if (!intfor_given && !h.intfor_root.empty()) opt.intfor = h.intfor_root;
     opt.plot_word_size = h.plot_word_size;
     opt.member_size_factor = h.member_size_factor;
+    mesh_order = h.mesh_renumbered ? MeshOrderMode::on : MeshOrderMode::off;  // as the dump's run
     opt.deck = h.deck_name;
     opt.deck_text = h.deck_text;
     DeckFile deck;
@@ -311,6 +325,14 @@ int run_main(int argc, char** argv) {
   }
   if (opt.restart.empty()) write_model_summary(printed, model);
   if (diag.warning_count()) diag.print(printed);
+  // the starter's last step: the mesh in memory order (init/mesh_order.h); the summary above
+  // and every output show the deck's ids
+  {
+    const MeshOrderReport r = order_mesh_for_locality(model, mesh_order);
+    const std::string line = mesh_order_line(r) + (opt.restart.empty() ? "" : " (as the run that wrote the dump)");
+    std::cout << line << "\n";
+    printed << line << "\n";
+  }
   return run_simulation(model, opt, printed);
 }
 

@@ -83,9 +83,6 @@ void init_elements(const Model& m, State& s) {
     s.rigid_elem[std::size_t(e)] = hex_kernel_for_material_type(mc.type) == HexKernel::rigid;
     // rigid solids have no step of their own and never change it
     if (s.rigid_elem[std::size_t(e)]) s.dt_e[std::size_t(e)] = std::numeric_limits<double>::infinity();
-    // Lumped mass: rho V0 / 8 to each corner (a repeated node of a degenerate element gets
-    // its share once per corner).
-    for (int j = 0; j < 8; ++j) s.mass[std::size_t(s.conn[std::size_t(e)][std::size_t(j)])] += mc.rho * v / 8;
     if (mc.eos_form != 0) {  // an equation of state: the initial energy E0 and its pressure
       const double e0 = m.materials[std::size_t(s.mat[std::size_t(e)])].eos.e0;
       s.hist[std::size_t(s.hist_stride) * std::size_t(e) + std::size_t(mc.eos_hist)] = e0;
@@ -93,16 +90,28 @@ void init_elements(const Model& m, State& s) {
       for (int c = 0; c < 3; ++c) s.sig[6 * std::size_t(e) + std::size_t(c)] = -p0;
     }
   }
-  // node -> corner map, in increasing (element, corner) order
+  // node -> corner map, in increasing (element, corner) order of the deck's numbering: a node
+  // sums its corner forces in the same order whether or not the mesh was renumbered
+  // (init/mesh_order.h), so renumbering changes no bit of the nodal forces
   s.corner_start.assign(std::size_t(s.nn) + 1, 0);
   for (int e = 0; e < ne; ++e)
     for (int j = 0; j < 8; ++j) ++s.corner_start[std::size_t(s.conn[std::size_t(e)][std::size_t(j)]) + 1];
   for (int i = 0; i < s.nn; ++i) s.corner_start[std::size_t(i) + 1] += s.corner_start[std::size_t(i)];
   s.corner_list.assign(std::size_t(8) * ne, 0);
   std::vector<int> fill(s.corner_start.begin(), s.corner_start.end() - 1);
-  for (int e = 0; e < ne; ++e)
+  for (int d = 1; d <= ne; ++d) {
+    const int e = m.hex_of_deck_number(d);
     for (int j = 0; j < 8; ++j)
       s.corner_list[std::size_t(fill[std::size_t(s.conn[std::size_t(e)][std::size_t(j)])]++)] = int(s.corner_index(e, j));
+  }
+  // Lumped mass: rho V0 / 8 to each corner (a repeated node of a degenerate element gets its
+  // share once per corner), summed in the corner map's order
+  for (int i = 0; i < s.nn; ++i) {
+    double mass = 0;
+    for (int c = s.corner_start[std::size_t(i)]; c < s.corner_start[std::size_t(i) + 1]; ++c)
+      mass += s.mass_e[std::size_t(s.corner_element(std::size_t(s.corner_list[std::size_t(c)])))] / 8;
+    s.mass[std::size_t(i)] = mass;
+  }
 }
 
 void init_velocities(const Model& m, State& s) {
@@ -112,10 +121,11 @@ void init_velocities(const Model& m, State& s) {
       std::fill(s.vy.begin(), s.vy.end(), iv.v[1]);
       std::fill(s.vz.begin(), s.vz.end(), iv.v[2]);
     } else {
-      for (int n = iv.first; n <= iv.last; n += iv.increment) {
-        s.vx[std::size_t(n - 1)] = iv.v[0];
-        s.vy[std::size_t(n - 1)] = iv.v[1];
-        s.vz[std::size_t(n - 1)] = iv.v[2];
+      for (int n = iv.first; n <= iv.last; n += iv.increment) {  // deck numbers
+        const std::size_t k = std::size_t(m.node_of_deck_number(n));
+        s.vx[k] = iv.v[0];
+        s.vy[k] = iv.v[1];
+        s.vz[k] = iv.v[2];
       }
     }
   }

@@ -41,10 +41,10 @@ void HistoryOutput::open(const Model& m, const std::string& dir, const std::stri
   th_shells_.clear();
   for (const auto& b : m.shell_th_blocks)
     for (int k = b[0]; k <= b[1]; ++k) th_shells_.push_back(k - 1);
-  for (const auto& b : m.node_th_blocks)
-    for (int n = b[0]; n <= b[1]; ++n) th_nodes_.push_back(n - 1);
+  for (const auto& b : m.node_th_blocks)  // deck numbers (init/mesh_order.h)
+    for (int n = b[0]; n <= b[1]; ++n) th_nodes_.push_back(m.node_of_deck_number(n));
   for (const auto& b : m.solid_th_blocks)
-    for (int e = b[0]; e <= b[1]; ++e) th_solids_.push_back(e - 1);
+    for (int e = b[0]; e <= b[1]; ++e) th_solids_.push_back(m.hex_of_deck_number(e));
   bool want[kNumAscii] = {true, true, !m.walls.empty(), m.num_interface_outputs() > 0, !th_nodes_.empty(),
                           !th_solids_.empty() || !th_shells_.empty()};
   for (int k = 0; k < kNumAscii; ++k) {

@@ -109,6 +109,7 @@ void write_header_fields(Writer& w, const DumpHeader& h) {
   w(c.next_plot); w(c.next_history); w(c.plot_states); w(c.history_states); w(c.dumps_written);
   for (auto b : c.ascii_bytes) w(b);
   w(h.intfor_root); w(c.next_intfor); w(c.intfor_states);
+  w(h.mesh_renumbered);
 }
 
 void read_header_fields(Reader& r, DumpHeader& h) {
@@ -123,6 +124,7 @@ void read_header_fields(Reader& r, DumpHeader& h) {
   r(c.next_plot); r(c.next_history); r(c.plot_states); r(c.history_states); r(c.dumps_written);
   for (auto& b : c.ascii_bytes) r(b);
   r(h.intfor_root); r(c.next_intfor); r(c.intfor_states);
+  r(h.mesh_renumbered);
 }
 
 std::vector<char> read_checked(const std::string& path, std::size_t& payload_start) {

@@ -33,14 +33,18 @@ struct DumpHeader {
   int plot_word_size = 4;
   int member_size_factor = 7;  // x= of that run
   OutputCursor cursor;
+  // 1: that run renumbered the mesh for locality (init/mesh_order.h): the restart renumbers
+  // the model read from deck_text the same way before it reads the State
+  int mesh_renumbered = 0;
 };
 
 // 1: first format; 2: the sliding interfaces' restart data after the State; 3: d= in the header;
 // 4: x= in the header; 5: the failed-solid flags in the State; 6: moving walls; 8: per-element
 // material history (State::hist) or shells (two branches); 9: both (State::hist and
 // State::shells: stresses, history, rotations); 11: the interface-force database (s=, its
-// cursor) in the header; 12: the shells' corner drilling moments.
-constexpr std::uint32_t kDumpVersion = 12;
+// cursor) in the header; 12: the shells' corner drilling moments; 13: the mesh-order flag in
+// the header.
+constexpr std::uint32_t kDumpVersion = 13;
 
 // Writes the dump atomically (temporary file, fsync, rename).  Throws std::runtime_error.
 // The contact state (energy books of the sliding interfaces) travels with the State.

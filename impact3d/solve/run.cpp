@@ -278,6 +278,7 @@ int run_simulation(const Model& model, const RunOptions& opt, std::ostream& prin
     DumpHeader h;
     h.deck_name = model.deck_file;
     h.deck_text = deck_text;
+    h.mesh_renumbered = model.renumbered() ? 1 : 0;
     h.plot_root = opt.plot;
     h.dump_root = opt.dump;
     h.printed = opt.printed;
