@@ -1,0 +1,53 @@
+// Type 24 on shells: what the readers refuse, in the deck of test_keyword_shell_piecewise.cpp
+// (strip_deck, shared through tests/keyword/shell_piecewise_deck.h): TDEL > 0 on a shell part is
+// error 1102 naming TDEL in both formats; a material with no shell form is 1103 listing the
+// shell materials from the one table (init/shell_init.cpp kShellMaterials).
+
+#include <gtest/gtest.h>
+
+#include <sstream>
+#include <string>
+
+#include "impact3d/input/deck_writer.h"
+#include "impact3d/material/material_types.h"
+#include "tests/keyword/shell_piecewise_deck.h"
+
+using namespace impact3d;
+using namespace shell_piecewise_test;
+
+// TDEL > 0 on a shell part: error 1102 naming the field (the shells have no deletion by time
+// step), in the keyword deck and in its fixed-format twin.
+TEST(KeywordShellPiecewise, TdelOnShellsIsRefusedInBothFormats) {
+  Model m;
+  Diagnostics d;
+  EXPECT_FALSE(read_text(strip_deck(false, 1e-8), "tdel.k", m, d));
+  EXPECT_EQ(d.count(1102), 1) << messages(d);
+  const std::string msg = messages(d);
+  EXPECT_NE(msg.find("TDEL"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("tdel.k"), std::string::npos) << msg;
+  // the fixed format: converted from the deck without TDEL, then TDEL written into its field
+  Model k;
+  Diagnostics dk;
+  ASSERT_TRUE(read_text(strip_deck(), "strip.k", k, dk)) << messages(dk);
+  param_value(k.materials[0], *find_param(material_type(24), "TDEL")) = 1e-8;
+  std::ostringstream fixed;
+  write_fixed_deck(fixed, k, nullptr);
+  Model f;
+  Diagnostics df;
+  EXPECT_FALSE(read_text(fixed.str(), "tdel.dyn", f, df)) << fixed.str();
+  EXPECT_EQ(df.count(1102), 1) << messages(df);
+  EXPECT_NE(messages(df).find("TDEL"), std::string::npos) << messages(df);
+  RecordProperty("keyword_message", msg);
+  // a material with no shell form: 1103 listing the shell materials from the one table
+  std::string pl = strip_deck();
+  const std::size_t at = pl.find("*MAT_PIECEWISE_LINEAR_PLASTICITY");
+  pl.replace(at, pl.find("*DEFINE_CURVE") - at,
+             "*MAT_POWER_LAW_PLASTICITY\n         1    7850.0   2.1e+11       0.3     5.e+8       0.2\n");
+  Model pm;
+  Diagnostics pd;
+  EXPECT_FALSE(read_text(pl, "power.k", pm, pd));
+  EXPECT_EQ(pd.count(1103), 1) << messages(pd);
+  EXPECT_NE(messages(pd).find("supported for shells: *MAT_ELASTIC, *MAT_PLASTIC_KINEMATIC, *MAT_RIGID, "
+                              "*MAT_PIECEWISE_LINEAR_PLASTICITY"), std::string::npos) << messages(pd);
+  RecordProperty("fixed_message", messages(df));
+}
