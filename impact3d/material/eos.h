@@ -286,7 +286,7 @@ inline void calc_eos_coefficients(const MaterialConstants& m, double mu, double&
 // scalar and block callers (the block calls it lane by lane).
 inline double update_stress_eos_point(const MaterialConstants& m, const double old[6], const double d[6], double v,
                                       double vm, double vol0, double dt, double q_old, double q_new, double sig[6],
-                                      double* h, double t, double& src) {
+                                      double* h, double t, double& src, bool no_tension = false) {
   const double pt = (sig[0] + sig[1] + sig[2]) * (1.0 / 3.0);
   const double s0 = sig[0] - pt, s1 = sig[1] - pt, s2 = sig[2] - pt;
   const double po = -(old[0] + old[1] + old[2]) * (1.0 / 3.0);
@@ -321,7 +321,8 @@ inline double update_stress_eos_point(const MaterialConstants& m, const double o
       p = (a + b * es) / (1.0 + 0.5 * b * dv);
     }
   }
-  p = p < m.eos_pc ? m.eos_pc : p;
+  const double pc = no_tension ? 0.0 : m.eos_pc;  // a rubble carries no tension
+  p = p < pc ? pc : p;
   e = es - 0.5 * p * dv;
   h[0] = e;
   sig[0] = s0 - p;

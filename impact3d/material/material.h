@@ -57,6 +57,9 @@ struct MaterialConstants {
   double eos_v0 = 1, eos_ln_v0 = 0;  // V0 and ln V0
   double eos_pc = -HUGE_VAL;
   int eos_hist = -1;
+  // a history value of the material that, once nonzero, leaves the point no tension (type 15's
+  // spalled rubble): its EOS pressure is floored at 0 instead of eos_pc (-1: none)
+  int no_tension_hist = -1;
   std::vector<double> eos_curve_t, eos_curve_f, eos_curve_F;
   // the type's other constants (its file names their places)
   std::array<double, 24> k{};

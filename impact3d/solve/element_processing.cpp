@@ -103,12 +103,13 @@ void update_stress_block(const GroupPass& gp, HexBlock& k) {
   gp.solid->update_block(*gp.mc, k, dt);  // the material type's kernel (material_types.h)
   if (gp.eos) {  // the pressure from the equation of state, the energy with it (material/eos.h)
     const int h = gp.mc->eos_hist, nh = gp.history - h;  // its history values: h .. h + nh - 1
+    const int rubble = gp.mc->no_tension_hist;             // the material's no-tension flag, if any
     for (int l = 0; l < kLanes; ++l) {
       double old[6], d[6], sig[6], hv[2] = {0, 0};
       for (int c = 0; c < 6; ++c) old[c] = k.old[c][l], d[c] = k.d[c][l], sig[c] = k.sig[c][l];
       for (int j = 0; j < nh && j < 2; ++j) hv[j] = k.hist[h + j][l];
       k.cs[l] = update_stress_eos_point(*gp.mc, old, d, k.v[l], k.vm[l], k.v0[l], dt, k.q_old[l], k.q[l], sig, hv,
-                                        gp.time, k.de_src[l]);
+                                        gp.time, k.de_src[l], rubble >= 0 && k.hist[rubble][l] != 0.0);
       for (int j = 0; j < nh && j < 2; ++j) k.hist[h + j][l] = hv[j];
       for (int c = 0; c < 6; ++c) k.sig[c][l] = sig[c];
     }

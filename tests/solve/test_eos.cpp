@@ -14,6 +14,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <set>
 #include <vector>
 
@@ -405,4 +406,68 @@ TEST(EquationOfState, JwlAndSackTuesdayAreTheirFormulas) {
     EXPECT_LT(mu_min, -0.04);
     EXPECT_LT(worst, 1e-12) << f.name;
   }
+}
+
+// Type 15 with an equation of state and SPALL 3 (PC = -100 MPa): the cube stretched uniaxially.
+// Before the spall the pressure is the linear polynomial's C1 mu, bounded below by PC; in the
+// cycle the kernel's trial pressure reaches PC the point spalls, and from then on it is a rubble:
+// the EOS pressure floored at 0 (no tension, not PC; round-off 1e-12 |PC|), no deviatoric stress; squeezed again, it
+// takes compression as the polynomial says.
+TEST(EquationOfState, SpalledJohnsonCookPointCarriesNoTension) {
+  const MaterialType& t = material_type(15);
+  MaterialData md;
+  md.number = 1;
+  md.type = 15;
+  set_param_defaults(md, t);
+  md.rho = 7800, md.E = 200e9, md.nu = 0.3, md.title = "Johnson-Cook + EOS";
+  const double K = 200e9 / (3 * (1 - 0.6)), pc = -100e6;
+  const std::map<std::string, double> values = {{"G", 200e9 / 2.6}, {"A", 400e6}, {"B", 0}, {"N", 1},
+                                                {"PC", pc}, {"SPALL", 3}};
+  for (const auto& [k, v] : values) param_value(md, *find_param(t, k)) = v;
+  md.eos = linear_polynomial({0, K, 0, 0, 0, 0, 0}, 0);
+  // stretch at 1 m/s for 2 us (mu to about -2e-3: K mu = -0.33 GPa, past PC), then squeeze
+  const double T = 2e-6;
+  Model m = squeezed_cube_path(md, {0, T, T * 1.0000001, 4 * T}, {1, 1, -1, -1}, 3.5 * T);
+  solve_test::ScopedThreads one(1);
+  Engine eng(m);
+  ASSERT_EQ(eng.initialize(), StepStatus::ok);
+  const State& s = eng.state();
+  const int spalled = 2;  // type 15's history values: temperature rise, damage, spalled
+  int before = 0, rubble_tension = 0, rubble_compression = 0, spall_cycle = -1, cycles = 0;
+  double worst_before = 0, worst_dev = 0, worst_comp = 0;
+  StepStatus st;
+  while ((st = eng.step()) == StepStatus::ok || st == StepStatus::finished) {
+    ++cycles;
+    const double mu = s.vol0[0] / s.vol[0] - 1, p = pressure(s, 0);
+    const double* g = &s.sig[0];
+    if (s.hist[std::size_t(spalled)] == 0) {
+      ++before;
+      EXPECT_GE(p, pc);
+      worst_before = std::max(worst_before, std::fabs(p - std::max(K * mu, pc)) / std::fabs(pc));
+    } else {
+      if (spall_cycle < 0) spall_cycle = cycles;
+      const double pm = -p;
+      worst_dev = std::max({worst_dev, std::fabs(g[0] - pm), std::fabs(g[1] - pm), std::fabs(g[2] - pm),
+                            std::fabs(g[3]), std::fabs(g[4]), std::fabs(g[5])});
+      if (mu < 0) {
+        ++rubble_tension;
+        EXPECT_LE(std::fabs(p), 1e-12 * std::fabs(pc)) << "cycle " << cycles << " mu " << mu;  // 0 to round-off
+      } else {
+        ++rubble_compression;
+        worst_comp = std::max(worst_comp, std::fabs(p - K * mu) / (K * 1e-4));
+      }
+    }
+    if (st == StepStatus::finished) break;
+  }
+  std::printf("spalled JC + EOS: %d cycles before the spall (worst |p - max(K mu, PC)| / |PC| %.2e), "
+              "spall in cycle %d, %d rubble cycles in tension (p = 0), %d in compression (worst %.2e), "
+              "deviator %.2e Pa\n",
+              before, worst_before, spall_cycle, rubble_tension, rubble_compression, worst_comp, worst_dev);
+  EXPECT_GT(before, 5);
+  EXPECT_LT(worst_before, 1e-9);
+  EXPECT_GT(spall_cycle, 0);
+  EXPECT_GT(rubble_tension, 5);
+  EXPECT_GT(rubble_compression, 5);
+  EXPECT_LT(worst_comp, 1e-6);
+  EXPECT_LT(worst_dev, 1e-12 * std::fabs(pc));  // no deviator (round-off of s - mean)
 }

@@ -11,7 +11,7 @@
 //      reset to 0) from then on, a rubble.  With an equation of state (*PART EOSID, fixed
 //      format card 1 columns 21-25; material/eos.h) the pressure comes from it (the kernel's
 //      trial pressure, the old EOS pressure plus K dV, serves the damage triaxiality and the
-//      spall tests; PC < 0 bounds the EOS pressure, also of spalled points); without one it is
+//      spall tests; PC < 0 bounds the EOS pressure, 0 that of a spalled point); without one it is
 //      hypoelastic with the bulk modulus of E and PR.
 //   98 *MAT_SIMPLIFIED_JOHNSON_COOK: sigma_y = min((min(A + B eps_p^N, SIGSAT)) (1 + C ln
 //      rate*), SIGMAX), deletion at the plastic strain PSFAIL.
@@ -253,6 +253,7 @@ void derive15(const MaterialData& d, const Model&, MaterialConstants& c) {
   c.tdel = par(d, pDtf);
   c.sigma_y = c.k[kA];
   c.eos_pc = par(d, pPc) < 0 ? par(d, pPc) : -HUGE_VAL;  // bounds an EOS pressure
+  c.no_tension_hist = hSpalled;                           // ... and a spalled point's at 0
 }
 
 const char* rate_form_text(double rateop) {
