@@ -47,6 +47,17 @@ const EosForm& gruneisen() {
   return f;
 }
 
+// The tables of forms 8 and 9 (cards 2 on, 5 E16 fields each, two cards a table): EV1-10,
+// C1-10, T1-10 in c[0..29] and, the fourth table of form 8, K1-10 from kEosTabK.
+void append_table_params(EosForm& f, int tables) {
+  static const char* const names[40] = {"EV1", "EV2", "EV3", "EV4", "EV5", "EV6", "EV7", "EV8", "EV9", "EV10",
+                                        "C1",  "C2",  "C3",  "C4",  "C5",  "C6",  "C7",  "C8",  "C9",  "C10",
+                                        "T1",  "T2",  "T3",  "T4",  "T5",  "T6",  "T7",  "T8",  "T9",  "T10",
+                                        "K1",  "K2",  "K3",  "K4",  "K5",  "K6",  "K7",  "K8",  "K9",  "K10"};
+  for (int j = 0; j < 10 * tables; ++j)
+    f.params.push_back({names[j], 1 + j / 5, j % 5, 1 + j / 5, j % 5, j < 30 ? j : kEosTabK + j - 30});
+}
+
 // LS-DYNA's EOS 9: card 1 EOSID GAMA E0 V0; cards 2-7 (5 E16 each) EV1-5, EV6-10, C1-5, C6-10,
 // T1-5, T6-10.  c: EV1-10 (0-9), C1-10 (10-19), T1-10 (20-29), GAMMA (30).
 const EosForm& tabulated() {
@@ -56,10 +67,7 @@ const EosForm& tabulated() {
     f.name = "tabulated";
     f.keyword = "EOS_TABULATED";
     f.params = {{"GAMA", 0, 1, 0, 0, 30}, {"E0", 0, 2, 0, 1, kEosSlotE0}, {"V0", 0, 3, 0, 2, kEosSlotV0}};
-    static const char* const names[30] = {"EV1", "EV2", "EV3", "EV4", "EV5", "EV6", "EV7", "EV8", "EV9", "EV10",
-                                          "C1",  "C2",  "C3",  "C4",  "C5",  "C6",  "C7",  "C8",  "C9",  "C10",
-                                          "T1",  "T2",  "T3",  "T4",  "T5",  "T6",  "T7",  "T8",  "T9",  "T10"};
-    for (int j = 0; j < 30; ++j) f.params.push_back({names[j], 1 + j / 5, j % 5, 1 + j / 5, j % 5, j});
+    append_table_params(f, 3);
     f.widths = {10, 16, 16, 16, 16, 16, 16};
     return f;
   }();
@@ -117,11 +125,7 @@ const EosForm& tabulated_compaction() {
                 {"LCT", 0, 5, -1, 0, -1, "LCT (the T table as a load curve)"},
                 {"LCK", 0, 6, -1, 0, -1, "LCK (the K table as a load curve)"},
                 {"LCID", 0, 7, -1, 0, -1, "LCID (an energy deposition curve)"}};
-    static const char* const names[40] = {"EV1", "EV2", "EV3", "EV4", "EV5", "EV6", "EV7", "EV8", "EV9", "EV10",
-                                          "C1",  "C2",  "C3",  "C4",  "C5",  "C6",  "C7",  "C8",  "C9",  "C10",
-                                          "T1",  "T2",  "T3",  "T4",  "T5",  "T6",  "T7",  "T8",  "T9",  "T10",
-                                          "K1",  "K2",  "K3",  "K4",  "K5",  "K6",  "K7",  "K8",  "K9",  "K10"};
-    for (int j = 0; j < 40; ++j) f.params.push_back({names[j], 1 + j / 5, j % 5, 1 + j / 5, j % 5, j < 30 ? j : kEosTabK + j - 30});
+    append_table_params(f, 4);
     f.widths = {10, 16, 16, 16, 16, 16, 16, 16, 16};
     f.history = 2;
     return f;
