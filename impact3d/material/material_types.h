@@ -38,6 +38,26 @@ struct SolidPointState {
   double hist[kMaxHistory] = {};
 };
 
+// The block form of a point kernel whose work does not vectorize (Newton loops, pow/log/exp):
+// each lane's stress, plastic strain, yield flag and first nh history values copied to a
+// SolidPointState, update_point(m, d, dt, state), copied back: the scalar kernel's bits.
+template <class PointUpdate>
+inline void update_block_lane_by_lane(const MaterialConstants& m, HexBlock& k, double dt, int nh, PointUpdate update_point) {
+  for (int l = 0; l < kLanes; ++l) {
+    SolidPointState st;
+    double d[6];
+    for (int c = 0; c < 6; ++c) d[c] = k.d[c][l], st.sig[c] = k.sig[c][l];
+    st.eps_p = k.eps_p[l];
+    st.yielded = k.yielded[l];
+    for (int h = 0; h < nh; ++h) st.hist[h] = k.hist[h][l];
+    update_point(m, d, dt, st);
+    for (int c = 0; c < 6; ++c) k.sig[c][l] = st.sig[c];
+    k.eps_p[l] = st.eps_p;
+    k.yielded[l] = st.yielded;
+    for (int h = 0; h < nh; ++h) k.hist[h][l] = st.hist[h];
+  }
+}
+
 // A solid kernel: the stress update after the caller's Jaumann rotation of sig (and of back
 // when the material carries one).  The block form does, per lane, the scalar form's
 // operations in the same order (tests/element/test_hex_block.cpp checks the bits).

@@ -189,20 +189,7 @@ void update_point(const MaterialConstants& m, const double d[6], double dt, Soli
 }
 
 void update_block(const MaterialConstants& m, HexBlock& k, double dt) {
-  const int nh = int(m.k[kHistory]);
-  for (int l = 0; l < kLanes; ++l) {
-    SolidPointState st;
-    double d[6];
-    for (int c = 0; c < 6; ++c) d[c] = k.d[c][l], st.sig[c] = k.sig[c][l];
-    st.eps_p = k.eps_p[l];
-    st.yielded = k.yielded[l];
-    for (int h = 0; h < nh; ++h) st.hist[h] = k.hist[h][l];
-    update_point(m, d, dt, st);
-    for (int c = 0; c < 6; ++c) k.sig[c][l] = st.sig[c];
-    k.eps_p[l] = st.eps_p;
-    k.yielded[l] = st.yielded;
-    for (int h = 0; h < nh; ++h) k.hist[h][l] = st.hist[h];
-  }
+  update_block_lane_by_lane(m, k, dt, int(m.k[kHistory]), update_point);
 }
 
 std::string f6(double v) {

@@ -261,17 +261,7 @@ void update_point(const MaterialConstants& m, const double d[6], double dt, Soli
 
 void update_block(const MaterialConstants& m, HexBlock& k, double dt) {
   if (m.k[kViscoplastic] != 0.0) {  // Newton per lane: the scalar kernel lane by lane
-    for (int l = 0; l < kLanes; ++l) {
-      SolidPointState st;
-      double d[6];
-      for (int c = 0; c < 6; ++c) d[c] = k.d[c][l], st.sig[c] = k.sig[c][l];
-      st.eps_p = k.eps_p[l];
-      st.yielded = k.yielded[l];
-      update_point(m, d, dt, st);
-      for (int c = 0; c < 6; ++c) k.sig[c][l] = st.sig[c];
-      k.eps_p[l] = st.eps_p;
-      k.yielded[l] = st.yielded;
-    }
+    update_block_lane_by_lane(m, k, dt, 0, update_point);
     return;
   }
   update_stress_elastic_block(m, k.d, dt, k.sig);  // elastic trial
