@@ -55,6 +55,8 @@ const std::vector<MessageDef> kCatalog = {
     {1226, S::error, "prescribed motion on a node of a rigid body"},
     {1240, S::error, "non-positive shell area (collinear or badly numbered nodes)"},
     {1241, S::error, "shell thickness must be positive"},
+    {1250, S::error, "beam has no length or its orientation node lies on its axis"},
+    {1251, S::error, "beam section size must be positive"},
     // 1300-1399: LS-DYNA keyword decks
     {1301, S::error, "keyword not supported by IMPACT-3D (impact3d --lenient-keywords turns this into a warning)"},
     {1305, S::error, "data line before the first keyword"},

@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "impact3d/element/hexahedron.h"
+#include "impact3d/init/beam_init.h"
 #include "impact3d/init/shell_init.h"
 #include "impact3d/material/eos.h"
 #include "impact3d/solve/element_groups.h"
@@ -183,6 +184,9 @@ void init_rigid_bodies(const Model& m, State& s) {
     for (int q = 0; q < s.shells.ns; ++q)  // rigid shells
       if (s.shells.mat[std::size_t(q)] == rb.material)
         for (int n : s.shells.conn[std::size_t(q)]) rb.nodes.push_back(n);
+    for (int q = 0; q < s.beams.nb; ++q)  // rigid beams (their ends; n3 only orients)
+      if (s.beams.mat[std::size_t(q)] == rb.material)
+        for (int j = 0; j < 2; ++j) rb.nodes.push_back(s.beams.conn[std::size_t(q)][std::size_t(j)]);
     std::sort(rb.nodes.begin(), rb.nodes.end());
     rb.nodes.erase(std::unique(rb.nodes.begin(), rb.nodes.end()), rb.nodes.end());
     if (rb.nodes.empty()) continue;
@@ -250,6 +254,7 @@ void initialize_state(const Model& m, State& s) {
   init_materials(m, s);
   init_elements(m, s);
   init_shells(m, s);
+  init_beams(m, s);
   init_velocities(m, s);
   init_shell_rotational_velocities(m, s);
   init_rigid_bodies(m, s);

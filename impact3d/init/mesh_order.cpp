@@ -42,7 +42,8 @@ double mesh_locality_cost(const Model& m) {
 
 namespace {
 
-// Node -> elements (solids e, then shells num_hexes() + k), CSR, in increasing element order.
+// Node -> elements (solids e, then shells num_hexes() + k, then beams num_hexes() + num_shells() + b),
+// CSR, in increasing element order.
 struct NodeElements {
   std::vector<int> start, list;
 };
@@ -59,6 +60,10 @@ NodeElements build_node_elements(const Model& m) {
       for (int j = 0; j < 4; ++j)
         if (sn[std::size_t(j)] >= 0 && (j < 3 || sn[3] != sn[2])) f(sn[std::size_t(j)], ne + k);
     }
+    for (int b = 0; b < m.num_beams(); ++b)  // a beam joins its two ends
+      for (int j = 0; j < 2; ++j)
+        if (m.beam_nodes[std::size_t(b)][std::size_t(j)] >= 0)
+          f(m.beam_nodes[std::size_t(b)][std::size_t(j)], ne + m.num_shells() + b);
   };
   each([&](int n, int) { ++ix.start[std::size_t(n) + 1]; });
   for (int i = 0; i < nn; ++i) ix.start[std::size_t(i) + 1] += ix.start[std::size_t(i)];
@@ -83,6 +88,10 @@ class NodeGraph {
       if (el < ne) {
         for (int v : m_.hex_nodes[std::size_t(el)])
           if (v != u) f(v);
+      } else if (el >= ne + m_.num_shells()) {
+        const auto& bn = m_.beam_nodes[std::size_t(el - ne - m_.num_shells())];
+        for (int j = 0; j < 2; ++j)
+          if (bn[std::size_t(j)] >= 0 && bn[std::size_t(j)] != u) f(bn[std::size_t(j)]);
       } else {
         for (int v : m_.shell_nodes[std::size_t(el - ne)])
           if (v >= 0 && v != u) f(v);
@@ -233,6 +242,9 @@ void permute_model(Model& m, const std::vector<int>& node_new_of_old, const std:
   // node references
   for (auto& sn : m.shell_nodes)
     for (int& n : sn) n = node(n);
+  for (auto& bn : m.beam_nodes)
+    for (int& n : bn)
+      if (n >= 0) n = node(n);
   for (auto& w : m.walls)
     for (int& n : w.nodes) n = node(n);
   for (auto& si : m.interfaces) {

@@ -140,6 +140,7 @@ class KeywordWriter {
     nodes();
     elements();
     shell_elements();
+    beam_elements();
     curves();
     walls();
     velocities();
@@ -239,7 +240,15 @@ class KeywordWriter {
       int id = int(k) + 1;
       os_ << "*PART\n$# title\n" << md.title << "\n";
       // a shell part has its own *SECTION_SHELL (secid 1 + pid)
-      os_ << "$#     pid     secid       mid     eosid      hgid\n" << kcard({I(id), I(md.shell ? 1 + id : 1), I(id), I(md.eos.form != 0 ? id : 0), I(id)}) << "\n";
+      os_ << "$#     pid     secid       mid     eosid      hgid\n" << kcard({I(id), I(md.shell || md.beam ? 1 + id : 1), I(id), I(md.eos.form != 0 ? id : 0), I(id)}) << "\n";
+      if (md.beam) {  // a beam part: its own *SECTION_BEAM (secid 1 + pid)
+        const BeamSectionData& sec = md.beam_section;
+        os_ << "*SECTION_BEAM\n$#   secid    elform      shrf   qr/irid       cst\n"
+            << kcard({I(1 + id), I(sec.elform), R(sec.shrf), I(sec.qr), I(int(sec.cst))}) << "\n";
+        if (sec.elform == 3) os_ << "$#       a\n" << kcard({R(sec.area)}) << "\n";
+        else os_ << "$#     ts1       ts2       tt1       tt2\n" << kcard({R(sec.ts1), R(sec.ts2), R(sec.tt1), R(sec.tt2)}) << "\n";
+        if (sec.qr <= 0) note("material " + std::to_string(id) + ": a user beam integration rule cannot be written");
+      }
       if (md.shell) {
         const ShellSectionData& sec = md.shell_section;
         os_ << "*SECTION_SHELL\n$#   secid    elform      shrf       nip\n" << kcard({I(1 + id), I(2), R(sec.shrf), I(sec.nip)}) << "\n"
@@ -292,6 +301,20 @@ class KeywordWriter {
       for (int v : n) f.push_back(I(v >= 0 ? nid(v) : 0, 8));
       os_ << kcard(f) << "\n";
       const auto& t = m_.shell_thickness[std::size_t(e)];
+      os_ << kcard({R(t[0], 16), R(t[1], 16), R(t[2], 16), R(t[3], 16)}) << "\n";
+    }
+  }
+
+  // Beams, with their section sizes on every element card (all 0: the section's).
+  void beam_elements() {
+    if (m_.num_beams() == 0) return;
+    os_ << "*ELEMENT_BEAM_THICKNESS\n$#   eid     pid      n1      n2      n3\n";
+    for (int e = 0; e < m_.num_beams(); ++e) {
+      const auto& n = m_.beam_nodes[std::size_t(e)];
+      std::vector<KField> f = {I(m_.beam_id(e), 8), I(m_.beam_material[std::size_t(e)] + 1, 8)};
+      for (int v : n) f.push_back(I(v >= 0 ? nid(v) : 0, 8));
+      os_ << kcard(f) << "\n";
+      const auto& t = m_.beam_thickness[std::size_t(e)];
       os_ << kcard({R(t[0], 16), R(t[1], 16), R(t[2], 16), R(t[3], 16)}) << "\n";
     }
   }
@@ -841,6 +864,11 @@ int write_converted_decks(const Model& m, const std::string& keyword_path, const
         return exit_code::input_error;
       }
     }
+    if (k == 1 && m.num_beams() > 0) {
+      log << " error: the fixed-format deck " << path << " cannot hold this model (not written): " << m.num_beams()
+          << " beam(s) (the converter writes beams to keyword decks only)\n";
+      return exit_code::input_error;
+    }
     if (k == 1)  // eroding contact has no fixed-format card (its sides hold interior faces)
       for (std::size_t j = 0; j < m.interfaces.size(); ++j)
         if (m.interfaces[j].eroding) {
@@ -989,6 +1017,16 @@ std::vector<std::string> model_differences(const Model& a, const Model& b, int m
     }
   }
   if (a.shell_user_id != b.shell_user_id) diff("shell ids", std::to_string(a.shell_user_id.size()), std::to_string(b.shell_user_id.size()));
+  N("beams", a.num_beams(), b.num_beams());
+  for (int e = 0; e < std::min(a.num_beams(), b.num_beams()); ++e) {
+    std::string w = "beam " + std::to_string(e + 1) + " ";
+    N(w + "material", a.beam_material[std::size_t(e)], b.beam_material[std::size_t(e)]);
+    for (int j = 0; j < 3; ++j)
+      N(w + "node " + std::to_string(j + 1), a.beam_nodes[std::size_t(e)][std::size_t(j)], b.beam_nodes[std::size_t(e)][std::size_t(j)]);
+    for (int j = 0; j < 4; ++j)
+      D(w + "size " + std::to_string(j + 1), a.beam_thickness[std::size_t(e)][std::size_t(j)], b.beam_thickness[std::size_t(e)][std::size_t(j)]);
+  }
+  if (a.beam_user_id != b.beam_user_id) diff("beam ids", std::to_string(a.beam_user_id.size()), std::to_string(b.beam_user_id.size()));
   for (std::size_t k = 0; k < std::min(a.materials.size(), b.materials.size()); ++k) {
     const auto &x = a.materials[k], &y = b.materials[k];
     std::string w = "material " + std::to_string(k + 1) + " ";
@@ -996,6 +1034,17 @@ std::vector<std::string> model_differences(const Model& a, const Model& b, int m
     N(w + "NIP", x.shell_section.nip, y.shell_section.nip);
     D(w + "SHRF", x.shell_section.shrf, y.shell_section.shrf);
     for (int j = 0; j < 4; ++j) D(w + "section T" + std::to_string(j + 1), x.shell_section.t[std::size_t(j)], y.shell_section.t[std::size_t(j)]);
+    N(w + "beam", x.beam, y.beam);
+    const BeamSectionData &bx = x.beam_section, &by = y.beam_section;
+    N(w + "ELFORM", bx.elform, by.elform);
+    N(w + "QR", bx.qr, by.qr);
+    N(w + "CST", int(bx.cst), int(by.cst));
+    D(w + "beam SHRF", bx.shrf, by.shrf);
+    D(w + "TS1", bx.ts1, by.ts1);
+    D(w + "TS2", bx.ts2, by.ts2);
+    D(w + "TT1", bx.tt1, by.tt1);
+    D(w + "TT2", bx.tt2, by.tt2);
+    D(w + "A", bx.area, by.area);
   }
   auto nonzero = [](const auto& v) {
     for (const auto& x : v)

@@ -7,6 +7,7 @@
 // decks") lists the keywords and fields.
 
 #include "impact3d/input/keyword_reader.h"
+#include "impact3d/init/beam_init.h"
 #include "impact3d/init/shell_init.h"
 #include "impact3d/material/eos.h"
 #include "impact3d/material/material_types.h"
@@ -392,6 +393,21 @@ struct RShell {
   int line = 0;
   const DeckFile* file = nullptr;
 };
+// *ELEMENT_BEAM (and _THICKNESS) card
+struct RBeam {
+  int id = 0, pid = 0;
+  std::array<int, 3> n{};      // N1 N2 N3 (N3 0: none)
+  std::array<double, 4> t{};   // _THICKNESS: TS1 TS2 TT1 TT2 (0: the section's)
+  Ref ref, pid_ref;
+  std::array<Ref, 3> node_refs;
+  int line = 0;
+  const DeckFile* file = nullptr;
+};
+// *SECTION_BEAM
+struct RBeamSection {
+  BeamSectionData sec;
+  Ref ref;
+};
 // *SECTION_SHELL
 struct RShellSection {
   int nip = 2;
@@ -607,6 +623,9 @@ class KeywordReader {
   std::map<int, RShellSection> shell_sections_;
   std::vector<RShell> shells_;
   std::vector<std::vector<int>> part_shells_;  // per part: its shells (indices into Model::shell_nodes)
+  std::map<int, RBeamSection> beam_sections_;
+  std::vector<RBeam> beams_;
+  std::vector<std::vector<int>> part_beams_;  // per part: its beams (indices into Model::beam_nodes)
   std::vector<std::pair<int, int>> node_rc_;  // *NODE RC: node id, rotation bits
   std::map<int, RMat> mats_;
   std::map<int, std::pair<ErosionData, Ref>> erosion_;  // *MAT_ADD_EROSION by MID
@@ -1211,7 +1230,7 @@ class KeywordReader {
       return n.size() > k && n.compare(n.size() - k, k, s) == 0;
     };
     static const std::set<std::string> titled = {
-        "SECTION_SOLID", "SECTION_SHELL", "HOURGLASS", "DEFINE_CURVE", "SET_NODE_LIST", "SET_NODE", "SET_PART_LIST",
+        "SECTION_SOLID", "SECTION_SHELL", "SECTION_BEAM", "HOURGLASS", "DEFINE_CURVE", "SET_NODE_LIST", "SET_NODE", "SET_PART_LIST",
         "SET_PART", "SET_SEGMENT", "SET_NODE_LIST_GENERATE", "CONTACT_SURFACE_TO_SURFACE",
         "CONTACT_AUTOMATIC_SURFACE_TO_SURFACE", "CONTACT_NODES_TO_SURFACE", "CONTACT_FORCE_TRANSDUCER_PENALTY",
         "CONTACT_AUTOMATIC_SINGLE_SURFACE", "CONTACT_AUTOMATIC_NODES_TO_SURFACE", "CONTACT_ERODING_SURFACE_TO_SURFACE",
@@ -1302,6 +1321,10 @@ bool is_ascii_database(const std::string& n) {
         parse_element_shell(b, n == "ELEMENT_SHELL_THICKNESS");
       } else if (n == "SECTION_SHELL") {
         parse_section_shell(b);
+      } else if (n == "ELEMENT_BEAM" || n == "ELEMENT_BEAM_THICKNESS") {
+        parse_element_beam(b, n == "ELEMENT_BEAM_THICKNESS");
+      } else if (n == "SECTION_BEAM") {
+        parse_section_beam(b);
       } else if (n == "CONTROL_SHELL") {
         once(b);
         parse_control_shell(b);
@@ -1773,6 +1796,111 @@ bool is_ascii_database(const std::string& n) {
     }
     if (shell_sections_.count(id) || sections_.count(id)) c.error(1200, 0, "SECID", "section also defined earlier");
     shell_sections_[id] = sec;
+  }
+
+  // ---- beams (Hughes-Liu, truss): *ELEMENT_BEAM(_THICKNESS), *SECTION_BEAM
+
+  // *ELEMENT_BEAM: EID PID N1 N2 N3 RT1 RR1 RT2 RR2 LOCAL; _THICKNESS: card 2 PARM1-PARM5 (the
+  // Hughes-Liu sizes TS1 TS2 TT1 TT2 of this element).
+  void parse_element_beam(const Block& b, bool thickness) {
+    const int idw = b.long_fmt ? 20 : b.i10 ? 10 : 8;
+    for (std::size_t k = 0; k < b.data.size(); ++k) {
+      if (is_blank(b.data[k].line->text)) continue;
+      KCard c = card(b, k, "", id_widths(10, idw));
+      RBeam e;
+      e.id = int(c.i(0, "EID"));
+      c.set_card(b.keyword + " element " + std::to_string(e.id));
+      e.pid = int(c.i(1, "PID"));
+      e.ref = c.ref(0);
+      e.pid_ref = c.ref(1);
+      e.line = c.line();
+      e.file = b.data[k].file;
+      bool ok = true;
+      for (int j = 0; j < 3; ++j) {
+        const std::string f = "N" + std::to_string(j + 1);
+        e.n[std::size_t(j)] = int(c.i(2 + j, f.c_str()));
+        e.node_refs[std::size_t(j)] = c.ref(2 + j);
+      }
+      static const char* kRelease[] = {"RT1", "RR1", "RT2", "RR2"};
+      for (int j = 0; j < 4; ++j)
+        if (c.i(5 + j, kRelease[j]) != 0) { c.error(1102, 5 + j, kRelease[j], "beam end releases"); ok = false; }
+      const long long local = c.i(9, "LOCAL");
+      if (local < 0 || local > 2) c.error(1003, 9, "LOCAL", "1 global, 2 local (0: 2)");
+      if (thickness) {
+        if (k + 1 >= b.data.size() || is_keyword_line(b.data[k + 1].line->text)) {
+          c.error(1316, -1, nullptr, "the thickness card (PARM1-PARM5) is missing");
+          break;
+        }
+        KCard c2 = card(b, k + 1, "element " + std::to_string(e.id) + " thickness card", W(b, 5, 16));
+        static const char* kParm[] = {"PARM1", "PARM2", "PARM3", "PARM4"};
+        for (int j = 0; j < 4; ++j) {
+          e.t[std::size_t(j)] = c2.r(j, kParm[j]);
+          if (e.t[std::size_t(j)] < 0) { c2.error(1251, j, kParm[j]); ok = false; }
+        }
+        c2.r(4, "PARM5");
+        ++k;
+      }
+      if (e.id < 1) { c.error(1201, 0, "EID", "element ids must be positive"); continue; }
+      if (ok) beams_.push_back(e);
+    }
+  }
+
+  // *SECTION_BEAM: card 1 SECID ELFORM SHRF QR/IRID CST SCOOR NSM; card 2 (ELFORM 1) TS1 TS2
+  // TT1 TT2 NSLOC NTLOC, (ELFORM 3) A RAMPT STRESS.
+  void parse_section_beam(const Block& b) {
+    std::size_t k = skip_option_card(b);
+    if (k >= b.data.size()) { missing_card(b, "card 1"); return; }
+    KCard c = card(b, k, "card 1", W(b, 8));
+    const int id = int(c.i(0, "SECID"));
+    c.set_card(b.keyword + " " + std::to_string(id));
+    RBeamSection r;
+    r.ref = c.ref(0);
+    BeamSectionData& sec = r.sec;
+    sec.line = c.line();
+    const long long elform = c.i(1, "ELFORM", 1);
+    sec.elform = elform == 0 ? 1 : int(elform);
+    if (sec.elform == 2)
+      c.error(1102, 1, "ELFORM", "ELFORM 2 (Belytschko-Schwer resultant beam); beams are ELFORM 1 (Hughes-Liu) or 3 (truss)");
+    else if (sec.elform != 1 && sec.elform != 3)
+      c.error(1102, 1, "ELFORM", "beam formulation " + std::to_string(sec.elform) + "; only ELFORM 1 (Hughes-Liu) and 3 (truss)");
+    sec.shrf = c.r(2, "SHRF", 1.0);
+    if (sec.shrf == 0) sec.shrf = 1.0;  // LS-DYNA: 0 -> 1
+    if (!(sec.shrf > 0 && sec.shrf <= 1)) c.error(1003, 2, "SHRF", "shear factor in (0, 1] (5/6 for a rectangle)");
+    const double qr = c.r(3, "QR/IRID", 2.0);
+    sec.qr = qr == 0 ? 2 : int(qr);
+    if (qr < 0) c.error(1102, 3, "QR/IRID", "user-defined integration rules (*INTEGRATION_BEAM); rules 1-5");
+    else if (qr != std::floor(qr) || qr > 5) c.error(1003, 3, "QR/IRID", "quadrature rule 1-5");
+    const long long cst = c.i(4, "CST");
+    if (cst == 0 || cst == 1) sec.cst = cst == 0 ? BeamCrossSection::rectangular : BeamCrossSection::tubular;
+    else c.error(1102, 4, "CST", "cross section " + std::to_string(cst) + "; only 0 (rectangular) and 1 (tubular)");
+    if (c.r(5, "SCOOR") != 0) c.error(1102, 5, "SCOOR", "cross-section location options");
+    if (c.r(6, "NSM") != 0) c.error(1102, 6, "NSM", "non-structural mass");
+    if (k + 1 >= b.data.size() || is_keyword_line(b.data[k + 1].line->text)) {
+      missing_card(b, sec.elform == 3 ? "card 2 (A RAMPT STRESS)" : "card 2 (TS1 TS2 TT1 TT2 NSLOC NTLOC)");
+    } else {
+      KCard c2 = card(b, k + 1, "card 2", W(b, 8));
+      c2.set_card(b.keyword + " " + std::to_string(id));
+      if (sec.elform == 3) {
+        sec.area = c2.r(0, "A");
+        if (!(sec.area > 0)) c2.error(1251, 0, "A", "the truss area must be positive");
+        if (c2.r(1, "RAMPT") != 0) c2.error(1102, 1, "RAMPT", "initial stress ramps");
+        if (c2.r(2, "STRESS") != 0) c2.error(1102, 2, "STRESS", "initial stress");
+      } else {
+        sec.ts1 = c2.r(0, "TS1");
+        sec.ts2 = c2.r(1, "TS2");
+        sec.tt1 = c2.r(2, "TT1");
+        sec.tt2 = c2.r(3, "TT2");
+        if (sec.ts2 == 0) sec.ts2 = sec.ts1;  // IMPACT-3D: a blank node-2 size is node 1's
+        if (sec.tt2 == 0) sec.tt2 = sec.tt1;
+        if (sec.ts1 < 0) c2.error(1251, 0, "TS1");
+        if (sec.tt1 < 0) c2.error(1251, 2, "TT1");
+        if (c2.r(4, "NSLOC") != 0) c2.error(1102, 4, "NSLOC", "reference-axis offsets");
+        if (c2.r(5, "NTLOC") != 0) c2.error(1102, 5, "NTLOC", "reference-axis offsets");
+      }
+    }
+    if (beam_sections_.count(id) || shell_sections_.count(id) || sections_.count(id))
+      c.error(1200, 0, "SECID", "section also defined earlier");
+    beam_sections_[id] = r;
   }
 
   // *CONTROL_SHELL: card 1 WRPANG ESORT IRNXX ISTUPD THEORY BWC MITER PROJ; card 2 ROTASCL
@@ -3047,8 +3175,10 @@ bool is_ascii_database(const std::string& n) {
     resolve_coordinate_systems();
     resolve_parts_and_elements();
     resolve_shells();
+    resolve_beams();
     resolve_materials();
     resolve_shell_materials();
+    resolve_beam_materials();
     resolve_control();
     resolve_spc();
     resolve_history();
@@ -3183,10 +3313,10 @@ bool is_ascii_database(const std::string& n) {
     release(elems_);  // the raw elements are not needed any more
     m_.hex_user_id.clear();
     if (!identity) m_.hex_user_id = elem_ids_;
-    if (ne == 0 && shells_.empty()) {
+    if (ne == 0 && shells_.empty() && beams_.empty()) {
       Location loc;
       loc.file = main_.name();
-      diag_.add(1311, loc, "*ELEMENT_SOLID, *ELEMENT_SHELL: the deck defines no elements");
+      diag_.add(1311, loc, "*ELEMENT_SOLID, *ELEMENT_SHELL, *ELEMENT_BEAM: the deck defines no elements");
     }
   }
 
@@ -3200,9 +3330,14 @@ bool is_ascii_database(const std::string& n) {
       const RPart& p = parts_[k];
       if (part_index_[p.pid] != int(k)) continue;  // duplicate
       std::string card = "*PART " + std::to_string(p.pid);
-      bool used = !part_elems_[k].empty() || !part_shells_[k].empty();
+      bool used = !part_elems_[k].empty() || !part_shells_[k].empty() || !part_beams_[k].empty();
       if (!part_shells_[k].empty()) {  // a shell part: resolve_shell_materials
         if (!part_elems_[k].empty()) err(1102, p.sec_ref, card, "SECID", "a part of both solids and shells");
+        if (!part_beams_[k].empty()) err(1102, p.sec_ref, card, "SECID", "a part of both shells and beams");
+        continue;
+      }
+      if (!part_beams_[k].empty()) {  // a beam part: resolve_beam_materials
+        if (!part_elems_[k].empty()) err(1102, p.sec_ref, card, "SECID", "a part of both solids and beams");
         continue;
       }
       auto sit = sections_.find(p.secid);
@@ -3343,6 +3478,120 @@ bool is_ascii_database(const std::string& n) {
     if (!identity) m_.shell_user_id = ids;
     release(shells_);
     m_.shell_rotary_scale = rotascl_;
+  }
+
+  // *ELEMENT_BEAM cards -> Model::beam_* in increasing id order (material: -2 - part index
+  // until resolve_beam_materials).
+  void resolve_beams() {
+    part_beams_.assign(parts_.size(), {});
+    std::stable_sort(beams_.begin(), beams_.end(), [](const RBeam& a, const RBeam& b) { return a.id < b.id; });
+    std::vector<int> ids;
+    bool identity = true;
+    for (std::size_t q = 0; q < beams_.size(); ++q) {
+      const RBeam& e = beams_[q];
+      const std::string card = "*ELEMENT_BEAM element " + std::to_string(e.id);
+      if (q > 0 && beams_[q - 1].id == e.id) {
+        err(1200, e.ref, card, "EID", "element " + std::to_string(e.id) + " also defined at " + at(beams_[q - 1].ref));
+        continue;
+      }
+      std::array<int, 3> n{-1, -1, -1};
+      bool ok = true;
+      for (int j = 0; j < 3; ++j) {
+        if (j == 2 && e.n[2] == 0) break;  // no orientation node
+        n[std::size_t(j)] = node_index(e.n[std::size_t(j)]);
+        if (n[std::size_t(j)] < 0) {
+          const std::string f = "N" + std::to_string(j + 1);
+          err(1202, e.node_refs[std::size_t(j)], card, f.c_str(), "node " + std::to_string(e.n[std::size_t(j)]) + " is not defined by *NODE");
+          ok = false;
+        }
+      }
+      if (ok && n[0] == n[1]) {
+        Ref r = e.node_refs[0];
+        r.c2 = e.node_refs[1].c2;
+        err(1250, r, card, "N1-N2", "N1 = N2");
+        ok = false;
+      }
+      auto pit = part_index_.find(e.pid);
+      if (pit == part_index_.end()) {
+        err(1308, e.pid_ref, card, "PID", "part " + std::to_string(e.pid) + " is not defined by *PART" + refused_note('p', e.pid));
+        ok = false;
+      }
+      const int k = m_.num_beams();
+      if (!ok) n.fill(-1);
+      m_.beam_nodes.push_back(n);
+      m_.beam_material.push_back(ok ? -2 - pit->second : -1);
+      m_.beam_thickness.push_back(e.t);
+      m_.beam_line.push_back(e.line);
+      m_.beam_file.push_back(file_index(e.file));
+      ids.push_back(e.id);
+      identity = identity && e.id == k + 1;
+      if (ok) part_beams_[std::size_t(pit->second)].push_back(k);
+    }
+    m_.beam_user_id.clear();
+    if (!identity) m_.beam_user_id = ids;
+    release(beams_);
+  }
+
+  // Beam parts: *SECTION_BEAM and material -> MaterialData (beam = true, its beam_section),
+  // the beams' material indices.
+  void resolve_beam_materials() {
+    for (std::size_t k = 0; k < parts_.size(); ++k) {
+      const RPart& p = parts_[k];
+      if (part_index_[p.pid] != int(k) || part_beams_[k].empty() || !part_elems_[k].empty() || !part_shells_[k].empty()) continue;
+      const std::string card = "*PART " + std::to_string(p.pid);
+      auto sit = beam_sections_.find(p.secid);
+      auto mit = mats_.find(p.mid);
+      if (sit == beam_sections_.end()) {
+        if (sections_.count(p.secid) || shell_sections_.count(p.secid))
+          err(1102, p.sec_ref, card, "SECID", "section " + std::to_string(p.secid) + " is not a *SECTION_BEAM; beams need *SECTION_BEAM");
+        else if (auto u = unsupported_secids_.find(p.secid); u != unsupported_secids_.end())
+          err(1102, p.sec_ref, card, "SECID", "section " + std::to_string(p.secid) + " is " + u->second + "; beams need *SECTION_BEAM");
+        else err(1310, p.sec_ref, card, "SECID", "*SECTION_BEAM " + std::to_string(p.secid) + " is not defined");
+        continue;
+      }
+      if (mit == mats_.end()) {
+        auto u = unsupported_mids_.find(p.mid);
+        if (u != unsupported_mids_.end()) err(1103, p.mid_ref, card, "MID", "material " + std::to_string(p.mid) + " is " + u->second + "; supported for beams: " + beam_material_keywords());
+        else err(1310, p.mid_ref, card, "MID", "material " + std::to_string(p.mid) + " is not defined by a *MAT keyword");
+        continue;
+      }
+      if (p.eosid != 0) err(1102, p.eos_ref, card, "EOSID", "equations of state of beams");
+      const RMat& r = mit->second;
+      MaterialData md = r.md;
+      md.number = int(m_.materials.size()) + 1;
+      md.title = p.title;
+      md.line = p.line;
+      if (!has_beam_kernel(md.type)) {
+        err(1103, p.mid_ref, card, "MID", "material " + std::to_string(p.mid) + " (type " + std::to_string(md.type) +
+                                              ") has no beam form; supported for beams: " + beam_material_keywords());
+        continue;
+      }
+      resolve_rigid_constraints(md, r, p.mid);
+      if (auto eit = erosion_.find(p.mid); eit != erosion_.end())
+        err(1102, eit->second.second, "*MAT_ADD_EROSION material " + std::to_string(p.mid), "MID", "erosion (element deletion) of beams");
+      md.beam = true;
+      md.beam_section = sit->second.sec;
+      md.bulk_type = ctrl_btype_;
+      const int mat = int(m_.materials.size());
+      m_.materials.push_back(md);
+      for (int e : part_beams_[k]) {
+        m_.beam_material[std::size_t(e)] = mat;
+        const auto& t = m_.beam_thickness[std::size_t(e)];
+        if (md.beam_section.elform == 3 && (t[0] != 0 || t[1] != 0 || t[2] != 0 || t[3] != 0)) {
+          Location loc;
+          loc.file = m_.file_of(m_.beam_file, std::size_t(e));
+          loc.line = m_.beam_line[std::size_t(e)];
+          loc.card = "*ELEMENT_BEAM_THICKNESS element " + std::to_string(m_.beam_id(e));
+          diag_.add(1102, loc, "per-element truss areas (the section's A applies)");
+        }
+      }
+    }
+    // beams of refused parts: undefined (the checks skip them)
+    for (std::size_t e = 0; e < m_.beam_material.size(); ++e)
+      if (m_.beam_material[e] < 0) {
+        m_.beam_material[e] = -1;
+        m_.beam_nodes[e].fill(-1);
+      }
   }
 
   // Shell parts: *SECTION_SHELL and material -> MaterialData (shell = true), the shells'
@@ -3868,6 +4117,9 @@ bool is_ascii_database(const std::string& n) {
       for (const auto& n : m_.shell_nodes)
         if (n[0] >= 0)
           for (int v : n) shell_node_[std::size_t(v)] = 1;
+      for (const auto& n : m_.beam_nodes)  // beam ends have rotations too
+        if (n[0] >= 0)
+          for (int j = 0; j < 2; ++j) shell_node_[std::size_t(n[std::size_t(j)])] = 1;
     }
     if (m_.rot_bc.empty()) m_.rot_bc.assign(std::size_t(m_.num_nodes()), 0);
     for (int n : nodes) {

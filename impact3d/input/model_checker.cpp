@@ -11,7 +11,9 @@
 #include <vector>
 
 #include "impact3d/element/hexahedron.h"
+#include "impact3d/element/beam_hl.h"
 #include "impact3d/element/shell_bt.h"
+#include "impact3d/init/beam_init.h"
 #include "impact3d/input/deck_reader.h"
 #include "impact3d/material/material_types.h"
 #include "impact3d/material/eos.h"
@@ -165,6 +167,56 @@ void check_shells(const Model& m, const Location& file_loc, Diagnostics& diag,
   }
 }
 
+// Beams: nodes and materials they use; a beam material with a beam kernel (1103), a known
+// formulation and rule (1102), positive section sizes (1251), a length and an s axis (1250).
+// Mass scaling does not scale beams (1102).
+void check_beams(const Model& m, const Location& file_loc, Diagnostics& diag,
+                 std::vector<char>& node_used, std::vector<char>& mat_used) {
+  std::vector<char> section_checked(m.materials.size(), 0);
+  for (int b = 0; b < m.num_beams(); ++b) {
+    const auto& n = m.beam_nodes[std::size_t(b)];
+    if (n[0] < 0 || n[1] < 0) continue;  // already reported
+    for (int j = 0; j < 3; ++j)
+      if (n[std::size_t(j)] >= 0) node_used[std::size_t(n[std::size_t(j)])] = 1;
+    const int mat = m.beam_material[std::size_t(b)];
+    if (mat < 0 || mat >= int(mat_used.size())) continue;
+    mat_used[std::size_t(mat)] = 1;
+    Location loc = file_loc;
+    loc.file = m.file_of(m.beam_file, std::size_t(b));
+    if (std::size_t(b) < m.beam_line.size()) loc.line = m.beam_line[std::size_t(b)];
+    loc.card = "beam element " + std::to_string(m.beam_id(b));
+    const MaterialData& md = m.materials[std::size_t(mat)];
+    const BeamSectionData& sec = md.beam_section;
+    if (!section_checked[std::size_t(mat)]) {
+      section_checked[std::size_t(mat)] = 1;
+      Location ml = file_loc;
+      ml.line = sec.line ? sec.line : md.line;
+      ml.card = "beam section of material " + std::to_string(md.number);
+      if (!has_beam_kernel(md.type))
+        diag.add(1103, ml, "material type " + std::to_string(md.type) + " has no beam form; beams take types " + beam_material_numbers());
+      if (sec.elform != 1 && sec.elform != 3)
+        diag.add(1102, ml, "ELFORM " + std::to_string(sec.elform) + ": beam formulations 1 (Hughes-Liu) and 3 (truss) only");
+      std::vector<BeamRulePoint> rule;
+      if (sec.elform == 1 && !beam_integration_rule(sec, rule))
+        diag.add(1102, ml, "QR " + std::to_string(sec.qr) + ": rules 1-5" + std::string(sec.cst == BeamCrossSection::tubular ? " for tubes" : " or a user rule"));
+      if (sec.elform == 3 && !(sec.area > 0)) diag.add(1251, ml, "truss area A " + std::to_string(sec.area));
+      if (m.control.mass_scaling_dt != 0) diag.add(1102, ml, "mass scaling (DT2MS) of beams");
+    }
+    if (sec.elform == 1) {
+      const BeamSectionSize sz = beam_section_size(m, b);
+      const bool tube = sz.cst == BeamCrossSection::tubular;
+      if (!(sz.ts > 0) || !(tube ? sz.tt >= 0 && sz.tt < sz.ts : sz.tt > 0)) {
+        char buf[96];
+        std::snprintf(buf, sizeof buf, tube ? "outer diameter %.6g, inner %.6g" : "TS %.6g, TT %.6g", sz.ts, sz.tt);
+        diag.add(1251, loc, buf);
+      }
+    }
+    double s[3];
+    if (!beam_initial_s_axis(m, b, s))
+      diag.add(1250, loc, "nodes " + std::to_string(m.node_id(n[0])) + " " + std::to_string(m.node_id(n[1])) +
+                              (n[2] >= 0 ? " " + std::to_string(m.node_id(n[2])) : std::string()));
+  }
+}
 
 namespace {
 // Warning 2014 for each rigid material whose nodes were given velocities (after the constraints
@@ -348,6 +400,7 @@ bool check_model(const Model& m, Diagnostics& diag) {
     if (mat >= 0 && mat < int(mat_used.size())) mat_used[std::size_t(mat)] = 1;
   }
   check_shells(m, file_loc, diag, node_used, mat_used);
+  check_beams(m, file_loc, diag, node_used, mat_used);
   // element faces that are interface segments (only those keys are looked for)
   std::unordered_map<std::array<int, 4>, bool, FaceKeyHash> faces;
   if (has_interface_segments(m)) {

@@ -59,6 +59,31 @@ struct ShellSectionData {
   int line = 0;
 };
 
+// The section of a beam part (LS-DYNA *SECTION_BEAM; a DYNA3D beam material's section cards).
+// A reader fills these fields; the starter (init/beam_init.h) builds the integration points.
+// Beam local axes: r from node 1 to node 2; s normal to r in the plane of n1, n2 and the
+// orientation node n3; t = r x s.
+enum class BeamCrossSection : int { rectangular = 0, tubular = 1 };  // LS-DYNA CST 0, 1
+struct BeamSectionData {
+  // formulation (LS-DYNA ELFORM): 1 Hughes-Liu (integrated over the cross section,
+  // co-rotational, transverse shear), 3 truss (axial force only, no rotations)
+  int elform = 1;
+  double shrf = 1.0;  // transverse shear factor SHRF (0 -> 1; 5/6 for a rectangle is usual)
+  // quadrature rule QR (ELFORM 1): 1 one point (no bending stiffness), 2 2x2 Gauss, 3 3x3
+  // Gauss, 4 3x3 Lobatto, 5 4x4 Gauss (a tube: 1 point, else 2, 3, 3, 4 Gauss points through
+  // the wall times 8 points around); 0 or negative: the user rule below (user_rule not empty)
+  int qr = 2;
+  BeamCrossSection cst = BeamCrossSection::rectangular;
+  // ELFORM 1 sizes at node 1 and node 2: rectangular: TS width along s, TT along t; tubular:
+  // TS outer and TT inner diameter (TT 0: a solid bar).  The element uses their means.
+  double ts1 = 0, ts2 = 0, tt1 = 0, tt2 = 0;
+  double area = 0;  // ELFORM 3: cross-section area A
+  // A user integration rule (QR <= 0; rectangular only): points (s, t, w) with s, t in
+  // [-1, 1] along TS and TT and weights summing to 4 (the area of [-1, 1]^2, DYNA3D's rules).
+  std::vector<std::array<double, 3>> user_rule;
+  int line = 0;  // deck line of the section card (messages)
+};
+
 // *MAT_ADD_EROSION of a material (solids): failure criteria besides the material's own.  A
 // criterion whose value equals EXCL (0 by default) is not used; a solid fails when NCS of the
 // used criteria hold at once (solve/element_processing, material/material.h erosion_criteria_met).
@@ -116,9 +141,11 @@ struct MaterialData {
   bool packed = false;   // parameters were read 8 per card
   int line = 0;          // line of card 1, for messages
   bool shell = false;    // the part is a shell part (its elements are in Model::shell_nodes)
+  bool beam = false;     // the part is a beam part (its elements are in Model::beam_nodes)
   ErosionData erosion;   // *MAT_ADD_EROSION (keyword decks)
   EosData eos;           // its equation of state (form 0: none; material/eos.h)
   ShellSectionData shell_section;
+  BeamSectionData beam_section;  // when beam
 };
 
 struct StoneWall {
@@ -280,6 +307,21 @@ struct Model {
   int num_shells() const { return static_cast<int>(shell_nodes.size()); }
   int shell_id(int k) const { return shell_user_id.empty() ? k + 1 : shell_user_id[std::size_t(k)]; }
 
+  // Beams (the third family, index = beam number - 1): nodes n1, n2 and the orientation node
+  // n3 (0-based; -1: none, then the s axis is the global axis least aligned with the beam,
+  // projected normal to it), material (a MaterialData with beam = true and its
+  // beam_section), per-element section sizes TS1 TS2 TT1 TT2 (LS-DYNA *ELEMENT_BEAM_THICKNESS;
+  // all 0: the section's), where each card is, and the deck ids when not 1..N.  Rotational
+  // constraints (rot_bc) and initial rotational velocities (init_omega) act on beam nodes as on
+  // shell nodes; the two families share the rotations of common nodes.
+  std::vector<std::array<int, 3>> beam_nodes;
+  std::vector<int> beam_material;
+  std::vector<std::array<double, 4>> beam_thickness;
+  std::vector<int> beam_line, beam_file;
+  std::vector<int> beam_user_id;
+  int num_beams() const { return static_cast<int>(beam_nodes.size()); }
+  int beam_id(int b) const { return beam_user_id.empty() ? b + 1 : beam_user_id[std::size_t(b)]; }
+
   std::vector<std::array<int, 2>> node_th_blocks, solid_th_blocks;  // deck numbers, inclusive
   std::vector<std::array<int, 2>> shell_th_blocks;                  // shell numbers 1..N, inclusive
   std::vector<LoadCurve> load_curves;
@@ -304,9 +346,11 @@ struct Model {
   int num_nodes() const { return static_cast<int>(x.size()); }
   // The deck's number of node i / solid e (0-based indices): what every message and output shows.
   int node_id(int i) const { return node_user_id.empty() ? i + 1 : node_user_id[std::size_t(i)]; }
-  // (an index past the solids is a shell: num_hexes() + shell index, as the element pass
-  // reports the element controlling the step)
+  // (an index past the solids is a shell: num_hexes() + shell index, and past the shells a
+  // beam: num_hexes() + num_shells() + beam index, as the element pass reports the element
+  // controlling the step)
   int hex_id(int e) const {
+    if (e >= num_hexes() + num_shells()) return beam_id(e - num_hexes() - num_shells());
     if (e >= num_hexes()) return shell_id(e - num_hexes());
     return hex_user_id.empty() ? e + 1 : hex_user_id[std::size_t(e)];
   }

@@ -9,6 +9,7 @@
 #include "impact3d/element/hex_block.h"
 #include "impact3d/material/material.h"
 #include "impact3d/material/material_types.h"
+#include "impact3d/model/beam_state.h"
 #include "impact3d/model/shell_state.h"
 
 namespace impact3d {
@@ -79,7 +80,8 @@ struct State {
     const std::size_t slot = std::size_t(elem_slot[std::size_t(e)]);
     return (slot / kLanes) * (8 * kLanes) + std::size_t(j) * kLanes + slot % kLanes;
   }
-  // (-1 for a shell corner: those follow the solids' corners, ShellState::corner_base)
+  // (-1 for a shell or beam corner: those follow the solids' corners, ShellState::corner_base,
+  // BeamState::corner_base)
   int corner_element(std::size_t c) const {
     if (c >= 8 * slot_elem.size()) return -1;
     return slot_elem[(c / (8 * kLanes)) * kLanes + c % kLanes];
@@ -113,6 +115,7 @@ struct State {
   std::vector<MaterialConstants> mats;
   std::vector<RigidBody> rigid;
   ShellState shells;                   // the Belytschko-Tsay shells (shell_state.h)
+  BeamState beams;                     // the beams (beam_state.h)
 
   // time integration
   double time = 0;
@@ -148,6 +151,8 @@ struct State {
     v(shells.area); v(shells.sig); v(shells.back); v(shells.eps_p); v(shells.yielded);
     v(shells.hgq); v(shells.drill); v(shells.dt_e); v(shells.energy); v(shells.failed); v(shells.cmx); v(shells.cmy); v(shells.cmz);
     v(shells.wx); v(shells.wy); v(shells.wz); v(shells.rot_kinetic);
+    v(beams.length); v(beams.e2); v(beams.sig); v(beams.back); v(beams.eps_p); v(beams.yielded);
+    v(beams.res); v(beams.dt_e); v(beams.energy);
     for (RigidBody& rb : rigid) {
       v(rb.com); v(rb.vcom); v(rb.rot); v(rb.omega); v(rb.ang_mom);
     }

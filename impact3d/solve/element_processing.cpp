@@ -8,6 +8,7 @@
 #include "impact3d/material/eos.h"
 #include "impact3d/material/material_block.h"
 #include "impact3d/solve/element_groups.h"
+#include "impact3d/solve/beam_processing.h"
 #include "impact3d/solve/shell_processing.h"
 
 namespace impact3d {
@@ -289,6 +290,18 @@ void merge_shell_results(const ShellPassResult& r, int ne, double& die, double& 
   if (nonfin < 0 && r.non_finite_shell >= 0) nonfin = ne + r.non_finite_shell;
 }
 
+// The beams join after the shells: a beam is reported as element ne + ns + its index.
+void merge_beam_results(const BeamPassResult& r, int first, double& die, double& dtmin, int& arg, int& bad,
+                        int& nonfin) {
+  die += r.die;
+  if (r.dt_beam >= 0 && (r.dt_min < dtmin || arg < 0)) {
+    dtmin = r.dt_min;
+    arg = first + r.dt_beam;
+  }
+  if (bad < 0 && r.bad_beam >= 0) bad = first + r.bad_beam;
+  if (nonfin < 0 && r.non_finite_beam >= 0) nonfin = first + r.non_finite_beam;
+}
+
 }  // namespace
 
 ElementLoopResult calc_forces_for_elems(const Model& m, State& s) {
@@ -348,6 +361,8 @@ ElementLoopResult calc_forces_for_elems(const Model& m, State& s) {
   // the shells (the second family): their results join after the solids'; a shell is
   // reported as element s.ne + its index
   if (s.shells.ns > 0) merge_shell_results(calc_forces_for_shells(m, s), s.ne, die, dhg, dtmin, arg, bad, nonfin);
+  if (s.beams.nb > 0)
+    merge_beam_results(calc_forces_for_beams(m, s), s.ne + s.shells.ns, die, dtmin, arg, bad, nonfin);
   out.die = die;
   out.dhg = dhg;
   out.dbv = dbv;

@@ -579,9 +579,9 @@ TEST(KeywordInclude, SegmentMessagesNameTheIncludeFile) {
 TEST(KeywordUnsupported, ListedInOnePassOrWarnedWhenLenient) {
   std::string deck = std::string(kPrePostHead) + prepost_nodes() + prepost_elements() +
                      "*CONTROL_ADAPTIVE\n$# adpfreq\n      20.0\n"
-                     "*SECTION_BEAM\n         9         1\n       1.0\n"
+                     "*SECTION_DISCRETE\n         9         0\n       0.0\n"
                      "*PART\nbeam\n         8         9        12\n"
-                     "*ELEMENT_BEAM\n       1       8    1001    1002    1005\n"
+                     "*ELEMENT_DISCRETE\n       1       8    1001    1002\n"
                      "*AIRBAG_SIMPLE_AIRBAG_MODEL\n         1         1\n"
                      "*END\n";
   Read strict = read_text(deck);
@@ -595,7 +595,7 @@ TEST(KeywordUnsupported, ListedInOnePassOrWarnedWhenLenient) {
   EXPECT_EQ(lines, (std::vector<int>{int(base_lines) + 1, int(base_lines) + 4, int(base_lines) + 10, int(base_lines) + 12}));
   std::string all = strict.messages();
   EXPECT_NE(all.find("*AIRBAG_SIMPLE_AIRBAG_MODEL"), std::string::npos);
-  EXPECT_NE(all.find("*ELEMENT_BEAM"), std::string::npos);
+  EXPECT_NE(all.find("*ELEMENT_DISCRETE"), std::string::npos);
 
   Read lenient = read_text(deck, true);
   EXPECT_TRUE(lenient.ok) << lenient.messages();
@@ -832,7 +832,7 @@ TEST(KeywordRealWorld, MechStyleDeckIsRefusedWithTheList) {
       "*SET_PART_LIST\n$#     sid       da1       da2       da3       da4    solver\n         1                                        MECH\n"
       "$#    pid1      pid2      pid3      pid4      pid5      pid6      pid7      pid8\n"
       "         3         0         0         0         0         0         0         0\n"
-      "*ELEMENT_BEAM\n$#   eid     pid      n1      n2      n3\n"
+      "*ELEMENT_DISCRETE\n$#   eid     pid      n1      n2\n"
       "       1       1       1       3       4\n"
       "*NODE\n$#   nid               x               y               z      tc      rc\n"
       "       1             0.0             0.0             0.0       0       0\n"
@@ -843,7 +843,7 @@ TEST(KeywordRealWorld, MechStyleDeckIsRefusedWithTheList) {
   std::vector<std::string> refused;
   for (const auto& d : r.d.all())
     if (d.id == 1301 && d.where.line > 0) refused.push_back(d.where.card);
-  EXPECT_EQ(refused, (std::vector<std::string>{"*AIRBAG_SIMPLE_AIRBAG_MODEL", "*ELEMENT_BEAM"}))
+  EXPECT_EQ(refused, (std::vector<std::string>{"*AIRBAG_SIMPLE_AIRBAG_MODEL", "*ELEMENT_DISCRETE"}))
       << r.messages();
   EXPECT_EQ(r.count(2008), 2) << r.messages();  // *CONTROL_ACCURACY, *DATABASE_EXTENT_BINARY: read, ignored
   // the supported keywords read without field errors
@@ -898,12 +898,12 @@ TEST(KeywordRefusals, MessagesAreNeverDroppedOnALargeRefusedDeck) {
   // error and the required-keyword message appear, with the count of all errors
   std::string deck = "*KEYWORD\n*CONTROL_TERMINATION\n       1.0\n*NODE\n";
   for (int k = 0; k < 1500; ++k) deck += "     " + std::to_string(k + 1) + "x           0.0             0.0             0.0\n";
-  deck += "*ELEMENT_BEAM\n       1       1       1       2       3\n*END\n";
+  deck += "*ELEMENT_DISCRETE\n       1       1       1       2\n*END\n";
   Read r = read_text(deck);
   EXPECT_FALSE(r.ok);
   const std::string out = r.messages();
   EXPECT_NE(out.find("error 1311: required keyword missing: *ELEMENT_SOLID"), std::string::npos) << out.substr(out.size() - 2000);
-  EXPECT_NE(out.find("error 1301: keyword not supported by IMPACT-3D (impact3d --lenient-keywords turns this into a warning): 1 keyword block(s): *ELEMENT_BEAM"),
+  EXPECT_NE(out.find("error 1301: keyword not supported by IMPACT-3D (impact3d --lenient-keywords turns this into a warning): 1 keyword block(s): *ELEMENT_DISCRETE"),
             std::string::npos);
   EXPECT_EQ(out.find("not shown)"), std::string::npos);
   EXPECT_GE(r.d.error_count(), 1502);

@@ -1,0 +1,135 @@
+#include "impact3d/solve/beam_processing.h"
+
+#include <cmath>
+#include <limits>
+
+namespace impact3d {
+
+namespace {
+
+constexpr int kMinBeamsForThreads = 4096;
+
+void zero_beam_ends(State& s, int b) {
+  BeamState& bm = s.beams;
+  for (int j = 0; j < 2; ++j) {
+    const std::size_t c = bm.corner_base + 2 * std::size_t(b) + std::size_t(j);
+    s.cfx[c] = s.cfy[c] = s.cfz[c] = 0;
+    const std::size_t q = bm.moment_base + 2 * std::size_t(b) + std::size_t(j);
+    s.shells.cmx[q] = s.shells.cmy[q] = s.shells.cmz[q] = 0;
+  }
+}
+
+void gather_beam(const State& s, int b, double dt, BeamKernelIO& io) {
+  const BeamState& bm = s.beams;
+  const ShellState& sh = s.shells;
+  const auto& c = bm.conn[std::size_t(b)];
+  for (int j = 0; j < 2; ++j) {
+    const std::size_t n = std::size_t(c[std::size_t(j)]);
+    io.x[j][0] = s.x[n];
+    io.x[j][1] = s.y[n];
+    io.x[j][2] = s.z[n];
+    io.v[j][0] = s.vx[n];
+    io.v[j][1] = s.vy[n];
+    io.v[j][2] = s.vz[n];
+    const int r = sh.node_rot.empty() ? -1 : sh.node_rot[n];
+    io.w[j][0] = r >= 0 ? sh.wx[std::size_t(r)] : 0.0;
+    io.w[j][1] = r >= 0 ? sh.wy[std::size_t(r)] : 0.0;
+    io.w[j][2] = r >= 0 ? sh.wz[std::size_t(r)] : 0.0;
+  }
+  for (int a = 0; a < 3; ++a) io.e2[a] = bm.e2[3 * std::size_t(b) + std::size_t(a)];
+  io.dt = dt;
+}
+
+void process_beam(State& s, const BeamGroup& g, int b, double dt) {
+  BeamState& bm = s.beams;
+  const std::size_t B = std::size_t(b);
+  BeamKernelIO io;
+  gather_beam(s, b, dt, io);
+  const std::size_t ip = std::size_t(bm.ip_start[B]);
+  const bool plastic = g.material_kind != BeamMaterialKind::elastic;
+  BeamPointState st{&bm.sig[3 * ip], g.material_kind == BeamMaterialKind::plastic_kinematic ? &bm.back[6 * ip] : nullptr,
+                    plastic ? &bm.eps_p[ip] : nullptr, plastic ? &bm.yielded[ip] : nullptr};
+  const MaterialConstants& mc = s.mats[std::size_t(g.material)];
+  if (g.kernel == BeamKernel::truss) calc_truss_forces(bm.area[B], mc, g.material_kind, io, st);
+  else calc_beam_hl_forces(bm.size[B], g.rule, g.shrf, mc, g.material_kind, io, st);
+  bm.bad[B] = io.bad;
+  if (io.bad) {
+    zero_beam_ends(s, b);
+    bm.dt_e[B] = 0;
+    bm.de_ie[B] = 0;
+    return;
+  }
+  bm.length[B] = io.length;
+  bm.dt_e[B] = beam_time_step(io.length, mc);
+  bm.de_ie[B] = io.de_ie;
+  for (int a = 0; a < 3; ++a) bm.e2[3 * B + std::size_t(a)] = io.e2[a];
+  for (int k = 0; k < 6; ++k) bm.res[6 * B + std::size_t(k)] = io.res[k];
+  for (int j = 0; j < 2; ++j) {
+    const std::size_t c = bm.corner_base + 2 * B + std::size_t(j);
+    s.cfx[c] = io.f[j][0];
+    s.cfy[c] = io.f[j][1];
+    s.cfz[c] = io.f[j][2];
+    const std::size_t q = bm.moment_base + 2 * B + std::size_t(j);
+    s.shells.cmx[q] = io.m[j][0];
+    s.shells.cmy[q] = io.m[j][1];
+    s.shells.cmz[q] = io.m[j][2];
+  }
+}
+
+bool beam_forces_finite(const State& s, int b) {
+  const BeamState& bm = s.beams;
+  double c = 0;
+  for (int j = 0; j < 2; ++j) {
+    const std::size_t q = bm.corner_base + 2 * std::size_t(b) + std::size_t(j);
+    const std::size_t r = bm.moment_base + 2 * std::size_t(b) + std::size_t(j);
+    c += s.cfx[q] + s.cfy[q] + s.cfz[q] + s.shells.cmx[r] + s.shells.cmy[r] + s.shells.cmz[r];
+  }
+  return std::isfinite(c);
+}
+
+}  // namespace
+
+double beam_time_step(double length, const MaterialConstants& mc) {
+  const double c = mc.rho > 0 ? std::sqrt(mc.E / mc.rho) : 0.0;
+  return c > 0 ? length / c : std::numeric_limits<double>::infinity();
+}
+
+BeamPassResult calc_forces_for_beams(const Model& m, State& s) {
+  (void)m;
+  BeamPassResult out;
+  out.dt_min = std::numeric_limits<double>::infinity();
+  BeamState& bm = s.beams;
+  const double dt = s.dt_half;
+  for (const BeamGroup& g : bm.groups) {
+    const int* ord = &bm.order[std::size_t(g.first)];
+    const int n = g.count;
+    if (g.kernel == BeamKernel::rigid) {
+      for (int q = 0; q < n; ++q) zero_beam_ends(s, ord[q]);
+      continue;
+    }
+#pragma omp parallel for schedule(static) if (n >= kMinBeamsForThreads)
+    for (int q = 0; q < n; ++q) process_beam(s, g, ord[q], dt);
+    // books in group order (the same bits for any thread count)
+    double gie = 0;
+    for (int q = 0; q < n; ++q) {
+      const int b = ord[q];
+      const std::size_t B = std::size_t(b);
+      if (bm.bad[B]) {
+        if (out.bad_beam < 0 || b < out.bad_beam) out.bad_beam = b;
+        continue;
+      }
+      gie += bm.de_ie[B];
+      bm.energy[B] += bm.de_ie[B];
+      if (bm.dt_e[B] < out.dt_min || (bm.dt_e[B] == out.dt_min && b < out.dt_beam)) {
+        out.dt_min = bm.dt_e[B];
+        out.dt_beam = b;
+      }
+      if (!beam_forces_finite(s, b) && (out.non_finite_beam < 0 || b < out.non_finite_beam)) out.non_finite_beam = b;
+    }
+    s.mat_internal[std::size_t(g.material)] += gie;
+    out.die += gie;
+  }
+  return out;
+}
+
+}  // namespace impact3d

@@ -1,0 +1,28 @@
+#pragma once
+// The beams' element pass (Hughes-Liu beams and trusses, group by group, one kernel per
+// group).  Their rotations go through the shells' rotational node pass
+// (update_rotational_velocities_for_nodes, shell_processing.h), their translations through the
+// common corner-force gather.
+
+#include "impact3d/model/model.h"
+#include "impact3d/model/state.h"
+
+namespace impact3d {
+
+struct BeamPassResult {
+  double die = 0;                // internal-energy increment (beam by beam in group order)
+  double dt_min = 0;             // smallest beam step and its beam (lowest index on ties)
+  int dt_beam = -1;
+  int bad_beam = -1, non_finite_beam = -1;  // lowest such beam, or -1
+};
+
+// Element pass of the beams at t^{n+1} (x^{n+1}, v^{n+1/2}, omega^{n+1/2}, dt^{n+1/2}):
+// stresses, end forces (s.cfx... at BeamState::corner_base) and moments (s.shells.cmx... at
+// BeamState::moment_base), steps L / c, energy books (s.mat_internal too).  Every beam writes
+// only its own entries and the sums run in a fixed order: the same bits for any thread count.
+BeamPassResult calc_forces_for_beams(const Model& m, State& s);
+
+// The beam's step: L / c, c = sqrt(E / rho) (the rotary inertia keeps the other modes slower).
+double beam_time_step(double length, const MaterialConstants& mc);
+
+}  // namespace impact3d

@@ -1,0 +1,206 @@
+// Keyword decks with beams: *SECTION_BEAM (ELFORM 1 rectangular and tubular, ELFORM 3),
+// *ELEMENT_BEAM(_THICKNESS), beam parts, rotational constraints on beam nodes, the refusals,
+// the converter's round trip, a restart that continues bit for bit, and the shipped example
+// deck running to the end.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "common/messages.h"
+#include "impact3d/input/deck_reader.h"
+#include "impact3d/input/deck_writer.h"
+#include "impact3d/output/restart_dump.h"
+#include "impact3d/solve/engine.h"
+
+using namespace impact3d;
+
+namespace {
+
+struct BeamRead {
+  Model m;
+  Diagnostics d;
+  bool ok = false;
+  std::string messages() const {
+    std::ostringstream os;
+    d.print(os);
+    return os.str();
+  }
+  int count(int id) const {
+    int n = 0;
+    for (const auto& x : d.all()) n += x.id == id;
+    return n;
+  }
+  const Diagnostic* first(int id) const {
+    for (const auto& x : d.all())
+      if (x.id == id) return &x;
+    return nullptr;
+  }
+};
+
+BeamRead read_beam_text(const std::string& text) {
+  BeamRead r;
+  DeckFile deck;
+  deck.load_from_string("beams.k", text);
+  InputOptions o;
+  r.ok = read_deck(deck, r.m, r.d, o);
+  if (r.ok) r.ok = check_model(r.m, r.d);
+  return r;
+}
+
+std::string frame_deck() {
+  std::ifstream f(std::string(IMPACT3D_SOURCE_DIR) + "/tests/keyword/beam_frame.k");
+  std::stringstream ss;
+  ss << f.rdbuf();
+  return ss.str();
+}
+
+std::string replaced(std::string s, const std::string& from, const std::string& to) {
+  const std::size_t p = s.find(from);
+  EXPECT_NE(p, std::string::npos) << from;
+  if (p != std::string::npos) s.replace(p, from.size(), to);
+  return s;
+}
+
+}  // namespace
+
+// The example frame: 10 rectangular Hughes-Liu beams, 4 tubes (sizes on _THICKNESS cards), a
+// truss; sections, parts, orientation nodes and the rotational constraint of the clamped node.
+TEST(KeywordBeams, FrameDeckReadsIntoTheModel) {
+  BeamRead r = read_beam_text(frame_deck());
+  ASSERT_TRUE(r.ok) << r.messages();
+  ASSERT_EQ(r.m.num_beams(), 15);
+  ASSERT_EQ(r.m.materials.size(), 3u);
+  const MaterialData& cant = r.m.materials[std::size_t(r.m.beam_material[0])];
+  EXPECT_TRUE(cant.beam);
+  EXPECT_EQ(cant.type, 3);
+  EXPECT_EQ(cant.beam_section.elform, 1);
+  EXPECT_EQ(cant.beam_section.qr, 3);
+  EXPECT_EQ(cant.beam_section.cst, BeamCrossSection::rectangular);
+  EXPECT_DOUBLE_EQ(cant.beam_section.ts1, 0.02);
+  EXPECT_DOUBLE_EQ(cant.beam_section.tt2, 0.01);
+  EXPECT_NEAR(cant.beam_section.shrf, 0.833333, 1e-12);
+  const MaterialData& tube = r.m.materials[std::size_t(r.m.beam_material[10])];
+  EXPECT_EQ(tube.beam_section.cst, BeamCrossSection::tubular);
+  EXPECT_EQ(tube.beam_section.qr, 2);
+  EXPECT_DOUBLE_EQ(r.m.beam_thickness[10][2], 0.016);
+  EXPECT_EQ(r.m.beam_nodes[10][2], -1);  // N3 0: none
+  const MaterialData& truss = r.m.materials[std::size_t(r.m.beam_material[14])];
+  EXPECT_EQ(truss.beam_section.elform, 3);
+  EXPECT_DOUBLE_EQ(truss.beam_section.area, 1e-5);
+  EXPECT_EQ(r.m.beam_nodes[0], (std::array<int, 3>{0, 1, 16}));
+  ASSERT_FALSE(r.m.rot_bc.empty());
+  EXPECT_EQ(r.m.rot_bc[0], 7);  // the clamped beam node's rotations (DOFRX-DOFRZ)
+  EXPECT_EQ(r.m.rot_bc[15], 0);  // the truss anchor: a truss node has no rotations
+}
+
+// Refusals name the keyword, card and field: the Belytschko-Schwer beam (ELFORM 2), arbitrary
+// sections (CST 2), user integration rules, end releases, a material without a beam form,
+// coincident end nodes and an orientation node on the beam's axis.
+TEST(KeywordBeams, RefusalsNameTheField) {
+  const std::string base = frame_deck();
+  {
+    BeamRead r = read_beam_text(replaced(base, "         1         1  0.833333         3         0", "         1         2  0.833333         3         0"));
+    EXPECT_FALSE(r.ok);
+    ASSERT_EQ(r.count(1102), 1) << r.messages();
+    EXPECT_EQ(r.first(1102)->where.field, "ELFORM");
+    EXPECT_NE(r.messages().find("Belytschko-Schwer"), std::string::npos);
+  }
+  {
+    BeamRead r = read_beam_text(replaced(base, "         1         1  0.833333         3         0", "         1         1  0.833333         3         2"));
+    EXPECT_FALSE(r.ok);
+    ASSERT_GE(r.count(1102), 1) << r.messages();
+    EXPECT_EQ(r.first(1102)->where.field, "CST");
+  }
+  {
+    BeamRead r = read_beam_text(replaced(base, "         1         1  0.833333         3         0", "         1         1  0.833333        -1         0"));
+    EXPECT_FALSE(r.ok);
+    ASSERT_GE(r.count(1102), 1) << r.messages();
+    EXPECT_EQ(r.first(1102)->where.field, "QR/IRID");
+  }
+  {
+    BeamRead r = read_beam_text(replaced(base, "       1       1       1       2      17", "       1       1       1       2      17       1"));
+    EXPECT_FALSE(r.ok);
+    ASSERT_EQ(r.count(1102), 1) << r.messages();
+    EXPECT_EQ(r.first(1102)->where.field, "RT1");
+  }
+  {
+    BeamRead r = read_beam_text(replaced(base, "*MAT_ELASTIC\n         2", "*MAT_NULL\n         2"));
+    EXPECT_FALSE(r.ok);
+    EXPECT_GE(r.count(1103), 1) << r.messages();
+  }
+  {
+    BeamRead r = read_beam_text(replaced(base, "       1       1       1       2      17", "       1       1       1       1      17"));
+    EXPECT_FALSE(r.ok);
+    ASSERT_EQ(r.count(1250), 1) << r.messages();
+    EXPECT_EQ(r.first(1250)->where.field, "N1-N2");
+  }
+  {  // orientation node 3 (on the x axis) for beam 1 along x
+    BeamRead r = read_beam_text(replaced(base, "       1       1       1       2      17", "       1       1       1       2       3"));
+    EXPECT_FALSE(r.ok);
+    ASSERT_EQ(r.count(1250), 1) << r.messages();
+    EXPECT_EQ(r.first(1250)->where.card, "beam element 1");
+  }
+  {
+    BeamRead r = read_beam_text(replaced(base, "    1.0e-5", "   -1.0e-5"));
+    EXPECT_FALSE(r.ok);
+    EXPECT_GE(r.count(1251), 1) << r.messages();
+  }
+}
+
+// The converter writes beams back as a keyword deck that reads into the same Model; the fixed
+// format refuses them.
+TEST(KeywordBeams, KeywordRoundTripAndFixedFormatRefusal) {
+  BeamRead a = read_beam_text(frame_deck());
+  ASSERT_TRUE(a.ok) << a.messages();
+  std::ostringstream os;
+  std::vector<std::string> notes;
+  write_keyword_deck(os, a.m, &notes);
+  BeamRead b = read_beam_text(os.str());
+  ASSERT_TRUE(b.ok) << b.messages() << os.str();
+  const auto diffs = model_differences(a.m, b.m, 50);
+  std::string all;
+  for (const auto& d : diffs) all += d + "\n";
+  EXPECT_TRUE(diffs.empty()) << all;
+  EXPECT_EQ(b.m.num_beams(), 15);
+  std::ostringstream log;
+  const std::string fixed = std::string(IMPACT3D_BINARY_DIR) + "/beam_fixed_refused.dyn";
+  EXPECT_EQ(write_converted_decks(a.m, "", fixed, log), exit_code::input_error);
+  EXPECT_NE(log.str().find("beam"), std::string::npos) << log.str();
+}
+
+// The frame runs to its end time with the energy balanced (the ramped tip load's work), the
+// cantilever yielding at its root; a restart dump halfway continues bit for bit.
+TEST(KeywordBeams, FrameRunsAndRestartsBitForBit) {
+  BeamRead r = read_beam_text(frame_deck());
+  ASSERT_TRUE(r.ok) << r.messages();
+  Engine a(r.m);
+  ASSERT_EQ(a.initialize(), StepStatus::ok);
+  for (int c = 0; c < 110; ++c) ASSERT_EQ(a.step(), StepStatus::ok);
+  DumpHeader h;
+  h.deck_name = "beams.k";
+  h.deck_text = frame_deck();
+  const std::string path = std::string(IMPACT3D_BINARY_DIR) + "/beam_restart_dump";
+  write_restart_dump(path, h, a.state(), a.contact().restart_data());
+  Engine b(r.m);
+  ASSERT_EQ(b.initialize(), StepStatus::ok);
+  SlidingInterfaces::RestartData cd;
+  read_restart_dump_state(path, b.state(), cd);
+  StepStatus sa = StepStatus::ok, sb = StepStatus::ok;
+  while (sa == StepStatus::ok) {
+    sa = a.step();
+    sb = b.step();
+  }
+  EXPECT_EQ(sa, StepStatus::finished);
+  EXPECT_EQ(sb, StepStatus::finished);
+  EXPECT_EQ(a.state().z, b.state().z);
+  EXPECT_EQ(a.state().beams.sig, b.state().beams.sig);
+  EXPECT_EQ(a.state().beams.e2, b.state().beams.e2);
+  EXPECT_EQ(a.state().shells.wy, b.state().shells.wy);
+  EXPECT_EQ(a.state().internal, b.state().internal);
+  EXPECT_NEAR(a.state().energy_ratio(), 1.0, 0.01);
+  EXPECT_GT(*std::max_element(a.state().beams.eps_p.begin(), a.state().beams.eps_p.end()), 0.0);
+}
