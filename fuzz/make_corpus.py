@@ -39,7 +39,7 @@ def src(*parts):
 
 shutil.rmtree(OUT, ignore_errors=True)
 for target in ("fixed_deck", "keyword_deck", "plot_database", "postimpact_database",
-               "restart_dump", "command_file", "tolerances"):
+               "restart_dump", "command_file", "tolerances", "mili_database"):
     os.makedirs(os.path.join(OUT, target), exist_ok=True)
     for seed in glob.glob(src("fuzz", "seeds", target, "*")):
         out(target, "seed_" + os.path.basename(seed), read(seed))

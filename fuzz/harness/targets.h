@@ -16,6 +16,9 @@ int fuzz_fixed_deck(const std::uint8_t* data, std::size_t size);
 int fuzz_keyword_deck(const std::uint8_t* data, std::size_t size);
 // d3plot family (common/plot_database): 4-byte root length, root file, member d3plot01.
 int fuzz_plot_database(const std::uint8_t* data, std::size_t size);
+// Mili database (common/mili_database): the A file, state files 00 and 01 and the T file, cut
+// at lines "$$FUZZ-FILE$$".
+int fuzz_mili_database(const std::uint8_t* data, std::size_t size);
 // The same input through POST-IMPACT: Database, surface, quantities, histories, summary, compare.
 int fuzz_postimpact_database(const std::uint8_t* data, std::size_t size);
 // Restart dump: header, deck inside, state.  An input that starts with the dump magic and has
