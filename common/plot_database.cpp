@@ -454,11 +454,12 @@ void PlotWriter::open_impl(const std::string& root_path, const PlotGeometry& g, 
     if (member_size_limit_words < 1)
         throw std::invalid_argument("PlotWriter: member size limit must be positive");
     if (g.x0.size() % 3 != 0) throw std::invalid_argument("PlotWriter: x0 size is not a multiple of 3");
-    if (!g.tshell_material.empty() || !g.beam_material.empty())
-        throw std::invalid_argument("PlotWriter: writes solids and shells only (the geometry has thick shells or beams)");
+    if (!g.tshell_material.empty())
+        throw std::invalid_argument("PlotWriter: writes solids, beams and shells only (the geometry has thick shells)");
     const std::size_t numnp = g.x0.size() / 3;
     const std::size_t nel8 = g.hex_material.size();
     const std::size_t nel4 = g.shell_material.size();
+    const std::size_t nel2 = g.beam_material.size();
     const int nmat = g.num_materials;
     if (numnp > 100000000u || nel8 > 100000000u) throw std::invalid_argument("PlotWriter: model too large");
     if (nmat < 0 || (nel8 > 0 && nmat < 1))
@@ -481,6 +482,25 @@ void PlotWriter::open_impl(const std::string& root_path, const PlotGeometry& g, 
     }
     std::int64_t nummat4 = 0;
     for (char c : shell_mat) nummat4 += c;
+    // beams: the same for NUMMAT2
+    if (nel2 > 100000000u) throw std::invalid_argument("PlotWriter: model too large");
+    check_size(g.beam_nodes, 2 * nel2, "beam_nodes", false);
+    check_size(g.beam_user_ids, nel2, "beam_user_ids", true);
+    check_size(g.beam_orientation, nel2, "beam_orientation", true);
+    if (g.beam_points < 0 || g.beam_points > 10000) throw std::invalid_argument("PlotWriter: implausible number of beam points");
+    for (std::size_t k = 0; k < g.beam_nodes.size(); ++k)
+        if (g.beam_nodes[k] < 0 || static_cast<std::size_t>(g.beam_nodes[k]) >= numnp)
+            throw std::invalid_argument("PlotWriter: beam " + std::to_string(k / 2) + " node index out of range");
+    for (int n : g.beam_orientation)
+        if (n >= 0 && static_cast<std::size_t>(n) >= numnp) throw std::invalid_argument("PlotWriter: beam orientation node out of range");
+    std::vector<char> beam_mat(static_cast<std::size_t>(nmat) + 1, 0);
+    for (std::size_t e = 0; e < nel2; ++e) {
+        if (g.beam_material[e] < 1 || g.beam_material[e] > nmat)
+            throw std::invalid_argument("PlotWriter: beam " + std::to_string(e) + " material not in 1.." + std::to_string(nmat));
+        beam_mat[static_cast<std::size_t>(g.beam_material[e])] = 1;
+    }
+    std::int64_t nummat2 = 0;
+    for (char c : beam_mat) nummat2 += c;
     check_size(g.part_titles, static_cast<std::size_t>(nmat), "part_titles", true);
     check_size(g.part_user_ids, static_cast<std::size_t>(nmat), "part_user_ids", true);
     for (std::size_t k = 0; k < g.hex_nodes.size(); ++k)
@@ -500,6 +520,8 @@ void PlotWriter::open_impl(const std::string& root_path, const PlotGeometry& g, 
     numnp_ = static_cast<int>(numnp);
     nel8_ = static_cast<int>(nel8);
     nel4_ = static_cast<int>(nel4);
+    nel2_ = static_cast<int>(nel2);
+    nv1d_ = nel2 > 0 ? 6 + 5 * g.beam_points : 0;
     nmmat_ = nmat;
     if (g.num_rigid_walls < 0 || g.num_rigid_walls > 100000)
         throw std::invalid_argument("PlotWriter: implausible number of rigid walls");
@@ -512,9 +534,10 @@ void PlotWriter::open_impl(const std::string& root_path, const PlotGeometry& g, 
         throw std::invalid_argument("PlotWriter: implausible number of solid history values");
     neiph_ = g.num_solid_history;
     // time, globals, coords + vel + acc, 7 + NEIPH words and one deletion flag per solid, the
-    // shell records and one deletion flag per shell
+    // beam records and one deletion flag per beam, the shell records and one deletion flag per
+    // shell
     state_words_ = 1 + nglbv_ + 9 * static_cast<std::int64_t>(numnp) + (8 + neiph_) * static_cast<std::int64_t>(nel8) +
-                   (kShellPlotVars + 1) * static_cast<std::int64_t>(nel4);
+                   (nv1d_ + 1) * static_cast<std::int64_t>(nel2) + (kShellPlotVars + 1) * static_cast<std::int64_t>(nel4);
     root_ = root_path;
     x0_ = g.x0;
     members_ = 0;
@@ -539,14 +562,17 @@ void PlotWriter::open_impl(const std::string& root_path, const PlotGeometry& g, 
             case 18: v = nglbv_; break;   // NGLBV
             case 20: case 21: case 22: v = 1; break;  // IU IV IA
             case 23: v = nel8_; break;    // NEL8
-            case 24: v = nmmat_ - nummat4; break;   // NUMMAT8
+            case 24: v = nmmat_ - nummat4 - nummat2; break;   // NUMMAT8
+            case 28: v = nel2_; break;    // NEL2
+            case 29: v = nummat2; break;  // NUMMAT2
+            case 30: v = nv1d_; break;    // NV1D
             case 31: v = nel4_; break;    // NEL4
             case 32: v = nummat4; break;  // NUMMAT4
             case 33: v = nel4_ > 0 ? kShellPlotVars : 0; break;  // NV2D
             case 27: v = 7 + neiph_; break;  // NV3D = 7 + NEIPH
             case 34: v = neiph_; break;   // NEIPH
             case 36: v = -10003; break;   // MAXINT: element deletion flags
-            case 39: v = 16 + numnp_ + nel8_ + nel4_ + 3 * static_cast<std::int64_t>(nmmat_); break;  // NARBS
+            case 39: v = 16 + numnp_ + nel8_ + nel2_ + nel4_ + 3 * static_cast<std::int64_t>(nmmat_); break;  // NARBS
             case 43: case 44: case 45: case 46: v = 1000; break;  // IOSHL
             case 51: v = nmmat_; break;   // NMMAT
             case 63: v = nif_; break;     // IMPACT-3D: sliding interfaces in the globals
@@ -561,7 +587,15 @@ void PlotWriter::open_impl(const std::string& root_path, const PlotGeometry& g, 
         for (int k = 0; k < 8; ++k) put_int(b, ws, g.hex_nodes[8 * e + k] + 1);
         put_int(b, ws, g.hex_material[e]);
     }
-    for (std::size_t e = 0; e < nel4; ++e) {  // IX4 (after solids, thick shells, beams: none)
+    for (std::size_t e = 0; e < nel2; ++e) {  // IX2 (after solids, thick shells: none): n1 n2 n3, two unused, material
+        put_int(b, ws, g.beam_nodes[2 * e] + 1);
+        put_int(b, ws, g.beam_nodes[2 * e + 1] + 1);
+        put_int(b, ws, g.beam_orientation.empty() || g.beam_orientation[e] < 0 ? 0 : g.beam_orientation[e] + 1);
+        put_int(b, ws, 0);
+        put_int(b, ws, 0);
+        put_int(b, ws, g.beam_material[e]);
+    }
+    for (std::size_t e = 0; e < nel4; ++e) {  // IX4 (after solids, thick shells, beams)
         for (int k = 0; k < 4; ++k) put_int(b, ws, g.shell_nodes[4 * e + k] + 1);
         put_int(b, ws, g.shell_material[e]);
     }
@@ -571,16 +605,18 @@ void PlotWriter::open_impl(const std::string& root_path, const PlotGeometry& g, 
         for (int p = 1; p <= nmat; ++p) pids.push_back(p);
     {
         const std::int64_t nsort = 100;
-        const std::int64_t nsrh = nsort + numnp_, nsrb = nsrh + nel8_, nsrs = nsrb, nsrt = nsrs + nel4_;
+        const std::int64_t nsrh = nsort + numnp_, nsrb = nsrh + nel8_, nsrs = nsrb + nel2_, nsrt = nsrs + nel4_;
         const std::int64_t nsrma = nsrt, nsrmu = nsrma + nmat, nsrmp = nsrmu + nmat;
-        const std::int64_t hdr[16] = {-nsort, nsrh, nsrb, nsrs, nsrt, numnp_, nel8_, 0, nel4_, 0,
+        const std::int64_t hdr[16] = {-nsort, nsrh, nsrb, nsrs, nsrt, numnp_, nel8_, nel2_, nel4_, 0,
                                       nsrma, nsrmu, nsrmp, nmat, 0, nmat};
         for (std::int64_t v : hdr) put_int(b, ws, v);
         for (std::size_t n = 0; n < numnp; ++n)
             put_int(b, ws, g.node_user_ids.empty() ? static_cast<std::int64_t>(n + 1) : g.node_user_ids[n]);
         for (std::size_t e = 0; e < nel8; ++e)
             put_int(b, ws, g.hex_user_ids.empty() ? static_cast<std::int64_t>(e + 1) : g.hex_user_ids[e]);
-        for (std::size_t e = 0; e < nel4; ++e)  // (beams: none) shells
+        for (std::size_t e = 0; e < nel2; ++e)  // beams, then shells
+            put_int(b, ws, g.beam_user_ids.empty() ? static_cast<std::int64_t>(e + 1) : g.beam_user_ids[e]);
+        for (std::size_t e = 0; e < nel4; ++e)
             put_int(b, ws, g.shell_user_ids.empty() ? static_cast<std::int64_t>(e + 1) : g.shell_user_ids[e]);
         for (int p : pids) put_int(b, ws, p);   // NORDER (ascending)
         for (int p : pids) put_int(b, ws, p);   // NSRMU (input order)
@@ -670,6 +706,9 @@ void PlotWriter::write_state(const PlotState& s) {
     const std::size_t ns = static_cast<std::size_t>(nel4_);
     check_size(s.shell_vars, kShellPlotVars * ns, "shell_vars", true);
     check_size(s.shell_alive, ns, "shell_alive", true);
+    const std::size_t nb = static_cast<std::size_t>(nel2_);
+    check_size(s.beam_vars, static_cast<std::size_t>(nv1d_) * nb, "beam_vars", true);
+    check_size(s.beam_alive, nb, "beam_alive", true);
 
     const int ws = ws_;
     std::vector<char> b;
@@ -702,9 +741,12 @@ void PlotWriter::write_state(const PlotState& s) {
         for (int h = 0; h < neiph_; ++h)
             put_real(b, ws, s.history.empty() ? 0.0 : s.history[static_cast<std::size_t>(neiph_) * e + h]);
     }
+    put_vec(s.beam_vars, static_cast<std::size_t>(nv1d_) * nb);
     put_vec(s.shell_vars, kShellPlotVars * ns);
+    // deletion flags: solids, (thick shells,) shells, beams
     for (std::size_t e = 0; e < ne; ++e) put_real(b, ws, (s.alive.empty() || s.alive[e]) ? 1.0 : 0.0);
     for (std::size_t e = 0; e < ns; ++e) put_real(b, ws, (s.shell_alive.empty() || s.shell_alive[e]) ? 1.0 : 0.0);
+    for (std::size_t e = 0; e < nb; ++e) put_real(b, ws, (s.beam_alive.empty() || s.beam_alive[e]) ? 1.0 : 0.0);
     if (static_cast<std::int64_t>(b.size()) != state_words_ * ws)
         throw std::logic_error("PlotWriter: internal error: state size mismatch");
 

@@ -53,7 +53,7 @@ struct PlotGeometry {
     std::vector<int> part_user_ids;        // num_materials user part ids, strictly ascending, or empty (= 1..n)
 
     // ---- Further element families (filled by PlotReader from LS-DYNA databases; PlotWriter
-    //      writes solids only and refuses a geometry that has any of these).  Nodes 0-based,
+    //      writes shells and beams too and refuses thick shells).  Nodes 0-based,
     //      materials 1-based in the same 1..num_materials numbering as the solids.
     std::vector<int> tshell_nodes;         // 8*nelt, thick shells (hexahedron node order)
     std::vector<int> tshell_material;      // nelt
@@ -61,6 +61,10 @@ struct PlotGeometry {
     std::vector<int> beam_nodes;           // 2*nel2, the two end nodes
     std::vector<int> beam_material;        // nel2
     std::vector<int> beam_user_ids;        // nel2
+    // writer: each beam's orientation node n3 (0-based, -1 none; written after n1 n2 in IX2), or
+    // empty (none); and the integration points per beam record (NV1D = 6 + 5 beam_points)
+    std::vector<int> beam_orientation;     // nel2
+    int beam_points = 0;
     std::vector<int> shell_nodes;          // 4*nel4 (n3 == n4: triangle)
     std::vector<int> shell_material;       // nel4
     std::vector<int> shell_user_ids;       // nel4
@@ -115,7 +119,9 @@ struct PlotState {
     std::vector<double> temperature;           // numnp nodal temperatures (IT 3: the middle-layer array)
     std::vector<double> solid_vars;            // NV3D*numelh raw solid records, only when NV3D > 7
     std::vector<double> tshell_vars;           // NV3DT*nelt raw thick-shell records
-    std::vector<double> beam_vars;             // NV1D*nel2 raw beam records
+    std::vector<double> beam_vars;             // NV1D*nel2 raw beam records (writer: or empty = zeros):
+                                               // N, Q_s, Q_t, M_s, M_t, T, then per point tau_rs,
+                                               // tau_tr, sigma_rr, eps_p, eps_rr
     std::vector<double> shell_vars;            // NV2D*nel4 raw shell records (rigid shells: zeros)
     std::vector<unsigned char> tshell_alive;   // nelt, 1/0 (empty: all alive)
     std::vector<unsigned char> beam_alive;     // nel2
@@ -213,7 +219,7 @@ private:
     std::vector<double> x0_;      // initial coordinates (written when a state has no coords)
     int ws_ = 4;
     std::int64_t limit_words_ = kDefaultMemberSizeLimitWords;
-    int numnp_ = 0, nel8_ = 0, nmmat_ = 0, nrw_ = 0, nif_ = 0, nel4_ = 0, neiph_ = 0;
+    int numnp_ = 0, nel8_ = 0, nmmat_ = 0, nrw_ = 0, nif_ = 0, nel4_ = 0, neiph_ = 0, nel2_ = 0, nv1d_ = 0;
     std::int64_t nglbv_ = 0, state_words_ = 0;
     bool root_written_ = false;
     int fd_ = -1;                 // current member

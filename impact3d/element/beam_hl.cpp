@@ -33,6 +33,7 @@ void line_rule(int n, bool lobatto, double* p, double* w) {
 void update_point(BeamMaterialKind kind, const MaterialConstants& mc, const double d[3], double dt,
                   const BeamPointState& st, std::size_t i) {
   double* sig = st.sig + 3 * i;
+  if (st.eps_rr) st.eps_rr[i] += d[0] * dt;
   if (kind == BeamMaterialKind::elastic) {
     update_beam_point_elastic(mc, d, dt, sig);
     return;

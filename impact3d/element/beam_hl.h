@@ -74,6 +74,7 @@ struct BeamKernelIO {
 // Per-point state: 3 stresses (rr, rs, rt; tensor shears) per point, plastic history.
 struct BeamPointState {
   double* sig;             // 3 per point
+  double* eps_rr;          // 1 per point: axial strain (d_rr dt summed)
   double* back;            // 6 per point (plastic-kinematic), else null
   double* eps_p;           // 1 per point (plastic kinds), else null
   unsigned char* yielded;  // 1 per point (plastic kinds), else null

@@ -238,6 +238,7 @@ void init_beams(const Model& m, State& s) {
     bm.ip_start[std::size_t(b) + 1] = bm.ip_start[std::size_t(b)] + points_of_material[std::size_t(bm.mat[std::size_t(b)])];
   const std::size_t npt = std::size_t(bm.ip_start[std::size_t(nb)]);
   bm.sig.assign(3 * npt, 0.0);
+  bm.eps_rr.assign(npt, 0.0);
   bm.back.assign(kinematic ? 6 * npt : 0, 0.0);
   bm.eps_p.assign(plastic ? npt : 0, 0.0);
   bm.yielded.assign(plastic ? npt : 0, 0);

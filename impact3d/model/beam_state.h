@@ -39,6 +39,7 @@ struct BeamState {
   std::vector<int> order;                     // beams group after group, increasing in a group
   std::vector<int> ip_start;                  // first integration point of each beam (nb + 1)
   std::vector<double> sig;                    // 3 per point: local rr rs rt (tensor shears)
+  std::vector<double> eps_rr;                 // 1 per point: axial strain (the sum of d_rr dt; output)
   std::vector<double> back;                   // 6 per point (with a plastic-kinematic group; else empty)
   std::vector<double> eps_p;                  // 1 per point (with a plastic group; else empty)
   std::vector<std::uint8_t> yielded;          // 1 per point (with a plastic group; else empty)

@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "impact3d/element/beam_hl.h"
 #include "impact3d/element/shell_bt.h"
+#include "impact3d/init/beam_init.h"
 #include "impact3d/material/material_types.h"
 
 namespace impact3d {
@@ -33,6 +35,18 @@ PlotGeometry make_plot_geometry(const Model& m) {
     g.shell_material[std::size_t(k)] = m.shell_material[std::size_t(k)] + 1;
   }
   if (!m.shell_user_id.empty()) g.shell_user_ids = m.shell_user_id;
+  // beams: n1 n2, the orientation node, material; the records hold the most points any beam
+  // section has (beam_plot_points)
+  g.beam_nodes.resize(std::size_t(2) * m.num_beams());
+  g.beam_orientation.resize(std::size_t(m.num_beams()));
+  g.beam_material.resize(std::size_t(m.num_beams()));
+  for (int b = 0; b < m.num_beams(); ++b) {
+    for (int j = 0; j < 2; ++j) g.beam_nodes[std::size_t(2 * b + j)] = m.beam_nodes[std::size_t(b)][std::size_t(j)];
+    g.beam_orientation[std::size_t(b)] = m.beam_nodes[std::size_t(b)][2];
+    g.beam_material[std::size_t(b)] = m.beam_material[std::size_t(b)] + 1;
+  }
+  if (!m.beam_user_id.empty()) g.beam_user_ids = m.beam_user_id;
+  g.beam_points = beam_plot_points(m);
   // the materials' history values (NEIPH): as many as the most any solid's material has, the
   // same count as State::hist_stride
   for (int e = 0; e < m.num_hexes(); ++e)
@@ -67,6 +81,21 @@ void fill_plot_globals(const Model& m, const State& s, const InterfaceForces& if
     const double mc = s.mass_e[e] / 8;
     for (int n : s.conn[e]) {
       const std::size_t i = std::size_t(n);
+      ps.mat_kinetic_energy[k] += 0.5 * mc * (s.vx[i] * s.vx[i] + s.vy[i] * s.vy[i] + s.vz[i] * s.vz[i]);
+      ps.mat_velocity[3 * k] += mc * s.vx[i];
+      ps.mat_velocity[3 * k + 1] += mc * s.vy[i];
+      ps.mat_velocity[3 * k + 2] += mc * s.vz[i];
+    }
+  }
+  // beams: rho A L0 each, half per end
+  const BeamState& bm = s.beams;
+  for (int q = 0; q < bm.nb; ++q) {
+    const std::size_t k = std::size_t(bm.mat[std::size_t(q)]);
+    const double me = s.mats[k].rho * bm.area[std::size_t(q)] * bm.length0[std::size_t(q)];
+    ps.mat_mass[k] += me;
+    for (int j = 0; j < 2; ++j) {
+      const std::size_t i = std::size_t(bm.conn[std::size_t(q)][std::size_t(j)]);
+      const double mc = 0.5 * me;
       ps.mat_kinetic_energy[k] += 0.5 * mc * (s.vx[i] * s.vx[i] + s.vy[i] * s.vy[i] + s.vz[i] * s.vz[i]);
       ps.mat_velocity[3 * k] += mc * s.vx[i];
       ps.mat_velocity[3 * k + 1] += mc * s.vy[i];
@@ -189,6 +218,40 @@ void fill_shell_plot_vars(const State& s, int k, double* out) {
   out[32] = sh.energy.empty() ? 0.0 : sh.energy[K];
 }
 
+int beam_plot_points(const Model& m) {
+  int most = 0;
+  std::vector<BeamRulePoint> rule;
+  for (const MaterialData& md : m.materials) {
+    if (!md.beam) continue;
+    if (md.beam_section.elform == 3) most = std::max(most, 1);
+    else if (beam_integration_rule(md.beam_section, rule)) most = std::max(most, int(rule.size()));
+  }
+  return most;
+}
+
+void fill_beam_plot_vars(const State& s, int b, int points, double* out) {
+  const BeamState& bm = s.beams;
+  const std::size_t B = std::size_t(b);
+  const double* r = &bm.res[6 * B];  // N Q_s Q_t T M_s M_t
+  const double res[6] = {r[0], r[1], r[2], r[4], r[5], r[3]};
+  for (int c = 0; c < 6; ++c) out[c] = res[c];
+  const std::size_t ip0 = std::size_t(bm.ip_start[B]);
+  const int np = bm.ip_start[B + 1] - bm.ip_start[B];
+  for (int p = 0; p < points; ++p) {
+    double* o = out + 6 + 5 * p;
+    if (p >= np) {
+      for (int c = 0; c < 5; ++c) o[c] = 0;
+      continue;
+    }
+    const std::size_t q = ip0 + std::size_t(p);
+    o[0] = bm.sig[3 * q + 1];
+    o[1] = bm.sig[3 * q + 2];
+    o[2] = bm.sig[3 * q];
+    o[3] = bm.eps_p.empty() ? 0.0 : bm.eps_p[q];
+    o[4] = bm.eps_rr.empty() ? 0.0 : bm.eps_rr[q];
+  }
+}
+
 void fill_plot_state(const Model& m, const State& s, const InterfaceForces& iface, PlotState& ps) {
   const std::size_t nn = std::size_t(s.nn), ne = std::size_t(s.ne);
   fill_plot_globals(m, s, iface, ps);
@@ -214,6 +277,12 @@ void fill_plot_state(const Model& m, const State& s, const InterfaceForces& ifac
   const std::size_t ns = std::size_t(s.shells.ns);
   ps.shell_vars.resize(std::size_t(kShellPlotVars) * ns);
   for (std::size_t k = 0; k < ns; ++k) fill_shell_plot_vars(s, int(k), &ps.shell_vars[std::size_t(kShellPlotVars) * k]);
+  const std::size_t nb = std::size_t(s.beams.nb);
+  const int points = beam_plot_points(m);
+  const std::size_t nv1d = std::size_t(6 + 5 * points);
+  ps.beam_vars.resize(nv1d * nb);
+  for (std::size_t b = 0; b < nb; ++b) fill_beam_plot_vars(s, int(b), points, &ps.beam_vars[nv1d * b]);
+  ps.beam_alive.assign(nb, 1);
   ps.shell_alive.assign(ns, 1);
   for (std::size_t k = 0; k < ns && k < s.shells.failed.size(); ++k) ps.shell_alive[k] = s.shells.failed[k] ? 0 : 1;
 }

@@ -24,6 +24,11 @@ PlotGeometry make_plot_geometry(const Model& m);
 // outer stresses in global axes (xx yy zz xy yz zx) each with a plastic strain, the resultants,
 // thickness and internal energy.  Shared by the plot and time-history databases and elout.
 void fill_shell_plot_vars(const State& s, int k, double* out);
+// Beam records (NV1D = 6 + 5 points words): the integration points a beam record holds (the most
+// any beam section of the model has; fewer: zeros after), and one beam's words: the resultants
+// N, Q_s, Q_t, M_s, M_t, T (local axes), then per point tau_rs, tau_tr, sigma_rr, eps_p, eps_rr.
+int beam_plot_points(const Model& m);
+void fill_beam_plot_vars(const State& s, int b, int points, double* out);
 // The global block of a state: time, energies, whole-model velocity, per-material books,
 // rigid-wall normal forces and interface forces.  Shared by the plot and time-history databases
 // and the glstat/matsum tables.  ps is reused: no allocation after the first call.

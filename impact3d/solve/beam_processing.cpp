@@ -47,7 +47,7 @@ void process_beam(State& s, const BeamGroup& g, int b, double dt) {
   gather_beam(s, b, dt, io);
   const std::size_t ip = std::size_t(bm.ip_start[B]);
   const bool plastic = g.material_kind != BeamMaterialKind::elastic;
-  BeamPointState st{&bm.sig[3 * ip], g.material_kind == BeamMaterialKind::plastic_kinematic ? &bm.back[6 * ip] : nullptr,
+  BeamPointState st{&bm.sig[3 * ip], &bm.eps_rr[ip], g.material_kind == BeamMaterialKind::plastic_kinematic ? &bm.back[6 * ip] : nullptr,
                     plastic ? &bm.eps_p[ip] : nullptr, plastic ? &bm.yielded[ip] : nullptr};
   const MaterialConstants& mc = s.mats[std::size_t(g.material)];
   if (g.kernel == BeamKernel::truss) calc_truss_forces(bm.area[B], mc, g.material_kind, io, st);

@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -13,6 +15,7 @@
 #include "common/messages.h"
 #include "impact3d/input/deck_reader.h"
 #include "impact3d/input/deck_writer.h"
+#include "impact3d/output/plot_output.h"
 #include "impact3d/output/restart_dump.h"
 #include "impact3d/solve/engine.h"
 
@@ -203,4 +206,53 @@ TEST(KeywordBeams, FrameRunsAndRestartsBitForBit) {
   EXPECT_EQ(a.state().internal, b.state().internal);
   EXPECT_NEAR(a.state().energy_ratio(), 1.0, 0.01);
   EXPECT_GT(*std::max_element(a.state().beams.eps_p.begin(), a.state().beams.eps_p.end()), 0.0);
+}
+
+// The plot database holds the beams as LS-DYNA lays them out: IX2 (n1 n2 n3, two unused words,
+// part), NV1D = 6 + 5 x the most points of any section (the tube's 2 x 8), per beam the
+// resultants N Q_s Q_t M_s M_t T and per point tau_rs tau_tr sigma_rr eps_p eps_rr, beam
+// deletion flags after the shells'; PlotReader reads back what the State holds (the VTK check:
+// CTest deck_run_beam_frame_vtk_probe).
+TEST(KeywordBeams, PlotDatabaseHoldsBeamsAsLsDyna) {
+  BeamRead r = read_beam_text(frame_deck());
+  ASSERT_TRUE(r.ok) << r.messages();
+  Engine e(r.m);
+  ASSERT_EQ(e.initialize(), StepStatus::ok);
+  for (int c = 0; c < 300; ++c) ASSERT_EQ(e.step(), StepStatus::ok);
+  const std::string root = std::string(IMPACT3D_BINARY_DIR) + "/beam_plot/d3plot";
+  std::filesystem::create_directories(std::string(IMPACT3D_BINARY_DIR) + "/beam_plot");
+  {
+    PlotOutput out;
+    out.open(r.m, root, 4);
+    out.write(r.m, e.state(), {});
+  }
+  PlotReader rd;
+  rd.open(root);
+  EXPECT_EQ(rd.control().nel2, 15);
+  EXPECT_EQ(rd.control().nummat2, 3);
+  EXPECT_EQ(rd.control().nv1d, 6 + 5 * 16);
+  EXPECT_EQ(rd.layout().beam_points, 16);
+  const PlotGeometry& g = rd.geometry();
+  ASSERT_EQ(g.num_beams(), 15);
+  EXPECT_EQ(g.beam_nodes[0], r.m.beam_nodes[0][0]);
+  EXPECT_EQ(g.beam_nodes[1], r.m.beam_nodes[0][1]);
+  EXPECT_EQ(g.beam_user_ids[14], 15);
+  ASSERT_EQ(rd.num_states(), 1);
+  const PlotState ps = rd.state(0);
+  ASSERT_EQ(ps.beam_vars.size(), std::size_t(15 * 86));
+  const State& s = e.state();
+  for (int b : {0, 9, 12, 14}) {
+    const double* v = &ps.beam_vars[std::size_t(86 * b)];
+    const double* res = &s.beams.res[6 * std::size_t(b)];
+    const double want[6] = {res[0], res[1], res[2], res[4], res[5], res[3]};
+    for (int k = 0; k < 6; ++k) EXPECT_FLOAT_EQ(float(v[k]), float(want[k])) << "beam " << b << " word " << k;
+    const std::size_t ip = std::size_t(s.beams.ip_start[std::size_t(b)]);
+    EXPECT_FLOAT_EQ(float(v[6 + 2]), float(s.beams.sig[3 * ip]));  // sigma_rr of point 1
+    EXPECT_FLOAT_EQ(float(v[6 + 0]), float(s.beams.sig[3 * ip + 1]));
+  }
+  // the truss: one point, sigma_rr = N / A; the words of points 2-16 are zeros
+  const double* t = &ps.beam_vars[std::size_t(86 * 14)];
+  EXPECT_NEAR(t[6 + 2], t[0] / 1e-5, 1e-4 * std::fabs(t[6 + 2]));
+  EXPECT_EQ(t[6 + 5 + 2], 0.0);
+  EXPECT_GT(std::fabs(t[0]), 0.0);
 }

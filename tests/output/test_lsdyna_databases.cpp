@@ -314,8 +314,8 @@ TEST(LsDynaDatabase, WriterRefusesOtherFamilies) {
     PlotGeometry g;
     g.x0 = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0};
     g.num_materials = 1;
-    g.beam_nodes = {0, 1};
-    g.beam_material = {1};
+    g.tshell_nodes = {0, 1, 2, 3, 0, 1, 2, 3};  // thick shells (beams: written, tests/keyword/test_keyword_beams.cpp)
+    g.tshell_material = {1};
     impact3d::PlotWriter w;
     const std::string root = (fs::temp_directory_path() / ("impact3d_shellwrite_" + std::to_string(::getpid()))).string();
     EXPECT_THROW(w.open(root, g), std::invalid_argument);

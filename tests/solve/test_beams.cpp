@@ -313,7 +313,7 @@ TEST(BeamPlasticHinge, MomentReachesSigmaYBH2Over4) {
     sz.tt = b;
     std::vector<double> sig(3 * rule.size(), 0.0), back(6 * rule.size(), 0.0), eps(rule.size(), 0.0);
     std::vector<unsigned char> yielded(rule.size(), 0);
-    BeamPointState st{sig.data(), back.data(), eps.data(), yielded.data()};
+    BeamPointState st{sig.data(), nullptr, back.data(), eps.data(), yielded.data()};
     // curvature about t at 500 /m/s to 2 /m, 34 x the first yield's 2 sigma_y / (E h) = 0.0595 /m
     // (the elastic core's moment deficit (kappa_y / kappa)^2 / 3 = 3e-4)
     const double L = 0.1, kappa_rate = 500.0, dt = 1e-6;

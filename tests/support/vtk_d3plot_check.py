@@ -4,7 +4,7 @@
 IMPACT-3D's own reader.
 
   /usr/bin/python3 tests/support/vtk_d3plot_check.py ROOT [--expect-nodes N] [--expect-solids N]
-      [--expect-shells N] [--expect-steps N] [--node-xyz X,Y,Z] [--all] [--json FILE] [--quiet-cells]
+      [--expect-shells N] [--expect-beams N] [--expect-steps N] [--node-xyz X,Y,Z] [--all] [--json FILE] [--quiet-cells]
       [--ghost-deleted]
 
 Output: the counts, the state times, the part names ("parts: [...]"), per state and part the
@@ -67,6 +67,7 @@ def parse_args():
     p.add_argument("--expect-nodes", type=int)
     p.add_argument("--expect-solids", type=int)
     p.add_argument("--expect-shells", type=int)
+    p.add_argument("--expect-beams", type=int)
     p.add_argument("--expect-steps", type=int)
     return p.parse_args()
 
@@ -162,6 +163,7 @@ def main():
     failed = "ERROR" in vtk_text or nodes == 0 or nsteps == 0
     for wanted, found, what in ((args.expect_nodes, nodes, "nodes"), (args.expect_solids, solids, "solid cells"),
                                 (args.expect_shells, reader.GetNumberOfShellCells(), "shell cells"),
+                                (args.expect_beams, reader.GetNumberOfBeamCells(), "beam cells"),
                                 (args.expect_steps, nsteps, "time steps")):
         if wanted is not None and wanted != found:
             print(f"MISMATCH: expected {wanted} {what}, VTK found {found}")
