@@ -235,8 +235,24 @@ void DeckFile::split_lines() {
   }
 }
 
+bool DeckFile::is_comment(std::string_view line) const {
+  return is_comment_line(line) || (star_comments_ && !line.empty() && line[0] == '*');
+}
+
+void DeckFile::set_star_comments(bool on) {
+  star_comments_ = on;
+  long total = 0, read = 0;
+  for (std::size_t k = 0; k < lines_.size(); ++k)
+    if (!is_comment(lines_[k].text)) {
+      ++total;
+      if (k < pos_) ++read;
+    }
+  cards_total_ = total;
+  cards_read_ = read;
+}
+
 const DeckLine* DeckFile::peek_card() {
-  while (pos_ < lines_.size() && is_comment_line(lines_[pos_].text)) ++pos_;
+  while (pos_ < lines_.size() && is_comment(lines_[pos_].text)) ++pos_;
   return pos_ < lines_.size() ? &lines_[pos_] : nullptr;
 }
 

@@ -113,6 +113,16 @@ class DeckFile {
   int last_line_number() const { return lines_.empty() ? 0 : lines_.back().number; }
   // Cards (lines that are not comments) from the next card to the end of the file.
   long cards_left() const { return cards_total_ - cards_read_; }
+  // DYNA3D fixed format: every line with '*' in column 1 is a comment ("*basename ...", a
+  // commented-out option line, is not a keyword there).  Off: is_comment_line alone.
+  void set_star_comments(bool on);
+  // Moves back to the line with this number (the readers' look-ahead for optional cards).
+  void rewind_to_line(int number) {
+    while (pos_ > 0 && lines_[pos_ - 1].number >= number) {
+      --pos_;
+      if (!is_comment(lines_[pos_].text)) --cards_read_;
+    }
+  }
 
  private:
   void split_lines();
@@ -134,8 +144,10 @@ class DeckFile {
   Text text_;
   std::size_t size_ = 0;
   Lines lines_;
+  bool is_comment(std::string_view line) const;
   std::size_t pos_ = 0;
   long cards_total_ = 0, cards_read_ = 0;
+  bool star_comments_ = false;
 };
 
 // One card being read: names the card in messages and reads its fields.

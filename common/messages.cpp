@@ -85,6 +85,8 @@ const std::vector<MessageDef> kCatalog = {
     {2013, S::warning, "segment node order reversed so that its normal points out of its solid element"},
     {2014, S::warning, "initial velocities on the nodes of a rigid body are not a rigid motion: the body keeps their momentum and angular momentum, and its nodes start with that rigid motion"},
     {2020, S::warning, "columns that are not read hold something: ignored"},
+    {2040, S::warning, "DYNA3D fields and free-format options read but without effect in IMPACT-3D"},
+    {2041, S::warning, "card in IMPACT-3D's old fixed layout: read as such (DYNA3D's own layout differs)"},
     // 3000-3099: command line and files
     {3001, S::error, "unknown command-line argument"},
     {3002, S::error, "no input deck given (use i=deck)"},

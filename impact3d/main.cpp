@@ -18,6 +18,7 @@
 
 #include "common/messages.h"
 #include "impact3d/input/deck_reader.h"
+#include "impact3d/input/fixed_cards.h"
 #include "impact3d/init/mesh_order.h"
 #include "impact3d/input/deck_writer.h"
 #include "impact3d/output/printed_output.h"
@@ -34,7 +35,7 @@ const char* kUsage =
     "usage: impact3d i=DECK [o=PRINTED] [g=PLOTDB] [d=DUMP] [s=INTFOR] [ncpu=N] [plotwords=4|8] [x=N]\n"
     "                [reorder=auto|on|off] [--check]\n"
     "       impact3d r=DUMP [o=PRINTED] [g=PLOTDB] [d=DUMP] [s=INTFOR] [ncpu=N]\n"
-    "       impact3d --help | --version | --messages\n"
+    "       impact3d --help | --version | --messages | --card-tables\n"
     "\n"
     "  i=DECK     input deck: DYNA3D fixed format or LS-DYNA keyword (chosen by content)\n"
     "  o=FILE     printed output file (default d3hsp)\n"
@@ -58,6 +59,7 @@ const char* kUsage =
     "  --write-keyword=FILE, --write-fixed=FILE  convert: write the deck read as an LS-DYNA\n"
     "             keyword / DYNA3D fixed-format deck; nothing is run\n"
     "  --messages list the message catalog\n"
+    "  --card-tables  print the DYNA3D fixed-format card tables (Markdown, as in README.md)\n"
     "\n"
     "exit codes: 0 normal termination, 2 input errors, 3 bad command line, 4 file error,\n"
     "            5 error termination, 6 stopped by signal, 9 internal error\n";
@@ -174,6 +176,9 @@ int run_main(int argc, char** argv) {
                   << (m.severity == Severity::error ? "error" : m.severity == Severity::warning ? "warning" : "info")
                   << " " << m.text << "\n";
       return exit_code::ok;
+    } else if (arg == "--card-tables") {
+      std::cout << fixed_card_tables_markdown();
+      return exit_code::ok;
     } else if (arg == "--check") {
       check_only = true;
     } else if (arg == "--lenient-keywords") {
@@ -282,6 +287,9 @@ int run_main(int argc, char** argv) {
 
   // The printed output file gets the echo and all messages; the terminal gets the messages.
   if (opt.threads == 0 && model.deck_threads > 0) opt.threads = model.deck_threads;  // *KEYWORD NCPU=
+  // DYNA3D free format "basename NAME": the plot database's root, unless g= is given
+  if (!model.basename.empty() && !plot_given && opt.restart.empty() && !check_only)
+    opt.plot = (std::filesystem::path(opt.plot).parent_path() / model.basename).string();
   // *CASE: a case's outputs go to a folder named by its JOBID (or caseN), unless given
   if (!model.case_job.empty() && opt.restart.empty() && !check_only) {
     const std::filesystem::path dir = std::filesystem::path(opt.printed).parent_path() / model.case_job;

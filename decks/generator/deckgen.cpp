@@ -952,13 +952,21 @@ std::string write_deck(const Deck& d) {
     line(out, c);
   }
 
+  // time-history blocks: five (first, last) pairs a card, as DYNA3D reads them
+  auto th_cards = [&](const auto& blocks) {
+    for (std::size_t k = 0; k < blocks.size(); k += 5) {
+      std::string c;
+      for (std::size_t j = k; j < std::min(k + 5, blocks.size()); ++j) c += i8(blocks[j][0]) + i8(blocks[j][1]);
+      line(out, c);
+    }
+  };
   if (!d.node_th.empty()) {
-    banner(out, "NODE TIME-HISTORY BLOCKS: first, last");
-    for (const auto& b : d.node_th) line(out, i8(b[0]) + i8(b[1]));
+    banner(out, "NODE TIME-HISTORY BLOCKS: first, last (five a card)");
+    th_cards(d.node_th);
   }
   if (!d.solid_th.empty()) {
-    banner(out, "SOLID TIME-HISTORY BLOCKS: first, last");
-    for (const auto& b : d.solid_th) line(out, i8(b[0]) + i8(b[1]));
+    banner(out, "SOLID TIME-HISTORY BLOCKS: first, last (five a card)");
+    th_cards(d.solid_th);
   }
   if (!d.curves.empty()) {
     banner(out, "LOAD CURVES: number, points; time, value");
@@ -969,12 +977,11 @@ std::string write_deck(const Deck& d) {
     }
   }
   if (!d.pressures.empty()) {
-    banner(out, "PRESSURE CARDS: load curve, n1..n4; multipliers");
+    banner(out, "PRESSURE CARDS: load curve, n1..n4, multipliers");
     for (const auto& pr : d.pressures) {
       std::string c = i5(pr.curve);
       for (int n : pr.nodes) c += i8(n);
-      line(out, c);
-      line(out, e10(pr.scale) + e10(pr.scale) + e10(pr.scale) + e10(pr.scale));
+      line(out, c + e10(pr.scale) + e10(pr.scale) + e10(pr.scale) + e10(pr.scale));
     }
   }
   if (!d.walls.empty()) {
@@ -992,11 +999,11 @@ std::string write_deck(const Deck& d) {
     }
   }
   if (!d.sis.empty()) {
-    banner(out, "SLIDING INTERFACES: nss nms type fs fd decay mu stiff pass");
+    banner(out, "SLIDING INTERFACES: nss nms type fs fd decay stiff pass");
     for (const auto& s : d.sis)
       line(out, i8(static_cast<long long>(s.slave.size())) +
-                    i8(static_cast<long long>(s.master.size())) + fmti("%4lld", 3) + e10(0.0) +
-                    e10(0.0) + e10(0.0) + blank(10) + i5(s.stiffness) + i5(s.one_pass));
+                    i8(static_cast<long long>(s.master.size())) + i5(3) + e10(0.0) +
+                    e10(0.0) + e10(0.0) + i5(s.stiffness) + i5(s.one_pass));
     for (std::size_t k = 0; k < d.sis.size(); ++k) {
       const auto& s = d.sis[k];
       banner(out, "INTERFACE " + std::to_string(k + 1) + " SLAVE SEGMENTS: id, n1..n4");

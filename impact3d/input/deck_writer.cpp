@@ -2,6 +2,7 @@
 // tests and the converter.
 
 #include "impact3d/input/deck_writer.h"
+#include "impact3d/input/fixed_cards.h"
 
 #include <algorithm>
 #include <charconv>
@@ -602,6 +603,35 @@ class FixedLine {
   std::string line_;
 };
 
+// A card written by its table (fixed_cards.h): each named field where the table puts it.
+class TableLine {
+ public:
+  TableLine(std::vector<std::string>* notes, const char* id, std::string what = {})
+      : layout_(fixed_card_layout(id, FixedVintage::dyna3d_later)), line_(notes, what.empty() ? id : what) {}
+  TableLine& operator()(const char* name, double v) {
+    const FixedField& f = layout_.field(name);
+    if (f.kind == FieldKind::integer) line_.i(f.c1, f.c2, static_cast<long long>(v));
+    else line_.r(f.c1, f.c2, v);
+    return *this;
+  }
+  // Every integer field written as 0 (a card whose fields are counts and flags).
+  TableLine& zeros() {
+    for (const FixedField& f : layout_.fields)
+      if (f.kind == FieldKind::integer) line_.i(f.c1, f.c2, 0);
+    return *this;
+  }
+  TableLine& text(const char* name, const std::string& v) {
+    const FixedField& f = layout_.field(name);
+    line_.a(f.c1, f.c2, v);
+    return *this;
+  }
+  std::string str() const { return line_.str(); }
+
+ private:
+  const FixedCardLayout& layout_;
+  FixedLine line_;
+};
+
 }  // namespace
 
 void write_keyword_deck(std::ostream& os, const Model& m, std::vector<std::string>* notes) {
@@ -616,14 +646,19 @@ void write_fixed_deck(std::ostream& os, const Model& m, std::vector<std::string>
   os << L("title card").a(1, 72, m.title).a(73, 80, "88 large").str() << "\n";
   os << "*----- written by IMPACT-3D (impact3d --write-fixed); layout: README.md \"Deck format\"\n";
   os << "*----- CONTROL CARD #2: counts\n";
-  os << L("control card 2").i(1, 5, int(m.materials.size())).i(6, 15, m.num_nodes()).i(16, 25, m.num_hexes())
-            .i(26, 35, 0).i(36, 45, m.num_shells()).i(46, 55, 0).i(56, 65, k.interface_segments_out).r(66, 75, k.interface_out_interval).str() << "\n";
+  os << TableLine(notes, "control card 2")("NMMAT", int(m.materials.size()))("NUMNP", m.num_nodes())("NUMELH", m.num_hexes())
+            ("NUMELB", 0)("NUMELS", m.num_shells())("NUMELT", 0)("interface segments", k.interface_segments_out)
+            ("interface output interval", k.interface_out_interval).str() << "\n";
   os << "*----- CONTROL CARD #3\n";
-  os << L("control card 3").i(1, 5, int(m.node_th_blocks.size())).i(6, 10, int(m.solid_th_blocks.size()))
-            .i(11, 15, 0).i(16, 20, int(m.shell_th_blocks.size())).i(21, 25, 0).i(26, 30, k.report_interval).i(31, 35, k.reaction_print_flag)
-            .i(36, 40, 0).i(41, 45, 0).str() << "\n";
+  os << TableLine(notes, "control card 3")("node time-history blocks", int(m.node_th_blocks.size()))
+            ("solid time-history blocks", int(m.solid_th_blocks.size()))("beam time-history blocks", 0)
+            ("shell time-history blocks", int(m.shell_th_blocks.size()))("thick shell time-history blocks", 0)
+            ("report interval", k.report_interval)("reaction-force print flag", k.reaction_print_flag)
+            ("discrete-element print flag", 0)("element deletion flag", 0).str() << "\n";
   os << "*----- CONTROL CARD #4\n";
-  os << L("control card 4").i(1, 10, 0).i(11, 15, 0).i(16, 20, 0).i(21, 25, 0).i(26, 30, 0).a(31, 35, "e20.0").i(36, 40, 0).str() << "\n";
+  os << TableLine(notes, "control card 4")("sliding boundary planes", 0)("sliding planes with failure", 0)
+            ("density-versus-depth points", 0)("Brode function flag", 0)("rigid-body merge cards", 0)
+            .text("coordinate format", "e20.0")("force cross-sections", 0).str() << "\n";
   os << "*----- CONTROL CARD #5\n";
   // what the fixed format can hold of the loads: prescribed motions of nodes, one base
   // acceleration per axis on every material; the rest is noted and left out
@@ -632,7 +667,9 @@ void write_fixed_deck(std::ostream& os, const Model& m, std::vector<std::string>
   if (node_motions < int(m.prescribed_motions.size()) && notes)
     notes->push_back("prescribed motions of rigid bodies have no fixed-format card: not written");
   if (!m.rigid_body_loads.empty() && notes) notes->push_back("rigid-body loads have no fixed-format card: not written");
-  if (m.damping.active && notes) notes->push_back("global mass damping (*DAMPING_GLOBAL) has no fixed-format card: not written");
+  const bool damping_card = m.damping.active && m.damping.curve < 0 && m.damping.factor == std::array<double, 3>{1, 1, 1};
+  if (m.damping.active && !damping_card && notes)
+    notes->push_back("global mass damping with a curve or per-axis factors (*DAMPING_GLOBAL) has no fixed-format card: not written");
   if (!m.force_transducers.empty() && notes)
     notes->push_back("force transducers (*CONTACT_FORCE_TRANSDUCER_PENALTY) have no fixed-format card: not written");
   if (m.control.intfor_interval >= 0 && notes)
@@ -668,11 +705,7 @@ void write_fixed_deck(std::ostream& os, const Model& m, std::vector<std::string>
             .i(31, 35, k.restart_dump_cycles).i(36, 40, k.running_restart_cycles).r(41, 50, k.initial_dt)
             .r(51, 60, k.penalty_scale).i(61, 65, 0).i(66, 70, k.viscosity_flag).r(71, 80, k.tssf).str() << "\n";
   os << "*----- CONTROL CARD #7\n";
-  {
-    FixedLine c = L("control card 7");
-    for (int f = 0; f < 15; ++f) c.i(1 + 5 * f, 5 + 5 * f, 0);
-    os << c.str() << "\n";
-  }
+  os << TableLine(notes, "control card 7").zeros()("mass damping sets", damping_card ? 1 : 0)("non-reflecting boundary segments", 0).str() << "\n";
   os << "*----- CONTROL CARD #8\n";
   os << L("control card 8").i(1, 5, 0).i(6, 10, 0).r(11, 20, k.min_step_factor).str() << "\n";
   os << "*----- CONTROL CARD #9\n";
@@ -707,12 +740,13 @@ void write_fixed_deck(std::ostream& os, const Model& m, std::vector<std::string>
       const std::string text = line.str();
       os << (text.find_first_not_of(' ') == std::string::npos ? std::string() : text) << "\n";
     }
-    if (md.shell) {  // the shell section card (IMPACT-3D choice): SHRF, NIP, QR, T1-T4
+    if (md.shell) {  // DYNA3D's shell section: a title line, SHRF NIP QR, T1-T4
       const ShellSectionData& sec = md.shell_section;
-      FixedLine line = L(what + " shell section card");
-      line.r(1, 10, sec.shrf).i(11, 20, sec.nip).i(21, 30, 0);
-      for (int j = 0; j < 4; ++j) line.r(31 + 10 * j, 40 + 10 * j, sec.t[std::size_t(j)]);
-      os << line.str() << "\n";
+      os << " shell section properties\n";
+      os << TableLine(notes, "shell section card 1", what + " shell section card 1")("shear factor SHRF", sec.shrf)("NIP", sec.nip)
+                ("quadrature rule QR", 0).str() << "\n";
+      os << TableLine(notes, "shell section card 2", what + " shell section card 2")("T1", sec.t[0])("T2", sec.t[1])("T3", sec.t[2])
+                ("T4", sec.t[3]).str() << "\n";
     }
     if (const EosForm* f = find_eos_form(md.eos.form)) {  // the EOS cards (material/eos.h)
       const std::vector<int>& fw = eos_fixed_widths(*f);
@@ -753,9 +787,15 @@ void write_fixed_deck(std::ostream& os, const Model& m, std::vector<std::string>
     os << t.str() << "\n";
   }
   os << "*----- TIME-HISTORY BLOCKS\n";
-  for (const auto& b : m.node_th_blocks) os << L("node time-history block").i(1, 8, b[0]).i(9, 16, b[1]).str() << "\n";
-  for (const auto& b : m.solid_th_blocks) os << L("solid time-history block").i(1, 8, b[0]).i(9, 16, b[1]).str() << "\n";
-  for (const auto& b : m.shell_th_blocks) os << L("shell time-history block").i(1, 8, b[0]).i(9, 16, b[1]).str() << "\n";
+  for (const auto* blocks : {&m.node_th_blocks, &m.solid_th_blocks, &m.shell_th_blocks})  // five blocks a card
+    for (std::size_t b = 0; b < blocks->size(); b += 5) {
+      TableLine c(notes, "time-history block card");
+      for (std::size_t j = 0; j < 5 && b + j < blocks->size(); ++j) {
+        const std::string f = "first " + std::to_string(j + 1), l = "last " + std::to_string(j + 1);
+        c(f.c_str(), (*blocks)[b + j][0])(l.c_str(), (*blocks)[b + j][1]);
+      }
+      os << c.str() << "\n";
+    }
   if (!m.load_curves.empty()) os << "*----- LOAD CURVES\n";
   for (std::size_t c = 0; c < m.load_curves.size(); ++c) {
     const LoadCurve& lc = m.load_curves[c];
@@ -769,26 +809,28 @@ void write_fixed_deck(std::ostream& os, const Model& m, std::vector<std::string>
     if (d == 0 && notes) notes->push_back("nodal load direction not along an axis: written as x");
     os << L("nodal load").i(1, 8, l.node + 1).i(9, 13, d == 0 ? 1 : d).i(14, 18, l.curve + 1).r(19, 28, l.scale).str() << "\n";
   }
-  if (!m.pressure_loads.empty()) os << "*----- PRESSURE LOADS: load curve, n1-n4; multipliers, arrival time (71-80)\n";
+  if (!m.pressure_loads.empty()) os << "*----- PRESSURE LOADS: load curve, n1-n4, multipliers\n";
   for (const PressureLoad& l : m.pressure_loads) {
-    FixedLine c = L("pressure card");
-    c.i(1, 5, l.curve + 1);
-    for (int q = 0; q < 4; ++q) c.i(6 + 8 * q, 13 + 8 * q, l.nodes[std::size_t(q)] + 1);
+    if (l.birth != 0 && notes) notes->push_back("pressure arrival time " + shortest(l.birth) + " has no field in DYNA3D's pressure card: not written");
+    TableLine c(notes, "pressure card");
+    c("load curve", l.curve + 1);
+    for (int q = 0; q < 4; ++q) {
+      const std::string n = "node n" + std::to_string(q + 1), f = "multiplier " + std::to_string(q + 1);
+      c(n.c_str(), l.nodes[std::size_t(q)] + 1)(f.c_str(), l.factor[std::size_t(q)] * l.scale);
+    }
     os << c.str() << "\n";
-    FixedLine c2 = L("pressure multipliers");
-    for (int q = 0; q < 4; ++q) c2.r(1 + 10 * q, 10 + 10 * q, l.factor[std::size_t(q)] * l.scale);
-    c2.r(71, 80, l.birth);
-    os << c2.str() << "\n";
   }
-  if (node_motions > 0) os << "*----- VELOCITY/ACCELERATION BOUNDARY CONDITIONS: node, direction, curve, scale, type, birth, death\n";
+  if (node_motions > 0) os << "*----- VELOCITY/ACCELERATION BOUNDARY CONDITIONS: node, curve, DOF, scale, vector, type, birth\n";
   for (const PrescribedMotion& pm : m.prescribed_motions) {
     if (pm.node < 0) continue;
-    int d = 0;
+    int d = 4;
     for (int q = 0; q < 3; ++q) if (pm.dir[std::size_t(q)] == 1) d = q + 1;
-    if (d == 0 && notes) notes->push_back("prescribed motion direction not along an axis: written as x");
-    FixedLine c = L("velocity/acceleration boundary card");
-    c.i(1, 8, pm.node + 1).i(9, 13, d == 0 ? 1 : d).i(14, 18, pm.curve + 1).r(19, 28, pm.scale).i(29, 33, int(pm.kind)).r(34, 43, pm.birth);
-    if (pm.death < 1e28) c.r(44, 53, pm.death);
+    TableLine c(notes, "velocity/acceleration boundary card");
+    c("node", pm.node + 1)("load curve", pm.curve + 1)("DOF", d)("scale factor", pm.scale);
+    if (d == 4) c("vx", pm.dir[0])("vy", pm.dir[1])("vz", pm.dir[2]);
+    c("type", int(pm.kind));
+    if (pm.birth != 0) c("birth time", pm.birth);
+    if (pm.death < 1e28) c("death time", pm.death);
     os << c.str() << "\n";
   }
   if (!m.walls.empty()) os << "*----- STONEWALLS\n";
@@ -808,9 +850,10 @@ void write_fixed_deck(std::ostream& os, const Model& m, std::vector<std::string>
               .i(39, 46, iv.last).i(47, 51, iv.increment).str() << "\n";
   if (!m.interfaces.empty()) os << "*----- SLIDING INTERFACES\n";
   for (const SlidingInterface& si : m.interfaces)
-    os << L("sliding interface").i(1, 8, int(si.slave.size())).i(9, 16, int(si.master.size())).i(17, 20, si.type)
-              .r(21, 30, si.fs).r(31, 40, si.fd).r(41, 50, si.decay).r(51, 60, si.penalty_scale)
-              .i(61, 65, si.stiffness_method).i(66, 70, si.symmetric ? 0 : 1).str() << "\n";
+    os << TableLine(notes, "sliding interface control card")("NSS", int(si.slave.size()))("NMS", int(si.master.size()))
+              ("type", si.type)("static friction", si.fs)("dynamic friction", si.fd)("decay coefficient", si.decay)
+              ("stiffness method", si.stiffness_method)("one-pass flag", si.symmetric || si.type == 4 ? 0 : 1)
+              ("penalty scale factor", si.penalty_scale).str() << "\n";
   for (const SlidingInterface& si : m.interfaces) {
     for (int side = 0; side < 2; ++side) {
       const auto& segs = side == 0 ? si.slave : si.master;
@@ -827,6 +870,10 @@ void write_fixed_deck(std::ostream& os, const Model& m, std::vector<std::string>
     if (base[std::size_t(a)] < 0) continue;
     const BodyLoad& b = m.body_loads[std::size_t(base[std::size_t(a)])];
     os << L("base acceleration").i(1, 5, b.curve + 1).r(6, 15, b.scale).str() << "\n";
+  }
+  if (damping_card) {
+    os << "*----- MASS DAMPING: damping ratio, frequency (D = 2 ratio frequency = *DAMPING_GLOBAL VALDMP)\n";
+    os << TableLine(notes, "mass damping card")("damping ratio", 0.5)("frequency", m.damping.d).str() << "\n";
   }
   os << "*----- END OF DECK\n";
 }
@@ -1117,6 +1164,10 @@ std::vector<std::string> model_differences(const Model& a, const Model& b, int m
   D("interface-force database interval", a.control.intfor_interval, b.control.intfor_interval);
   // loads and prescribed motions: what acts (curve values, directions, effective scales)
   auto curve_differs = [&](const std::string& w, int ca, int cb) {
+    if (ca < 0 || cb < 0) {  // no curve (a constant) on one side or both
+      if ((ca < 0) != (cb < 0)) diff(w + "load curve", ca < 0 ? "none" : "a curve", cb < 0 ? "none" : "a curve");
+      return;
+    }
     const LoadCurve &x = a.load_curves[std::size_t(ca)], &y = b.load_curves[std::size_t(cb)];
     if (x.t != y.t || x.f != y.f) diff(w + "load curve", std::to_string(x.number), std::to_string(y.number));
   };

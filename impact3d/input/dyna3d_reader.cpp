@@ -11,6 +11,7 @@
 
 #include "impact3d/input/deck_reader.h"
 #include "impact3d/input/element_shapes.h"
+#include "impact3d/input/fixed_cards.h"
 #include "impact3d/init/shell_init.h"
 #include "impact3d/material/eos.h"
 #include "impact3d/material/material_types.h"
@@ -30,11 +31,15 @@ class Dyna3dReader {
   void read() {
     read_title();
     if (stop_) return;
+    deck_.set_star_comments(true);  // in the fixed format every '*' line is a comment
     read_control_cards();
     if (stop_) return;
+    read_free_format_blocks();
     read_materials();
+    read_beam_integration_rules();
     read_nodes();
     read_solids();
+    read_beams();
     read_shells();
     read_time_history_blocks();
     read_load_curves();
@@ -45,7 +50,10 @@ class Dyna3dReader {
     read_initial_velocities();
     read_sliding_interfaces();
     read_base_accelerations();
+    read_mass_damping();
     report_unused_curves();
+    report_ignored();
+    report_beams();
     if (const DeckLine* l = deck_.peek_card()) {
       Location loc;
       loc.file = deck_.name();
@@ -54,7 +62,7 @@ class Dyna3dReader {
       loc.show_found = true;
       int left = 0;
       while (deck_.next_card()) ++left;
-      diag_.add(1005, loc, std::to_string(left) + " card(s) after the sliding interfaces");
+      diag_.add(1005, loc, std::to_string(left) + " card(s) after the last section");
     }
   }
 
@@ -67,6 +75,19 @@ class Dyna3dReader {
   std::vector<int> curve_lines_;   // header line of each load curve
   std::vector<char> curve_used_;   // a load or motion refers to it
   int numels_ = 0;                 // control card 2 NUMELS: 4-node shells
+  int numelb_ = 0;                 // control card 2 NUMELB: beams
+  int beam_th_blocks_ = 0;         // control card 3 field 3
+  int beam_rules_ = 0;             // control card 8 field 4: user beam integration rules
+  int beam_rule_points_ = 0;       // control card 8 field 5
+  int mass_damping_sets_ = 0;      // control card 7 field 11 (later vintage) or free-format mdamp
+  bool deletion_flag_ = false;     // control card 3 field 9
+  FixedVintage vintage_ = FixedVintage::dyna3d_later;
+  // fields and free-format options read but without effect here: (line, what), listed once (2040)
+  std::vector<std::pair<int, std::string>> ignored_fields_;
+  // what the deck holds of beams, read and checked (refused as a family until beams exist)
+  int beam_lines_first_ = 0;
+  int card2_line_ = 0;
+  int beam_material_count_ = 0;
   int shell_th_blocks_ = 0;        // control card 3 field 4
   std::vector<int> rot_code_line_; // per node: line of a node card with a rotational code (0: none)
 
@@ -108,6 +129,19 @@ class Dyna3dReader {
     v = st == FieldStatus::ok ? int(x) : 0;
     return true;
   }
+  // A code written as an integral real ("7.", as INGRID writes node codes), or an integer.
+  static bool fast_code(std::string_view line, int c1, int c2, int& v) {
+    if (fast_int(line, c1, c2, v)) return true;
+    double x = 0;
+    if (parse_fortran_real(card_columns(line, c1, c2), x) != FieldStatus::ok || x != std::floor(x) || std::fabs(x) > 1e9) return false;
+    v = int(x);
+    return true;
+  }
+  static int code_field(Card& c, int c1, int c2, const char* field) {
+    int v = 0;
+    if (fast_code(c.columns(c1, c2), 1, c2 - c1 + 1, v)) return v;
+    return int(c.i(c1, c2, field));  // reports the bad text
+  }
   static bool fast_real(std::string_view line, int c1, int c2, double& v) {
     double x = 0;
     const FieldStatus st = parse_fortran_real(card_columns(line, c1, c2), x);
@@ -145,200 +179,205 @@ class Dyna3dReader {
     if (v != 0) c.error(1102, c1, c2, field, feature);
   }
 
+  // A count field bounded by what the deck can still hold (before anything is allocated).
+  int bounded_count(const FixedValues& v, const char* name, long avail, long per_item = 1) {
+    long long n = v.integer(name);
+    if (n < 0) { v.error(1003, name, "must not be negative"); return 0; }
+    if (n > avail / per_item) {
+      v.error(1205, name, "the deck has only " + std::to_string(avail) + " cards left");
+      return 0;
+    }
+    return int(n);
+  }
+
+  void note_ignored(const FixedValues& v) {
+    for (const std::string& s : v.ignored()) ignored_fields_.push_back({v.card().line(), s});
+  }
+
+  // Control cards 2-9, each read by its table (fixed_cards.cpp); the vintage of the layout is
+  // told by control card 4 (detect_fixed_vintage).
   void read_control_cards() {
     ControlData& k = m_.control;
     {
       Card c = next("control card 2");
-      if (m_.large_format) {
-        k.nmmat = int(c.i(1, 5, "NMMAT"));
-        k.numnp = int(c.i(6, 15, "NUMNP"));
-        k.numelh = int(c.i(16, 25, "NUMELH"));
-        require_zero(c, 26, 35, "NUMELB", "beam elements");
-        numels_ = int(c.i(36, 45, "NUMELS"));
-        require_zero(c, 46, 55, "NUMELT", "thick shell elements");
-        k.interface_segments_out = int(c.i(56, 65, "interface segments"));
-        k.interface_out_interval = c.e(66, 75, "interface output interval");
+      card2_line_ = c.line();
+      if (!m_.large_format) {
+        read_small_control_card_2(c);
       } else {
-        k.nmmat = int(c.i(1, 5, "NMMAT"));
-        k.numnp = int(c.i(6, 10, "NUMNP"));
-        k.numelh = int(c.i(11, 15, "NUMELH"));
-        require_zero(c, 16, 20, "NUMELB", "beam elements");
-        numels_ = int(c.i(21, 25, "NUMELS"));
-        require_zero(c, 26, 30, "NUMELT", "thick shell elements");
-        k.interface_segments_out = int(c.i(31, 35, "interface segments"));
-        k.interface_out_interval = c.e(36, 45, "interface output interval");
+        FixedValues v(c, fixed_card_layout("control card 2", vintage_));
+        note_ignored(v);
+        k.nmmat = int(v.integer("NMMAT"));
+        k.numnp = int(v.integer("NUMNP"));
+        k.numelh = int(v.integer("NUMELH"));
+        numelb_ = int(v.integer("NUMELB"));
+        numels_ = int(v.integer("NUMELS"));
+        k.interface_segments_out = int(v.integer("interface segments"));
+        k.interface_out_interval = v["interface output interval"];
+        if (k.interface_out_interval < 0) v.error(1221, "interface output interval");
+        check_counts(v);
+        if (numelb_ > 0) refuse_beam_count(c, v.field("NUMELB").c1, v.field("NUMELB").c2);
       }
-      if (k.nmmat < 1) c.error(1003, 1, 5, "NMMAT", "at least 1 material");
-      int w = m_.large_format ? 10 : 5;
-      if (k.numnp < 1) c.error(1003, 6, 5 + w, "NUMNP", "at least 1 node");
-      if (k.numelh < 0 || (k.numelh == 0 && numels_ < 1))
-        c.error(1003, 6 + w, 5 + 2 * w, "NUMELH", "at least 1 element (solids NUMELH or shells NUMELS)");
-      const int s1 = m_.large_format ? 36 : 21, s2 = m_.large_format ? 45 : 25;
-      if (numels_ < 0) c.error(1003, s1, s2, "NUMELS", "must not be negative");
-      if (k.interface_out_interval < 0) {
-        if (m_.large_format) c.error(1221, 66, 75, "interface output interval");
-        else c.error(1221, 36, 45, "interface output interval");
-      }
-      // Counts cannot exceed what the file holds: bound them before anything is allocated.
-      long avail = remaining_cards();
-      if (k.numnp > avail) {
-        c.error(1205, 6, 5 + w, "NUMNP", "the deck has only " + std::to_string(avail) + " cards left");
-        k.numnp = 0;
-      }
-      if (k.numelh > avail) {
-        c.error(1205, 6 + w, 5 + 2 * w, "NUMELH", "the deck has only " + std::to_string(avail) + " cards left");
-        k.numelh = 0;
-      }
-      if (numels_ > avail / 2) {
-        c.error(1205, s1, s2, "NUMELS", "the deck has only " + std::to_string(avail) + " cards left (two per shell)");
-        numels_ = 0;
-      }
-      numels_ = std::max(numels_, 0);
-      if (k.nmmat > avail / 8 + 1) {
-        c.error(1205, 1, 5, "NMMAT", "the deck cannot hold that many 8-card material sets");
-        k.nmmat = 0;
-      }
-      k.nmmat = std::max(k.nmmat, 0);
-      k.numnp = std::max(k.numnp, 0);
-      k.numelh = std::max(k.numelh, 0);
     }
     {
       Card c = next("control card 3");
-      k.node_th_blocks = int(c.i(1, 5, "node time-history blocks"));
-      k.solid_th_blocks = int(c.i(6, 10, "solid time-history blocks"));
-      require_zero(c, 11, 15, "beam time-history blocks", "beam time histories");
-      shell_th_blocks_ = int(c.i(16, 20, "shell time-history blocks"));
-      require_zero(c, 21, 25, "thick shell time-history blocks", "thick shell time histories");
-      k.report_interval = int(c.i(26, 30, "report interval", 100));
-      if (k.report_interval == 0) k.report_interval = 100;
-      k.reaction_print_flag = int(c.i(31, 35, "reaction-force print flag"));
-      require_zero(c, 36, 40, "discrete-element print flag", "discrete elements");
-      require_zero(c, 41, 45, "element deletion flag", "element deletion / SAND database");
-      if (k.node_th_blocks < 0) c.error(1003, 1, 5, "node time-history blocks", "must not be negative");
-      if (k.solid_th_blocks < 0) c.error(1003, 6, 10, "solid time-history blocks", "must not be negative");
-      if (k.report_interval < 0) c.error(1003, 26, 30, "report interval", "must not be negative");
-      long avail = remaining_cards();
-      if (k.node_th_blocks > avail) { c.error(1205, 1, 5, "node time-history blocks"); k.node_th_blocks = 0; }
-      if (k.solid_th_blocks > avail) { c.error(1205, 6, 10, "solid time-history blocks"); k.solid_th_blocks = 0; }
-      if (shell_th_blocks_ < 0) { c.error(1003, 16, 20, "shell time-history blocks", "must not be negative"); shell_th_blocks_ = 0; }
-      if (shell_th_blocks_ > avail) { c.error(1205, 16, 20, "shell time-history blocks"); shell_th_blocks_ = 0; }
-      k.node_th_blocks = std::max(k.node_th_blocks, 0);
-      k.solid_th_blocks = std::max(k.solid_th_blocks, 0);
+      FixedValues v(c, fixed_card_layout("control card 3", vintage_));
+      note_ignored(v);
+      const long avail = remaining_cards();
+      k.node_th_blocks = bounded_count(v, "node time-history blocks", avail);
+      k.solid_th_blocks = bounded_count(v, "solid time-history blocks", avail);
+      beam_th_blocks_ = bounded_count(v, "beam time-history blocks", avail);
+      shell_th_blocks_ = bounded_count(v, "shell time-history blocks", avail);
+      k.report_interval = int(v.integer("report interval"));
+      if (k.report_interval < 0) v.error(1003, "report interval", "must not be negative");
+      if (k.report_interval <= 0) k.report_interval = 100;
+      k.reaction_print_flag = int(v.integer("reaction-force print flag"));
+      const long long del = v.integer("element deletion flag");
+      if (del != 0 && del != 1) v.error(1006, "element deletion flag", "0 or 1 (deletion flags in the plot database)");
+      deletion_flag_ = del == 1;
     }
     {
       Card c = next("control card 4");
-      require_zero(c, 1, 10, "sliding boundary planes", "sliding boundary planes");
-      require_zero(c, 11, 15, "sliding planes with failure", "sliding planes with failure");
-      require_zero(c, 16, 20, "density-versus-depth points", "density versus depth");
-      require_zero(c, 21, 25, "Brode function flag", "Brode function");
-      require_zero(c, 26, 30, "rigid-body merge cards", "rigid-body merging");
-      require_zero(c, 36, 40, "force cross-sections", "force cross-sections");
-      c.e(41, 50, "cross-section output interval");
+      vintage_ = detect_fixed_vintage(deck_.lines()[std::size_t(c.line() - 1)].text);
+      m_.fixed_vintage = int(vintage_);
+      FixedValues v(c, fixed_card_layout("control card 4", vintage_));
+      note_ignored(v);
+      const std::string& fmt = v.text("coordinate format");
+      if (!fmt.empty() && fmt.rfind("e20", 0) != 0 && fmt.rfind("E20", 0) != 0)
+        v.error(1006, "coordinate format", "e20.x (node coordinates in 20 columns)");
     }
     {
       Card c = next("control card 5");
-      k.numlc = int(c.i(1, 5, "NUMLC"));
-      k.num_nodal_load_cards = int(c.i(6, 10, "concentrated nodal loads"));
-      k.num_pressure_cards = int(c.i(11, 15, "pressure-loaded sides"));
-      k.num_motion_cards = int(c.i(16, 20, "velocity/acceleration boundary cards"));
-      k.num_walls = int(c.i(21, 25, "stonewalls"));
-      require_zero(c, 26, 30, "nodal constraint cards", "nodal constraints");
-      k.num_init_velocity_cards = int(c.i(31, 35, "initial-velocity cards"));
-      k.num_interfaces = int(c.i(36, 40, "sliding interfaces"));
-      const char* names[] = {"base acceleration x", "base acceleration y", "base acceleration z",
-                             "angular velocity x", "angular velocity y", "angular velocity z",
-                             "momentum deposit", "detonation points"};
-      const char* features[] = {"base accelerations", "base accelerations", "base accelerations",
-                                "angular velocities", "angular velocities", "angular velocities",
-                                "momentum deposition", "detonation (high explosives)"};
+      FixedValues v(c, fixed_card_layout("control card 5", vintage_));
+      note_ignored(v);
+      const long avail = remaining_cards();
+      k.numlc = bounded_count(v, "NUMLC", avail);
+      k.num_nodal_load_cards = bounded_count(v, "concentrated nodal loads", avail);
+      k.num_pressure_cards = bounded_count(v, "pressure-loaded sides", avail);
+      k.num_motion_cards = bounded_count(v, "velocity/acceleration boundary cards", avail);
+      k.num_walls = bounded_count(v, "stonewalls", avail);
+      k.num_init_velocity_cards = bounded_count(v, "initial condition parameter", avail);
+      k.num_interfaces = bounded_count(v, "sliding interfaces", avail);
+      static const char* const base[3] = {"base acceleration x", "base acceleration y", "base acceleration z"};
       for (int f = 0; f < 3; ++f) {
-        const long long flag = c.i(41 + 5 * f, 45 + 5 * f, names[f]);
-        if (flag != 0 && flag != 1) c.error(1006, 41 + 5 * f, 45 + 5 * f, names[f], "0 none, 1 one base-acceleration card");
+        const long long flag = v.integer(base[f]);
+        if (flag != 0 && flag != 1) v.error(1006, base[f], "0 none, 1 one base-acceleration card");
         k.base_acceleration[std::size_t(f)] = flag == 1 ? 1 : 0;
       }
-      for (int f = 3; f < 8; ++f) require_zero(c, 41 + 5 * f, 45 + 5 * f, names[f], features[f]);
-      long avail = remaining_cards();
-      auto bound = [&](int& v, int c1, const char* field) {
-        if (v < 0) { c.error(1003, c1, c1 + 4, field, "must not be negative"); v = 0; }
-        if (v > avail) { c.error(1205, c1, c1 + 4, field, "the deck has only " + std::to_string(avail) + " cards left"); v = 0; }
-      };
-      bound(k.numlc, 1, "NUMLC");
-      bound(k.num_nodal_load_cards, 6, "concentrated nodal loads");
-      bound(k.num_pressure_cards, 11, "pressure-loaded sides");
-      bound(k.num_motion_cards, 16, "velocity/acceleration boundary cards");
-      bound(k.num_walls, 21, "stonewalls");
-      bound(k.num_init_velocity_cards, 31, "initial-velocity cards");
-      bound(k.num_interfaces, 36, "sliding interfaces");
     }
     {
       Card c = next("control card 6");
-      k.end_time = c.e(1, 10, "termination time");
-      if (!(k.end_time > 0)) c.error(1214, 1, 10, "termination time");
-      k.th_interval = c.e(11, 20, "time-history interval");
-      k.plot_interval = c.e(21, 30, "plot interval");
-      if (k.th_interval < 0) c.error(1221, 11, 20, "time-history interval");
-      if (k.plot_interval < 0) c.error(1221, 21, 30, "plot interval");
+      FixedValues v(c, fixed_card_layout("control card 6", vintage_));
+      note_ignored(v);
+      k.end_time = v["termination time"];
+      if (!(k.end_time > 0)) v.error(1214, "termination time");
+      k.th_interval = v["time-history interval"];
+      k.plot_interval = v["plot interval"];
+      if (k.th_interval < 0) v.error(1221, "time-history interval");
+      if (k.plot_interval < 0) v.error(1221, "plot interval");
       if (k.th_interval == 0) k.th_interval = k.end_time / 1000;
       if (k.plot_interval == 0) k.plot_interval = k.end_time / 20;
-      k.restart_dump_cycles = int(c.i(31, 35, "restart dump cycles"));
-      k.running_restart_cycles = int(c.i(36, 40, "running restart cycles"));
-      if (k.restart_dump_cycles < 0) c.error(1003, 31, 35, "restart dump cycles", "must not be negative");
-      if (k.running_restart_cycles < 0) c.error(1003, 36, 40, "running restart cycles", "must not be negative");
-      k.initial_dt = c.e(41, 50, "initial time step");
-      if (k.initial_dt < 0) c.error(1003, 41, 50, "initial time step", "must not be negative");
-      k.penalty_scale = c.e(51, 60, "penalty scale factor", 0.10);
+      k.restart_dump_cycles = int(v.integer("restart dump cycles"));
+      k.running_restart_cycles = int(v.integer("running restart cycles"));
+      if (k.restart_dump_cycles < 0) v.error(1003, "restart dump cycles", "must not be negative");
+      if (k.running_restart_cycles < 0) v.error(1003, "running restart cycles", "must not be negative");
+      k.initial_dt = v["initial time step"];
+      if (k.initial_dt < 0) v.error(1003, "initial time step", "must not be negative");
+      k.penalty_scale = v["penalty scale factor"];
       if (k.penalty_scale == 0) k.penalty_scale = 0.10;
-      if (k.penalty_scale < 0) c.error(1003, 51, 60, "penalty scale factor", "must be positive");
-      require_zero(c, 61, 65, "thermal option", "thermal effects");
-      k.viscosity_flag = int(c.i(66, 70, "default viscosity flag"));
-      k.tssf = c.e(71, 80, "time-step scale factor", 0.90);
+      if (k.penalty_scale < 0) v.error(1003, "penalty scale factor", "must be positive");
+      k.viscosity_flag = int(v.integer("default viscosity flag"));
+      k.tssf = v["time-step scale factor"];
       if (k.tssf == 0) k.tssf = 0.90;
-      if (!(k.tssf > 0 && k.tssf <= 1)) c.error(1215, 71, 80, "time-step scale factor");
+      if (!(k.tssf > 0 && k.tssf <= 1)) v.error(1215, "time-step scale factor");
     }
     {
       Card c = next("control card 7");
-      const char* names[] = {"joints", "rigid bodies with extra nodes", "shell-solid interfaces",
-                             "tie-breaking shell slidelines", "tied node sets with failure",
-                             "time-step load curve", "springs/dampers/masses",
-                             "rigid bodies with inertia", "shell strain dump",
-                             "deformable-rigid switching", "mass damping sets",
-                             "Hughes-Liu update", "shell thickness change", "shell formulation",
-                             "non-reflecting boundary segments"};
-      for (int f = 0; f < 15; ++f) require_zero(c, 1 + 5 * f, 5 + 5 * f, names[f], names[f]);
+      FixedValues v(c, fixed_card_layout("control card 7", vintage_));
+      note_ignored(v);
+      if (vintage_ == FixedVintage::dyna3d_later) mass_damping_sets_ = bounded_count(v, "mass damping sets", remaining_cards());
     }
     {
       Card c = next("control card 8");
-      require_zero(c, 1, 5, "point-constraint nodes", "point constraints");
-      require_zero(c, 6, 10, "constraint coordinate systems", "constraint coordinate systems");
-      k.min_step_factor = c.e(11, 20, "minimum step factor");
-      if (k.min_step_factor < 0 || k.min_step_factor >= 1)
-        c.error(1003, 11, 20, "minimum step factor", "must be in [0, 1)");
-      for (int f = 0; f < 5; ++f) c.i(21 + 5 * f, 25 + 5 * f, "integration rule / relaxation field");
-      for (int f = 0; f < 3; ++f) c.e(46 + 10 * f, 55 + 10 * f, "dynamic-relaxation field");
-      c.i(76, 80, "shell time-step option");
+      FixedValues v(c, fixed_card_layout("control card 8", vintage_));
+      note_ignored(v);
+      k.min_step_factor = v["minimum step factor"];
+      if (k.min_step_factor < 0 || k.min_step_factor >= 1) v.error(1003, "minimum step factor", "must be in [0, 1)");
+      beam_rules_ = bounded_count(v, "beam integration rules", remaining_cards());
+      beam_rule_points_ = int(v.integer("beam integration points"));
     }
     {
       Card c = next("control card 9");
-      c.i(1, 5, "plane-stress plasticity option");
-      c.i(6, 10, "printout flag");
-      require_zero(c, 11, 15, "1-D slidelines", "1-D slidelines");
-      c.i(16, 20, "relaxation database flag");
-      double rayleigh = c.e(21, 30, "Rayleigh coefficient");
-      if (rayleigh != 0) c.error(1102, 21, 30, "Rayleigh coefficient", "Rayleigh damping");
-      require_zero(c, 31, 35, "materials with Rayleigh damping", "Rayleigh damping");
-      require_zero(c, 36, 40, "materials with initial rotation", "initial rotation");
-      require_zero(c, 41, 45, "materials with body force", "body forces");
+      FixedValues v(c, fixed_card_layout("control card 9", vintage_));
+      note_ignored(v);
       // mass scaling (IMPACT-3D choice: no DYNA3D manual places it; LS-DYNA's DT2MS, MS1ST, ENDMAS)
-      k.mass_scaling_dt = c.e(46, 55, "mass-scaling step DT2MS");
-      const long long ms1st = c.i(56, 60, "mass scaling at the first cycle only MS1ST");
-      if (ms1st != 0 && ms1st != 1) c.error(1006, 56, 60, "MS1ST", "0 (mass scaling every cycle) or 1 (the first cycle only)");
+      k.mass_scaling_dt = v["DT2MS"];
+      const long long ms1st = v.integer("MS1ST");
+      if (ms1st != 0 && ms1st != 1) v.error(1006, "MS1ST", "0 (mass scaling every cycle) or 1 (the first cycle only)");
       k.mass_scaling_first_only = ms1st == 1;
-      k.end_mass_percent = c.e(61, 70, "added-mass limit ENDMAS (percent)");
-      if (k.end_mass_percent < 0) c.error(1003, 61, 70, "ENDMAS", "must not be negative (0 or blank: no limit)");
-      const long long erode = c.i(71, 75, "ERODE");  // IMPACT-3D choice: LS-DYNA's *CONTROL_TIMESTEP ERODE
-      if (erode != 0 && erode != 1) c.error(1006, 71, 75, "ERODE", "0 (the run ends below the minimum step) or 1 (solids below it are deleted)");
+      k.end_mass_percent = v["ENDMAS"];
+      if (k.end_mass_percent < 0) v.error(1003, "ENDMAS", "must not be negative (0 or blank: no limit)");
+      const long long erode = v.integer("ERODE");  // IMPACT-3D choice: LS-DYNA's *CONTROL_TIMESTEP ERODE
+      if (erode != 0 && erode != 1) v.error(1006, "ERODE", "0 (the run ends below the minimum step) or 1 (solids below it are deleted)");
       k.erode_small_steps = erode == 1;
     }
+  }
+
+  // Control card 2 of the small format (I5 fields; no DYNA3D deck of this vintage is known).
+  void read_small_control_card_2(Card& c) {
+    ControlData& k = m_.control;
+    k.nmmat = int(c.i(1, 5, "NMMAT"));
+    k.numnp = int(c.i(6, 10, "NUMNP"));
+    k.numelh = int(c.i(11, 15, "NUMELH"));
+    numelb_ = int(c.i(16, 20, "NUMELB"));
+    numels_ = int(c.i(21, 25, "NUMELS"));
+    require_zero(c, 26, 30, "NUMELT", "thick shell elements");
+    k.interface_segments_out = int(c.i(31, 35, "interface segments"));
+    k.interface_out_interval = c.e(36, 45, "interface output interval");
+    if (k.interface_out_interval < 0) c.error(1221, 36, 45, "interface output interval");
+    if (k.nmmat < 1) c.error(1003, 1, 5, "NMMAT", "at least 1 material");
+    if (k.numnp < 1) c.error(1003, 6, 10, "NUMNP", "at least 1 node");
+    if (k.numelh < 0 || (k.numelh == 0 && numels_ < 1 && numelb_ < 1))
+      c.error(1003, 11, 15, "NUMELH", "at least 1 element (solids NUMELH, beams NUMELB or shells NUMELS)");
+    const long avail = remaining_cards();
+    if (k.numnp > avail) { c.error(1205, 6, 10, "NUMNP"); k.numnp = 0; }
+    if (k.numelh > avail) { c.error(1205, 11, 15, "NUMELH"); k.numelh = 0; }
+    if (numelb_ < 0 || numelb_ > avail) { c.error(1205, 16, 20, "NUMELB"); numelb_ = 0; }
+    if (numelb_ > 0) refuse_beam_count(c, 16, 20);
+    if (numels_ < 0 || numels_ > avail / 2) { c.error(1205, 21, 25, "NUMELS"); numels_ = 0; }
+    if (k.nmmat > avail / 8 + 1) { c.error(1205, 1, 5, "NMMAT"); k.nmmat = 0; }
+    k.nmmat = std::max(k.nmmat, 0);
+    k.numnp = std::max(k.numnp, 0);
+    k.numelh = std::max(k.numelh, 0);
+  }
+
+  // The counts of control card 2 (large format): at least a material, a node and an element,
+  // and no more than the deck can hold.
+  void check_counts(const FixedValues& v) {
+    ControlData& k = m_.control;
+    if (k.nmmat < 1) v.error(1003, "NMMAT", "at least 1 material");
+    if (k.numnp < 1) v.error(1003, "NUMNP", "at least 1 node");
+    if (k.numelh < 0 || (k.numelh == 0 && numels_ < 1 && numelb_ < 1))
+      v.error(1003, "NUMELH", "at least 1 element (solids NUMELH, beams NUMELB or shells NUMELS)");
+    if (numels_ < 0) v.error(1003, "NUMELS", "must not be negative");
+    if (numelb_ < 0) v.error(1003, "NUMELB", "must not be negative");
+    const long avail = remaining_cards();
+    const std::string left = "the deck has only " + std::to_string(avail) + " cards left";
+    if (k.numnp > avail) { v.error(1205, "NUMNP", left); k.numnp = 0; }
+    if (k.numelh > avail) { v.error(1205, "NUMELH", left); k.numelh = 0; }
+    if (numelb_ > avail) { v.error(1205, "NUMELB", left); numelb_ = 0; }
+    if (numels_ > avail / 2) { v.error(1205, "NUMELS", left + " (two per shell)"); numels_ = 0; }
+    if (k.nmmat > avail / 8 + 1) { v.error(1205, "NMMAT", "the deck cannot hold that many 8-card material sets"); k.nmmat = 0; }
+    numels_ = std::max(numels_, 0);
+    numelb_ = std::max(numelb_, 0);
+    k.nmmat = std::max(k.nmmat, 0);
+    k.numnp = std::max(k.numnp, 0);
+    k.numelh = std::max(k.numelh, 0);
+  }
+
+  // A field that reads as 0 (DYNA3D deck writers fill unused fields with 0.000E+00).
+  static bool is_zero_field(const Card& c, int c1) {
+    double v = 1;
+    return parse_fortran_real(c.columns(c1, c1 + 9), v) == FieldStatus::ok && v == 0;
   }
 
   // Cards 3-8 of a material: each parameter where its type's table puts it (material_types.h),
@@ -368,7 +407,7 @@ class Dyna3dReader {
     }
     for (int k = 0; k < 6; ++k)
       for (int f = 0; f < 8; ++f)
-        if (!used[k][f] && !cards[std::size_t(k)].blank(1 + 10 * f, 10 + 10 * f))
+        if (!used[k][f] && !cards[std::size_t(k)].blank(1 + 10 * f, 10 + 10 * f) && !is_zero_field(cards[std::size_t(k)], 1 + 10 * f))
           diag_.add(2006, cards[std::size_t(k)].where(1 + 10 * f, 10 + 10 * f, "parameter"),
                     "not used by material type " + std::to_string(t.number));
     check_material_params(md, t, [&](const MaterialParam& p, int msg, const std::string& detail) {
@@ -382,7 +421,13 @@ class Dyna3dReader {
   // choice, LS-DYNA's *SECTION_SHELL fields): SHRF (1-10), NIP (11-20), QR (21-30, 0 Gauss only),
   // T1-T4 (31-70; T2-T4 blank = T1).
   void read_shell_section(MaterialData& md, const std::string& name) {
+    if (skip_section_title()) {
+      read_dyna3d_shell_section(md, name);
+      return;
+    }
     Card c = next(name + " shell section card", "a shell material (element type 2) has a section card after card 8");
+    diag_.add(2041, c.where(1, 80), "the shell section as one card (SHRF, NIP, QR, T1-T4) is IMPACT-3D's old layout; DYNA3D's is a "
+                                    "\"section properties\" line and two cards (impact3d i=DECK --write-fixed=NEW writes it)");
     ShellSectionData& sec = md.shell_section;
     sec.line = c.line();
     sec.shrf = c.e(1, 10, "shear factor SHRF", 1.0);
@@ -406,6 +451,69 @@ class Dyna3dReader {
       }
   }
 
+  // DYNA3D's shell section: after the title line, card 1 (SHRF, NIP, QR) and card 2 (T1-T4).
+  void read_dyna3d_shell_section(MaterialData& md, const std::string& name) {
+    ShellSectionData& sec = md.shell_section;
+    Card a = next(name + " shell section card 1");
+    FixedValues va(a, fixed_card_layout("shell section card 1", vintage_));
+    note_ignored(va);
+    sec.line = a.line();
+    sec.shrf = va["shear factor SHRF"];
+    if (sec.shrf == 0) sec.shrf = 1.0;
+    if (!(sec.shrf > 0 && sec.shrf <= 1)) va.error(1003, "shear factor SHRF", "shear factor in (0, 1] (5/6 for isotropic shells)");
+    const double nip = va["NIP"];
+    sec.nip = nip == 0 ? 2 : int(nip);
+    if (nip != std::floor(nip) || nip < 0 || nip > 10) { va.error(1003, "NIP", "integration points 1-10"); sec.nip = 2; }
+    if (va["quadrature rule QR"] != 0) va.error(1102, "quadrature rule QR", "user-defined and trapezoidal integration rules (Gauss only)");
+    Card b = next(name + " shell section card 2");
+    FixedValues vb(b, fixed_card_layout("shell section card 2", vintage_));
+    note_ignored(vb);
+    static const char* const tn[4] = {"T1", "T2", "T3", "T4"};
+    for (int j = 0; j < 4; ++j) {
+      sec.t[std::size_t(j)] = vb[tn[j]];
+      if (sec.t[std::size_t(j)] < 0) vb.error(1241, tn[j]);
+    }
+    for (int j = 1; j < 4; ++j)
+      if (sec.t[std::size_t(j)] == 0) sec.t[std::size_t(j)] = sec.t[0];
+  }
+
+  // Material type 71 as LLNL's regression decks write it: type 3's parameters packed by pairs,
+  // E and nu on card 3 (columns 1-20), yield stress and tangent modulus on card 4 (1-20), beta
+  // on card 6 (1-10).  What else the cards hold is warned about (2006) and not used.
+  void read_type71_params(MaterialData& md, const MaterialType& t, std::vector<Card>& cards) {
+    struct Slot { const char* key; int card, col; };
+    static const Slot kType71[] = {{"E", 3, 1}, {"PR", 3, 11}, {"SIGY", 4, 1}, {"ETAN", 4, 11}, {"BETA", 6, 1}};
+    set_param_defaults(md, t);
+    bool used[6][8] = {};
+    for (const Slot& sl : kType71) {
+      const MaterialParam* p = find_param(t, sl.key);
+      if (!p) continue;
+      Card& c = cards[std::size_t(sl.card - 3)];
+      param_value(md, *p) = c.blank(sl.col, sl.col + 9) ? p->def : c.e(sl.col, sl.col + 9, p->fname ? p->fname : p->key, p->def);
+      used[sl.card - 3][(sl.col - 1) / 10] = true;
+    }
+    for (int k = 0; k < 6; ++k)
+      for (int f = 0; f < 8; ++f)
+        if (!used[k][f] && !cards[std::size_t(k)].blank(1 + 10 * f, 10 + 10 * f)) {
+          double v = 0;
+          if (parse_fortran_real(cards[std::size_t(k)].columns(1 + 10 * f, 10 + 10 * f), v) == FieldStatus::ok && v == 0) continue;
+          diag_.add(2006, cards[std::size_t(k)].where(1 + 10 * f, 10 + 10 * f, "parameter"),
+                    "not used by material type 71 (read as type 3: E, nu / yield stress, tangent modulus / beta)");
+        }
+    check_material_params(md, t, [&](const MaterialParam& p, int msg, const std::string& detail) {
+      for (const Slot& sl : kType71)
+        if (std::string_view(sl.key) == p.key) {
+          Card& c = cards[std::size_t(sl.card - 3)];
+          if (msg >= 2000) diag_.add(msg, c.where(sl.col, sl.col + 9, sl.key), detail);
+          else c.error(msg, sl.col, sl.col + 9, sl.key, detail);
+          return;
+        }
+      Location loc = cards[0].where(1, 80);
+      diag_.add(msg, loc, std::string(p.key) + ": " + detail);
+    });
+    md.title += md.title.empty() ? "(DYNA3D type 71, read as type 3)" : "";
+  }
+
   void read_materials() {
     int n = m_.control.nmmat;
     m_.materials.assign(static_cast<std::size_t>(n), MaterialData{});
@@ -417,15 +525,32 @@ class Dyna3dReader {
       md.line = c1.line();
       md.number = int(c1.i(1, 5, "material number"));
       std::string name = "material " + std::to_string(md.number);
+      // Material numbers are labels (INGRID numbers sets 1, 13, 12 with NMMAT 3): a label
+      // 1..NMMAT takes its own slot when free, any other the first free slot; elements refer to
+      // labels (material_slot).
       bool number_ok = true;
-      if (md.number < 1 || md.number > n) {
-        c1.error(1201, 1, 5, "material number", "must be 1.." + std::to_string(n) + " (NMMAT)");
+      int slot = -1;
+      if (md.number < 1 || md.number > 99999) {
+        c1.error(1201, 1, 5, "material number", "must be a positive number");
         number_ok = false;
-      } else if (first_line[md.number - 1] != 0) {
-        c1.error(1200, 1, 5, "material number", "already defined on line " + std::to_string(first_line[md.number - 1]));
+      } else if (const int prev = material_slot(md.number); prev > 0) {
+        c1.error(1200, 1, 5, "material number", "already defined on line " + std::to_string(first_line[std::size_t(prev - 1)]));
         number_ok = false;
+      } else {
+        slot = md.number <= n && first_line[std::size_t(md.number - 1)] == 0 ? md.number - 1 : -1;
+        for (int q = 0; q < n && slot < 0; ++q)
+          if (first_line[std::size_t(q)] == 0) slot = q;
+        if (slot >= 0) {
+          if (label_slot_.size() <= std::size_t(md.number)) label_slot_.resize(std::size_t(md.number) + 1, 0);
+          label_slot_[std::size_t(md.number)] = slot + 1;
+          first_line[std::size_t(slot)] = md.line;
+        }
       }
       md.type = int(c1.i(6, 10, "material type"));
+      // type 71 as LLNL's regression decks use it: type 3's model, parameters packed by pairs
+      // (read_type71_params; the evidence: docs/dyna3d-decks.md)
+      const bool type71 = md.type == 71;
+      if (type71) md.type = 3;
       const MaterialType* mt = find_material_type(md.type);
       if (!mt) c1.error(1103, 6, 10, "material type", "supported: " + supported_material_types());
       md.rho = c1.e(11, 20, "density");
@@ -442,7 +567,9 @@ class Dyna3dReader {
       md.eos.form = eos_form ? eos_form->form : 0;
       md.hourglass_type = int(c1.i(26, 30, "hourglass type", 1));
       if (md.hourglass_type == 0) md.hourglass_type = 1;
-      if (md.hourglass_type < 1 || md.hourglass_type > 5)
+      if (md.hourglass_type > 5 && md.hourglass_type <= 10)
+        c1.error(1102, 26, 30, "hourglass type", "hourglass type " + std::to_string(md.hourglass_type) + " (IMPACT-3D has 1 viscous (DYNA3D), 2/3 Flanagan-Belytschko viscous, 4/5 stiffness)");
+      else if (md.hourglass_type < 1 || md.hourglass_type > 5)
         c1.error(1006, 26, 30, "hourglass type", "1 viscous (DYNA3D), 2/3 Flanagan-Belytschko viscous, 4/5 stiffness");
       md.hourglass_coef = c1.e(31, 40, "hourglass coefficient", 0.10);
       if (c1.blank(31, 40) || md.hourglass_coef == 0) md.hourglass_coef = 0.10;
@@ -450,19 +577,20 @@ class Dyna3dReader {
       md.bulk_type = int(c1.i(41, 45, "bulk viscosity type", 1));
       if (md.bulk_type == 0) md.bulk_type = 1;
       if (md.bulk_type != 1) c1.error(1006, 41, 45, "bulk viscosity type", "only 1 (standard)");
+      // blank or 0: the defaults (DYNA3D deck writers fill the fields with 0.0000E+00; LS-DYNA
+      // reads 0 the same way)
       md.q1 = c1.e(46, 55, "quadratic bulk viscosity Q1", 1.5);
-      if (c1.blank(46, 55)) md.q1 = 1.5;
+      if (c1.blank(46, 55) || md.q1 == 0) md.q1 = 1.5;
       md.q2 = c1.e(56, 65, "linear bulk viscosity Q2", 0.06);
-      if (c1.blank(56, 65)) md.q2 = 0.06;
+      if (c1.blank(56, 65) || md.q2 == 0) md.q2 = 0.06;
       if (md.q1 < 0) c1.error(1220, 46, 55, "quadratic bulk viscosity Q1");
       if (md.q2 < 0) c1.error(1220, 56, 65, "linear bulk viscosity Q2");
       // element type as DYNA3D deck writers (FEMGV's DYNA interface) settle it: 0 solid, 1
       // beam, 2 shell, 3 thick shell
       long long et = c1.i(66, 70, "element type");
-      if (et == 1 || et == 3) {
-        static const char* const kind[] = {"", "beams (element type 1)", "", "thick shells (element type 3)"};
-        c1.error(1102, 66, 70, "element type", std::string(kind[et]) + ": IMPACT-3D has solids (0) and shells (2)");
-      } else if (et != 0 && et != 2) {
+      if (et == 3) {
+        c1.error(1102, 66, 70, "element type", "thick shells (element type 3): IMPACT-3D has solids (0) and shells (2)");
+      } else if (et != 0 && et != 1 && et != 2) {
         c1.error(1006, 66, 70, "element type", "0 solid, 1 beam, 2 shell, 3 thick shell");
       }
       md.shell = et == 2;
@@ -473,22 +601,26 @@ class Dyna3dReader {
       long long ef = c1.i(76, 80, "element formulation");
       if (md.shell) {  // shells: Belytschko-Tsay (LS-DYNA ELFORM 2; 0 = the default, 2)
         if (ef != 0 && ef != 2) c1.error(1102, 76, 80, "element formulation", "shell formulation " + std::to_string(ef) + "; only 2 (Belytschko-Tsay, also 0)");
+      } else if (et == 1) {  // beams: 1 Hughes-Liu (the family is refused as a whole, report_beams)
       } else if (ef != 0 && ef != 1) {
         c1.error(1102, 76, 80, "element formulation", "only the one-point hexahedron (0 or 1)");
       }
 
+      while (skip_rgb_line()) {}
       Card c2 = next(name + " card 2 (title)");
       md.title = c2.a(1, 80);
       while (!md.title.empty() && md.title.back() == ' ') md.title.pop_back();
 
       std::vector<Card> cards;
       for (int k = 3; k <= 8; ++k) cards.push_back(next(name + " card " + std::to_string(k)));
-      if (mt) read_material_params(md, *mt, cards);
+      if (mt && type71) read_type71_params(md, *mt, cards);
+      else if (mt) read_material_params(md, *mt, cards);
       if (const char* feature = nullptr; mt && md.shell) {
         if (const MaterialParam* q = refused_shell_param(md, &feature); q && q->fcard >= 3)
           cards[std::size_t(q->fcard - 3)].error(1102, q->fcol, q->fcol + 9, q->key, std::string(feature) + " (a shell material, element type 2)");
       }
       if (md.shell) read_shell_section(md, name);
+      if (et == 1) read_beam_section(md, name);
       if (eos_form && (!mt || mt->accepts_eos) && !md.shell) {  // (a type that takes none: reported above, no cards read)
         std::vector<Card> ec;
         const std::vector<int>& ew = eos_fixed_widths(*eos_form);
@@ -506,19 +638,22 @@ class Dyna3dReader {
       // rigid-body constraints in a local system need *DEFINE_COORDINATE_SYSTEM (keyword decks)
       if (md.type == 20 && md.par.size() > 3 && md.par[3] == -1)
         cards[2].error(1102, 1, 10, "constraint option CMO", "constraints in a local system (CMO = -1: keyword decks, *DEFINE_COORDINATE_SYSTEM)");
-      if (number_ok) {
-        first_line[md.number - 1] = md.line;
-        m_.materials[md.number - 1] = md;
-      }
+      if (number_ok && slot >= 0) m_.materials[std::size_t(slot)] = md;
     }
     for (int k = 0; k < n; ++k) {
-      if (first_line[k] == 0 && n > 0) {
+      if (first_line[std::size_t(k)] == 0 && n > 0) {
         Location loc;
         loc.file = deck_.name();
         diag_.add(1204, loc, "material " + std::to_string(k + 1) + " is never defined");
       }
     }
   }
+
+  // 1-based slot of material label `label` (0: no such material).
+  int material_slot(long long label) const {
+    return label >= 0 && std::size_t(label) < label_slot_.size() ? label_slot_[std::size_t(label)] : 0;
+  }
+  std::vector<int> label_slot_;
 
   void read_nodes() {
     int n = m_.control.numnp;
@@ -540,9 +675,9 @@ class Dyna3dReader {
         const std::string_view t = l->text;
         int id = 0, code = 0, rc = 0;
         double x = 0, y = 0, z = 0;
-        if (fast_int(t, i1, i2, id) && fast_int(t, b1, b2, code) && fast_real(t, x1, x1 + 19, x) &&
+        if (fast_int(t, i1, i2, id) && fast_code(t, b1, b2, code) && fast_real(t, x1, x1 + 19, x) &&
             fast_real(t, y1, y1 + 19, y) && fast_real(t, z1, z1 + 19, z) &&
-            fast_int(t, r1, r1 + 4, rc) && code >= 0 && code <= 7 && rc == 0 && id >= 1 &&
+            fast_code(t, r1, r1 + 4, rc) && code >= 0 && code <= 7 && rc == 0 && id >= 1 &&
             id <= n && !seen[std::size_t(id - 1)] && card_columns(t, r1 + 5, 80).find_first_not_of(" \r") == std::string_view::npos) {
           deck_.next_card();
           seen[std::size_t(id - 1)] = l->number;
@@ -557,11 +692,11 @@ class Dyna3dReader {
                     "expected " + std::to_string(n) + " node cards (control card 2 NUMNP), found " + std::to_string(k));
       int id = int(c.i(i1, i2, "node number"));
       c.set_name("node card for node " + std::to_string(id));
-      int code = int(c.i(b1, b2, "boundary code"));
+      int code = code_field(c, b1, b2, "boundary code");
       double x = c.e(x1, x1 + 19, "x");
       double y = c.e(y1, y1 + 19, "y");
       double z = c.e(z1, z1 + 19, "z");
-      int rc = int(c.i(r1, r1 + 4, "rotational code"));
+      int rc = code_field(c, r1, r1 + 4, "rotational code");
       // the columns after the rotational code are not read: some writers put a code there
       if (!c.blank(r1 + 5, 80) && unread++ == 0) unread_where = c.where(r1 + 5, 80, "unread columns");
       if (code < 0 || code > 7) c.error(1216, b1, b2, "boundary code");
@@ -629,7 +764,7 @@ class Dyna3dReader {
         const std::string_view t = l->text;
         int id = 0, mat = 0;
         std::array<int, 8> nodes{};
-        bool ok = fast_int(t, 1, w, id) && fast_int(t, w + 1, w + 5, mat) && id >= 1 && id <= n &&
+        bool ok = fast_int(t, 1, w, id) && fast_int(t, w + 1, w + 5, mat) && (mat = material_slot(mat)) > 0 && id >= 1 && id <= n &&
                   !seen[std::size_t(id - 1)] && mat >= 1 && mat <= m_.control.nmmat;
         for (int j = 0; j < 8 && ok; ++j) {
           const int c1 = w + 6 + j * w;
@@ -653,7 +788,8 @@ class Dyna3dReader {
       int id = int(c.i(1, w, "element number"));
       c.set_name("solid element card for element " + std::to_string(id));
       Card& e = c;
-      int mat = int(c.i(w + 1, w + 5, "material number"));
+      const int label = int(c.i(w + 1, w + 5, "material number"));
+      int mat = material_slot(label);
       if (!c.blank(last + 1, 80) && unread++ == 0) unread_where = c.where(last + 1, 80, "unread columns");
       std::array<int, 8> nodes{};
       bool ok = true;
@@ -668,7 +804,7 @@ class Dyna3dReader {
         nodes[std::size_t(j)] = nid - 1;
       }
       if (mat < 1 || mat > m_.control.nmmat) {
-        e.error(1203, w + 1, w + 5, "material number", "materials are 1.." + std::to_string(m_.control.nmmat));
+        e.error(1203, w + 1, w + 5, "material number", "material " + std::to_string(label) + " is not defined");
         ok = false;
       }
       if (ok && !is_valid_solid_node_pattern(nodes)) {
@@ -721,7 +857,8 @@ class Dyna3dReader {
                     "expected " + std::to_string(n) + " shell elements, two cards each (control card 2 NUMELS), found " + std::to_string(k));
       const int id = int(c.i(1, w, "element number"));
       c.set_name("shell element card for element " + std::to_string(id));
-      const int mat = int(c.i(w + 1, w + 5, "material number"));
+      const int label = int(c.i(w + 1, w + 5, "material number"));
+      const int mat = material_slot(label);
       std::array<int, 4> nodes{};
       bool ok = true;
       for (int j = 0; j < 4; ++j) {
@@ -738,10 +875,10 @@ class Dyna3dReader {
       if (!c.blank(last + 1, 80))
         diag_.add(2020, c.where(last + 1, 80, "unread columns"), "after node n4: IMPACT-3D reads nothing there");
       if (mat < 1 || mat > m_.control.nmmat) {
-        c.error(1203, w + 1, w + 5, "material number", "materials are 1.." + std::to_string(m_.control.nmmat));
+        c.error(1203, w + 1, w + 5, "material number", "material " + std::to_string(label) + " is not defined");
         ok = false;
       } else if (!is_shell_mat(mat)) {
-        c.error(1203, w + 1, w + 5, "material number", "material " + std::to_string(mat) + " is not a shell material (material card 1 columns 66-70 element type 2)");
+        c.error(1203, w + 1, w + 5, "material number", "material " + std::to_string(label) + " is not a shell material (material card 1 columns 66-70 element type 2)");
         ok = false;
       }
       if (ok && (nodes[0] == nodes[1] || nodes[0] == nodes[2] || nodes[1] == nodes[2] || nodes[0] == nodes[3] || nodes[1] == nodes[3])) {
@@ -822,20 +959,42 @@ class Dyna3dReader {
     return v;
   }
 
+  bool warned_old_th_ = false;
+  bool warned_old_interface_ = false;
+  // Time-history blocks (control card 3): nodes, solids, beams, shells in that order, five
+  // blocks (first, last) a card, each kind starting on a new card.
   void read_time_history_blocks() {
-    for (int which = 0; which < 3; ++which) {  // nodes, solids, shells (control card 3 order)
-      int nb = which == 0 ? m_.control.node_th_blocks : which == 1 ? m_.control.solid_th_blocks : shell_th_blocks_;
-      int limit = which == 0 ? m_.control.numnp : which == 1 ? m_.control.numelh : numels_;
-      const char* what = which == 0 ? "node" : which == 1 ? "solid" : "shell";
-      for (int b = 0; b < nb; ++b) {
-        Card c = next(std::string(what) + " time-history block " + std::to_string(b + 1),
-                      "expected " + std::to_string(nb) + " " + what + " time-history blocks (control card 3)");
-        int err = which == 0 ? 1202 : 1201;
-        int first = read_id(c, 1, "first", limit, err);
-        int last = c.blank(1 + idw_, 2 * idw_) ? first : read_id(c, 1 + idw_, "last", limit, err);
-        if (first > 0 && last > 0) {
-          if (last < first) c.error(1003, 1 + idw_, 2 * idw_, "last", "must not be below first");
-          else (which == 0 ? m_.node_th_blocks : which == 1 ? m_.solid_th_blocks : m_.shell_th_blocks).push_back({first, last});
+    const FixedCardLayout& layout = fixed_card_layout("time-history block card", vintage_);
+    for (int which = 0; which < 4; ++which) {
+      const int nb = which == 0 ? m_.control.node_th_blocks : which == 1 ? m_.control.solid_th_blocks
+                   : which == 2 ? beam_th_blocks_ : shell_th_blocks_;
+      const int limit = which == 0 ? m_.control.numnp : which == 1 ? m_.control.numelh : which == 2 ? numelb_ : numels_;
+      const char* what = which == 0 ? "node" : which == 1 ? "solid" : which == 2 ? "beam" : "shell";
+      const int err = which == 0 ? 1202 : 1201;
+      for (int b = 0; b < nb;) {
+        Card c = next(std::string(what) + " time-history block card " + std::to_string(b / 5 + 1),
+                      "expected " + std::to_string(nb) + " " + what + " time-history blocks, five a card (control card 3)");
+        FixedValues v(c, layout);
+        // IMPACT-3D's old layout: one block a card (columns 17-80 blank while more blocks follow)
+        const int per_card = nb - b > 1 && c.blank(17, 80) ? 1 : 5;
+        if (per_card == 1 && !warned_old_th_) {
+          diag_.add(2041, c.where(1, 16), "one time-history block a card is IMPACT-3D's old layout; DYNA3D's has five a card "
+                                          "(impact3d i=DECK --write-fixed=NEW writes it)");
+          warned_old_th_ = true;
+        }
+        const int start = b;
+        b += per_card;
+        for (int j = 0; j < per_card && start + j < nb; ++j) {
+          const std::string fn = "first " + std::to_string(j + 1), ln = "last " + std::to_string(j + 1);
+          const long long first = v.integer(fn);
+          const long long last = v.blank(ln) ? first : v.integer(ln);
+          if (first < 1 || first > limit) { v.error(err, fn, "must be 1.." + std::to_string(limit)); continue; }
+          if (last < 1 || last > limit) { v.error(err, ln, "must be 1.." + std::to_string(limit)); continue; }
+          if (last < first) { v.error(1003, ln, "must not be below first"); continue; }
+          const std::array<int, 2> blk{int(first), int(last)};
+          if (which == 0) m_.node_th_blocks.push_back(blk);
+          else if (which == 1) m_.solid_th_blocks.push_back(blk);
+          else if (which == 3) m_.shell_th_blocks.push_back(blk);
         }
       }
     }
@@ -928,14 +1087,13 @@ class Dyna3dReader {
     }
   }
 
-  // Pressure-loaded element sides (card 5 field 3): load curve, four nodes, four nodal
-  // multipliers and an arrival time.  Small format: I5, 4I5 (6-25), 4E10 (26-65), arrival time
-  // E10 (71-80).  Large format (an IMPACT-3D choice): I5, 4I8 (6-37) on the first card, the
-  // four multipliers 4E10 (1-40) and the arrival time (71-80) on a second card.  Blank
-  // multipliers are 1.
+  // Pressure-loaded element sides (card 5 field 3), one card each (pressure card table): load
+  // curve, four nodes, four nodal multipliers (blank: 1).  IMPACT-3D's old large-format layout
+  // put the multipliers on a second card with an arrival time in 71-80: still read (warning
+  // 2041) when the second card is unmistakably that.
   void read_pressure_loads() {
     const int n = m_.control.num_pressure_cards;
-    const bool large = m_.large_format;
+    const FixedCardLayout& layout = fixed_card_layout("pressure card", vintage_);
     for (int k = 0; k < n; ++k) {
       Card c = next("pressure card " + std::to_string(k + 1),
                     "expected " + std::to_string(n) + " pressure cards (control card 5)");
@@ -943,55 +1101,119 @@ class Dyna3dReader {
       p.line = c.line();
       p.curve = read_curve_ref(c, 1, 5);
       bool ok = p.curve >= 0;
+      if (!m_.large_format) {  // small format: I5 nodes (6-25), multipliers 26-65, arrival 71-80
+        for (int q = 0; q < 4; ++q) {
+          const std::string f = "node n" + std::to_string(q + 1);
+          const int id = read_id(c, 6 + 5 * q, f.c_str(), m_.control.numnp, 1202);
+          if (id < 1) ok = false;
+          p.nodes[std::size_t(q)] = id - 1;
+        }
+        for (int q = 0; q < 4; ++q) p.factor[std::size_t(q)] = c.e(26 + 10 * q, 35 + 10 * q, ("multiplier " + std::to_string(q + 1)).c_str(), 1.0);
+        p.birth = c.e(71, 80, "arrival time");
+        if (ok) m_.pressure_loads.push_back(p);
+        continue;
+      }
+      FixedValues v(c, layout);
       for (int q = 0; q < 4; ++q) {
         const std::string f = "node n" + std::to_string(q + 1);
-        const int id = read_id(c, 6 + idw_ * q, f.c_str(), m_.control.numnp, 1202);
-        if (id < 1) ok = false;
-        p.nodes[std::size_t(q)] = id - 1;
+        const long long id = v.integer(f);
+        if (id < 1 || id > m_.control.numnp) { v.error(1202, f, "must be 1.." + std::to_string(m_.control.numnp)); ok = false; }
+        p.nodes[std::size_t(q)] = int(id) - 1;
       }
-      Card* mc = &c;
-      std::optional<Card> c2;
-      if (large) {
-        c2.emplace(next("pressure card " + std::to_string(k + 1) + " multipliers"));
-        mc = &*c2;
+      if (c.blank(38, 80) && old_pressure_multiplier_card_follows()) {
+        Card c2 = next("pressure card " + std::to_string(k + 1) + " multipliers (old IMPACT-3D layout)");
+        if (!warned_old_pressure_) {
+          diag_.add(2041, c2.where(1, 80), "pressure multipliers on a second card are IMPACT-3D's old layout; DYNA3D's is one card with "
+                                           "them in columns 38-77 (impact3d i=DECK --write-fixed=NEW writes it)");
+          warned_old_pressure_ = true;
+        }
+        for (int q = 0; q < 4; ++q) p.factor[std::size_t(q)] = c2.e(1 + 10 * q, 10 + 10 * q, ("multiplier " + std::to_string(q + 1)).c_str(), 1.0);
+        p.birth = c2.e(71, 80, "arrival time");
+      } else {
+        for (int q = 0; q < 4; ++q) p.factor[std::size_t(q)] = v["multiplier " + std::to_string(q + 1)];
       }
-      const int m1 = large ? 1 : 26;
-      for (int q = 0; q < 4; ++q) {
-        const std::string f = "multiplier " + std::to_string(q + 1);
-        const double v = mc->e(m1 + 10 * q, m1 + 9 + 10 * q, f.c_str(), 1.0);
-        p.factor[std::size_t(q)] = v;
-      }
-      p.birth = mc->e(71, 80, "arrival time");
       if (ok) m_.pressure_loads.push_back(p);
     }
   }
+  bool warned_old_pressure_ = false;
+
+  // The old layout's second pressure card: reals in 1-40 (with a decimal point or exponent)
+  // and nothing in 41-70; a DYNA3D pressure card starts with an I5 curve and I8 nodes instead.
+  bool old_pressure_multiplier_card_follows() {
+    const DeckLine* l = deck_.peek_card();
+    if (!l) return false;
+    const std::string_view t = l->text;
+    if (card_columns(t, 41, 70).find_first_not_of(' ') != std::string_view::npos) return false;
+    for (int q = 0; q < 4; ++q) {
+      const std::string_view f = card_columns(t, 1 + 10 * q, 10 + 10 * q);
+      double x = 0;
+      if (f.find_first_of(".eEdD") == std::string_view::npos || parse_fortran_real(f, x) != FieldStatus::ok) return false;
+    }
+    return true;
+  }
 
   // Velocity / acceleration / displacement boundary conditions (card 5 field 4), one card each
-  // (an IMPACT-3D layout: no DYNA3D manual text fixes it): node (I5 small, I8 large), direction
-  // 1-3 (I5), load curve (I5), scale (E10), type (I5: 0 velocity, 1 acceleration,
-  // 2 displacement), birth time (E10), death time (E10; blank or 0 = never).
+  // as DYNA3D decks write them (velocity/acceleration boundary card table): node, load curve,
+  // DOF (1-3 an axis, 4 along the vector vx vy vz; 5-7 rotations: refused), scale, the vector,
+  // type (0 velocity, 1 acceleration, 2 displacement), birth time (IMPACT-3D: 64-73).
   void read_prescribed_motions() {
     const int n = m_.control.num_motion_cards;
-    const int w = idw_;
+    const FixedCardLayout& layout = fixed_card_layout("velocity/acceleration boundary card", vintage_);
     for (int k = 0; k < n; ++k) {
       Card c = next("velocity/acceleration boundary card " + std::to_string(k + 1),
                     "expected " + std::to_string(n) + " velocity/acceleration boundary cards (control card 5)");
+      if (old_motion_layout(c)) {
+        c.error(1006, 9, 53, "node/direction/curve/scale/type/birth/death",
+                "this is IMPACT-3D's old layout (direction 9-13, curve 14-18, type 29-33, birth 34-43, death 44-53); DYNA3D's is "
+                "curve 9-13, DOF 14-18, scale 19-28, vector 29-58, type 59-63: swap columns 9-13 and 14-18 and move the type to 59-63");
+        continue;
+      }
+      FixedValues v(c, layout);
       PrescribedMotion pm;
-      const int node = read_id(c, 1, "node", m_.control.numnp, 1202);
-      bool ok = node >= 1;
-      ok = read_direction(c, w + 1, w + 5, pm.dir) && ok;
-      pm.curve = read_curve_ref(c, w + 6, w + 10);
-      pm.scale = c.e(w + 11, w + 20, "scale factor", 1.0);
-      const long long type = c.i(w + 21, w + 25, "type");
-      if (type < 0 || type > 2) { c.error(1006, w + 21, w + 25, "type", "0 velocity, 1 acceleration, 2 displacement"); ok = false; }
-      pm.kind = MotionKind(int(type));
-      pm.birth = c.e(w + 26, w + 35, "birth time");
-      const double death = c.e(w + 36, w + 45, "death time");
+      const long long node = v.integer("node");
+      bool ok = true;
+      if (node < 1 || node > m_.control.numnp) { v.error(1202, "node", "must be 1.." + std::to_string(m_.control.numnp)); ok = false; }
+      pm.curve = read_curve_ref(c, v.field("load curve").c1, v.field("load curve").c2);
+      const long long dof = v.integer("DOF");
+      if (dof >= 1 && dof <= 3) {
+        pm.dir = {0, 0, 0};
+        pm.dir[std::size_t(dof - 1)] = 1;
+      } else if (dof == 4) {
+        const double vx = v["vx"], vy = v["vy"], vz = v["vz"];
+        const double len = std::sqrt(vx * vx + vy * vy + vz * vz);
+        if (!(len > 0)) { v.error(1213, "vx", "DOF 4 moves along the vector (vx, vy, vz), which is zero"); ok = false; }
+        else pm.dir = {vx / len, vy / len, vz / len};
+      } else if (dof >= 5 && dof <= 7) {
+        v.error(1102, "DOF", "prescribed rotations (DOF 5-7)");
+        ok = false;
+      } else {
+        v.error(1006, "DOF", "1-3 x y z, 4 along a vector, 5-7 rotations");
+        ok = false;
+      }
+      pm.scale = v["scale factor"];
+      const long long type = v.integer("type");
+      if (type < 0 || type > 2) { v.error(1006, "type", "0 velocity, 1 acceleration, 2 displacement"); ok = false; }
+      pm.kind = MotionKind(int(std::clamp<long long>(type, 0, 2)));
+      pm.birth = v["birth time"];
+      const double death = v["death time"];
       pm.death = death > 0 ? death : 1e28;
-      pm.node = node - 1;
+      if (death < 0) v.error(1003, "death time", "must not be negative (0 or blank: never)");
+      pm.node = int(node) - 1;
       pm.line = c.line();
       if (ok && pm.curve >= 0) m_.prescribed_motions.push_back(pm);
     }
+  }
+
+  // IMPACT-3D's old motion card: an I5 type in 29-33 (no decimal point, no exponent) followed
+  // by reals in 34-53, where DYNA3D's layout has one real in 29-38.
+  static bool old_motion_layout(const Card& c) {
+    const std::string_view type = c.columns(29, 33), birth = c.columns(34, 43);
+    if (type.find_first_not_of(' ') == std::string_view::npos) return false;
+    if (type.find_first_of(".eEdD") != std::string_view::npos) return false;
+    long long t = 0;
+    double b = 0;
+    return parse_fortran_int(type, t) == FieldStatus::ok && birth.find_first_not_of(' ') != std::string_view::npos &&
+           parse_fortran_real(birth, b) == FieldStatus::ok;
   }
 
   // Base accelerations (card 5 fields 9-11), one card per direction flagged, in x y z order
@@ -1060,27 +1282,84 @@ class Dyna3dReader {
     }
   }
 
+  // Initial conditions (control card 5 field 7).  1: nodal velocity cards as DYNA3D reads
+  // them (initial velocity card table), until the last node (NUMNP) is given; nodes skipped
+  // between two cards get velocities interpolated linearly in the node number.  IMPACT-3D's own
+  // extension stays readable: node 0 (all nodes), or a last node (39-46) and increment (47-51)
+  // after the velocities; with such a card, or a parameter above 1 (IMPACT-3D's old meaning:
+  // that many cards), the count of cards is the parameter.
   void read_initial_velocities() {
-    int n = m_.control.num_init_velocity_cards;
-    for (int k = 0; k < n; ++k) {
-      Card c = next("initial-velocity card " + std::to_string(k + 1),
-                    "expected " + std::to_string(n) + " initial-velocity cards (control card 5)");
-      InitialVelocity iv;
-      iv.first = int(c.i(1, 8, "first node"));
-      iv.v[0] = c.e(9, 18, "vx");
-      iv.v[1] = c.e(19, 28, "vy");
-      iv.v[2] = c.e(29, 38, "vz");
-      iv.last = c.blank(39, 46) ? iv.first : int(c.i(39, 46, "last node"));
-      iv.increment = int(c.i(47, 51, "increment", 1));
-      if (iv.increment == 0) iv.increment = 1;
-      bool ok = true;
-      int nn = m_.control.numnp;
-      if (iv.first < 0 || iv.first > nn) { c.error(1202, 1, 8, "first node", "0 (all nodes) or 1.." + std::to_string(nn)); ok = false; }
-      if (iv.first != 0 && (iv.last < 1 || iv.last > nn)) { c.error(1202, 39, 46, "last node", "1.." + std::to_string(nn)); ok = false; }
-      if (iv.increment < 0) { c.error(1003, 47, 51, "increment", "must be positive"); ok = false; }
-      if (ok && iv.first != 0 && iv.last < iv.first) { c.error(1223, 39, 46, "last node"); ok = false; }
-      if (ok) m_.init_velocities.push_back(iv);
+    const int param = m_.control.num_init_velocity_cards;
+    if (param == 0) return;
+    const int nn = m_.control.numnp;
+    const FixedCardLayout& layout = fixed_card_layout("initial velocity card", vintage_);
+    int prev_node = 0;
+    std::array<double, 3> prev_v{};
+    for (int k = 0;; ++k) {
+      if (param > 1 && k >= param) return;
+      const DeckLine* l = deck_.peek_card();
+      const bool extended = l && (card_columns(l->text, 39, 51).find_first_not_of(' ') != std::string_view::npos ||
+                                  card_columns(l->text, 1, 8).find_first_not_of(" 0") == std::string_view::npos);
+      if (k == 0 && extended && param == 1) {  // one IMPACT-3D card: a range or all nodes
+        read_range_velocity_card(1);
+        return;
+      }
+      if (param > 1) {
+        read_range_velocity_card(k + 1);
+        continue;
+      }
+      Card c = next("initial velocity card " + std::to_string(k + 1),
+                    "initial velocities are read until node " + std::to_string(nn) + " (NUMNP) is given (control card 5 field 7 = 1)");
+      FixedValues v(c, layout);
+      const long long node = v.integer("node");
+      const std::array<double, 3> vel{v["vx"], v["vy"], v["vz"]};
+      if (node <= prev_node || node > nn) {
+        v.error(node > nn || node < 1 ? 1202 : 1223, "node", "nodes in increasing order, " + std::to_string(prev_node + 1) + ".." + std::to_string(nn));
+        if (node > nn || node < 1) return;
+        continue;
+      }
+      for (long long j = prev_node + 1; j <= node; ++j) {  // skipped nodes interpolated (first card: its own velocity)
+        InitialVelocity iv;
+        iv.first = iv.last = int(j);
+        const double f = prev_node == 0 ? 1.0 : double(j - prev_node) / double(node - prev_node);
+        for (int q = 0; q < 3; ++q) iv.v[std::size_t(q)] = prev_v[std::size_t(q)] + f * (vel[std::size_t(q)] - prev_v[std::size_t(q)]);
+        if (iv.v[0] != 0 || iv.v[1] != 0 || iv.v[2] != 0) append_velocity(iv);
+      }
+      prev_node = int(node);
+      prev_v = vel;
+      if (node == nn) return;
     }
+  }
+
+  // Consecutive single-node cards with the same velocity become one range (the model keeps
+  // few records for a deck that lists every node).
+  void append_velocity(const InitialVelocity& iv) {
+    auto& all = m_.init_velocities;
+    if (!all.empty() && all.back().v == iv.v && all.back().increment == 1 && all.back().last + 1 == iv.first && all.back().first != 0) {
+      all.back().last = iv.last;
+      return;
+    }
+    all.push_back(iv);
+  }
+
+  void read_range_velocity_card(int k) {
+    Card c = next("initial-velocity card " + std::to_string(k),
+                  "expected " + std::to_string(m_.control.num_init_velocity_cards) + " initial-velocity cards (control card 5)");
+    InitialVelocity iv;
+    iv.first = int(c.i(1, 8, "first node"));
+    iv.v[0] = c.e(9, 18, "vx");
+    iv.v[1] = c.e(19, 28, "vy");
+    iv.v[2] = c.e(29, 38, "vz");
+    iv.last = c.blank(39, 46) ? iv.first : int(c.i(39, 46, "last node"));
+    iv.increment = int(c.i(47, 51, "increment", 1));
+    if (iv.increment == 0) iv.increment = 1;
+    bool ok = true;
+    const int nn = m_.control.numnp;
+    if (iv.first < 0 || iv.first > nn) { c.error(1202, 1, 8, "first node", "0 (all nodes) or 1.." + std::to_string(nn)); ok = false; }
+    if (iv.first != 0 && (iv.last < 1 || iv.last > nn)) { c.error(1202, 39, 46, "last node", "1.." + std::to_string(nn)); ok = false; }
+    if (iv.increment < 0) { c.error(1003, 47, 51, "increment", "must be positive"); ok = false; }
+    if (ok && iv.first != 0 && iv.last < iv.first) { c.error(1223, 39, 46, "last node"); ok = false; }
+    if (ok) m_.init_velocities.push_back(iv);
   }
 
   void read_segments(std::vector<std::array<int, 4>>& out, std::vector<int>& lines, int count,
@@ -1103,45 +1382,57 @@ class Dyna3dReader {
     }
   }
 
+  // Sliding interfaces (control card 5 field 8): every control card first, then each
+  // interface's slave and master segment cards.  A "lagop ... endfree" free-format block may
+  // follow a control card (its "name NAME" names the interface).
   void read_sliding_interfaces() {
-    int n = m_.control.num_interfaces;
+    const int n = m_.control.num_interfaces;
+    const FixedCardLayout& layout = fixed_card_layout("sliding interface control card", vintage_);
     std::vector<std::array<int, 2>> counts;
     for (int k = 0; k < n; ++k) {
       Card c = next("sliding interface " + std::to_string(k + 1) + " control card",
                     "expected " + std::to_string(n) + " sliding interface control cards (control card 5)");
+      const bool old_layout = c.columns(22, 22) == ".";  // a friction written from column 21
+      if (old_layout && !warned_old_interface_) {
+        diag_.add(2041, c.where(17, 30), "type in 17-20 and friction from column 21 are IMPACT-3D's old layout; DYNA3D's has the type "
+                                         "in 17-21 and the friction from column 22 (impact3d i=DECK --write-fixed=NEW writes it)");
+        warned_old_interface_ = true;
+      }
+      FixedValues v(c, old_layout ? fixed_card_layout("old IMPACT-3D sliding interface control card", vintage_) : layout);
+      note_ignored(v);
       SlidingInterface si;
       si.line = c.line();
-      int nss = int(c.i(1, 8, "NSS"));
-      int nms = int(c.i(9, 16, "NMS"));
-      si.type = int(c.i(17, 20, "type"));
+      int nss = int(v.integer("NSS"));
+      int nms = int(v.integer("NMS"));
+      si.type = int(v.integer("type"));
       if (si.type != 3 && si.type != 4) {
-        // the DYNA3D types, by name (after deck writers of DYNA3D decks)
         static const char* const names[] = {"", "1 sliding only", "2 tied", "3 sliding with impact and friction", "4 single surface",
                                             "5 nodes to surface", "6 nodes tied to surface", "7 shell edge tied to surface",
                                             "8 spot weld", "9 tiebreak"};
         if (si.type >= 1 && si.type <= 9)
-          c.error(1104, 17, 20, "type", std::string("type ") + names[si.type] + ": IMPACT-3D has types 3 (sliding with impact, separation and friction) and 4 (single surface)");
+          v.error(1104, "type", std::string("type ") + names[si.type] + ": IMPACT-3D has types 3 (sliding with impact, separation and friction) and 4 (single surface)");
         else
-          c.error(1006, 17, 20, "type", "DYNA3D sliding interface types are 1-9; IMPACT-3D has types 3 and 4");
+          v.error(1006, "type", "DYNA3D sliding interface types are 1-9; IMPACT-3D has types 3 and 4");
       }
-      si.fs = c.e(21, 30, "static friction");
-      si.fd = c.e(31, 40, "dynamic friction");
-      si.decay = c.e(41, 50, "decay coefficient");
-      si.penalty_scale = c.e(51, 60, "penalty scale factor");
-      si.stiffness_method = int(c.i(61, 65, "stiffness method"));
-      int one_pass = int(c.i(66, 70, "one-pass flag"));
+      si.fs = v["static friction"];
+      si.fd = v["dynamic friction"];
+      si.decay = v["decay coefficient"];
+      si.penalty_scale = v["penalty scale factor"];
+      si.stiffness_method = int(v.integer("stiffness method"));
+      const long long one_pass = v.integer("one-pass flag");
       si.symmetric = one_pass == 0 && si.type != 4;  // (single surface: one pass over its own nodes)
-      if (si.fs < 0) c.error(1219, 21, 30, "static friction");
-      if (si.fd < 0) c.error(1219, 31, 40, "dynamic friction");
-      if (si.decay < 0) c.error(1003, 41, 50, "decay coefficient", "must not be negative");
-      if (si.penalty_scale < 0) c.error(1003, 51, 60, "penalty scale factor", "must not be negative");
-      if (si.stiffness_method != 0 && si.stiffness_method != 1) c.error(1006, 61, 65, "stiffness method", "0 DYNA3D or 1 IMPACT-3D maximum stable");
-      if (one_pass != 0 && one_pass != 1) c.error(1006, 66, 70, "one-pass flag", "0 or 1");
-      long avail = remaining_cards();
-      if (nss < 1 || nss > avail) { c.error(1003, 1, 8, "NSS", "1 to the cards left in the deck"); nss = 0; }
+      if (si.fs < 0) v.error(1219, "static friction");
+      if (si.fd < 0) v.error(1219, "dynamic friction");
+      if (si.decay < 0) v.error(1003, "decay coefficient", "must not be negative");
+      if (si.penalty_scale < 0) v.error(1003, "penalty scale factor", "must not be negative");
+      if (si.stiffness_method != 0 && si.stiffness_method != 1) v.error(1006, "stiffness method", "0 DYNA3D or 1 IMPACT-3D maximum stable");
+      if (one_pass != 0 && one_pass != 1) v.error(1006, "one-pass flag", "0 or 1");
+      const long avail = remaining_cards();
+      if (nss < 1 || nss > avail) { v.error(1003, "NSS", "1 to the cards left in the deck"); nss = 0; }
       if (si.type == 4) {  // single surface: the NSS segments against themselves, no master side
-        if (nms != 0) { c.error(1003, 9, 16, "NMS", "must be 0 for a single-surface interface (type 4)"); nms = 0; }
-      } else if (nms < 1 || nms > avail) { c.error(1003, 9, 16, "NMS", "1 to the cards left in the deck"); nms = 0; }
+        if (nms != 0) { v.error(1003, "NMS", "must be 0 for a single-surface interface (type 4)"); nms = 0; }
+      } else if (nms < 1 || nms > avail) { v.error(1003, "NMS", "1 to the cards left in the deck"); nms = 0; }
+      read_interface_options(si);
       counts.push_back({nss, nms});
       m_.interfaces.push_back(std::move(si));
     }
@@ -1150,6 +1441,267 @@ class Dyna3dReader {
       SlidingInterface& si = m_.interfaces[std::size_t(k)];
       read_segments(si.slave, si.slave_line, counts[std::size_t(k)][0], name + " slave");
       read_segments(si.master, si.master_line, counts[std::size_t(k)][1], name + " master");
+    }
+  }
+
+  // "lagop N name NAME endfree" after an interface control card: the name is kept (echo,
+  // messages); the other words are listed as ignored.
+  void read_interface_options(SlidingInterface& si) {
+    read_free_block([&](const DeckLine& line, const std::vector<std::string>& w, std::size_t k) -> std::size_t {
+      if (w[k] == "name" && k + 1 < w.size()) {
+        si.name = w[k + 1];
+        return k + 2;
+      }
+      if (w[k] == "lagop" && k + 1 < w.size()) {
+        ignored_fields_.push_back({line.number, "interface option \"lagop " + w[k + 1] + "\""});
+        return k + 2;
+      }
+      ignored_fields_.push_back({line.number, "interface option \"" + w[k] + "\""});
+      return k + 1;
+    });
+  }
+
+  // ---- DYNA3D free format: "word ... endfree" blocks after the control cards ----
+
+  static bool starts_with_letter(std::string_view t) {
+    const std::size_t b = t.find_first_not_of(" \t");
+    return b != std::string_view::npos && std::isalpha(static_cast<unsigned char>(t[b]));
+  }
+  static std::vector<std::string> words_of(std::string_view t) {
+    std::vector<std::string> w;
+    std::size_t k = 0;
+    while (k < t.size()) {
+      while (k < t.size() && (t[k] == ' ' || t[k] == '\t' || t[k] == '\r')) ++k;
+      std::size_t e = k;
+      while (e < t.size() && t[e] != ' ' && t[e] != '\t' && t[e] != '\r') ++e;
+      if (e > k) w.emplace_back(t.substr(k, e - k));
+      k = e;
+    }
+    return w;
+  }
+
+  // Reads free-format lines from the next card up to the word "endfree"; calls `word` for each
+  // word with the words after it on its line (a word consumes what it needs).
+  template <class OnWord>
+  void read_free_block(OnWord&& on_word) {
+    while (const DeckLine* l = deck_.peek_card()) {
+      if (!starts_with_letter(l->text)) return;  // not free format: the cards resume
+      deck_.next_card();
+      const std::vector<std::string> w = words_of(l->text);
+      for (std::size_t k = 0; k < w.size();) {
+        if (w[k] == "endfree") return;
+        k = on_word(*l, w, k);
+      }
+    }
+  }
+
+  // The blocks between control card 9 and the materials: output names and times are honoured
+  // (basename, exact_output_time), "mdamp N" counts the mass damping cards; the rest is listed
+  // once as read but without effect (2040).
+  void read_free_format_blocks() {
+    while (const DeckLine* l = deck_.peek_card()) {
+      if (!starts_with_letter(l->text)) return;
+      read_free_block([&](const DeckLine& line, const std::vector<std::string>& w, std::size_t k) -> std::size_t {
+        const std::string& word = w[k];
+        auto ignore = [&](std::size_t n) {
+          std::string what = "free format \"" + word;
+          for (std::size_t j = k + 1; j < std::min(k + 1 + n, w.size()); ++j) what += " " + w[j];
+          ignored_fields_.push_back({line.number, what + "\""});
+          return std::min(k + 1 + n, w.size());
+        };
+        if (word == "basename" && k + 1 < w.size()) {
+          m_.basename = w[k + 1];
+          return k + 2;
+        }
+        if (word == "exact_output_time") {
+          m_.exact_output_times = true;
+          return k + 1;
+        }
+        if (word == "mdamp" && k + 1 < w.size()) {
+          long long n = 0;
+          if (parse_fortran_int(w[k + 1], n) != FieldStatus::ok || n < 0) {
+            Location loc = line_location(line, "free format mdamp");
+            diag_.add(1001, loc, "mdamp takes a count of mass damping cards");
+          } else {
+            mass_damping_sets_ = int(n);
+          }
+          return k + 2;
+        }
+        if (word == "options") return k + 1;  // the words up to its endfree are listed one by one
+        if (word == "element_set") return ignore(w.size());  // "element_set N rgb r g b name X"
+        // "xxx on|off" switches and lone words (output requests of DYNA3D's own databases)
+        if (k + 1 < w.size() && (w[k + 1] == "on" || w[k + 1] == "off")) return ignore(1);
+        return ignore(0);
+      });
+    }
+  }
+
+  Location line_location(const DeckLine& l, const std::string& card) const {
+    Location loc;
+    loc.file = deck_.name();
+    loc.line = l.number;
+    loc.card = card;
+    loc.found = l.text;
+    loc.show_found = true;
+    return loc;
+  }
+
+  // Every field and option read but without effect here, one warning (2040) with its lines.
+  void report_ignored() {
+    if (ignored_fields_.empty()) return;
+    std::string list;
+    for (std::size_t k = 0; k < ignored_fields_.size() && k < 12; ++k)
+      list += "\n    line " + std::to_string(ignored_fields_[k].first) + ": " + ignored_fields_[k].second;
+    if (ignored_fields_.size() > 12) list += "\n    ... " + std::to_string(ignored_fields_.size() - 12) + " more";
+    Location loc;
+    loc.file = deck_.name();
+    loc.line = ignored_fields_.front().first;
+    diag_.add(2040, loc, std::to_string(ignored_fields_.size()) + " item(s):" + list);
+  }
+
+  // An rgb line after material card 1 ("rgb r g b", a colour for LLNL's post-processors).
+  bool skip_rgb_line() {
+    const DeckLine* l = deck_.peek_card();
+    if (!l) return false;
+    const std::vector<std::string> w = words_of(l->text);
+    if (w.empty() || w[0] != "rgb") return false;
+    deck_.next_card();
+    ignored_fields_.push_back({l->number, "material colour \"" + std::string(l->text.substr(0, 40)) + "\""});
+    return true;
+  }
+
+  // A section-properties title line ("section properties", "BLT Shell Section Properties",
+  // "Hughes-Liu Beam Section Properties") before the two section cards of a beam or shell
+  // material.  Absent (the old IMPACT-3D one-card shell section): false.
+  bool skip_section_title() {
+    const DeckLine* l = deck_.peek_card();
+    if (!l || !starts_with_letter(l->text)) return false;
+    std::string t(l->text);
+    for (auto& ch : t) ch = char(std::tolower(static_cast<unsigned char>(ch)));
+    if (t.find("section") == std::string::npos) return false;
+    deck_.next_card();
+    return true;
+  }
+
+  // The two section cards of a beam material (element type 1), as DYNA3D decks write them.
+  void read_beam_section(MaterialData& md, const std::string& name) {
+    const bool titled = skip_section_title();
+    if (!titled) {
+      Location loc;
+      loc.file = deck_.name();
+      loc.line = deck_.peek_card() ? deck_.peek_card()->number : deck_.last_line_number();
+      diag_.add(1004, loc, name + ": a beam material (element type 1) has a section-properties line and two section cards after card 8");
+    }
+    Card a = next(name + " beam section card 1");
+    FixedValues va(a, fixed_card_layout("beam section card 1", vintage_));
+    note_ignored(va);
+    const double qr = va["quadrature rule"];
+    if (qr != std::floor(qr) || qr > 5) va.error(1006, "quadrature rule", "1-5 built-in rules, -n a user rule (0: 2)");
+    if (qr < 0 && -qr > beam_rules_) va.error(1201, "quadrature rule", "user rule " + std::to_string(int(-qr)) + " (control card 8 has " + std::to_string(beam_rules_) + ")");
+    const double cst = va["cross-section type"];
+    if (cst != 0 && cst != 1 && cst != 2) va.error(1006, "cross-section type", "0 rectangular, 1 tubular, 2 user rule");
+    Card b = next(name + " beam section card 2");
+    FixedValues vb(b, fixed_card_layout("beam section card 2", vintage_));
+    note_ignored(vb);
+    for (const char* f : {"TS1", "TS2", "TT1", "TT2"})
+      if (vb[f] < 0) vb.error(1241, f);
+    ++beam_material_count_;
+    if (!beam_lines_first_) beam_lines_first_ = a.line();
+    (void)md;
+  }
+
+  // The user-defined beam integration rules (control card 8 field 4), after the materials:
+  // a header (points I5, a real E10) and one card a point (s, t, weight: 3 E10).
+  void read_beam_integration_rules() {
+    for (int r = 0; r < beam_rules_; ++r) {
+      const std::string name = "beam integration rule " + std::to_string(r + 1);
+      Card h = next(name + " header card", "control card 8 announces " + std::to_string(beam_rules_) + " user beam integration rules");
+      long long npts = h.i(1, 5, "number of points");
+      if (npts < 1 || npts > remaining_cards() || (beam_rule_points_ > 0 && npts > beam_rule_points_)) {
+        h.error(1003, 1, 5, "number of points", "1 to control card 8's largest rule (" + std::to_string(beam_rule_points_) + ")");
+        npts = std::clamp<long long>(npts, 0, remaining_cards());
+      }
+      h.e(6, 15, "rule area factor");
+      double wsum = 0;
+      for (long long p = 0; p < npts; ++p) {
+        Card c = next(name + " point " + std::to_string(p + 1));
+        const double sp = c.e(1, 10, "s"), tp = c.e(11, 20, "t"), w = c.e(21, 30, "weight");
+        if (std::fabs(sp) > 1 || std::fabs(tp) > 1) c.error(1003, 1, 20, "s, t", "points lie in [-1, 1] x [-1, 1]");
+        if (w < 0) c.error(1003, 21, 30, "weight", "must not be negative");
+        wsum += w;
+      }
+      (void)wsum;
+      if (!beam_lines_first_) beam_lines_first_ = h.line();
+    }
+  }
+
+  // Beam element cards (control card 2 NUMELB): read and checked (ids, material of element
+  // type 1, nodes); the beam family is refused as a whole by report_beams until it exists.
+  void read_beams() {
+    const int n = numelb_;
+    std::vector<int> seen(std::size_t(n), 0);
+    for (int k = 0; k < n; ++k) {
+      Card c = next("beam element card " + std::to_string(k + 1) + " of " + std::to_string(n),
+                    "expected " + std::to_string(n) + " beam element cards (control card 2 NUMELB), found " + std::to_string(k));
+      FixedValues v(c, fixed_card_layout("beam element card", vintage_));
+      note_ignored(v);
+      const long long id = v.integer("element number");
+      const long long mat = v.integer("material number");
+      if (material_slot(mat) < 1) v.error(1203, "material number", "material " + std::to_string(mat) + " is not defined");
+      for (const char* f : {"node n1", "node n2", "orientation node n3"}) {
+        const long long nid = v.integer(f);
+        if (nid < 1 || nid > m_.control.numnp) v.error(1202, f, "nodes are 1.." + std::to_string(m_.control.numnp));
+      }
+      if (id < 1 || id > n) v.error(1201, "element number", "must be 1.." + std::to_string(n) + " (NUMELB)");
+      else if (seen[std::size_t(id - 1)]) v.error(1200, "element number", "beam " + std::to_string(id) + " already defined on line " + std::to_string(seen[std::size_t(id - 1)]));
+      else seen[std::size_t(id - 1)] = c.line();
+      if (!beam_lines_first_) beam_lines_first_ = c.line();
+    }
+    report_missing(seen, "beam element");
+  }
+
+  // One error for the beam family (beams are their own element family, not yet here): at
+  // control card 2 when it counts beams (refuse_beam_count), else here for beam materials,
+  // rules or time-history blocks without beams.
+  void refuse_beam_count(Card& c, int c1, int c2) {
+    c.error(1102, c1, c2, "NUMELB", "beam elements: IMPACT-3D has no beam element yet (the deck's beam cards, beam materials and "
+                                    "their section cards are still read and checked)");
+  }
+  void report_beams() {
+    if (numelb_ > 0 || (beam_material_count_ == 0 && beam_th_blocks_ == 0 && beam_rules_ == 0)) return;
+    Location loc;
+    loc.file = deck_.name();
+    loc.line = card2_line_;
+    loc.card = "control card 2";
+    loc.field = "NUMELB";
+    loc.col_first = m_.large_format ? 26 : 16;
+    loc.col_last = m_.large_format ? 35 : 20;
+    diag_.add(1102, loc, "beam elements: " + std::to_string(numelb_) + " beam(s), " + std::to_string(beam_material_count_) +
+                             " beam material(s), " + std::to_string(beam_rules_) + " user integration rule(s) and " +
+                             std::to_string(beam_th_blocks_) + " beam time-history block(s) were read and checked; IMPACT-3D has no beam element yet");
+  }
+
+  // Mass-proportional damping cards (control card 7 field 11 or free-format mdamp): the damping
+  // ratio xi at the circular frequency omega gives every node f = -2 xi omega m v (the global
+  // damping of *DAMPING_GLOBAL, D = 2 xi omega) between the start and end times.
+  void read_mass_damping() {
+    for (int k = 0; k < mass_damping_sets_; ++k) {
+      Card c = next("mass damping card " + std::to_string(k + 1),
+                    "expected " + std::to_string(mass_damping_sets_) + " mass damping cards (mdamp / control card 7)");
+      FixedValues v(c, fixed_card_layout("mass damping card", FixedVintage::dyna3d_later));
+      const double xi = v["damping ratio"], omega = v["frequency"];
+      const double t0 = v["start time"], t1 = v["end time"];
+      if (xi < 0) v.error(1003, "damping ratio", "must not be negative");
+      if (omega < 0) v.error(1003, "frequency", "must not be negative");
+      if (t0 != 0) v.error(1102, "start time", "mass damping that starts after time 0");
+      if (t1 != 0 && t1 < m_.control.end_time) v.error(1102, "end time", "mass damping that ends before the termination time");
+      if (k > 0) {
+        v.error(1102, "damping ratio", "more than one mass damping set");
+        continue;
+      }
+      m_.damping.active = xi > 0 && omega > 0;
+      m_.damping.d = 2 * xi * omega;
+      m_.damping.line = c.line();
     }
   }
 

@@ -4840,14 +4840,30 @@ bool is_ascii_database(const std::string& n) {
 
 }  // namespace
 
+// A keyword deck opens with a keyword (*KEYWORD, or any keyword line, after blank and $
+// lines).  A deck that opens with a title card is a DYNA3D fixed-format deck when the title
+// carries the format flag ("large" in columns 76-80) or no line is an upper-case keyword: a
+// commented-out option such as "*basename ..." inside a fixed-format deck is a comment there.
 bool is_keyword_deck(const DeckFile& deck) {
+  const DeckLine* first = nullptr;
   for (const auto& l : deck.lines()) {
     if (is_blank(l.text) || l.text[0] == '$') continue;
-    if (upper(l.text.substr(0, 8)) == "*KEYWORD") return true;
+    first = &l;
     break;
   }
-  for (const auto& l : deck.lines())
-    if (is_keyword_line(l.text)) return true;
+  if (!first) return false;
+  if (upper(first->text.substr(0, 8)) == "*KEYWORD" || is_keyword_line(first->text)) return true;
+  std::string flag = upper(std::string(card_columns(first->text, 76, 80)));
+  if (flag.find("LARGE") != std::string::npos) return false;
+  for (const auto& l : deck.lines()) {
+    if (!is_keyword_line(l.text)) continue;
+    std::size_t e = 1;
+    while (e < l.text.size() && l.text[e] != ' ' && l.text[e] != '\r') ++e;
+    const std::string_view word = l.text.substr(1, e - 1);
+    bool upper_case = true;
+    for (char ch : word) upper_case = upper_case && !(ch >= 'a' && ch <= 'z');
+    if (upper_case) return true;
+  }
   return false;
 }
 

@@ -176,6 +176,7 @@ struct SlidingInterface {
   // *CONTACT card 1 SAPR / SBPR (LS-DYNA's SPR / MPR) = 1: the side's segments go to the
   // interface-force database (intfor)
   bool intfor_slave = false, intfor_master = false;
+  std::string name;  // DYNA3D free-format "lagop ... name NAME endfree" (empty: none)
   std::vector<std::array<int, 4>> slave, master;  // 0-based nodes
   std::vector<int> slave_line, master_line;       // deck line of each segment card (messages)
   std::vector<int> slave_file, master_file;       // Model::source_files index of that line (empty: the deck)
@@ -265,6 +266,11 @@ struct Model {
   std::string deck_file;
   bool large_format = true;
   bool keyword_deck = false;  // read from an LS-DYNA keyword deck
+  // DYNA3D fixed-format decks: the layout's vintage (FixedVintage: 0 DYNA3D 88, 1 later; -1 a
+  // keyword deck) and what the free-format block after the control cards asked for
+  int fixed_vintage = -1;
+  std::string basename;             // "basename NAME": the plot database's root when g= is not given
+  bool exact_output_times = false;  // "exact_output_time": cycles end on the output times
   // *CASE: the case this model is (its JOBID, or "caseN"); empty for the base case.  The run's
   // outputs go to a folder of that name unless o=, g=, d= say otherwise.
   std::string case_job;

@@ -111,6 +111,13 @@ StepStatus Engine::step() {
   // last step lands on the termination time
   const double remaining = m_.control.end_time - s.time;
   if (s.dt_next > remaining) s.dt_next = remaining;
+  if (land_time_ > s.time && land_time_ - s.time > 1e-9 * s.dt_next) {
+    // the steps up to the landing time shrink evenly (no abrupt short step: shells' rotations
+    // do not take a step a tenth of the last one well)
+    const double rem = land_time_ - s.time;
+    const double n = std::ceil(rem / s.dt_next - 1e-9);
+    s.dt_next = rem / n;
+  }
   const double dt_next = s.dt_next;
   const double dt_n = s.cycle == 0 ? 0.5 * dt_next : 0.5 * (s.dt_half + dt_next);
 

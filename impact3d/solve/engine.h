@@ -39,6 +39,9 @@ class Engine {
   State& state() { return s_; }
   const Model& model() const { return m_; }
   // at the termination time, or past the termination cycle when the deck sets one (ENDCYC)
+  // The next steps end no later than time t ("exact_output_time" of DYNA3D decks: states at
+  // the output times themselves); a t already reached is ignored.
+  void land_on(double t) { land_time_ = t; }
   bool finished() const {
     return s_.time >= m_.control.end_time * (1 - 1e-12) ||
            (m_.control.end_cycle > 0 && s_.cycle >= m_.control.end_cycle) || added_mass_limit_reached_;
@@ -58,6 +61,7 @@ class Engine {
   const PhaseTimes& phase_times() const { return times_; }
 
  private:
+  double land_time_ = -1;
   StepStatus process_elements();
   void calc_kinetic_energy();
 

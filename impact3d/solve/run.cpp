@@ -315,6 +315,7 @@ int run_simulation(const Model& model, const RunOptions& opt, std::ostream& prin
   const int running_every = model.control.running_restart_cycles;
   bool stopped = false;
   while (st == StepStatus::ok && out_ok) {
+    if (model.exact_output_times) engine.land_on(std::min(cur.next_plot, cur.next_history));
     st = engine.step();
     if (!engine.contact().empty()) refused_contacts += engine.contact().search_stats().refused;
     for (int e : s.newly_failed) {

@@ -121,7 +121,7 @@ struct Deck {
   const Vec& x(int id) const { return X.at(static_cast<std::size_t>(id - 1)); }
 };
 
-// Parses a deck with the layout of docs/deck-format.md (large format, the sections our
+// Parses a deck with the layout of README "Deck format" (large format, the sections our
 // generator writes).  Failures are reported through gtest.
 Deck parse(const std::string& text) {
   Deck d;
@@ -177,24 +177,26 @@ Deck parse(const std::string& text) {
     for (std::size_t i = 0; i < 8; ++i) h[i] = static_cast<int>(ival(c, 14 + 8 * i, 8));
     d.hex.push_back(h);
   }
-  for (int b = 0; b < d.node_blocks; ++b) {
-    const std::string c = next();
-    d.node_th.push_back({static_cast<int>(ival(c, 1, 8)), static_cast<int>(ival(c, 9, 8))});
-  }
-  for (int b = 0; b < d.solid_blocks; ++b) {
-    const std::string c = next();
-    d.solid_th.push_back({static_cast<int>(ival(c, 1, 8)), static_cast<int>(ival(c, 9, 8))});
-  }
+  // time-history blocks: five (first, last) pairs a card, as DYNA3D reads them
+  auto blocks = [&](int n, std::vector<std::array<int, 2>>& out) {
+    for (int b = 0; b < n; b += 5) {
+      const std::string c = next();
+      for (int j = 0; j < 5 && b + j < n; ++j)
+        out.push_back({static_cast<int>(ival(c, 1 + 16 * j, 8)), static_cast<int>(ival(c, 9 + 16 * j, 8))});
+    }
+  };
+  blocks(d.node_blocks, d.node_th);
+  blocks(d.solid_blocks, d.solid_th);
   for (int lc = 0; lc < numlc; ++lc) {
     const long long npts = ival(next(), 6, 5);
     for (long long p = 0; p < npts; ++p) next();
   }
-  for (int p = 0; p < npressure; ++p) {  // large format: nodes, then the multipliers card
+  for (int p = 0; p < npressure; ++p) {  // one card: curve, nodes, multipliers (38-77)
     const std::string c = next();
     std::array<int, 4> q{};
     for (std::size_t j = 0; j < 4; ++j) q[j] = static_cast<int>(ival(c, 6 + 8 * j, 8));
+    EXPECT_GT(rval(c, 38, 10), 0.0) << c;
     d.pressure.push_back(q);
-    next();
   }
   for (int w = 0; w < d.nrw; ++w) {
     const std::string c = next();
@@ -221,7 +223,7 @@ Deck parse(const std::string& text) {
   for (int s = 0; s < d.nsi; ++s) {
     const std::string c = next();
     counts.push_back({ival(c, 1, 8), ival(c, 9, 8)});
-    EXPECT_EQ(ival(c, 17, 4), 3);
+    EXPECT_EQ(ival(c, 17, 5), 3);
   }
   for (int s = 0; s < d.nsi; ++s) {
     for (int side = 0; side < 2; ++side) {

@@ -29,6 +29,7 @@ std::string small_deck(int et, const std::string& tail = "", const std::string& 
   std::string mat1 = "    1    18.9300e+03";
   mat1 += std::string(65 - mat1.size(), ' ') + I(et, 5);
   s += mat1 + "\ncopper\n1.1700e+11\n3.5000e-01\n\n\n\n\n";
+  if (et == 1) s += " section properties\n 1.000E+00 2.000E+00 0.000E+00\n 1.000E-03 1.000E-03 1.000E-03 1.000E-03\n";
   const double c[8][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
   for (int k = 0; k < 8; ++k) {
     std::string node = I(k + 1, 5) + I(0, 5) + E(c[k][0] * 1e-3, 20, 10) + E(c[k][1] * 1e-3, 20, 10) + E(c[k][2] * 1e-3, 20, 10) + I(0, 5);
@@ -48,15 +49,19 @@ TEST(Dyna3dWriters, MaterialElementTypeIsSolidBeamShellOrThickShell) {
     EXPECT_TRUE(read_string(small_deck(0), m, d)) << all_messages(d);
   }
   // (element type 2, shells: tests/input/test_shell_cards.cpp)
-  const char* kinds[] = {"", "beams (element type 1)", "", "thick shells (element type 3)"};
+  // a beam material (with its section cards) is read and checked; the beam family is refused
+  // as a whole (control card 2 NUMELB), a thick shell by its element type
+  const char* kinds[] = {"", "beam elements: 0 beam(s), 1 beam material(s)", "", "thick shells (element type 3)"};
+  const char* cols[] = {"", "cols 16-20", "", "cols 66-70"};
   for (int et = 1; et <= 3; et += 2) {
     Model m;
     Diagnostics d;
     EXPECT_FALSE(read_string(small_deck(et), m, d));
     ASSERT_EQ(d.count(1102), 1) << all_messages(d);
+    EXPECT_EQ(d.error_count(), 1) << all_messages(d);
     const std::string msg = all_messages(d);
     EXPECT_NE(msg.find(kinds[et]), std::string::npos) << msg;
-    EXPECT_NE(msg.find("cols 66-70"), std::string::npos) << msg;
+    EXPECT_NE(msg.find(cols[et]), std::string::npos) << msg;
   }
   Model m;
   Diagnostics d;
@@ -87,14 +92,14 @@ TEST(Dyna3dWriters, TextInUnreadColumnsIsOneWarningNamingThem) {
 
 TEST(Dyna3dWriters, SlidingInterfaceTypesAreRefusedByName) {
   const std::string deck = read_text(source_path("decks/two_bars.dyn"));
-  const std::string card = "       4       4   30.0000e+00";
+  const std::string card = "       4       4    30.0000e+00";
   ASSERT_NE(deck.find(card), std::string::npos);
   const char* names[] = {"", "1 sliding only", "2 tied", "", "4 single surface", "5 nodes to surface", "6 nodes tied to surface",
                          "7 shell edge tied to surface", "8 spot weld", "9 tiebreak"};
   for (int type = 1; type <= 9; ++type) {
     if (type == 3 || type == 4) continue;  // (4: single surface, read)
     std::string s = deck;
-    s.replace(s.find(card), card.size(), "       4       4" + I(type, 4) + "0.0000e+00");
+    s.replace(s.find(card), card.size(), "       4       4" + I(type, 5) + "0.0000e+00");
     Model m;
     Diagnostics d;
     EXPECT_FALSE(read_string(s, m, d));
@@ -103,7 +108,7 @@ TEST(Dyna3dWriters, SlidingInterfaceTypesAreRefusedByName) {
   }
   {  // type 4 (single surface) takes its NSS segments only: NMS must be 0
     std::string s = deck;
-    s.replace(s.find(card), card.size(), "       4       4   40.0000e+00");
+    s.replace(s.find(card), card.size(), "       4       4    40.0000e+00");
     Model m;
     Diagnostics d;
     EXPECT_FALSE(read_string(s, m, d));
@@ -112,7 +117,7 @@ TEST(Dyna3dWriters, SlidingInterfaceTypesAreRefusedByName) {
   }
   {  // type 4 with NSS = the 8 segment cards and NMS = 0: one surface of 8 segments, one pass
     std::string s = deck;
-    s.replace(s.find(card), card.size(), "       8       0   40.0000e+00");
+    s.replace(s.find(card), card.size(), "       8       0    40.0000e+00");
     Model m;
     Diagnostics d;
     ASSERT_TRUE(read_string(s, m, d)) << all_messages(d);
