@@ -138,9 +138,12 @@ int mili_nodes_per_element(int sc) {
 }
 
 bool MiliReader::is_mili_file(const std::string& path) {
+    // "mili", then the file version, directory version (1..3) and endian flag (1, 2) as bytes:
+    // a d3plot whose title starts with "mili" has text there
     std::ifstream in(path, std::ios::binary);
-    char m[4] = {};
-    return in && in.read(m, 4) && std::memcmp(m, "mili", 4) == 0;
+    char m[7] = {};
+    return in && in.read(m, 7) && std::memcmp(m, "mili", 4) == 0 && m[4] >= 1 && m[4] <= 3 && m[5] >= 1 &&
+           m[5] <= 3 && (m[6] == 1 || m[6] == 2);
 }
 
 int MiliReader::find_class(const std::string& name) const {
@@ -840,7 +843,9 @@ void MiliReader::build_geometry() {
     g.x0 = x0_;
     const std::int64_t nn = static_cast<std::int64_t>(x0_.size() / 3);
     if (node_cls_ >= 0) g.node_user_ids = classes_[static_cast<std::size_t>(node_cls_)].labels;
-    int nmat = mat_cls_ >= 0 ? static_cast<int>(std::min<std::int64_t>(classes_[static_cast<std::size_t>(mat_cls_)].count, 1 << 20)) : 0;
+    // materials: those of the elements drawn (DYNA3D numbers its sliding interfaces' sides
+    // as further materials; the d3plot of the same model has none of them)
+    int nmat = 0;
     for (std::size_t ci = 0; ci < classes_.size(); ++ci) {
         const MiliClass& c = classes_[ci];
         const int sc = c.superclass;
@@ -889,6 +894,7 @@ void MiliReader::build_geometry() {
             ids->push_back(c.labels[static_cast<std::size_t>(e)]);
         }
     }
+    if (nmat == 0 && mat_cls_ >= 0) nmat = static_cast<int>(classes_[static_cast<std::size_t>(mat_cls_)].count);
     g.num_materials = nmat;
     bool titled = false;
     for (int m = 1; m <= nmat; ++m) {
@@ -897,6 +903,10 @@ void MiliReader::build_geometry() {
     }
     if (!titled) g.part_titles.clear();
     layout_ = PlotLayout{};
+    // beam integration points (an element-set array of stresses, as DYNA3D's es_1a): the
+    // d3plot point blocks of 5 (axial stress sx, shear stresses sxy and szx, plastic strain,
+    // axial strain: none)
+    for (const auto& bc : beam_cls_) layout_.beam_points = std::max(layout_.beam_points, points(bc.first, "sx"));
     if (!shell_cls_.empty()) {
         layout_.layers = 3;
         layout_.layer_words = 7;
@@ -980,13 +990,17 @@ PlotState MiliReader::state(int i) const {
         status(hex_cls_, static_cast<std::size_t>(g.num_hexes()), s.alive);
     }
     if (g.num_beams() > 0) {
-        s.beam_vars.assign(kBeamWords * static_cast<std::size_t>(g.num_beams()), 0.0);
+        const int words = kBeamWords + 5 * layout_.beam_points;
+        s.beam_vars.assign(static_cast<std::size_t>(words) * static_cast<std::size_t>(g.num_beams()), 0.0);
         const char* res[kBeamWords] = {"axf", "sfs", "sft", "ms", "mt", "tor"};
         for (const auto& [c, first] : beam_cls_) {
             const std::size_t n = static_cast<std::size_t>(classes_[static_cast<std::size_t>(c)].count);
-            std::vector<double> b(kBeamWords * n, 0.0);
-            for (int j = 0; j < kBeamWords; ++j) get(c, res[j], "", -1, b, kBeamWords, j);
-            std::copy(b.begin(), b.end(), s.beam_vars.begin() + kBeamWords * static_cast<std::ptrdiff_t>(first));
+            std::vector<double> b(static_cast<std::size_t>(words) * n, 0.0);
+            for (int j = 0; j < kBeamWords; ++j) get(c, res[j], "", -1, b, words, j);
+            const char* pt[4] = {"sx", "sxy", "szx", "eps"};
+            for (int p = 0; p < std::min(layout_.beam_points, points(c, "sx")); ++p)
+                for (int j = 0; j < 4; ++j) get(c, pt[j], "", p, b, words, kBeamWords + 5 * p + j);
+            std::copy(b.begin(), b.end(), s.beam_vars.begin() + words * static_cast<std::ptrdiff_t>(first));
         }
         status(beam_cls_, static_cast<std::size_t>(g.num_beams()), s.beam_alive);
     }

@@ -93,7 +93,8 @@ struct MiliSubrecord {
 
 class MiliReader {
 public:
-    // True when the file starts with the Mili magic "mili" (content, not the name, decides).
+    // True when the file starts with the Mili magic "mili" and a plausible file version,
+    // directory version and endian flag (content, not the name, decides).
     static bool is_mili_file(const std::string& path);
 
     // Opens NAMEA (path of the A file; a path not ending in "A" whose "A" sibling exists is
@@ -122,6 +123,10 @@ public:
     // file order is taken.  Returns false when no subrecord of the class has the slot.
     bool result(int state, int cls, const std::string& leaf, std::vector<double>& out,
                 const std::string& container = "", int point = -1) const;
+    // Whether result() finds the slot.
+    bool has_result(int cls, const std::string& leaf, const std::string& container = "", int point = -1) const {
+        return cls >= 0 && cls < static_cast<int>(classes_.size()) && !matches(cls, leaf, container, point).empty();
+    }
     // Array sizes a leaf appears with in a class (the integration points), 0 if outside arrays.
     int points(int cls, const std::string& leaf, const std::string& container = "") const;
 
@@ -131,6 +136,8 @@ public:
     // state: time, node positions, velocities, accelerations, solid stresses and plastic
     // strain, shell layers (mid, inner, outer), resultants, thickness, strains, beam
     // resultants, element status, the global and per-material energies and velocities.
+    // Materials: 1 .. the largest material of an element drawn (contact-segment materials,
+    // DYNA3D's numbers for the sides of sliding interfaces, are left out).
     const PlotGeometry& geometry() const { return geom_; }
     const PlotLayout& layout() const { return layout_; }
     int num_states() const { return static_cast<int>(smaps_.size()); }

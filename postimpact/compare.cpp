@@ -135,6 +135,77 @@ std::string g(double v) {
     return b;
 }
 
+// B's state between states s0 and s1 at weight w (0: s0), every value linear in time; the
+// deletion flags of the nearer state.
+impact3d::PlotState interpolate(const impact3d::PlotState& s0, const impact3d::PlotState& s1, double w) {
+    impact3d::PlotState s = w < 0.5 ? s0 : s1;
+    auto lerp = [w](double& out, double a, double b) { out = a + w * (b - a); };
+    auto vec = [&](std::vector<double>& out, const std::vector<double>& a, const std::vector<double>& b) {
+        if (a.size() != b.size()) return;
+        out.resize(a.size());
+        for (std::size_t k = 0; k < a.size(); ++k) lerp(out[k], a[k], b[k]);
+    };
+    lerp(s.time, s0.time, s1.time);
+    lerp(s.kinetic_energy, s0.kinetic_energy, s1.kinetic_energy);
+    lerp(s.internal_energy, s0.internal_energy, s1.internal_energy);
+    lerp(s.total_energy, s0.total_energy, s1.total_energy);
+    for (std::size_t k = 0; k < 3; ++k) lerp(s.velocity[k], s0.velocity[k], s1.velocity[k]);
+    vec(s.mat_internal_energy, s0.mat_internal_energy, s1.mat_internal_energy);
+    vec(s.mat_kinetic_energy, s0.mat_kinetic_energy, s1.mat_kinetic_energy);
+    vec(s.mat_velocity, s0.mat_velocity, s1.mat_velocity);
+    vec(s.mat_mass, s0.mat_mass, s1.mat_mass);
+    vec(s.mat_hourglass_energy, s0.mat_hourglass_energy, s1.mat_hourglass_energy);
+    vec(s.rigid_wall_forces, s0.rigid_wall_forces, s1.rigid_wall_forces);
+    vec(s.interface_forces, s0.interface_forces, s1.interface_forces);
+    vec(s.coords, s0.coords, s1.coords);
+    vec(s.vel, s0.vel, s1.vel);
+    vec(s.acc, s0.acc, s1.acc);
+    vec(s.stress, s0.stress, s1.stress);
+    vec(s.eps, s0.eps, s1.eps);
+    vec(s.history, s0.history, s1.history);
+    vec(s.temperature, s0.temperature, s1.temperature);
+    vec(s.solid_vars, s0.solid_vars, s1.solid_vars);
+    vec(s.tshell_vars, s0.tshell_vars, s1.tshell_vars);
+    vec(s.beam_vars, s0.beam_vars, s1.beam_vars);
+    vec(s.shell_vars, s0.shell_vars, s1.shell_vars);
+    return s;
+}
+
+// The state of B compared with A's state i: (first, second, weight of the second); first < 0
+// when A's time lies outside B's time span.
+struct StateMatch {
+    int a = 0, b0 = -1, b1 = -1;
+    double w = 0;
+};
+
+std::vector<StateMatch> match_states(Database& A, Database& B, bool by_time) {
+    std::vector<StateMatch> m;
+    const int na = A.num_states(), nb = B.num_states();
+    if (!by_time) {
+        for (int i = 0; i < std::min(na, nb); ++i) m.push_back({i, i, i, 0.0});
+        return m;
+    }
+    if (na == 0 || nb == 0) return m;
+    // times equal to single precision (Mili writes float times) are the same time
+    const double eps = 1e-6 * std::max({std::fabs(A.time(na - 1)), std::fabs(B.time(nb - 1)), 1e-300});
+    for (int i = 0; i < na; ++i) {
+        const double t = A.time(i);
+        int j = 0;
+        while (j < nb && B.time(j) < t - eps) ++j;
+        if (j == nb) {
+            m.push_back({i, -1, -1, 0.0});
+        } else if (std::fabs(B.time(j) - t) <= eps) {
+            m.push_back({i, j, j, 0.0});
+        } else if (j == 0) {
+            m.push_back({i, -1, -1, 0.0});
+        } else {
+            const double t0 = B.time(j - 1), t1 = B.time(j);
+            m.push_back({i, j - 1, j, t1 > t0 ? (t - t0) / (t1 - t0) : 0.0});
+        }
+    }
+    return m;
+}
+
 std::string where(const Diff& d, Database& db) {
     std::string s = "state " + std::to_string(d.state + 1) + " (t " + g(db.time(d.state)) + ")";
     if (!d.what.empty()) s += " " + d.what + " " + std::to_string(d.id);
@@ -177,10 +248,28 @@ int compare_databases(const std::string& pa, const std::string& pb, const Compar
     res.states_b = B->num_states();
     const auto& ga = A->geometry();
     const auto& gb = B->geometry();
-    out << "compare: A = " << pa << " (" << A->num_states() << " states)\n"
-        << "         B = " << pb << " (" << B->num_states() << " states)\n";
-    if (ga.num_nodes() != gb.num_nodes() || ga.num_hexes() != gb.num_hexes() || ga.num_materials != gb.num_materials ||
-        ga.num_tshells() != gb.num_tshells() || ga.num_beams() != gb.num_beams() || ga.num_shells() != gb.num_shells()) {
+    const bool by_time = opt.by_time || A->is_mili() || B->is_mili();
+    out << "compare: A = " << pa << " (" << A->num_states() << " states" << (A->is_mili() ? ", Mili" : "") << ")\n"
+        << "         B = " << pb << " (" << B->num_states() << " states" << (B->is_mili() ? ", Mili" : "") << ")\n";
+    // by time: a family only one database has is left out
+    auto count = [](const impact3d::PlotGeometry& g, int f) {
+        const int n[4] = {g.num_hexes(), g.num_tshells(), g.num_beams(), g.num_shells()};
+        return n[f];
+    };
+    bool skip_family[4] = {false, false, false, false};
+    if (by_time) {
+        const char* names[4] = {"solids", "thick shells", "beams", "shells"};
+        for (int f = 0; f < 4; ++f) {
+            const int ca = count(ga, f), cb = count(gb, f);
+            if ((ca == 0) == (cb == 0)) continue;
+            skip_family[f] = true;
+            out << "compare: note: " << (ca ? "A" : "B") << " has " << std::max(ca, cb) << " " << names[f] << ", "
+                << (ca ? "B" : "A") << " none: not compared\n";
+        }
+    }
+    auto same_count = [&](int f) { return skip_family[f] || count(ga, f) == count(gb, f); };
+    if (ga.num_nodes() != gb.num_nodes() || !same_count(0) || (!by_time && ga.num_materials != gb.num_materials) ||
+        !same_count(1) || !same_count(2) || !same_count(3)) {
         out << "compare: the meshes differ: A has " << ga.num_nodes() << " nodes, " << ga.num_hexes()
             << " solids, " << ga.num_materials << " materials; B has " << gb.num_nodes() << ", "
             << gb.num_hexes() << ", " << gb.num_materials;
@@ -205,6 +294,10 @@ int compare_databases(const std::string& pa, const std::string& pb, const Compar
         std::vector<std::string> unmatched_elems;
         for (int e = 0; e < num_elements(ga); ++e) {
             const ElementRef r = element_ref(ga, e);
+            if (skip_family[static_cast<int>(r.family)]) {
+                elem_b[static_cast<std::size_t>(e)] = -1;
+                continue;
+            }
             const auto it = b_elems.find({static_cast<int>(r.family), element_user_id(ga, e)});
             elem_b[static_cast<std::size_t>(e)] = it == b_elems.end() ? -1 : it->second;
             if (it == b_elems.end()) unmatched_elems.push_back(std::string(family_name(r.family)) + " " + std::to_string(element_user_id(ga, e)));
@@ -227,6 +320,7 @@ int compare_databases(const std::string& pa, const std::string& pb, const Compar
         // connectivity through the matches: A's element nodes, as B nodes, are B's element nodes
         bool same = true;
         for (int e = 0; e < num_elements(ga) && same; ++e) {
+            if (elem_b[static_cast<std::size_t>(e)] < 0) continue;
             int ca = 0, cb = 0;
             const int* na = element_nodes(ga, e, ca);
             const int* nb = element_nodes(gb, elem_b[static_cast<std::size_t>(e)], cb);
@@ -244,10 +338,22 @@ int compare_databases(const std::string& pa, const std::string& pb, const Compar
     };
     const char* xyz[3] = {"x", "y", "z"};
     const char* sc[6] = {"sxx", "syy", "szz", "sxy", "syz", "szx"};
-    const int ns = std::min(A->num_states(), B->num_states());
-    for (int i = 0; i < ns; ++i) {
+    const std::vector<StateMatch> matches = match_states(*A, *B, by_time);
+    int ns = 0, interpolated = 0, outside_span = 0;
+    for (const StateMatch& m : matches) {
+        if (m.b0 < 0) {
+            ++outside_span;
+            continue;
+        }
+        ++ns;
+        const int i = m.a;
         const impact3d::PlotState sa = A->state(i);  // copies: the cache may be trimmed
-        const impact3d::PlotState sb = B->state(i);
+        impact3d::PlotState sb = B->state(m.b0);
+        if (m.b1 != m.b0) {
+            ++interpolated;
+            const impact3d::PlotState s1 = B->state(m.b1);
+            sb = interpolate(sb, s1, m.w);
+        }
         add(F("time"), Diff{0, sa.time, sb.time, 0, 0, i, 0, "", ""}, keep);
         auto nodal = [&](const char* field, const std::vector<double>& a, const std::vector<double>& b, int per) {
             if (a.empty() || b.empty() || a.size() != b.size()) return;
@@ -261,15 +367,16 @@ int compare_databases(const std::string& pa, const std::string& pb, const Compar
         nodal("acc", sa.acc, sb.acc, 3);
         nodal("temp", sa.temperature, sb.temperature, 1);
         const std::size_t nh = static_cast<std::size_t>(ga.num_hexes());
-        if (sa.stress.size() == sb.stress.size())
+        if (sa.stress.size() == sb.stress.size() && !skip_family[0])
             for (std::size_t k = 0; k < sa.stress.size(); ++k)
                 add(F("stress"), Diff{0, sa.stress[k], sb.stress[6 * static_cast<std::size_t>(elem_b[k / 6]) + k % 6], 0, 0, i, A->element_id(static_cast<int>(k / 6)), "elem", sc[k % 6]}, keep);
-        if (sa.eps.size() == sb.eps.size())
+        if (sa.eps.size() == sb.eps.size() && !skip_family[0])
             for (std::size_t k = 0; k < sa.eps.size(); ++k)
                 add(F("eps"), Diff{0, sa.eps[k], sb.eps[static_cast<std::size_t>(elem_b[k])], 0, 0, i, A->element_id(static_cast<int>(k)), "elem", ""}, keep);
         // thick shells, beams, shells: middle-surface stresses and EPS (beams: mean over the points)
         for (int e = static_cast<int>(nh); e < num_elements(ga); ++e) {
             const int eb = elem_b[static_cast<std::size_t>(e)];
+            if (eb < 0) continue;
             const std::string what = family_name(element_ref(ga, e).family);
             for (int c = 0; c < 7; ++c) {
                 Quantity q;
@@ -309,6 +416,7 @@ int compare_databases(const std::string& pa, const std::string& pb, const Compar
                 add(F("force"), Diff{0, sa.interface_forces[k], sb.interface_forces[k], 0, 0, i, static_cast<int>(k / 3 + 1), "interface", xyz[k % 3]}, keep);
         // element deletion flags must agree (every family)
         for (int e = 0; e < num_elements(ga); ++e) {
+            if (elem_b[static_cast<std::size_t>(e)] < 0) continue;
             const bool la = element_alive(sa, ga, e), lb = element_alive(sb, gb, elem_b[static_cast<std::size_t>(e)]);
             if (la != lb)
                 add(F("eps"), Diff{0, la ? 1.0 : 0.0, lb ? 1.0 : 0.0, 0, 0, i, A->element_id(e),
@@ -359,7 +467,16 @@ int compare_databases(const std::string& pa, const std::string& pb, const Compar
     }
     int rc = 0;
     out << "\n";
-    if (A->num_states() != B->num_states()) {
+    if (by_time) {
+        out << "states: matched by time: " << ns << " of A's " << A->num_states() << " (" << interpolated
+            << " interpolated between two of B's " << B->num_states() << ")";
+        if (outside_span > 0) out << "; " << outside_span << " outside B's time span, not compared";
+        out << "\n";
+        if (ns == 0) {
+            out << "compare: no state of A lies in B's time span\nresult: NOT COMPARABLE\n";
+            return not_comparable();
+        }
+    } else if (A->num_states() != B->num_states()) {
         out << "states: A has " << A->num_states() << ", B has " << B->num_states() << " (the first " << ns
             << " compared)\n";
         rc = 1;

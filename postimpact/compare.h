@@ -31,6 +31,14 @@ struct Tolerances {
 struct CompareOptions {
     Tolerances tol;
     int report = 10;  // largest out-of-tolerance differences listed
+    // States matched by time instead of by number: each state of A is compared with B's state
+    // at the same time, interpolated linearly between B's two neighbouring states when B has
+    // none at that time (states of A outside B's time span are left out and counted).  A family
+    // of elements only one of the databases has is left out (noted), and the numbers of
+    // materials may differ (the materials both have are compared).  On by itself when either
+    // database is a Mili database (DYNA3D's runs against ours: other output times, contact
+    // segments, DYNA3D's interface materials).
+    bool by_time = false;
 };
 
 // What a comparison found, for programs (the suite report, suite.h): one row per field and the
@@ -63,8 +71,9 @@ struct CompareResult {
 // beams: the stresses and EPS at the middle surface (beams: axial and shear stresses, plastic
 // strain), element deletion flags of every family.
 // Returns 0 when every compared value is within tolerance and the databases have the same
-// states, 1 when not, 2 when they cannot be compared (unreadable, different node or element
-// user ids, different numbers of parts).
+// states (by time: every state of A in B's time span), 1 when not, 2 when they cannot be
+// compared (unreadable, different node or element user ids, different numbers of parts; by
+// time: no state of A in B's time span).
 int compare_databases(const std::string& a, const std::string& b, const CompareOptions& opt,
                       std::ostream& out, CompareResult* result = nullptr);
 

@@ -1,22 +1,30 @@
-// A d3plot family opened for post-processing: the reader, user id lookup and a state cache.
+// A plot database opened for post-processing: a d3plot family (common/plot_database) or a
+// Mili database (common/mili_database, DYNA3D's own), chosen by the file's content; user id
+// lookup and a state cache.
 #pragma once
 
 #include <map>
+#include <memory>
 #include <string>
 #include <unordered_map>
 
+#include "common/mili_database.h"
 #include "common/plot_database.h"
 
 namespace postimpact {
 
 class Database {
 public:
-    explicit Database(const std::string& root);  // throws std::runtime_error
+    // root: a d3plot root file, or a Mili A file (NAMEA, or its base name NAME when NAMEA
+    // exists).  Throws std::runtime_error.
+    explicit Database(const std::string& root);
     const std::string& root() const { return root_; }
-    const impact3d::PlotGeometry& geometry() const { return reader_.geometry(); }
-    const impact3d::PlotLayout& layout() const { return reader_.layout(); }
-    int num_states() const { return reader_.num_states(); }
-    double time(int i) const { return reader_.time(i); }
+    bool is_mili() const { return mili_ != nullptr; }
+    const impact3d::MiliReader* mili() const { return mili_.get(); }
+    const impact3d::PlotGeometry& geometry() const { return mili_ ? mili_->geometry() : reader_.geometry(); }
+    const impact3d::PlotLayout& layout() const { return mili_ ? mili_->layout() : reader_.layout(); }
+    int num_states() const { return mili_ ? mili_->num_states() : reader_.num_states(); }
+    double time(int i) const { return mili_ ? mili_->time(i) : reader_.time(i); }
     const impact3d::PlotState& state(int i);  // 0-based, cached
 
     int node_id(int index) const;      // user id of a 0-based node index
@@ -31,6 +39,7 @@ public:
 private:
     std::string root_;
     impact3d::PlotReader reader_;
+    std::unique_ptr<impact3d::MiliReader> mili_;
     std::map<int, impact3d::PlotState> cache_;
     std::size_t cache_bytes_ = 0;
     std::unordered_map<int, int> node_lookup_, elem_lookup_;

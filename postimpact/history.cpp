@@ -56,11 +56,16 @@ std::string var_label(const HistoryCurve& c, const Database& db) {
                    std::to_string(c.id) + " " + v;
         case HistoryCurve::Kind::Wall: return "wall " + std::to_string(c.id) + " " + v;
         case HistoryCurve::Kind::Interface: return "interface " + std::to_string(c.id) + " " + v;
+        case HistoryCurve::Kind::Mili: {
+            const auto bar = v.find('|');
+            return v.substr(0, bar) + " " + std::to_string(c.id) + " " + v.substr(bar + 1);
+        }
     }
     return v;
 }
 
 Dim var_dim(const HistoryCurve& c) {
+    if (c.kind == HistoryCurve::Kind::Mili) return Dim::None;
     if (c.kind == HistoryCurve::Kind::Node || c.kind == HistoryCurve::Kind::Element) {
         Quantity q;
         find_quantity(c.var, q);
@@ -74,6 +79,32 @@ Dim var_dim(const HistoryCurve& c) {
 }
 
 double at(const std::vector<double>& v, std::size_t i) { return i < v.size() ? v[i] : 0.0; }
+
+// LEAF[:CONTAINER][@POINT] -> its parts (point 0-based, -1 when not given); false if malformed
+bool split_mili_var(const std::string& v, std::string& leaf, std::string& container, int& point) {
+    std::string rest = v;
+    point = -1;
+    if (const auto at_ = rest.find('@'); at_ != std::string::npos) {
+        const std::string p = rest.substr(at_ + 1);
+        if (!is_int(p) || std::stoi(p) < 1) return false;
+        point = std::stoi(p) - 1;
+        rest.erase(at_);
+    }
+    container.clear();
+    if (const auto c = rest.find(':'); c != std::string::npos) {
+        container = rest.substr(c + 1);
+        rest.erase(c);
+    }
+    leaf = rest;
+    return !leaf.empty();
+}
+
+// ordinal of the object with this label in a Mili class, -1 if none
+long long mili_ordinal(const impact3d::MiliReader& r, int cls, int label) {
+    const auto& lab = r.classes()[static_cast<std::size_t>(cls)].labels;
+    const auto it = std::find(lab.begin(), lab.end(), label);
+    return it == lab.end() ? -1 : static_cast<long long>(it - lab.begin());
+}
 
 }  // namespace
 
@@ -154,8 +185,33 @@ std::vector<HistoryCurve> parse_history(const std::vector<std::string>& w, const
             if (i == first)
                 throw std::invalid_argument(g + " " + std::to_string(id) + ": expected a variable" +
                                             (i < w.size() ? ", found '" + w[i] + "'" : std::string()));
+        } else if (g == "mili") {
+            const impact3d::MiliReader* r = db.mili();
+            if (!r) throw std::invalid_argument("mili: the database is not a Mili database");
+            if (i + 2 >= w.size() || !is_int(w[i + 2]))
+                throw std::invalid_argument("mili: expected a class name and a label, then variables");
+            const std::string cls_name = w[i + 1];
+            const int cls = r->find_class(cls_name);
+            if (cls < 0) throw std::invalid_argument("mili: no class '" + cls_name + "' in the database");
+            const int id = std::stoi(w[i + 2]);
+            if (mili_ordinal(*r, cls, id) < 0)
+                throw std::invalid_argument("mili: " + cls_name + " " + std::to_string(id) + " does not exist");
+            i += 3;
+            const std::size_t first = i;
+            static const char* const groups[] = {"energy", "energies", "global", "wall", "interface", "material", "node",
+                                                 "element", "elem", "solid", "tshell", "beam", "shell", "mili"};
+            while (i < w.size() && !in(w[i], groups)) {
+                std::string leaf, container;
+                int point = -1;
+                if (!split_mili_var(w[i], leaf, container, point) || !r->has_result(cls, leaf, container, point))
+                    throw std::invalid_argument("mili " + cls_name + " " + std::to_string(id) + ": no variable '" + w[i] +
+                                                "' in its subrecords (LEAF[:CONTAINER][@POINT])");
+                out.push_back({HistoryCurve::Kind::Mili, id, cls_name + "|" + w[i], -1});
+                ++i;
+            }
+            if (i == first) throw std::invalid_argument("mili " + cls_name + " " + std::to_string(id) + ": expected a variable");
         } else {
-            throw std::invalid_argument("history: expected energy, global, material, node, element (solid, tshell, beam, shell), wall or interface, found '" + g + "'");
+            throw std::invalid_argument("history: expected energy, global, material, node, element (solid, tshell, beam, shell), wall, interface or mili, found '" + g + "'");
         }
     }
     if (out.empty()) throw std::invalid_argument("history: no curve");
@@ -210,6 +266,20 @@ HistoryData extract_history(Database& db, const std::vector<HistoryCurve>& curve
                     else if (c.var == "fy") v = f[1];
                     else if (c.var == "fz") v = f[2];
                     else v = std::sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]);
+                    break;
+                }
+                case HistoryCurve::Kind::Mili: {
+                    const impact3d::MiliReader* r = db.mili();
+                    std::string leaf, container;
+                    int point = -1;
+                    const auto bar = c.var.find('|');
+                    const int cls = r && bar != std::string::npos ? r->find_class(c.var.substr(0, bar)) : -1;
+                    std::vector<double> all;
+                    if (cls >= 0 && split_mili_var(c.var.substr(bar + 1), leaf, container, point) &&
+                        r->result(i, cls, leaf, all, container, point)) {
+                        const long long o = mili_ordinal(*r, cls, c.id);
+                        v = o >= 0 ? all[static_cast<std::size_t>(o)] : 0.0;
+                    }
                     break;
                 }
                 case HistoryCurve::Kind::Node:

@@ -20,13 +20,14 @@ namespace {
 
 const char* kUsage =
     "usage: postimpact [DATABASE] [OPTIONS]        pictures and time histories\n"
-    "       postimpact compare A B [--tol FILE] [--report N]\n"
+    "       postimpact compare A B [--tol FILE] [--report N] [--by-time]\n"
     "       postimpact summary DATABASE [--printed FILE] [-o FILE]\n"
     "       postimpact compare-summary A.txt B.txt [--tol FILE]\n"
     "       postimpact suite SUITE [-o OUT] [-j N] [--deck NAME].. [--impact3d PATH]\n"
     "                        [--no-pictures] [--update | --list | --job NAME|K | --gather]\n"
     "\n"
-    "DATABASE is the root file of a d3plot family (d3plot).  With no -c/-e/-o/--sequence/\n"
+    "DATABASE is the root file of a d3plot family (d3plot) or the A file of a Mili database\n"
+    "(DYNA3D's NAME.pltA, or NAME.plt), told apart by content.  With no -c/-e/-o/--sequence/\n"
     "--frames/--history option the default set is written: eps_first.png, eps_middle.png,\n"
     "eps_last.png (effective plastic strain), eps_sequence.png, energies.png + energies.csv,\n"
     "and forces.png + forces.csv when there are rigid walls or sliding interfaces.\n"
@@ -54,7 +55,9 @@ const char* kUsage =
     "  --timing               print the time each file took\n"
     "  -h, --help   --version\n"
     "compare: --tol FILE (lines 'FIELD REL ABS', FIELD time coords vel acc stress eps\n"
-    "energy force mass default; without it values must be equal), --report N (10).\n"
+    "energy force mass default; without it values must be equal), --report N (10),\n"
+    "--by-time: states matched by time, B interpolated between its states (on by itself\n"
+    "when A or B is a Mili database).  Nodes and elements are matched by user label.\n"
     "summary: 'key value' lines (final length, radius, extents, max plastic strain,\n"
     "energies, cycle count read from --printed FILE, default d3hsp beside DATABASE).\n"
     "compare-summary: two summaries with the tolerances of --tol FILE (lines summary.KEY,\n"
@@ -86,6 +89,8 @@ int run_compare(int argc, char** argv) {
                 return 2;
             }
             opt.report = static_cast<int>(n);
+        } else if (a == "--by-time") {
+            opt.by_time = true;
         } else if (!a.empty() && a[0] == '-') {
             std::cerr << "postimpact compare: unknown option " << a << "\n" << kUsage;
             return 2;

@@ -1,14 +1,21 @@
-// Fuzz harness of the Mili reader (common/mili_database): the input is cut at lines
-// "$$FUZZ-FILE$$" into the A file, the state files NAME00 and NAME01 and the T file.
+// Fuzz harness of the Mili reader (common/mili_database) and of POST-IMPACT's use of it: the
+// input is cut at lines "$$FUZZ-FILE$$" into the A file, the state files NAME00 and NAME01 and
+// the T file.
 #include <algorithm>
 #include <exception>
 #include <filesystem>
 #include <stdexcept>
+#include <sstream>
 #include <string>
+#include <vector>
 
 #include "common/mili_database.h"
 #include "fuzz/harness/fuzz_util.h"
 #include "fuzz/harness/targets.h"
+#include "postimpact/compare.h"
+#include "postimpact/database.h"
+#include "postimpact/history.h"
+#include "postimpact/summary.h"
 
 namespace impact3d_fuzz {
 
@@ -41,6 +48,29 @@ int fuzz_mili_database(const std::uint8_t* data, std::size_t size) {
     } catch (const std::runtime_error&) {
     }
   }
+  // POST-IMPACT on it: histories of the first node and element, a raw variable, summary,
+  // compare with itself (by time)
+  const std::string a = (dir / "db.pltA").string();
+  try {
+    postimpact::Database db(a);
+    if (db.num_states() > 0 && db.geometry().num_nodes() > 0) {
+      std::vector<std::string> words = {"energy", "node", std::to_string(db.node_id(0)), "disp", "az"};
+      if (db.geometry().num_hexes() > 0) words.insert(words.end(), {"element", std::to_string(db.element_id(0)), "vm"});
+      words.insert(words.end(), {"mili", "node", std::to_string(db.node_id(0)), "ux"});
+      try {
+        postimpact::extract_history(db, postimpact::parse_history(words, db));
+      } catch (const std::invalid_argument&) {
+      }
+    }
+  } catch (const std::runtime_error&) {
+    return 0;
+  }
+  std::ostringstream sink;
+  try {
+    postimpact::write_summary(postimpact::summarize(a, ""), sink);
+  } catch (const std::runtime_error&) {
+  }
+  postimpact::compare_databases(a, a, postimpact::CompareOptions{}, sink);
   return 0;
 }
 
