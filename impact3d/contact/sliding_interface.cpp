@@ -31,6 +31,11 @@ namespace {
 
 constexpr double kInteriorTol = 0.01;  // xi/eta tolerance beyond the square (rim round-off)
 constexpr double kDepthFactor = 0.5;   // p_max = 0.5 * min(thickness V/A, sqrt(A)) of the segment
+// an increment of the geometric penetration beyond the node's approach by more than this
+// fraction of its relative motion in the step (plus kExplainedTol p_max of round-off) is a jump
+// of the geometry, not explained by the motion (the curvature's second-order term is far less)
+constexpr double kJumpFraction = 0.1;
+constexpr double kExplainedTol = 1e-6;
 
 // One surface: its segments and per-segment constants.
 struct Surface {
@@ -73,13 +78,16 @@ struct Hit {
   double f[3] = {0, 0, 0};   // total force on the node (normal + friction)
   double fn = 0, pen = 0;
   int evaluations = 0;
-  bool refused = false;  // deeper than penetration growth allows: not caught
+  bool refused = false;  // its penetration jumped beyond its approach (the jump went to its offset)
 };
 
 struct Pass {
   int node_side = 0, seg_side = 1;
   Grid grid;
   std::vector<Hit> hits;  // one per node of surface node_side
+  // 2 per node of surface node_side: last cycle's geometric penetration and the part of it
+  // the node's approach did not explain (the spring's offset); both 0: not in contact
+  std::vector<double> admitted;
 };
 
 struct Interface {
@@ -438,11 +446,6 @@ struct SlidingInterfaces::Impl {
   SearchStats stats;
 
   void node_pass(const Model& m, const State& s, Interface& in, Pass& ps, double dt, double dt_k);
-  // the contact force the node carried in the last cycle (any interface, either side)
-  double prev_force_norm(std::size_t k) const {
-    if (!has_prev) return 0.0;
-    return std::sqrt(prev[3 * k] * prev[3 * k] + prev[3 * k + 1] * prev[3 * k + 1] + prev[3 * k + 2] * prev[3 * k + 2]);
-  }
 };
 
 // Step 2 of a pass: every node of the pass against the segments (parallel, per-node slots).
@@ -458,6 +461,9 @@ void SlidingInterfaces::Impl::node_pass(const Model&, const State& s, Interface&
   for (int q = 0; q < nn; ++q) {
     Hit& hit = ps.hits[std::size_t(q)];
     hit = Hit{};
+    double* adm = &ps.admitted[2 * std::size_t(q)];
+    const double pen_before = adm[0], offset_before = adm[1];
+    adm[0] = adm[1] = 0.0;
     const int node = nodes_sf.nodes[std::size_t(q)];
     const std::size_t k = std::size_t(node);
     const double p[3] = {s.x[k], s.y[k], s.z[k]};
@@ -534,25 +540,36 @@ void SlidingInterfaces::Impl::node_pass(const Model&, const State& s, Interface&
       vrel[1] -= N[a] * s.vy[ka];
       vrel[2] -= N[a] * s.vz[ka];
     }
-    // Penetration can only grow by the node's approach in one step: a node is accepted no
-    // deeper than its last cycle's contact force / k (zero for a node not in contact) plus twice
-    // its approach in the last step, plus 10% of the largest accepted penetration (the turning
-    // of the segment, and nodes that slide in over a segment's edge: 13 um of 353 um in the
-    // crossed cylinders, none refused there).  A node found deeper did not come from outside
-    // this segment (it passed through a deleted face, started inside, or slid under from
-    // another segment) and a spring of that length would throw it out with energy no motion
-    // gave it.
+    // The spring holds the penetration the node's approach explains.  Each cycle the geometric
+    // penetration changes by its increment; the relative normal approach over the step that
+    // brought the node here, -(v^{n-1/2} . n) dt^{n-1/2}, explains it up to the surface's
+    // curvature (second order).  An increment beyond the approach by more than
+    // kJumpFraction |v_rel| dt (plus round-off) is a jump of the geometry, not a motion: the
+    // node started inside, a failed solid's face exposed it, it slid under an edge.  That
+    // unexplained part goes to the node's offset, and the spring holds the penetration less the
+    // offset: a spring of the whole depth would throw the node out with energy no motion gave
+    // it.  The offset shrinks with the geometric depth (never above it) and ends with the
+    // contact.  A node that came in from outside has no offset: the spring is the geometric
+    // depth, as it was.
     const double approach = -(vrel[0] * bh.n[0] + vrel[1] * bh.n[1] + vrel[2] * bh.n[2]);
-    const double pen_before = kpen > 0 ? prev_force_norm(k) / kpen : 0.0;
-    if (pen > pen_before + 2.0 * std::max(approach, 0.0) * s.dt_half + 0.1 * pmax) {
+    const double vrel_mag = std::sqrt(vrel[0] * vrel[0] + vrel[1] * vrel[1] + vrel[2] * vrel[2]);
+    const double jump = (pen - pen_before) - approach * s.dt_half;
+    double offset = offset_before;
+    if (jump > kExplainedTol * pmax + kJumpFraction * vrel_mag * s.dt_half) {
+      offset += jump;
       hit.refused = true;
-      continue;
     }
-    const double fn = kpen * pen;
+    offset = std::min(offset, pen);
+    const double pen_used = pen - offset;
+    adm[0] = pen;
+    adm[1] = offset;
+    // (an offset node whose approach is round-off, sliding along the face, is not in contact)
+    if (!(pen_used > 0) || (offset > 0 && pen_used <= kExplainedTol * pmax)) continue;
+    const double fn = kpen * pen_used;
     hit.seg = best;
     for (int a = 0; a < 4; ++a) hit.N[a] = N[a];
     hit.fn = fn;
-    hit.pen = pen;
+    hit.pen = pen_used;
     for (int i = 0; i < 3; ++i) hit.f[i] = fn * bh.n[i];
     if (in.fs > 0 || in.fd > 0) {
       double inv_meff = s.mass[k] > 0 ? 1.0 / s.mass[k] : 0.0;
@@ -609,6 +626,7 @@ void SlidingInterfaces::initialize(const Model& m, const State& s) {
       ps.seg_side = in.single ? 0 : 1 - ps.node_side;
       allocate_grid(in.surf[ps.seg_side].seg.size(), ps.grid);
       ps.hits.assign(in.surf[ps.node_side].nodes.size(), Hit{});
+      ps.admitted.assign(2 * in.surf[ps.node_side].nodes.size(), 0.0);
     }
     for (int sd = 0; sd < 2; ++sd)
       im.contact_nodes.insert(im.contact_nodes.end(), in.surf[sd].nodes.begin(), in.surf[sd].nodes.end());
@@ -749,11 +767,22 @@ const std::vector<double>& SlidingInterfaces::surface_node_forces(std::size_t i,
 double SlidingInterfaces::max_penetration() const { return impl_->max_pen; }
 SlidingInterfaces::SearchStats SlidingInterfaces::search_stats() const { return impl_->stats; }
 SlidingInterfaces::RestartData SlidingInterfaces::restart_data() const {
-  return {impl_->prev, {}, 0.0, impl_->has_prev};
+  RestartData d{impl_->prev, {}, 0.0, impl_->has_prev};
+  for (const Interface& in : impl_->ifaces)
+    for (int p = 0; p < in.npass; ++p) d.admitted.insert(d.admitted.end(), in.pass[p].admitted.begin(), in.pass[p].admitted.end());
+  return d;
 }
 void SlidingInterfaces::restore(const RestartData& d) {
   impl_->prev = d.forces;
   impl_->has_prev = d.has;
+  // the admitted depths in interface and pass order (a dump without them: none admitted)
+  std::size_t total = 0;
+  for (const Interface& in : impl_->ifaces)
+    for (int p = 0; p < in.npass; ++p) total += in.pass[p].admitted.size();
+  std::size_t at = 0;
+  for (Interface& in : impl_->ifaces)
+    for (int p = 0; p < in.npass; ++p)
+      for (double& a : in.pass[p].admitted) a = d.admitted.size() == total ? d.admitted[at++] : 0.0;
 }
 
 }  // namespace impact3d

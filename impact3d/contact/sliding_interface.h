@@ -50,17 +50,18 @@ class SlidingInterfaces {
   // evaluations, nodes in contact.  The evaluations grow linearly with the nodes.
   struct SearchStats {
     long nodes = 0, evaluations = 0, contacts = 0;
-    long refused = 0;  // nodes found deeper than penetration growth allows (not caught)
+    long refused = 0;  // nodes whose penetration jumped beyond their approach (offset grew)
   };
   SearchStats search_stats() const;
 
-  // A restart dump carries the last cycle's contact forces (3 doubles per node, and a flag):
-  // the penetration-growth rule reads them.  vpred and dtn are kept for the dump's layout and
-  // are no longer used (empty and 0: book_energy() needs no state across cycles; they once
-  // held a predicted v^{n+1/2} whose error for rigid bodies was booked a cycle late).
+  // A restart dump carries the last cycle's contact forces (3 doubles per node, and a flag;
+  // book_energy() needs them) and, for each node of each pass (interfaces and passes in
+  // order), its last geometric penetration and its offset (the part no approach explained).
+  // (The dump's second array once held a predicted v^{n+1/2}; dtn is unused.)
   struct RestartData {
-    std::vector<double> forces, vpred;  // 3 per node (vpred: unused, empty)
-    double dtn = 0;                     // unused
+    std::vector<double> forces;    // 3 per node
+    std::vector<double> admitted;  // 2 per pass node; empty in a dump without contact
+    double dtn = 0;                // unused
     bool has = false;
   };
   RestartData restart_data() const;

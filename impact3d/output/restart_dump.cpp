@@ -157,7 +157,7 @@ void write_restart_dump(const std::string& path, const DumpHeader& h, State& s,
   w(nn); w(ne); w(nr);
   s.visit_dynamic_fields(w);
   w(contact.forces);
-  w(contact.vpred);
+  w(contact.admitted);
   w(contact.dtn);
   std::uint8_t has = contact.has ? 1 : 0;
   w(has);
@@ -217,10 +217,11 @@ void read_restart_dump_state(const std::string& path, State& s,
     r.fail("model size differs from the deck (" + std::to_string(nn) + " nodes, " + std::to_string(ne) + " solids)");
   s.visit_dynamic_fields(r);
   // contact arrays: their sizes are whatever the dump says (empty without interfaces)
-  for (auto* v : {&contact.forces, &contact.vpred}) {
+  for (auto* v : {&contact.forces, &contact.admitted}) {
     std::uint64_t n = 0;
     r.raw(&n, sizeof n);
-    if (n != 0 && n != 3 * std::uint64_t(s.nn)) r.fail("contact array of unexpected size");
+    if (v == &contact.forces && n != 0 && n != 3 * std::uint64_t(s.nn)) r.fail("contact array of unexpected size");
+    if (n > (b.size() - r.pos()) / sizeof(double)) r.fail("contact array longer than the dump");
     v->assign(std::size_t(n), 0.0);
     for (auto& e : *v) r(e);
   }

@@ -137,8 +137,8 @@ TEST(CrossedCylinders, SeedExample3BothStiffnessChoices) {
 // where the other's deleted faces were.  Such a node must not be caught from inside by a
 // neighbouring face with a spring of its whole depth (that threw nodes out at ~1400 m/s and
 // made 4% of energy): penetration grows only by the node's approach.  Checked to 30 us: energy
-// ratio within the project's 2% at every cycle (measured: at most 1.25% off, 1.0037 at 50 us;
-// before the fix 1.10 and 1.04), no node faster than twice the impact speed (measured 21 m/s),
+// ratio within the project's 2% at every cycle (measured: at most 0.85% off, 1.25% with the earlier allowance;
+// no rule: 1.10 and 1.04), no node faster than twice the impact speed (measured 20 m/s),
 // total momentum zero (1e-9 of one body's), mirror-symmetric failures.
 TEST(CrossedCylinders, FailingSolidsAtTheContactKeepTheEnergyBalance) {
   ScopedThreads one(1);
