@@ -857,10 +857,14 @@ void MiliReader::build_geometry() {
             continue;
         }
         if (c.count > (1 << 28)) fail(F, "class " + c.name + ": " + std::to_string(c.count) + " elements");
-        for (int n : c.conn)
-            if (n < 0 || n >= nn)
+        // the nodes used (a beam's third node, the orientation node, may be 0: none)
+        const int used = (sc == kMiliBeam || sc == kMiliTruss) ? 2 : c.nodes_per_element;
+        for (std::size_t k = 0; k < c.conn.size(); ++k) {
+            const int n = c.conn[k];
+            if (static_cast<int>(k % static_cast<std::size_t>(c.nodes_per_element)) < used && (n < 0 || n >= nn))
                 fail(F, "class " + c.name + ": node ordinal " + std::to_string(n + 1) + " in the connectivity, the mesh has " +
                             std::to_string(nn) + " nodes");
+        }
         for (std::int64_t e = 0; e < c.count; ++e) {
             const int m = c.material[static_cast<std::size_t>(e)];
             if (m < 1 || m > (1 << 20))
@@ -919,7 +923,7 @@ void MiliReader::build_geometry() {
     }
 }
 
-PlotState MiliReader::state(int i) const {
+PlotState MiliReader::state(int i, int materials) const {
     const std::vector<char> rec = read_record(i);
     const PlotGeometry& g = geom_;
     PlotState s;
@@ -1052,8 +1056,8 @@ PlotState MiliReader::state(int i) const {
         one("rbvy", s.velocity[1]);
         one("rbvz", s.velocity[2]);
     }
-    if (mat_cls_ >= 0 && g.num_materials > 0) {
-        const std::size_t nm = static_cast<std::size_t>(g.num_materials);
+    if (mat_cls_ >= 0 && materials > 0) {
+        const std::size_t nm = static_cast<std::size_t>(std::min(materials, 1 << 20));
         const std::size_t cm = static_cast<std::size_t>(classes_[static_cast<std::size_t>(mat_cls_)].count);
         auto per_mat = [&](const char* leaf, std::vector<double>& dst, int stride, int slot) {
             std::vector<double> v(cm, 0.0);
@@ -1070,6 +1074,237 @@ PlotState MiliReader::state(int i) const {
         per_mat("mathe", s.mat_hourglass_energy, 1, 0);
     }
     return s;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Several processors merged by label.
+
+std::vector<std::string> MiliDatabase::a_files(const std::string& path) {
+    if (MiliReader::is_mili_file(path)) return {path};
+    if ((path.empty() || path.back() != 'A') && MiliReader::is_mili_file(path + "A")) return {path + "A"};
+    // NAME<digits>A: the processors' A files, by processor number
+    namespace fs = std::filesystem;
+    const fs::path p(path);
+    const fs::path dir = p.has_parent_path() ? p.parent_path() : fs::path(".");
+    const std::string stem = p.filename().string();
+    if (stem.empty()) return {};
+    std::vector<std::pair<long long, std::string>> found;
+    std::error_code ec;
+    for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
+        const std::string name = it->path().filename().string();
+        if (name.size() < stem.size() + 2 || name.compare(0, stem.size(), stem) != 0 || name.back() != 'A') continue;
+        const std::string digits = name.substr(stem.size(), name.size() - stem.size() - 1);
+        if (digits.empty() || digits.size() > 9 ||
+            !std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; }))
+            continue;
+        const std::string full = (dir / name).string();
+        if (MiliReader::is_mili_file(full)) found.emplace_back(std::stoll(digits), full);
+    }
+    std::sort(found.begin(), found.end());
+    std::vector<std::string> out;
+    for (const auto& f : found) out.push_back(f.second);
+    return out;
+}
+
+void MiliDatabase::open(const std::string& path) {
+    *this = MiliDatabase();
+    std::vector<std::string> files = a_files(path);
+    if (files.empty()) files.push_back(path);  // MiliReader names what is missing
+    for (const std::string& f : files) {
+        parts_.push_back(std::make_unique<MiliReader>());
+        parts_.back()->open(f);
+    }
+    num_states_ = parts_[0]->num_states();
+    if (parts_.size() == 1) return;
+    for (std::size_t k = 1; k < parts_.size(); ++k) {
+        const MiliReader& r = *parts_[k];
+        if (r.num_states() != num_states_)
+            fail(files[k], std::to_string(r.num_states()) + " states, processor file " + files[0] + " has " +
+                               std::to_string(num_states_));
+        for (int i = 0; i < num_states_; ++i)
+            if (std::fabs(r.time(i) - parts_[0]->time(i)) > 1e-6 * std::max(std::fabs(parts_[0]->time(i)), 1e-30))
+                fail(files[k], "state " + std::to_string(i + 1) + " at time " + std::to_string(r.time(i)) + ", processor file " +
+                                   files[0] + " at " + std::to_string(parts_[0]->time(i)));
+    }
+    // nodes and elements merged by label, in the order they first appear
+    PlotGeometry& g = geom_;
+    g.title = parts_[0]->geometry().title;
+    std::map<int, int> nodes, hexes, beams, shells;
+    for (const auto& pr : parts_) {
+        const PlotGeometry& q = pr->geometry();
+        node_map_.emplace_back();
+        for (int n = 0; n < q.num_nodes(); ++n) {
+            const int label = q.node_user_ids[static_cast<std::size_t>(n)];
+            auto [it, fresh] = nodes.emplace(label, g.num_nodes());
+            if (fresh) {
+                g.x0.insert(g.x0.end(), q.x0.begin() + 3 * n, q.x0.begin() + 3 * n + 3);
+                g.node_user_ids.push_back(label);
+            }
+            node_map_.back().push_back(it->second);
+        }
+        auto family = [&](const std::vector<int>& qn, const std::vector<int>& qm, const std::vector<int>& qid, int per,
+                          std::vector<int>& gn, std::vector<int>& gm, std::vector<int>& gid, std::map<int, int>& seen,
+                          std::vector<std::vector<int>>& map) {
+            map.emplace_back();
+            for (std::size_t e = 0; e < qm.size(); ++e) {
+                auto [it, fresh] = seen.emplace(qid[e], static_cast<int>(gm.size()));
+                if (fresh) {
+                    for (int j = 0; j < per; ++j) gn.push_back(node_map_.back()[static_cast<std::size_t>(qn[e * per + j])]);
+                    gm.push_back(qm[e]);
+                    gid.push_back(qid[e]);
+                }
+                map.back().push_back(it->second);
+            }
+        };
+        family(q.hex_nodes, q.hex_material, q.hex_user_ids, 8, g.hex_nodes, g.hex_material, g.hex_user_ids, hexes, hex_map_);
+        family(q.beam_nodes, q.beam_material, q.beam_user_ids, 2, g.beam_nodes, g.beam_material, g.beam_user_ids, beams,
+               beam_map_);
+        family(q.shell_nodes, q.shell_material, q.shell_user_ids, 4, g.shell_nodes, g.shell_material, g.shell_user_ids,
+               shells, shell_map_);
+        g.num_materials = std::max(g.num_materials, q.num_materials);
+        if (g.part_titles.empty()) g.part_titles = q.part_titles;
+        const PlotLayout& L = pr->layout();
+        if (L.layers > 0) layout_ = PlotLayout{L.solid_points, L.solid_point_words, L.solid_history, L.layers, L.layer_words,
+                                               L.layer_stress, L.layer_eps, L.layer_history, L.shell_forces,
+                                               L.shell_thickness, L.shell_strain, L.shell_internal_energy, L.tshell_strain,
+                                               layout_.beam_points, layout_.beam_history};
+        layout_.beam_points = std::max(layout_.beam_points, L.beam_points);
+    }
+    if (!g.part_titles.empty()) g.part_titles.resize(static_cast<std::size_t>(g.num_materials));
+}
+
+PlotState MiliDatabase::state(int i) const {
+    if (parts_.size() == 1) return parts_[0]->state(i);
+    const PlotGeometry& g = geom_;
+    PlotState s;
+    const std::size_t nn = static_cast<std::size_t>(g.num_nodes()), nh = static_cast<std::size_t>(g.num_hexes()),
+                      nb = static_cast<std::size_t>(g.num_beams()), ns = static_cast<std::size_t>(g.num_shells());
+    const std::size_t bw = 6 + 5 * static_cast<std::size_t>(layout_.beam_points), sw = 45;
+    // Globals and per-material values: a value every processor writes alike is the model's
+    // (DYNA3D's parallel runs write the kinetic energy so); otherwise each processor writes its
+    // share and they are summed (internal and total energy, material values).
+    std::vector<PlotState> qs;
+    for (const auto& pr : parts_) qs.push_back(pr->state(i, g.num_materials));
+    auto merged = [&](auto get) {
+        double sum = 0.0;
+        bool alike = true;
+        for (const PlotState& q : qs) {
+            sum += get(q);
+            alike = alike && get(q) == get(qs[0]);
+        }
+        return alike ? get(qs[0]) : sum;
+    };
+    for (std::size_t p = 0; p < parts_.size(); ++p) {
+        const PlotState& q = qs[p];
+        if (p == 0) {
+            s.time = q.time;
+            s.coords = g.x0;
+            s.vel.assign(3 * nn, 0.0);
+            if (!q.acc.empty()) s.acc.assign(3 * nn, 0.0);
+            s.stress.assign(6 * nh, 0.0);
+            s.eps.assign(nh, 0.0);
+            s.beam_vars.assign(bw * nb, 0.0);
+            s.shell_vars.assign(sw * ns, 0.0);
+            s.mat_internal_energy.assign(static_cast<std::size_t>(g.num_materials), 0.0);
+            s.mat_kinetic_energy = s.mat_hourglass_energy = s.mat_mass = s.mat_internal_energy;
+            s.mat_velocity.assign(3 * static_cast<std::size_t>(g.num_materials), 0.0);
+        }
+        const std::vector<int>& nm = node_map_[p];
+        for (std::size_t n = 0; n < nm.size(); ++n)
+            for (std::size_t j = 0; j < 3; ++j) {
+                const std::size_t a = 3 * static_cast<std::size_t>(nm[n]) + j, b = 3 * n + j;
+                if (b < q.coords.size()) s.coords[a] = q.coords[b];
+                if (b < q.vel.size()) s.vel[a] = q.vel[b];
+                if (b < q.acc.size() && a < s.acc.size()) s.acc[a] = q.acc[b];
+            }
+        auto alive = [](std::vector<unsigned char>& out, std::size_t n, const std::vector<unsigned char>& in, std::size_t e,
+                        std::size_t to) {
+            if (in.empty()) return;
+            if (out.empty()) out.assign(n, 1);
+            out[to] = in[e];
+        };
+        const std::vector<int>& hm = hex_map_[p];
+        for (std::size_t e = 0; e < hm.size(); ++e) {
+            const std::size_t to = static_cast<std::size_t>(hm[e]);
+            for (std::size_t j = 0; j < 6 && 6 * e + j < q.stress.size(); ++j) s.stress[6 * to + j] = q.stress[6 * e + j];
+            if (e < q.eps.size()) s.eps[to] = q.eps[e];
+            alive(s.alive, nh, q.alive, e, to);
+        }
+        const std::vector<int>& bm = beam_map_[p];
+        const std::size_t qbw = bm.empty() ? 0 : q.beam_vars.size() / bm.size();
+        for (std::size_t e = 0; e < bm.size(); ++e) {
+            const std::size_t to = static_cast<std::size_t>(bm[e]);
+            for (std::size_t j = 0; j < std::min(bw, qbw); ++j) s.beam_vars[bw * to + j] = q.beam_vars[qbw * e + j];
+            alive(s.beam_alive, nb, q.beam_alive, e, to);
+        }
+        const std::vector<int>& sm = shell_map_[p];
+        for (std::size_t e = 0; e < sm.size(); ++e) {
+            const std::size_t to = static_cast<std::size_t>(sm[e]);
+            for (std::size_t j = 0; j < sw && sw * e + j < q.shell_vars.size(); ++j) s.shell_vars[sw * to + j] = q.shell_vars[sw * e + j];
+            alive(s.shell_alive, ns, q.shell_alive, e, to);
+        }
+    }
+    s.kinetic_energy = merged([](const PlotState& q) { return q.kinetic_energy; });
+    s.internal_energy = merged([](const PlotState& q) { return q.internal_energy; });
+    s.total_energy = merged([](const PlotState& q) { return q.total_energy; });
+    for (std::size_t j = 0; j < 3; ++j) s.velocity[j] = merged([j](const PlotState& q) { return q.velocity[j]; });
+    auto at = [](const std::vector<double>& v, std::size_t k) { return k < v.size() ? v[k] : 0.0; };
+    for (std::size_t m = 0; m < s.mat_mass.size(); ++m) {
+        s.mat_internal_energy[m] = merged([&](const PlotState& q) { return at(q.mat_internal_energy, m); });
+        s.mat_kinetic_energy[m] = merged([&](const PlotState& q) { return at(q.mat_kinetic_energy, m); });
+        s.mat_hourglass_energy[m] = merged([&](const PlotState& q) { return at(q.mat_hourglass_energy, m); });
+        s.mat_mass[m] = merged([&](const PlotState& q) { return at(q.mat_mass, m); });
+        for (std::size_t j = 0; j < 3; ++j) {  // alike: the model's; else the mass-weighted mean
+            const std::size_t k = 3 * m + j;
+            bool alike = true;
+            double momentum = 0.0;
+            for (const PlotState& q : qs) {
+                alike = alike && at(q.mat_velocity, k) == at(qs[0].mat_velocity, k);
+                momentum += at(q.mat_mass, m) * at(q.mat_velocity, k);
+            }
+            s.mat_velocity[k] = alike ? at(qs[0].mat_velocity, k) : s.mat_mass[m] > 0 ? momentum / s.mat_mass[m] : 0.0;
+        }
+    }
+    return s;
+}
+
+bool MiliDatabase::locate(const std::string& cls_name, int label, int& part, int& cls, std::int64_t& ordinal) const {
+    for (std::size_t p = 0; p < parts_.size(); ++p) {
+        const int c = parts_[p]->find_class(cls_name);
+        if (c < 0) continue;
+        const auto& lab = parts_[p]->classes()[static_cast<std::size_t>(c)].labels;
+        const auto it = std::find(lab.begin(), lab.end(), label);
+        if (it == lab.end()) continue;
+        part = static_cast<int>(p);
+        cls = c;
+        ordinal = it - lab.begin();
+        return true;
+    }
+    return false;
+}
+
+bool MiliDatabase::has_object(const std::string& cls_name, int label) const {
+    int p = 0, c = 0;
+    std::int64_t o = 0;
+    return locate(cls_name, label, p, c, o);
+}
+
+bool MiliDatabase::has_result(const std::string& cls_name, const std::string& leaf, const std::string& container,
+                              int point) const {
+    for (const auto& pr : parts_)
+        if (pr->has_result(pr->find_class(cls_name), leaf, container, point)) return true;
+    return false;
+}
+
+bool MiliDatabase::result(int state, const std::string& cls_name, int label, const std::string& leaf, double& value,
+                          const std::string& container, int point) const {
+    int p = 0, c = 0;
+    std::int64_t o = 0;
+    if (!locate(cls_name, label, p, c, o)) return false;
+    std::vector<double> all;
+    if (!parts_[static_cast<std::size_t>(p)]->result(state, c, leaf, all, container, point)) return false;
+    value = all[static_cast<std::size_t>(o)];
+    return true;
 }
 
 }  // namespace impact3d

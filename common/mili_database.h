@@ -26,6 +26,7 @@
 
 #include <cstdint>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -142,7 +143,10 @@ public:
     const PlotLayout& layout() const { return layout_; }
     int num_states() const { return static_cast<int>(smaps_.size()); }
     double time(int i) const;
-    PlotState state(int i) const;
+    PlotState state(int i) const { return state(i, geom_.num_materials); }
+    // ... with per-material values for materials 1..materials (those the mat class has; zeros
+    // beyond): a processor of a parallel run draws fewer materials than the model has.
+    PlotState state(int i, int materials) const;
     // Classes not drawn (contact segments, other superclasses), "name (title)".
     const std::vector<std::string>& skipped_classes() const { return skipped_; }
 
@@ -175,6 +179,45 @@ private:
     std::vector<std::pair<int, int>> hex_cls_, beam_cls_, shell_cls_;
     std::vector<double> x0_;        // node coordinates of the node class
     int node_cls_ = -1, mat_cls_ = -1, mesh_cls_ = -1;
+};
+
+// A Mili database of one processor (NAMEA) or of several (a parallel run writes one A file per
+// processor, NAME000A, NAME001A, ..., each with its own state files NAME00000, ...), merged
+// by label: a node the processors share (same label) is one node, elements are matched per
+// family by label (a label two processors both hold takes the first's values), the states are
+// the processors' states, which must have the same count and times.  The interface is
+// MiliReader's d3plot model plus raw results by class name and label.
+class MiliDatabase {
+public:
+    // The A files of the database at path: path itself when it is a Mili A file, NAMEA when it
+    // exists, else the processors' NAME<digits>A in processor order; empty if none.
+    static std::vector<std::string> a_files(const std::string& path);
+    void open(const std::string& path);  // throws std::runtime_error
+
+    int num_parts() const { return static_cast<int>(parts_.size()); }
+    const MiliReader& part(int k) const { return *parts_[static_cast<std::size_t>(k)]; }
+    const PlotGeometry& geometry() const { return parts_.size() == 1 ? parts_[0]->geometry() : geom_; }
+    const PlotLayout& layout() const { return parts_.size() == 1 ? parts_[0]->layout() : layout_; }
+    int num_states() const { return num_states_; }
+    double time(int i) const { return part(0).time(i); }
+    PlotState state(int i) const;
+
+    // Raw results of the object with this label in class cls_name (of the first processor that
+    // holds it): false when no processor has it or the variable (MiliReader::result).
+    bool has_object(const std::string& cls_name, int label) const;
+    bool has_result(const std::string& cls_name, const std::string& leaf, const std::string& container = "",
+                    int point = -1) const;
+    bool result(int state, const std::string& cls_name, int label, const std::string& leaf, double& value,
+                const std::string& container = "", int point = -1) const;
+
+private:
+    bool locate(const std::string& cls_name, int label, int& part, int& cls, std::int64_t& ordinal) const;
+    std::vector<std::unique_ptr<MiliReader>> parts_;
+    PlotGeometry geom_;
+    PlotLayout layout_;
+    int num_states_ = 0;
+    // per processor: merged index of each of its nodes / solids / beams / shells
+    std::vector<std::vector<int>> node_map_, hex_map_, beam_map_, shell_map_;
 };
 
 }  // namespace impact3d

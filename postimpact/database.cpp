@@ -4,17 +4,11 @@
 
 namespace postimpact {
 
-namespace {
-// A Mili database: the file starts with "mili", or NAME is the base of NAMEA that does.
-bool is_mili_database(const std::string& path) {
-    if (impact3d::MiliReader::is_mili_file(path)) return true;
-    return (path.empty() || path.back() != 'A') && impact3d::MiliReader::is_mili_file(path + "A");
-}
-}  // namespace
 
 Database::Database(const std::string& root) : root_(root) {
-    if (is_mili_database(root)) {
-        mili_ = std::make_unique<impact3d::MiliReader>();
+    // a Mili database by its first bytes (the A file, NAMEA, or the processors' A files)
+    if (!impact3d::MiliDatabase::a_files(root).empty()) {
+        mili_ = std::make_unique<impact3d::MiliDatabase>();
         mili_->open(root);
     } else {
         reader_.open(root);

@@ -15,12 +15,13 @@ namespace postimpact {
 
 class Database {
 public:
-    // root: a d3plot root file, or a Mili A file (NAMEA, or its base name NAME when NAMEA
-    // exists).  Throws std::runtime_error.
+    // root: a d3plot root file, or a Mili database: an A file (NAMEA), its base name NAME, or
+    // the base name of a parallel run's processor files NAME000A, NAME001A, ... (merged by
+    // label).  Throws std::runtime_error.
     explicit Database(const std::string& root);
     const std::string& root() const { return root_; }
     bool is_mili() const { return mili_ != nullptr; }
-    const impact3d::MiliReader* mili() const { return mili_.get(); }
+    const impact3d::MiliDatabase* mili() const { return mili_.get(); }
     const impact3d::PlotGeometry& geometry() const { return mili_ ? mili_->geometry() : reader_.geometry(); }
     const impact3d::PlotLayout& layout() const { return mili_ ? mili_->layout() : reader_.layout(); }
     int num_states() const { return mili_ ? mili_->num_states() : reader_.num_states(); }
@@ -39,7 +40,7 @@ public:
 private:
     std::string root_;
     impact3d::PlotReader reader_;
-    std::unique_ptr<impact3d::MiliReader> mili_;
+    std::unique_ptr<impact3d::MiliDatabase> mili_;
     std::map<int, impact3d::PlotState> cache_;
     std::size_t cache_bytes_ = 0;
     std::unordered_map<int, int> node_lookup_, elem_lookup_;

@@ -99,12 +99,6 @@ bool split_mili_var(const std::string& v, std::string& leaf, std::string& contai
     return !leaf.empty();
 }
 
-// ordinal of the object with this label in a Mili class, -1 if none
-long long mili_ordinal(const impact3d::MiliReader& r, int cls, int label) {
-    const auto& lab = r.classes()[static_cast<std::size_t>(cls)].labels;
-    const auto it = std::find(lab.begin(), lab.end(), label);
-    return it == lab.end() ? -1 : static_cast<long long>(it - lab.begin());
-}
 
 }  // namespace
 
@@ -186,15 +180,13 @@ std::vector<HistoryCurve> parse_history(const std::vector<std::string>& w, const
                 throw std::invalid_argument(g + " " + std::to_string(id) + ": expected a variable" +
                                             (i < w.size() ? ", found '" + w[i] + "'" : std::string()));
         } else if (g == "mili") {
-            const impact3d::MiliReader* r = db.mili();
+            const impact3d::MiliDatabase* r = db.mili();
             if (!r) throw std::invalid_argument("mili: the database is not a Mili database");
             if (i + 2 >= w.size() || !is_int(w[i + 2]))
                 throw std::invalid_argument("mili: expected a class name and a label, then variables");
             const std::string cls_name = w[i + 1];
-            const int cls = r->find_class(cls_name);
-            if (cls < 0) throw std::invalid_argument("mili: no class '" + cls_name + "' in the database");
             const int id = std::stoi(w[i + 2]);
-            if (mili_ordinal(*r, cls, id) < 0)
+            if (!r->has_object(cls_name, id))
                 throw std::invalid_argument("mili: " + cls_name + " " + std::to_string(id) + " does not exist");
             i += 3;
             const std::size_t first = i;
@@ -203,7 +195,7 @@ std::vector<HistoryCurve> parse_history(const std::vector<std::string>& w, const
             while (i < w.size() && !in(w[i], groups)) {
                 std::string leaf, container;
                 int point = -1;
-                if (!split_mili_var(w[i], leaf, container, point) || !r->has_result(cls, leaf, container, point))
+                if (!split_mili_var(w[i], leaf, container, point) || !r->has_result(cls_name, leaf, container, point))
                     throw std::invalid_argument("mili " + cls_name + " " + std::to_string(id) + ": no variable '" + w[i] +
                                                 "' in its subrecords (LEAF[:CONTAINER][@POINT])");
                 out.push_back({HistoryCurve::Kind::Mili, id, cls_name + "|" + w[i], -1});
@@ -269,17 +261,13 @@ HistoryData extract_history(Database& db, const std::vector<HistoryCurve>& curve
                     break;
                 }
                 case HistoryCurve::Kind::Mili: {
-                    const impact3d::MiliReader* r = db.mili();
+                    const impact3d::MiliDatabase* r = db.mili();
                     std::string leaf, container;
                     int point = -1;
                     const auto bar = c.var.find('|');
-                    const int cls = r && bar != std::string::npos ? r->find_class(c.var.substr(0, bar)) : -1;
-                    std::vector<double> all;
-                    if (cls >= 0 && split_mili_var(c.var.substr(bar + 1), leaf, container, point) &&
-                        r->result(i, cls, leaf, all, container, point)) {
-                        const long long o = mili_ordinal(*r, cls, c.id);
-                        v = o >= 0 ? all[static_cast<std::size_t>(o)] : 0.0;
-                    }
+                    if (!r || bar == std::string::npos || !split_mili_var(c.var.substr(bar + 1), leaf, container, point) ||
+                        !r->result(i, c.var.substr(0, bar), c.id, leaf, v, container, point))
+                        v = 0.0;
                     break;
                 }
                 case HistoryCurve::Kind::Node:

@@ -286,4 +286,124 @@ TEST(MiliPostimpact, CompareLeavesOutFamiliesOnlyOneDatabaseHas) {
     EXPECT_NE(o.str().find("note: B has 2 shells, A none: not compared"), std::string::npos) << o.str();
 }
 
+// Part of the sample model as one processor of a parallel run: the elements listed, the nodes
+// they use (labels kept); the kinetic and total energy and the model velocity written alike by
+// every processor, the internal energy and the material values as this processor's share
+// (a quarter on the first, three quarters on the second: exact in binary).
+void write_processor(const std::string& base, const PlotGeometry& g, const std::vector<PlotState>& states,
+                     const std::vector<int>& hexes, const std::vector<int>& beams, const std::vector<int>& shells) {
+    PlotGeometry q;
+    q.title = g.title;
+    q.num_materials = g.num_materials;
+    q.part_titles = g.part_titles;
+    std::vector<int> used(static_cast<std::size_t>(g.num_nodes()), -1);
+    auto node = [&](int n) {
+        if (used[static_cast<std::size_t>(n)] < 0) used[static_cast<std::size_t>(n)] = 0;
+        return n;
+    };
+    for (int e : hexes)
+        for (int j = 0; j < 8; ++j) node(g.hex_nodes[static_cast<std::size_t>(8 * e + j)]);
+    for (int e : beams)
+        for (int j = 0; j < 2; ++j) node(g.beam_nodes[static_cast<std::size_t>(2 * e + j)]);
+    for (int e : shells)
+        for (int j = 0; j < 4; ++j) node(g.shell_nodes[static_cast<std::size_t>(4 * e + j)]);
+    std::vector<int> nodes;
+    for (int n = 0; n < g.num_nodes(); ++n)
+        if (used[static_cast<std::size_t>(n)] == 0) {
+            used[static_cast<std::size_t>(n)] = static_cast<int>(nodes.size());
+            nodes.push_back(n);
+            q.x0.insert(q.x0.end(), g.x0.begin() + 3 * n, g.x0.begin() + 3 * n + 3);
+            q.node_user_ids.push_back(g.node_user_ids[static_cast<std::size_t>(n)]);
+        }
+    auto take = [&](const std::vector<int>& list, const std::vector<int>& gn, const std::vector<int>& gm,
+                    const std::vector<int>& gid, int per, std::vector<int>& qn, std::vector<int>& qm, std::vector<int>& qid) {
+        for (int e : list) {
+            for (int j = 0; j < per; ++j) qn.push_back(used[static_cast<std::size_t>(gn[static_cast<std::size_t>(per * e + j)])]);
+            qm.push_back(gm[static_cast<std::size_t>(e)]);
+            qid.push_back(gid[static_cast<std::size_t>(e)]);
+        }
+    };
+    take(hexes, g.hex_nodes, g.hex_material, g.hex_user_ids, 8, q.hex_nodes, q.hex_material, q.hex_user_ids);
+    take(beams, g.beam_nodes, g.beam_material, g.beam_user_ids, 2, q.beam_nodes, q.beam_material, q.beam_user_ids);
+    take(shells, g.shell_nodes, g.shell_material, g.shell_user_ids, 4, q.shell_nodes, q.shell_material, q.shell_user_ids);
+    std::vector<PlotState> qs;
+    for (const PlotState& s : states) {
+        PlotState t;
+        t.time = s.time;
+        t.kinetic_energy = s.kinetic_energy;
+        t.total_energy = s.total_energy;
+        t.velocity = s.velocity;
+        const double share = base.back() == '0' ? 0.25 : 0.75;
+        t.internal_energy = share * s.internal_energy;
+        for (double v : s.mat_internal_energy) t.mat_internal_energy.push_back(share * v);
+        for (double v : s.mat_kinetic_energy) t.mat_kinetic_energy.push_back(share * v);
+        for (int n : nodes)
+            for (int j = 0; j < 3; ++j) {
+                t.coords.push_back(s.coords[static_cast<std::size_t>(3 * n + j)]);
+                t.vel.push_back(s.vel[static_cast<std::size_t>(3 * n + j)]);
+                t.acc.push_back(s.acc[static_cast<std::size_t>(3 * n + j)]);
+            }
+        for (int e : hexes) {
+            t.stress.insert(t.stress.end(), s.stress.begin() + 6 * e, s.stress.begin() + 6 * e + 6);
+            t.eps.push_back(s.eps[static_cast<std::size_t>(e)]);
+            t.alive.push_back(s.alive[static_cast<std::size_t>(e)]);
+        }
+        for (int e : beams) {
+            t.beam_vars.insert(t.beam_vars.end(), s.beam_vars.begin() + 6 * e, s.beam_vars.begin() + 6 * e + 6);
+            t.beam_alive.push_back(s.beam_alive[static_cast<std::size_t>(e)]);
+        }
+        for (int e : shells) {
+            t.shell_vars.insert(t.shell_vars.end(), s.shell_vars.begin() + 45 * e, s.shell_vars.begin() + 45 * e + 45);
+            t.shell_alive.push_back(s.shell_alive[static_cast<std::size_t>(e)]);
+        }
+        qs.push_back(std::move(t));
+    }
+    mili_test::Options o;
+    o.big_endian = base.back() == '1';  // the second processor in the other byte order
+    mili_test::Writer(o).write(base, q, qs);
+}
+
+// A two-processor family (run.plt000A, run.plt001A with their state files), the processors
+// sharing the nodes between solid 11 and solid 12, merged by label: the same as the serial
+// database of the whole model, value for value.
+TEST(MiliPostimpact, TwoProcessorFamilyMergedByLabel) {
+    TempDir d;
+    PlotGeometry g;
+    std::vector<PlotState> states;
+    mili_test::sample_model(g, states, 3);
+    mili_test::Writer(mili_test::Options{}).write(d.str("serial.plt"), g, states);
+    write_processor(d.str("run.plt000"), g, states, {0}, {0, 1}, {});
+    write_processor(d.str("run.plt001"), g, states, {1}, {2}, {0, 1});
+    impact3d::MiliDatabase m;
+    m.open(d.str("run.plt"));
+    ASSERT_EQ(m.num_parts(), 2);
+    EXPECT_EQ(m.part(0).geometry().num_nodes() + m.part(1).geometry().num_nodes(), 12 + 8);  // 8 on both
+    const PlotGeometry& mg = m.geometry();
+    EXPECT_EQ(mg.num_nodes(), 12);
+    EXPECT_EQ(mg.num_hexes(), 2);
+    EXPECT_EQ(mg.num_beams(), 3);
+    EXPECT_EQ(mg.num_shells(), 2);
+    EXPECT_EQ(mg.num_materials, 3);
+    const PlotState s = m.state(2);
+    EXPECT_EQ(s.kinetic_energy, states[2].kinetic_energy);    // written alike: the model's
+    EXPECT_EQ(s.internal_energy, states[2].internal_energy);  // shares: summed
+    EXPECT_EQ(s.mat_kinetic_energy, states[2].mat_kinetic_energy);
+    double v = 0;
+    ASSERT_TRUE(m.result(1, "shell", 32, "sx", v, "stress_out"));  // on the second processor
+    EXPECT_EQ(v, states[1].shell_vars[45 + 14]);
+    EXPECT_FALSE(m.has_object("shell", 33));
+    // POST-IMPACT: the base name opens the family; compare with the serial database: equal
+    Database db(d.str("run.plt"));
+    EXPECT_TRUE(db.is_mili());
+    std::ostringstream o;
+    EXPECT_EQ(compare_databases(d.str("run.plt"), d.str("serial.pltA"), CompareOptions{}, o), 0) << o.str();
+    const auto h = extract_history(db, parse_history({"mili", "beam", "23", "tor", "node", "107", "vz"}, db));
+    EXPECT_EQ(h.series[0].y[2], states[2].beam_vars[2 * 6 + 5]);
+    EXPECT_EQ(h.series[1].y[2], states[2].vel[3 * 6 + 2]);
+    // a processor with a different number of states: refused, naming it
+    fs::remove(d.str("run.plt00101"));
+    write_processor(d.str("run.plt001"), g, {states[0], states[1]}, {1}, {2}, {0, 1});
+    EXPECT_THROW(m.open(d.str("run.plt")), std::runtime_error);
+}
+
 }  // namespace
