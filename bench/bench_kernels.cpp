@@ -5,6 +5,7 @@
 #include <benchmark/benchmark.h>
 #include <omp.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <stdexcept>
 
@@ -18,6 +19,7 @@
 #include "impact3d/solve/element_processing.h"
 #include "impact3d/solve/engine.h"
 #include "impact3d/element/shell_bt.h"
+#include "tests/solve/beam_models.h"
 #include "tests/solve/shell_models.h"
 
 using namespace impact3d;
@@ -243,6 +245,29 @@ void BM_Cycle_ShellPlate(benchmark::State& st) {
   st.SetItemsProcessed(st.iterations() * eng.state().shells.ns);
 }
 BENCHMARK(BM_Cycle_ShellPlate)->Unit(benchmark::kMicrosecond);
+
+// Beams: one whole cycle of a clamped line of 10,000 Hughes-Liu beams (50 mm square steel,
+// swinging), one thread; Arg: the quadrature rule QR (2: 2x2 Gauss, 3: 3x3) x 10 + material type
+// (1 elastic, 3 plastic-kinematic, yielding).  Items: beam-cycles.
+void BM_Cycle_BeamLine(benchmark::State& st) {
+  omp_set_num_threads(1);
+  const int qr = int(st.range(0)) / 10, type = int(st.range(0)) % 10;
+  const int n = 10000;
+  Model m = beam_test::make_beam_line(n, 100.0, beam_test::steel_beam(type, 0.05, 0.05, qr), 1.0);
+  beam_test::clamp_node(m, 0);
+  for (int i = 0; i <= n; ++i) {
+    InitialVelocity iv;
+    iv.first = iv.last = i + 1;
+    iv.v = {0, 0, 100.0 * std::sin(0.05 * i)};
+    m.init_velocities.push_back(iv);
+  }
+  Engine eng(m);
+  eng.initialize();
+  for (int c = 0; c < 20; ++c) eng.step();  // (the plastic line yields from the first cycles)
+  for (auto _ : st) benchmark::DoNotOptimize(eng.step());
+  st.SetItemsProcessed(st.iterations() * eng.state().beams.nb);
+}
+BENCHMARK(BM_Cycle_BeamLine)->Arg(21)->Arg(31)->Arg(23)->Unit(benchmark::kMicrosecond);
 
 }  // namespace
 
