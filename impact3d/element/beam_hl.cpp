@@ -246,3 +246,58 @@ void calc_truss_forces(double area, const MaterialConstants& mc, BeamMaterialKin
 }
 
 }  // namespace impact3d
+
+namespace impact3d {
+
+void calc_beam_bs_forces(const BeamResultantSection& sec, const MaterialConstants& mc, BeamKernelIO& io, double state[6]) {
+  zero_outputs(io);
+  BeamFrames f;
+  io.bad = !beam_frames(io, f, true);
+  if (io.bad) return;
+  double dv[3], dw[3];
+  for (int a = 0; a < 3; ++a) {
+    dv[a] = io.v[1][a] - io.v[0][a];
+    dw[a] = io.w[1][a] - io.w[0][a];
+  }
+  const double L = f.Lm, dt = io.dt;
+  // chord spins about t and s, and the ends' rotation rates relative to the chord
+  const double chord_t = dot(dv, f.sm) / L, chord_s = -dot(dv, f.tm) / L;
+  const double th_t[2] = {dot(io.w[0], f.tm) - chord_t, dot(io.w[1], f.tm) - chord_t};
+  const double th_s[2] = {dot(io.w[0], f.sm) - chord_s, dot(io.w[1], f.sm) - chord_s};
+  const double elong = dot(dv, f.rm), twist = dot(dw, f.rm);
+  const double kt = mc.E * sec.itt / L, ks = mc.E * sec.iss / L;
+  double old[6];
+  for (int k = 0; k < 6; ++k) old[k] = state[k];
+  state[0] += dt * mc.E * sec.area * elong / L;
+  state[1] += dt * mc.G * sec.jt * twist / L;
+  state[2] += dt * ks * (4 * th_s[0] + 2 * th_s[1]);
+  state[3] += dt * ks * (2 * th_s[0] + 4 * th_s[1]);
+  state[4] += dt * kt * (4 * th_t[0] + 2 * th_t[1]);
+  state[5] += dt * kt * (2 * th_t[0] + 4 * th_t[1]);
+  const double rate[6] = {elong, twist, th_s[0], th_s[1], th_t[0], th_t[1]};
+  double work = 0;
+  for (int k = 0; k < 6; ++k) work += 0.5 * (old[k] + state[k]) * rate[k];
+  io.de_ie = work * dt;
+  // end forces and moments at t^{n+1}: axial, torsion, end moments, and the shear couples
+  // that balance them
+  const double N = state[0], T = state[1];
+  const double Qs = -(state[4] + state[5]) / f.L1;  // along s, from the moments about t
+  const double Qt = (state[2] + state[3]) / f.L1;   // along t, from the moments about s
+  for (int a = 0; a < 3; ++a) {
+    const double F = N * f.r1[a] + Qs * f.s1[a] + Qt * f.t1[a];
+    io.f[0][a] = -F;
+    io.f[1][a] = F;
+    io.m[0][a] = -T * f.r1[a] + state[2] * f.s1[a] + state[4] * f.t1[a];
+    io.m[1][a] = T * f.r1[a] + state[3] * f.s1[a] + state[5] * f.t1[a];
+    io.e2[a] = f.s1[a];
+  }
+  io.length = f.L1;
+  io.res[0] = N;
+  io.res[1] = Qs;
+  io.res[2] = Qt;
+  io.res[3] = T;
+  io.res[4] = 0.5 * (state[3] - state[2]);  // the moments at the middle (the ends' mean, signed as the section's)
+  io.res[5] = 0.5 * (state[5] - state[4]);
+}
+
+}  // namespace impact3d

@@ -90,6 +90,17 @@ void calc_beam_hl_forces(const BeamSectionSize& sz, const std::vector<BeamRulePo
                          const MaterialConstants& mc, BeamMaterialKind kind, BeamKernelIO& io,
                          const BeamPointState& st);
 
+// The Belytschko-Schwer resultant beam (ELFORM 2), elastic: co-rotational as the Hughes-Liu
+// beam, Euler-Bernoulli bending from the end rotations relative to the chord (no shear strain):
+// the rates of the end moments (EI/L) (4 th_1 + 2 th_2), (EI/L) (2 th_1 + 4 th_2) with th_i
+// the node's spin less the chord's (about s and t), N' = EA dv.r / L, T' = GJ dw.r / L; the
+// shear forces balance the end moments (Q = (M_1 + M_2) / L).  A single element is exact for a
+// cantilever's end load.  state: N, T, M_s1, M_s2, M_t1, M_t2.
+struct BeamResultantSection {
+  double area = 0, iss = 0, itt = 0, jt = 0;
+};
+void calc_beam_bs_forces(const BeamResultantSection& sec, const MaterialConstants& mc, BeamKernelIO& io, double state[6]);
+
 // The truss (ELFORM 3): axial stress only (one point, area A), forces along the axis, no
 // moments.  sig/eps_p... as one point of BeamPointState.
 void calc_truss_forces(double area, const MaterialConstants& mc, BeamMaterialKind kind, BeamKernelIO& io,

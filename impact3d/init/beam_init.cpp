@@ -1,5 +1,6 @@
 #include "impact3d/init/beam_init.h"
 
+#include <algorithm>
 #include <cmath>
 #include <iterator>
 #include <limits>
@@ -70,7 +71,7 @@ BeamSectionSize beam_section_size(const Model& m, int b) {
 
 double beam_area(const Model& m, int b) {
   const BeamSectionData& sec = m.materials[std::size_t(m.beam_material[std::size_t(b)])].beam_section;
-  if (sec.elform == 3) return sec.area;
+  if (sec.elform != 1) return sec.area;
   return beam_section_properties(beam_section_size(m, b)).area;
 }
 
@@ -99,6 +100,18 @@ bool beam_initial_s_axis(const Model& m, int b, double s[3]) {
 double beam_rotary_inertia(double beam_mass, double length0, const BeamSectionProperties& p) {
   const double rg2 = p.area > 0 ? (p.i_s + p.i_t) / p.area : 0.0;
   return 0.5 * beam_mass * (0.25 * length0 * length0 + rg2);
+}
+
+double resultant_beam_step_scale(const MaterialConstants& mc, const BeamResultantSection& sec, double length0,
+                                 double beam_mass, double node_inertia) {
+  const double L = length0, m = beam_mass, J = node_inertia;
+  const double axial = 4 * mc.E * sec.area / (L * m);
+  const double imax = std::max(sec.iss, sec.itt);
+  const double bending = 12 * mc.E * imax / L * (4 / (L * L * m) + 1 / (2 * J));
+  const double bending2 = 2 * mc.E * imax / (L * J);
+  const double torsion = 2 * mc.G * sec.jt / (L * J);
+  const double w2 = std::max({axial, bending, bending2, torsion});
+  return axial > 0 ? std::max(1.0, std::sqrt(w2 / axial)) : 1.0;
 }
 
 namespace {
@@ -204,7 +217,7 @@ void init_beams(const Model& m, State& s) {
   for (int b = 0; b < nb; ++b) ++count[std::size_t(bm.mat[std::size_t(b)])];
   std::vector<int> first(s.mats.size(), 0), points_of_material(s.mats.size(), 0);
   int placed = 0;
-  bool plastic = false, kinematic = false;
+  bool plastic = false, kinematic = false, resultant = false;
   for (std::size_t k = 0; k < s.mats.size(); ++k) {
     if (count[k] == 0) continue;
     const MaterialData& md = m.materials[k];
@@ -218,6 +231,9 @@ void init_beams(const Model& m, State& s) {
     } else if (md.beam_section.elform == 3) {
       g.kernel = BeamKernel::truss;
       g.rule.push_back({0, 0, 4});
+    } else if (md.beam_section.elform == 2) {
+      g.kernel = BeamKernel::resultant;  // no section points: 6 resultants per beam (BeamState::bs)
+      resultant = true;
     } else {
       g.kernel = BeamKernel::hughes_liu;
       beam_integration_rule(md.beam_section, g.rule);
@@ -243,6 +259,9 @@ void init_beams(const Model& m, State& s) {
   bm.eps_p.assign(plastic ? npt : 0, 0.0);
   bm.yielded.assign(plastic ? npt : 0, 0);
   bm.res.assign(6 * std::size_t(nb), 0.0);
+  bm.bs.assign(resultant ? 6 * std::size_t(nb) : 0, 0.0);
+  bm.rsec.assign(resultant ? std::size_t(nb) : 0, BeamResultantSection{});
+  bm.step_scale.assign(std::size_t(nb), 1.0);
   for (auto* v : {&bm.dt_e, &bm.de_ie, &bm.energy, &bm.area, &bm.length0}) v->assign(std::size_t(nb), 0.0);
   bm.e2.assign(3 * std::size_t(nb), 0.0);
   bm.bad.assign(std::size_t(nb), 0);
@@ -258,7 +277,8 @@ void init_beams(const Model& m, State& s) {
     const MaterialConstants& mc = s.mats[std::size_t(mat)];
     const BeamMaterial* bmat = find_beam_material(mc.type);
     const bool rigid = !bmat || bmat->rigid;
-    const bool truss = md.beam_section.elform == 3;
+    const BeamSectionData& sec = md.beam_section;
+    const bool truss = sec.elform == 3;
     bm.rigid_elem[B] = rigid;
     bm.size[B] = beam_section_size(m, b);
     bm.area[B] = beam_area(m, b);
@@ -274,11 +294,17 @@ void init_beams(const Model& m, State& s) {
     s.mass[n2] += 0.5 * me;
     bm.dt_e[B] = std::numeric_limits<double>::infinity();
     if (!rigid && !truss) {
-      const double J = beam_rotary_inertia(me, bm.length0[B], beam_section_properties(bm.size[B]));
+      BeamSectionProperties props = beam_section_properties(bm.size[B]);
+      if (sec.elform == 2) {
+        props = BeamSectionProperties{sec.area, sec.iss, sec.itt};
+        if (!bm.rsec.empty()) bm.rsec[B] = BeamResultantSection{sec.area, sec.iss, sec.itt, sec.jt > 0 ? sec.jt : sec.iss + sec.itt};
+      }
+      const double J = beam_rotary_inertia(me, bm.length0[B], props);
       for (std::size_t n : {n1, n2}) {
         beam_inertia[n] += J;
         beam_uses[n] = 1;
       }
+      if (sec.elform == 2) bm.step_scale[B] = resultant_beam_step_scale(mc, bm.rsec[B], bm.length0[B], me, J);
     }
   }
   bm.length = bm.length0;

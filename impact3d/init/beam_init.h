@@ -33,6 +33,13 @@ bool beam_initial_s_axis(const Model& m, int b, double s[3]);
 // (beam_hl.h: no mode of the element is then faster than its axial one).
 double beam_rotary_inertia(double beam_mass, double length0, const BeamSectionProperties& p);
 
+// A resultant beam's (ELFORM 2) step factor: its fastest mode (axial 4 EA / (L m), the
+// Euler-Bernoulli bending modes 12 EI/L (4 / (L^2 m) + 1 / (2 J)) and 2 EI / (L J), torsion
+// 2 G J_t / (L J); m the beam's mass, J a node's rotary inertia from it) over the axial one,
+// at least 1: its step is L / (c factor).
+double resultant_beam_step_scale(const MaterialConstants& mc, const BeamResultantSection& sec, double length0,
+                                 double beam_mass, double node_inertia);
+
 // Fills s.beams from the model's beams, adds their masses to s.mass, extends the corner forces
 // and the node -> corner map by the beams' 2 ends each, and adds the nodes of deformable
 // Hughes-Liu beams to the rotational degrees of freedom (renumbered in node order; a node of

@@ -247,6 +247,8 @@ class KeywordWriter {
         os_ << "*SECTION_BEAM\n$#   secid    elform      shrf   qr/irid       cst\n"
             << kcard({I(1 + id), I(sec.elform), R(sec.shrf), I(sec.qr), I(int(sec.cst))}) << "\n";
         if (sec.elform == 3) os_ << "$#       a\n" << kcard({R(sec.area)}) << "\n";
+        else if (sec.elform == 2)
+          os_ << "$#       a       iss       itt         j        sa\n" << kcard({R(sec.area), R(sec.iss), R(sec.itt), R(sec.jt), R(sec.sa)}) << "\n";
         else os_ << "$#     ts1       ts2       tt1       tt2\n" << kcard({R(sec.ts1), R(sec.ts2), R(sec.tt1), R(sec.tt2)}) << "\n";
         if (sec.qr <= 0) note("material " + std::to_string(id) + ": a user beam integration rule cannot be written");
       }
@@ -1092,6 +1094,10 @@ std::vector<std::string> model_differences(const Model& a, const Model& b, int m
     D(w + "TT1", bx.tt1, by.tt1);
     D(w + "TT2", bx.tt2, by.tt2);
     D(w + "A", bx.area, by.area);
+    D(w + "ISS", bx.iss, by.iss);
+    D(w + "ITT", bx.itt, by.itt);
+    D(w + "J", bx.jt, by.jt);
+    D(w + "SA", bx.sa, by.sa);
   }
   auto nonzero = [](const auto& v) {
     for (const auto& x : v)

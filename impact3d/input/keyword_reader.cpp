@@ -1859,10 +1859,8 @@ bool is_ascii_database(const std::string& n) {
     sec.line = c.line();
     const long long elform = c.i(1, "ELFORM", 1);
     sec.elform = elform == 0 ? 1 : int(elform);
-    if (sec.elform == 2)
-      c.error(1102, 1, "ELFORM", "ELFORM 2 (Belytschko-Schwer resultant beam); beams are ELFORM 1 (Hughes-Liu) or 3 (truss)");
-    else if (sec.elform != 1 && sec.elform != 3)
-      c.error(1102, 1, "ELFORM", "beam formulation " + std::to_string(sec.elform) + "; only ELFORM 1 (Hughes-Liu) and 3 (truss)");
+    if (sec.elform < 1 || sec.elform > 3)
+      c.error(1102, 1, "ELFORM", "beam formulation " + std::to_string(sec.elform) + "; only ELFORM 1 (Hughes-Liu), 2 (Belytschko-Schwer) and 3 (truss)");
     sec.shrf = c.r(2, "SHRF", 1.0);
     if (sec.shrf == 0) sec.shrf = 1.0;  // LS-DYNA: 0 -> 1
     if (!(sec.shrf > 0 && sec.shrf <= 1)) c.error(1003, 2, "SHRF", "shear factor in (0, 1] (5/6 for a rectangle)");
@@ -1876,11 +1874,24 @@ bool is_ascii_database(const std::string& n) {
     if (c.r(5, "SCOOR") != 0) c.error(1102, 5, "SCOOR", "cross-section location options");
     if (c.r(6, "NSM") != 0) c.error(1102, 6, "NSM", "non-structural mass");
     if (k + 1 >= b.data.size() || is_keyword_line(b.data[k + 1].line->text)) {
-      missing_card(b, sec.elform == 3 ? "card 2 (A RAMPT STRESS)" : "card 2 (TS1 TS2 TT1 TT2 NSLOC NTLOC)");
+      missing_card(b, sec.elform == 3   ? "card 2 (A RAMPT STRESS)"
+                      : sec.elform == 2 ? "card 2 (A ISS ITT J SA IST)"
+                                        : "card 2 (TS1 TS2 TT1 TT2 NSLOC NTLOC)");
     } else {
       KCard c2 = card(b, k + 1, "card 2", W(b, 8));
       c2.set_card(b.keyword + " " + std::to_string(id));
-      if (sec.elform == 3) {
+      if (sec.elform == 2) {
+        sec.area = c2.r(0, "A");
+        sec.iss = c2.r(1, "ISS");
+        sec.itt = c2.r(2, "ITT");
+        sec.jt = c2.r(3, "J");
+        sec.sa = c2.r(4, "SA");
+        if (!(sec.area > 0)) c2.error(1251, 0, "A", "the area must be positive");
+        if (!(sec.iss > 0)) c2.error(1251, 1, "ISS");
+        if (!(sec.itt > 0)) c2.error(1251, 2, "ITT");
+        if (sec.jt < 0) c2.error(1251, 3, "J");
+        if (c2.r(5, "IST") != 0) c2.error(1102, 5, "IST", "a product of inertia (unsymmetric sections)");
+      } else if (sec.elform == 3) {
         sec.area = c2.r(0, "A");
         if (!(sec.area > 0)) c2.error(1251, 0, "A", "the truss area must be positive");
         if (c2.r(1, "RAMPT") != 0) c2.error(1102, 1, "RAMPT", "initial stress ramps");

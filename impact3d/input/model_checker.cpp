@@ -194,8 +194,15 @@ void check_beams(const Model& m, const Location& file_loc, Diagnostics& diag,
       ml.card = "beam section of material " + std::to_string(md.number);
       if (!has_beam_kernel(md.type))
         diag.add(1103, ml, "material type " + std::to_string(md.type) + " has no beam form; beams take types " + beam_material_numbers());
-      if (sec.elform != 1 && sec.elform != 3)
-        diag.add(1102, ml, "ELFORM " + std::to_string(sec.elform) + ": beam formulations 1 (Hughes-Liu) and 3 (truss) only");
+      if (sec.elform < 1 || sec.elform > 3)
+        diag.add(1102, ml, "ELFORM " + std::to_string(sec.elform) + ": beam formulations 1 (Hughes-Liu), 2 (Belytschko-Schwer) and 3 (truss) only");
+      if (sec.elform == 2 && md.type != 1 && has_beam_kernel(md.type) && !material_type(md.type).rigid)
+        diag.add(1103, ml, "material type " + std::to_string(md.type) + ": the resultant beam (ELFORM 2) is elastic (type 1) or rigid (20)");
+      if (sec.elform == 2 && (!(sec.area > 0) || !(sec.iss > 0) || !(sec.itt > 0) || sec.jt < 0)) {
+        char buf[128];
+        std::snprintf(buf, sizeof buf, "A %.6g, ISS %.6g, ITT %.6g, J %.6g", sec.area, sec.iss, sec.itt, sec.jt);
+        diag.add(1251, ml, buf);
+      }
       std::vector<BeamRulePoint> rule;
       if (sec.elform == 1 && !beam_integration_rule(sec, rule))
         diag.add(1102, ml, "QR " + std::to_string(sec.qr) + ": rules 1-5" + std::string(sec.cst == BeamCrossSection::tubular ? " for tubes" : " or a user rule"));

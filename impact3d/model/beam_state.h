@@ -16,7 +16,7 @@ namespace impact3d {
 
 // Beam kernels, chosen per group from the section's formulation and the material type (one
 // table: kBeamMaterials in init/beam_init.cpp).
-enum class BeamKernel : std::uint8_t { rigid, hughes_liu, truss };
+enum class BeamKernel : std::uint8_t { rigid, hughes_liu, truss, resultant };
 
 struct BeamGroup {
   BeamKernel kernel = BeamKernel::rigid;
@@ -44,6 +44,11 @@ struct BeamState {
   std::vector<double> eps_p;                  // 1 per point (with a plastic group; else empty)
   std::vector<std::uint8_t> yielded;          // 1 per point (with a plastic group; else empty)
   std::vector<double> res;                    // 6 per beam: N, Q_s, Q_t, T, M_s, M_t
+  // resultant beams (ELFORM 2): 6 per beam, N, T, M_s at ends 1 and 2, M_t at ends 1 and 2
+  // (empty without such a group); their section properties and step factor
+  std::vector<double> bs;
+  std::vector<BeamResultantSection> rsec;     // per beam (empty without a resultant group)
+  std::vector<double> step_scale;             // per beam: the step is L / (c step_scale)
   std::vector<double> dt_e;                   // element step
   std::vector<double> de_ie;                  // this pass's internal-energy increment per beam
   std::vector<double> energy;                 // accumulated internal energy per beam

@@ -66,7 +66,8 @@ struct ShellSectionData {
 enum class BeamCrossSection : int { rectangular = 0, tubular = 1 };  // LS-DYNA CST 0, 1
 struct BeamSectionData {
   // formulation (LS-DYNA ELFORM): 1 Hughes-Liu (integrated over the cross section,
-  // co-rotational, transverse shear), 3 truss (axial force only, no rotations)
+  // co-rotational, transverse shear), 2 Belytschko-Schwer resultant beam (elastic, Euler-
+  // Bernoulli), 3 truss (axial force only, no rotations)
   int elform = 1;
   double shrf = 1.0;  // transverse shear factor SHRF (0 -> 1; 5/6 for a rectangle is usual)
   // quadrature rule QR (ELFORM 1): 1 one point (no bending stiffness), 2 2x2 Gauss, 3 3x3
@@ -77,7 +78,10 @@ struct BeamSectionData {
   // ELFORM 1 sizes at node 1 and node 2: rectangular: TS width along s, TT along t; tubular:
   // TS outer and TT inner diameter (TT 0: a solid bar).  The element uses their means.
   double ts1 = 0, ts2 = 0, tt1 = 0, tt2 = 0;
-  double area = 0;  // ELFORM 3: cross-section area A
+  double area = 0;  // ELFORM 2 and 3: cross-section area A
+  // ELFORM 2: second moments ISS (about s: bending in the r-t plane), ITT (about t), torsional
+  // constant J (0: ISS + ITT), shear area SA (read; Euler-Bernoulli bending has no shear strain)
+  double iss = 0, itt = 0, jt = 0, sa = 0;
   // A user integration rule (QR <= 0; rectangular only): points (s, t, w) with s, t in
   // [-1, 1] along TS and TT and weights summing to 4 (the area of [-1, 1]^2, DYNA3D's rules).
   std::vector<std::array<double, 3>> user_rule;

@@ -152,7 +152,7 @@ struct State {
     v(shells.hgq); v(shells.drill); v(shells.dt_e); v(shells.energy); v(shells.failed); v(shells.cmx); v(shells.cmy); v(shells.cmz);
     v(shells.wx); v(shells.wy); v(shells.wz); v(shells.rot_kinetic);
     v(beams.length); v(beams.e2); v(beams.sig); v(beams.eps_rr); v(beams.back); v(beams.eps_p); v(beams.yielded);
-    v(beams.res); v(beams.dt_e); v(beams.energy);
+    v(beams.res); v(beams.bs); v(beams.dt_e); v(beams.energy);
     for (RigidBody& rb : rigid) {
       v(rb.com); v(rb.vcom); v(rb.rot); v(rb.omega); v(rb.ang_mom);
     }

@@ -224,6 +224,7 @@ int beam_plot_points(const Model& m) {
   for (const MaterialData& md : m.materials) {
     if (!md.beam) continue;
     if (md.beam_section.elform == 3) most = std::max(most, 1);
+    else if (md.beam_section.elform == 2) continue;  // resultants only
     else if (beam_integration_rule(md.beam_section, rule)) most = std::max(most, int(rule.size()));
   }
   return most;

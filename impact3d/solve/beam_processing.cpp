@@ -47,10 +47,11 @@ void process_beam(State& s, const BeamGroup& g, int b, double dt) {
   gather_beam(s, b, dt, io);
   const std::size_t ip = std::size_t(bm.ip_start[B]);
   const bool plastic = g.material_kind != BeamMaterialKind::elastic;
-  BeamPointState st{&bm.sig[3 * ip], &bm.eps_rr[ip], g.material_kind == BeamMaterialKind::plastic_kinematic ? &bm.back[6 * ip] : nullptr,
+  BeamPointState st{bm.sig.data() + 3 * ip, bm.eps_rr.data() + ip, g.material_kind == BeamMaterialKind::plastic_kinematic ? &bm.back[6 * ip] : nullptr,
                     plastic ? &bm.eps_p[ip] : nullptr, plastic ? &bm.yielded[ip] : nullptr};
   const MaterialConstants& mc = s.mats[std::size_t(g.material)];
   if (g.kernel == BeamKernel::truss) calc_truss_forces(bm.area[B], mc, g.material_kind, io, st);
+  else if (g.kernel == BeamKernel::resultant) calc_beam_bs_forces(bm.rsec[B], mc, io, &bm.bs[6 * B]);
   else calc_beam_hl_forces(bm.size[B], g.rule, g.shrf, mc, g.material_kind, io, st);
   bm.bad[B] = io.bad;
   if (io.bad) {
@@ -60,7 +61,7 @@ void process_beam(State& s, const BeamGroup& g, int b, double dt) {
     return;
   }
   bm.length[B] = io.length;
-  bm.dt_e[B] = beam_time_step(io.length, mc);
+  bm.dt_e[B] = beam_time_step(io.length, mc) / bm.step_scale[B];
   bm.de_ie[B] = io.de_ie;
   for (int a = 0; a < 3; ++a) bm.e2[3 * B + std::size_t(a)] = io.e2[a];
   for (int k = 0; k < 6; ++k) bm.res[6 * B + std::size_t(k)] = io.res[k];

@@ -454,14 +454,17 @@ int run_simulation(const Model& model, const RunOptions& opt, std::ostream& prin
       msg = 4001;
       // (an index past the solids is a shell: non-positive area)
       std::snprintf(buf, sizeof buf, "%s element %d at cycle %d, time %.6e",
-                    engine.error_element() >= model.num_hexes() ? "shell (non-positive area)" : "solid",
+                    engine.error_element() >= model.num_hexes() + model.num_shells() ? "beam (zero length)"
+                    : engine.error_element() >= model.num_hexes()                    ? "shell (non-positive area)"
+                                                                                     : "solid",
                     model.hex_id(engine.error_element()), s.cycle, s.time);
       why = buf;
       break;
     case StepStatus::non_finite:
       msg = 4002;
       std::snprintf(buf, sizeof buf, "%s%d at cycle %d, time %.6e",
-                    engine.error_element() >= model.num_hexes() ? "shell element "
+                    engine.error_element() >= model.num_hexes() + model.num_shells() ? "beam element "
+                    : engine.error_element() >= model.num_hexes() ? "shell element "
                     : engine.error_element() >= 0               ? "solid element "
                                                                 : "kinetic energy; element ",
                     engine.error_element() >= 0 ? model.hex_id(engine.error_element()) : 0, s.cycle, s.time);

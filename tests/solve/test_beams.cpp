@@ -458,3 +458,108 @@ TEST(BeamShell, SharedRotationsCarryTheMoment) {
   std::printf("shell strip + beam: tip %.6e m, two-segment cantilever %.6e m (%+.2f%%)\n", w, expected, 100 * (w / expected - 1));
   EXPECT_NEAR(w / expected, 1.0, 0.03);
 }
+
+// The Belytschko-Schwer resultant beam (ELFORM 2, elastic, Euler-Bernoulli): one element is
+// exact for a cantilever's end load (P L^3 / 3EI, no shear term), to 0.2 % after a damped run;
+// 20 of them give the first bending period of Euler-Bernoulli within 1 % and the axial wave of
+// the bar within 1 %; a free swing keeps its energy within 0.5 %.
+TEST(BeamResultant, CantileverWaveFrequencyEnergy) {
+  const double L = 1.0, h = 0.05, E = 210e9, rho = 7850;
+  MaterialData mat = steel_beam(1, h, h);
+  mat.beam_section = BeamSectionData{};
+  mat.beam_section.elform = 2;
+  mat.beam_section.area = h * h;
+  mat.beam_section.iss = mat.beam_section.itt = h * h * h * h / 12;
+  mat.beam_section.jt = 0.141 * h * h * h * h;
+  const double EI = E * h * h * h * h / 12;
+  const double w1 = 1.875104068711961 * 1.875104068711961 * std::sqrt(EI / (rho * h * h * L * L * L * L));
+  {  // one element, static tip load (damped)
+    const double P = 100.0;
+    Model m = make_beam_line(1, L, mat, 12 * 2 * kPi / w1);
+    clamp_node(m, 0);
+    NodalLoad nl;
+    nl.node = 1;
+    nl.dir = {0, 0, 1};
+    nl.curve = add_constant_curve(m);
+    nl.scale = P;
+    m.nodal_loads.push_back(nl);
+    m.damping.active = true;
+    m.damping.d = 1.5 * w1;
+    Engine eng(m);
+    ASSERT_EQ(eng.initialize(), StepStatus::ok);
+    StepStatus st = StepStatus::ok;
+    while (st == StepStatus::ok) st = eng.step();
+    ASSERT_EQ(st, StepStatus::finished);
+    const double w = eng.state().z[1], want = P * L * L * L / (3 * EI);
+    std::printf("ELFORM 2, one element: tip %.6e m, P L^3/3EI %.6e m (%+.3f%%)\n", w, want, 100 * (w / want - 1));
+    EXPECT_NEAR(w / want, 1.0, 0.002);
+  }
+  {  // 20 elements, free vibration in the static shape
+    const int n = 20;
+    Model m = make_beam_line(n, L, mat, 3.6 * 2 * kPi / w1);
+    clamp_node(m, 0);
+    m.init_omega.assign(std::size_t(m.num_nodes()), {0, 0, 0});
+    for (int i = 0; i <= n; ++i) {
+      const double x = m.x[std::size_t(i)];
+      InitialVelocity iv;
+      iv.first = iv.last = i + 1;
+      iv.v = {0, 0, 1e-2 * x * x * (3 * L - x) / (2 * L * L * L)};
+      m.init_velocities.push_back(iv);
+      m.init_omega[std::size_t(i)] = {0, -1e-2 * (6 * L * x - 3 * x * x) / (2 * L * L * L), 0};
+    }
+    Engine eng(m);
+    ASSERT_EQ(eng.initialize(), StepStatus::ok);
+    const double e0 = eng.state().total_energy();
+    double prev = 0, tprev = 0, worst = 0;
+    std::vector<double> crossings;
+    StepStatus st = StepStatus::ok;
+    while (st == StepStatus::ok) {
+      st = eng.step();
+      const State& s = eng.state();
+      const double z = s.z[std::size_t(n)];
+      if (s.cycle > 1 && ((prev < 0 && z >= 0) || (prev > 0 && z <= 0)))
+        crossings.push_back(tprev + (s.time - tprev) * (0 - prev) / (z - prev));
+      prev = z;
+      tprev = s.time;
+      worst = std::max(worst, std::fabs(s.total_energy() / e0 - 1));
+    }
+    ASSERT_GE(crossings.size(), 7u);
+    const double T = (crossings[6] - crossings[0]) / 3, T1 = 2 * kPi / w1;
+    std::printf("ELFORM 2, 20 elements: first period %.6e s, Euler-Bernoulli %.6e s (%+.3f%%), energy %.3g\n", T, T1, 100 * (T / T1 - 1), worst);
+    EXPECT_NEAR(T / T1, 1.0, 0.01);
+    EXPECT_LT(worst, 0.005);
+  }
+  {  // the bar's wave
+    const int n = 200;
+    const double c0 = std::sqrt(E / rho);
+    Model m = make_beam_line(n, L, mat, 0.95 * L / c0);
+    for (double& x : m.x) x += 1e-9;
+    InitialVelocity iv;
+    iv.first = 0;
+    iv.v = {-1.0, 0, 0};
+    m.init_velocities.push_back(iv);
+    StoneWall w;
+    w.tail = {0, 0, 0};
+    w.head = {1, 0, 0};
+    m.walls.push_back(w);
+    Engine eng(m);
+    ASSERT_EQ(eng.initialize(), StepStatus::ok);
+    const double half = -0.5 * rho * c0;
+    double t1 = -1, t2 = -1, p1 = 0, p2 = 0, tp = 0;
+    StepStatus st = StepStatus::ok;
+    while (st == StepStatus::ok) {
+      st = eng.step();
+      const State& s = eng.state();
+      const double s1 = axial_stress(s, n / 4), s2 = axial_stress(s, 3 * n / 4);
+      if (t1 < 0 && s1 <= half) t1 = tp + (s.time - tp) * (half - p1) / (s1 - p1);
+      if (t2 < 0 && s2 <= half) t2 = tp + (s.time - tp) * (half - p2) / (s2 - p2);
+      p1 = s1;
+      p2 = s2;
+      tp = s.time;
+    }
+    ASSERT_GT(t2, t1);
+    const double c = (n / 2) * (L / n) / (t2 - t1);
+    std::printf("ELFORM 2 axial wave %.1f m/s, c0 %.1f m/s (%+.3f%%)\n", c, c0, 100 * (c / c0 - 1));
+    EXPECT_NEAR(c / c0, 1.0, 0.01);
+  }
+}
