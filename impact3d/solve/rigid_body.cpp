@@ -83,6 +83,14 @@ void update_rigid_body_velocities(State& s, double dt_n, double dt_next) {
       F += f;
       M += r.cross(f);
       fixed |= s.fix[k];
+      // a node with a rotational degree of freedom (deformable shells or beams on it): their
+      // end and corner moments act on the body too (internal: subtracted)
+      const int q = s.shells.node_rot.empty() ? -1 : s.shells.node_rot[k];
+      if (q >= 0)
+        for (int c = s.shells.rot_corner_start[std::size_t(q)]; c < s.shells.rot_corner_start[std::size_t(q) + 1]; ++c) {
+          const std::size_t cc = std::size_t(s.shells.rot_corner_list[std::size_t(c)]);
+          M -= Vec3(s.shells.cmx[cc], s.shells.cmy[cc], s.shells.cmz[cc]);
+        }
     }
     fixed |= rb.fix_translation;  // the material's constraints (CMO/CON1/CON2)
     for (int a = 0; a < 3; ++a) {
