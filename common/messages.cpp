@@ -263,12 +263,20 @@ void Diagnostics::add(int id, Location where, std::string detail) {
   folds_.emplace_back();
 }
 
+void Diagnostics::add_summary(int id, Location where, std::string detail) {
+  const MessageDef& m = message_def(id);
+  ++distinct_[id];
+  list_.push_back({id, m.severity, std::move(where), std::move(detail)});
+  folds_.emplace_back();
+  folds_.back().summary = true;
+}
+
 bool Diagnostics::has(int id) const { return distinct_.count(id) > 0; }
 
 int Diagnostics::count(int id) const {
   int n = 0;
   for (std::size_t k = 0; k < list_.size(); ++k)
-    if (list_[k].id == id) n += folds_[k].count;
+    if (list_[k].id == id && !folds_[k].summary) n += folds_[k].count;
   auto o = overflow_.find(id);
   if (o != overflow_.end()) n += o->second.second.count;
   return n;

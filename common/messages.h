@@ -65,6 +65,9 @@ std::string render(const Diagnostic& d);
 class Diagnostics {
  public:
   void add(int id, Location where, std::string detail = {});
+  // A line that sums up messages already added (e.g. "N keyword block(s): ..." after the 1301s
+  // it lists): printed with them, but not counted again (error_count, warning_count, count).
+  void add_summary(int id, Location where, std::string detail);
   int error_count() const { return errors_; }
   int warning_count() const { return warnings_; }
   // The distinct lines.  Repeats of one cause (same number, file, card with its numbers left
@@ -85,6 +88,7 @@ class Diagnostics {
   struct Fold {
     int count = 1;
     std::vector<std::string> more;  // ids of the first repeats (number in the card, or line)
+    bool summary = false;           // add_summary: not counted
   };
   std::vector<Diagnostic> list_;
   std::vector<Fold> folds_;                             // parallel to list_

@@ -185,6 +185,17 @@ std::int64_t file_size_or(const std::string& path, std::int64_t dflt) {
     return ec ? dflt : static_cast<std::int64_t>(s);
 }
 
+// Bytes of the plot database family: the root file (root_bytes) and its members root01, ...
+std::int64_t family_bytes(const std::string& root_path, std::size_t root_bytes) {
+    std::int64_t bytes = static_cast<std::int64_t>(root_bytes);
+    for (int m = 1;; ++m) {
+        const std::int64_t s = file_size_or(PlotWriter::member_name(root_path, m), -1);
+        if (s < 0) break;
+        bytes += s;
+    }
+    return bytes;
+}
+
 // Reads exactly n bytes at offset; throws with file and offset otherwise.
 std::vector<char> read_range(const std::string& path, std::int64_t offset, std::int64_t n,
                              const std::string& what) {
@@ -862,15 +873,22 @@ int shell_layers(const PlotControl& c) {
 }
 
 // Record layouts from the control words; refuses element records whose length (NV3D, NV3DT,
-// NV1D, NV2D) does not split into the values the flags announce.
+// NV1D, NV2D) does not split into the values the flags announce.  The counts are at most
+// 2^31 - 1 (PlotReader::open checked them); the sums and products are formed in 64 bits and
+// refused where they would not fit the layout's int offsets.
 PlotLayout make_layout(const PlotControl& c, const std::string& f) {
     PlotLayout L;
     auto refuse = [&](const std::string& what) {
         throw std::runtime_error("plot database " + f + ": unsupported d3plot content: " + what);
     };
+    auto offset = [&](std::int64_t v, const char* what) {
+        if (v > std::numeric_limits<std::int32_t>::max())
+            refuse(std::string(what) + " of " + std::to_string(v) + " words");
+        return static_cast<int>(v);
+    };
     // solids: 6 stresses + EPS + NEIPH (as VTK: whatever IOSHL says), at 1 or 8 points
-    L.solid_history = static_cast<int>(c.neiph);
-    L.solid_point_words = 7 + L.solid_history;
+    L.solid_history = offset(c.neiph, "solid history values (NEIPH)");
+    L.solid_point_words = offset(7 + c.neiph, "solid integration points (7 + NEIPH)");
     if (c.nel8 != 0) {
         if (c.nv3d == L.solid_point_words) L.solid_points = 1;
         else if (c.nv3d == 8 * static_cast<std::int64_t>(L.solid_point_words)) L.solid_points = 8;
@@ -879,12 +897,13 @@ PlotLayout make_layout(const PlotControl& c, const std::string& f) {
     }
     // shells and thick shells share the layer layout
     L.layers = shell_layers(c);
-    int w = 0;
-    if (c.ioshl[0] == 1000) { L.layer_stress = w; w += 6; }
-    if (c.ioshl[1] == 1000) { L.layer_eps = w; w += 1; }
-    if (c.neips > 0) { L.layer_history = w; w += static_cast<int>(c.neips); }
-    L.layer_words = w;
+    std::int64_t w = 0;
+    if (c.ioshl[0] == 1000) { L.layer_stress = static_cast<int>(w); w += 6; }
+    if (c.ioshl[1] == 1000) { L.layer_eps = static_cast<int>(w); w += 1; }
+    if (c.neips > 0) { L.layer_history = static_cast<int>(w); w += c.neips; }
+    L.layer_words = offset(w, "shell layers (NEIPS)");
     const std::int64_t layer_total = static_cast<std::int64_t>(L.layers) * w;
+    offset(layer_total + 32, "shell layers (MAXINT x NEIPS) and their resultants");
     if (c.nel4 != 0 && c.nv2d != 0) {
         std::int64_t at = layer_total;
         const bool forces = c.ioshl[2] == 1000, extra = c.ioshl[3] == 1000;
@@ -946,10 +965,15 @@ void PlotReader::open(const std::string& root_path) {
     if (c.filetype > 1000 && ws == 4) unsupported(f, "64-bit user ids in a 4-byte file (FILETYPE > 1000)");
     if (c.ndim != 4 && c.ndim != 5)
         unsupported(f, "NDIM " + std::to_string(c.ndim) + " (only 4, and 5 with the material-type section)");
+    // Every count of the header is untrusted: it is checked, in 64 bits, against what the family
+    // can hold (each node, element, part, state word or extra word takes at least one word of
+    // it) before anything is sized or added from it.
+    const std::int64_t family_words = family_bytes(root_path, d.size()) / ws;
     auto bad_count = [&](std::int64_t v, const char* name) {
-        if (v < 0 || v > std::numeric_limits<std::int32_t>::max())
+        if (v < 0 || v > std::numeric_limits<std::int32_t>::max() || v > family_words)
             throw std::runtime_error("plot database " + f + ": implausible control word " + name + " = " +
-                                     std::to_string(v));
+                                     std::to_string(v) + " (the family holds " + std::to_string(family_words) +
+                                     " words)");
     };
     if (c.nel8 < 0) unsupported(f, "10-node tetrahedra (NEL8 < 0)");
     bad_count(c.numnp, "NUMNP");
@@ -1007,21 +1031,12 @@ void PlotReader::open(const std::string& root_path) {
             if (n != 0) unsupported(f, std::to_string(n) + " " + what);
     }
     const std::int64_t nparts = c.nmmat > 0 ? c.nmmat : c.nummat8 + c.nummatt + c.nummat2 + c.nummat4;
-    {
-        // The part count sizes per-part arrays and loops here and in POST-IMPACT, but nothing in
-        // the root file has to follow from it: checked against the words the whole family holds
-        // (each part has words in every state), so a corrupt count cannot ask for gigabytes.
-        std::int64_t family_bytes = static_cast<std::int64_t>(d.size());
-        for (int m = 1;; ++m) {
-            const std::int64_t s = file_size_or(PlotWriter::member_name(root_path, m), -1);
-            if (s < 0) break;
-            family_bytes += s;
-        }
-        if (nparts > family_bytes / ws)
-            throw std::runtime_error("plot database " + f + ": implausible control words: " +
-                                     std::to_string(nparts) + " parts (NMMAT/NUMMAT8) in a family of " +
-                                     std::to_string(family_bytes) + " bytes");
-    }
+    // The part count sizes per-part arrays and loops here and in POST-IMPACT, but nothing in
+    // the root file has to follow from it: checked against the words the whole family holds
+    // (each part has words in every state), so a corrupt count cannot ask for gigabytes.
+    if (nparts > family_words)
+        throw std::runtime_error("plot database " + f + ": implausible control words: " + std::to_string(nparts) +
+                                 " parts (NMMAT/NUMMAT8) in a family of " + std::to_string(family_words) + " words");
     const PlotLayout layout = make_layout(c, f);
     const std::int64_t numnp = c.numnp, nel8 = c.nel8;
 

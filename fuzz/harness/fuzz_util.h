@@ -31,4 +31,11 @@ inline std::string_view as_text(const std::uint8_t* data, std::size_t size) {
 // give the root's length (taken modulo what follows); the rest after the root is the member.
 void split_root_member(std::string_view in, std::string_view& root, std::string_view& member);
 
+// The header-count mutation of the plot-database targets (fuzz/libfuzzer_main.cpp, with
+// libFuzzer's own mutations): in an input laid out as split_root_member reads it, writes one of
+// the extreme values 0, -1, 2^31 - 1, 2^31, 2^63 - 1 (as a 4- or 8-byte integer: the word size
+// the VERSION word shows, else chosen by seed) into one count word of the root file's control
+// words or EXTRA words.  Returns false (input unchanged) when the input has no control words.
+bool write_extreme_header_count(std::uint8_t* data, std::size_t size, unsigned seed);
+
 }  // namespace impact3d_fuzz

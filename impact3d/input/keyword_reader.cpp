@@ -3057,39 +3057,61 @@ bool is_ascii_database(const std::string& n) {
     damping_given_ = damping_.lcid != 0 || damping_.sf > 0;
   }
 
-  // *BOUNDARY_PRESCRIBED_MOTION_NODE / _SET / _RIGID: ID DOF VAD LCID SF VID DEATH BIRTH
+  // *BOUNDARY_PRESCRIBED_MOTION_NODE / _SET / _RIGID: per motion [the _ID card], card 1 ID DOF
+  // VAD LCID SF VID DEATH BIRTH, and card 2 (OFFSET1 OFFSET2 LRB NODE1 NODE2) when |DOF| is
+  // 9-11 or VAD is 4, as LS-DYNA reads them: a refused DOF or VAD still takes its card 2, so the
+  // next motion is read from the card it starts on.
   void parse_prescribed_motion(const Block& b, RLoad::Kind kind) {
-    const char* idf = kind == RLoad::motion_node ? "NID" : kind == RLoad::motion_set ? "NSID" : "PID";
-    for (std::size_t k : load_data_cards(b)) {
-      KCard c = card(b, k, "", W(b, 8));
-      RLoad l;
-      l.kind = kind;
-      l.keyword = upper(b.keyword);
-      l.id = xid(int(c.i(0, idf)), b, kind == RLoad::motion_node ? &IncludeTransform::idnoff : kind == RLoad::motion_set ? &IncludeTransform::idsoff : &IncludeTransform::idpoff);
-      l.ref = c.ref(0);
-      l.dof = int(c.i(1, "DOF"));
-      if (l.dof == -4) c.error(1102, 1, "DOF", "motion along a vector with the normal plane held (DOF -4)");
-      else if (l.dof == 4 && kind == RLoad::motion_rigid) c.error(1102, 1, "DOF", "rigid-body motion along a vector");
-      else if (l.dof == 4) {}
-      else if (l.dof >= 5 && l.dof <= 8) c.error(1102, 1, "DOF", kind == RLoad::motion_rigid ? "prescribed rotations of rigid bodies" : "rotations (solid nodes have no rotations)");
-      else if (l.dof < 1 || l.dof > 3) c.error(kind == RLoad::motion_rigid || l.dof < -4 || l.dof > 11 ? 1006 : 1102, 1, "DOF", "1 x, 2 y, 3 z");
-      const long long vad = c.i(2, "VAD");
-      if (vad == 0) l.vad = MotionKind::velocity;
-      else if (vad == 1) l.vad = MotionKind::acceleration;
-      else if (vad == 2) l.vad = MotionKind::displacement;
-      else if (vad == 3 || vad == 4) c.error(1102, 2, "VAD", vad == 3 ? "velocity as a function of displacement" : "relative displacement");
-      else c.error(1006, 2, "VAD", "0 velocity, 1 acceleration, 2 displacement");
-      read_load_curve_field(b, c, 3, l);
-      l.sf = c.r(4, "SF", 1.0);
-      l.vid = xid(int(c.i(5, "VID")), b, &IncludeTransform::iddoff);  // the direction of DOF 4 (*DEFINE_VECTOR)
-      l.vid_ref = c.ref(5);
-      if (l.dof == 4 && l.vid == 0) c.error(1003, 5, "VID", "DOF 4 moves along a vector: VID (*DEFINE_VECTOR) is required");
-      const double death = c.r(6, "DEATH");
-      l.death = death > 0 ? death : 1e28;
-      l.birth = c.r(7, "BIRTH");
-      if (l.death < l.birth) c.error(1003, 6, "DEATH", "the death time comes before the birth time");
-      loads_.push_back(l);
+    const std::size_t id_cards = b.id_opt ? 1 : 0;
+    std::size_t k = b.id_opt ? 1 : skip_option_card(b);
+    while (k < b.data.size()) {
+      std::size_t next = k + 1 + id_cards;
+      if (!is_blank(b.data[k].line->text) && read_prescribed_motion(b, k, kind)) {
+        if (k + 1 >= b.data.size()) missing_card(b, "card 2 (OFFSET1 OFFSET2 LRB NODE1 NODE2), read with |DOF| 9-11 or VAD 4");
+        ++next;
+      }
+      k = next;
     }
+  }
+
+  // Whether a motion with these DOF and VAD has LS-DYNA's card 2 (OFFSET1 OFFSET2 LRB NODE1 NODE2).
+  static bool motion_has_card2(long long dof, long long vad) {
+    return (dof >= 9 && dof <= 11) || (dof >= -11 && dof <= -9) || vad == 4;
+  }
+
+  // Card 1 of a prescribed motion at data card k; true when card 2 follows it.
+  bool read_prescribed_motion(const Block& b, std::size_t k, RLoad::Kind kind) {
+    const char* idf = kind == RLoad::motion_node ? "NID" : kind == RLoad::motion_set ? "NSID" : "PID";
+    KCard c = card(b, k, "", W(b, 8));
+    RLoad l;
+    l.kind = kind;
+    l.keyword = upper(b.keyword);
+    l.id = xid(int(c.i(0, idf)), b, kind == RLoad::motion_node ? &IncludeTransform::idnoff : kind == RLoad::motion_set ? &IncludeTransform::idsoff : &IncludeTransform::idpoff);
+    l.ref = c.ref(0);
+    l.dof = int(c.i(1, "DOF"));
+    if (l.dof == -4) c.error(1102, 1, "DOF", "motion along a vector with the normal plane held (DOF -4)");
+    else if (l.dof == 4 && kind == RLoad::motion_rigid) c.error(1102, 1, "DOF", "rigid-body motion along a vector");
+    else if (l.dof == 4) {}
+    else if (l.dof >= 5 && l.dof <= 8) c.error(1102, 1, "DOF", kind == RLoad::motion_rigid ? "prescribed rotations of rigid bodies" : "rotations (solid nodes have no rotations)");
+    else if (motion_has_card2(l.dof, 0) && kind != RLoad::motion_rigid) c.error(1102, 1, "DOF", "motion of nodes rotating about an axis through (OFFSET1, OFFSET2) (DOF 9-11; its card 2 is skipped)");
+    else if (l.dof < 1 || l.dof > 3) c.error(kind == RLoad::motion_rigid || l.dof < -4 || l.dof > 11 ? 1006 : 1102, 1, "DOF", "1 x, 2 y, 3 z");
+    const long long vad = c.i(2, "VAD");
+    if (vad == 0) l.vad = MotionKind::velocity;
+    else if (vad == 1) l.vad = MotionKind::acceleration;
+    else if (vad == 2) l.vad = MotionKind::displacement;
+    else if (vad == 3 || vad == 4) c.error(1102, 2, "VAD", vad == 3 ? "velocity as a function of displacement" : "relative displacement");
+    else c.error(1006, 2, "VAD", "0 velocity, 1 acceleration, 2 displacement");
+    read_load_curve_field(b, c, 3, l);
+    l.sf = c.r(4, "SF", 1.0);
+    l.vid = xid(int(c.i(5, "VID")), b, &IncludeTransform::iddoff);  // the direction of DOF 4 (*DEFINE_VECTOR)
+    l.vid_ref = c.ref(5);
+    if (l.dof == 4 && l.vid == 0) c.error(1003, 5, "VID", "DOF 4 moves along a vector: VID (*DEFINE_VECTOR) is required");
+    const double death = c.r(6, "DEATH");
+    l.death = death > 0 ? death : 1e28;
+    l.birth = c.r(7, "BIRTH");
+    if (l.death < l.birth) c.error(1003, 6, "DEATH", "the death time comes before the birth time");
+    loads_.push_back(l);
+    return motion_has_card2(l.dof, vad);
   }
 
   void parse_curve(const Block& b) {
@@ -3156,7 +3178,7 @@ bool is_ascii_database(const std::string& n) {
       for (const auto& [n, c] : count) list += (list.empty() ? "*" : ", *") + n + (c > 1 ? " (" + std::to_string(c) + "x)" : "");
       Location loc;
       loc.file = main_.name();
-      diag_.add(id, loc, std::to_string(blocks) + " keyword block(s): " + list);
+      diag_.add_summary(id, loc, std::to_string(blocks) + " keyword block(s): " + list);
     };
     summary(2007, n_ignorable, ignorable);
     summary(1301, n_refused, refused);
@@ -3385,16 +3407,7 @@ bool is_ascii_database(const std::string& n) {
           md.initially_elastic = initially_elastic_.count(p.pid) > 0;
           param_value(md, *ie) = md.initially_elastic ? 1.0 : 0.0;
         }
-        // curve references: *DEFINE_CURVE ids -> the curves' numbers 1..NUMLC (resolve_curves)
-        for (std::size_t i = 0; i < r.type->params.size(); ++i) {
-          const MaterialParam& q = r.type->params[i];
-          if (q.check != ParamCheck::curve || param_value(md, q) == 0) continue;
-          const int id = int(param_value(md, q));
-          std::size_t k = 0;
-          while (k < curves_.size() && curves_[k].number != id) ++k;
-          if (k < curves_.size()) param_value(md, q) = double(k + 1);
-          else err(1310, r.refs[i], "*MAT material " + std::to_string(p.mid), q.key, "*DEFINE_CURVE " + std::to_string(id) + " is not defined");
-        }
+        resolve_material_curves(md, r, p.mid);
         resolve_rigid_constraints(md, r, p.mid);
         if (auto eit = erosion_.find(p.mid); eit != erosion_.end()) {
           if (r.type->rigid) err(1102, eit->second.second, "*MAT_ADD_EROSION material " + std::to_string(p.mid), "MID", "erosion of a rigid body");
@@ -3644,6 +3657,7 @@ bool is_ascii_database(const std::string& n) {
             std::string(feature) + " (part " + std::to_string(p.pid) + " is of shells)");
         continue;
       }
+      resolve_material_curves(md, r, p.mid);
       resolve_rigid_constraints(md, r, p.mid);
       if (auto eit = erosion_.find(p.mid); eit != erosion_.end())
         err(1102, eit->second.second, "*MAT_ADD_EROSION material " + std::to_string(p.mid), "MID", "erosion (element deletion) of shells");
@@ -3972,6 +3986,20 @@ bool is_ascii_database(const std::string& n) {
   // rotations in it).  As for *BOUNDARY_SPC: a system whose axes are the global ones (any order
   // and sign) becomes the global codes (CMO = 1, CON1, CON2 0-7); skew axes are not supported
   // unless all or none of the translations (and of the rotations) are fixed.
+  // A material's curve references (ParamCheck::curve): *DEFINE_CURVE ids -> the curves'
+  // numbers 1..NUMLC, for solid and shell parts alike (an undefined id: 1310).
+  void resolve_material_curves(MaterialData& md, const RMat& r, int mid) {
+    for (std::size_t i = 0; i < r.type->params.size(); ++i) {
+      const MaterialParam& q = r.type->params[i];
+      if (q.check != ParamCheck::curve || param_value(md, q) == 0) continue;
+      const int id = int(param_value(md, q));
+      std::size_t k = 0;
+      while (k < curves_.size() && curves_[k].number != id) ++k;
+      if (k < curves_.size()) param_value(md, q) = double(k + 1);
+      else err(1310, r.refs[i], "*MAT material " + std::to_string(mid), q.key, "*DEFINE_CURVE " + std::to_string(id) + " is not defined");
+    }
+  }
+
   void resolve_rigid_constraints(MaterialData& md, const RMat& r, int mid) {
     if (md.type != 20 || md.par.size() < 6 || md.par[3] != -1) return;
     const MaterialParam* con1 = find_param(*r.type, "CON1");

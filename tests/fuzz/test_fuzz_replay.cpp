@@ -4,12 +4,14 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <string>
 #include <vector>
 
+#include "fuzz/harness/fuzz_util.h"
 #include "fuzz/harness/targets.h"
 
 namespace {
@@ -51,3 +53,31 @@ REPLAY_TEST(restart_dump)
 REPLAY_TEST(command_file)
 REPLAY_TEST(tolerances)
 REPLAY_TEST(mili_database)
+
+// The plot targets' header mutation (fuzz_util.h) writes only the extreme values, only onto
+// count words of the control section, in the word size the file's VERSION word shows.
+TEST(FuzzReplay, HeaderCountMutationWritesExtremesOnCountWords) {
+  const fs::path p = fs::path(IMPACT3D_SOURCE_DIR) / "tests/fuzz/plot_database/neips_2147483647";
+  std::ifstream f(p, std::ios::binary);
+  const std::vector<std::uint8_t> orig((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+  ASSERT_GT(orig.size(), 4u + 64 * 4);
+  const std::int64_t extremes[] = {0, -1, 2147483647LL, 2147483648LL, 9223372036854775807LL};
+  int changed = 0;
+  for (unsigned seed = 0; seed < 200; ++seed) {
+    std::vector<std::uint8_t> d = orig;
+    ASSERT_TRUE(impact3d_fuzz::write_extreme_header_count(d.data(), d.size(), seed));
+    for (std::size_t b = 0; b < d.size(); ++b) {
+      if (d[b] == orig[b]) continue;
+      ++changed;
+      const std::size_t k = (b - 4) / 4;  // this file has 4-byte words
+      EXPECT_TRUE(k >= 16 && k < 68) << "byte " << b;
+      std::int32_t v;
+      std::memcpy(&v, d.data() + 4 + 4 * k, 4);
+      bool extreme = false;
+      for (std::int64_t x : extremes) extreme = extreme || v == static_cast<std::int32_t>(static_cast<std::uint32_t>(x));
+      EXPECT_TRUE(extreme) << "word " << k << " = " << v;
+      break;
+    }
+  }
+  EXPECT_GT(changed, 100);  // most draws change the word (an extreme equal to the old value does not)
+}

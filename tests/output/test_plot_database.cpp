@@ -460,6 +460,60 @@ TEST(PlotDatabase, RandomCorruptionNeverCrashes) {
     }
 }
 
+// Issue 25 defect 9: a header count is untrusted.  Every count word of the 64 control words
+// (and EXTRA) set to 0, -1, 2^31 - 1, 2^31 and 2^63 - 1 (the low 4 bytes of these in a 4-byte
+// file) reads or is refused with an error, never past what the family holds; NEIPS = 2^31 - 1
+// (which overflowed the layer word count, 7 + NEIPS, in 32 bits) is refused by name.  Run under
+// UndefinedBehaviorSanitizer (tools/fuzz.sh builds) this also checks that no sum overflows.
+TEST(PlotDatabase, ExtremeHeaderCountsAreRefusedBeforeUse) {
+    const std::int64_t extremes[] = {0, -1, 2147483647LL, 2147483648LL, 9223372036854775807LL};
+    const int count_words[] = {16, 18, 23, 24, 27, 28, 29, 30, 31, 32, 33, 34, 35, 36, 39, 40, 41, 42, 51, 57, 63};
+    for (int ws : {4, 8}) {
+        const std::string dir = test_dir("extreme" + std::to_string(ws));
+        const std::string root = write_db(dir, ws, 2);
+        const auto orig = slurp(root);
+        int read = 0, refused = 0;
+        for (int k : count_words)
+            for (std::int64_t v : extremes) {
+                auto d = orig;
+                if (ws == 4) {
+                    const auto v32 = static_cast<std::uint32_t>(static_cast<std::uint64_t>(v));
+                    std::memcpy(d.data() + 4 * k, &v32, 4);
+                } else {
+                    std::memcpy(d.data() + 8 * k, &v, 8);
+                }
+                spit(root, d);
+                try {
+                    read_all(root);
+                    ++read;
+                } catch (const std::runtime_error& e) {
+                    ++refused;
+                    EXPECT_NE(std::string(e.what()).find(root), std::string::npos) << e.what();
+                }
+            }
+        std::printf("  ws %d: %d extreme headers read, %d refused\n", ws, read, refused);
+        EXPECT_GT(refused, 0);
+        // NEIPS (word 35) = 2^31 - 1: refused by name, before the layout is formed
+        auto d = orig;
+        const std::int64_t big = 2147483647LL;
+        if (ws == 4) {
+            const auto v32 = static_cast<std::int32_t>(big);
+            std::memcpy(d.data() + 4 * 35, &v32, 4);
+        } else {
+            std::memcpy(d.data() + 8 * 35, &big, 8);
+        }
+        spit(root, d);
+        try {
+            read_all(root);
+            ADD_FAILURE() << "NEIPS = 2^31 - 1 accepted";
+        } catch (const std::runtime_error& e) {
+            const std::string msg = e.what();
+            EXPECT_NE(msg.find("NEIPS = 2147483647"), std::string::npos) << msg;
+            EXPECT_NE(msg.find("the family holds"), std::string::npos) << msg;
+        }
+    }
+}
+
 // Write errors: EFBIG from RLIMIT_FSIZE (in a child process, so the limit cannot hit the test log)
 // must throw std::runtime_error naming the file, and leave the earlier states readable.
 TEST(PlotDatabase, WriteErrorThrowsAndKeepsEarlierStates) {
