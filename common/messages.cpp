@@ -105,7 +105,13 @@ const std::vector<MessageDef> kCatalog = {
     {5001, S::info, "stop requested by signal (sense switch sw1): dump and plot state written"},
     {5002, S::info, "status requested (sense switch sw2)"},
     {5003, S::info, "plot state requested (sense switch sw4)"},
-    {5004, S::info, "solid element failed (effective plastic strain reached the failure strain) and is deleted"},
+    {5004, S::info, "solid element failed and is deleted"},
+    {5101, S::warning, "hourglass energy of a part is large against its internal energy"},
+    {5102, S::warning, "energy ratio outside its band: the energy balance does not hold"},
+    {5103, S::warning, "contact energy is negative beyond its limit (contact forces put energy in)"},
+    {5104, S::warning, "added mass (mass scaling) beyond its limit"},
+    {5105, S::warning, "nodes not caught by contact"},
+    {5110, S::info, "run verdict"},
 };
 }  // namespace
 

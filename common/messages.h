@@ -11,6 +11,7 @@
 //   3000-3099  command line and files
 //   4000-4099  run-time errors (error termination)
 //   5000-5099  run-time information (sense switches, output)
+//   5100-5199  run checks: warnings about a run's results, and its verdict
 
 #include <string>
 #include <string_view>
@@ -107,6 +108,7 @@ constexpr int usage_error = 3;       // bad command line
 constexpr int file_error = 4;        // a file cannot be opened, read or written
 constexpr int error_termination = 5; // the run stopped: negative volume, non-finite value...
 constexpr int stopped_by_signal = 6; // SIGINT/SIGTERM: dump written, stopped as asked (sw1)
+constexpr int suspect_run = 7;       // --strict: normal termination, but the run checks found it suspect
 constexpr int internal_error = 9;    // a bug: please report
 }  // namespace exit_code
 

@@ -56,13 +56,16 @@ const char* kUsage =
     "             every input and output stay the deck's\n"
     "  --check    read and check the deck only; print the summary; write nothing else\n"
     "  --lenient-keywords  unsupported LS-DYNA keywords are warnings, not errors\n"
+    "  --strict   a run that ends normally but that the run checks find suspect (hourglass,\n"
+    "             energy ratio, contact energy, added mass, contact misses) exits with 7\n"
     "  --write-keyword=FILE, --write-fixed=FILE  convert: write the deck read as an LS-DYNA\n"
     "             keyword / DYNA3D fixed-format deck; nothing is run\n"
     "  --messages list the message catalog\n"
     "  --card-tables  print the DYNA3D fixed-format card tables (Markdown, as in README.md)\n"
     "\n"
     "exit codes: 0 normal termination, 2 input errors, 3 bad command line, 4 file error,\n"
-    "            5 error termination, 6 stopped by signal, 9 internal error\n";
+    "            5 error termination, 6 stopped by signal, 7 suspect run (--strict),\n"
+    "            9 internal error\n";
 
 // CRC-32 and size of a file, read in pieces (no copy of it kept).
 bool file_crc(const std::string& path, unsigned long& crc, std::uint64_t& size) {
@@ -181,6 +184,8 @@ int run_main(int argc, char** argv) {
       return exit_code::ok;
     } else if (arg == "--check") {
       check_only = true;
+    } else if (arg == "--strict") {
+      opt.strict = true;
     } else if (arg == "--lenient-keywords") {
       input_opt.lenient_keywords = true;
     } else if (const char* v = value("--write-keyword=")) {

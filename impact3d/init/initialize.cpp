@@ -69,6 +69,8 @@ void init_elements(const Model& m, State& s) {
   s.failed.assign(std::size_t(ne), 0);
   s.newly_failed.clear();
   s.newly_failed.reserve(std::size_t(ne));
+  s.newly_failed_cause.clear();
+  s.newly_failed_cause.reserve(std::size_t(ne));
   for (int e = 0; e < ne; ++e) {
     double x[8], y[8], z[8];
     for (int j = 0; j < 8; ++j) {

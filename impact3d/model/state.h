@@ -48,6 +48,17 @@ struct BlockResult {
   int failed_now = 0;                  // solids that failed in this pass
 };
 
+// What deleted a solid (message 5004): the value State::failed holds during the cycle it fails.
+enum class FailCause : std::uint8_t {
+  none = 0,
+  plastic_strain = 2,  // effective plastic strain reached the material's failure strain (FAIL)
+  time_step,           // its time step fell below TDEL
+  damage,              // its damage (the material's failure history value) reached 1
+  volume_high,         // relative volume above the erosion limit (*MAT_NULL TEROD)
+  volume_low,          // relative volume below the erosion limit (*MAT_NULL CEROD)
+  erosion,             // *MAT_ADD_EROSION criteria
+};
+
 struct State {
   int nn = 0, ne = 0;
   // nodes
@@ -97,8 +108,9 @@ struct State {
   std::vector<double> back;            // 6 per element: back stress (empty when no group has one)
   std::vector<double> eps_p;           // effective plastic strain
   std::vector<uint8_t> yielded;
-  std::vector<uint8_t> failed;         // 1: failed (deleted) solid; 2 during the cycle it fails
+  std::vector<uint8_t> failed;         // 1: failed (deleted) solid; its FailCause (>= 2) during the cycle it fails
   std::vector<int> newly_failed;       // solids that failed in the last cycle, in element order
+  std::vector<FailCause> newly_failed_cause;  // and what deleted each
   std::vector<double> hist;            // hist_stride per element: the material's history values (empty when none)
   int hist_stride = 0;
   std::vector<double> hgs;             // 12 per element: hourglass stiffness resultants (empty when unused)

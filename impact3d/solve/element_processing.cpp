@@ -194,10 +194,14 @@ void store_hex_block(State& s, const GroupPass& gp, const int* elems, const bool
     const std::size_t hs = std::size_t(s.hist_stride);
     for (int h = 0; h < gp.history; ++h) s.hist[hs * E + std::size_t(h)] = k.hist[h][l];
     s.vol[E] = k.v[l];
-    bool fails = (mc.fail_strain > 0 && k.eps_p[l] >= mc.fail_strain) || (mc.tdel > 0 && k.dt[l] < mc.tdel) ||
-                 (mc.fail_history >= 0 && k.hist[mc.fail_history][l] >= 1.0) ||
-                 (mc.vol_erode_hi > 0 && k.v[l] / s.vol0[E] > mc.vol_erode_hi) ||
-                 (mc.vol_erode_lo > 0 && k.v[l] / s.vol0[E] < mc.vol_erode_lo);
+    // the first criterion met is the cause the run log names (State::failed, FailCause)
+    FailCause cause = FailCause::none;
+    if (mc.fail_strain > 0 && k.eps_p[l] >= mc.fail_strain) cause = FailCause::plastic_strain;
+    else if (mc.tdel > 0 && k.dt[l] < mc.tdel) cause = FailCause::time_step;
+    else if (mc.fail_history >= 0 && k.hist[mc.fail_history][l] >= 1.0) cause = FailCause::damage;
+    else if (mc.vol_erode_hi > 0 && k.v[l] / s.vol0[E] > mc.vol_erode_hi) cause = FailCause::volume_high;
+    else if (mc.vol_erode_lo > 0 && k.v[l] / s.vol0[E] < mc.vol_erode_lo) cause = FailCause::volume_low;
+    bool fails = cause != FailCause::none;
     if (mc.erosion && !fails) {  // *MAT_ADD_EROSION
       const double sg[6] = {k.sig[0][l], k.sig[1][l], k.sig[2][l], k.sig[3][l], k.sig[4][l], k.sig[5][l]};
       double eps[3] = {0, 0, 0};
@@ -211,12 +215,13 @@ void store_hex_block(State& s, const GroupPass& gp, const int* elems, const bool
         calc_hex_principal_strains(X, x, eps);
       }
       fails = erosion_criteria_met(mc, sg, k.v[l] / s.vol0[E], gp.time, eps);
+      if (fails) cause = FailCause::erosion;
     }
     if (gp.dt > 0 && fails) {
       // Failure (plastic strain, the step below TDEL, damage, relative volume): the solid is deleted.  Its stress work up to now stays in the internal
       // energy, its mass on the nodes; the books as for a stress and viscosity that are zero
       // from now on (trapezoid with a zero end): only the old stress and q did work.
-      s.failed[E] = 2;
+      s.failed[E] = std::uint8_t(cause);  // >= 2: failed in this pass (Engine lists it)
       ++r.failed_now;
       double pw0 = 0;
       for (int c = 0; c < 3; ++c) pw0 += 0.5 * k.old[c][l] * k.d[c][l];

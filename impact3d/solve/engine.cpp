@@ -47,11 +47,13 @@ double Engine::kinetic_energy_of_material(int mat) const {
 StepStatus Engine::process_elements() {
   ElementLoopResult r = calc_forces_for_elems(m_, s_);
   s_.newly_failed.clear();
+  s_.newly_failed_cause.clear();
   if (r.failed_now > 0) {  // failed in this pass: listed in element order (any thread count)
     for (int e = 0; e < s_.ne; ++e)
-      if (s_.failed[std::size_t(e)] == 2) {
-        s_.failed[std::size_t(e)] = 1;
+      if (s_.failed[std::size_t(e)] >= 2) {
         s_.newly_failed.push_back(e);
+        s_.newly_failed_cause.push_back(FailCause(s_.failed[std::size_t(e)]));
+        s_.failed[std::size_t(e)] = 1;
       }
   }
   s_.internal += r.die;

@@ -22,6 +22,8 @@
 #include "impact3d/output/restart_dump.h"
 #include "impact3d/solve/engine.h"
 #include "impact3d/solve/mass_scaling.h"
+#include "impact3d/solve/run_checks.h"
+#include "impact3d/solve/run_report.h"
 
 namespace impact3d {
 
@@ -310,6 +312,7 @@ int run_simulation(const Model& model, const RunOptions& opt, std::ostream& prin
 
   SenseSwitches switches;
   long long refused_contacts = 0;  // node-cycles the penetration-growth rule did not catch
+  RunChecks checks(s);             // the run checks at every report and at the end (run_checks.h)
   const int report = std::max(1, model.control.report_interval);
   const int dump_every = model.control.restart_dump_cycles;
   const int running_every = model.control.running_restart_cycles;
@@ -318,14 +321,13 @@ int run_simulation(const Model& model, const RunOptions& opt, std::ostream& prin
     if (model.exact_output_times) engine.land_on(std::min(cur.next_plot, cur.next_history));
     st = engine.step();
     if (!engine.contact().empty()) refused_contacts += engine.contact().search_stats().refused;
-    for (int e : s.newly_failed) {
-      char fb[200];
-      std::snprintf(fb, sizeof fb, "solid element %d at cycle %d, time %.6e, effective plastic strain %.6e",
-                    model.hex_id(e), s.cycle, s.time, s.eps_p[std::size_t(e)]);
-      log.line(render(Diagnostic{5004, Severity::info, Location{}, fb}));
-    }
-    if (s.cycle % report == 0 || st != StepStatus::ok)
+    for (std::size_t k = 0; k < s.newly_failed.size(); ++k)
+      log.line(render(Diagnostic{5004, Severity::info, Location{},
+                                 describe_solid_failure(model, s, s.newly_failed[k], s.newly_failed_cause[k])}));
+    if (s.cycle % report == 0 || st != StepStatus::ok) {
       log.line(format_cycle_line(model, s, elapsed(), start_time, model.control.end_time));
+      for (const std::string& l : checks.check_state({model, s, refused_contacts})) log.line(l);
+    }
     if (st != StepStatus::ok) break;
     if (s.time >= cur.next_plot * (1 - 1e-9)) write_plot(true);
     if (s.time >= cur.next_history * (1 - 1e-9)) write_history();
@@ -380,24 +382,6 @@ int run_simulation(const Model& model, const RunOptions& opt, std::ostream& prin
     log.line(buf);
   }
   {
-    // summary of the final shape: extents and the largest plastic strain of the live solids
-    // (failed solids, and nodes no live solid holds, are left out: as postimpact summary)
-    int nfailed = 0;
-    for (auto f : s.failed) nfailed += f != 0;
-    std::vector<char> live(std::size_t(s.nn), 0);
-    for (int e = 0; e < s.ne; ++e)
-      if (!s.failed[std::size_t(e)])
-        for (int n : s.conn[std::size_t(e)]) live[std::size_t(n)] = 1;
-    double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
-    for (int i = 0; i < s.nn; ++i) {
-      if (!live[std::size_t(i)]) continue;
-      const double p[3] = {s.x[std::size_t(i)], s.y[std::size_t(i)], s.z[std::size_t(i)]};
-      for (int a = 0; a < 3; ++a) { lo[a] = std::min(lo[a], p[a]); hi[a] = std::max(hi[a], p[a]); }
-    }
-    int emax = 0;
-    while (emax + 1 < s.ne && s.failed[std::size_t(emax)]) ++emax;
-    for (int e = emax + 1; e < s.ne; ++e)
-      if (!s.failed[std::size_t(e)] && s.eps_p[std::size_t(e)] > s.eps_p[std::size_t(emax)]) emax = e;
     if (refused_contacts > 0) {
       char rb[200];
       std::snprintf(rb, sizeof rb,
@@ -405,34 +389,19 @@ int run_simulation(const Model& model, const RunOptions& opt, std::ostream& prin
                     "(README, Contact)", refused_contacts);
       log.line(rb);
     }
-    if (nfailed) {
-      char fb[120];
-      std::snprintf(fb, sizeof fb, "\n failed (deleted) solids: %d of %d (left out of the extents below)", nfailed, s.ne);
-      log.line(fb);
-    }
+    for (const std::string& l : final_shape_lines(model, s, measure_final_shape(s))) log.line(l);
     char buf[400];
-    const int cycles_here = s.cycle;
-    std::snprintf(buf, sizeof buf,
-                  "\n final extents: x [%.6e, %.6e]  y [%.6e, %.6e]  z [%.6e, %.6e]\n"
-                  " maximum effective plastic strain %.5f in element %d\n"
-                  " cycles %d, elapsed %.3f s (%.3f us per element-cycle)",
-                  lo[0], hi[0], lo[1], hi[1], lo[2], hi[2], s.ne ? s.eps_p[std::size_t(emax)] : 0.0,
-                  s.ne ? model.hex_id(emax) : 0, cycles_here, cpu,
+    std::snprintf(buf, sizeof buf, " cycles %d, elapsed %.3f s (%.3f us per element-cycle)", s.cycle, cpu,
                   s.cycle && s.ne + s.shells.ns ? 1e6 * cpu / (double(s.cycle) * (s.ne + s.shells.ns)) : 0.0);
     log.line(buf);
-    if (!s.shells.eps_p.empty()) {  // shells: the largest point value and its shell
-      const auto it = std::max_element(s.shells.eps_p.begin(), s.shells.eps_p.end());
-      const auto ip = int(it - s.shells.eps_p.begin());
-      const auto k = int(std::upper_bound(s.shells.ip_start.begin(), s.shells.ip_start.end(), ip) - s.shells.ip_start.begin()) - 1;
-      std::snprintf(buf, sizeof buf, " maximum effective plastic strain of shells %.5f in shell %d", *it, model.shell_id(k));
-      log.line(buf);
-    }
     const PhaseTimes& pt = engine.phase_times();
     std::snprintf(buf, sizeof buf,
                   " phase times (s): elements %.3f  nodes %.3f  walls %.3f  contact %.3f  output %.3f",
                   pt.elements, pt.nodes, pt.walls, pt.contact, output_seconds);
     log.line(buf);
   }
+  for (const std::string& l : checks.check_state({model, s, refused_contacts})) log.line(l);
+  log.line("\n " + checks.verdict_line());
   if (!out_ok) {
     log.line("\n E r r o r   t e r m i n a t i o n   (output write failed)");
     return exit_code::file_error;
@@ -444,7 +413,7 @@ int run_simulation(const Model& model, const RunOptions& opt, std::ostream& prin
   }
   if (st == StepStatus::finished) {
     log.line("\n N o r m a l   t e r m i n a t i o n");
-    return exit_code::ok;
+    return opt.strict && checks.suspect() ? exit_code::suspect_run : exit_code::ok;
   }
   std::string why;
   int msg = 4001;

@@ -24,6 +24,7 @@ struct RunOptions {
   // that writes no dump never holds a second copy of a large deck)
   std::function<std::string()> deck_text_source;
   bool quiet = false;       // no run log on stdout (tests)
+  bool strict = false;      // --strict: a suspect run (run_checks.h) ends with exit code 7
 };
 
 // Runs the model to its termination time.  Returns an exit code (common/messages.h).

@@ -1,12 +1,17 @@
-// Keyword-reader defects found on real decks (issue 25): a shell part's LCSS curve (defect 6),
-// a refused DOF that must not change how the next card is read (defect 7), and the count of
-// the "N keyword block(s)" summary (defect 8).
+// Defects found on real keyword decks (issue 25): a shell part's LCSS curve (defect 6), a
+// refused DOF that must not change how the next card is read (defect 7), the count of the "N
+// keyword block(s)" summary (defect 8), and the final summary of a shell-only model (defect 5).
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <string>
 
 #include "impact3d/material/material_types.h"
+#include "impact3d/solve/run.h"
 #include "tests/keyword/shell_piecewise_deck.h"
 
 using namespace impact3d;
@@ -139,4 +144,54 @@ TEST(KeywordTrust, KeywordBlockSummaryIsNotAnExtraError) {
   EXPECT_TRUE(read_deck(deck, m2, d2, o) && check_model(m2, d2)) << messages(d2);
   EXPECT_EQ(d2.count(2007), 2) << messages(d2);
   EXPECT_EQ(d2.warning_count(), 3) << messages(d2);  // and 2004: curve 12 not used
+}
+
+// Defect 5: the final summary of a shell-only model (the strip, pulled until shells fail)
+// gives the extents of its live shells and the largest plastic strain of a live shell; before,
+// the extents came from solids only ([1e300, -1e300]) and the largest strain named "element 0".
+TEST(KeywordTrust, FinalSummaryOfAShellOnlyModel) {
+  Model m;
+  Diagnostics d;
+  ASSERT_TRUE(read_text(strip_deck(), "strip_summary.k", m, d)) << messages(d);
+  const std::filesystem::path dir = std::filesystem::path(IMPACT3D_BINARY_DIR) / "keyword_trust" / "strip";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  RunOptions o;
+  o.printed = (dir / "d3hsp").string();
+  o.plot = (dir / "d3plot").string();
+  o.dump = (dir / "d3dump").string();
+  o.quiet = true;
+  o.threads = 1;
+  {
+    std::ofstream printed(o.printed);
+    ASSERT_EQ(run_simulation(m, o, printed), 0);
+  }
+  std::ifstream in(o.printed);
+  const std::string log((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_EQ(log.find("1.000000e+300"), std::string::npos) << log;
+  EXPECT_EQ(log.find("in element 0"), std::string::npos) << log;
+  // two shells fail (tests/keyword/test_keyword_shell_piecewise.cpp): left out, and said so
+  EXPECT_NE(log.find(" failed (deleted) shells: 2 of 20 (left out of the extents below)"), std::string::npos) << log;
+  // x to the pulled end (0.1 m + 10 m/s x (1.2 ms - 5 us ramp)), from the first nodes a live
+  // shell holds (the two failed shells are the held end's: its nodes are left out), y [0, 20 mm]
+  double x0 = 0, x1 = 0, y0 = 0, y1 = 0;
+  const std::size_t at = log.find(" final extents: x [");
+  ASSERT_NE(at, std::string::npos) << log;
+  ASSERT_EQ(std::sscanf(log.c_str() + at, " final extents: x [%lf, %lf]  y [%lf, %lf]", &x0, &x1, &y0, &y1), 4) << log;
+  EXPECT_GT(x0, 0.01);  // the second column of nodes, stretched
+  EXPECT_LT(x0, 0.03);
+  EXPECT_NEAR(x1, 0.1 + 10 * (1.2e-3 - 0.5e-5), 2e-4);
+  EXPECT_GT(y0, -1e-3);
+  EXPECT_LT(y1, 0.021);
+  // the largest plastic strain of a live shell: below FAIL (the failed ones are left out)
+  double eps = 0;
+  int shell = 0;
+  const std::size_t e = log.find(" maximum effective plastic strain of shells ");
+  ASSERT_NE(e, std::string::npos) << log;
+  ASSERT_EQ(std::sscanf(log.c_str() + e, " maximum effective plastic strain of shells %lf in shell %d", &eps, &shell), 2);
+  EXPECT_GT(eps, 0.01);
+  EXPECT_LT(eps, kFail);
+  EXPECT_GE(shell, 1);
+  EXPECT_LE(shell, 20);
+  EXPECT_EQ(log.find(" maximum effective plastic strain 0"), std::string::npos) << "a solids line in a shell-only model";
 }

@@ -12,6 +12,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <functional>
 #include <sstream>
 #include <string>
@@ -22,6 +23,7 @@
 #include "impact3d/material/material.h"
 #include "impact3d/material/material_types.h"
 #include "impact3d/solve/engine.h"
+#include "impact3d/solve/run.h"
 #include "tests/solve/test_models.h"
 
 using namespace impact3d;
@@ -459,4 +461,43 @@ TEST(ErosionInput, ReadsRefusesAndConverts) {
                                   "*MAT_ADD_EROSION\n         1       0.0     1.0E9\n"));
   EXPECT_FALSE(rigid.ok);
   EXPECT_NE(rigid.messages().find("erosion of a rigid body"), std::string::npos) << rigid.messages();
+}
+
+// Message 5004 names what deleted the solid (issue 25 defect 5): the squeezed null-material
+// bar's solids go by CEROD, and the message says so (it said "effective plastic strain reached
+// the failure strain" for every deletion).
+TEST(Erosion, DeletionMessageNamesTheCause) {
+  Model m = struck_bar(-40.0);
+  MaterialData& md = m.materials[0];
+  md.type = 9;
+  set_param_defaults(md, material_type(9));
+  md.rho = 1000;
+  md.eos.form = 1;
+  md.eos.c[1] = 2.2e9;
+  param_value(md, *find_param(material_type(9), "CEROD")) = 0.99;
+  for (int n = 0; n < m.num_nodes(); ++n) m.bc[std::size_t(n)] = m.z[std::size_t(n)] < 1e-12 ? 7 : 4;
+  m.control.end_time = 4e-5;
+  m.control.tssf = 0.5;
+  const std::filesystem::path dir = std::filesystem::path(IMPACT3D_BINARY_DIR) / "erosion_message";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  RunOptions o;
+  o.printed = (dir / "d3hsp").string();
+  o.plot = (dir / "d3plot").string();
+  o.dump = (dir / "d3dump").string();
+  o.quiet = true;
+  o.threads = 1;
+  std::ostringstream printed;
+  run_simulation(m, o, printed);
+  const std::string log = printed.str();
+  const std::size_t at = log.find("info 5004: solid element failed and is deleted: solid element ");
+  ASSERT_NE(at, std::string::npos) << log;
+  const std::string line = log.substr(at, log.find('\n', at) - at);
+  EXPECT_NE(line.find("below the erosion limit 0.990000 (CEROD)"), std::string::npos) << line;
+  double rv = 0;
+  ASSERT_NE(line.find("relative volume "), std::string::npos) << line;
+  ASSERT_EQ(std::sscanf(line.c_str() + line.find("relative volume "), "relative volume %lf", &rv), 1) << line;
+  EXPECT_LT(rv, 0.99);
+  EXPECT_GT(rv, 0.9);
+  EXPECT_EQ(log.find("plastic strain reached"), std::string::npos) << log;
 }

@@ -1,0 +1,127 @@
+// Run-log lines about the model's state (run_report.h).
+
+#include "impact3d/solve/run_report.h"
+
+#include <algorithm>
+#include <cstdio>
+
+namespace impact3d {
+
+std::string describe_solid_failure(const Model& m, const State& s, int e, FailCause cause) {
+  const std::size_t E = std::size_t(e);
+  const MaterialConstants& mc = s.mats[std::size_t(s.mat[E])];
+  const double rv = s.vol0[E] > 0 ? s.vol[E] / s.vol0[E] : 0.0;
+  char why[200];
+  switch (cause) {
+    case FailCause::plastic_strain:
+      std::snprintf(why, sizeof why, "effective plastic strain %.6e reached the failure strain %.6e", s.eps_p[E], mc.fail_strain);
+      break;
+    case FailCause::time_step:
+      std::snprintf(why, sizeof why, "its time step fell below TDEL %.6e", mc.tdel);
+      break;
+    case FailCause::damage:
+      std::snprintf(why, sizeof why, "its damage reached 1 (effective plastic strain %.6e)", s.eps_p[E]);
+      break;
+    case FailCause::volume_high:
+      std::snprintf(why, sizeof why, "relative volume %.6f above the erosion limit %.6f (TEROD)", rv, mc.vol_erode_hi);
+      break;
+    case FailCause::volume_low:
+      std::snprintf(why, sizeof why, "relative volume %.6f below the erosion limit %.6f (CEROD)", rv, mc.vol_erode_lo);
+      break;
+    case FailCause::erosion:
+      std::snprintf(why, sizeof why, "*MAT_ADD_EROSION criteria met (relative volume %.6f, effective plastic strain %.6e)", rv,
+                    s.eps_p[E]);
+      break;
+    case FailCause::none:
+      std::snprintf(why, sizeof why, "effective plastic strain %.6e", s.eps_p[E]);
+      break;
+  }
+  char buf[320];
+  std::snprintf(buf, sizeof buf, "solid element %d at cycle %d, time %.6e: %s", m.hex_id(e), s.cycle, s.time, why);
+  return buf;
+}
+
+namespace {
+
+void take_node(FinalShape& f, const State& s, int n) {
+  const double p[3] = {s.x[std::size_t(n)], s.y[std::size_t(n)], s.z[std::size_t(n)]};
+  if (!f.any_live) {
+    for (int a = 0; a < 3; ++a) f.lo[a] = f.hi[a] = p[a];
+    f.any_live = true;
+    return;
+  }
+  for (int a = 0; a < 3; ++a) {
+    f.lo[a] = std::min(f.lo[a], p[a]);
+    f.hi[a] = std::max(f.hi[a], p[a]);
+  }
+}
+
+// The live solids' extents and largest plastic strain.
+void measure_solids(FinalShape& f, const State& s) {
+  for (int e = 0; e < s.ne; ++e) {
+    const std::size_t E = std::size_t(e);
+    if (s.failed[E]) {
+      ++f.failed_solids;
+      continue;
+    }
+    for (int n : s.conn[E]) take_node(f, s, n);
+    if (f.max_eps_solid < 0 || s.eps_p[E] > f.solid_eps) f.max_eps_solid = e, f.solid_eps = s.eps_p[E];
+  }
+}
+
+// The live shells' extents and largest point plastic strain (plastic kernels only).
+void measure_shells(FinalShape& f, const State& s) {
+  const ShellState& sh = s.shells;
+  for (int k = 0; k < sh.ns; ++k) {
+    const std::size_t K = std::size_t(k);
+    if (!sh.failed.empty() && sh.failed[K]) {
+      ++f.failed_shells;
+      continue;
+    }
+    for (int n : sh.conn[K]) take_node(f, s, n);
+    if (sh.eps_p.empty()) continue;
+    for (int p = sh.ip_start[K]; p < sh.ip_start[K] + sh.nip[K]; ++p)
+      if (f.max_eps_shell < 0 || sh.eps_p[std::size_t(p)] > f.shell_eps) f.max_eps_shell = k, f.shell_eps = sh.eps_p[std::size_t(p)];
+  }
+}
+
+}  // namespace
+
+FinalShape measure_final_shape(const State& s) {
+  FinalShape f;
+  measure_solids(f, s);
+  measure_shells(f, s);
+  return f;
+}
+
+std::vector<std::string> final_shape_lines(const Model& m, const State& s, const FinalShape& f) {
+  std::vector<std::string> lines;
+  char buf[300];
+  if (f.failed_solids) {
+    std::snprintf(buf, sizeof buf, "\n failed (deleted) solids: %d of %d (left out of the extents below)", f.failed_solids, s.ne);
+    lines.push_back(buf);
+  }
+  if (f.failed_shells) {
+    std::snprintf(buf, sizeof buf, "%s failed (deleted) shells: %d of %d (left out of the extents below)",
+                  f.failed_solids ? "" : "\n", f.failed_shells, s.shells.ns);
+    lines.push_back(buf);
+  }
+  if (f.any_live)
+    std::snprintf(buf, sizeof buf, "\n final extents: x [%.6e, %.6e]  y [%.6e, %.6e]  z [%.6e, %.6e]", f.lo[0], f.hi[0],
+                  f.lo[1], f.hi[1], f.lo[2], f.hi[2]);
+  else
+    std::snprintf(buf, sizeof buf, "\n final extents: none (no live solid or shell)");
+  lines.push_back(buf);
+  if (f.max_eps_solid >= 0) {
+    std::snprintf(buf, sizeof buf, " maximum effective plastic strain %.5f in element %d", f.solid_eps, m.hex_id(f.max_eps_solid));
+    lines.push_back(buf);
+  }
+  if (f.max_eps_shell >= 0) {
+    std::snprintf(buf, sizeof buf, " maximum effective plastic strain of shells %.5f in shell %d", f.shell_eps,
+                  m.shell_id(f.max_eps_shell));
+    lines.push_back(buf);
+  }
+  return lines;
+}
+
+}  // namespace impact3d

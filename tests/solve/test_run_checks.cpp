@@ -1,0 +1,269 @@
+// The run checks (impact3d/solve/run_checks.h, README "Run checks", issue 25): each warning at
+// its threshold of the one table, said once per cause; the verdict; decks that trip a warning
+// and one that trips none, run as impact3d runs them.
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "impact3d/input/deck_reader.h"
+#include "impact3d/solve/run.h"
+#include "impact3d/solve/run_checks.h"
+
+using namespace impact3d;
+
+namespace {
+
+// A model of two materials and a state of energies as the checks read them: initial energy
+// 100, no external work, everything else set by the test.
+struct Books {
+  Model m;
+  State s;
+  Books() {
+    for (int k = 0; k < 2; ++k) {
+      MaterialData md;
+      md.number = k + 1;
+      md.title = k == 0 ? "plate" : "bird";
+      m.materials.push_back(md);
+    }
+    s.initial_total = 100;
+    s.kinetic = 100;
+    s.mat_internal.assign(2, 0.0);
+    s.mat_hourglass.assign(2, 0.0);
+    s.mat_added_mass.assign(2, 0.0);
+    s.physical_mass = 10;
+  }
+};
+
+std::string joined(const std::vector<std::string>& lines) {
+  std::string s;
+  for (const auto& l : lines) s += l + "\n";
+  return s;
+}
+
+int count_of(const std::string& text, const std::string& what) {
+  int n = 0;
+  for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+  return n;
+}
+
+}  // namespace
+
+TEST(RunChecks, CleanBooksSayNothingAndTheVerdictIsClean) {
+  Books b;
+  RunChecks c(b.s);
+  b.s.kinetic = 60;
+  b.s.internal = 40;
+  b.s.mat_internal = {30, 10};
+  b.s.mat_hourglass = {2.9, 0.9};  // below 10 % of each
+  EXPECT_TRUE(c.check_state({b.m, b.s, 0}).empty());
+  EXPECT_FALSE(c.suspect());
+  EXPECT_NE(c.verdict_line().find("info 5110: run verdict: clean"), std::string::npos) << c.verdict_line();
+}
+
+// 5101: per material, against its largest internal energy so far; once per material.
+TEST(RunChecks, HourglassEnergyOfAPartAboveTenPercentOfItsInternalEnergy) {
+  Books b;
+  RunChecks c(b.s);
+  b.s.mat_internal = {30, 10};
+  b.s.mat_hourglass = {2.9, 1.1};  // material 2: 11 %
+  std::string out = joined(c.check_state({b.m, b.s, 0}));
+  EXPECT_EQ(count_of(out, "warning 5101"), 1) << out;
+  EXPECT_NE(out.find("material 2 \"bird\": hourglass energy 1.1000e+00 = 11.0 % of its internal energy 1.0000e+01"),
+            std::string::npos)
+      << out;
+  // the bird gives its strain energy back (a rebound): still against its largest, and not said again
+  b.s.mat_internal = {30, 0.5};
+  b.s.mat_hourglass = {2.9, 1.2};
+  EXPECT_TRUE(c.check_state({b.m, b.s, 0}).empty());
+  // the plate now too
+  b.s.mat_hourglass = {3.1, 1.2};
+  out = joined(c.check_state({b.m, b.s, 0}));
+  EXPECT_EQ(count_of(out, "warning 5101"), 1) << out;
+  EXPECT_NE(out.find("material 1 \"plate\""), std::string::npos) << out;
+  EXPECT_TRUE(c.suspect());
+  const std::string v = c.verdict_line();
+  EXPECT_NE(v.find("suspect: hourglass energy (material 2 \"bird\"); hourglass energy (material 1 \"plate\")"),
+            std::string::npos)
+      << v;
+  // an hourglass energy below the floor (0.1 % of the reference energy) is noise, not a cause
+  Books q;
+  RunChecks cq(q.s);
+  q.s.mat_internal = {0.01, 0};
+  q.s.mat_hourglass = {0.09, 0};
+  EXPECT_TRUE(cq.check_state({q.m, q.s, 0}).empty());
+}
+
+// 5102: outside 1 +- 5 %, with the energy that moved; gain and loss are two causes.
+TEST(RunChecks, EnergyRatioOutsideItsBandNamesTheEnergyThatMoved) {
+  Books b;
+  RunChecks c(b.s);
+  b.s.kinetic = 50;
+  b.s.internal = 54.9;  // ratio 1.049: inside
+  EXPECT_TRUE(c.check_state({b.m, b.s, 0}).empty());
+  b.s.hourglass = 10;  // ratio 1.149: hourglass energy appeared from nowhere
+  std::string out = joined(c.check_state({b.m, b.s, 0}));
+  EXPECT_EQ(count_of(out, "warning 5102"), 1) << out;
+  EXPECT_NE(out.find("1.14900 at cycle"), std::string::npos) << out;
+  EXPECT_NE(out.find("energy gained, 14.9 %"), std::string::npos) << out;
+  EXPECT_NE(out.find("kinetic -0.500, internal +0.549, hourglass +0.100"), std::string::npos) << out;
+  EXPECT_NE(out.find("moved most: internal"), std::string::npos) << out;
+  EXPECT_TRUE(c.check_state({b.m, b.s, 0}).empty());  // said once
+  // the other side is another cause; external work counts against the ratio
+  b.s.hourglass = 0;
+  b.s.internal = 40;
+  b.s.external_work = 20;  // (50 + 40) / 120 = 0.75
+  out = joined(c.check_state({b.m, b.s, 0}));
+  EXPECT_EQ(count_of(out, "warning 5102"), 1) << out;
+  EXPECT_NE(out.find("energy lost, 25.0 %"), std::string::npos) << out;
+  EXPECT_NE(out.find("moved most: kinetic"), std::string::npos) << out;
+  EXPECT_NE(c.verdict_line().find("energy ratio above the band (internal moved most); energy ratio below the band"),
+            std::string::npos)
+      << c.verdict_line();
+}
+
+// 5103: contact energy below -1 % of initial energy + external work.
+TEST(RunChecks, NegativeContactEnergyBeyondOnePercent) {
+  Books b;
+  RunChecks c(b.s);
+  b.s.kinetic = 100.9;
+  b.s.contact = -0.9;
+  EXPECT_TRUE(c.check_state({b.m, b.s, 0}).empty());
+  b.s.kinetic = 101.1;
+  b.s.contact = -1.1;
+  const std::string out = joined(c.check_state({b.m, b.s, 0}));
+  EXPECT_EQ(count_of(out, "warning 5103"), 1) << out;
+  EXPECT_NE(out.find("contact energy -1.1000e+00 = -1.10 % of initial energy + external work 1.0000e+02"),
+            std::string::npos)
+      << out;
+  EXPECT_EQ(count_of(out, "warning 5102"), 0) << out;  // the ratio itself holds: only 5103 tells
+}
+
+// 5104: added mass above 5 % of the model's mass, naming the material that took the most.
+TEST(RunChecks, AddedMassAboveFivePercent) {
+  Books b;
+  RunChecks c(b.s);
+  b.s.added_mass = 0.5;  // 5 %: not above
+  b.s.mat_added_mass = {0.1, 0.4};
+  EXPECT_TRUE(c.check_state({b.m, b.s, 0}).empty());
+  b.s.added_mass = 0.6;
+  b.s.mat_added_mass = {0.1, 0.5};
+  const std::string out = joined(c.check_state({b.m, b.s, 0}));
+  EXPECT_EQ(count_of(out, "warning 5104"), 1) << out;
+  EXPECT_NE(out.find("6.00 % of the model's mass (limit 5.0 %)"), std::string::npos) << out;
+  EXPECT_NE(out.find("most to material 2 \"bird\" (83 % of it)"), std::string::npos) << out;
+}
+
+// 5105: nodes that contact found too deep and left free.
+TEST(RunChecks, NodesNotCaughtByContact) {
+  Books b;
+  RunChecks c(b.s);
+  EXPECT_TRUE(c.check_state({b.m, b.s, 0}).empty());
+  const std::string out = joined(c.check_state({b.m, b.s, 3}));
+  EXPECT_EQ(count_of(out, "warning 5105"), 1) << out;
+  EXPECT_NE(out.find("3 node-cycle(s) so far"), std::string::npos) << out;
+  EXPECT_TRUE(c.check_state({b.m, b.s, 7}).empty());
+}
+
+namespace {
+
+// One free unit hexahedron (mm, t, s; steel) with nodal velocities vx(node), TSSF 0.5 (a free
+// single solid's breathing mode needs it), and DT2MS when not 0.
+std::string one_hex_deck(const double vx[8], double dt2ms) {
+  const int xyz[8][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
+  std::string s = "*KEYWORD\n*TITLE\none hex\n*CONTROL_TERMINATION\n   2.0E-05\n*CONTROL_TIMESTEP\n";
+  char buf[160];
+  std::snprintf(buf, sizeof buf, "       0.0       0.5         0       0.0%10.3g\n", dt2ms);
+  s += buf;
+  s += "*PART\ncube\n         1         1         1\n*SECTION_SOLID\n         1         1\n"
+       "*MAT_ELASTIC\n         17.85000E-9  200000.0       0.3\n*NODE\n";
+  for (int i = 0; i < 8; ++i) {
+    std::snprintf(buf, sizeof buf, "%8d%16.1f%16.1f%16.1f\n", i + 1, double(xyz[i][0]), double(xyz[i][1]), double(xyz[i][2]));
+    s += buf;
+  }
+  s += "*ELEMENT_SOLID\n       1       1       1       2       3       4       5       6       7       8\n"
+       "*INITIAL_VELOCITY_NODE\n";
+  for (int i = 0; i < 8; ++i) {
+    std::snprintf(buf, sizeof buf, "%10d%10.1f       0.0       0.0\n", i + 1, vx[i]);
+    s += buf;
+  }
+  return s + "*END\n";
+}
+
+struct RunResult {
+  int code = -1;
+  std::string log;
+};
+
+RunResult run_deck(const std::string& text, const std::string& name, bool strict) {
+  RunResult r;
+  Model m;
+  Diagnostics d;
+  DeckFile deck;
+  deck.load_from_string(name + ".k", text);
+  if (!read_deck(deck, m, d, InputOptions{}) || !check_model(m, d)) {
+    std::ostringstream os;
+    d.print(os);
+    r.log = os.str();
+    return r;
+  }
+  const std::filesystem::path dir = std::filesystem::path(IMPACT3D_BINARY_DIR) / "run_checks" / name;
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  RunOptions o;
+  o.printed = (dir / "d3hsp").string();
+  o.plot = (dir / "d3plot").string();
+  o.dump = (dir / "d3dump").string();
+  o.quiet = true;
+  o.threads = 1;
+  o.strict = strict;
+  {
+    std::ofstream printed(o.printed);
+    r.code = run_simulation(m, o, printed);
+  }
+  std::ifstream in(o.printed);
+  r.log.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  return r;
+}
+
+}  // namespace
+
+// A rigid translation: no warning, a clean verdict, exit 0 even with --strict.
+TEST(RunChecksDecks, TranslatingHexIsClean) {
+  const double vx[8] = {1000, 1000, 1000, 1000, 1000, 1000, 1000, 1000};
+  const RunResult r = run_deck(one_hex_deck(vx, 0), "translating", true);
+  EXPECT_EQ(r.code, 0) << r.log;
+  EXPECT_EQ(count_of(r.log, "warning 51"), 0) << r.log;
+  EXPECT_NE(r.log.find("info 5110: run verdict: clean"), std::string::npos) << r.log;
+}
+
+// The pure hourglass mode (1 -1 1 -1 1 -1 1 -1 in x: orthogonal to every linear field, so the
+// one-point solid sees no strain): its kinetic energy goes to the viscous hourglass control,
+// none to internal energy.  5101 names the part; --strict exits 7, without it 0.
+TEST(RunChecksDecks, HourglassModeTripsTheHourglassCheck) {
+  const double vx[8] = {1000, -1000, 1000, -1000, 1000, -1000, 1000, -1000};
+  const RunResult strict = run_deck(one_hex_deck(vx, 0), "hourglass", true);
+  EXPECT_EQ(strict.code, exit_code::suspect_run) << strict.log;
+  EXPECT_EQ(count_of(strict.log, "warning 5101"), 1) << strict.log;
+  EXPECT_NE(strict.log.find("warning 5101: hourglass energy of a part is large against its internal energy: material 1 \"cube\""),
+            std::string::npos)
+      << strict.log;
+  EXPECT_NE(strict.log.find("info 5110: run verdict: suspect: hourglass energy (material 1 \"cube\")"), std::string::npos)
+      << strict.log;
+  EXPECT_NE(strict.log.find("N o r m a l   t e r m i n a t i o n"), std::string::npos) << strict.log;
+  EXPECT_EQ(run_deck(one_hex_deck(vx, 0), "hourglass_lenient", false).code, 0);
+}
+
+// Mass scaling to a step about 6.5 times the solid's: 5104.
+TEST(RunChecksDecks, MassScalingTripsTheAddedMassCheck) {
+  const double vx[8] = {1000, 1000, 1000, 1000, 1000, 1000, 1000, 1000};
+  const RunResult r = run_deck(one_hex_deck(vx, -1e-6), "added_mass", true);
+  EXPECT_EQ(r.code, exit_code::suspect_run) << r.log;
+  EXPECT_EQ(count_of(r.log, "warning 5104"), 1) << r.log;
+  EXPECT_NE(r.log.find("most to material 1 \"cube\" (100 % of it)"), std::string::npos) << r.log;
+  EXPECT_NE(r.log.find("info 5110: run verdict: suspect: added mass"), std::string::npos) << r.log;
+}
