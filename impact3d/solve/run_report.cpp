@@ -85,12 +85,27 @@ void measure_shells(FinalShape& f, const State& s) {
   }
 }
 
+// The beams' extents (their two nodes; the orientation node is no part of the beam) and
+// largest point plastic strain (beams are never deleted).
+void measure_beams(FinalShape& f, const State& s) {
+  const BeamState& bm = s.beams;
+  for (int b = 0; b < bm.nb; ++b) {
+    const std::size_t B = std::size_t(b);
+    take_node(f, s, bm.conn[B][0]);
+    take_node(f, s, bm.conn[B][1]);
+    if (bm.eps_p.empty()) continue;
+    for (int p = bm.ip_start[B]; p < bm.ip_start[B + 1]; ++p)
+      if (f.max_eps_beam < 0 || bm.eps_p[std::size_t(p)] > f.beam_eps) f.max_eps_beam = b, f.beam_eps = bm.eps_p[std::size_t(p)];
+  }
+}
+
 }  // namespace
 
 FinalShape measure_final_shape(const State& s) {
   FinalShape f;
   measure_solids(f, s);
   measure_shells(f, s);
+  measure_beams(f, s);
   return f;
 }
 
@@ -110,7 +125,7 @@ std::vector<std::string> final_shape_lines(const Model& m, const State& s, const
     std::snprintf(buf, sizeof buf, "\n final extents: x [%.6e, %.6e]  y [%.6e, %.6e]  z [%.6e, %.6e]", f.lo[0], f.hi[0],
                   f.lo[1], f.hi[1], f.lo[2], f.hi[2]);
   else
-    std::snprintf(buf, sizeof buf, "\n final extents: none (no live solid or shell)");
+    std::snprintf(buf, sizeof buf, "\n final extents: none (no live element)");
   lines.push_back(buf);
   if (f.max_eps_solid >= 0) {
     std::snprintf(buf, sizeof buf, " maximum effective plastic strain %.5f in element %d", f.solid_eps, m.hex_id(f.max_eps_solid));
@@ -119,6 +134,11 @@ std::vector<std::string> final_shape_lines(const Model& m, const State& s, const
   if (f.max_eps_shell >= 0) {
     std::snprintf(buf, sizeof buf, " maximum effective plastic strain of shells %.5f in shell %d", f.shell_eps,
                   m.shell_id(f.max_eps_shell));
+    lines.push_back(buf);
+  }
+  if (f.max_eps_beam >= 0) {
+    std::snprintf(buf, sizeof buf, " maximum effective plastic strain of beams %.5f in beam %d", f.beam_eps,
+                  m.beam_id(f.max_eps_beam));
     lines.push_back(buf);
   }
   return lines;

@@ -1,7 +1,7 @@
 #pragma once
 // Lines of the run log that describe the model's state (run.cpp prints them): the deletion of
 // a solid (message 5004, naming what deleted it) and the final shape (extents and the largest
-// plastic strain of the live solids and shells).
+// plastic strain of the live solids, shells and beams).
 
 #include <string>
 #include <vector>
@@ -14,15 +14,16 @@ namespace impact3d {
 // Message 5004's detail for solid e (0-based) deleted in the last cycle by `cause`.
 std::string describe_solid_failure(const Model& m, const State& s, int e, FailCause cause);
 
-// The final shape of the live elements (failed solids and shells, and nodes only they held, are
-// left out, as in postimpact summary).
+// The final shape of the live elements: solids, shells, beams (failed solids and shells, and
+// nodes only they held, are left out, as in postimpact summary).
 struct FinalShape {
   int failed_solids = 0, failed_shells = 0;
   bool any_live = false;             // a live solid or shell exists (else no extents)
   double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
   int max_eps_solid = -1;            // 0-based live solid of the largest plastic strain, or -1
   int max_eps_shell = -1;            // 0-based live plastic shell of the largest point value, or -1
-  double solid_eps = 0, shell_eps = 0;
+  int max_eps_beam = -1;             // 0-based plastic beam of the largest point value, or -1
+  double solid_eps = 0, shell_eps = 0, beam_eps = 0;
 };
 FinalShape measure_final_shape(const State& s);
 
