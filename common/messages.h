@@ -11,7 +11,8 @@
 //   3000-3099  command line and files
 //   4000-4099  run-time errors (error termination)
 //   5000-5099  run-time information (sense switches, output)
-//   5100-5199  run checks: warnings about a run's results, and its verdict
+//   5100-5109  run checks: warnings about a run's results (impact3d/solve/run_checks.h)
+//   5110-5199  run checks: the verdict (information)
 
 #include <string>
 #include <string_view>
