@@ -498,6 +498,10 @@ class KeywordWriter {
       os_ << "*LOAD_BODY_PARTS\n$#    psid\n" << kcard({I(sid)}) << "\n";
     }
     for (const PrescribedMotion& pm : m_.prescribed_motions) {
+      if (pm.rotation) {
+        note("a prescribed rotational velocity (node " + std::to_string(nid(pm.node)) + ") is not written: keyword decks refuse DOF 5-7 today");
+        continue;
+      }
       const bool rigid = pm.node < 0;
       os_ << (rigid ? "*BOUNDARY_PRESCRIBED_MOTION_RIGID\n$#     pid" : "*BOUNDARY_PRESCRIBED_MOTION_NODE\n$#     nid")
           << "       dof       vad      lcid        sf       vid     death     birth\n"
@@ -649,7 +653,7 @@ void write_fixed_deck(std::ostream& os, const Model& m, std::vector<std::string>
   os << "*----- written by IMPACT-3D (impact3d --write-fixed); layout: README.md \"Deck format\"\n";
   os << "*----- CONTROL CARD #2: counts\n";
   os << TableLine(notes, "control card 2")("NMMAT", int(m.materials.size()))("NUMNP", m.num_nodes())("NUMELH", m.num_hexes())
-            ("NUMELB", 0)("NUMELS", m.num_shells())("NUMELT", 0)("interface segments", k.interface_segments_out)
+            ("NUMELB", m.num_beams())("NUMELS", m.num_shells())("NUMELT", 0)("interface segments", k.interface_segments_out)
             ("interface output interval", k.interface_out_interval).str() << "\n";
   os << "*----- CONTROL CARD #3\n";
   os << TableLine(notes, "control card 3")("node time-history blocks", int(m.node_th_blocks.size()))
@@ -708,8 +712,17 @@ void write_fixed_deck(std::ostream& os, const Model& m, std::vector<std::string>
             .r(51, 60, k.penalty_scale).i(61, 65, 0).i(66, 70, k.viscosity_flag).r(71, 80, k.tssf).str() << "\n";
   os << "*----- CONTROL CARD #7\n";
   os << TableLine(notes, "control card 7").zeros()("mass damping sets", damping_card ? 1 : 0)("non-reflecting boundary segments", 0).str() << "\n";
+  // user beam integration rules: one per beam material that has one, numbered in material order
+  std::vector<int> rule_of(m.materials.size(), 0);
+  int rules = 0, rule_points = 0;
+  for (std::size_t j = 0; j < m.materials.size(); ++j)
+    if (m.materials[j].beam && !m.materials[j].beam_section.user_rule.empty()) {
+      rule_of[j] = ++rules;
+      rule_points = std::max(rule_points, int(m.materials[j].beam_section.user_rule.size()));
+    }
   os << "*----- CONTROL CARD #8\n";
-  os << L("control card 8").i(1, 5, 0).i(6, 10, 0).r(11, 20, k.min_step_factor).str() << "\n";
+  os << TableLine(notes, "control card 8").zeros()("minimum step factor", k.min_step_factor)("beam integration rules", rules)
+            ("beam integration points", rule_points).str() << "\n";
   os << "*----- CONTROL CARD #9\n";
   {
     FixedLine c = L("control card 9");
@@ -725,7 +738,7 @@ void write_fixed_deck(std::ostream& os, const Model& m, std::vector<std::string>
     std::string what = "material " + std::to_string(j + 1);
     os << L(what + " card 1").i(1, 5, int(j) + 1).i(6, 10, md.type).r(11, 20, md.rho).i(21, 25, md.eos.form)
               .i(26, 30, md.hourglass_type).r(31, 40, md.hourglass_coef).i(41, 45, md.bulk_type)
-              .r(46, 55, md.q1).r(56, 65, md.q2).i(66, 70, md.shell ? 2 : 0).i(76, 80, 0).str() << "\n";
+              .r(46, 55, md.q1).r(56, 65, md.q2).i(66, 70, md.shell ? 2 : md.beam ? 1 : 0).i(76, 80, md.beam ? 1 : 0).str() << "\n";
     os << L(what + " title").a(1, 80, md.title).str() << "\n";
     // cards 3-8: each parameter where the type's table puts it (material_types.h)
     const MaterialType* t = find_material_type(md.type);
@@ -741,6 +754,16 @@ void write_fixed_deck(std::ostream& os, const Model& m, std::vector<std::string>
       }
       const std::string text = line.str();
       os << (text.find_first_not_of(' ') == std::string::npos ? std::string() : text) << "\n";
+    }
+    if (md.beam) {  // DYNA3D's beam section: a title line, SHRF QR CST, TS1 TS2 TT1 TT2
+      const BeamSectionData& sec = md.beam_section;
+      if (sec.elform != 1 && notes) notes->push_back(what + ": a truss (ELFORM 3) has no DYNA3D beam card: written as a Hughes-Liu beam");
+      const bool user = !sec.user_rule.empty();
+      os << " Hughes-Liu beam section properties\n";
+      os << TableLine(notes, "beam section card 1", what + " beam section card 1")("shear factor", sec.shrf)
+                ("quadrature rule", user ? -rule_of[j] : sec.qr)("cross-section type", user ? 2 : int(sec.cst)).str() << "\n";
+      os << TableLine(notes, "beam section card 2", what + " beam section card 2")("TS1", sec.ts1)("TS2", sec.ts2)("TT1", sec.tt1)
+                ("TT2", sec.tt2).str() << "\n";
     }
     if (md.shell) {  // DYNA3D's shell section: a title line, SHRF NIP QR, T1-T4
       const ShellSectionData& sec = md.shell_section;
@@ -764,6 +787,13 @@ void write_fixed_deck(std::ostream& os, const Model& m, std::vector<std::string>
       }
     }
   }
+  if (rules > 0) os << "*----- USER BEAM INTEGRATION RULES: points, 1.0; s, t, weight\n";
+  for (std::size_t j = 0; j < m.materials.size(); ++j) {
+    if (!rule_of[j]) continue;
+    const auto& rule = m.materials[j].beam_section.user_rule;
+    os << L("beam integration rule").i(1, 5, int(rule.size())).r(6, 15, 1.0).str() << "\n";
+    for (const auto& p : rule) os << L("beam integration point").r(1, 10, p[0]).r(11, 20, p[1]).r(21, 30, p[2]).str() << "\n";
+  }
   os << "*----- NODES\n";
   static const int rot_code[8] = {0, 1, 2, 4, 3, 6, 5, 7};  // bits (0 rx, 1 ry, 2 rz) -> code 0-7
   for (int n = 0; n < m.num_nodes(); ++n) {
@@ -777,6 +807,14 @@ void write_fixed_deck(std::ostream& os, const Model& m, std::vector<std::string>
     c.i(1, 8, e + 1).i(9, 13, m.hex_material[std::size_t(e)] + 1);
     for (int j = 0; j < 8; ++j) c.i(14 + 8 * j, 21 + 8 * j, m.hex_nodes[std::size_t(e)][std::size_t(j)] + 1);
     os << c.str() << "\n";
+  }
+  if (m.num_beams() > 0) os << "*----- BEAM ELEMENTS: id, material, n1, n2, orientation node n3, TS1 TS2 TT1 TT2\n";
+  for (int e = 0; e < m.num_beams(); ++e) {
+    const auto& n = m.beam_nodes[std::size_t(e)];
+    const auto& t = m.beam_thickness[std::size_t(e)];
+    os << TableLine(notes, "beam element card", "beam " + std::to_string(e + 1))("element number", e + 1)
+              ("material number", m.beam_material[std::size_t(e)] + 1)("node n1", n[0] + 1)("node n2", n[1] + 1)
+              ("orientation node n3", n[2] + 1)("field 6", t[0])("field 7", t[1])("field 8", t[2])("field 9", t[3]).str() << "\n";
   }
   if (m.num_shells() > 0) os << "*----- SHELL ELEMENTS: id, material, n1-n4; thicknesses t1-t4\n";
   for (int e = 0; e < m.num_shells(); ++e) {
@@ -826,7 +864,7 @@ void write_fixed_deck(std::ostream& os, const Model& m, std::vector<std::string>
   for (const PrescribedMotion& pm : m.prescribed_motions) {
     if (pm.node < 0) continue;
     int d = 4;
-    for (int q = 0; q < 3; ++q) if (pm.dir[std::size_t(q)] == 1) d = q + 1;
+    for (int q = 0; q < 3; ++q) if (pm.dir[std::size_t(q)] == 1) d = (pm.rotation ? 5 : 1) + q;
     TableLine c(notes, "velocity/acceleration boundary card");
     c("node", pm.node + 1)("load curve", pm.curve + 1)("DOF", d)("scale factor", pm.scale);
     if (d == 4) c("vx", pm.dir[0])("vy", pm.dir[1])("vz", pm.dir[2]);
@@ -913,11 +951,13 @@ int write_converted_decks(const Model& m, const std::string& keyword_path, const
         return exit_code::input_error;
       }
     }
-    if (k == 1 && m.num_beams() > 0) {
-      log << " error: the fixed-format deck " << path << " cannot hold this model (not written): " << m.num_beams()
-          << " beam(s) (the converter writes beams to keyword decks only)\n";
-      return exit_code::input_error;
-    }
+    if (k == 1)
+      for (std::size_t j = 0; j < m.materials.size(); ++j)
+        if (m.materials[j].beam && m.materials[j].beam_section.elform != 1) {
+          log << " error: the fixed-format deck " << path << " cannot hold this model (not written): material " << j + 1
+              << " is a truss (ELFORM 3: DYNA3D's beam cards hold Hughes-Liu beams; write a keyword deck)\n";
+          return exit_code::input_error;
+        }
     if (k == 1)  // eroding contact has no fixed-format card (its sides hold interior faces)
       for (std::size_t j = 0; j < m.interfaces.size(); ++j)
         if (m.interfaces[j].eroding) {
@@ -1223,6 +1263,7 @@ std::vector<std::string> model_differences(const Model& a, const Model& b, int m
     N(w + "rigid body", x.rigid_material, y.rigid_material);
     dir_differs(w, x.dir, y.dir);
     N(w + "kind", int(x.kind), int(y.kind));
+    N(w + "rotation", x.rotation ? 1 : 0, y.rotation ? 1 : 0);
     curve_differs(w, x.curve, y.curve);
     D(w + "scale", x.scale, y.scale);
     D(w + "birth", x.birth, y.birth);

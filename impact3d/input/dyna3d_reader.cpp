@@ -52,8 +52,8 @@ class Dyna3dReader {
     read_base_accelerations();
     read_mass_damping();
     report_unused_curves();
-    report_ignored();
     report_beams();
+    report_ignored();
     if (const DeckLine* l = deck_.peek_card()) {
       Location loc;
       loc.file = deck_.name();
@@ -215,7 +215,6 @@ class Dyna3dReader {
         k.interface_out_interval = v["interface output interval"];
         if (k.interface_out_interval < 0) v.error(1221, "interface output interval");
         check_counts(v);
-        if (numelb_ > 0) refuse_beam_count(c, v.field("NUMELB").c1, v.field("NUMELB").c2);
       }
     }
     {
@@ -342,7 +341,6 @@ class Dyna3dReader {
     if (k.numnp > avail) { c.error(1205, 6, 10, "NUMNP"); k.numnp = 0; }
     if (k.numelh > avail) { c.error(1205, 11, 15, "NUMELH"); k.numelh = 0; }
     if (numelb_ < 0 || numelb_ > avail) { c.error(1205, 16, 20, "NUMELB"); numelb_ = 0; }
-    if (numelb_ > 0) refuse_beam_count(c, 16, 20);
     if (numels_ < 0 || numels_ > avail / 2) { c.error(1205, 21, 25, "NUMELS"); numels_ = 0; }
     if (k.nmmat > avail / 8 + 1) { c.error(1205, 1, 5, "NMMAT"); k.nmmat = 0; }
     k.nmmat = std::max(k.nmmat, 0);
@@ -567,9 +565,13 @@ class Dyna3dReader {
       md.eos.form = eos_form ? eos_form->form : 0;
       md.hourglass_type = int(c1.i(26, 30, "hourglass type", 1));
       if (md.hourglass_type == 0) md.hourglass_type = 1;
-      if (md.hourglass_type > 5 && md.hourglass_type <= 10)
-        c1.error(1102, 26, 30, "hourglass type", "hourglass type " + std::to_string(md.hourglass_type) + " (IMPACT-3D has 1 viscous (DYNA3D), 2/3 Flanagan-Belytschko viscous, 4/5 stiffness)");
-      else if (md.hourglass_type < 1 || md.hourglass_type > 5)
+      if (md.hourglass_type > 5 && md.hourglass_type <= 10) {
+        // DYNA3D's and LS-DYNA's later forms (6-10: assumed-strain and enhanced stiffness forms):
+        // the nearest here, the exact-volume stiffness form 5, listed once (2040)
+        ignored_fields_.push_back({c1.line(), "material " + std::to_string(md.number) + " hourglass type " + std::to_string(md.hourglass_type) +
+                                                  " (cols 26-30) read as type 5 (stiffness, exact volume)"});
+        md.hourglass_type = 5;
+      } else if (md.hourglass_type < 1 || md.hourglass_type > 5)
         c1.error(1006, 26, 30, "hourglass type", "1 viscous (DYNA3D), 2/3 Flanagan-Belytschko viscous, 4/5 stiffness");
       md.hourglass_coef = c1.e(31, 40, "hourglass coefficient", 0.10);
       if (c1.blank(31, 40) || md.hourglass_coef == 0) md.hourglass_coef = 0.10;
@@ -930,10 +932,13 @@ class Dyna3dReader {
     }
     // rotational codes on nodes no shell uses
     if (!rot_code_line_.empty()) {
-      std::vector<char> shell_node(std::size_t(m_.control.numnp), 0);
+      std::vector<char> shell_node(std::size_t(m_.control.numnp), 0);  // nodes with rotations: shells' and beams'
       for (const auto& q : m_.shell_nodes)
         for (int v : q)
           if (v >= 0) shell_node[std::size_t(v)] = 1;
+      for (const auto& b : m_.beam_nodes)
+        for (int j = 0; j < 2; ++j)
+          if (b[std::size_t(j)] >= 0) shell_node[std::size_t(b[std::size_t(j)])] = 1;
       int count = 0, first_line = 0;
       for (std::size_t i = 0; i < rot_code_line_.size(); ++i)
         if (rot_code_line_[i] && !shell_node[i]) {
@@ -1183,9 +1188,15 @@ class Dyna3dReader {
         const double len = std::sqrt(vx * vx + vy * vy + vz * vz);
         if (!(len > 0)) { v.error(1213, "vx", "DOF 4 moves along the vector (vx, vy, vz), which is zero"); ok = false; }
         else pm.dir = {vx / len, vy / len, vz / len};
-      } else if (dof >= 5 && dof <= 7) {
-        v.error(1102, "DOF", "prescribed rotations (DOF 5-7)");
-        ok = false;
+      } else if (dof >= 5 && dof <= 7) {  // a rotational velocity about x, y, z of a shell or beam node
+        pm.rotation = true;
+        pm.dir = {0, 0, 0};
+        pm.dir[std::size_t(dof - 5)] = 1;
+        if (v.integer("type") != 0) { v.error(1102, "type", "prescribed rotational accelerations and displacements (DOF 5-7 take type 0)"); ok = false; }
+        if (node >= 1 && node <= m_.control.numnp && !has_rotations(int(node) - 1)) {
+          v.error(1102, "node", "a prescribed rotation of a node no shell or beam uses (it has no rotations)");
+          ok = false;
+        }
       } else {
         v.error(1006, "DOF", "1-3 x y z, 4 along a vector, 5-7 rotations");
         ok = false;
@@ -1202,6 +1213,16 @@ class Dyna3dReader {
       pm.line = c.line();
       if (ok && pm.curve >= 0) m_.prescribed_motions.push_back(pm);
     }
+  }
+
+  // Whether node n (0-based) carries rotations: a shell's or a beam's end node.
+  bool has_rotations(int n) const {
+    for (const auto& q : m_.shell_nodes)
+      for (int v : q)
+        if (v == n) return true;
+    for (const auto& b : m_.beam_nodes)
+      if (b[0] == n || b[1] == n) return true;
+    return false;
   }
 
   // IMPACT-3D's old motion card: an I5 type in 29-33 (no decimal point, no exponent) followed
@@ -1583,10 +1604,15 @@ class Dyna3dReader {
     return true;
   }
 
-  // The two section cards of a beam material (element type 1), as DYNA3D decks write them.
+  // The two section cards of a beam material (element type 1), as DYNA3D decks write them:
+  // Hughes-Liu (the material card's formulation 0 or 1), shear factor (0: 1), quadrature rule
+  // (0: 2; -n: user rule n, read after the materials), cross section (0 rectangular, 1 tubular,
+  // 2 a rectangle integrated by a user rule), sizes TS1 TS2 TT1 TT2.
   void read_beam_section(MaterialData& md, const std::string& name) {
-    const bool titled = skip_section_title();
-    if (!titled) {
+    md.beam = true;
+    BeamSectionData& sec = md.beam_section;
+    sec.elform = 1;
+    if (!skip_section_title()) {
       Location loc;
       loc.file = deck_.name();
       loc.line = deck_.peek_card() ? deck_.peek_card()->number : deck_.last_line_number();
@@ -1595,24 +1621,35 @@ class Dyna3dReader {
     Card a = next(name + " beam section card 1");
     FixedValues va(a, fixed_card_layout("beam section card 1", vintage_));
     note_ignored(va);
+    sec.line = a.line();
+    sec.shrf = va["shear factor"] == 0 ? 1.0 : va["shear factor"];
+    if (!(sec.shrf > 0 && sec.shrf <= 1)) va.error(1003, "shear factor", "shear factor in (0, 1]");
     const double qr = va["quadrature rule"];
-    if (qr != std::floor(qr) || qr > 5) va.error(1006, "quadrature rule", "1-5 built-in rules, -n a user rule (0: 2)");
-    if (qr < 0 && -qr > beam_rules_) va.error(1201, "quadrature rule", "user rule " + std::to_string(int(-qr)) + " (control card 8 has " + std::to_string(beam_rules_) + ")");
     const double cst = va["cross-section type"];
+    if (qr != std::floor(qr) || qr > 5 || qr < -1e6) va.error(1006, "quadrature rule", "1-5 built-in rules, -n a user rule (0: 2)");
+    else if (qr < 0 && -qr > beam_rules_) va.error(1201, "quadrature rule", "user rule " + std::to_string(int(-qr)) + " (control card 8 has " + std::to_string(beam_rules_) + ")");
+    sec.qr = qr == 0 ? 2 : int(qr);
     if (cst != 0 && cst != 1 && cst != 2) va.error(1006, "cross-section type", "0 rectangular, 1 tubular, 2 user rule");
+    if (cst == 2 && qr >= 0) va.error(1006, "cross-section type", "2 (a user rule) needs a negative quadrature rule -n");
+    if (cst == 1 && qr < 0) va.error(1102, "quadrature rule", "a user integration rule on a tubular section");
+    sec.cst = cst == 1 ? BeamCrossSection::tubular : BeamCrossSection::rectangular;
     Card b = next(name + " beam section card 2");
     FixedValues vb(b, fixed_card_layout("beam section card 2", vintage_));
     note_ignored(vb);
+    sec.ts1 = vb["TS1"];
+    sec.ts2 = vb["TS2"];
+    sec.tt1 = vb["TT1"];
+    sec.tt2 = vb["TT2"];
     for (const char* f : {"TS1", "TS2", "TT1", "TT2"})
       if (vb[f] < 0) vb.error(1241, f);
     ++beam_material_count_;
-    if (!beam_lines_first_) beam_lines_first_ = a.line();
-    (void)md;
   }
 
   // The user-defined beam integration rules (control card 8 field 4), after the materials:
-  // a header (points I5, a real E10) and one card a point (s, t, weight: 3 E10).
+  // a header (points I5, a real E10) and one card a point (s, t, weight: 3 E10; the weights of
+  // a rule sum to 4, the area of [-1, 1]^2).  Each beam section with rule -n gets rule n.
   void read_beam_integration_rules() {
+    std::vector<std::vector<std::array<double, 3>>> rules;
     for (int r = 0; r < beam_rules_; ++r) {
       const std::string name = "beam integration rule " + std::to_string(r + 1);
       Card h = next(name + " header card", "control card 8 announces " + std::to_string(beam_rules_) + " user beam integration rules");
@@ -1622,6 +1659,7 @@ class Dyna3dReader {
         npts = std::clamp<long long>(npts, 0, remaining_cards());
       }
       h.e(6, 15, "rule area factor");
+      std::vector<std::array<double, 3>> rule;
       double wsum = 0;
       for (long long p = 0; p < npts; ++p) {
         Card c = next(name + " point " + std::to_string(p + 1));
@@ -1629,56 +1667,70 @@ class Dyna3dReader {
         if (std::fabs(sp) > 1 || std::fabs(tp) > 1) c.error(1003, 1, 20, "s, t", "points lie in [-1, 1] x [-1, 1]");
         if (w < 0) c.error(1003, 21, 30, "weight", "must not be negative");
         wsum += w;
+        rule.push_back({sp, tp, w});
       }
-      (void)wsum;
-      if (!beam_lines_first_) beam_lines_first_ = h.line();
+      if (npts > 0 && std::fabs(wsum - 4) > 1e-3) h.error(1003, 1, 5, "number of points", "the weights sum to " + std::to_string(wsum) + ", not 4 (the area of [-1, 1]^2)");
+      rules.push_back(std::move(rule));
     }
+    for (MaterialData& md : m_.materials)
+      if (md.beam && md.beam_section.qr < 0 && std::size_t(-md.beam_section.qr) <= rules.size())
+        md.beam_section.user_rule = rules[std::size_t(-md.beam_section.qr - 1)];
   }
 
-  // Beam element cards (control card 2 NUMELB): read and checked (ids, material of element
-  // type 1, nodes); the beam family is refused as a whole by report_beams until it exists.
+  // Beam element cards (control card 2 NUMELB), after the solids: id, material (element type
+  // 1), n1, n2, the orientation node n3 (0: none), and TS1 TS2 TT1 TT2 of this beam (all 0: the
+  // section's; an inference: TrueGrid writes four reals there, 0.0 in LLNL's decks).
   void read_beams() {
     const int n = numelb_;
     std::vector<int> seen(std::size_t(n), 0);
+    m_.beam_nodes.assign(std::size_t(n), {-1, -1, -1});
+    m_.beam_material.assign(std::size_t(n), -1);
+    m_.beam_thickness.assign(std::size_t(n), {0, 0, 0, 0});
+    m_.beam_line.assign(std::size_t(n), 0);
+    const FixedCardLayout& layout = fixed_card_layout("beam element card", vintage_);
     for (int k = 0; k < n; ++k) {
       Card c = next("beam element card " + std::to_string(k + 1) + " of " + std::to_string(n),
                     "expected " + std::to_string(n) + " beam element cards (control card 2 NUMELB), found " + std::to_string(k));
-      FixedValues v(c, fixed_card_layout("beam element card", vintage_));
-      note_ignored(v);
+      FixedValues v(c, layout);
       const long long id = v.integer("element number");
-      const long long mat = v.integer("material number");
-      if (material_slot(mat) < 1) v.error(1203, "material number", "material " + std::to_string(mat) + " is not defined");
-      for (const char* f : {"node n1", "node n2", "orientation node n3"}) {
-        const long long nid = v.integer(f);
-        if (nid < 1 || nid > m_.control.numnp) v.error(1202, f, "nodes are 1.." + std::to_string(m_.control.numnp));
+      const long long label = v.integer("material number");
+      const int mat = material_slot(label);
+      bool ok = true;
+      if (mat < 1) { v.error(1203, "material number", "material " + std::to_string(label) + " is not defined"); ok = false; }
+      else if (!m_.materials[std::size_t(mat - 1)].beam) {
+        v.error(1203, "material number", "material " + std::to_string(label) + " is not a beam material (material card 1 columns 66-70 element type 1)");
+        ok = false;
       }
-      if (id < 1 || id > n) v.error(1201, "element number", "must be 1.." + std::to_string(n) + " (NUMELB)");
-      else if (seen[std::size_t(id - 1)]) v.error(1200, "element number", "beam " + std::to_string(id) + " already defined on line " + std::to_string(seen[std::size_t(id - 1)]));
-      else seen[std::size_t(id - 1)] = c.line();
-      if (!beam_lines_first_) beam_lines_first_ = c.line();
+      std::array<int, 3> nodes{-1, -1, -1};
+      static const char* const nf[3] = {"node n1", "node n2", "orientation node n3"};
+      for (int j = 0; j < 3; ++j) {
+        const long long nid = v.integer(nf[j]);
+        if (j == 2 && nid == 0) continue;
+        if (nid < 1 || nid > m_.control.numnp) { v.error(1202, nf[j], "nodes are 1.." + std::to_string(m_.control.numnp)); ok = false; }
+        else nodes[std::size_t(j)] = int(nid) - 1;
+      }
+      if (ok && nodes[0] == nodes[1]) { v.error(1250, "node n2", "n1 = n2"); ok = false; }
+      std::array<double, 4> t{v["field 6"], v["field 7"], v["field 8"], v["field 9"]};
+      if (id < 1 || id > n) { v.error(1201, "element number", "must be 1.." + std::to_string(n) + " (NUMELB)"); continue; }
+      if (seen[std::size_t(id - 1)]) {
+        v.error(1200, "element number", "beam " + std::to_string(id) + " already defined on line " + std::to_string(seen[std::size_t(id - 1)]));
+        continue;
+      }
+      seen[std::size_t(id - 1)] = c.line();
+      m_.beam_line[std::size_t(id - 1)] = c.line();
+      if (!ok) continue;
+      m_.beam_nodes[std::size_t(id - 1)] = nodes;
+      m_.beam_material[std::size_t(id - 1)] = mat - 1;
+      m_.beam_thickness[std::size_t(id - 1)] = t;
     }
     report_missing(seen, "beam element");
   }
 
-  // One error for the beam family (beams are their own element family, not yet here): at
-  // control card 2 when it counts beams (refuse_beam_count), else here for beam materials,
-  // rules or time-history blocks without beams.
-  void refuse_beam_count(Card& c, int c1, int c2) {
-    c.error(1102, c1, c2, "NUMELB", "beam elements: IMPACT-3D has no beam element yet (the deck's beam cards, beam materials and "
-                                    "their section cards are still read and checked)");
-  }
+  // Beam materials or rules without beams, and beam time-history blocks (the time-history
+  // database has no beam blocks yet): listed once (2040).
   void report_beams() {
-    if (numelb_ > 0 || (beam_material_count_ == 0 && beam_th_blocks_ == 0 && beam_rules_ == 0)) return;
-    Location loc;
-    loc.file = deck_.name();
-    loc.line = card2_line_;
-    loc.card = "control card 2";
-    loc.field = "NUMELB";
-    loc.col_first = m_.large_format ? 26 : 16;
-    loc.col_last = m_.large_format ? 35 : 20;
-    diag_.add(1102, loc, "beam elements: " + std::to_string(numelb_) + " beam(s), " + std::to_string(beam_material_count_) +
-                             " beam material(s), " + std::to_string(beam_rules_) + " user integration rule(s) and " +
-                             std::to_string(beam_th_blocks_) + " beam time-history block(s) were read and checked; IMPACT-3D has no beam element yet");
+    if (beam_th_blocks_ > 0)
+      ignored_fields_.push_back({card2_line_ + 1, std::to_string(beam_th_blocks_) + " beam time-history block(s): beam histories are not written yet"});
   }
 
   // Mass-proportional damping cards (control card 7 field 11 or free-format mdamp): the damping

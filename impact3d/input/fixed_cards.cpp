@@ -231,10 +231,10 @@ std::vector<FixedCardLayout> make_layouts() {
       {"node n1", 14, 21, K::integer, 0, R, nullptr, ""},
       {"node n2", 22, 29, K::integer, 0, R, nullptr, ""},
       {"orientation node n3", 30, 37, K::integer, 0, R, nullptr, "with n1 and n2, the beam's local s axis plane"},
-      {"field 6", 38, 45, K::real, 0, I, "a beam-card field of DYNA3D not known here", ""},
-      {"field 7", 46, 53, K::real, 0, I, "a beam-card field of DYNA3D not known here", ""},
-      {"field 8", 54, 61, K::real, 0, I, "a beam-card field of DYNA3D not known here", ""},
-      {"field 9", 62, 69, K::real, 0, I, "a beam-card field of DYNA3D not known here", ""},
+      {"field 6", 38, 45, K::real, 0, R, nullptr, "this beam's TS1 (an inference; 0: the section's)"},
+      {"field 7", 46, 53, K::real, 0, R, nullptr, "TS2"},
+      {"field 8", 54, 61, K::real, 0, R, nullptr, "TT1"},
+      {"field 9", 62, 69, K::real, 0, R, nullptr, "TT2"},
   }});
   t.push_back({"beam section card 1", "88 later", {
       {"shear factor", 1, 10, K::real, 0, R, nullptr, "(0: 1)"},

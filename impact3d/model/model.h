@@ -259,6 +259,9 @@ struct PrescribedMotion {      // *BOUNDARY_PRESCRIBED_MOTION_NODE / _SET / _RIG
   int rigid_material = -1;     // 0-based material index of a rigid body (node == -1)
   std::array<double, 3> dir{};
   MotionKind kind = MotionKind::velocity;
+  // a prescribed rotational velocity about dir (DYNA3D DOF 5-7) of a node with rotations
+  // (a shell's or a beam's): the velocity form only
+  bool rotation = false;
   int curve = 0;
   double scale = 1;
   double birth = 0, death = 1e28;

@@ -183,7 +183,9 @@ StepStatus Engine::step() {
   if (!m_.walls.empty()) update_moving_walls(m_, s, dt_next);
   times_.walls += seconds_since(t);
   t = Clock::now();
-  update_rotational_velocities_for_nodes(s, dt_n);  // shells' rotations (none: no-op)
+  if (loads_.has_rotations) capture_rotations(m_, s, loads_);
+  update_rotational_velocities_for_nodes(s, dt_n);  // shells' and beams' rotations (none: no-op)
+  if (loads_.has_rotations) apply_prescribed_rotations(m_, s, loads_, s.time, dt_next);
   times_.nodes += seconds_since(t);
   s.time += dt_next;
   s.cycle += 1;

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "impact3d/solve/rigid_body.h"
+#include "impact3d/solve/shell_processing.h"
 
 namespace impact3d {
 
@@ -123,6 +124,9 @@ void prepare_loads(const Model& m, const State& s, LoadSet& loads) {
   }
   loads.free_velocity.assign(m.prescribed_motions.size(), 0.0);
   loads.active.assign(m.prescribed_motions.size(), 0);
+  loads.rot_old.assign(m.prescribed_motions.size(), 0.0);
+  loads.has_rotations = false;
+  for (const PrescribedMotion& pm : m.prescribed_motions) loads.has_rotations = loads.has_rotations || pm.rotation;
   loads.has_loads = m.has_loads();
   loads.has_motions = !m.prescribed_motions.empty();
 }
@@ -190,7 +194,7 @@ void apply_prescribed_motions(const Model& m, State& s, LoadSet& loads, double t
   for (std::size_t j = 0; j < m.prescribed_motions.size(); ++j) {
     const PrescribedMotion& pm = m.prescribed_motions[j];
     loads.active[j] = 0;
-    if (!motion_is_active(pm, t)) continue;
+    if (pm.rotation || !motion_is_active(pm, t)) continue;
     const auto& d = pm.dir;
     if (pm.node >= 0) {
       const std::size_t k = std::size_t(pm.node);
@@ -219,6 +223,44 @@ void apply_prescribed_motions(const Model& m, State& s, LoadSet& loads, double t
     for (int a = 0; a < 3; ++a) rb.vcom[std::size_t(a)] += (vp - v_along) * d[std::size_t(a)];
     set_rigid_body_node_velocities(s, rb);
   }
+}
+
+void capture_rotations(const Model& m, const State& s, LoadSet& loads) {
+  const ShellState& sh = s.shells;
+  for (std::size_t j = 0; j < m.prescribed_motions.size(); ++j) {
+    const PrescribedMotion& pm = m.prescribed_motions[j];
+    if (!pm.rotation || pm.node < 0 || sh.node_rot.empty()) continue;
+    const int r = sh.node_rot[std::size_t(pm.node)];
+    if (r < 0) continue;
+    const std::size_t R = std::size_t(r);
+    loads.rot_old[j] = sh.wx[R] * pm.dir[0] + sh.wy[R] * pm.dir[1] + sh.wz[R] * pm.dir[2];
+  }
+}
+
+void apply_prescribed_rotations(const Model& m, State& s, LoadSet& loads, double t, double dt_next) {
+  ShellState& sh = s.shells;
+  bool changed = false;
+  double work = 0;
+  for (std::size_t j = 0; j < m.prescribed_motions.size(); ++j) {
+    const PrescribedMotion& pm = m.prescribed_motions[j];
+    if (!pm.rotation || pm.node < 0 || sh.node_rot.empty() || !motion_is_active(pm, t)) continue;
+    const int r = sh.node_rot[std::size_t(pm.node)];
+    if (r < 0) continue;
+    const std::size_t R = std::size_t(r);
+    const auto& d = pm.dir;
+    const double w_free = sh.wx[R] * d[0] + sh.wy[R] * d[1] + sh.wz[R] * d[2];
+    const double w = pm.scale * curve_value(m, pm.curve, t + 0.5 * dt_next);
+    sh.wx[R] += (w - w_free) * d[0];
+    sh.wy[R] += (w - w_free) * d[1];
+    sh.wz[R] += (w - w_free) * d[2];
+    work += sh.inertia[R] * (w - w_free) * 0.5 * (loads.rot_old[j] + w);
+    changed = true;
+  }
+  if (!changed) return;
+  s.kinetic -= sh.rot_kinetic;
+  sh.rot_kinetic = calc_rotational_kinetic_energy(s);
+  s.kinetic += sh.rot_kinetic;
+  s.external_work += work;
 }
 
 void book_external_work(const Model& m, State& s, const LoadSet& loads, double dt_n) {

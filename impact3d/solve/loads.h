@@ -22,6 +22,8 @@ double value_of_curve(const LoadCurve& lc, double t);
 
 // The loads of a model, laid out for the cycle.  Built once at initialization.
 struct LoadSet {
+  bool has_rotations = false;          // some prescribed motion is a rotation
+  std::vector<double> rot_old;         // per prescribed motion: omega^{n-1/2} along its axis
   // nodal forces and pressures: the force of each this cycle, kept for the work book
   std::vector<double> nodal_force;     // 3 per Model::nodal_loads entry
   std::vector<double> pressure_force;  // 12 per Model::pressure_loads entry (4 nodes x 3)
@@ -46,6 +48,13 @@ void apply_loads_to_nodes(const Model& m, State& s, LoadSet& loads, double t);
 // v^{n+1/2}.  t is t^n; dt_n and dt_next as in the node pass.
 void apply_prescribed_motions(const Model& m, State& s, LoadSet& loads, double t, double dt_n,
                               double dt_next);
+
+// Prescribed rotational velocities (PrescribedMotion::rotation) of nodes with rotations:
+// capture_rotations keeps omega^{n-1/2} along each axis before the rotational update,
+// apply_prescribed_rotations then sets the prescribed components of omega^{n+1/2} and books
+// the reaction moment's work I (w - w_free) / dt_n * (w_old + w) / 2 * dt_n.
+void capture_rotations(const Model& m, const State& s, LoadSet& loads);
+void apply_prescribed_rotations(const Model& m, State& s, LoadSet& loads, double t, double dt_next);
 
 // Books the work of the loads and of the prescribed motions' reactions over this cycle in
 // s.external_work (call after the velocities are final).

@@ -350,3 +350,116 @@ TEST(FixedCards, EveryLayoutIsOrderedAndWithinEightyColumns) {
     }
   }
 }
+
+namespace {
+
+// A steel cantilever (1 m, ten Hughes-Liu beams, 50 x 50 mm, clamped at node 1) in the later
+// layout: a beam material (element type 1) with its "Hughes-Liu Beam Section Properties" cards
+// (QR `qr`, CST `cst`), optionally user rule 1 (2 x 2 Gauss written as a user rule, weights 1),
+// a tip load P = 100 N along z (nodal load card), critical mass damping of the first mode.
+std::string cantilever(int qr = 2, int cst = 0, bool user_rule = false) {
+  const int nb = 10;
+  std::string s = title("steel cantilever, Hughes-Liu beams, later DYNA3D layout (SI)");
+  s += I(1, 5) + I(nb + 1, 10) + I(0, 10) + I(nb, 10) + I(0, 10) + I(0, 10) + I(0, 10) + reals({0}) + "  0.0\n";
+  s += ints({0, 0, 0, 0, 0, 0, 0, 0, 0}) + "\n";
+  s += I(0, 10) + ints({0, 0, 0, 0}) + "e20.0" + I(0, 5) + reals({0}) + "\n";
+  s += ints({1, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}) + "\n";
+  s += reals({0.06, 0.006, 0.006}) + ints({0, 0}) + reals({0, 0}) + ints({0, 0}) + reals({0}) + "\n";
+  s += ints({0, 0, 0, 0, 0, 0, 0, 0, 0}) + "     " + I(1, 5) + ints({0, 0, 0, 0}) + "\n";
+  s += ints({0, 0}) + reals({0}) + ints({user_rule ? 1 : 0, user_rule ? 4 : 0, 0, 0, 250}) + reals({1e-3, 0.995, 0}) + ints({0}) + "\n";
+  s += ints({0, 0, 0, 0}) + reals({0}) + ints({0, 0, 0}) + "\n";
+  s += mat_card1(1, 1, 7.8e3, 1, 1);
+  s += "material type # 1 (elastic)\n";
+  s += reals({2e11}) + "\n" + reals({0.3}) + "\n\n\n\n\n";
+  s += " Hughes-Liu Beam Section Properties\n";
+  s += reals({0.8333, double(user_rule ? -1 : qr), double(cst)}) + "\n";
+  s += reals({0.05, 0.05, 0.05, 0.05, 0, 0}) + "\n";
+  if (user_rule) {
+    s += I(4, 5) + reals({1}) + "\n";
+    const double g = 1 / std::sqrt(3.0);
+    for (double a : {-g, g})
+      for (double b : {-g, g}) s += reals({a, b, 1.0}) + "\n";
+  }
+  for (int k = 0; k <= nb; ++k) s += I(k + 1, 8) + I(k == 0 ? 7 : 0, 5) + E(0.1 * k, 20, 13) + E(0, 20, 13) + E(0, 20, 13) + I(k == 0 ? 7 : 0, 5) + "\n";
+  for (int k = 0; k < nb; ++k) s += I(k + 1, 8) + I(1, 5) + ints({k + 1, k + 2, 0}, 8) + "\n";
+  s += ints({1, 2, 0}) + "\n" + reals({0, 1}) + "\n" + reals({1, 1}) + "\n";
+  s += I(nb + 1, 8) + I(3, 5) + I(1, 5) + reals({100}) + "\n";
+  // critical damping of the first bending mode: omega1 = 1.875^2 sqrt(EI / (rho A L^4))
+  const double EI = 2e11 * std::pow(0.05, 4) / 12, rhoA = 7.8e3 * 0.05 * 0.05;
+  const double omega1 = 1.875104 * 1.875104 * std::sqrt(EI / rhoA);
+  s += reals({1.0, omega1, 0, 0}) + "\n";
+  return s;
+}
+
+}  // namespace
+
+// Beams from the fixed format: a cantilever under a tip load settles (critical mass damping) on
+// the closed form P L^3 / 3EI + P L / (k G A) (Timoshenko's shear term, k = 0.8333), within 1 %.
+TEST(RealDyna3dLayout, FixedFormatCantileverSettlesOnTheClosedForm) {
+  Model m;
+  Diagnostics d;
+  ASSERT_TRUE(read_string(cantilever(), m, d)) << all_messages(d);
+  ASSERT_TRUE(check_model(m, d)) << all_messages(d);
+  ASSERT_EQ(m.num_beams(), 10);
+  EXPECT_TRUE(m.materials[0].beam);
+  EXPECT_EQ(m.materials[0].beam_section.qr, 2);
+  EXPECT_DOUBLE_EQ(m.materials[0].beam_section.ts1, 0.05);
+  const State s = run_to_end(m);
+  const double E = 2e11, G = E / 2.6, h = 0.05, I = h * h * h * h / 12, P = 100, L = 1;
+  const double expected = P * L * L * L / (3 * E * I) + P * L / (0.8333 * G * h * h);
+  EXPECT_NEAR(s.z[10] - m.z[10], expected, 0.01 * expected);
+}
+
+// A user integration rule (QR -1, cross-section type 2) holding 2 x 2 Gauss (points written to
+// four digits, +-5.774e-1) gives the built-in rule 2's deflections within 5e-4 (the rounded
+// points' second moment, (0.5774 sqrt 3)^2 - 1 = 2e-4); the fixed -> fixed round trip keeps it.
+TEST(RealDyna3dLayout, UserBeamRuleEqualsTheBuiltInRuleAndRoundTrips) {
+  Model a, b;
+  Diagnostics da, db;
+  ASSERT_TRUE(read_string(cantilever(), a, da)) << all_messages(da);
+  ASSERT_TRUE(read_string(cantilever(2, 2, true), b, db)) << all_messages(db);
+  ASSERT_EQ(b.materials[0].beam_section.user_rule.size(), 4u);
+  ASSERT_TRUE(check_model(a, da) && check_model(b, db));
+  const State sa = run_to_end(a), sb = run_to_end(b);
+  for (int n = 1; n < 11; ++n) EXPECT_NEAR(sb.z[std::size_t(n)] / sa.z[std::size_t(n)], 1.0, 5e-4) << n;
+  std::ostringstream fx;
+  write_fixed_deck(fx, b);
+  Model c;
+  Diagnostics dc;
+  ASSERT_TRUE(read_string(fx.str(), c, dc)) << all_messages(dc) << fx.str();
+  const auto diff = model_differences(b, c, 20);
+  EXPECT_TRUE(diff.empty()) << diff.front();
+  EXPECT_EQ(c.materials[0].beam_section.user_rule, b.materials[0].beam_section.user_rule);
+}
+
+// A prescribed rotational velocity (DOF 6, about y) at the tip of the cantilever: 1 rad/s for
+// 9 ms, down to 0 at 11 ms (10 mrad in all), then held; with critical damping it settles on a pure end moment's shape, tip rotation
+// theta = 0.01 and tip deflection -theta L / 2 (within 1 %); the rotation is the prescribed one.
+TEST(RealDyna3dLayout, PrescribedTipRotationBendsTheCantileverAsAnEndMoment) {
+  std::string s = cantilever();
+  const std::string c5 = ints({1, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0});
+  s.replace(s.find(c5), c5.size(), ints({1, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}));
+  const std::string curve = ints({1, 2, 0}) + "\n" + reals({0, 1}) + "\n" + reals({1, 1}) + "\n";
+  s.replace(s.find(curve), curve.size(), ints({1, 4, 0}) + "\n" + reals({0, 1}) + "\n" + reals({0.009, 1}) + "\n" + reals({0.011, 0}) + "\n" +
+                                             reals({1, 0}) + "\n");
+  const std::string load = I(11, 8) + I(3, 5) + I(1, 5) + reals({100}) + "\n";
+  s.replace(s.find(load), load.size(), I(11, 8) + I(1, 5) + I(6, 5) + reals({1, 0, 0, 0}) + I(0, 5) + "\n");
+  Model m;
+  Diagnostics d;
+  ASSERT_TRUE(read_string(s, m, d)) << all_messages(d);
+  ASSERT_TRUE(check_model(m, d)) << all_messages(d);
+  ASSERT_EQ(m.prescribed_motions.size(), 1u);
+  EXPECT_TRUE(m.prescribed_motions[0].rotation);
+  const State st = run_to_end(m);
+  const double theta = 0.01, L = 1;
+  EXPECT_NEAR(st.z[10] - m.z[10], -theta * L / 2, 0.01 * theta * L / 2);
+  EXPECT_NEAR(st.energy_ratio(), 1.0, 1e-3);
+  // a rotational displacement (type 2) is refused naming the type field
+  std::string bad = cantilever();
+  bad.replace(bad.find(c5), c5.size(), ints({1, 1, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}));
+  bad.replace(bad.find(load) + load.size(), 0, I(11, 8) + I(1, 5) + I(6, 5) + reals({1, 0, 0, 0}) + I(2, 5) + "\n");
+  Model mb;
+  Diagnostics db;
+  EXPECT_FALSE(read_string(bad, mb, db));
+  EXPECT_NE(all_messages(db).find("field \"type\" (cols 59-63)"), std::string::npos) << all_messages(db);
+}
