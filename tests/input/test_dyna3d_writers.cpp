@@ -49,19 +49,25 @@ TEST(Dyna3dWriters, MaterialElementTypeIsSolidBeamShellOrThickShell) {
     EXPECT_TRUE(read_string(small_deck(0), m, d)) << all_messages(d);
   }
   // (element type 2, shells: tests/input/test_shell_cards.cpp)
-  // a beam material (with its section cards) is read and checked; the beam family is refused
-  // as a whole (control card 2 NUMELB), a thick shell by its element type
-  const char* kinds[] = {"", "beam elements: 0 beam(s), 1 beam material(s)", "", "thick shells (element type 3)"};
-  const char* cols[] = {"", "cols 16-20", "", "cols 66-70"};
-  for (int et = 1; et <= 3; et += 2) {
+  // a beam material (element type 1) with its section cards reads: a Hughes-Liu beam section
+  {
     Model m;
     Diagnostics d;
-    EXPECT_FALSE(read_string(small_deck(et), m, d));
+    EXPECT_TRUE(read_string(small_deck(1), m, d)) << all_messages(d);
+    ASSERT_EQ(m.materials.size(), 1u);
+    EXPECT_TRUE(m.materials[0].beam);
+    EXPECT_DOUBLE_EQ(m.materials[0].beam_section.ts1, 1e-3);
+  }
+  // a thick shell is refused by its element type
+  {
+    Model m;
+    Diagnostics d;
+    EXPECT_FALSE(read_string(small_deck(3), m, d));
     ASSERT_EQ(d.count(1102), 1) << all_messages(d);
     EXPECT_EQ(d.error_count(), 1) << all_messages(d);
     const std::string msg = all_messages(d);
-    EXPECT_NE(msg.find(kinds[et]), std::string::npos) << msg;
-    EXPECT_NE(msg.find(cols[et]), std::string::npos) << msg;
+    EXPECT_NE(msg.find("thick shells (element type 3)"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("cols 66-70"), std::string::npos) << msg;
   }
   Model m;
   Diagnostics d;
