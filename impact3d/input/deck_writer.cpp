@@ -757,7 +757,7 @@ void write_fixed_deck(std::ostream& os, const Model& m, std::vector<std::string>
     }
     if (md.beam) {  // DYNA3D's beam section: a title line, SHRF QR CST, TS1 TS2 TT1 TT2
       const BeamSectionData& sec = md.beam_section;
-      if (sec.elform != 1 && notes) notes->push_back(what + ": a truss (ELFORM 3) has no DYNA3D beam card: written as a Hughes-Liu beam");
+      if (sec.elform != 1 && notes) notes->push_back(what + ": a resultant beam or truss (ELFORM 2/3) has no DYNA3D beam card: written as a Hughes-Liu beam");
       const bool user = !sec.user_rule.empty();
       os << " Hughes-Liu beam section properties\n";
       os << TableLine(notes, "beam section card 1", what + " beam section card 1")("shear factor", sec.shrf)
@@ -955,7 +955,7 @@ int write_converted_decks(const Model& m, const std::string& keyword_path, const
       for (std::size_t j = 0; j < m.materials.size(); ++j)
         if (m.materials[j].beam && m.materials[j].beam_section.elform != 1) {
           log << " error: the fixed-format deck " << path << " cannot hold this model (not written): material " << j + 1
-              << " is a truss (ELFORM 3: DYNA3D's beam cards hold Hughes-Liu beams; write a keyword deck)\n";
+              << " is a resultant beam or a truss (ELFORM 2/3: DYNA3D's beam cards hold Hughes-Liu beams; write a keyword deck)\n";
           return exit_code::input_error;
         }
     if (k == 1)  // eroding contact has no fixed-format card (its sides hold interior faces)
