@@ -254,6 +254,17 @@ double dyna3d_stiffness(double mu, double bulk_modulus, double area, double volu
   return volume > 0 ? mu * bulk_modulus * area * area / volume : 0.0;
 }
 
+double penopt_stiffness(int penopt, double k_segment, double k_node) {
+  if (!(k_node > 0) || penopt == 2) return k_segment;
+  if (penopt == 3) return k_node;
+  return std::min(k_segment, k_node);
+}
+
+double soft_constraint_stiffness(double k0, double sofscl, double m_star, double dt_c) {
+  if (!(m_star > 0) || !(dt_c > 0)) return k0;
+  return std::max(k0, sofscl * 0.5 * m_star / (dt_c * dt_c));
+}
+
 double max_stable_alpha(double tssf) { return std::max(1.0 - tssf * tssf, 0.01); }
 
 double max_stable_stiffness(double tssf, double dt, double m1, double m2, bool symmetric) {

@@ -77,6 +77,17 @@ double shell_stiffness(double mu, double bulk_modulus, double area, double max_d
 // Penalty stiffness, choice 0 (DYNA3D, Hallquist; seed eq. 6): k = mu K A^2 / V.
 double dyna3d_stiffness(double mu, double bulk_modulus, double area, double volume);
 
+// PENOPT (LS-DYNA *CONTROL_CONTACT): the penalty stiffness of a node on a segment from the
+// segment's stiffness and the node's own (the smallest of its surface segments'): 1 the smaller
+// (LS-DYNA's default: a stiff segment's k on a light node is not stable), 2 the segment's
+// (DYNA3D), 3 the node's.  A node without a stiffness of its own (0) takes the segment's.
+double penopt_stiffness(int penopt, double k_segment, double k_node);
+
+// LS-DYNA's soft constraint (SOFT = 1): k = max(k0, SOFSCL 0.5 m* / dt_c^2), k0 the penalty
+// stiffness of choice 0 (with PENOPT), m* the smaller of the node's mass and its segment's
+// nodes' masses, dt_c the step (the first, and later the largest taken).
+double soft_constraint_stiffness(double k0, double sofscl, double m_star, double dt_c);
+
 // Penalty stiffness, choice 1 (IMPACT-3D maximum stable; seed eqs. 10-17):
 // alpha = 1 - F^2 (F the time-step scale factor), k = c alpha / (dt^2 (1/m1 + 1/m2)) with c = 2
 // for the symmetric (two-pass) treatment, where each spring only gets half the mass alpha m

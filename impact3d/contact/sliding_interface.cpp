@@ -42,6 +42,7 @@ struct Surface {
   std::vector<std::array<int, 4>> seg;
   std::vector<std::uint8_t> boundary;  // bit e: edge e is on the surface's rim
   std::vector<double> k0;              // DYNA3D stiffness mu K A^2 / V (initial geometry)
+  std::vector<double> node_k;          // per node: the smallest k0 of its segments (PENOPT)
   std::vector<double> pmax;            // largest accepted penetration
   std::vector<int> elem;               // the solid each segment is a face of (-1: none found)
   std::vector<int> shell;              // the shell each segment is (-1: a solid face): both sides
@@ -78,6 +79,7 @@ struct Hit {
   double f[3] = {0, 0, 0};   // total force on the node (normal + friction)
   double fn = 0, pen = 0;
   int evaluations = 0;
+  double omega_dt = 0;  // the spring's omega dt (stability diagnostic)
   bool refused = false;  // its penetration jumped beyond its approach (the jump went to its offset)
 };
 
@@ -94,7 +96,9 @@ struct Interface {
   Surface surf[2];
   Pass pass[2];
   int npass = 2;
-  int method = 0;
+  int method = 0;     // SlidingInterface::stiffness_method
+  int penopt = 2;
+  double sofscl = 0.1;
   double mu = 0.1, fs = 0, fd = 0, decay = 0;
   bool symmetric = true;
   bool single = false;  // single surface (DYNA3D type 4): surface 0 against itself, one pass
@@ -278,6 +282,13 @@ void build_surface(const State& s, const ShellIndex& shx, const std::vector<std:
           sf.node_seg[std::size_t(cur[std::size_t(lc[std::size_t(a)])]++)] = int(j);
     }
   }
+  // the nodes' own stiffness (PENOPT 1 and 3): the smallest of their segments'
+  sf.node_k.assign(sf.nodes.size(), 0.0);
+  for (std::size_t j = 0; j < ns; ++j)
+    for (int a = 0; a < 4; ++a) {
+      double& kn = sf.node_k[std::size_t(sf.local[j][std::size_t(a)])];
+      if (sf.k0[j] > 0) kn = kn > 0 ? std::min(kn, sf.k0[j]) : sf.k0[j];
+    }
   // the nodes' own shell offsets: a shell node touches at half its shell's thickness
   sf.node_off.assign(sf.nodes.size(), 0.0);
   sf.node_off_max = 0;
@@ -445,6 +456,7 @@ struct SlidingInterfaces::Impl {
   double max_pen = 0;
   SearchStats stats;
 
+  double dt_soft = 0;  // the soft constraint's step: the first, then the largest taken
   void node_pass(const Model& m, const State& s, Interface& in, Pass& ps, double dt, double dt_k);
 };
 
@@ -521,8 +533,13 @@ void SlidingInterfaces::Impl::node_pass(const Model&, const State& s, Interface&
     double N[4];
     contact::shape4(bh.xi, bh.eta, N);
     double kpen;
-    if (in.method == 0) {
-      kpen = segs.k0[std::size_t(best)];
+    if (in.method != 1) {  // DYNA3D (with PENOPT), or LS-DYNA's soft constraint
+      kpen = contact::penopt_stiffness(in.penopt, segs.k0[std::size_t(best)], nodes_sf.node_k[std::size_t(q)]);
+      if (in.method == 2) {
+        double m_star = s.mass[k];
+        for (int a = 0; a < 4; ++a) m_star = std::min(m_star, s.mass[std::size_t(segs.seg[std::size_t(best)][std::size_t(a)])]);
+        kpen = contact::soft_constraint_stiffness(kpen, in.sofscl, m_star, dt_soft);
+      }
     } else {
       int a_near = 0;
       for (int a = 1; a < 4; ++a)
@@ -565,6 +582,14 @@ void SlidingInterfaces::Impl::node_pass(const Model&, const State& s, Interface&
     adm[1] = offset;
     // (an offset node whose approach is round-off, sliding along the face, is not in contact)
     if (!(pen_used > 0) || (offset > 0 && pen_used <= kExplainedTol * pmax)) continue;
+    {
+      double lam = s.mass[k] > 0 ? 1.0 / s.mass[k] : 0.0;
+      for (int a = 0; a < 4; ++a) {
+        const double ma = s.mass[std::size_t(sg[std::size_t(a)])];
+        if (ma > 0) lam += N[a] * N[a] / ma;
+      }
+      hit.omega_dt = dt * std::sqrt(kpen * lam);
+    }
     const double fn = kpen * pen_used;
     hit.seg = best;
     for (int a = 0; a < 4; ++a) hit.N[a] = N[a];
@@ -603,6 +628,8 @@ void SlidingInterfaces::initialize(const Model& m, const State& s) {
     const SlidingInterface& d = m.interfaces[i];
     Interface& in = im.ifaces[i];
     in.method = d.stiffness_method;
+    in.penopt = d.penopt;
+    in.sofscl = d.sofscl;
     in.mu = d.penalty_scale > 0 ? d.penalty_scale : m.control.penalty_scale;
     in.fs = d.fs;
     in.fd = d.fd;
@@ -663,6 +690,7 @@ void SlidingInterfaces::apply(const Model& m, State& s, double dt) {
   im.max_pen = 0;
   im.stats = SearchStats{};
   const double dt_k = im.any_max_stable ? std::max(dt, elastic_step(s, im.tssf)) : dt;
+  im.dt_soft = std::max(im.dt_soft, dt);
   const std::size_t nif = im.ifaces.size();
   for (std::size_t t = 0; t < im.transducers.size(); ++t) im.forces[nif + t] = {0.0, 0.0, 0.0};
   // 2. every interface, every pass
@@ -686,6 +714,7 @@ void SlidingInterfaces::apply(const Model& m, State& s, double dt) {
         im.stats.refused += h.refused ? 1 : 0;
         if (h.seg < 0) continue;
         ++im.stats.contacts;
+        im.stats.max_omega_dt = std::max(im.stats.max_omega_dt, h.omega_dt);
         im.max_pen = std::max(im.max_pen, h.pen);
         const std::size_t k = std::size_t(nodes_sf.nodes[q]);
         double fa[4][3];
@@ -767,7 +796,7 @@ const std::vector<double>& SlidingInterfaces::surface_node_forces(std::size_t i,
 double SlidingInterfaces::max_penetration() const { return impl_->max_pen; }
 SlidingInterfaces::SearchStats SlidingInterfaces::search_stats() const { return impl_->stats; }
 SlidingInterfaces::RestartData SlidingInterfaces::restart_data() const {
-  RestartData d{impl_->prev, {}, 0.0, impl_->has_prev};
+  RestartData d{impl_->prev, {}, impl_->dt_soft, impl_->has_prev};
   for (const Interface& in : impl_->ifaces)
     for (int p = 0; p < in.npass; ++p) d.admitted.insert(d.admitted.end(), in.pass[p].admitted.begin(), in.pass[p].admitted.end());
   return d;
@@ -775,6 +804,7 @@ SlidingInterfaces::RestartData SlidingInterfaces::restart_data() const {
 void SlidingInterfaces::restore(const RestartData& d) {
   impl_->prev = d.forces;
   impl_->has_prev = d.has;
+  impl_->dt_soft = d.dtn;
   // the admitted depths in interface and pass order (a dump without them: none admitted)
   std::size_t total = 0;
   for (const Interface& in : impl_->ifaces)

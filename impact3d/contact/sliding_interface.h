@@ -51,17 +51,21 @@ class SlidingInterfaces {
   struct SearchStats {
     long nodes = 0, evaluations = 0, contacts = 0;
     long refused = 0;  // nodes whose penetration jumped beyond their approach (offset grew)
+    // largest omega dt of a node's spring in contact: dt sqrt(k (1/m_node + sum N_A^2 / m_A))
+    // (the 5-node spring's eigenvalue, seed eq. 13, with the step about to be taken); the
+    // central difference is stable for omega dt < 2
+    double max_omega_dt = 0;
   };
   SearchStats search_stats() const;
 
   // A restart dump carries the last cycle's contact forces (3 doubles per node, and a flag;
   // book_energy() needs them) and, for each node of each pass (interfaces and passes in
   // order), its last geometric penetration and its offset (the part no approach explained).
-  // (The dump's second array once held a predicted v^{n+1/2}; dtn is unused.)
+  // (The dump's second array once held a predicted v^{n+1/2}.)
   struct RestartData {
     std::vector<double> forces;    // 3 per node
     std::vector<double> admitted;  // 2 per pass node; empty in a dump without contact
-    double dtn = 0;                // unused
+    double dtn = 0;                // the soft constraint's step (SOFT 1's dt_c)
     bool has = false;
   };
   RestartData restart_data() const;

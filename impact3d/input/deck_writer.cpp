@@ -112,7 +112,16 @@ class KeywordWriter {
                     I(k.mass_scaling_first_only ? 1 : 0)}) << "\n";
     else
       os_ << "*CONTROL_TIMESTEP\n$#  dtinit    tssfac\n" << kcard({R(k.initial_dt), R(k.tssf)}) << "\n";
-    os_ << "*CONTROL_CONTACT\n$#  slsfac\n" << kcard({R(k.penalty_scale)}) << "\n";
+    if (m_.interfaces.empty()) {
+      os_ << "*CONTROL_CONTACT\n$#  slsfac\n" << kcard({R(k.penalty_scale)}) << "\n";
+    } else {
+      // PENOPT: one per deck in LS-DYNA (the first interface's; the others noted if they differ)
+      const int penopt = m_.interfaces[0].penopt;
+      for (const SlidingInterface& si : m_.interfaces)
+        if (si.penopt != penopt) note("sliding interfaces with different PENOPT: written as " + std::to_string(penopt));
+      os_ << "*CONTROL_CONTACT\n$#  slsfac    rwpnal    islchk    shlthk    penopt\n"
+          << kcard({R(k.penalty_scale), B(), B(), B(), I(penopt)}) << "\n";
+    }
     os_ << "*CONTROL_OUTPUT\n$#   npopt    neecho    nrefup    iaccop     opifs    ipnint    ikedit\n"
         << kcard({B(), B(), B(), B(), B(), B(), I(k.report_interval)}) << "\n";
     os_ << "*DATABASE_BINARY_D3PLOT\n$#      dt\n" << kcard({R(k.plot_interval)}) << "\n";
@@ -526,6 +535,12 @@ class KeywordWriter {
     return s;
   }
 
+  // optional card A: SOFT 0 (DYNA3D), 1 (LS-DYNA soft constraint, SOFSCL), -1 (IMPACT-3D maximum stable)
+  void soft_card(const SlidingInterface& si) {
+    const int soft = si.stiffness_method == 2 ? 1 : si.stiffness_method == 1 ? -1 : 0;
+    os_ << "$#    soft    sofscl\n" << kcard({I(soft), R(si.sofscl)}) << "\n";
+  }
+
   void interfaces() {
     for (const SlidingInterface& si : m_.interfaces) {
       if (si.type == 4) {  // single surface: side A only, a segment set
@@ -537,7 +552,7 @@ class KeywordWriter {
         double s = si.penalty_scale == 0 ? 1.0 : scale_factor(si.penalty_scale, m_.control.penalty_scale);
         os_ << "$#    sfsa      sfsb\n" << kcard({R(s), R(s)}) << "\n";
         if (si.eroding) os_ << "$#    isym    erosop      iadj\n" << kcard({I(0), I(1), I(0)}) << "\n";
-        os_ << "$#    soft\n" << kcard({I(si.stiffness_method)}) << "\n";
+        soft_card(si);
         continue;
       }
       int a = segment_set(si.slave), b = segment_set(si.master);
@@ -554,7 +569,7 @@ class KeywordWriter {
       if (si.penalty_scale != 0 && s == 1.0) note("sliding interface penalty scale equal to the control value: written as the default");
       os_ << "$#    sfsa      sfsb\n" << kcard({R(s), R(s)}) << "\n";
       if (si.eroding) os_ << "$#    isym    erosop      iadj\n" << kcard({I(0), I(1), I(0)}) << "\n";
-      os_ << "$#    soft\n" << kcard({I(si.stiffness_method)}) << "\n";
+      soft_card(si);
     }
     // force transducers: their sides as node sets (SURFATYP / SURFBTYP 4)
     for (const ForceTransducer& ft : m_.force_transducers) {
@@ -895,6 +910,10 @@ void write_fixed_deck(std::ostream& os, const Model& m, std::vector<std::string>
               ("stiffness method", si.stiffness_method)("one-pass flag", si.symmetric || si.type == 4 ? 0 : 1)
               ("penalty scale factor", si.penalty_scale).str() << "\n";
   for (const SlidingInterface& si : m.interfaces) {
+    if (si.stiffness_method == 2 && notes) notes->push_back("sliding interface: LS-DYNA's soft constraint (SOFT 1) has no fixed-format value: written as stiffness method 2");
+    if (si.penopt != 2 && notes) notes->push_back("sliding interface: PENOPT " + std::to_string(si.penopt) + " has no fixed-format field (the fixed format takes the segment's stiffness)");
+  }
+  for (const SlidingInterface& si : m.interfaces) {
     for (int side = 0; side < 2; ++side) {
       const auto& segs = side == 0 ? si.slave : si.master;
       for (std::size_t s = 0; s < segs.size(); ++s) {
@@ -1193,6 +1212,8 @@ std::vector<std::string> model_differences(const Model& a, const Model& b, int m
     D(s + "decay", x.decay, y.decay);
     D(s + "penalty scale", x.penalty_scale, y.penalty_scale);
     N(s + "stiffness method", x.stiffness_method, y.stiffness_method);
+    D(s + "sofscl", x.sofscl, y.sofscl);
+    N(s + "penopt", x.penopt, y.penopt);
     N(s + "symmetric", x.symmetric, y.symmetric);
     N(s + "eroding", x.eroding, y.eroding);
     if (x.slave != y.slave) diff(s + "slave segments", std::to_string(x.slave.size()), std::to_string(y.slave.size()));

@@ -494,6 +494,7 @@ struct RContact {
   double fs = 0, fd = 0, dc = 0;
   double sfsa = 1;
   int soft = 0;
+  double sofscl = 0.1;              // optional card A SOFSCL (SOFT 1)
   bool sapr = false, sbpr = false;  // SAPR / SBPR = 1: the side goes to the intfor database
   bool transducer = false;          // *CONTACT_FORCE_TRANSDUCER_PENALTY
   bool single = false;              // *CONTACT_AUTOMATIC_SINGLE_SURFACE (SURFA only)
@@ -687,6 +688,7 @@ class KeywordReader {
   double dt2ms_ = 0, endmas_ = 0;
   bool ms1st_ = false, erode_ = false;
   double slsfac_ = 0.1;
+  int penopt_ = 1;  // *CONTROL_CONTACT PENOPT (LS-DYNA's default: the smaller stiffness)
   int ikedit_ = 100;
   double d3plot_dt_ = 0, d3thdt_dt_ = -1, nodout_dt_ = -1, elout_dt_ = -1, glstat_dt_ = -1, ncforc_dt_ = 0;
   int spcforc_ = 0;
@@ -1351,6 +1353,11 @@ bool is_ascii_database(const std::string& n) {
           slsfac_ = c.r(0, "SLSFAC", 0.1);
           if (slsfac_ == 0) slsfac_ = 0.1;
           if (slsfac_ < 0) c.error(1003, 0, "SLSFAC", "must be positive");
+          // PENOPT: 0 and 1 the smaller of segment and node stiffness, 2 the segment's, 3 the node's
+          penopt_ = int(c.i(4, "PENOPT"));
+          if (penopt_ == 0) penopt_ = 1;
+          if (penopt_ == 4 || penopt_ == 5) c.error(1102, 4, "PENOPT", "area- or mass-weighted node stiffness (IMPACT-3D has 1 the smaller, 2 the segment's, 3 the node's)");
+          else if (penopt_ < 1 || penopt_ > 5) c.error(1006, 4, "PENOPT", "1 the smaller of segment and node stiffness, 2 the segment's, 3 the node's");
         }
       } else if (n == "CONTROL_OUTPUT") {
         once(b);
@@ -2878,13 +2885,44 @@ bool is_ascii_database(const std::string& n) {
       if (ce.i(2, "IADJ") != 0) ce.error(2006, 2, "IADJ", "shell edges do not join an eroding surface");
       ka = k + 4;
     }
-    if (ka < b.data.size()) {
-      KCard ca = card(b, ka, "optional card A", W(b, 8));
-      ct.soft = int(ca.i(0, "SOFT"));
-      if (ct.soft == 2 || ct.soft == 4 || ct.soft == 6) ca.error(1102, 0, "SOFT", "contact formulation SOFT = " + std::to_string(ct.soft) + " (IMPACT-3D has 0 penalty and 1 soft constraint)");
-      else if (ct.soft != 0 && ct.soft != 1) ca.error(1006, 0, "SOFT", "0 penalty (DYNA3D), 1 soft constraint (IMPACT-3D maximum stable stiffness)");
-    }
+    if (ka < b.data.size()) parse_contact_optional_cards(b, ka, ct);
     contacts_.push_back(ct);
+  }
+
+  // *CONTACT optional cards A (SOFT SOFSCL LCIDAB MAXPAR SBOPT DEPTH BSORT FRCFRQ) and B (PENMAX
+  // THKOPT SHLTHK SNLOG ISYM I2D3D SLDTHK SLDSTF), as LS-DYNA reads them (README "Contact"):
+  // what IMPACT-3D implements is honoured, the rest refused by field.
+  void parse_contact_optional_cards(const Block& b, std::size_t ka, RContact& ct) {
+    KCard ca = card(b, ka, "optional card A", W(b, 8));
+    ct.soft = int(ca.i(0, "SOFT"));
+    if (ct.soft == 2 || ct.soft == 4 || ct.soft == 6)
+      ca.error(1102, 0, "SOFT", "contact formulation SOFT = " + std::to_string(ct.soft) + " (IMPACT-3D has 0 penalty, 1 soft constraint, -1 maximum stable stiffness)");
+    else if (ct.soft != 0 && ct.soft != 1 && ct.soft != -1)
+      ca.error(1006, 0, "SOFT", "0 penalty, 1 soft constraint (LS-DYNA), -1 IMPACT-3D maximum stable stiffness");
+    ct.sofscl = ca.r(1, "SOFSCL", 0.1);
+    if (ct.sofscl == 0) ct.sofscl = 0.1;
+    if (ct.sofscl < 0) ca.error(1003, 1, "SOFSCL", "must be positive");
+    if (ca.i(2, "LCIDAB") != 0) ca.error(1102, 2, "LCIDAB", "airbag fabric thickness curve of the soft constraint");
+    const double maxpar = ca.r(3, "MAXPAR");
+    if (maxpar != 0 && maxpar != 1.025) ca.error(1102, 3, "MAXPAR", "a parametric search extension other than the default 1.025 (IMPACT-3D extends a segment by 1 %)");
+    ca.i(4, "SBOPT");  // SOFT = 2 only (LS-DYNA ignores them otherwise)
+    ca.i(5, "DEPTH");
+    ca.i(6, "BSORT");  // IMPACT-3D sorts every cycle
+    const long frcfrq = ca.i(7, "FRCFRQ");
+    if (frcfrq != 0 && frcfrq != 1) ca.error(1102, 7, "FRCFRQ", "contact forces updated every FRCFRQ cycles (IMPACT-3D updates them every cycle)");
+    if (ka + 1 >= b.data.size()) return;
+    KCard cb = card(b, ka + 1, "optional card B", W(b, 8));
+    if (cb.r(0, "PENMAX") != 0) cb.error(1102, 0, "PENMAX", "a maximum penetration (IMPACT-3D: half the segment's element, README \"Contact\")");
+    const long thkopt = cb.i(1, "THKOPT");
+    if (thkopt == 2) cb.error(1102, 1, "THKOPT", "contact without the shells' thickness");
+    else if (thkopt != 0 && thkopt != 1) cb.error(1006, 1, "THKOPT", "0 or 1 shell thickness considered");
+    if (cb.i(2, "SHLTHK") != 0) cb.error(1102, 2, "SHLTHK", "a per-contact shell thickness option");
+    const long snlog = cb.i(3, "SNLOG");  // IMPACT-3D has no shooting-node logic: 0 and 1 alike
+    if (snlog != 0 && snlog != 1) cb.error(1006, 3, "SNLOG", "0 or 1");
+    if (cb.i(4, "ISYM") != 0) cb.error(1102, 4, "ISYM", "symmetry-plane option of the contact");
+    if (cb.i(5, "I2D3D") != 0) cb.error(1102, 5, "I2D3D", "segment search order of shells and solids");
+    if (cb.r(6, "SLDTHK") != 0) cb.error(1102, 6, "SLDTHK", "a contact thickness of solids");
+    if (cb.r(7, "SLDSTF") != 0) cb.error(1102, 7, "SLDSTF", "a contact stiffness of solids");
   }
 
   // Data cards of a load keyword: with the _ID option each definition is an ID card followed
@@ -4863,7 +4901,10 @@ bool is_ascii_database(const std::string& n) {
       si.fd = c.fd;
       si.decay = c.dc;
       si.penalty_scale = c.sfsa == 1 ? 0 : c.sfsa * slsfac_;
-      si.stiffness_method = c.soft;
+      // SOFT 0 DYNA3D, 1 LS-DYNA's soft constraint, -1 IMPACT-3D maximum stable
+      si.stiffness_method = c.soft == 1 ? 2 : c.soft == -1 ? 1 : 0;
+      si.sofscl = c.sofscl;
+      si.penopt = penopt_;
       si.symmetric = c.symmetric;
       si.intfor_slave = c.sapr;
       si.intfor_master = c.sbpr;

@@ -171,7 +171,13 @@ struct SlidingInterface {
   int type = 3;
   double fs = 0, fd = 0, decay = 0;
   double penalty_scale = 0;   // 0 -> control penalty_scale
-  int stiffness_method = 0;   // 0 DYNA3D mu K A^2 / V, 1 IMPACT-3D maximum stable
+  // 0 DYNA3D mu K A^2 / V (keyword SOFT 0), 1 IMPACT-3D maximum stable (keyword SOFT -1),
+  // 2 LS-DYNA soft constraint (keyword SOFT 1): max(k of choice 0, sofscl 0.5 m* / dt_c^2)
+  int stiffness_method = 0;
+  double sofscl = 0.1;        // SOFSCL (choice 2)
+  // PENOPT (choices 0 and 2): 1 the smaller of the segment's and the node's stiffness (LS-DYNA's
+  // default), 2 the segment's (DYNA3D), 3 the node's
+  int penopt = 2;
   bool symmetric = true;
   // *CONTACT_ERODING_*: the sides hold every face of their solids (an interior face once per
   // solid, outward from it); a face is in the surface while its solid lives and the other solid

@@ -111,6 +111,9 @@ struct DeckBuilder {
   std::string text(double end_time, const std::string& contact) const {
     std::ostringstream d;
     d << "*KEYWORD\n*TITLE\nshell contact test\n*CONTROL_TERMINATION\n" << fld(end_time, 10) << "\n";
+    // PENOPT 2: each segment's own stiffness (the closed forms below are the segments' springs;
+    // LS-DYNA's default PENOPT 1 would take the smaller of the segment's and the node's)
+    d << "*CONTROL_CONTACT\n" << fld(0.1, 10) << ifld(0, 10) << ifld(0, 10) << ifld(0, 10) << ifld(2, 10) << "\n";
     d << "*NODE\n" << nodes.str() << parts.str();
     if (!shells.str().empty()) d << "*ELEMENT_SHELL\n" << shells.str();
     if (!solids.str().empty()) d << "*ELEMENT_SOLID\n" << solids.str();

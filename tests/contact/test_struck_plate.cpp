@@ -93,6 +93,8 @@ double pattern(int i, int j, bool point) {
 std::string deck(double end_time, bool impact, bool point = false, double P = 0, double ramp = 0, double damping = 0) {
   std::ostringstream d;
   d << "*KEYWORD\n*TITLE\nrigid block striking a clamped plate of shells\n*CONTROL_TERMINATION\n" << fld(end_time, 10) << "\n";
+  // PENOPT 2: the plate's segments' stiffness (the contact springs k_c below)
+  d << "*CONTROL_CONTACT\n" << fld(0.1, 10) << ifld(0, 10) << ifld(0, 10) << ifld(0, 10) << ifld(2, 10) << "\n";
   d << "*PART\nplate\n" << ifld(1, 10) << ifld(1, 10) << ifld(1, 10) << ifld(0, 10) << ifld(1, 10) << "\n";
   d << "*SECTION_SHELL\n" << ifld(1, 10) << ifld(2, 10) << fld(5.0 / 6.0, 10) << ifld(2, 10) << "\n" << fld(kT, 10) << "\n";
   d << "*MAT_ELASTIC\n" << ifld(1, 10) << fld(kRho, 10) << fld(kE, 10) << fld(kNu, 10) << "\n";
