@@ -310,7 +310,13 @@ int compare_databases(const std::string& pa, const std::string& pb, const Compar
             return not_comparable();
         }
     }
-    if (ga.num_rigid_walls != gb.num_rigid_walls || ga.num_interfaces != gb.num_interfaces) {
+    if ((ga.num_rigid_walls != gb.num_rigid_walls || ga.num_interfaces != gb.num_interfaces) && by_time &&
+        (A->is_mili() || B->is_mili())) {
+        // a Mili database holds no rigid-wall or interface-force block: those forces are left out
+        out << "compare: note: A has " << ga.num_rigid_walls << " rigid-wall and " << ga.num_interfaces
+            << " interface force(s), B " << gb.num_rigid_walls << " and " << gb.num_interfaces
+            << " (a Mili database holds none): the forces are not compared\n";
+    } else if (ga.num_rigid_walls != gb.num_rigid_walls || ga.num_interfaces != gb.num_interfaces) {
         out << "compare: the global blocks differ: A has " << ga.num_rigid_walls << " rigid-wall and "
             << ga.num_interfaces << " interface force(s); B has " << gb.num_rigid_walls << " and "
             << gb.num_interfaces << "\nresult: NOT COMPARABLE\n";

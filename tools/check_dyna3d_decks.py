@@ -6,7 +6,9 @@ Src/test): DIR/image/NAME/NAME.dyn (the deck) and DIR/derived/NAME_th.answ (GRIZ
 DYNA3D's time histories: node positions and displacements, element stresses and plastic
 strains, one row per state).  For each deck with an answer file: impact3d runs it (in
 OUT/NAME), POST-IMPACT writes our curves (history ... CSV), and every answer curve is compared
-with ours at DYNA3D's times (ours interpolated linearly between our states).  Printed per curve:
+with ours at DYNA3D's times (ours interpolated linearly between our states); where DYNA3D's own
+plot database lies beside the deck (image/NAME/NAME.pltA, LLNL Mili), POST-IMPACT's compare gives
+the largest node-position difference over all nodes and states.  Printed per curve:
 the largest deviation over the answer times, the value at the end time (DYNA3D, IMPACT-3D), and
 PASS/FAIL against the deck's tolerance (tolerance table below; curves without one are shown as
 "info").  Exit status: 0 all compared curves pass, 1 some fail, 2 a deck did not run.
@@ -212,7 +214,25 @@ def main():
             if verdict.startswith("FAIL"):
                 status = max(status, 1)
             print("   %-8s %-6d %-28s %12.4e %13.5e %13.5e  %s" % (c["family"], c["id"], c["quantity"][:28], dev, c["v"][-1], end_ours, verdict))
+        full_field(postimpact, os.path.join(wd, "d3plot"), os.path.join(image, name, name + ".pltA"), wd)
     return status
+
+
+def full_field(postimpact, ours, mili, wd):
+    """The largest node-position difference over all nodes and states against DYNA3D's own
+    database (LLNL Mili, NAME.pltA beside the deck), by POST-IMPACT's compare (states by time)."""
+    if not os.path.exists(mili):
+        return
+    r = run([postimpact, "compare", ours, mili, "--report", "1"], wd)
+    coords = [l for l in r.stdout.splitlines() if l.startswith("coords")]
+    states = [l for l in r.stdout.splitlines() if l.startswith("states:")]
+    if coords:
+        f = coords[0].split()
+        print("   full field vs %s: largest node-position difference %s at %s; %s" %
+              (os.path.basename(mili), f[3], " ".join(f[6:]), states[0] if states else ""))
+    else:
+        last = [l for l in r.stdout.splitlines() if l.strip()]
+        print("   full field vs %s: not compared (%s)" % (os.path.basename(mili), last[-1] if last else "no output"))
 
 
 if __name__ == "__main__":
