@@ -932,13 +932,7 @@ class Dyna3dReader {
     }
     // rotational codes on nodes no shell uses
     if (!rot_code_line_.empty()) {
-      std::vector<char> shell_node(std::size_t(m_.control.numnp), 0);  // nodes with rotations: shells' and beams'
-      for (const auto& q : m_.shell_nodes)
-        for (int v : q)
-          if (v >= 0) shell_node[std::size_t(v)] = 1;
-      for (const auto& b : m_.beam_nodes)
-        for (int j = 0; j < 2; ++j)
-          if (b[std::size_t(j)] >= 0) shell_node[std::size_t(b[std::size_t(j)])] = 1;
+      const std::vector<char>& shell_node = rotation_nodes();
       int count = 0, first_line = 0;
       for (std::size_t i = 0; i < rot_code_line_.size(); ++i)
         if (rot_code_line_[i] && !shell_node[i]) {
@@ -1216,14 +1210,21 @@ class Dyna3dReader {
   }
 
   // Whether node n (0-based) carries rotations: a shell's or a beam's end node.
-  bool has_rotations(int n) const {
-    for (const auto& q : m_.shell_nodes)
-      for (int v : q)
-        if (v == n) return true;
-    for (const auto& b : m_.beam_nodes)
-      if (b[0] == n || b[1] == n) return true;
-    return false;
+  bool has_rotations(int n) { return n >= 0 && std::size_t(n) < rotation_nodes().size() && rotation_nodes()[std::size_t(n)]; }
+  // Per node: 1 when a shell or a beam end uses it (built once, after the element cards).
+  const std::vector<char>& rotation_nodes() {
+    if (rotation_nodes_.size() != std::size_t(m_.control.numnp)) {
+      rotation_nodes_.assign(std::size_t(m_.control.numnp), 0);
+      for (const auto& q : m_.shell_nodes)
+        for (int v : q)
+          if (v >= 0) rotation_nodes_[std::size_t(v)] = 1;
+      for (const auto& b : m_.beam_nodes)
+        for (int j = 0; j < 2; ++j)
+          if (b[std::size_t(j)] >= 0) rotation_nodes_[std::size_t(b[std::size_t(j)])] = 1;
+    }
+    return rotation_nodes_;
   }
+  std::vector<char> rotation_nodes_;
 
   // IMPACT-3D's old motion card: an I5 type in 29-33 (no decimal point, no exponent) followed
   // by reals in 34-53, where DYNA3D's layout has one real in 29-38.
