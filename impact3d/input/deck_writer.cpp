@@ -629,16 +629,17 @@ class TableLine {
  public:
   TableLine(std::vector<std::string>* notes, const char* id, std::string what = {})
       : layout_(fixed_card_layout(id, FixedVintage::dyna3d_later)), line_(notes, what.empty() ? id : what) {}
+  TableLine& operator()(const std::string& name, double v) { return (*this)(name.c_str(), v); }
   TableLine& operator()(const char* name, double v) {
     const FixedField& f = layout_.field(name);
-    if (f.kind == FieldKind::integer) line_.i(f.c1, f.c2, static_cast<long long>(v));
+    if (is_integer(f.kind)) line_.i(f.c1, f.c2, static_cast<long long>(v));
     else line_.r(f.c1, f.c2, v);
     return *this;
   }
   // Every integer field written as 0 (a card whose fields are counts and flags).
   TableLine& zeros() {
     for (const FixedField& f : layout_.fields)
-      if (f.kind == FieldKind::integer) line_.i(f.c1, f.c2, 0);
+      if (is_integer(f.kind)) line_.i(f.c1, f.c2, 0);
     return *this;
   }
   TableLine& text(const char* name, const std::string& v) {
@@ -653,112 +654,155 @@ class TableLine {
   FixedLine line_;
 };
 
-}  // namespace
+// The fixed-format deck (the later vintage, large format), card by card from the tables
+// (fixed_cards.h); what the format cannot hold is noted and left out.
+class FixedWriter {
+ public:
+  FixedWriter(std::ostream& os, const Model& m, std::vector<std::string>* notes) : os_(os), m_(m), notes_(notes) {}
 
-void write_keyword_deck(std::ostream& os, const Model& m, std::vector<std::string>* notes) {
-  KeywordWriter(os, m, notes).write();
-}
+  void write() {
+    if ((!m_.node_user_id.empty() || !m_.hex_user_id.empty())) note("node and element ids renumbered 1..N (the fixed format needs 1..N)");
+    os_ << T("title card").text("title", m_.title).text("format digits", "88").text("format flag", "large").str() << "\n";
+    os_ << "*----- written by IMPACT-3D (impact3d --write-fixed); layout: README.md \"Deck format\"\n";
+    control_cards_2_to_4();
+    note_unwritable();
+    control_cards_5_to_9();
+    materials();
+    beam_rules();
+    nodes();
+    solids();
+    beams();
+    shells();
+    time_history_blocks();
+    curves();
+    loads();
+    walls();
+    velocities();
+    interfaces();
+    base_accelerations();
+    if (damping_card_) {
+      os_ << "*----- MASS DAMPING: damping ratio, frequency (D = 2 ratio frequency = *DAMPING_GLOBAL VALDMP)\n";
+      os_ << T("mass damping card")("damping ratio", 0.5)("frequency", m_.damping.d).str() << "\n";
+    }
+    os_ << "*----- END OF DECK\n";
+  }
 
-void write_fixed_deck(std::ostream& os, const Model& m, std::vector<std::string>* notes) {
-  const ControlData& k = m.control;
-  auto L = [&](const std::string& what) { return FixedLine(notes, what); };
-  if (!m.node_user_id.empty() || !m.hex_user_id.empty())
-    if (notes) notes->push_back("node and element ids renumbered 1..N (the fixed format needs 1..N)");
-  os << L("title card").a(1, 72, m.title).a(73, 80, "88 large").str() << "\n";
-  os << "*----- written by IMPACT-3D (impact3d --write-fixed); layout: README.md \"Deck format\"\n";
-  os << "*----- CONTROL CARD #2: counts\n";
-  os << TableLine(notes, "control card 2")("NMMAT", int(m.materials.size()))("NUMNP", m.num_nodes())("NUMELH", m.num_hexes())
-            ("NUMELB", m.num_beams())("NUMELS", m.num_shells())("NUMELT", 0)("interface segments", k.interface_segments_out)
-            ("interface output interval", k.interface_out_interval).str() << "\n";
-  os << "*----- CONTROL CARD #3\n";
-  os << TableLine(notes, "control card 3")("node time-history blocks", int(m.node_th_blocks.size()))
-            ("solid time-history blocks", int(m.solid_th_blocks.size()))("beam time-history blocks", 0)
-            ("shell time-history blocks", int(m.shell_th_blocks.size()))("thick shell time-history blocks", 0)
-            ("report interval", k.report_interval)("reaction-force print flag", k.reaction_print_flag)
-            ("discrete-element print flag", 0)("element deletion flag", 0).str() << "\n";
-  os << "*----- CONTROL CARD #4\n";
-  os << TableLine(notes, "control card 4")("sliding boundary planes", 0)("sliding planes with failure", 0)
-            ("density-versus-depth points", 0)("Brode function flag", 0)("rigid-body merge cards", 0)
-            .text("coordinate format", "e20.0")("force cross-sections", 0).str() << "\n";
-  os << "*----- CONTROL CARD #5\n";
-  // what the fixed format can hold of the loads: prescribed motions of nodes, one base
-  // acceleration per axis on every material; the rest is noted and left out
-  int node_motions = 0;
-  for (const PrescribedMotion& pm : m.prescribed_motions) node_motions += pm.node >= 0 ? 1 : 0;
-  if (node_motions < int(m.prescribed_motions.size()) && notes)
-    notes->push_back("prescribed motions of rigid bodies have no fixed-format card: not written");
-  if (!m.rigid_body_loads.empty() && notes) notes->push_back("rigid-body loads have no fixed-format card: not written");
-  const bool damping_card = m.damping.active && m.damping.curve < 0 && m.damping.factor == std::array<double, 3>{1, 1, 1};
-  if (m.damping.active && !damping_card && notes)
-    notes->push_back("global mass damping with a curve or per-axis factors (*DAMPING_GLOBAL) has no fixed-format card: not written");
-  if (!m.force_transducers.empty() && notes)
-    notes->push_back("force transducers (*CONTACT_FORCE_TRANSDUCER_PENALTY) have no fixed-format card: not written");
-  if (m.control.intfor_interval >= 0 && notes)
-    notes->push_back("the interface-force database (*DATABASE_BINARY_INTFOR, SAPR/SBPR) has no fixed-format card: not written");
-  std::array<int, 3> base = {-1, -1, -1};  // body load written as each axis's base acceleration
-  for (std::size_t j = 0; j < m.body_loads.size(); ++j) {
-    const auto& d = m.body_loads[j].dir;
-    int a = -1;
-    for (int q = 0; q < 3; ++q)
-      if (d[std::size_t(q)] == 1 && d[std::size_t((q + 1) % 3)] == 0 && d[std::size_t((q + 2) % 3)] == 0) a = q;
-    if (a < 0 || base[std::size_t(a)] >= 0 || !m.body_load_materials.empty()) {
-      if (notes) notes->push_back("body load " + std::to_string(j + 1) + " is not one base acceleration per axis on every material: not written");
-      continue;
+ private:
+  std::ostream& os_;
+  const Model& m_;
+  std::vector<std::string>* notes_;
+  int node_motions_ = 0;
+  bool damping_card_ = false;
+  std::array<int, 3> base_ = {-1, -1, -1};  // body load written as each axis's base acceleration
+  std::vector<int> rule_of_;                 // per material: its user beam rule (1..), 0 none
+  int rules_ = 0, rule_points_ = 0;
+
+  TableLine T(const char* id, std::string what = {}) const { return TableLine(notes_, id, std::move(what)); }
+  void note(const std::string& s) const {
+    if (notes_) notes_->push_back(s);
+  }
+
+  void control_cards_2_to_4() {
+    const ControlData& k = m_.control;
+    os_ << "*----- CONTROL CARD #2: counts\n";
+    os_ << T("control card 2")("NMMAT", int(m_.materials.size()))("NUMNP", m_.num_nodes())("NUMELH", m_.num_hexes())
+               ("NUMELB", m_.num_beams())("NUMELS", m_.num_shells())("NUMELT", 0)("interface segments", k.interface_segments_out)
+               ("interface output interval", k.interface_out_interval).str() << "\n";
+    os_ << "*----- CONTROL CARD #3\n";
+    os_ << T("control card 3")("node time-history blocks", int(m_.node_th_blocks.size()))
+               ("solid time-history blocks", int(m_.solid_th_blocks.size()))("beam time-history blocks", 0)
+               ("shell time-history blocks", int(m_.shell_th_blocks.size()))("thick shell time-history blocks", 0)
+               ("report interval", k.report_interval)("reaction-force print flag", k.reaction_print_flag)
+               ("discrete-element print flag", 0)("element deletion flag", 0).str() << "\n";
+    os_ << "*----- CONTROL CARD #4\n";
+    os_ << T("control card 4")("sliding boundary planes", 0)("sliding planes with failure", 0)
+               ("density-versus-depth points", 0)("Brode function flag", 0)("rigid-body merge cards", 0)
+               .text("coordinate format", "e20.0")("force cross-sections", 0).str() << "\n";
+  }
+
+  // What the fixed format can hold of the loads: prescribed motions of nodes, one base
+  // acceleration per axis on every material; the rest is noted and left out.
+  void note_unwritable() {
+    for (const PrescribedMotion& pm : m_.prescribed_motions) node_motions_ += pm.node >= 0 ? 1 : 0;
+    if (node_motions_ < int(m_.prescribed_motions.size())) note("prescribed motions of rigid bodies have no fixed-format card: not written");
+    if (!m_.rigid_body_loads.empty()) note("rigid-body loads have no fixed-format card: not written");
+    damping_card_ = m_.damping.active && m_.damping.curve < 0 && m_.damping.factor == std::array<double, 3>{1, 1, 1};
+    if (m_.damping.active && !damping_card_)
+      note("global mass damping with a curve or per-axis factors (*DAMPING_GLOBAL) has no fixed-format card: not written");
+    if (!m_.force_transducers.empty()) note("force transducers (*CONTACT_FORCE_TRANSDUCER_PENALTY) have no fixed-format card: not written");
+    if (m_.control.intfor_interval >= 0)
+      note("the interface-force database (*DATABASE_BINARY_INTFOR, SAPR/SBPR) has no fixed-format card: not written");
+    for (std::size_t j = 0; j < m_.body_loads.size(); ++j) {
+      const auto& d = m_.body_loads[j].dir;
+      int a = -1;
+      for (int q = 0; q < 3; ++q)
+        if (d[std::size_t(q)] == 1 && d[std::size_t((q + 1) % 3)] == 0 && d[std::size_t((q + 2) % 3)] == 0) a = q;
+      if (a < 0 || base_[std::size_t(a)] >= 0 || !m_.body_load_materials.empty()) {
+        note("body load " + std::to_string(j + 1) + " is not one base acceleration per axis on every material: not written");
+        continue;
+      }
+      base_[std::size_t(a)] = int(j);
     }
-    base[std::size_t(a)] = int(j);
+    for (const PressureLoad& l : m_.pressure_loads)
+      if (l.death < 1e28) { note("pressure death times have no fixed-format field: not written"); break; }
   }
-  for (const PressureLoad& l : m.pressure_loads)
-    if (l.death < 1e28 && notes) { notes->push_back("pressure death times have no fixed-format field: not written"); break; }
-  {
-    FixedLine c = L("control card 5");
-    c.i(1, 5, int(m.load_curves.size())).i(6, 10, int(m.nodal_loads.size())).i(11, 15, int(m.pressure_loads.size()))
-        .i(16, 20, node_motions).i(21, 25, int(m.walls.size()))
-        .i(26, 30, 0).i(31, 35, int(m.init_velocities.size())).i(36, 40, int(m.interfaces.size()));
-    for (int f = 0; f < 3; ++f) c.i(41 + 5 * f, 45 + 5 * f, base[std::size_t(f)] >= 0 ? 1 : 0);
-    for (int f = 3; f < 8; ++f) c.i(41 + 5 * f, 45 + 5 * f, 0);
-    os << c.str() << "\n";
+
+  void control_cards_5_to_9() {
+    const ControlData& k = m_.control;
+    os_ << "*----- CONTROL CARD #5\n";
+    os_ << T("control card 5").zeros()("NUMLC", int(m_.load_curves.size()))("concentrated nodal loads", int(m_.nodal_loads.size()))
+               ("pressure-loaded sides", int(m_.pressure_loads.size()))("velocity/acceleration boundary cards", node_motions_)
+               ("stonewalls", int(m_.walls.size()))("initial condition parameter", int(m_.init_velocities.size()))
+               ("sliding interfaces", int(m_.interfaces.size()))("base acceleration x", base_[0] >= 0 ? 1 : 0)
+               ("base acceleration y", base_[1] >= 0 ? 1 : 0)("base acceleration z", base_[2] >= 0 ? 1 : 0).str() << "\n";
+    if (k.end_cycle > 0) note("termination cycle (ENDCYC " + std::to_string(k.end_cycle) + ") has no field in the fixed format: not written");
+    os_ << "*----- CONTROL CARD #6\n";
+    os_ << T("control card 6")("termination time", k.end_time)("time-history interval", k.th_interval)("plot interval", k.plot_interval)
+               ("restart dump cycles", k.restart_dump_cycles)("running restart cycles", k.running_restart_cycles)
+               ("initial time step", k.initial_dt)("penalty scale factor", k.penalty_scale)("thermal option", 0)
+               ("default viscosity flag", k.viscosity_flag)("time-step scale factor", k.tssf).str() << "\n";
+    os_ << "*----- CONTROL CARD #7\n";
+    os_ << T("control card 7").zeros()("mass damping sets", damping_card_ ? 1 : 0).str() << "\n";
+    // user beam integration rules: one per beam material that has one, numbered in material order
+    rule_of_.assign(m_.materials.size(), 0);
+    for (std::size_t j = 0; j < m_.materials.size(); ++j)
+      if (m_.materials[j].beam && !m_.materials[j].beam_section.user_rule.empty()) {
+        rule_of_[j] = ++rules_;
+        rule_points_ = std::max(rule_points_, int(m_.materials[j].beam_section.user_rule.size()));
+      }
+    os_ << "*----- CONTROL CARD #8\n";
+    os_ << T("control card 8").zeros()("minimum step factor", k.min_step_factor)("beam integration rules", rules_)
+               ("beam integration points", rule_points_).str() << "\n";
+    os_ << "*----- CONTROL CARD #9\n";
+    TableLine c9 = T("control card 9");
+    c9("plane-stress plasticity option", 0)("printout flag", 0)("1-D slidelines", 0)("relaxation database flag", 0);
+    if (k.mass_scaling_dt != 0 || k.end_mass_percent > 0 || k.erode_small_steps)
+      c9("DT2MS", k.mass_scaling_dt)("MS1ST", k.mass_scaling_first_only ? 1 : 0)("ENDMAS", k.end_mass_percent)("ERODE", k.erode_small_steps ? 1 : 0);
+    os_ << c9.str() << "\n";
   }
-  if (k.end_cycle > 0 && notes)
-    notes->push_back("termination cycle (ENDCYC " + std::to_string(k.end_cycle) +
-                     ") has no field in the fixed format: not written");
-  os << "*----- CONTROL CARD #6\n";
-  os << L("control card 6").r(1, 10, k.end_time).r(11, 20, k.th_interval).r(21, 30, k.plot_interval)
-            .i(31, 35, k.restart_dump_cycles).i(36, 40, k.running_restart_cycles).r(41, 50, k.initial_dt)
-            .r(51, 60, k.penalty_scale).i(61, 65, 0).i(66, 70, k.viscosity_flag).r(71, 80, k.tssf).str() << "\n";
-  os << "*----- CONTROL CARD #7\n";
-  os << TableLine(notes, "control card 7").zeros()("mass damping sets", damping_card ? 1 : 0)("non-reflecting boundary segments", 0).str() << "\n";
-  // user beam integration rules: one per beam material that has one, numbered in material order
-  std::vector<int> rule_of(m.materials.size(), 0);
-  int rules = 0, rule_points = 0;
-  for (std::size_t j = 0; j < m.materials.size(); ++j)
-    if (m.materials[j].beam && !m.materials[j].beam_section.user_rule.empty()) {
-      rule_of[j] = ++rules;
-      rule_points = std::max(rule_points, int(m.materials[j].beam_section.user_rule.size()));
+
+  void materials() {
+    os_ << "*----- MATERIALS\n";
+    for (std::size_t j = 0; j < m_.materials.size(); ++j) {
+      const MaterialData& md = m_.materials[j];
+      const std::string what = "material " + std::to_string(j + 1);
+      os_ << T("material card 1", what + " card 1")("material number", int(j) + 1)("material type", md.type)("density", md.rho)
+                 ("EOS type", md.eos.form)("hourglass type", md.hourglass_type)("hourglass coefficient", md.hourglass_coef)
+                 ("bulk viscosity type", md.bulk_type)("quadratic bulk viscosity Q1", md.q1)("linear bulk viscosity Q2", md.q2)
+                 ("element type", md.shell ? 2 : md.beam ? 1 : 0)("element formulation", md.beam ? 1 : 0).str() << "\n";
+      os_ << T("material title card", what + " title").text("title", md.title).str() << "\n";
+      property_cards(md, what);
+      if (md.beam) beam_section(md, j, what);
+      if (md.shell) shell_section(md, what);
+      if (const EosForm* f = find_eos_form(md.eos.form)) eos_cards(md, *f, what);
     }
-  os << "*----- CONTROL CARD #8\n";
-  os << TableLine(notes, "control card 8").zeros()("minimum step factor", k.min_step_factor)("beam integration rules", rules)
-            ("beam integration points", rule_points).str() << "\n";
-  os << "*----- CONTROL CARD #9\n";
-  {
-    FixedLine c = L("control card 9");
-    c.i(1, 5, 0).i(6, 10, 0).i(11, 15, 0).i(16, 20, 0);
-    if (k.mass_scaling_dt != 0 || k.end_mass_percent > 0 || k.erode_small_steps)  // IMPACT-3D choice: cols 46-75
-      c.r(46, 55, k.mass_scaling_dt).i(56, 60, k.mass_scaling_first_only ? 1 : 0).r(61, 70, k.end_mass_percent)
-          .i(71, 75, k.erode_small_steps ? 1 : 0);
-    os << c.str() << "\n";
   }
-  os << "*----- MATERIALS\n";
-  for (std::size_t j = 0; j < m.materials.size(); ++j) {
-    const MaterialData& md = m.materials[j];
-    std::string what = "material " + std::to_string(j + 1);
-    os << L(what + " card 1").i(1, 5, int(j) + 1).i(6, 10, md.type).r(11, 20, md.rho).i(21, 25, md.eos.form)
-              .i(26, 30, md.hourglass_type).r(31, 40, md.hourglass_coef).i(41, 45, md.bulk_type)
-              .r(46, 55, md.q1).r(56, 65, md.q2).i(66, 70, md.shell ? 2 : md.beam ? 1 : 0).i(76, 80, md.beam ? 1 : 0).str() << "\n";
-    os << L(what + " title").a(1, 80, md.title).str() << "\n";
-    // cards 3-8: each parameter where the type's table puts it (material_types.h)
+
+  // Cards 3-8: each parameter where the type's table puts it (material_types.h).
+  void property_cards(const MaterialData& md, const std::string& what) {
     const MaterialType* t = find_material_type(md.type);
     for (int c = 3; c <= 8; ++c) {
-      FixedLine line = L(what + " card " + std::to_string(c));
+      FixedLine line(notes_, what + " card " + std::to_string(c));
       if (t) {
         // a card's optional fields are written together when any of them is nonzero
         bool any_optional = false;
@@ -768,173 +812,229 @@ void write_fixed_deck(std::ostream& os, const Model& m, std::vector<std::string>
           if (p.fcard == c && (!p.optional_write || any_optional)) line.r(p.fcol, p.fcol + 9, param_value(md, p));
       }
       const std::string text = line.str();
-      os << (text.find_first_not_of(' ') == std::string::npos ? std::string() : text) << "\n";
+      os_ << (text.find_first_not_of(' ') == std::string::npos ? std::string() : text) << "\n";
     }
-    if (md.beam) {  // DYNA3D's beam section: a title line, SHRF QR CST, TS1 TS2 TT1 TT2
-      const BeamSectionData& sec = md.beam_section;
-      if (sec.elform != 1 && notes) notes->push_back(what + ": a resultant beam or truss (ELFORM 2/3) has no DYNA3D beam card: written as a Hughes-Liu beam");
-      const bool user = !sec.user_rule.empty();
-      os << " Hughes-Liu beam section properties\n";
-      os << TableLine(notes, "beam section card 1", what + " beam section card 1")("shear factor", sec.shrf)
-                ("quadrature rule", user ? -rule_of[j] : sec.qr)("cross-section type", user ? 2 : int(sec.cst)).str() << "\n";
-      os << TableLine(notes, "beam section card 2", what + " beam section card 2")("TS1", sec.ts1)("TS2", sec.ts2)("TT1", sec.tt1)
-                ("TT2", sec.tt2).str() << "\n";
+  }
+
+  // DYNA3D's beam section: a title line, SHRF QR CST, TS1 TS2 TT1 TT2.
+  void beam_section(const MaterialData& md, std::size_t j, const std::string& what) {
+    const BeamSectionData& sec = md.beam_section;
+    if (sec.elform != 1) note(what + ": a resultant beam or truss (ELFORM 2/3) has no DYNA3D beam card: written as a Hughes-Liu beam");
+    const bool user = !sec.user_rule.empty();
+    os_ << " Hughes-Liu beam section properties\n";
+    os_ << T("beam section card 1", what + " beam section card 1")("shear factor", sec.shrf)
+               ("quadrature rule", user ? -rule_of_[j] : sec.qr)("cross-section type", user ? 2 : int(sec.cst)).str() << "\n";
+    os_ << T("beam section card 2", what + " beam section card 2")("TS1", sec.ts1)("TS2", sec.ts2)("TT1", sec.tt1)("TT2", sec.tt2).str() << "\n";
+  }
+
+  // DYNA3D's shell section: a title line, SHRF NIP QR, T1-T4.
+  void shell_section(const MaterialData& md, const std::string& what) {
+    const ShellSectionData& sec = md.shell_section;
+    os_ << " shell section properties\n";
+    os_ << T("shell section card 1", what + " shell section card 1")("shear factor SHRF", sec.shrf)("NIP", sec.nip)
+               ("quadrature rule QR", 0).str() << "\n";
+    os_ << T("shell section card 2", what + " shell section card 2")("T1", sec.t[0])("T2", sec.t[1])("T3", sec.t[2])("T4", sec.t[3]).str() << "\n";
+  }
+
+  // The EOS cards (material/eos.h: each form's widths and fields).
+  void eos_cards(const MaterialData& md, const EosForm& f, const std::string& what) {
+    const std::vector<int>& fw = eos_fixed_widths(f);
+    for (int c = 0; c < int(fw.size()); ++c) {
+      FixedLine line(notes_, what + " EOS card " + std::to_string(c + 1));
+      const int w = fw[std::size_t(c)];
+      for (const EosParam& p : f.params) {
+        if (p.fcard != c || p.slot < 0) continue;
+        if (md.eos.form == 6 && p.slot == kEosLeakCurve) line.i(1 + w * p.ffield, w + w * p.ffield, int(eos_value(md.eos, p)));
+        else line.r(1 + w * p.ffield, w + w * p.ffield, eos_value(md.eos, p));
+      }
+      os_ << line.str() << "\n";
     }
-    if (md.shell) {  // DYNA3D's shell section: a title line, SHRF NIP QR, T1-T4
-      const ShellSectionData& sec = md.shell_section;
-      os << " shell section properties\n";
-      os << TableLine(notes, "shell section card 1", what + " shell section card 1")("shear factor SHRF", sec.shrf)("NIP", sec.nip)
-                ("quadrature rule QR", 0).str() << "\n";
-      os << TableLine(notes, "shell section card 2", what + " shell section card 2")("T1", sec.t[0])("T2", sec.t[1])("T3", sec.t[2])
-                ("T4", sec.t[3]).str() << "\n";
+  }
+
+  void beam_rules() {
+    if (rules_ > 0) os_ << "*----- USER BEAM INTEGRATION RULES: points, 1.0; s, t, weight\n";
+    for (std::size_t j = 0; j < m_.materials.size(); ++j) {
+      if (!rule_of_[j]) continue;
+      const auto& rule = m_.materials[j].beam_section.user_rule;
+      os_ << T("beam integration rule header card", "beam integration rule")("number of points", int(rule.size()))("rule area factor", 1.0).str() << "\n";
+      for (const auto& p : rule)
+        os_ << T("beam integration point card", "beam integration point")("s", p[0])("t", p[1])("weight", p[2]).str() << "\n";
     }
-    if (const EosForm* f = find_eos_form(md.eos.form)) {  // the EOS cards (material/eos.h)
-      const std::vector<int>& fw = eos_fixed_widths(*f);
-      for (int c = 0; c < int(fw.size()); ++c) {
-        FixedLine line = L(what + " EOS card " + std::to_string(c + 1));
-        const int w = fw[std::size_t(c)];
-        for (const EosParam& p : f->params) {
-          if (p.fcard != c || p.slot < 0) continue;
-          if (md.eos.form == 6 && p.slot == kEosLeakCurve) line.i(1 + w * p.ffield, w + w * p.ffield, int(eos_value(md.eos, p)));
-          else line.r(1 + w * p.ffield, w + w * p.ffield, eos_value(md.eos, p));
+  }
+
+  void nodes() {
+    os_ << "*----- NODES\n";
+    static const int rot_code[8] = {0, 1, 2, 4, 3, 6, 5, 7};  // bits (0 rx, 1 ry, 2 rz) -> code 0-7
+    for (int n = 0; n < m_.num_nodes(); ++n) {
+      const std::size_t i = std::size_t(n);
+      const int rc = i < m_.rot_bc.size() ? rot_code[m_.rot_bc[i] & 7] : 0;
+      os_ << T("node card", "node " + std::to_string(n + 1))("node number", n + 1)("boundary code", m_.bc[i])("x", m_.x[i])("y", m_.y[i])
+                 ("z", m_.z[i])("rotational code", rc).str() << "\n";
+    }
+  }
+
+  void solids() {
+    static const char* const nf[8] = {"node n1", "node n2", "node n3", "node n4", "node n5", "node n6", "node n7", "node n8"};
+    os_ << "*----- SOLID ELEMENTS\n";
+    for (int e = 0; e < m_.num_hexes(); ++e) {
+      TableLine c = T("solid element card", "solid " + std::to_string(e + 1));
+      c("element number", e + 1)("material number", m_.hex_material[std::size_t(e)] + 1);
+      for (int j = 0; j < 8; ++j) c(nf[j], m_.hex_nodes[std::size_t(e)][std::size_t(j)] + 1);
+      os_ << c.str() << "\n";
+    }
+  }
+
+  void beams() {
+    if (m_.num_beams() > 0) os_ << "*----- BEAM ELEMENTS: id, material, n1, n2, orientation node n3, TS1 TS2 TT1 TT2\n";
+    for (int e = 0; e < m_.num_beams(); ++e) {
+      const auto& n = m_.beam_nodes[std::size_t(e)];
+      const auto& t = m_.beam_thickness[std::size_t(e)];
+      os_ << T("beam element card", "beam " + std::to_string(e + 1))("element number", e + 1)
+                 ("material number", m_.beam_material[std::size_t(e)] + 1)("node n1", n[0] + 1)("node n2", n[1] + 1)
+                 ("orientation node n3", n[2] + 1)("field 6", t[0])("field 7", t[1])("field 8", t[2])("field 9", t[3]).str() << "\n";
+    }
+  }
+
+  void shells() {
+    static const char* const nf[4] = {"node n1", "node n2", "node n3", "node n4"};
+    static const char* const tf[4] = {"thickness t1", "thickness t2", "thickness t3", "thickness t4"};
+    if (m_.num_shells() > 0) os_ << "*----- SHELL ELEMENTS: id, material, n1-n4; thicknesses t1-t4\n";
+    for (int e = 0; e < m_.num_shells(); ++e) {
+      const std::string what = "shell " + std::to_string(e + 1);
+      TableLine c = T("shell element card", what);
+      c("element number", e + 1)("material number", m_.shell_material[std::size_t(e)] + 1);
+      for (int j = 0; j < 4; ++j) c(nf[j], m_.shell_nodes[std::size_t(e)][std::size_t(j)] + 1);
+      os_ << c.str() << "\n";
+      TableLine t = T("shell thickness card", what + " thicknesses");
+      for (int j = 0; j < 4; ++j) t(tf[j], m_.shell_thickness[std::size_t(e)][std::size_t(j)]);
+      os_ << t.str() << "\n";
+    }
+  }
+
+  void time_history_blocks() {
+    os_ << "*----- TIME-HISTORY BLOCKS\n";
+    for (const auto* blocks : {&m_.node_th_blocks, &m_.solid_th_blocks, &m_.shell_th_blocks})  // five blocks a card
+      for (std::size_t b = 0; b < blocks->size(); b += 5) {
+        TableLine c = T("time-history block card");
+        for (std::size_t j = 0; j < 5 && b + j < blocks->size(); ++j)
+          c("first " + std::to_string(j + 1), (*blocks)[b + j][0])("last " + std::to_string(j + 1), (*blocks)[b + j][1]);
+        os_ << c.str() << "\n";
+      }
+  }
+
+  void curves() {
+    if (!m_.load_curves.empty()) os_ << "*----- LOAD CURVES\n";
+    for (std::size_t c = 0; c < m_.load_curves.size(); ++c) {
+      const LoadCurve& lc = m_.load_curves[c];
+      os_ << T("load curve header card", "load curve")("curve number", int(c) + 1)("NPTS", int(lc.t.size())).str() << "\n";
+      for (std::size_t p = 0; p < lc.t.size(); ++p)
+        os_ << T("load curve point card", "load curve point")("time", lc.t[p])("value", lc.f[p]).str() << "\n";
+    }
+  }
+
+  void loads() {
+    if (!m_.nodal_loads.empty()) os_ << "*----- NODAL LOADS: node, direction, load curve, scale\n";
+    for (const NodalLoad& l : m_.nodal_loads) {
+      int d = 0;
+      for (int q = 0; q < 3; ++q) if (l.dir[std::size_t(q)] == 1) d = q + 1;
+      if (d == 0) note("nodal load direction not along an axis: written as x");
+      os_ << T("nodal load card", "nodal load")("node", l.node + 1)("direction", d == 0 ? 1 : d)("load curve", l.curve + 1)
+                 ("scale factor", l.scale).str() << "\n";
+    }
+    pressures();
+    motions();
+  }
+
+  void pressures() {
+    if (!m_.pressure_loads.empty()) os_ << "*----- PRESSURE LOADS: load curve, n1-n4, multipliers\n";
+    for (const PressureLoad& l : m_.pressure_loads) {
+      if (l.birth != 0) note("pressure arrival time " + shortest(l.birth) + " has no field in DYNA3D's pressure card: not written");
+      TableLine c = T("pressure card");
+      c("load curve", l.curve + 1);
+      for (int q = 0; q < 4; ++q)
+        c("node n" + std::to_string(q + 1), l.nodes[std::size_t(q)] + 1)("multiplier " + std::to_string(q + 1), l.factor[std::size_t(q)] * l.scale);
+      os_ << c.str() << "\n";
+    }
+  }
+
+  void motions() {
+    if (node_motions_ > 0) os_ << "*----- VELOCITY/ACCELERATION BOUNDARY CONDITIONS: node, curve, DOF, scale, vector, type, birth\n";
+    for (const PrescribedMotion& pm : m_.prescribed_motions) {
+      if (pm.node < 0) continue;
+      int d = 4;
+      for (int q = 0; q < 3; ++q) if (pm.dir[std::size_t(q)] == 1) d = (pm.rotation ? 5 : 1) + q;
+      TableLine c = T("velocity/acceleration boundary card");
+      c("node", pm.node + 1)("load curve", pm.curve + 1)("DOF", d)("scale factor", pm.scale);
+      if (d == 4) c("vx", pm.dir[0])("vy", pm.dir[1])("vz", pm.dir[2]);
+      c("type", int(pm.kind));
+      if (pm.birth != 0) c("birth time", pm.birth);
+      if (pm.death < 1e28) c("death time", pm.death);
+      os_ << c.str() << "\n";
+    }
+  }
+
+  void walls() {
+    if (!m_.walls.empty()) os_ << "*----- STONEWALLS\n";
+    const FixedCardLayout& list = fixed_card_layout("node list card", FixedVintage::dyna3d_later);
+    const std::size_t per = list.fields.size();
+    for (const StoneWall& w : m_.walls) {
+      os_ << T("stonewall card", "stonewall")("NSN", int(w.nodes.size()))("moving flag", w.mass > 0 ? 1 : 0)("XT", w.tail[0])("YT", w.tail[1])
+                 ("ZT", w.tail[2])("XH", w.head[0])("YH", w.head[1])("ZH", w.head[2])("FRIC", w.friction).str() << "\n";
+      if (w.mass > 0) os_ << T("moving stonewall card", "moving stonewall")("MASS", w.mass)("V0", w.v0).str() << "\n";
+      for (std::size_t j = 0; j < w.nodes.size(); j += per) {
+        TableLine c = T("node list card", "stonewall nodes");
+        for (std::size_t q = j; q < std::min(j + per, w.nodes.size()); ++q) c(list.fields[q - j].name, w.nodes[q] + 1);
+        os_ << c.str() << "\n";
+      }
+    }
+  }
+
+  void velocities() {
+    if (!m_.init_velocities.empty()) os_ << "*----- INITIAL VELOCITIES\n";
+    for (const InitialVelocity& iv : m_.init_velocities)
+      os_ << T("initial velocity range card", "initial velocity")("first node", iv.first)("vx", iv.v[0])("vy", iv.v[1])("vz", iv.v[2])
+                 ("last node", iv.last)("increment", iv.increment).str() << "\n";
+  }
+
+  void interfaces() {
+    if (!m_.interfaces.empty()) os_ << "*----- SLIDING INTERFACES\n";
+    for (const SlidingInterface& si : m_.interfaces)
+      os_ << T("sliding interface control card")("NSS", int(si.slave.size()))("NMS", int(si.master.size()))
+                 ("type", si.type)("static friction", si.fs)("dynamic friction", si.fd)("decay coefficient", si.decay)
+                 ("stiffness method", si.stiffness_method)("one-pass flag", si.symmetric || si.type == 4 ? 0 : 1)
+                 ("penalty scale factor", si.penalty_scale).str() << "\n";
+    for (const SlidingInterface& si : m_.interfaces) {
+      if (si.stiffness_method == 2) note("sliding interface: LS-DYNA's soft constraint (SOFT 1) has no fixed-format value: written as stiffness method 2");
+      if (si.penopt != 2) note("sliding interface: PENOPT " + std::to_string(si.penopt) + " has no fixed-format field (the fixed format takes the segment's stiffness)");
+    }
+    for (const SlidingInterface& si : m_.interfaces)
+      for (const auto* segs : {&si.slave, &si.master})
+        for (std::size_t s = 0; s < segs->size(); ++s) {
+          TableLine c = T("segment card", "segment");
+          c("segment number", int(s) + 1);
+          for (int j = 0; j < 4; ++j) c("node n" + std::to_string(j + 1), (*segs)[s][std::size_t(j)] + 1);
+          os_ << c.str() << "\n";
         }
-        os << line.str() << "\n";
-      }
+  }
+
+  void base_accelerations() {
+    if (base_[0] >= 0 || base_[1] >= 0 || base_[2] >= 0) os_ << "*----- BASE ACCELERATIONS: load curve, scale\n";
+    for (int a = 0; a < 3; ++a) {
+      if (base_[std::size_t(a)] < 0) continue;
+      const BodyLoad& b = m_.body_loads[std::size_t(base_[std::size_t(a)])];
+      os_ << T("base acceleration card", "base acceleration")("load curve", b.curve + 1)("scale factor", b.scale).str() << "\n";
     }
   }
-  if (rules > 0) os << "*----- USER BEAM INTEGRATION RULES: points, 1.0; s, t, weight\n";
-  for (std::size_t j = 0; j < m.materials.size(); ++j) {
-    if (!rule_of[j]) continue;
-    const auto& rule = m.materials[j].beam_section.user_rule;
-    os << L("beam integration rule").i(1, 5, int(rule.size())).r(6, 15, 1.0).str() << "\n";
-    for (const auto& p : rule) os << L("beam integration point").r(1, 10, p[0]).r(11, 20, p[1]).r(21, 30, p[2]).str() << "\n";
-  }
-  os << "*----- NODES\n";
-  static const int rot_code[8] = {0, 1, 2, 4, 3, 6, 5, 7};  // bits (0 rx, 1 ry, 2 rz) -> code 0-7
-  for (int n = 0; n < m.num_nodes(); ++n) {
-    const int rc = std::size_t(n) < m.rot_bc.size() ? rot_code[m.rot_bc[std::size_t(n)] & 7] : 0;
-    os << L("node " + std::to_string(n + 1)).i(1, 8, n + 1).i(9, 13, m.bc[std::size_t(n)]).r(14, 33, m.x[std::size_t(n)])
-              .r(34, 53, m.y[std::size_t(n)]).r(54, 73, m.z[std::size_t(n)]).i(74, 78, rc).str() << "\n";
-  }
-  os << "*----- SOLID ELEMENTS\n";
-  for (int e = 0; e < m.num_hexes(); ++e) {
-    FixedLine c = L("solid " + std::to_string(e + 1));
-    c.i(1, 8, e + 1).i(9, 13, m.hex_material[std::size_t(e)] + 1);
-    for (int j = 0; j < 8; ++j) c.i(14 + 8 * j, 21 + 8 * j, m.hex_nodes[std::size_t(e)][std::size_t(j)] + 1);
-    os << c.str() << "\n";
-  }
-  if (m.num_beams() > 0) os << "*----- BEAM ELEMENTS: id, material, n1, n2, orientation node n3, TS1 TS2 TT1 TT2\n";
-  for (int e = 0; e < m.num_beams(); ++e) {
-    const auto& n = m.beam_nodes[std::size_t(e)];
-    const auto& t = m.beam_thickness[std::size_t(e)];
-    os << TableLine(notes, "beam element card", "beam " + std::to_string(e + 1))("element number", e + 1)
-              ("material number", m.beam_material[std::size_t(e)] + 1)("node n1", n[0] + 1)("node n2", n[1] + 1)
-              ("orientation node n3", n[2] + 1)("field 6", t[0])("field 7", t[1])("field 8", t[2])("field 9", t[3]).str() << "\n";
-  }
-  if (m.num_shells() > 0) os << "*----- SHELL ELEMENTS: id, material, n1-n4; thicknesses t1-t4\n";
-  for (int e = 0; e < m.num_shells(); ++e) {
-    FixedLine c = L("shell " + std::to_string(e + 1));
-    c.i(1, 8, e + 1).i(9, 13, m.shell_material[std::size_t(e)] + 1);
-    for (int j = 0; j < 4; ++j) c.i(14 + 8 * j, 21 + 8 * j, m.shell_nodes[std::size_t(e)][std::size_t(j)] + 1);
-    os << c.str() << "\n";
-    FixedLine t = L("shell " + std::to_string(e + 1) + " thicknesses");
-    for (int j = 0; j < 4; ++j) t.r(1 + 10 * j, 10 + 10 * j, m.shell_thickness[std::size_t(e)][std::size_t(j)]);
-    os << t.str() << "\n";
-  }
-  os << "*----- TIME-HISTORY BLOCKS\n";
-  for (const auto* blocks : {&m.node_th_blocks, &m.solid_th_blocks, &m.shell_th_blocks})  // five blocks a card
-    for (std::size_t b = 0; b < blocks->size(); b += 5) {
-      TableLine c(notes, "time-history block card");
-      for (std::size_t j = 0; j < 5 && b + j < blocks->size(); ++j) {
-        const std::string f = "first " + std::to_string(j + 1), l = "last " + std::to_string(j + 1);
-        c(f.c_str(), (*blocks)[b + j][0])(l.c_str(), (*blocks)[b + j][1]);
-      }
-      os << c.str() << "\n";
-    }
-  if (!m.load_curves.empty()) os << "*----- LOAD CURVES\n";
-  for (std::size_t c = 0; c < m.load_curves.size(); ++c) {
-    const LoadCurve& lc = m.load_curves[c];
-    os << L("load curve").i(1, 5, int(c) + 1).i(6, 10, int(lc.t.size())).str() << "\n";
-    for (std::size_t p = 0; p < lc.t.size(); ++p) os << L("load curve point").r(1, 10, lc.t[p]).r(11, 20, lc.f[p]).str() << "\n";
-  }
-  if (!m.nodal_loads.empty()) os << "*----- NODAL LOADS: node, direction, load curve, scale\n";
-  for (const NodalLoad& l : m.nodal_loads) {
-    int d = 0;
-    for (int q = 0; q < 3; ++q) if (l.dir[std::size_t(q)] == 1) d = q + 1;
-    if (d == 0 && notes) notes->push_back("nodal load direction not along an axis: written as x");
-    os << L("nodal load").i(1, 8, l.node + 1).i(9, 13, d == 0 ? 1 : d).i(14, 18, l.curve + 1).r(19, 28, l.scale).str() << "\n";
-  }
-  if (!m.pressure_loads.empty()) os << "*----- PRESSURE LOADS: load curve, n1-n4, multipliers\n";
-  for (const PressureLoad& l : m.pressure_loads) {
-    if (l.birth != 0 && notes) notes->push_back("pressure arrival time " + shortest(l.birth) + " has no field in DYNA3D's pressure card: not written");
-    TableLine c(notes, "pressure card");
-    c("load curve", l.curve + 1);
-    for (int q = 0; q < 4; ++q) {
-      const std::string n = "node n" + std::to_string(q + 1), f = "multiplier " + std::to_string(q + 1);
-      c(n.c_str(), l.nodes[std::size_t(q)] + 1)(f.c_str(), l.factor[std::size_t(q)] * l.scale);
-    }
-    os << c.str() << "\n";
-  }
-  if (node_motions > 0) os << "*----- VELOCITY/ACCELERATION BOUNDARY CONDITIONS: node, curve, DOF, scale, vector, type, birth\n";
-  for (const PrescribedMotion& pm : m.prescribed_motions) {
-    if (pm.node < 0) continue;
-    int d = 4;
-    for (int q = 0; q < 3; ++q) if (pm.dir[std::size_t(q)] == 1) d = (pm.rotation ? 5 : 1) + q;
-    TableLine c(notes, "velocity/acceleration boundary card");
-    c("node", pm.node + 1)("load curve", pm.curve + 1)("DOF", d)("scale factor", pm.scale);
-    if (d == 4) c("vx", pm.dir[0])("vy", pm.dir[1])("vz", pm.dir[2]);
-    c("type", int(pm.kind));
-    if (pm.birth != 0) c("birth time", pm.birth);
-    if (pm.death < 1e28) c("death time", pm.death);
-    os << c.str() << "\n";
-  }
-  if (!m.walls.empty()) os << "*----- STONEWALLS\n";
-  for (const StoneWall& w : m.walls) {
-    os << L("stonewall").i(1, 5, int(w.nodes.size())).i(6, 10, w.mass > 0 ? 1 : 0).r(11, 20, w.tail[0]).r(21, 30, w.tail[1]).r(31, 40, w.tail[2])
-              .r(41, 50, w.head[0]).r(51, 60, w.head[1]).r(61, 70, w.head[2]).r(71, 80, w.friction).str() << "\n";
-    if (w.mass > 0) os << L("moving stonewall").r(1, 10, w.mass).r(11, 20, w.v0).str() << "\n";
-    for (std::size_t j = 0; j < w.nodes.size(); j += 10) {
-      FixedLine c = L("stonewall nodes");
-      for (std::size_t q = j; q < std::min(j + 10, w.nodes.size()); ++q) c.i(1 + 8 * int(q - j), 8 + 8 * int(q - j), w.nodes[q] + 1);
-      os << c.str() << "\n";
-    }
-  }
-  if (!m.init_velocities.empty()) os << "*----- INITIAL VELOCITIES\n";
-  for (const InitialVelocity& iv : m.init_velocities)
-    os << L("initial velocity").i(1, 8, iv.first).r(9, 18, iv.v[0]).r(19, 28, iv.v[1]).r(29, 38, iv.v[2])
-              .i(39, 46, iv.last).i(47, 51, iv.increment).str() << "\n";
-  if (!m.interfaces.empty()) os << "*----- SLIDING INTERFACES\n";
-  for (const SlidingInterface& si : m.interfaces)
-    os << TableLine(notes, "sliding interface control card")("NSS", int(si.slave.size()))("NMS", int(si.master.size()))
-              ("type", si.type)("static friction", si.fs)("dynamic friction", si.fd)("decay coefficient", si.decay)
-              ("stiffness method", si.stiffness_method)("one-pass flag", si.symmetric || si.type == 4 ? 0 : 1)
-              ("penalty scale factor", si.penalty_scale).str() << "\n";
-  for (const SlidingInterface& si : m.interfaces) {
-    if (si.stiffness_method == 2 && notes) notes->push_back("sliding interface: LS-DYNA's soft constraint (SOFT 1) has no fixed-format value: written as stiffness method 2");
-    if (si.penopt != 2 && notes) notes->push_back("sliding interface: PENOPT " + std::to_string(si.penopt) + " has no fixed-format field (the fixed format takes the segment's stiffness)");
-  }
-  for (const SlidingInterface& si : m.interfaces) {
-    for (int side = 0; side < 2; ++side) {
-      const auto& segs = side == 0 ? si.slave : si.master;
-      for (std::size_t s = 0; s < segs.size(); ++s) {
-        FixedLine c = L("segment");
-        c.i(1, 8, int(s) + 1);
-        for (int j = 0; j < 4; ++j) c.i(9 + 8 * j, 16 + 8 * j, segs[s][std::size_t(j)] + 1);
-        os << c.str() << "\n";
-      }
-    }
-  }
-  if (base[0] >= 0 || base[1] >= 0 || base[2] >= 0) os << "*----- BASE ACCELERATIONS: load curve, scale\n";
-  for (int a = 0; a < 3; ++a) {
-    if (base[std::size_t(a)] < 0) continue;
-    const BodyLoad& b = m.body_loads[std::size_t(base[std::size_t(a)])];
-    os << L("base acceleration").i(1, 5, b.curve + 1).r(6, 15, b.scale).str() << "\n";
-  }
-  if (damping_card) {
-    os << "*----- MASS DAMPING: damping ratio, frequency (D = 2 ratio frequency = *DAMPING_GLOBAL VALDMP)\n";
-    os << TableLine(notes, "mass damping card")("damping ratio", 0.5)("frequency", m.damping.d).str() << "\n";
-  }
-  os << "*----- END OF DECK\n";
+};
+
+}  // namespace
+
+void write_keyword_deck(std::ostream& os, const Model& m, std::vector<std::string>* notes) {
+  KeywordWriter(os, m, notes).write();
+}
+
+void write_fixed_deck(std::ostream& os, const Model& m, std::vector<std::string>* notes) {
+  FixedWriter(os, m, notes).write();
 }
 
 bool write_deck_file(const std::string& path, const Model& m, bool keyword, Diagnostics& diag,

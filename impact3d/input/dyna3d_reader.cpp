@@ -137,11 +137,6 @@ class Dyna3dReader {
     v = int(x);
     return true;
   }
-  static int code_field(Card& c, int c1, int c2, const char* field) {
-    int v = 0;
-    if (fast_code(c.columns(c1, c2), 1, c2 - c1 + 1, v)) return v;
-    return int(c.i(c1, c2, field));  // reports the bad text
-  }
   static bool fast_real(std::string_view line, int c1, int c2, double& v) {
     double x = 0;
     const FieldStatus st = parse_fortran_real(card_columns(line, c1, c2), x);
@@ -150,33 +145,38 @@ class Dyna3dReader {
     return true;
   }
 
+  // The title card (title card table): the title kept as written (leading blanks too), the
+  // format flag choosing the large or small format.
   void read_title() {
     Card c = next("title card");
-    m_.title = c.a(1, 72);
+    const FixedCardLayout& t = fixed_card_layout("title card", vintage_);
+    const FixedField &ft = t.field("title"), &fd = t.field("format digits"), &ff = t.field("format flag");
+    m_.title = c.a(ft.c1, ft.c2);
     while (!m_.title.empty() && m_.title.back() == ' ') m_.title.pop_back();
-    std::string digits = c.a(73, 74);
-    std::string large = c.a(76, 80);
+    std::string digits = c.a(fd.c1, fd.c2);
+    std::string large = c.a(ff.c1, ff.c2);
     for (auto& ch : large) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
     bool is_large = large.find("large") != std::string::npos;
     if (is_large && digits == "10") {
-      c.error(1101, 73, 80, "format flag", "\"10 large\" free-format control cards are not supported; use \"88 large\"");
+      c.error(1101, fd.c1, ff.c2, ff.name, "\"10 large\" free-format control cards are not supported; use \"88 large\"");
       stop_ = true;
       return;
     }
-    if (!is_large && !c.blank(76, 80)) {
-      c.error(1006, 76, 80, "format flag", "expected \"large\" or blank");
+    if (!is_large && !c.blank(ff.c1, ff.c2)) {
+      c.error(1006, fd.c1, ff.c2, ff.name, "expected \"large\" or blank");
     }
     m_.large_format = is_large;
     idw_ = is_large ? 8 : 5;
     if (is_keyword_line(c.a(1, 80))) {
-      c.error(1101, 1, 72, "title", "this looks like an LS-DYNA keyword deck (*KEYWORD); only the DYNA3D fixed format is read");
+      c.error(1101, ft.c1, ft.c2, ft.name, "this looks like an LS-DYNA keyword deck (*KEYWORD); only the DYNA3D fixed format is read");
       stop_ = true;
     }
   }
 
-  void require_zero(Card& c, int c1, int c2, const char* field, const char* feature) {
-    long long v = c.i(c1, c2, field, 0);
-    if (v != 0) c.error(1102, c1, c2, field, feature);
+  // The layout of a card whose id fields are 8 columns wide in the large format and 5 in the
+  // small one (its table "<id> (small format)").
+  const FixedCardLayout& sized_layout(const std::string& id) const {
+    return fixed_card_layout(m_.large_format ? id : id + " (small format)", vintage_);
   }
 
   // A count field bounded by what the deck can still hold (before anything is allocated).
@@ -201,21 +201,18 @@ class Dyna3dReader {
     {
       Card c = next("control card 2");
       card2_line_ = c.line();
-      if (!m_.large_format) {
-        read_small_control_card_2(c);
-      } else {
-        FixedValues v(c, fixed_card_layout("control card 2", vintage_));
-        note_ignored(v);
-        k.nmmat = int(v.integer("NMMAT"));
-        k.numnp = int(v.integer("NUMNP"));
-        k.numelh = int(v.integer("NUMELH"));
-        numelb_ = int(v.integer("NUMELB"));
-        numels_ = int(v.integer("NUMELS"));
-        k.interface_segments_out = int(v.integer("interface segments"));
-        k.interface_out_interval = v["interface output interval"];
-        if (k.interface_out_interval < 0) v.error(1221, "interface output interval");
-        check_counts(v);
-      }
+      FixedValues v(c, m_.large_format ? fixed_card_layout("control card 2", vintage_) : sized_layout("control card 2"));
+      note_ignored(v);
+      k.nmmat = int(v.integer("NMMAT"));
+      k.numnp = int(v.integer("NUMNP"));
+      k.numelh = int(v.integer("NUMELH"));
+      numelb_ = int(v.integer("NUMELB"));
+      numels_ = int(v.integer("NUMELS"));
+      k.interface_segments_out = int(v.integer("interface segments"));
+      k.interface_out_interval = v["interface output interval"];
+      if (k.interface_out_interval < 0) v.error(1221, "interface output interval");
+      if (m_.large_format) check_counts(v);
+      else check_small_counts(v);
     }
     {
       Card c = next("control card 3");
@@ -321,28 +318,20 @@ class Dyna3dReader {
     }
   }
 
-  // Control card 2 of the small format (I5 fields; no DYNA3D deck of this vintage is known).
-  void read_small_control_card_2(Card& c) {
+  // The counts of control card 2 of the small format (no DYNA3D deck of this vintage is known):
+  // as the large format's, without its messages' detail.
+  void check_small_counts(const FixedValues& v) {
     ControlData& k = m_.control;
-    k.nmmat = int(c.i(1, 5, "NMMAT"));
-    k.numnp = int(c.i(6, 10, "NUMNP"));
-    k.numelh = int(c.i(11, 15, "NUMELH"));
-    numelb_ = int(c.i(16, 20, "NUMELB"));
-    numels_ = int(c.i(21, 25, "NUMELS"));
-    require_zero(c, 26, 30, "NUMELT", "thick shell elements");
-    k.interface_segments_out = int(c.i(31, 35, "interface segments"));
-    k.interface_out_interval = c.e(36, 45, "interface output interval");
-    if (k.interface_out_interval < 0) c.error(1221, 36, 45, "interface output interval");
-    if (k.nmmat < 1) c.error(1003, 1, 5, "NMMAT", "at least 1 material");
-    if (k.numnp < 1) c.error(1003, 6, 10, "NUMNP", "at least 1 node");
+    if (k.nmmat < 1) v.error(1003, "NMMAT", "at least 1 material");
+    if (k.numnp < 1) v.error(1003, "NUMNP", "at least 1 node");
     if (k.numelh < 0 || (k.numelh == 0 && numels_ < 1 && numelb_ < 1))
-      c.error(1003, 11, 15, "NUMELH", "at least 1 element (solids NUMELH, beams NUMELB or shells NUMELS)");
+      v.error(1003, "NUMELH", "at least 1 element (solids NUMELH, beams NUMELB or shells NUMELS)");
     const long avail = remaining_cards();
-    if (k.numnp > avail) { c.error(1205, 6, 10, "NUMNP"); k.numnp = 0; }
-    if (k.numelh > avail) { c.error(1205, 11, 15, "NUMELH"); k.numelh = 0; }
-    if (numelb_ < 0 || numelb_ > avail) { c.error(1205, 16, 20, "NUMELB"); numelb_ = 0; }
-    if (numels_ < 0 || numels_ > avail / 2) { c.error(1205, 21, 25, "NUMELS"); numels_ = 0; }
-    if (k.nmmat > avail / 8 + 1) { c.error(1205, 1, 5, "NMMAT"); k.nmmat = 0; }
+    if (k.numnp > avail) { v.error(1205, "NUMNP"); k.numnp = 0; }
+    if (k.numelh > avail) { v.error(1205, "NUMELH"); k.numelh = 0; }
+    if (numelb_ < 0 || numelb_ > avail) { v.error(1205, "NUMELB"); numelb_ = 0; }
+    if (numels_ < 0 || numels_ > avail / 2) { v.error(1205, "NUMELS"); numels_ = 0; }
+    if (k.nmmat > avail / 8 + 1) { v.error(1205, "NMMAT"); k.nmmat = 0; }
     k.nmmat = std::max(k.nmmat, 0);
     k.numnp = std::max(k.numnp, 0);
     k.numelh = std::max(k.numelh, 0);
@@ -372,10 +361,18 @@ class Dyna3dReader {
     k.numelh = std::max(k.numelh, 0);
   }
 
-  // A field that reads as 0 (DYNA3D deck writers fill unused fields with 0.000E+00).
-  static bool is_zero_field(const Card& c, int c1) {
-    double v = 1;
-    return parse_fortran_real(c.columns(c1, c1 + 9), v) == FieldStatus::ok && v == 0;
+  // Warning 2006 for each field of material cards 3-8 (material property card table) that no
+  // parameter of the type uses and that holds a nonzero value (DYNA3D deck writers fill unused
+  // fields with 0.000E+00).
+  void warn_unused_property_fields(std::vector<Card>& cards, const bool (&used)[6][8], const std::string& detail) {
+    const FixedCardLayout& layout = fixed_card_layout("material property card", vintage_);
+    for (std::size_t k = 0; k < 6; ++k)
+      for (std::size_t f = 0; f < 8; ++f) {
+        const FixedField& fd = layout.fields[f];
+        double v = 1;
+        if (used[k][f] || cards[k].blank(fd.c1, fd.c2) || (parse_fortran_real(cards[k].columns(fd.c1, fd.c2), v) == FieldStatus::ok && v == 0)) continue;
+        diag_.add(2006, cards[k].where(fd.c1, fd.c2, "parameter"), detail);
+      }
   }
 
   // Cards 3-8 of a material: each parameter where its type's table puts it (material_types.h),
@@ -383,9 +380,11 @@ class Dyna3dReader {
   void read_material_params(MaterialData& md, const MaterialType& t, std::vector<Card>& cards) {
     set_param_defaults(md, t);
     if (t.one_per_card) {  // the original layout, or its packed alternative (8 per card from card 3)
+      const FixedCardLayout& pc = fixed_card_layout("material property card", vintage_);
+      const FixedField &f1 = pc.fields.front(), &f2 = pc.fields[1], &f8 = pc.fields.back();
       bool lower_blank = true;
-      for (std::size_t k = 1; k < 6; ++k) lower_blank = lower_blank && cards[k].blank(1, 10);
-      md.packed = lower_blank && !cards[0].blank(11, 80);
+      for (std::size_t k = 1; k < 6; ++k) lower_blank = lower_blank && cards[k].blank(f1.c1, f1.c2);
+      md.packed = lower_blank && !cards[0].blank(f2.c1, f8.c2);
       if (md.packed) diag_.add(2001, cards[0].where(1, 80));
     }
     auto pos = [&](const MaterialParam& p) -> std::pair<Card*, int> {
@@ -403,11 +402,7 @@ class Dyna3dReader {
       param_value(md, p) = v;
       used[c - &cards[0]][(col - 1) / 10] = true;
     }
-    for (int k = 0; k < 6; ++k)
-      for (int f = 0; f < 8; ++f)
-        if (!used[k][f] && !cards[std::size_t(k)].blank(1 + 10 * f, 10 + 10 * f) && !is_zero_field(cards[std::size_t(k)], 1 + 10 * f))
-          diag_.add(2006, cards[std::size_t(k)].where(1 + 10 * f, 10 + 10 * f, "parameter"),
-                    "not used by material type " + std::to_string(t.number));
+    warn_unused_property_fields(cards, used, "not used by material type " + std::to_string(t.number));
     check_material_params(md, t, [&](const MaterialParam& p, int msg, const std::string& detail) {
       auto [c, col] = pos(p);
       if (msg >= 2000) diag_.add(msg, c->where(col, col + 9, name(p)), detail);
@@ -426,27 +421,23 @@ class Dyna3dReader {
     Card c = next(name + " shell section card", "a shell material (element type 2) has a section card after card 8");
     diag_.add(2041, c.where(1, 80), "the shell section as one card (SHRF, NIP, QR, T1-T4) is IMPACT-3D's old layout; DYNA3D's is a "
                                     "\"section properties\" line and two cards (impact3d i=DECK --write-fixed=NEW writes it)");
+    FixedValues v(c, fixed_card_layout("old IMPACT-3D shell section card", vintage_));
     ShellSectionData& sec = md.shell_section;
     sec.line = c.line();
-    sec.shrf = c.e(1, 10, "shear factor SHRF", 1.0);
-    if (c.blank(1, 10) || sec.shrf == 0) sec.shrf = 1.0;
-    if (!(sec.shrf > 0 && sec.shrf <= 1)) c.error(1003, 1, 10, "shear factor SHRF", "shear factor in (0, 1] (5/6 for isotropic shells)");
-    const double nip = c.e(11, 20, "NIP", 2);
-    sec.nip = (c.blank(11, 20) || nip == 0) ? 2 : int(nip);
-    if (nip != std::floor(nip) || nip < 0 || nip > 1e9) { c.error(1003, 11, 20, "NIP", "integration points 1-10"); sec.nip = 2; }
-    else if (nip > 10) { c.error(1102, 11, 20, "NIP", "more than 10 Gauss points (user-defined integration rules)"); sec.nip = 2; }
-    if (c.e(21, 30, "quadrature rule QR") != 0) c.error(1102, 21, 30, "quadrature rule QR", "user-defined and trapezoidal integration rules (Gauss only)");
-    for (int j = 0; j < 4; ++j) {
-      const std::string f = "T" + std::to_string(j + 1);
-      sec.t[std::size_t(j)] = c.e(31 + 10 * j, 40 + 10 * j, f.c_str());
-    }
+    sec.shrf = v["shear factor SHRF"];
+    if (sec.shrf == 0) sec.shrf = 1.0;
+    if (!(sec.shrf > 0 && sec.shrf <= 1)) v.error(1003, "shear factor SHRF", "shear factor in (0, 1] (5/6 for isotropic shells)");
+    const double nip = v["NIP"];
+    sec.nip = nip == 0 ? 2 : int(nip);
+    if (nip != std::floor(nip) || nip < 0 || nip > 1e9) { v.error(1003, "NIP", "integration points 1-10"); sec.nip = 2; }
+    else if (nip > 10) { v.error(1102, "NIP", "more than 10 Gauss points (user-defined integration rules)"); sec.nip = 2; }
+    if (v["quadrature rule QR"] != 0) v.error(1102, "quadrature rule QR", "user-defined and trapezoidal integration rules (Gauss only)");
+    static const char* const tn[4] = {"T1", "T2", "T3", "T4"};
+    for (int j = 0; j < 4; ++j) sec.t[std::size_t(j)] = v[tn[j]];
     for (int j = 1; j < 4; ++j)
       if (sec.t[std::size_t(j)] == 0) sec.t[std::size_t(j)] = sec.t[0];
     for (int j = 0; j < 4; ++j)
-      if (sec.t[std::size_t(j)] < 0) {
-        const std::string f = "T" + std::to_string(j + 1);
-        c.error(1241, 31 + 10 * j, 40 + 10 * j, f.c_str());
-      }
+      if (sec.t[std::size_t(j)] < 0) v.error(1241, tn[j]);
   }
 
   // DYNA3D's shell section: after the title line, card 1 (SHRF, NIP, QR) and card 2 (T1-T4).
@@ -490,14 +481,7 @@ class Dyna3dReader {
       param_value(md, *p) = c.blank(sl.col, sl.col + 9) ? p->def : c.e(sl.col, sl.col + 9, p->fname ? p->fname : p->key, p->def);
       used[sl.card - 3][(sl.col - 1) / 10] = true;
     }
-    for (int k = 0; k < 6; ++k)
-      for (int f = 0; f < 8; ++f)
-        if (!used[k][f] && !cards[std::size_t(k)].blank(1 + 10 * f, 10 + 10 * f)) {
-          double v = 0;
-          if (parse_fortran_real(cards[std::size_t(k)].columns(1 + 10 * f, 10 + 10 * f), v) == FieldStatus::ok && v == 0) continue;
-          diag_.add(2006, cards[std::size_t(k)].where(1 + 10 * f, 10 + 10 * f, "parameter"),
-                    "not used by material type 71 (read as type 3: E, nu / yield stress, tangent modulus / beta)");
-        }
+    warn_unused_property_fields(cards, used, "not used by material type 71 (read as type 3: E, nu / yield stress, tangent modulus / beta)");
     check_material_params(md, t, [&](const MaterialParam& p, int msg, const std::string& detail) {
       for (const Slot& sl : kType71)
         if (std::string_view(sl.key) == p.key) {
@@ -512,136 +496,20 @@ class Dyna3dReader {
     md.title += md.title.empty() ? "(DYNA3D type 71, read as type 3)" : "";
   }
 
+  // What material card 1 settles for the cards after it.
+  struct MaterialHead {
+    const MaterialType* mt = nullptr;
+    const EosForm* eos_form = nullptr;
+    bool type71 = false;
+    long long et = 0;   // element type
+    int slot = -1;      // 0-based slot in m_.materials (-1: a bad or repeated number)
+  };
+
   void read_materials() {
-    int n = m_.control.nmmat;
+    const int n = m_.control.nmmat;
     m_.materials.assign(static_cast<std::size_t>(n), MaterialData{});
     std::vector<int> first_line(static_cast<std::size_t>(n), 0);
-    for (int s = 1; s <= n; ++s) {
-      std::string set = "material set " + std::to_string(s);
-      Card c1 = next(set + " card 1", "expected " + std::to_string(n) + " material sets (control card 2 NMMAT)");
-      MaterialData md;
-      md.line = c1.line();
-      md.number = int(c1.i(1, 5, "material number"));
-      std::string name = "material " + std::to_string(md.number);
-      // Material numbers are labels (INGRID numbers sets 1, 13, 12 with NMMAT 3): a label
-      // 1..NMMAT takes its own slot when free, any other the first free slot; elements refer to
-      // labels (material_slot).
-      bool number_ok = true;
-      int slot = -1;
-      if (md.number < 1 || md.number > 99999) {
-        c1.error(1201, 1, 5, "material number", "must be a positive number");
-        number_ok = false;
-      } else if (const int prev = material_slot(md.number); prev > 0) {
-        c1.error(1200, 1, 5, "material number", "already defined on line " + std::to_string(first_line[std::size_t(prev - 1)]));
-        number_ok = false;
-      } else {
-        slot = md.number <= n && first_line[std::size_t(md.number - 1)] == 0 ? md.number - 1 : -1;
-        for (int q = 0; q < n && slot < 0; ++q)
-          if (first_line[std::size_t(q)] == 0) slot = q;
-        if (slot >= 0) {
-          if (label_slot_.size() <= std::size_t(md.number)) label_slot_.resize(std::size_t(md.number) + 1, 0);
-          label_slot_[std::size_t(md.number)] = slot + 1;
-          first_line[std::size_t(slot)] = md.line;
-        }
-      }
-      md.type = int(c1.i(6, 10, "material type"));
-      // type 71 as LLNL's regression decks use it: type 3's model, parameters packed by pairs
-      // (read_type71_params; the evidence: docs/dyna3d-decks.md)
-      const bool type71 = md.type == 71;
-      if (type71) md.type = 3;
-      const MaterialType* mt = find_material_type(md.type);
-      if (!mt) c1.error(1103, 6, 10, "material type", "supported: " + supported_material_types());
-      md.rho = c1.e(11, 20, "density");
-      if (!(md.rho > 0)) c1.error(1207, 11, 20, "density");
-      // equation of state (material/eos.h): form 1, 4 or 9, its cards after card 8
-      const long long eos = c1.i(21, 25, "EOS type");
-      const EosForm* eos_form = eos != 0 ? find_eos_form(int(eos)) : nullptr;
-      if (eos != 0 && !eos_form)
-        c1.error(1102, 21, 25, "EOS type", "EOS form " + std::to_string(eos) + " (supported: " + supported_eos_forms() + ")");
-      else if (eos_form && mt && !mt->accepts_eos)
-        c1.error(1102, 21, 25, "EOS type", std::string("an equation of state with material type ") + std::to_string(md.type) + " " + mt->name + " (types that take one: " + eos_material_types() + ")");
-      else if (eos == 0 && mt && mt->needs_eos)
-        c1.error(1204, 21, 25, "EOS type", std::string("material type ") + std::to_string(md.type) + " " + mt->name + " needs an equation of state (" + supported_eos_forms() + ")");
-      md.eos.form = eos_form ? eos_form->form : 0;
-      md.hourglass_type = int(c1.i(26, 30, "hourglass type", 1));
-      if (md.hourglass_type == 0) md.hourglass_type = 1;
-      if (md.hourglass_type > 5 && md.hourglass_type <= 10) {
-        // DYNA3D's and LS-DYNA's later forms (6-10: assumed-strain and enhanced stiffness forms):
-        // the nearest here, the exact-volume stiffness form 5, listed once (2040)
-        ignored_fields_.push_back({c1.line(), "material " + std::to_string(md.number) + " hourglass type " + std::to_string(md.hourglass_type) +
-                                                  " (cols 26-30) read as type 5 (stiffness, exact volume)"});
-        md.hourglass_type = 5;
-      } else if (md.hourglass_type < 1 || md.hourglass_type > 5)
-        c1.error(1006, 26, 30, "hourglass type", "1 viscous (DYNA3D), 2/3 Flanagan-Belytschko viscous, 4/5 stiffness");
-      md.hourglass_coef = c1.e(31, 40, "hourglass coefficient", 0.10);
-      if (c1.blank(31, 40) || md.hourglass_coef == 0) md.hourglass_coef = 0.10;
-      if (md.hourglass_coef < 0) c1.error(1220, 31, 40, "hourglass coefficient");
-      md.bulk_type = int(c1.i(41, 45, "bulk viscosity type", 1));
-      if (md.bulk_type == 0) md.bulk_type = 1;
-      if (md.bulk_type != 1) c1.error(1006, 41, 45, "bulk viscosity type", "only 1 (standard)");
-      // blank or 0: the defaults (DYNA3D deck writers fill the fields with 0.0000E+00; LS-DYNA
-      // reads 0 the same way)
-      md.q1 = c1.e(46, 55, "quadratic bulk viscosity Q1", 1.5);
-      if (c1.blank(46, 55) || md.q1 == 0) md.q1 = 1.5;
-      md.q2 = c1.e(56, 65, "linear bulk viscosity Q2", 0.06);
-      if (c1.blank(56, 65) || md.q2 == 0) md.q2 = 0.06;
-      if (md.q1 < 0) c1.error(1220, 46, 55, "quadratic bulk viscosity Q1");
-      if (md.q2 < 0) c1.error(1220, 56, 65, "linear bulk viscosity Q2");
-      // element type as DYNA3D deck writers (FEMGV's DYNA interface) settle it: 0 solid, 1
-      // beam, 2 shell, 3 thick shell
-      long long et = c1.i(66, 70, "element type");
-      if (et == 3) {
-        c1.error(1102, 66, 70, "element type", "thick shells (element type 3): IMPACT-3D has solids (0) and shells (2)");
-      } else if (et != 0 && et != 1 && et != 2) {
-        c1.error(1006, 66, 70, "element type", "0 solid, 1 beam, 2 shell, 3 thick shell");
-      }
-      md.shell = et == 2;
-      if (md.shell && mt && !has_shell_kernel(md.type))
-        c1.error(1103, 6, 10, "material type", "type " + std::to_string(md.type) + " has no shell form; shells (element type 2) take types " + shell_material_numbers());
-      if (md.shell && eos != 0) c1.error(1102, 21, 25, "EOS type", "an equation of state for shells (element type 2)");
-      c1.i(71, 75, "unused");
-      long long ef = c1.i(76, 80, "element formulation");
-      if (md.shell) {  // shells: Belytschko-Tsay (LS-DYNA ELFORM 2; 0 = the default, 2)
-        if (ef != 0 && ef != 2) c1.error(1102, 76, 80, "element formulation", "shell formulation " + std::to_string(ef) + "; only 2 (Belytschko-Tsay, also 0)");
-      } else if (et == 1) {  // beams: 1 Hughes-Liu (the family is refused as a whole, report_beams)
-      } else if (ef != 0 && ef != 1) {
-        c1.error(1102, 76, 80, "element formulation", "only the one-point hexahedron (0 or 1)");
-      }
-
-      while (skip_rgb_line()) {}
-      Card c2 = next(name + " card 2 (title)");
-      md.title = c2.a(1, 80);
-      while (!md.title.empty() && md.title.back() == ' ') md.title.pop_back();
-
-      std::vector<Card> cards;
-      for (int k = 3; k <= 8; ++k) cards.push_back(next(name + " card " + std::to_string(k)));
-      if (mt && type71) read_type71_params(md, *mt, cards);
-      else if (mt) read_material_params(md, *mt, cards);
-      if (const char* feature = nullptr; mt && md.shell) {
-        if (const MaterialParam* q = refused_shell_param(md, &feature); q && q->fcard >= 3)
-          cards[std::size_t(q->fcard - 3)].error(1102, q->fcol, q->fcol + 9, q->key, std::string(feature) + " (a shell material, element type 2)");
-      }
-      if (md.shell) read_shell_section(md, name);
-      if (et == 1) read_beam_section(md, name);
-      if (eos_form && (!mt || mt->accepts_eos) && !md.shell) {  // (a type that takes none: reported above, no cards read)
-        std::vector<Card> ec;
-        const std::vector<int>& ew = eos_fixed_widths(*eos_form);
-        for (std::size_t c = 0; c < ew.size(); ++c) ec.push_back(next(name + " EOS card " + std::to_string(c + 1)));
-        for (const EosParam& p : eos_form->params) {
-          if (p.fcard < 0) continue;
-          const int w = ew[std::size_t(p.fcard)], a = 1 + w * p.ffield;
-          eos_value(md.eos, p) = ec[std::size_t(p.fcard)].e(a, a + w - 1, p.key, p.slot == kEosSlotV0 ? 1.0 : 0.0);
-        }
-        check_eos(md.eos, md.rho, [&](const EosParam& p, int msg, const std::string& detail) {
-          const int c = p.fcard < 0 ? 0 : p.fcard, w = ew[std::size_t(c)], a = 1 + w * (p.fcard < 0 ? 0 : p.ffield);
-          ec[std::size_t(c)].error(msg, a, a + w - 1, p.key, detail);
-        });
-      }
-      // rigid-body constraints in a local system need *DEFINE_COORDINATE_SYSTEM (keyword decks)
-      if (md.type == 20 && md.par.size() > 3 && md.par[3] == -1)
-        cards[2].error(1102, 1, 10, "constraint option CMO", "constraints in a local system (CMO = -1: keyword decks, *DEFINE_COORDINATE_SYSTEM)");
-      if (number_ok && slot >= 0) m_.materials[std::size_t(slot)] = md;
-    }
+    for (int s = 1; s <= n; ++s) read_material_set(s, first_line);
     for (int k = 0; k < n; ++k) {
       if (first_line[std::size_t(k)] == 0 && n > 0) {
         Location loc;
@@ -651,12 +519,168 @@ class Dyna3dReader {
     }
   }
 
+  // One material set: card 1, rgb lines, the title card, cards 3-8, then the section and EOS
+  // cards its element type and EOS form ask for.
+  void read_material_set(int s, std::vector<int>& first_line) {
+    const int n = m_.control.nmmat;
+    Card c1 = next("material set " + std::to_string(s) + " card 1", "expected " + std::to_string(n) + " material sets (control card 2 NMMAT)");
+    FixedValues v(c1, fixed_card_layout("material card 1", vintage_));
+    MaterialData md;
+    md.line = c1.line();
+    MaterialHead h;
+    h.slot = material_number(v, md, first_line);
+    read_material_card1(v, md, h);
+    const std::string name = "material " + std::to_string(md.number);
+    while (skip_rgb_line()) {}
+    Card c2 = next(name + " card 2 (title)");
+    const FixedField& ft = fixed_card_layout("material title card", vintage_).field("title");
+    md.title = c2.a(ft.c1, ft.c2);
+    while (!md.title.empty() && md.title.back() == ' ') md.title.pop_back();
+    std::vector<Card> cards;
+    for (int k = 3; k <= 8; ++k) cards.push_back(next(name + " card " + std::to_string(k)));
+    if (h.mt && h.type71) read_type71_params(md, *h.mt, cards);
+    else if (h.mt) read_material_params(md, *h.mt, cards);
+    if (const char* feature = nullptr; h.mt && md.shell) {
+      if (const MaterialParam* q = refused_shell_param(md, &feature); q && q->fcard >= 3)
+        cards[std::size_t(q->fcard - 3)].error(1102, q->fcol, q->fcol + 9, q->key, std::string(feature) + " (a shell material, element type 2)");
+    }
+    if (md.shell) read_shell_section(md, name);
+    if (h.et == 1) read_beam_section(md, name);
+    if (h.eos_form && (!h.mt || h.mt->accepts_eos) && !md.shell) read_eos_cards(md, *h.eos_form, name);  // (a type that takes none: reported, no cards read)
+    // rigid-body constraints in a local system need *DEFINE_COORDINATE_SYSTEM (keyword decks)
+    if (const MaterialParam* cmo = h.mt && md.type == 20 ? find_param(*h.mt, "CMO") : nullptr; cmo && md.par.size() > 3 && md.par[3] == -1)
+      cards[std::size_t(cmo->fcard - 3)].error(1102, cmo->fcol, cmo->fcol + 9, cmo->fname,
+                                               "constraints in a local system (CMO = -1: keyword decks, *DEFINE_COORDINATE_SYSTEM)");
+    if (h.slot >= 0) m_.materials[std::size_t(h.slot)] = md;
+  }
+
+  // Material numbers are labels (INGRID numbers sets 1, 13, 12 with NMMAT 3): a label 1..NMMAT
+  // takes its own slot when free, any other the first free slot; elements refer to labels
+  // (material_slot).  Returns the slot, or -1 for a bad or repeated number.
+  int material_number(const FixedValues& v, MaterialData& md, std::vector<int>& first_line) {
+    const int n = m_.control.nmmat;
+    md.number = int(v.integer("material number"));
+    if (md.number < 1 || md.number > 99999) {
+      v.error(1201, "material number", "must be a positive number");
+      return -1;
+    }
+    if (const int prev = material_slot(md.number); prev > 0) {
+      v.error(1200, "material number", "already defined on line " + std::to_string(first_line[std::size_t(prev - 1)]));
+      return -1;
+    }
+    int slot = md.number <= n && first_line[std::size_t(md.number - 1)] == 0 ? md.number - 1 : -1;
+    for (int q = 0; q < n && slot < 0; ++q)
+      if (first_line[std::size_t(q)] == 0) slot = q;
+    if (slot >= 0) {
+      if (label_slot_.size() <= std::size_t(md.number)) label_slot_.resize(std::size_t(md.number) + 1, 0);
+      label_slot_[std::size_t(md.number)] = slot + 1;
+      first_line[std::size_t(slot)] = md.line;
+    }
+    return slot;
+  }
+
+  // Material card 1 (material card 1 table): type, density, EOS form, hourglass and bulk
+  // viscosity, element type and formulation.
+  void read_material_card1(const FixedValues& v, MaterialData& md, MaterialHead& h) {
+    md.type = int(v.integer("material type"));
+    // type 71 as LLNL's regression decks use it: type 3's model, parameters packed by pairs
+    // (read_type71_params; the evidence: docs/dyna3d-decks.md)
+    h.type71 = md.type == 71;
+    if (h.type71) md.type = 3;
+    h.mt = find_material_type(md.type);
+    if (!h.mt) v.error(1103, "material type", "supported: " + supported_material_types());
+    md.rho = v["density"];
+    if (!(md.rho > 0)) v.error(1207, "density");
+    read_material_eos(v, md, h);
+    read_material_viscosity(v, md);
+    read_element_type(v, md, h);
+  }
+
+  // The EOS form of card 1 (material/eos.h): form 1, 4 or 9, its cards after card 8.
+  void read_material_eos(const FixedValues& v, MaterialData& md, MaterialHead& h) {
+    const long long eos = v.integer("EOS type");
+    h.eos_form = eos != 0 ? find_eos_form(int(eos)) : nullptr;
+    const MaterialType* mt = h.mt;
+    if (eos != 0 && !h.eos_form)
+      v.error(1102, "EOS type", "EOS form " + std::to_string(eos) + " (supported: " + supported_eos_forms() + ")");
+    else if (h.eos_form && mt && !mt->accepts_eos)
+      v.error(1102, "EOS type", std::string("an equation of state with material type ") + std::to_string(md.type) + " " + mt->name + " (types that take one: " + eos_material_types() + ")");
+    else if (eos == 0 && mt && mt->needs_eos)
+      v.error(1204, "EOS type", std::string("material type ") + std::to_string(md.type) + " " + mt->name + " needs an equation of state (" + supported_eos_forms() + ")");
+    md.eos.form = h.eos_form ? h.eos_form->form : 0;
+  }
+
+  // Hourglass and bulk viscosity of card 1: blank or 0 are the defaults (DYNA3D deck writers
+  // fill the fields with 0.0000E+00; LS-DYNA reads 0 the same way).
+  void read_material_viscosity(const FixedValues& v, MaterialData& md) {
+    md.hourglass_type = int(v.integer("hourglass type"));
+    if (md.hourglass_type == 0) md.hourglass_type = 1;
+    if (md.hourglass_type > 5 && md.hourglass_type <= 10) {
+      // DYNA3D's and LS-DYNA's later forms (6-10: assumed-strain and enhanced stiffness forms):
+      // the nearest here, the exact-volume stiffness form 5, listed once (2040)
+      const FixedField& f = v.field("hourglass type");
+      ignored_fields_.push_back({v.card().line(), "material " + std::to_string(md.number) + " hourglass type " + std::to_string(md.hourglass_type) +
+                                                      " (cols " + std::to_string(f.c1) + "-" + std::to_string(f.c2) + ") read as type 5 (stiffness, exact volume)"});
+      md.hourglass_type = 5;
+    } else if (md.hourglass_type < 1 || md.hourglass_type > 5)
+      v.error(1006, "hourglass type", "1 viscous (DYNA3D), 2/3 Flanagan-Belytschko viscous, 4/5 stiffness");
+    md.hourglass_coef = v["hourglass coefficient"];
+    if (md.hourglass_coef == 0) md.hourglass_coef = 0.10;
+    if (md.hourglass_coef < 0) v.error(1220, "hourglass coefficient");
+    md.bulk_type = int(v.integer("bulk viscosity type"));
+    if (md.bulk_type == 0) md.bulk_type = 1;
+    if (md.bulk_type != 1) v.error(1006, "bulk viscosity type", "only 1 (standard)");
+    md.q1 = v["quadratic bulk viscosity Q1"];
+    if (md.q1 == 0) md.q1 = 1.5;
+    md.q2 = v["linear bulk viscosity Q2"];
+    if (md.q2 == 0) md.q2 = 0.06;
+    if (md.q1 < 0) v.error(1220, "quadratic bulk viscosity Q1");
+    if (md.q2 < 0) v.error(1220, "linear bulk viscosity Q2");
+  }
+
+  // Element type as DYNA3D deck writers (FEMGV's DYNA interface) settle it: 0 solid, 1 beam,
+  // 2 shell, 3 thick shell; and the element formulation each takes.
+  void read_element_type(const FixedValues& v, MaterialData& md, MaterialHead& h) {
+    const long long et = v.integer("element type");
+    h.et = et;
+    if (et == 3) v.error(1102, "element type", "thick shells (element type 3): IMPACT-3D has solids (0) and shells (2)");
+    else if (et != 0 && et != 1 && et != 2) v.error(1006, "element type", "0 solid, 1 beam, 2 shell, 3 thick shell");
+    md.shell = et == 2;
+    if (md.shell && h.mt && !has_shell_kernel(md.type))
+      v.error(1103, "material type", "type " + std::to_string(md.type) + " has no shell form; shells (element type 2) take types " + shell_material_numbers());
+    if (md.shell && v.integer("EOS type") != 0) v.error(1102, "EOS type", "an equation of state for shells (element type 2)");
+    const long long ef = v.integer("element formulation");
+    if (md.shell) {  // shells: Belytschko-Tsay (LS-DYNA ELFORM 2; 0 = the default, 2)
+      if (ef != 0 && ef != 2) v.error(1102, "element formulation", "shell formulation " + std::to_string(ef) + "; only 2 (Belytschko-Tsay, also 0)");
+    } else if (et != 1 && ef != 0 && ef != 1) {  // (beams: 1 Hughes-Liu)
+      v.error(1102, "element formulation", "only the one-point hexahedron (0 or 1)");
+    }
+  }
+
+  // The EOS cards after card 8, each parameter where its form's table puts it (material/eos.h).
+  void read_eos_cards(MaterialData& md, const EosForm& form, const std::string& name) {
+    std::vector<Card> ec;
+    const std::vector<int>& ew = eos_fixed_widths(form);
+    for (std::size_t c = 0; c < ew.size(); ++c) ec.push_back(next(name + " EOS card " + std::to_string(c + 1)));
+    for (const EosParam& p : form.params) {
+      if (p.fcard < 0) continue;
+      const int w = ew[std::size_t(p.fcard)], a = 1 + w * p.ffield;
+      eos_value(md.eos, p) = ec[std::size_t(p.fcard)].e(a, a + w - 1, p.key, p.slot == kEosSlotV0 ? 1.0 : 0.0);
+    }
+    check_eos(md.eos, md.rho, [&](const EosParam& p, int msg, const std::string& detail) {
+      const int c = p.fcard < 0 ? 0 : p.fcard, w = ew[std::size_t(c)], a = 1 + w * (p.fcard < 0 ? 0 : p.ffield);
+      ec[std::size_t(c)].error(msg, a, a + w - 1, p.key, detail);
+    });
+  }
+
   // 1-based slot of material label `label` (0: no such material).
   int material_slot(long long label) const {
     return label >= 0 && std::size_t(label) < label_slot_.size() ? label_slot_[std::size_t(label)] : 0;
   }
   std::vector<int> label_slot_;
 
+  // Node cards (node card table): number, boundary code, x y z, rotational code.  Plain cards
+  // whose every field reads and passes are taken by the fast path (read_plain_node).
   void read_nodes() {
     int n = m_.control.numnp;
     // Nodes never defined (reported as 1204) keep NaN coordinates: the volume check skips the
@@ -667,68 +691,79 @@ class Dyna3dReader {
     assign_huge(m_.z, std::size_t(n), undefined);
     assign_huge(m_.bc, std::size_t(n), 0);
     std::vector<int> seen(std::size_t(n), 0);
-    const bool L = m_.large_format;
-    const int i1 = 1, i2 = L ? 8 : 5, b1 = i2 + 1, b2 = i2 + 5;
-    const int x1 = b2 + 1, y1 = x1 + 20, z1 = y1 + 20, r1 = z1 + 20;
+    const FixedCardLayout& layout = sized_layout("node card");
+    const int after = layout.field("rotational code").c2 + 1;  // the first column not read
     int unread = 0;  // node cards with text in the columns after the rotational code
     Location unread_where;
     for (int k = 0; k < n; ++k) {
-      if (const DeckLine* l = plain_next_card()) {
-        const std::string_view t = l->text;
-        int id = 0, code = 0, rc = 0;
-        double x = 0, y = 0, z = 0;
-        if (fast_int(t, i1, i2, id) && fast_code(t, b1, b2, code) && fast_real(t, x1, x1 + 19, x) &&
-            fast_real(t, y1, y1 + 19, y) && fast_real(t, z1, z1 + 19, z) &&
-            fast_code(t, r1, r1 + 4, rc) && code >= 0 && code <= 7 && rc == 0 && id >= 1 &&
-            id <= n && !seen[std::size_t(id - 1)] && card_columns(t, r1 + 5, 80).find_first_not_of(" \r") == std::string_view::npos) {
-          deck_.next_card();
-          seen[std::size_t(id - 1)] = l->number;
-          m_.x[std::size_t(id - 1)] = x;
-          m_.y[std::size_t(id - 1)] = y;
-          m_.z[std::size_t(id - 1)] = z;
-          m_.bc[std::size_t(id - 1)] = code;
-          continue;
-        }
-      }
+      if (read_plain_node(layout, seen)) continue;
       Card c = next("node card " + std::to_string(k + 1) + " of " + std::to_string(n),
                     "expected " + std::to_string(n) + " node cards (control card 2 NUMNP), found " + std::to_string(k));
-      int id = int(c.i(i1, i2, "node number"));
-      c.set_name("node card for node " + std::to_string(id));
-      int code = code_field(c, b1, b2, "boundary code");
-      double x = c.e(x1, x1 + 19, "x");
-      double y = c.e(y1, y1 + 19, "y");
-      double z = c.e(z1, z1 + 19, "z");
-      int rc = code_field(c, r1, r1 + 4, "rotational code");
+      FixedValues v(c, layout, [](long long id) { return "node card for node " + std::to_string(id); });
       // the columns after the rotational code are not read: some writers put a code there
-      if (!c.blank(r1 + 5, 80) && unread++ == 0) unread_where = c.where(r1 + 5, 80, "unread columns");
-      if (code < 0 || code > 7) c.error(1216, b1, b2, "boundary code");
-      if (rc < 0 || rc > 7) c.error(1216, r1, r1 + 4, "rotational code");
-      else if (rc != 0 && id >= 1 && id <= n) {
-        // the rotations it fixes act on shell nodes (read_shells); on the others: warning 2005
-        if (m_.rot_bc.empty()) m_.rot_bc.assign(std::size_t(n), 0);
-        if (rot_code_line_.empty()) rot_code_line_.assign(std::size_t(n), 0);
-        static const std::uint8_t bits[8] = {0, 1, 2, 4, 3, 6, 5, 7};  // code 0-7 -> bit 0 rx, 1 ry, 2 rz
-        m_.rot_bc[std::size_t(id - 1)] = bits[rc];
-        rot_code_line_[std::size_t(id - 1)] = c.line();
-      }
-      if (id < 1 || id > n) {
-        c.error(1201, i1, i2, "node number", "must be 1.." + std::to_string(n) + " (NUMNP)");
-        continue;
-      }
-      if (seen[std::size_t(id - 1)]) {
-        c.error(1200, i1, i2, "node number", "node " + std::to_string(id) + " already defined on line " + std::to_string(seen[std::size_t(id - 1)]));
-        continue;
-      }
-      seen[std::size_t(id - 1)] = c.line();
-      m_.x[std::size_t(id - 1)] = x;
-      m_.y[std::size_t(id - 1)] = y;
-      m_.z[std::size_t(id - 1)] = z;
-      m_.bc[std::size_t(id - 1)] = (code >= 0 && code <= 7) ? code : 0;
+      if (!c.blank(after, 80) && unread++ == 0) unread_where = c.where(after, 80, "unread columns");
+      read_node_card(v, seen);
     }
     if (unread)
       diag_.add(2020, unread_where, std::to_string(unread) + " node card(s) (this is the first) hold text in columns " +
-                                        std::to_string(r1 + 5) + "-80, after the rotational code: IMPACT-3D reads nothing there");
+                                        std::to_string(after) + "-80, after the rotational code: IMPACT-3D reads nothing there");
     report_missing(seen, "node");
+  }
+
+  // The next node card read without a Card when it is plain and every field passes (nothing to
+  // report); false leaves it for read_node_card.
+  bool read_plain_node(const FixedCardLayout& layout, std::vector<int>& seen) {
+    const DeckLine* l = plain_next_card();
+    if (!l) return false;
+    const std::string_view t = l->text;
+    const FixedField &fi = layout.fields[0], &fb = layout.fields[1], &fx = layout.fields[2], &fy = layout.fields[3],
+                     &fz = layout.fields[4], &fr = layout.fields[5];
+    const int n = m_.control.numnp;
+    int id = 0, code = 0, rc = 0;
+    double x = 0, y = 0, z = 0;
+    if (!(fast_int(t, fi.c1, fi.c2, id) && fast_code(t, fb.c1, fb.c2, code) && fast_real(t, fx.c1, fx.c2, x) &&
+          fast_real(t, fy.c1, fy.c2, y) && fast_real(t, fz.c1, fz.c2, z) && fast_code(t, fr.c1, fr.c2, rc) && code >= 0 &&
+          code <= 7 && rc == 0 && id >= 1 && id <= n && !seen[std::size_t(id - 1)] &&
+          card_columns(t, fr.c2 + 1, 80).find_first_not_of(" \r") == std::string_view::npos))
+      return false;
+    deck_.next_card();
+    seen[std::size_t(id - 1)] = l->number;
+    m_.x[std::size_t(id - 1)] = x;
+    m_.y[std::size_t(id - 1)] = y;
+    m_.z[std::size_t(id - 1)] = z;
+    m_.bc[std::size_t(id - 1)] = code;
+    return true;
+  }
+
+  // One node card read by its table, every problem reported.
+  void read_node_card(const FixedValues& v, std::vector<int>& seen) {
+    const int n = m_.control.numnp;
+    const int id = int(v.integer("node number"));
+    const int code = int(v.integer("boundary code"));
+    const int rc = int(v.integer("rotational code"));
+    if (code < 0 || code > 7) v.error(1216, "boundary code");
+    if (rc < 0 || rc > 7) v.error(1216, "rotational code");
+    else if (rc != 0 && id >= 1 && id <= n) {
+      // the rotations it fixes act on shell nodes (read_shells); on the others: warning 2005
+      if (m_.rot_bc.empty()) m_.rot_bc.assign(std::size_t(n), 0);
+      if (rot_code_line_.empty()) rot_code_line_.assign(std::size_t(n), 0);
+      static const std::uint8_t bits[8] = {0, 1, 2, 4, 3, 6, 5, 7};  // code 0-7 -> bit 0 rx, 1 ry, 2 rz
+      m_.rot_bc[std::size_t(id - 1)] = bits[rc];
+      rot_code_line_[std::size_t(id - 1)] = v.card().line();
+    }
+    if (id < 1 || id > n) {
+      v.error(1201, "node number", "must be 1.." + std::to_string(n) + " (NUMNP)");
+      return;
+    }
+    if (seen[std::size_t(id - 1)]) {
+      v.error(1200, "node number", "node " + std::to_string(id) + " already defined on line " + std::to_string(seen[std::size_t(id - 1)]));
+      return;
+    }
+    seen[std::size_t(id - 1)] = v.card().line();
+    m_.x[std::size_t(id - 1)] = v["x"];
+    m_.y[std::size_t(id - 1)] = v["y"];
+    m_.z[std::size_t(id - 1)] = v["z"];
+    m_.bc[std::size_t(id - 1)] = (code >= 0 && code <= 7) ? code : 0;
   }
 
   void report_missing(const std::vector<int>& seen, const char* what) {
@@ -747,6 +782,8 @@ class Dyna3dReader {
     }
   }
 
+  // Solid element cards (solid element card table): number, material label, nodes n1-n8.
+  // Plain cards whose every field reads and passes take the fast path (read_plain_solid).
   void read_solids() {
     int n = m_.control.numelh;
     // Elements never defined (reported as 1204) keep node -1, so that the model checks skip
@@ -757,81 +794,166 @@ class Dyna3dReader {
     assign_huge(m_.hex_material, std::size_t(n), -1);
     assign_huge(m_.hex_line, std::size_t(n), 0);
     std::vector<int> seen(std::size_t(n), 0);
-    const int w = idw_;
-    const int last = w + 5 + 8 * w;  // the last column read (node n8)
-    int unread = 0;                  // element cards with text after node n8
+    const FixedCardLayout& layout = sized_layout("solid element card");
+    const int after = layout.field("node n8").c2 + 1;  // the first column not read
+    int unread = 0;                                     // element cards with text after node n8
     Location unread_where;
     for (int k = 0; k < n; ++k) {
-      if (const DeckLine* l = plain_next_card()) {
-        const std::string_view t = l->text;
-        int id = 0, mat = 0;
-        std::array<int, 8> nodes{};
-        bool ok = fast_int(t, 1, w, id) && fast_int(t, w + 1, w + 5, mat) && (mat = material_slot(mat)) > 0 && id >= 1 && id <= n &&
-                  !seen[std::size_t(id - 1)] && mat >= 1 && mat <= m_.control.nmmat;
-        for (int j = 0; j < 8 && ok; ++j) {
-          const int c1 = w + 6 + j * w;
-          ok = fast_int(t, c1, c1 + w - 1, nodes[std::size_t(j)]) && nodes[std::size_t(j)] >= 1 &&
-               nodes[std::size_t(j)] <= m_.control.numnp;
-          --nodes[std::size_t(j)];
-        }
-        if (ok && is_valid_solid_node_pattern(nodes) &&
-            card_columns(t, last + 1, 80).find_first_not_of(" \r") == std::string_view::npos) {
-          deck_.next_card();
-          seen[std::size_t(id - 1)] = l->number;
-          make_canonical_solid_node_pattern(nodes);
-          m_.hex_line[std::size_t(id - 1)] = l->number;
-          m_.hex_nodes[std::size_t(id - 1)] = nodes;
-          m_.hex_material[std::size_t(id - 1)] = mat - 1;
-          continue;
-        }
-      }
+      if (read_plain_solid(layout, seen)) continue;
       Card c = next("solid element card " + std::to_string(k + 1) + " of " + std::to_string(n),
                     "expected " + std::to_string(n) + " solid element cards (control card 2 NUMELH), found " + std::to_string(k));
-      int id = int(c.i(1, w, "element number"));
-      c.set_name("solid element card for element " + std::to_string(id));
-      Card& e = c;
-      const int label = int(c.i(w + 1, w + 5, "material number"));
-      int mat = material_slot(label);
-      if (!c.blank(last + 1, 80) && unread++ == 0) unread_where = c.where(last + 1, 80, "unread columns");
-      std::array<int, 8> nodes{};
-      bool ok = true;
-      for (int j = 0; j < 8; ++j) {
-        int c1 = w + 6 + j * w;
-        std::string fname = "node n" + std::to_string(j + 1);
-        int nid = int(c.i(c1, c1 + w - 1, fname.c_str()));
-        if (nid < 1 || nid > m_.control.numnp) {
-          e.error(1202, c1, c1 + w - 1, fname.c_str(), "nodes are 1.." + std::to_string(m_.control.numnp));
-          ok = false;
-        }
-        nodes[std::size_t(j)] = nid - 1;
-      }
-      if (mat < 1 || mat > m_.control.nmmat) {
-        e.error(1203, w + 1, w + 5, "material number", "material " + std::to_string(label) + " is not defined");
-        ok = false;
-      }
-      if (ok && !is_valid_solid_node_pattern(nodes)) {
-        e.error(1222, w + 6, w + 5 + 8 * w, "nodes n1-n8");
-        ok = false;
-      }
-      if (id < 1 || id > n) {
-        c.error(1201, 1, w, "element number", "must be 1.." + std::to_string(n) + " (NUMELH)");
-        continue;
-      }
-      if (seen[std::size_t(id - 1)]) {
-        c.error(1200, 1, w, "element number", "element " + std::to_string(id) + " already defined on line " + std::to_string(seen[std::size_t(id - 1)]));
-        continue;
-      }
-      seen[std::size_t(id - 1)] = c.line();
-      if (!ok) nodes.fill(-1);
-      else make_canonical_solid_node_pattern(nodes);
-      m_.hex_line[std::size_t(id - 1)] = c.line();
-      m_.hex_nodes[std::size_t(id - 1)] = nodes;
-      m_.hex_material[std::size_t(id - 1)] = ok ? mat - 1 : -1;
+      FixedValues v(c, layout, [](long long id) { return "solid element card for element " + std::to_string(id); });
+      if (!c.blank(after, 80) && unread++ == 0) unread_where = c.where(after, 80, "unread columns");
+      read_solid_card(v, seen);
     }
     if (unread)
       diag_.add(2020, unread_where, std::to_string(unread) + " solid element card(s) (this is the first) hold text in columns " +
-                                        std::to_string(last + 1) + "-80, after node n8: IMPACT-3D reads nothing there");
+                                        std::to_string(after) + "-80, after node n8: IMPACT-3D reads nothing there");
     report_missing(seen, "solid element");
+  }
+
+  // The next solid element card read without a Card when it is plain and every field passes;
+  // false leaves it for read_solid_card.  (Fields in the table's order: number, material, n1-n8.)
+  bool read_plain_solid(const FixedCardLayout& layout, std::vector<int>& seen) {
+    const DeckLine* l = plain_next_card();
+    if (!l) return false;
+    const std::string_view t = l->text;
+    const FixedField &fi = layout.fields[0], &fm = layout.fields[1];
+    const int n = m_.control.numelh;
+    int id = 0, mat = 0;
+    std::array<int, 8> nodes{};
+    bool ok = fast_int(t, fi.c1, fi.c2, id) && fast_int(t, fm.c1, fm.c2, mat) && (mat = material_slot(mat)) > 0 && id >= 1 && id <= n &&
+              !seen[std::size_t(id - 1)] && mat >= 1 && mat <= m_.control.nmmat;
+    for (int j = 0; j < 8 && ok; ++j) {
+      const FixedField& f = layout.fields[std::size_t(2 + j)];
+      ok = fast_int(t, f.c1, f.c2, nodes[std::size_t(j)]) && nodes[std::size_t(j)] >= 1 && nodes[std::size_t(j)] <= m_.control.numnp;
+      --nodes[std::size_t(j)];
+    }
+    if (!ok || !is_valid_solid_node_pattern(nodes) ||
+        card_columns(t, layout.fields[9].c2 + 1, 80).find_first_not_of(" \r") != std::string_view::npos)
+      return false;
+    deck_.next_card();
+    seen[std::size_t(id - 1)] = l->number;
+    make_canonical_solid_node_pattern(nodes);
+    m_.hex_line[std::size_t(id - 1)] = l->number;
+    m_.hex_nodes[std::size_t(id - 1)] = nodes;
+    m_.hex_material[std::size_t(id - 1)] = mat - 1;
+    return true;
+  }
+
+  // One solid element card read by its table, every problem reported.
+  void read_solid_card(const FixedValues& v, std::vector<int>& seen) {
+    const int n = m_.control.numelh;
+    const int id = int(v.integer("element number"));
+    const long long label = v.integer("material number");
+    const int mat = material_slot(label);
+    std::array<int, 8> nodes{};
+    bool ok = read_element_nodes(v, nodes.data(), 8);
+    if (mat < 1 || mat > m_.control.nmmat) {
+      v.error(1203, "material number", "material " + std::to_string(label) + " is not defined");
+      ok = false;
+    }
+    if (ok && !is_valid_solid_node_pattern(nodes)) {
+      const Location a = v.where("node n1"), b = v.where("node n8");
+      v.card().error(1222, a.col_first, b.col_last, "nodes n1-n8");
+      ok = false;
+    }
+    if (id < 1 || id > n) {
+      v.error(1201, "element number", "must be 1.." + std::to_string(n) + " (NUMELH)");
+      return;
+    }
+    if (seen[std::size_t(id - 1)]) {
+      v.error(1200, "element number", "element " + std::to_string(id) + " already defined on line " + std::to_string(seen[std::size_t(id - 1)]));
+      return;
+    }
+    seen[std::size_t(id - 1)] = v.card().line();
+    if (!ok) nodes.fill(-1);
+    else make_canonical_solid_node_pattern(nodes);
+    m_.hex_line[std::size_t(id - 1)] = v.card().line();
+    m_.hex_nodes[std::size_t(id - 1)] = nodes;
+    m_.hex_material[std::size_t(id - 1)] = ok ? mat - 1 : -1;
+  }
+
+  // Nodes n1..n<count> of an element card (0-based into `nodes`); false (error 1202) when one
+  // is not a node of the deck.  A blank n4 of a shell is n3 (a triangle given with three nodes).
+  bool read_element_nodes(const FixedValues& v, int* nodes, int count) {
+    static const char* const nf[8] = {"node n1", "node n2", "node n3", "node n4", "node n5", "node n6", "node n7", "node n8"};
+    bool ok = true;
+    for (int j = 0; j < count; ++j) {
+      int nid = int(v.integer(nf[j]));
+      if (count == 4 && j == 3 && v.blank(nf[j])) nid = nodes[2] + 1;
+      if (nid < 1 || nid > m_.control.numnp) {
+        v.error(1202, nf[j], "nodes are 1.." + std::to_string(m_.control.numnp));
+        ok = false;
+      }
+      nodes[j] = nid - 1;
+    }
+    return ok;
+  }
+
+  // One shell element: its card (shell element card table) and its thickness card (shell
+  // thickness card table).
+  void read_shell_cards(const FixedValues& v, std::vector<int>& seen) {
+    const int n = numels_;
+    const int id = int(v.integer("element number"));
+    const long long label = v.integer("material number");
+    const int mat = material_slot(label);
+    std::array<int, 4> nodes{};
+    bool ok = read_element_nodes(v, nodes.data(), 4);
+    const int after = v.field("node n4").c2 + 1;
+    if (!v.card().blank(after, 80))
+      diag_.add(2020, v.card().where(after, 80, "unread columns"), "after node n4: IMPACT-3D reads nothing there");
+    ok = shell_material_ok(v, mat, label) && ok;
+    if (ok && (nodes[0] == nodes[1] || nodes[0] == nodes[2] || nodes[1] == nodes[2] || nodes[0] == nodes[3] || nodes[1] == nodes[3])) {
+      v.card().error(1222, v.field("node n1").c1, v.field("node n4").c2, "nodes n1-n4", "a shell is a quadrilateral or a triangle with n4 = n3");
+      ok = false;
+    }
+    std::array<double, 4> t{};
+    ok = read_shell_thickness(id, t) && ok;
+    if (id < 1 || id > n) {
+      v.error(1201, "element number", "must be 1.." + std::to_string(n) + " (NUMELS)");
+      return;
+    }
+    if (seen[std::size_t(id - 1)]) {
+      v.error(1200, "element number", "shell " + std::to_string(id) + " already defined on line " + std::to_string(seen[std::size_t(id - 1)]));
+      return;
+    }
+    seen[std::size_t(id - 1)] = v.card().line();
+    m_.shell_line[std::size_t(id - 1)] = v.card().line();
+    if (!ok) return;
+    if (t[0] == 0 && t[1] == 0 && t[2] == 0 && t[3] == 0) t = m_.materials[std::size_t(mat - 1)].shell_section.t;
+    m_.shell_nodes[std::size_t(id - 1)] = nodes;
+    m_.shell_material[std::size_t(id - 1)] = mat - 1;
+    m_.shell_thickness[std::size_t(id - 1)] = t;
+  }
+
+  // A shell's material label must name a shell material (element type 2); else 1203.
+  bool shell_material_ok(const FixedValues& v, int mat, long long label) {
+    if (mat < 1 || mat > m_.control.nmmat) {
+      v.error(1203, "material number", "material " + std::to_string(label) + " is not defined");
+      return false;
+    }
+    if (!(mat <= int(m_.materials.size()) && m_.materials[std::size_t(mat - 1)].shell)) {
+      v.error(1203, "material number", "material " + std::to_string(label) + " is not a shell material (material card 1 columns 66-70 element type 2)");
+      return false;
+    }
+    return true;
+  }
+
+  // The thickness card of shell `id`: t1-t4 (all 0: the section's); false for a negative one.
+  bool read_shell_thickness(int id, std::array<double, 4>& t) {
+    Card c2 = next("shell element " + std::to_string(id) + " thickness card",
+                   "each shell element has a second card with its thicknesses t1-t4");
+    FixedValues v(c2, fixed_card_layout("shell thickness card", vintage_));
+    static const char* const tf[4] = {"thickness t1", "thickness t2", "thickness t3", "thickness t4"};
+    bool ok = true;
+    for (int j = 0; j < 4; ++j) {
+      t[std::size_t(j)] = v[tf[j]];
+      if (t[std::size_t(j)] < 0) { v.error(1241, tf[j]); ok = false; }
+    }
+    const int after = v.field("thickness t4").c2 + 1;
+    if (!c2.blank(after, 80)) diag_.add(2020, c2.where(after, 80, "unread columns"), "after t4: IMPACT-3D reads nothing there");
+    return ok;
   }
 
   // Shell element cards (NUMELS shells after the solids, two cards each, as the Silo reader of
@@ -849,68 +971,12 @@ class Dyna3dReader {
     m_.shell_thickness.assign(std::size_t(n), std::array<double, 4>{});
     m_.shell_line.assign(std::size_t(n), 0);
     std::vector<int> seen(std::size_t(n), 0);
-    const int w = idw_;
-    const int last = w + 5 + 4 * w;  // the last column read (node n4)
-    const auto is_shell_mat = [&](int mat) {  // 1-based
-      return mat >= 1 && mat <= int(m_.materials.size()) && m_.materials[std::size_t(mat - 1)].shell;
-    };
+    const FixedCardLayout& layout = sized_layout("shell element card");
     for (int k = 0; k < n; ++k) {
       Card c = next("shell element card " + std::to_string(k + 1) + " of " + std::to_string(n),
                     "expected " + std::to_string(n) + " shell elements, two cards each (control card 2 NUMELS), found " + std::to_string(k));
-      const int id = int(c.i(1, w, "element number"));
-      c.set_name("shell element card for element " + std::to_string(id));
-      const int label = int(c.i(w + 1, w + 5, "material number"));
-      const int mat = material_slot(label);
-      std::array<int, 4> nodes{};
-      bool ok = true;
-      for (int j = 0; j < 4; ++j) {
-        const int c1 = w + 6 + j * w;
-        const std::string fname = "node n" + std::to_string(j + 1);
-        int nid = int(c.i(c1, c1 + w - 1, fname.c_str()));
-        if (j == 3 && c.blank(c1, c1 + w - 1)) nid = nodes[2] + 1;  // a triangle given with three nodes
-        if (nid < 1 || nid > m_.control.numnp) {
-          c.error(1202, c1, c1 + w - 1, fname.c_str(), "nodes are 1.." + std::to_string(m_.control.numnp));
-          ok = false;
-        }
-        nodes[std::size_t(j)] = nid - 1;
-      }
-      if (!c.blank(last + 1, 80))
-        diag_.add(2020, c.where(last + 1, 80, "unread columns"), "after node n4: IMPACT-3D reads nothing there");
-      if (mat < 1 || mat > m_.control.nmmat) {
-        c.error(1203, w + 1, w + 5, "material number", "material " + std::to_string(label) + " is not defined");
-        ok = false;
-      } else if (!is_shell_mat(mat)) {
-        c.error(1203, w + 1, w + 5, "material number", "material " + std::to_string(label) + " is not a shell material (material card 1 columns 66-70 element type 2)");
-        ok = false;
-      }
-      if (ok && (nodes[0] == nodes[1] || nodes[0] == nodes[2] || nodes[1] == nodes[2] || nodes[0] == nodes[3] || nodes[1] == nodes[3])) {
-        c.error(1222, w + 6, last, "nodes n1-n4", "a shell is a quadrilateral or a triangle with n4 = n3");
-        ok = false;
-      }
-      Card c2 = next("shell element " + std::to_string(id) + " thickness card",
-                     "each shell element has a second card with its thicknesses t1-t4");
-      std::array<double, 4> t{};
-      for (int j = 0; j < 4; ++j) {
-        const std::string f = "thickness t" + std::to_string(j + 1);
-        t[std::size_t(j)] = c2.e(1 + 10 * j, 10 + 10 * j, f.c_str());
-        if (t[std::size_t(j)] < 0) { c2.error(1241, 1 + 10 * j, 10 + 10 * j, f.c_str()); ok = false; }
-      }
-      if (!c2.blank(41, 80)) diag_.add(2020, c2.where(41, 80, "unread columns"), "after t4: IMPACT-3D reads nothing there");
-      if (id < 1 || id > n) {
-        c.error(1201, 1, w, "element number", "must be 1.." + std::to_string(n) + " (NUMELS)");
-        continue;
-      }
-      if (seen[std::size_t(id - 1)]) {
-        c.error(1200, 1, w, "element number", "shell " + std::to_string(id) + " already defined on line " + std::to_string(seen[std::size_t(id - 1)]));
-        continue;
-      }
-      seen[std::size_t(id - 1)] = c.line();
-      m_.shell_line[std::size_t(id - 1)] = c.line();
-      if (!ok) continue;
-      if (t[0] == 0 && t[1] == 0 && t[2] == 0 && t[3] == 0) t = m_.materials[std::size_t(mat - 1)].shell_section.t;
-      m_.shell_nodes[std::size_t(id - 1)] = nodes;
-      m_.shell_material[std::size_t(id - 1)] = mat - 1;
-      m_.shell_thickness[std::size_t(id - 1)] = t;
+      FixedValues v(c, layout, [](long long id) { return "shell element card for element " + std::to_string(id); });
+      read_shell_cards(v, seen);
     }
     report_missing(seen, "shell element");
     // solids of shell materials
@@ -949,13 +1015,14 @@ class Dyna3dReader {
     }
   }
 
-  int read_id(Card& c, int c1, const char* field, int limit, int id_error) {
-    int v = int(c.i(c1, c1 + idw_ - 1, field));
-    if (v < 1 || v > limit) {
-      c.error(id_error, c1, c1 + idw_ - 1, field, "must be 1.." + std::to_string(limit));
+  // A node (or other id) field of a card read by its table: 1..limit, else id_error and -1.
+  int read_id(const FixedValues& v, const char* field, int limit, int id_error) {
+    const long long id = v.integer(field);
+    if (id < 1 || id > limit) {
+      v.error(id_error, field, "must be 1.." + std::to_string(limit));
       return -1;
     }
-    return v;
+    return int(id);
   }
 
   bool warned_old_th_ = false;
@@ -975,9 +1042,9 @@ class Dyna3dReader {
                       "expected " + std::to_string(nb) + " " + what + " time-history blocks, five a card (control card 3)");
         FixedValues v(c, layout);
         // IMPACT-3D's old layout: one block a card (columns 17-80 blank while more blocks follow)
-        const int per_card = nb - b > 1 && c.blank(17, 80) ? 1 : 5;
+        const int per_card = nb - b > 1 && c.blank(v.field("first 2").c1, 80) ? 1 : 5;
         if (per_card == 1 && !warned_old_th_) {
-          diag_.add(2041, c.where(1, 16), "one time-history block a card is IMPACT-3D's old layout; DYNA3D's has five a card "
+          diag_.add(2041, c.where(v.field("first 1").c1, v.field("last 1").c2), "one time-history block a card is IMPACT-3D's old layout; DYNA3D's has five a card "
                                           "(impact3d i=DECK --write-fixed=NEW writes it)");
           warned_old_th_ = true;
         }
@@ -999,30 +1066,26 @@ class Dyna3dReader {
     }
   }
 
+  // Load curves (control card 5 NUMLC): a header card (load curve header card table), then a
+  // card a point (load curve point card table).
   void read_load_curves() {
     for (int k = 0; k < m_.control.numlc; ++k) {
       Card c = next("load curve " + std::to_string(k + 1) + " header card",
                     "expected " + std::to_string(m_.control.numlc) + " load curves (control card 5 NUMLC)");
+      FixedValues v(c, fixed_card_layout("load curve header card", vintage_));
       LoadCurve lc;
-      lc.number = int(c.i(1, 5, "curve number"));
-      int npts = int(c.i(6, 10, "NPTS"));
+      lc.number = int(v.integer("curve number"));
+      int npts = int(v.integer("NPTS"));
       if (lc.number < 1 || lc.number > m_.control.numlc)
-        c.error(1201, 1, 5, "curve number", "must be 1.." + std::to_string(m_.control.numlc));
+        v.error(1201, "curve number", "must be 1.." + std::to_string(m_.control.numlc));
       for (const auto& o : m_.load_curves)
-        if (o.number == lc.number) c.error(1200, 1, 5, "curve number");
+        if (o.number == lc.number) v.error(1200, "curve number");
       long avail = remaining_cards();
       if (npts < 2 || npts > avail) {
-        c.error(1003, 6, 10, "NPTS", npts < 2 ? "at least 2 points" : "more points than cards left in the deck");
+        v.error(1003, "NPTS", npts < 2 ? "at least 2 points" : "more points than cards left in the deck");
         npts = std::clamp(npts, 0, int(avail));
       }
-      for (int p = 0; p < npts; ++p) {
-        Card pc = next("load curve " + std::to_string(lc.number) + " point " + std::to_string(p + 1));
-        double t = pc.e(1, 10, "time");
-        double f = pc.e(11, 20, "value");
-        if (!lc.t.empty() && !(t > lc.t.back())) pc.error(1217, 1, 10, "time");
-        lc.t.push_back(t);
-        lc.f.push_back(f);
-      }
+      read_curve_points(lc, npts);
       bool used = false;  // by a material (a flow stress curve)
       for (const MaterialData& md : m_.materials) used = used || material_uses_curve(md, lc.number);
       m_.load_curves.push_back(std::move(lc));
@@ -1031,15 +1094,27 @@ class Dyna3dReader {
     }
   }
 
-  // 0-based index of load curve `number` (1..NUMLC) read in columns c1-c2, or -1 (error)
-  int read_curve_ref(Card& c, int c1, int c2) {
-    const int n = int(c.i(c1, c2, "load curve"));
+  void read_curve_points(LoadCurve& lc, int npts) {
+    const FixedCardLayout& layout = fixed_card_layout("load curve point card", vintage_);
+    for (int p = 0; p < npts; ++p) {
+      Card pc = next("load curve " + std::to_string(lc.number) + " point " + std::to_string(p + 1));
+      FixedValues v(pc, layout);
+      const double t = v["time"], f = v["value"];
+      if (!lc.t.empty() && !(t > lc.t.back())) v.error(1217, "time");
+      lc.t.push_back(t);
+      lc.f.push_back(f);
+    }
+  }
+
+  // 0-based index of the load curve named in field `field` (1..NUMLC), or -1 (error 1201)
+  int read_curve_ref(const FixedValues& v, const char* field = "load curve") {
+    const long long n = v.integer(field);
     for (std::size_t k = 0; k < m_.load_curves.size(); ++k)
       if (m_.load_curves[k].number == n) {
         curve_used_[k] = 1;
         return int(k);
       }
-    c.error(1201, c1, c2, "load curve", "must be one of the deck's curves 1.." + std::to_string(m_.control.numlc));
+    v.error(1201, field, "must be one of the deck's curves 1.." + std::to_string(m_.control.numlc));
     return -1;
   }
 
@@ -1054,11 +1129,11 @@ class Dyna3dReader {
     }
   }
 
-  // direction 1-3 (x y z) read in columns c1-c2 as a unit vector; false (error) otherwise
-  bool read_direction(Card& c, int c1, int c2, std::array<double, 3>& dir) {
-    const long long d = c.i(c1, c2, "direction");
+  // direction 1-3 (x y z) of field "direction" as a unit vector; false (error) otherwise
+  bool read_direction(const FixedValues& v, std::array<double, 3>& dir) {
+    const long long d = v.integer("direction");
     if (d < 1 || d > 3) {
-      c.error(d >= 4 && d <= 6 ? 1102 : 1006, c1, c2, "direction", d >= 4 && d <= 6 ? "moments and rotations (solid nodes have none)" : "1 x, 2 y, 3 z");
+      v.error(d >= 4 && d <= 6 ? 1102 : 1006, "direction", d >= 4 && d <= 6 ? "moments and rotations (solid nodes have none)" : "1 x, 2 y, 3 z");
       return false;
     }
     dir = {0, 0, 0};
@@ -1066,20 +1141,21 @@ class Dyna3dReader {
     return true;
   }
 
-  // Concentrated nodal loads (card 5 field 2): node, direction 1-3, load curve, scale;
-  // small format I5 I5 I5 E10, large I8 I5 I5 E10.
+  // Concentrated nodal loads (card 5 field 2), nodal load card table: node, direction 1-3,
+  // load curve, scale.
   void read_nodal_loads() {
     const int n = m_.control.num_nodal_load_cards;
-    const int w = idw_;
+    const FixedCardLayout& layout = sized_layout("nodal load card");
     for (int k = 0; k < n; ++k) {
       Card c = next("nodal load card " + std::to_string(k + 1),
                     "expected " + std::to_string(n) + " nodal load cards (control card 5)");
+      FixedValues v(c, layout);
       NodalLoad l;
-      const int node = read_id(c, 1, "node", m_.control.numnp, 1202);
+      const int node = read_id(v, "node", m_.control.numnp, 1202);
       bool ok = node >= 1;
-      ok = read_direction(c, w + 1, w + 5, l.dir) && ok;
-      l.curve = read_curve_ref(c, w + 6, w + 10);
-      l.scale = c.e(w + 11, w + 20, "scale factor", 1.0);
+      ok = read_direction(v, l.dir) && ok;
+      l.curve = read_curve_ref(v);
+      l.scale = v["scale factor"];
       l.node = node - 1;
       l.line = c.line();
       if (ok && l.curve >= 0) m_.nodal_loads.push_back(l);
@@ -1092,47 +1168,54 @@ class Dyna3dReader {
   // 2041) when the second card is unmistakably that.
   void read_pressure_loads() {
     const int n = m_.control.num_pressure_cards;
-    const FixedCardLayout& layout = fixed_card_layout("pressure card", vintage_);
+    const FixedCardLayout& layout = sized_layout("pressure card");
+    static const char* const mult[4] = {"multiplier 1", "multiplier 2", "multiplier 3", "multiplier 4"};
     for (int k = 0; k < n; ++k) {
       Card c = next("pressure card " + std::to_string(k + 1),
                     "expected " + std::to_string(n) + " pressure cards (control card 5)");
+      FixedValues v(c, layout);
       PressureLoad p;
       p.line = c.line();
-      p.curve = read_curve_ref(c, 1, 5);
-      bool ok = p.curve >= 0;
-      if (!m_.large_format) {  // small format: I5 nodes (6-25), multipliers 26-65, arrival 71-80
-        for (int q = 0; q < 4; ++q) {
-          const std::string f = "node n" + std::to_string(q + 1);
-          const int id = read_id(c, 6 + 5 * q, f.c_str(), m_.control.numnp, 1202);
-          if (id < 1) ok = false;
-          p.nodes[std::size_t(q)] = id - 1;
-        }
-        for (int q = 0; q < 4; ++q) p.factor[std::size_t(q)] = c.e(26 + 10 * q, 35 + 10 * q, ("multiplier " + std::to_string(q + 1)).c_str(), 1.0);
-        p.birth = c.e(71, 80, "arrival time");
-        if (ok) m_.pressure_loads.push_back(p);
-        continue;
-      }
-      FixedValues v(c, layout);
-      for (int q = 0; q < 4; ++q) {
-        const std::string f = "node n" + std::to_string(q + 1);
-        const long long id = v.integer(f);
-        if (id < 1 || id > m_.control.numnp) { v.error(1202, f, "must be 1.." + std::to_string(m_.control.numnp)); ok = false; }
-        p.nodes[std::size_t(q)] = int(id) - 1;
-      }
-      if (c.blank(38, 80) && old_pressure_multiplier_card_follows()) {
-        Card c2 = next("pressure card " + std::to_string(k + 1) + " multipliers (old IMPACT-3D layout)");
-        if (!warned_old_pressure_) {
-          diag_.add(2041, c2.where(1, 80), "pressure multipliers on a second card are IMPACT-3D's old layout; DYNA3D's is one card with "
-                                           "them in columns 38-77 (impact3d i=DECK --write-fixed=NEW writes it)");
-          warned_old_pressure_ = true;
-        }
-        for (int q = 0; q < 4; ++q) p.factor[std::size_t(q)] = c2.e(1 + 10 * q, 10 + 10 * q, ("multiplier " + std::to_string(q + 1)).c_str(), 1.0);
-        p.birth = c2.e(71, 80, "arrival time");
+      p.curve = read_curve_ref(v);
+      bool ok = read_pressure_nodes(v, p) && p.curve >= 0;
+      const int after = v.field("node n4").c2 + 1;
+      if (m_.large_format && c.blank(after, 80) && old_pressure_multiplier_card_follows()) {
+        read_old_pressure_multipliers(p, k);
       } else {
-        for (int q = 0; q < 4; ++q) p.factor[std::size_t(q)] = v["multiplier " + std::to_string(q + 1)];
+        for (int q = 0; q < 4; ++q) p.factor[std::size_t(q)] = v[mult[q]];
+        if (!m_.large_format) p.birth = v["arrival time"];
       }
       if (ok) m_.pressure_loads.push_back(p);
     }
+  }
+
+  // The four nodes of a pressure card; false when one is not a node of the deck (1202).
+  bool read_pressure_nodes(const FixedValues& v, PressureLoad& p) {
+    static const char* const nf[4] = {"node n1", "node n2", "node n3", "node n4"};
+    bool ok = true;
+    for (int q = 0; q < 4; ++q) {
+      const int id = read_id(v, nf[q], m_.control.numnp, 1202);
+      if (id < 1) ok = false;
+      p.nodes[std::size_t(q)] = id - 1;
+    }
+    return ok;
+  }
+
+  // IMPACT-3D's old large-format pressure layout: the multipliers on a second card, an
+  // arrival time in 71-80 (old pressure multiplier card table; warning 2041 once).
+  void read_old_pressure_multipliers(PressureLoad& p, int k) {
+    Card c2 = next("pressure card " + std::to_string(k + 1) + " multipliers (old IMPACT-3D layout)");
+    if (!warned_old_pressure_) {
+      const FixedCardLayout& now = fixed_card_layout("pressure card", vintage_);
+      diag_.add(2041, c2.where(1, 80), "pressure multipliers on a second card are IMPACT-3D's old layout; DYNA3D's is one card with them in columns " +
+                                           std::to_string(now.field("multiplier 1").c1) + "-" + std::to_string(now.field("multiplier 4").c2) +
+                                           " (impact3d i=DECK --write-fixed=NEW writes it)");
+      warned_old_pressure_ = true;
+    }
+    FixedValues v(c2, fixed_card_layout("old IMPACT-3D pressure multiplier card", vintage_));
+    static const char* const mult[4] = {"multiplier 1", "multiplier 2", "multiplier 3", "multiplier 4"};
+    for (int q = 0; q < 4; ++q) p.factor[std::size_t(q)] = v[mult[q]];
+    p.birth = v["arrival time"];
   }
   bool warned_old_pressure_ = false;
 
@@ -1142,9 +1225,12 @@ class Dyna3dReader {
     const DeckLine* l = deck_.peek_card();
     if (!l) return false;
     const std::string_view t = l->text;
-    if (card_columns(t, 41, 70).find_first_not_of(' ') != std::string_view::npos) return false;
+    const FixedCardLayout& old = fixed_card_layout("old IMPACT-3D pressure multiplier card", vintage_);
+    const FixedField &last = old.field("multiplier 4"), &arrival = old.field("arrival time");
+    if (card_columns(t, last.c2 + 1, arrival.c1 - 1).find_first_not_of(' ') != std::string_view::npos) return false;
     for (int q = 0; q < 4; ++q) {
-      const std::string_view f = card_columns(t, 1 + 10 * q, 10 + 10 * q);
+      const FixedField& m = old.fields[std::size_t(q)];
+      const std::string_view f = card_columns(t, m.c1, m.c2);
       double x = 0;
       if (f.find_first_of(".eEdD") == std::string_view::npos || parse_fortran_real(f, x) != FieldStatus::ok) return false;
     }
@@ -1162,9 +1248,7 @@ class Dyna3dReader {
       Card c = next("velocity/acceleration boundary card " + std::to_string(k + 1),
                     "expected " + std::to_string(n) + " velocity/acceleration boundary cards (control card 5)");
       if (old_motion_layout(c)) {
-        c.error(1006, 9, 53, "node/direction/curve/scale/type/birth/death",
-                "this is IMPACT-3D's old layout (direction 9-13, curve 14-18, type 29-33, birth 34-43, death 44-53); DYNA3D's is "
-                "curve 9-13, DOF 14-18, scale 19-28, vector 29-58, type 59-63: swap columns 9-13 and 14-18 and move the type to 59-63");
+        refuse_old_motion_card(c, layout);
         continue;
       }
       FixedValues v(c, layout);
@@ -1172,7 +1256,7 @@ class Dyna3dReader {
       const long long node = v.integer("node");
       bool ok = true;
       if (node < 1 || node > m_.control.numnp) { v.error(1202, "node", "must be 1.." + std::to_string(m_.control.numnp)); ok = false; }
-      pm.curve = read_curve_ref(c, v.field("load curve").c1, v.field("load curve").c2);
+      pm.curve = read_curve_ref(v);
       const long long dof = v.integer("DOF");
       if (dof >= 1 && dof <= 3) {
         pm.dir = {0, 0, 0};
@@ -1226,10 +1310,12 @@ class Dyna3dReader {
   }
   std::vector<char> rotation_nodes_;
 
-  // IMPACT-3D's old motion card: an I5 type in 29-33 (no decimal point, no exponent) followed
-  // by reals in 34-53, where DYNA3D's layout has one real in 29-38.
+  // IMPACT-3D's old motion card (its table): an I5 type (no decimal point, no exponent)
+  // followed by a real birth time, where DYNA3D's layout has one real (vx).
   static bool old_motion_layout(const Card& c) {
-    const std::string_view type = c.columns(29, 33), birth = c.columns(34, 43);
+    const FixedCardLayout& old = fixed_card_layout("old IMPACT-3D velocity/acceleration boundary card", FixedVintage::dyna3d_later);
+    const FixedField &ft = old.field("type"), &fb = old.field("birth");
+    const std::string_view type = c.columns(ft.c1, ft.c2), birth = c.columns(fb.c1, fb.c2);
     if (type.find_first_not_of(' ') == std::string_view::npos) return false;
     if (type.find_first_of(".eEdD") != std::string_view::npos) return false;
     long long t = 0;
@@ -1238,70 +1324,98 @@ class Dyna3dReader {
            parse_fortran_real(birth, b) == FieldStatus::ok;
   }
 
+  // Error 1006 over the old card's fields, naming the columns of both layouts.
+  static void refuse_old_motion_card(Card& c, const FixedCardLayout& now) {
+    const FixedCardLayout& old = fixed_card_layout("old IMPACT-3D velocity/acceleration boundary card", FixedVintage::dyna3d_later);
+    auto cols = [](const FixedField& f) { return std::to_string(f.c1) + "-" + std::to_string(f.c2); };
+    auto span = [](const FixedField& a, const FixedField& b) { return std::to_string(a.c1) + "-" + std::to_string(b.c2); };
+    const FixedField &od = old.field("direction"), &oc = old.field("curve");
+    c.error(1006, od.c1, old.field("death").c2, "node/direction/curve/scale/type/birth/death",
+            "this is IMPACT-3D's old layout (direction " + cols(od) + ", curve " + cols(oc) + ", type " + cols(old.field("type")) +
+                ", birth " + cols(old.field("birth")) + ", death " + cols(old.field("death")) + "); DYNA3D's is curve " +
+                cols(now.field("load curve")) + ", DOF " + cols(now.field("DOF")) + ", scale " + cols(now.field("scale factor")) +
+                ", vector " + span(now.field("vx"), now.field("vz")) + ", type " + cols(now.field("type")) + ": swap columns " +
+                cols(od) + " and " + cols(oc) + " and move the type to " + cols(now.field("type")));
+  }
+
   // Base accelerations (card 5 fields 9-11), one card per direction flagged, in x y z order
-  // (an IMPACT-3D layout): load curve (I5), scale (E10).  Every node gets the acceleration
-  // -scale * curve(t) along the axis (LS-DYNA's *LOAD_BODY sign).
+  // (an IMPACT-3D layout, base acceleration card table): load curve, scale.  Every node gets
+  // the acceleration -scale * curve(t) along the axis (LS-DYNA's *LOAD_BODY sign).
   void read_base_accelerations() {
     for (int a = 0; a < 3; ++a) {
       if (!m_.control.base_acceleration[std::size_t(a)]) continue;
       const char* axis = a == 0 ? "x" : a == 1 ? "y" : "z";
       Card c = next(std::string("base acceleration card (") + axis + ")");
+      FixedValues v(c, fixed_card_layout("base acceleration card", vintage_));
       BodyLoad b;
       b.dir[std::size_t(a)] = 1;
-      b.curve = read_curve_ref(c, 1, 5);
-      b.scale = c.e(6, 15, "scale factor", 1.0);
+      b.curve = read_curve_ref(v);
+      b.scale = v["scale factor"];
       b.line = c.line();
       if (b.curve >= 0) m_.body_loads.push_back(b);
     }
   }
 
+  // `count` nodes on node list cards (node list card table: ten I8 a card, sixteen I5 in the
+  // small format).
   void read_node_list(std::vector<int>& out, int count, const std::string& what) {
-    int per = m_.large_format ? 10 : 16;
-    int cards = (count + per - 1) / per;
+    const FixedCardLayout& layout = sized_layout("node list card");
+    const int per = int(layout.fields.size());
+    const int cards = (count + per - 1) / per;
     int k = 0;
     for (int cc = 0; cc < cards; ++cc) {
       Card c = next(what + " node card " + std::to_string(cc + 1));
+      FixedValues v(c, layout);
       for (int f = 0; f < per && k < count; ++f, ++k) {
-        int c1 = 1 + f * idw_;
-        int id = read_id(c, c1, "node", m_.control.numnp, 1202);
+        const int id = read_id(v, layout.fields[std::size_t(f)].name, m_.control.numnp, 1202);
         if (id > 0) out.push_back(id - 1);
       }
     }
   }
 
+  // Stonewalls (control card 5 field 5): the stonewall card, the moving stonewall card when
+  // flagged, then NSN slave nodes on node list cards.
   void read_stonewalls() {
     for (int w = 0; w < m_.control.num_walls; ++w) {
-      std::string name = "stonewall " + std::to_string(w + 1);
+      const std::string name = "stonewall " + std::to_string(w + 1);
       Card c = next(name + " card 1", "expected " + std::to_string(m_.control.num_walls) + " stonewalls (control card 5)");
+      FixedValues v(c, fixed_card_layout("stonewall card", vintage_));
       StoneWall sw;
       sw.line = c.line();
-      int nsn = int(c.i(1, 5, "NSN"));
-      const long long moving = c.i(6, 10, "moving flag");
-      if (moving != 0 && moving != 1) c.error(1006, 6, 10, "moving flag", "0 fixed, 1 moving (a card with MASS and V0 follows)");
-      const char* names[] = {"XT", "YT", "ZT", "XH", "YH", "ZH"};
-      for (int f = 0; f < 3; ++f) sw.tail[std::size_t(f)] = c.e(11 + 10 * f, 20 + 10 * f, names[f]);
-      for (int f = 0; f < 3; ++f) sw.head[std::size_t(f)] = c.e(41 + 10 * f, 50 + 10 * f, names[3 + f]);
-      sw.friction = c.e(71, 80, "FRIC");
-      double dx = sw.head[0] - sw.tail[0], dy = sw.head[1] - sw.tail[1], dz = sw.head[2] - sw.tail[2];
-      double len = std::sqrt(dx * dx + dy * dy + dz * dz);
-      double scale = 0;
-      for (int f = 0; f < 3; ++f) scale = std::max({scale, std::fabs(sw.head[std::size_t(f)]), std::fabs(sw.tail[std::size_t(f)])});
-      if (!(len > 1e-12 * scale) || len == 0) c.error(1213, 11, 70, "XT-ZH", {}, false);
-      if (!(sw.friction >= 0 && sw.friction <= 1)) c.error(1219, 71, 80, "FRIC");
-      if (nsn < 0 || nsn > m_.control.numnp) {
-        c.error(1003, 1, 5, "NSN", "0 (all nodes) to NUMNP");
-        nsn = 0;
-      }
-      if (moving != 0) {  // IMPACT-3D choice: card 2, MASS (cols 1-10) and V0 (11-20)
+      const int nsn = read_stonewall_card(v, sw);
+      if (v.integer("moving flag") != 0) {  // IMPACT-3D choice: MASS and V0
         Card c2 = next(name + " card 2 (moving wall)", "expected the moving wall's MASS and V0 card");
-        sw.mass = c2.e(1, 10, "MASS");
-        sw.v0 = c2.e(11, 20, "V0");
-        if (!(sw.mass > 0)) c2.error(1003, 1, 10, "MASS", "a moving wall needs a positive mass");
+        FixedValues v2(c2, fixed_card_layout("moving stonewall card", vintage_));
+        sw.mass = v2["MASS"];
+        sw.v0 = v2["V0"];
+        if (!(sw.mass > 0)) v2.error(1003, "MASS", "a moving wall needs a positive mass");
       }
       read_node_list(sw.nodes, nsn, name);
       remove_repeated_nodes(sw.nodes);
       m_.walls.push_back(std::move(sw));
     }
+  }
+
+  // The stonewall card: the plane (tail, head of its normal), friction; returns NSN.
+  int read_stonewall_card(const FixedValues& v, StoneWall& sw) {
+    int nsn = int(v.integer("NSN"));
+    const long long moving = v.integer("moving flag");
+    if (moving != 0 && moving != 1) v.error(1006, "moving flag", "0 fixed, 1 moving (a card with MASS and V0 follows)");
+    static const char* const names[] = {"XT", "YT", "ZT", "XH", "YH", "ZH"};
+    for (int f = 0; f < 3; ++f) sw.tail[std::size_t(f)] = v[names[f]];
+    for (int f = 0; f < 3; ++f) sw.head[std::size_t(f)] = v[names[3 + f]];
+    sw.friction = v["FRIC"];
+    double dx = sw.head[0] - sw.tail[0], dy = sw.head[1] - sw.tail[1], dz = sw.head[2] - sw.tail[2];
+    double len = std::sqrt(dx * dx + dy * dy + dz * dz);
+    double scale = 0;
+    for (int f = 0; f < 3; ++f) scale = std::max({scale, std::fabs(sw.head[std::size_t(f)]), std::fabs(sw.tail[std::size_t(f)])});
+    if (!(len > 1e-12 * scale) || len == 0) v.card().error(1213, v.field("XT").c1, v.field("ZH").c2, "XT-ZH", {}, false);
+    if (!(sw.friction >= 0 && sw.friction <= 1)) v.error(1219, "FRIC");
+    if (nsn < 0 || nsn > m_.control.numnp) {
+      v.error(1003, "NSN", "0 (all nodes) to NUMNP");
+      nsn = 0;
+    }
+    return nsn;
   }
 
   // Initial conditions (control card 5 field 7).  1: nodal velocity cards as DYNA3D reads
@@ -1364,36 +1478,39 @@ class Dyna3dReader {
     all.push_back(iv);
   }
 
+  // IMPACT-3D's initial velocity card (initial velocity range card table): all nodes (node 0)
+  // or the nodes first..last by increment.
   void read_range_velocity_card(int k) {
     Card c = next("initial-velocity card " + std::to_string(k),
                   "expected " + std::to_string(m_.control.num_init_velocity_cards) + " initial-velocity cards (control card 5)");
+    FixedValues v(c, fixed_card_layout("initial velocity range card", vintage_));
     InitialVelocity iv;
-    iv.first = int(c.i(1, 8, "first node"));
-    iv.v[0] = c.e(9, 18, "vx");
-    iv.v[1] = c.e(19, 28, "vy");
-    iv.v[2] = c.e(29, 38, "vz");
-    iv.last = c.blank(39, 46) ? iv.first : int(c.i(39, 46, "last node"));
-    iv.increment = int(c.i(47, 51, "increment", 1));
+    iv.first = int(v.integer("first node"));
+    iv.v = {v["vx"], v["vy"], v["vz"]};
+    iv.last = v.blank("last node") ? iv.first : int(v.integer("last node"));
+    iv.increment = int(v.integer("increment"));
     if (iv.increment == 0) iv.increment = 1;
     bool ok = true;
     const int nn = m_.control.numnp;
-    if (iv.first < 0 || iv.first > nn) { c.error(1202, 1, 8, "first node", "0 (all nodes) or 1.." + std::to_string(nn)); ok = false; }
-    if (iv.first != 0 && (iv.last < 1 || iv.last > nn)) { c.error(1202, 39, 46, "last node", "1.." + std::to_string(nn)); ok = false; }
-    if (iv.increment < 0) { c.error(1003, 47, 51, "increment", "must be positive"); ok = false; }
-    if (ok && iv.first != 0 && iv.last < iv.first) { c.error(1223, 39, 46, "last node"); ok = false; }
+    if (iv.first < 0 || iv.first > nn) { v.error(1202, "first node", "0 (all nodes) or 1.." + std::to_string(nn)); ok = false; }
+    if (iv.first != 0 && (iv.last < 1 || iv.last > nn)) { v.error(1202, "last node", "1.." + std::to_string(nn)); ok = false; }
+    if (iv.increment < 0) { v.error(1003, "increment", "must be positive"); ok = false; }
+    if (ok && iv.first != 0 && iv.last < iv.first) { v.error(1223, "last node"); ok = false; }
     if (ok) m_.init_velocities.push_back(iv);
   }
 
+  // Segment cards (segment card table): segment number (read, not used), nodes n1-n4.
   void read_segments(std::vector<std::array<int, 4>>& out, std::vector<int>& lines, int count,
                      const std::string& what) {
+    const FixedCardLayout& layout = sized_layout("segment card");
+    static const char* const nf[4] = {"node n1", "node n2", "node n3", "node n4"};
     for (int s = 0; s < count; ++s) {
       Card c = next(what + " segment card " + std::to_string(s + 1) + " of " + std::to_string(count));
-      c.i(1, idw_, "segment number");
+      FixedValues v(c, layout);
       std::array<int, 4> seg{};
       bool ok = true;
       for (int j = 0; j < 4; ++j) {
-        std::string f = "node n" + std::to_string(j + 1);
-        int id = read_id(c, 1 + idw_ * (j + 1), f.c_str(), m_.control.numnp, 1202);
+        const int id = read_id(v, nf[j], m_.control.numnp, 1202);
         if (id < 1) ok = false;
         seg[std::size_t(j)] = id - 1;
       }
@@ -1409,53 +1526,16 @@ class Dyna3dReader {
   // follow a control card (its "name NAME" names the interface).
   void read_sliding_interfaces() {
     const int n = m_.control.num_interfaces;
-    const FixedCardLayout& layout = fixed_card_layout("sliding interface control card", vintage_);
     std::vector<std::array<int, 2>> counts;
     for (int k = 0; k < n; ++k) {
       Card c = next("sliding interface " + std::to_string(k + 1) + " control card",
                     "expected " + std::to_string(n) + " sliding interface control cards (control card 5)");
-      const bool old_layout = c.columns(22, 22) == ".";  // a friction written from column 21
-      if (old_layout && !warned_old_interface_) {
-        diag_.add(2041, c.where(17, 30), "type in 17-20 and friction from column 21 are IMPACT-3D's old layout; DYNA3D's has the type "
-                                         "in 17-21 and the friction from column 22 (impact3d i=DECK --write-fixed=NEW writes it)");
-        warned_old_interface_ = true;
-      }
-      FixedValues v(c, old_layout ? fixed_card_layout("old IMPACT-3D sliding interface control card", vintage_) : layout);
+      FixedValues v(c, interface_layout(c));
       note_ignored(v);
       SlidingInterface si;
       si.line = c.line();
-      int nss = int(v.integer("NSS"));
-      int nms = int(v.integer("NMS"));
-      si.type = int(v.integer("type"));
-      if (si.type != 3 && si.type != 4) {
-        static const char* const names[] = {"", "1 sliding only", "2 tied", "3 sliding with impact and friction", "4 single surface",
-                                            "5 nodes to surface", "6 nodes tied to surface", "7 shell edge tied to surface",
-                                            "8 spot weld", "9 tiebreak"};
-        if (si.type >= 1 && si.type <= 9)
-          v.error(1104, "type", std::string("type ") + names[si.type] + ": IMPACT-3D has types 3 (sliding with impact, separation and friction) and 4 (single surface)");
-        else
-          v.error(1006, "type", "DYNA3D sliding interface types are 1-9; IMPACT-3D has types 3 and 4");
-      }
-      si.fs = v["static friction"];
-      si.fd = v["dynamic friction"];
-      si.decay = v["decay coefficient"];
-      si.penalty_scale = v["penalty scale factor"];
-      si.stiffness_method = int(v.integer("stiffness method"));
-      const long long one_pass = v.integer("one-pass flag");
-      si.symmetric = one_pass == 0 && si.type != 4;  // (single surface: one pass over its own nodes)
-      if (si.fs < 0) v.error(1219, "static friction");
-      if (si.fd < 0) v.error(1219, "dynamic friction");
-      if (si.decay < 0) v.error(1003, "decay coefficient", "must not be negative");
-      if (si.penalty_scale < 0) v.error(1003, "penalty scale factor", "must not be negative");
-      if (si.stiffness_method != 0 && si.stiffness_method != 1) v.error(1006, "stiffness method", "0 DYNA3D or 1 IMPACT-3D maximum stable");
-      if (one_pass != 0 && one_pass != 1) v.error(1006, "one-pass flag", "0 or 1");
-      const long avail = remaining_cards();
-      if (nss < 1 || nss > avail) { v.error(1003, "NSS", "1 to the cards left in the deck"); nss = 0; }
-      if (si.type == 4) {  // single surface: the NSS segments against themselves, no master side
-        if (nms != 0) { v.error(1003, "NMS", "must be 0 for a single-surface interface (type 4)"); nms = 0; }
-      } else if (nms < 1 || nms > avail) { v.error(1003, "NMS", "1 to the cards left in the deck"); nms = 0; }
+      counts.push_back(read_interface_card(v, si));
       read_interface_options(si);
-      counts.push_back({nss, nms});
       m_.interfaces.push_back(std::move(si));
     }
     for (int k = 0; k < n; ++k) {
@@ -1464,6 +1544,59 @@ class Dyna3dReader {
       read_segments(si.slave, si.slave_line, counts[std::size_t(k)][0], name + " slave");
       read_segments(si.master, si.master_line, counts[std::size_t(k)][1], name + " master");
     }
+  }
+
+  // The table of an interface control card: IMPACT-3D's old layout when the decimal point of a
+  // friction written from its old first column stands in the column after it (warning 2041
+  // once), else DYNA3D's.
+  const FixedCardLayout& interface_layout(const Card& c) {
+    const FixedCardLayout& now = fixed_card_layout("sliding interface control card", vintage_);
+    const FixedCardLayout& old = fixed_card_layout("old IMPACT-3D sliding interface control card", vintage_);
+    const FixedField &ot = old.field("type"), &of = old.field("static friction"), &nt = now.field("type"), &nf = now.field("static friction");
+    if (c.columns(of.c1 + 1, of.c1 + 1) != ".") return now;
+    if (!warned_old_interface_) {
+      auto cols = [](const FixedField& f) { return std::to_string(f.c1) + "-" + std::to_string(f.c2); };
+      diag_.add(2041, c.where(ot.c1, of.c2), "type in " + cols(ot) + " and friction from column " + std::to_string(of.c1) +
+                                                 " are IMPACT-3D's old layout; DYNA3D's has the type in " + cols(nt) + " and the friction from column " +
+                                                 std::to_string(nf.c1) + " (impact3d i=DECK --write-fixed=NEW writes it)");
+      warned_old_interface_ = true;
+    }
+    return old;
+  }
+
+  // The fields of an interface control card; returns {NSS, NMS} bounded by the deck.
+  std::array<int, 2> read_interface_card(const FixedValues& v, SlidingInterface& si) {
+    int nss = int(v.integer("NSS"));
+    int nms = int(v.integer("NMS"));
+    si.type = int(v.integer("type"));
+    if (si.type != 3 && si.type != 4) {
+      static const char* const names[] = {"", "1 sliding only", "2 tied", "3 sliding with impact and friction", "4 single surface",
+                                          "5 nodes to surface", "6 nodes tied to surface", "7 shell edge tied to surface",
+                                          "8 spot weld", "9 tiebreak"};
+      if (si.type >= 1 && si.type <= 9)
+        v.error(1104, "type", std::string("type ") + names[si.type] + ": IMPACT-3D has types 3 (sliding with impact, separation and friction) and 4 (single surface)");
+      else
+        v.error(1006, "type", "DYNA3D sliding interface types are 1-9; IMPACT-3D has types 3 and 4");
+    }
+    si.fs = v["static friction"];
+    si.fd = v["dynamic friction"];
+    si.decay = v["decay coefficient"];
+    si.penalty_scale = v["penalty scale factor"];
+    si.stiffness_method = int(v.integer("stiffness method"));
+    const long long one_pass = v.integer("one-pass flag");
+    si.symmetric = one_pass == 0 && si.type != 4;  // (single surface: one pass over its own nodes)
+    if (si.fs < 0) v.error(1219, "static friction");
+    if (si.fd < 0) v.error(1219, "dynamic friction");
+    if (si.decay < 0) v.error(1003, "decay coefficient", "must not be negative");
+    if (si.penalty_scale < 0) v.error(1003, "penalty scale factor", "must not be negative");
+    if (si.stiffness_method != 0 && si.stiffness_method != 1) v.error(1006, "stiffness method", "0 DYNA3D or 1 IMPACT-3D maximum stable");
+    if (one_pass != 0 && one_pass != 1) v.error(1006, "one-pass flag", "0 or 1");
+    const long avail = remaining_cards();
+    if (nss < 1 || nss > avail) { v.error(1003, "NSS", "1 to the cards left in the deck"); nss = 0; }
+    if (si.type == 4) {  // single surface: the NSS segments against themselves, no master side
+      if (nms != 0) { v.error(1003, "NMS", "must be 0 for a single-surface interface (type 4)"); nms = 0; }
+    } else if (nms < 1 || nms > avail) { v.error(1003, "NMS", "1 to the cards left in the deck"); nms = 0; }
+    return {nss, nms};
   }
 
   // "lagop N name NAME endfree" after an interface control card: the name is kept (echo,
@@ -1651,31 +1784,37 @@ class Dyna3dReader {
   // a rule sum to 4, the area of [-1, 1]^2).  Each beam section with rule -n gets rule n.
   void read_beam_integration_rules() {
     std::vector<std::vector<std::array<double, 3>>> rules;
-    for (int r = 0; r < beam_rules_; ++r) {
-      const std::string name = "beam integration rule " + std::to_string(r + 1);
-      Card h = next(name + " header card", "control card 8 announces " + std::to_string(beam_rules_) + " user beam integration rules");
-      long long npts = h.i(1, 5, "number of points");
-      if (npts < 1 || npts > remaining_cards() || (beam_rule_points_ > 0 && npts > beam_rule_points_)) {
-        h.error(1003, 1, 5, "number of points", "1 to control card 8's largest rule (" + std::to_string(beam_rule_points_) + ")");
-        npts = std::clamp<long long>(npts, 0, remaining_cards());
-      }
-      h.e(6, 15, "rule area factor");
-      std::vector<std::array<double, 3>> rule;
-      double wsum = 0;
-      for (long long p = 0; p < npts; ++p) {
-        Card c = next(name + " point " + std::to_string(p + 1));
-        const double sp = c.e(1, 10, "s"), tp = c.e(11, 20, "t"), w = c.e(21, 30, "weight");
-        if (std::fabs(sp) > 1 || std::fabs(tp) > 1) c.error(1003, 1, 20, "s, t", "points lie in [-1, 1] x [-1, 1]");
-        if (w < 0) c.error(1003, 21, 30, "weight", "must not be negative");
-        wsum += w;
-        rule.push_back({sp, tp, w});
-      }
-      if (npts > 0 && std::fabs(wsum - 4) > 1e-3) h.error(1003, 1, 5, "number of points", "the weights sum to " + std::to_string(wsum) + ", not 4 (the area of [-1, 1]^2)");
-      rules.push_back(std::move(rule));
-    }
+    for (int r = 0; r < beam_rules_; ++r) rules.push_back(read_beam_rule(r));
     for (MaterialData& md : m_.materials)
       if (md.beam && md.beam_section.qr < 0 && std::size_t(-md.beam_section.qr) <= rules.size())
         md.beam_section.user_rule = rules[std::size_t(-md.beam_section.qr - 1)];
+  }
+
+  // Rule r (0-based): the beam integration rule header card, then a beam integration point
+  // card a point.
+  std::vector<std::array<double, 3>> read_beam_rule(int r) {
+    const std::string name = "beam integration rule " + std::to_string(r + 1);
+    Card h = next(name + " header card", "control card 8 announces " + std::to_string(beam_rules_) + " user beam integration rules");
+    FixedValues vh(h, fixed_card_layout("beam integration rule header card", vintage_));
+    long long npts = vh.integer("number of points");
+    if (npts < 1 || npts > remaining_cards() || (beam_rule_points_ > 0 && npts > beam_rule_points_)) {
+      vh.error(1003, "number of points", "1 to control card 8's largest rule (" + std::to_string(beam_rule_points_) + ")");
+      npts = std::clamp<long long>(npts, 0, remaining_cards());
+    }
+    const FixedCardLayout& layout = fixed_card_layout("beam integration point card", vintage_);
+    std::vector<std::array<double, 3>> rule;
+    double wsum = 0;
+    for (long long p = 0; p < npts; ++p) {
+      Card c = next(name + " point " + std::to_string(p + 1));
+      FixedValues v(c, layout);
+      const double sp = v["s"], tp = v["t"], w = v["weight"];
+      if (std::fabs(sp) > 1 || std::fabs(tp) > 1) c.error(1003, v.field("s").c1, v.field("t").c2, "s, t", "points lie in [-1, 1] x [-1, 1]");
+      if (w < 0) v.error(1003, "weight", "must not be negative");
+      wsum += w;
+      rule.push_back({sp, tp, w});
+    }
+    if (npts > 0 && std::fabs(wsum - 4) > 1e-3) vh.error(1003, "number of points", "the weights sum to " + std::to_string(wsum) + ", not 4 (the area of [-1, 1]^2)");
+    return rule;
   }
 
   // Beam element cards (control card 2 NUMELB), after the solids: id, material (element type

@@ -19,8 +19,181 @@ constexpr FieldUse R = U::read;
 constexpr FieldUse I = U::ignored;
 constexpr FieldUse X = U::refused;
 
+constexpr FieldKind S = K::strict_integer;
+
+const char* const kNodeN[8] = {"node n1", "node n2", "node n3", "node n4", "node n5", "node n6", "node n7", "node n8"};
+const char* const kListNode[16] = {"node 1", "node 2", "node 3", "node 4", "node 5", "node 6", "node 7", "node 8",
+                                   "node 9", "node 10", "node 11", "node 12", "node 13", "node 14", "node 15", "node 16"};
+
+// `count` fields of width `w` from column `c1`, named by `names`.
+void add_run(FixedCardLayout& l, const char* const* names, int count, int c1, int w, FieldKind kind, const char* meaning) {
+  for (int k = 0; k < count; ++k)
+    l.fields.push_back({names[k], c1 + k * w, c1 + k * w + w - 1, kind, 0, R, nullptr, k == 0 ? meaning : ""});
+}
+
+// The element cards: id, material label, nodes (id width w: 8 large format, 5 small).
+FixedCardLayout element_card(const char* id, int w, int nodes, const char* node_meaning) {
+  FixedCardLayout l{id, "88 later", {
+      {"element number", 1, w, S, 0, R, nullptr, "1..count, each once"},
+      {"material number", w + 1, w + 5, S, 0, R, nullptr, "a material label of the deck"},
+  }};
+  add_run(l, kNodeN, nodes, w + 6, w, S, node_meaning);
+  return l;
+}
+
+FixedCardLayout node_card(const char* id, int w) {
+  return {id, "88 later", {
+      {"node number", 1, w, S, 0, R, nullptr, "1..NUMNP, each once"},
+      {"boundary code", w + 1, w + 5, K::integer, 0, R, nullptr, "0 free, 1-3 x y z, 4 x y, 5 y z, 6 z x, 7 all fixed (\"7.\" reads as 7)"},
+      {"x", w + 6, w + 25, K::real, 0, R, nullptr, "coordinates"},
+      {"y", w + 26, w + 45, K::real, 0, R, nullptr, ""},
+      {"z", w + 46, w + 65, K::real, 0, R, nullptr, ""},
+      {"rotational code", w + 66, w + 70, K::integer, 0, R, nullptr, "rotations fixed on shell and beam nodes, codes as above"},
+  }};
+}
+
+// Material card 1, the title card and the node and element cards.
+void add_model_cards(std::vector<FixedCardLayout>& t) {
+  t.push_back({"material card 1", "88 later", {
+      {"material number", 1, 5, S, 0, R, nullptr, "a label (elements refer to it)"},
+      {"material type", 6, 10, S, 0, R, nullptr, "README Materials (71: read as type 3)"},
+      {"density", 11, 20, K::real, 0, R, nullptr, "mass density"},
+      {"EOS type", 21, 25, S, 0, R, nullptr, "equation of state form (its cards after card 8)"},
+      {"hourglass type", 26, 30, S, 1, R, nullptr, "1-5 (0: 1; 6-10 read as 5)"},
+      {"hourglass coefficient", 31, 40, K::real, 0.10, R, nullptr, "(0: 0.10)"},
+      {"bulk viscosity type", 41, 45, S, 1, R, nullptr, "1 only (0: 1)"},
+      {"quadratic bulk viscosity Q1", 46, 55, K::real, 1.5, R, nullptr, "(0: 1.5)"},
+      {"linear bulk viscosity Q2", 56, 65, K::real, 0.06, R, nullptr, "(0: 0.06)"},
+      {"element type", 66, 70, S, 0, R, nullptr, "0 solid, 1 beam, 2 shell (3 thick shell refused)"},
+      {"unused", 71, 75, S, 0, R, nullptr, "read as an integer, no meaning"},
+      {"element formulation", 76, 80, S, 0, R, nullptr, "solids 0/1, shells 0/2 (Belytschko-Tsay), beams 0/1 (Hughes-Liu)"},
+  }});
+  t.push_back({"material title card", "88 later", {
+      {"title", 1, 80, K::text, 0, R, nullptr, "material card 2: the material's title (INGRID: \"material type # 3 (...)\")"},
+  }});
+  t.push_back({"material property card", "88 later", {
+      {"field 1", 1, 10, K::real, 0, R, nullptr, "material cards 3-8: each type's parameters where its table puts them (README Materials)"},
+      {"field 2", 11, 20, K::real, 0, R, nullptr, "a field no parameter of the type uses: warning 2006 when nonzero"},
+      {"field 3", 21, 30, K::real, 0, R, nullptr, ""},
+      {"field 4", 31, 40, K::real, 0, R, nullptr, ""},
+      {"field 5", 41, 50, K::real, 0, R, nullptr, ""},
+      {"field 6", 51, 60, K::real, 0, R, nullptr, ""},
+      {"field 7", 61, 70, K::real, 0, R, nullptr, ""},
+      {"field 8", 71, 80, K::real, 0, R, nullptr, ""},
+  }});
+  t.push_back(node_card("node card", 8));
+  t.push_back(element_card("solid element card", 8, 8, "the hexahedron's nodes (degenerate patterns allowed)"));
+  t.push_back(element_card("shell element card", 8, 4, "n4 blank or = n3: a triangle"));
+  t.push_back({"shell thickness card", "88 later", {
+      {"thickness t1", 1, 10, K::real, 0, R, nullptr, "nodal thicknesses (all blank: the section's T1-T4)"},
+      {"thickness t2", 11, 20, K::real, 0, R, nullptr, ""},
+      {"thickness t3", 21, 30, K::real, 0, R, nullptr, ""},
+      {"thickness t4", 31, 40, K::real, 0, R, nullptr, ""},
+  }});
+  t.push_back({"beam integration rule header card", "88 later", {
+      {"number of points", 1, 5, S, 0, R, nullptr, "points of the rule (control card 8 field 5 at most)"},
+      {"rule area factor", 6, 15, K::real, 0, R, nullptr, "read, not used (the weights sum to 4)"},
+  }});
+  t.push_back({"beam integration point card", "88 later", {
+      {"s", 1, 10, K::real, 0, R, nullptr, "point in [-1, 1]"},
+      {"t", 11, 20, K::real, 0, R, nullptr, "point in [-1, 1]"},
+      {"weight", 21, 30, K::real, 0, R, nullptr, "the weights of a rule sum to 4"},
+  }});
+}
+
+// The cards after the elements: load curves, loads, stonewalls, initial velocities, segments.
+void add_load_cards(std::vector<FixedCardLayout>& t) {
+  t.push_back({"load curve header card", "88 later", {
+      {"curve number", 1, 5, S, 0, R, nullptr, "1..NUMLC, each once"},
+      {"NPTS", 6, 10, S, 0, R, nullptr, "points (a card each, at least 2)"},
+  }});
+  t.push_back({"load curve point card", "88 later", {
+      {"time", 1, 10, K::real, 0, R, nullptr, "increasing"},
+      {"value", 11, 20, K::real, 0, R, nullptr, ""},
+  }});
+  t.push_back({"nodal load card", "88 later", {
+      {"node", 1, 8, S, 0, R, nullptr, "node number"},
+      {"direction", 9, 13, S, 0, R, nullptr, "1-3 x y z (4-6 moments refused)"},
+      {"load curve", 14, 18, S, 0, R, nullptr, "load curve number"},
+      {"scale factor", 19, 28, K::real, 1, R, nullptr, "(blank: 1)"},
+  }});
+  t.push_back({"stonewall card", "88 later", {
+      {"NSN", 1, 5, S, 0, R, nullptr, "slave nodes listed after the wall's cards (0: all nodes)"},
+      {"moving flag", 6, 10, S, 0, R, nullptr, "0 fixed, 1 moving (the moving stonewall card follows)"},
+      {"XT", 11, 20, K::real, 0, R, nullptr, "tail of the outward normal: a point of the wall"},
+      {"YT", 21, 30, K::real, 0, R, nullptr, ""},
+      {"ZT", 31, 40, K::real, 0, R, nullptr, ""},
+      {"XH", 41, 50, K::real, 0, R, nullptr, "head of the normal"},
+      {"YH", 51, 60, K::real, 0, R, nullptr, ""},
+      {"ZH", 61, 70, K::real, 0, R, nullptr, ""},
+      {"FRIC", 71, 80, K::real, 0, R, nullptr, "0 frictionless, 1 stick, between: Coulomb"},
+  }});
+  t.push_back({"moving stonewall card", "88 later", {
+      {"MASS", 1, 10, K::real, 0, R, nullptr, "IMPACT-3D: the moving wall's mass"},
+      {"V0", 11, 20, K::real, 0, R, nullptr, "IMPACT-3D: its initial velocity along the normal"},
+  }});
+  FixedCardLayout list{"node list card", "88 later", {}};
+  add_run(list, kListNode, 10, 1, 8, S, "stonewall slave nodes, ten a card");
+  t.push_back(std::move(list));
+  t.push_back({"initial velocity range card", "88 later", {
+      {"first node", 1, 8, S, 0, R, nullptr, "IMPACT-3D: 0 all nodes, else the range's first node"},
+      {"vx", 9, 18, K::real, 0, R, nullptr, "initial velocity"},
+      {"vy", 19, 28, K::real, 0, R, nullptr, ""},
+      {"vz", 29, 38, K::real, 0, R, nullptr, ""},
+      {"last node", 39, 46, S, 0, R, nullptr, "(blank: the first)"},
+      {"increment", 47, 51, S, 1, R, nullptr, "(0: 1)"},
+  }});
+  FixedCardLayout seg{"segment card", "88 later", {{"segment number", 1, 8, S, 0, R, nullptr, "read, not used"}}};
+  add_run(seg, kNodeN, 4, 9, 8, S, "the segment's nodes");
+  t.push_back(std::move(seg));
+  t.push_back({"base acceleration card", "88 later", {
+      {"load curve", 1, 5, S, 0, R, nullptr, "IMPACT-3D: one card per axis flagged on control card 5, x y z"},
+      {"scale factor", 6, 15, K::real, 1, R, nullptr, "(blank: 1); every node gets -scale x curve"},
+  }});
+}
+
+// The small format (no "large" on the title card): ids in 5 columns.
+void add_small_format_cards(std::vector<FixedCardLayout>& t) {
+  t.push_back({"control card 2 (small format)", "88 later", {
+      {"NMMAT", 1, 5, S, 0, R, nullptr, "number of materials"},
+      {"NUMNP", 6, 10, S, 0, R, nullptr, "number of nodes"},
+      {"NUMELH", 11, 15, S, 0, R, nullptr, "number of solid hexahedra"},
+      {"NUMELB", 16, 20, S, 0, R, nullptr, "number of beams"},
+      {"NUMELS", 21, 25, S, 0, R, nullptr, "number of 4-node shells"},
+      {"NUMELT", 26, 30, S, 0, X, "thick shell elements", "number of 8-node thick shells"},
+      {"interface segments", 31, 35, S, 0, R, nullptr, "interface segments written to the interface database"},
+      {"interface output interval", 36, 45, K::real, 0, R, nullptr, "interval of the interface database"},
+  }});
+  t.push_back(node_card("node card (small format)", 5));
+  t.push_back(element_card("solid element card (small format)", 5, 8, "the hexahedron's nodes"));
+  t.push_back(element_card("shell element card (small format)", 5, 4, "n4 blank or = n3: a triangle"));
+  t.push_back({"nodal load card (small format)", "88 later", {
+      {"node", 1, 5, S, 0, R, nullptr, "node number"},
+      {"direction", 6, 10, S, 0, R, nullptr, "1-3 x y z"},
+      {"load curve", 11, 15, S, 0, R, nullptr, "load curve number"},
+      {"scale factor", 16, 25, K::real, 1, R, nullptr, "(blank: 1)"},
+  }});
+  FixedCardLayout p{"pressure card (small format)", "88 later", {{"load curve", 1, 5, S, 0, R, nullptr, "load curve number"}}};
+  add_run(p, kNodeN, 4, 6, 5, S, "the loaded face's nodes");
+  const char* const mult[4] = {"multiplier 1", "multiplier 2", "multiplier 3", "multiplier 4"};
+  for (int q = 0; q < 4; ++q) p.fields.push_back({mult[q], 26 + 10 * q, 35 + 10 * q, K::real, 1, R, nullptr, q == 0 ? "nodal multipliers (blank: 1)" : ""});
+  p.fields.push_back({"arrival time", 71, 80, K::real, 0, R, nullptr, "IMPACT-3D: the load starts then"});
+  t.push_back(std::move(p));
+  FixedCardLayout list{"node list card (small format)", "88 later", {}};
+  add_run(list, kListNode, 16, 1, 5, S, "stonewall slave nodes, sixteen a card");
+  t.push_back(std::move(list));
+  FixedCardLayout seg{"segment card (small format)", "88 later", {{"segment number", 1, 5, S, 0, R, nullptr, "read, not used"}}};
+  add_run(seg, kNodeN, 4, 6, 5, S, "the segment's nodes");
+  t.push_back(std::move(seg));
+}
+
 std::vector<FixedCardLayout> make_layouts() {
   std::vector<FixedCardLayout> t;
+  t.push_back({"title card", "88 later", {
+      {"title", 1, 72, K::text, 0, R, nullptr, "the problem's title"},
+      {"format digits", 73, 74, K::text, 0, R, nullptr, "\"88\" (\"10\" with \"large\": refused)"},
+      {"format flag", 76, 80, K::text, 0, R, nullptr, "\"large\": the large format (8-column ids); blank: the small format"},
+  }});
   // ---- control cards (after the title card) ----
   t.push_back({"control card 2", "88 later", {
       {"NMMAT", 1, 5, K::integer, 0, R, nullptr, "number of materials"},
@@ -219,6 +392,37 @@ std::vector<FixedCardLayout> make_layouts() {
       {"stiffness method", 61, 65, K::integer, 0, R, nullptr, ""},
       {"one-pass flag", 66, 70, K::integer, 0, R, nullptr, ""},
   }});
+  // IMPACT-3D's own motion card before the real decks were found: refused (1006) with the
+  // columns to move
+  t.push_back({"old IMPACT-3D velocity/acceleration boundary card", "88 later", {
+      {"node", 1, 8, S, 0, R, nullptr, "node number"},
+      {"direction", 9, 13, S, 0, R, nullptr, "1-3 x y z"},
+      {"curve", 14, 18, S, 0, R, nullptr, "load curve number"},
+      {"scale", 19, 28, K::real, 1, R, nullptr, ""},
+      {"type", 29, 33, S, 0, R, nullptr, "an I5 without a decimal point: tells this layout"},
+      {"birth", 34, 43, K::real, 0, R, nullptr, ""},
+      {"death", 44, 53, K::real, 0, R, nullptr, ""},
+  }});
+  // IMPACT-3D's old large-format pressure layout: the multipliers on a second card (still read,
+  // warning 2041, when the card after a pressure card is unmistakably this one)
+  t.push_back({"old IMPACT-3D pressure multiplier card", "88 later", {
+      {"multiplier 1", 1, 10, K::real, 1, R, nullptr, "nodal multipliers (blank: 1), each with a decimal point or exponent"},
+      {"multiplier 2", 11, 20, K::real, 1, R, nullptr, ""},
+      {"multiplier 3", 21, 30, K::real, 1, R, nullptr, ""},
+      {"multiplier 4", 31, 40, K::real, 1, R, nullptr, ""},
+      {"arrival time", 71, 80, K::real, 0, R, nullptr, "the load starts then"},
+  }});
+  // IMPACT-3D's old one-card shell section (still read, warning 2041, when no section title
+  // line follows card 8 of a shell material)
+  t.push_back({"old IMPACT-3D shell section card", "88 later", {
+      {"shear factor SHRF", 1, 10, K::real, 1, R, nullptr, "(0: 1)"},
+      {"NIP", 11, 20, K::real, 2, R, nullptr, "through-thickness points (0: 2)"},
+      {"quadrature rule QR", 21, 30, K::real, 0, R, nullptr, "0 Gauss only"},
+      {"T1", 31, 40, K::real, 0, R, nullptr, "thicknesses (T2-T4 0: T1)"},
+      {"T2", 41, 50, K::real, 0, R, nullptr, ""},
+      {"T3", 51, 60, K::real, 0, R, nullptr, ""},
+      {"T4", 61, 70, K::real, 0, R, nullptr, ""},
+  }});
   t.push_back({"mass damping card", "later", {
       {"damping ratio", 1, 10, K::real, 0, R, nullptr, "fraction of critical at the frequency below"},
       {"frequency", 11, 20, K::real, 0, R, nullptr, "circular frequency (rad per time unit)"},
@@ -263,6 +467,9 @@ std::vector<FixedCardLayout> make_layouts() {
       {"T4", 31, 40, K::real, 0, R, nullptr, "(0: T1)"},
       {"field 5", 41, 50, K::real, 0, I, "a shell-section field of DYNA3D not known here", ""},
   }});
+  add_model_cards(t);
+  add_load_cards(t);
+  add_small_format_cards(t);
   return t;
 }
 
@@ -301,7 +508,7 @@ FixedVintage detect_fixed_vintage(std::string_view card4) {
 
 std::string fixed_card_tables_markdown() {
   std::ostringstream os;
-  static const char* const kind[] = {"I", "E", "A"};
+  static const char* const kind[] = {"I", "E", "A", "I"};
   for (const FixedCardLayout& l : all_fixed_card_layouts()) {
     const std::string v = l.vintages;
     os << "#### " << l.id << (v == "88 later" ? "" : v == "88" ? " (88 vintage)" : " (later vintage)") << "\n\n";
@@ -320,44 +527,47 @@ std::string fixed_card_tables_markdown() {
   return os.str();
 }
 
-FixedValues::FixedValues(Card& card, const FixedCardLayout& layout)
+FixedValues::FixedValues(Card& card, const FixedCardLayout& layout, const NameByFirst& name_by_first)
     : card_(card), layout_(layout) {
   const std::size_t n = layout.fields.size();
   values_.assign(n, 0.0);
   texts_.assign(n, std::string());
   blank_.assign(n, 1);
   for (std::size_t k = 0; k < n; ++k) {
-    const FixedField& f = layout.fields[k];
-    blank_[k] = card.blank(f.c1, f.c2) ? 1 : 0;
-    if (f.kind == FieldKind::text) {
-      std::string s = card.a(f.c1, f.c2);
-      while (!s.empty() && s.back() == ' ') s.pop_back();
-      s.erase(0, std::min(s.find_first_not_of(' '), s.size()));
-      texts_[k] = s;
-      continue;
-    }
-    if (f.kind == FieldKind::integer) {
-      // an integer field may be written as a real with an integral value ("7.", as INGRID does)
-      const std::string_view raw = card.columns(f.c1, f.c2);
-      long long iv = 0;
-      if (parse_fortran_int(raw, iv) == FieldStatus::bad) {
-        double dv = 0;
-        if (parse_fortran_real(raw, dv) == FieldStatus::ok && dv == std::floor(dv) && std::fabs(dv) < 1e15) {
-          values_[k] = dv;
-          continue;
-        }
-      }
-      values_[k] = double(card.i(f.c1, f.c2, f.name, static_cast<long long>(f.blank)));
-    } else {
-      values_[k] = card.e(f.c1, f.c2, f.name, f.blank);
-    }
-    if (blank_[k]) values_[k] = f.blank;
-    if (values_[k] != 0 && !blank_[k]) {
-      if (f.use == FieldUse::refused) card.error(1102, f.c1, f.c2, f.name, f.feature);
-      else if (f.use == FieldUse::ignored)
-        ignored_.push_back(std::string(layout.id) + " " + f.name + " (cols " + std::to_string(f.c1) + "-" + std::to_string(f.c2) + "): " + f.feature);
-    }
+    read_field(k);
+    if (k == 0 && name_by_first) card.set_name(name_by_first(static_cast<long long>(values_[0])));
   }
+}
+
+void FixedValues::read_field(std::size_t k) {
+  const FixedField& f = layout_.fields[k];
+  blank_[k] = card_.blank(f.c1, f.c2) ? 1 : 0;
+  if (f.kind == FieldKind::text) {
+    std::string s = card_.a(f.c1, f.c2);
+    while (!s.empty() && s.back() == ' ') s.pop_back();
+    s.erase(0, std::min(s.find_first_not_of(' '), s.size()));
+    texts_[k] = s;
+    return;
+  }
+  if (f.kind == FieldKind::integer && integral_real(f, values_[k])) return;
+  if (f.kind == FieldKind::real) values_[k] = card_.e(f.c1, f.c2, f.name, f.blank);
+  else values_[k] = double(card_.i(f.c1, f.c2, f.name, static_cast<long long>(f.blank)));
+  if (blank_[k]) values_[k] = f.blank;
+  if (values_[k] == 0 || blank_[k]) return;
+  if (f.use == FieldUse::refused) card_.error(1102, f.c1, f.c2, f.name, f.feature);
+  else if (f.use == FieldUse::ignored)
+    ignored_.push_back(std::string(layout_.id) + " " + f.name + " (cols " + std::to_string(f.c1) + "-" + std::to_string(f.c2) + "): " + f.feature);
+}
+
+// An integer field written as a real with an integral value ("7.", as INGRID writes codes).
+bool FixedValues::integral_real(const FixedField& f, double& v) const {
+  const std::string_view raw = card_.columns(f.c1, f.c2);
+  long long iv = 0;
+  if (parse_fortran_int(raw, iv) != FieldStatus::bad) return false;
+  double dv = 0;
+  if (parse_fortran_real(raw, dv) != FieldStatus::ok || dv != std::floor(dv) || std::fabs(dv) >= 1e15) return false;
+  v = dv;
+  return true;
 }
 
 std::size_t FixedValues::index(std::string_view name) const {

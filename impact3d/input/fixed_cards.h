@@ -15,6 +15,7 @@
 // is not known from them, its name says so and a nonzero value is refused or ignored as the
 // table states.
 
+#include <functional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -26,7 +27,10 @@ namespace impact3d {
 enum class FixedVintage { dyna3d_88, dyna3d_later };
 const char* vintage_name(FixedVintage v);
 
-enum class FieldKind { integer, real, text };
+// integer: an integer, or a real with an integral value ("7.", as INGRID writes codes and counts);
+// strict_integer: an integer only (ids and labels: "7." is refused, 1001).
+enum class FieldKind { integer, real, text, strict_integer };
+inline bool is_integer(FieldKind k) { return k == FieldKind::integer || k == FieldKind::strict_integer; }
 
 // What a nonzero value of a field does.
 enum class FieldUse {
@@ -68,7 +72,10 @@ FixedVintage detect_fixed_vintage(std::string_view control_card_4);
 // feature, ignored ones are collected for the reader's one listing.
 class FixedValues {
  public:
-  FixedValues(Card& card, const FixedCardLayout& layout);
+  // name_by_first: the card's name once its first field (its own number) is read ("node card for
+  // node 417"), so that the messages about the other fields name it.
+  using NameByFirst = std::function<std::string(long long)>;
+  FixedValues(Card& card, const FixedCardLayout& layout, const NameByFirst& name_by_first = {});
   double operator[](std::string_view name) const;
   long long integer(std::string_view name) const { return static_cast<long long>((*this)[name]); }
   const std::string& text(std::string_view name) const;
@@ -83,6 +90,8 @@ class FixedValues {
 
  private:
   std::size_t index(std::string_view name) const;
+  void read_field(std::size_t k);
+  bool integral_real(const FixedField& f, double& v) const;
   Card& card_;
   const FixedCardLayout& layout_;
   std::vector<double> values_;

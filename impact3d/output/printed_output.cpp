@@ -1,5 +1,6 @@
 #include "impact3d/output/printed_output.h"
 
+#include "impact3d/input/fixed_cards.h"
 #include "impact3d/material/material_types.h"
 
 #include <algorithm>
@@ -41,6 +42,71 @@ const char* bc_name(int c) {
     case 7: return "x, y, z fixed";
   }
   return "?";
+}
+
+// The echo of one card kind: the named fields of its table (fixed_cards.h) as column heads,
+// each value under its field's name, so that the echo names fields as the deck format does.
+class CardEcho {
+ public:
+  CardEcho(const char* id, std::vector<const char*> names) : layout_(fixed_card_layout(id, FixedVintage::dyna3d_later)), names_(std::move(names)) {}
+  std::string heads() const {
+    std::string s;
+    for (const char* n : names_) s += pad(n, width(n));
+    return s;
+  }
+  // "name, name, ... (the <id> table)": what the columns of an echo hold.
+  std::string legend() const {
+    std::string s;
+    for (const char* n : names_) s += (s.empty() ? "" : ", ") + std::string(n);
+    return s + " (" + layout_.id + ")";
+  }
+  // One row: integer fields as integers, real fields as %.4e.
+  std::string row(const std::vector<double>& values) const {
+    std::string s;
+    for (std::size_t k = 0; k < names_.size() && k < values.size(); ++k) {
+      const bool integer = is_integer(layout_.field(names_[k]).kind);
+      s += pad(integer ? std::to_string(static_cast<long long>(values[k])) : fmt("%.4e", values[k]), width(names_[k]));
+    }
+    return s;
+  }
+
+ private:
+  int width(const char* name) const {
+    const bool integer = is_integer(layout_.field(name).kind);
+    return 2 + std::max(int(std::string_view(name).size()), integer ? 8 : 11);
+  }
+  static std::string pad(const std::string& v, int w) { return std::string(std::size_t(std::max(0, w - int(v.size()))), ' ') + v; }
+  const FixedCardLayout& layout_;
+  std::vector<const char*> names_;
+};
+
+// The deck's number of material slot `mat` (0: none).
+int material_label(const Model& m, int mat) { return mat >= 0 && std::size_t(mat) < m.materials.size() ? m.materials[std::size_t(mat)].number : 0; }
+
+// The first cards of the node and solid element kinds, echoed under their tables' field names.
+void write_card_echo(std::ostream& os, const Model& m) {
+  constexpr int kShown = 10;
+  if (m.num_nodes() > 0) {
+    const CardEcho e("node card", {"node number", "boundary code", "x", "y", "z"});
+    os << " n o d e   c a r d s   (the first " << std::min(kShown, m.num_nodes()) << " of " << m.num_nodes() << ")\n\n " << e.heads() << "\n";
+    for (int n = 0; n < m.num_nodes() && n < kShown; ++n) {
+      const std::size_t i = std::size_t(n);
+      os << " " << e.row({double(m.node_id(n)), double(m.bc[i]), m.x[i], m.y[i], m.z[i]}) << "\n";
+    }
+    os << "\n";
+  }
+  if (m.num_hexes() > 0) {
+    const CardEcho e("solid element card", {"element number", "material number", "node n1", "node n2", "node n3", "node n4",
+                                            "node n5", "node n6", "node n7", "node n8"});
+    os << " s o l i d   e l e m e n t   c a r d s   (the first " << std::min(kShown, m.num_hexes()) << " of " << m.num_hexes() << ")\n\n "
+       << e.heads() << "\n";
+    for (int k = 0; k < m.num_hexes() && k < kShown; ++k) {
+      std::vector<double> v{double(m.hex_id(k)), double(material_label(m, m.hex_material[std::size_t(k)]))};
+      for (int q : m.hex_nodes[std::size_t(k)]) v.push_back(q < 0 ? 0.0 : double(m.node_id(q)));
+      os << " " << e.row(v) << "\n";
+    }
+    os << "\n";
+  }
 }
 
 // Loads and prescribed motions: one line each, at most kShown per kind, then the count of the rest.
@@ -174,7 +240,11 @@ void write_shells(std::ostream& os, const Model& m) {
        << fmt("%.4e", amin[q]) << " to " << fmt("%.4e", amax[q]) << " (length^2)\n";
   }
   constexpr int kShown = 10;
-  os << "\n   shell  material        n1        n2        n3        n4   thicknesses t1-t4\n";
+  // the shell element card and its thickness card: the columns named by their tables' fields
+  const CardEcho ec("shell element card", {"element number", "material number", "node n1", "node n2", "node n3", "node n4"});
+  const CardEcho et("shell thickness card", {"thickness t1", "thickness t2", "thickness t3", "thickness t4"});
+  os << "\n   columns: " << ec.legend() << "; " << et.legend() << "\n";
+  os << "   shell  material        n1        n2        n3        n4   thicknesses t1-t4\n";
   for (int k = 0; k < m.num_shells() && k < kShown; ++k) {
     const auto& n = m.shell_nodes[std::size_t(k)];
     const auto& t = m.shell_thickness[std::size_t(k)];
@@ -307,6 +377,7 @@ void write_model_summary(std::ostream& os, const Model& m) {
     }
     os << "\n";
   }
+  write_card_echo(os, m);
   write_constraints(os, m);
   write_shells(os, m);
   if (!m.interfaces.empty()) {
