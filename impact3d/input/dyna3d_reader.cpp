@@ -197,125 +197,146 @@ class Dyna3dReader {
   // Control cards 2-9, each read by its table (fixed_cards.cpp); the vintage of the layout is
   // told by control card 4 (detect_fixed_vintage).
   void read_control_cards() {
+    read_control_card_2();
+    read_control_card_3();
+    read_control_card_4();
+    read_control_card_5();
+    read_control_card_6();
+    read_control_card_7();
+    read_control_card_8();
+    read_control_card_9();
+  }
+
+  void read_control_card_2() {
     ControlData& k = m_.control;
-    {
-      Card c = next("control card 2");
-      card2_line_ = c.line();
-      FixedValues v(c, m_.large_format ? fixed_card_layout("control card 2", vintage_) : sized_layout("control card 2"));
-      note_ignored(v);
-      k.nmmat = int(v.integer("NMMAT"));
-      k.numnp = int(v.integer("NUMNP"));
-      k.numelh = int(v.integer("NUMELH"));
-      numelb_ = int(v.integer("NUMELB"));
-      numels_ = int(v.integer("NUMELS"));
-      k.interface_segments_out = int(v.integer("interface segments"));
-      k.interface_out_interval = v["interface output interval"];
-      if (k.interface_out_interval < 0) v.error(1221, "interface output interval");
-      if (m_.large_format) check_counts(v);
-      else check_small_counts(v);
+    Card c = next("control card 2");
+    card2_line_ = c.line();
+    FixedValues v(c, sized_layout("control card 2"));
+    note_ignored(v);
+    k.nmmat = int(v.integer("NMMAT"));
+    k.numnp = int(v.integer("NUMNP"));
+    k.numelh = int(v.integer("NUMELH"));
+    numelb_ = int(v.integer("NUMELB"));
+    numels_ = int(v.integer("NUMELS"));
+    k.interface_segments_out = int(v.integer("interface segments"));
+    k.interface_out_interval = v["interface output interval"];
+    if (k.interface_out_interval < 0) v.error(1221, "interface output interval");
+    if (m_.large_format) check_counts(v);
+    else check_small_counts(v);
+  }
+
+  void read_control_card_3() {
+    ControlData& k = m_.control;
+    Card c = next("control card 3");
+    FixedValues v(c, fixed_card_layout("control card 3", vintage_));
+    note_ignored(v);
+    const long avail = remaining_cards();
+    k.node_th_blocks = bounded_count(v, "node time-history blocks", avail);
+    k.solid_th_blocks = bounded_count(v, "solid time-history blocks", avail);
+    beam_th_blocks_ = bounded_count(v, "beam time-history blocks", avail);
+    shell_th_blocks_ = bounded_count(v, "shell time-history blocks", avail);
+    k.report_interval = int(v.integer("report interval"));
+    if (k.report_interval < 0) v.error(1003, "report interval", "must not be negative");
+    if (k.report_interval <= 0) k.report_interval = 100;
+    k.reaction_print_flag = int(v.integer("reaction-force print flag"));
+    const long long del = v.integer("element deletion flag");
+    if (del != 0 && del != 1) v.error(1006, "element deletion flag", "0 or 1 (deletion flags in the plot database)");
+    deletion_flag_ = del == 1;
+  }
+
+  void read_control_card_4() {
+    Card c = next("control card 4");
+    vintage_ = detect_fixed_vintage(deck_.lines()[std::size_t(c.line() - 1)].text);
+    m_.fixed_vintage = int(vintage_);
+    FixedValues v(c, fixed_card_layout("control card 4", vintage_));
+    note_ignored(v);
+    const std::string& fmt = v.text("coordinate format");
+    if (!fmt.empty() && fmt.rfind("e20", 0) != 0 && fmt.rfind("E20", 0) != 0)
+      v.error(1006, "coordinate format", "e20.x (node coordinates in 20 columns)");
+  }
+
+  void read_control_card_5() {
+    ControlData& k = m_.control;
+    Card c = next("control card 5");
+    FixedValues v(c, fixed_card_layout("control card 5", vintage_));
+    note_ignored(v);
+    const long avail = remaining_cards();
+    k.numlc = bounded_count(v, "NUMLC", avail);
+    k.num_nodal_load_cards = bounded_count(v, "concentrated nodal loads", avail);
+    k.num_pressure_cards = bounded_count(v, "pressure-loaded sides", avail);
+    k.num_motion_cards = bounded_count(v, "velocity/acceleration boundary cards", avail);
+    k.num_walls = bounded_count(v, "stonewalls", avail);
+    k.num_init_velocity_cards = bounded_count(v, "initial condition parameter", avail);
+    k.num_interfaces = bounded_count(v, "sliding interfaces", avail);
+    static const char* const base[3] = {"base acceleration x", "base acceleration y", "base acceleration z"};
+    for (int f = 0; f < 3; ++f) {
+      const long long flag = v.integer(base[f]);
+      if (flag != 0 && flag != 1) v.error(1006, base[f], "0 none, 1 one base-acceleration card");
+      k.base_acceleration[std::size_t(f)] = flag == 1 ? 1 : 0;
     }
-    {
-      Card c = next("control card 3");
-      FixedValues v(c, fixed_card_layout("control card 3", vintage_));
-      note_ignored(v);
-      const long avail = remaining_cards();
-      k.node_th_blocks = bounded_count(v, "node time-history blocks", avail);
-      k.solid_th_blocks = bounded_count(v, "solid time-history blocks", avail);
-      beam_th_blocks_ = bounded_count(v, "beam time-history blocks", avail);
-      shell_th_blocks_ = bounded_count(v, "shell time-history blocks", avail);
-      k.report_interval = int(v.integer("report interval"));
-      if (k.report_interval < 0) v.error(1003, "report interval", "must not be negative");
-      if (k.report_interval <= 0) k.report_interval = 100;
-      k.reaction_print_flag = int(v.integer("reaction-force print flag"));
-      const long long del = v.integer("element deletion flag");
-      if (del != 0 && del != 1) v.error(1006, "element deletion flag", "0 or 1 (deletion flags in the plot database)");
-      deletion_flag_ = del == 1;
-    }
-    {
-      Card c = next("control card 4");
-      vintage_ = detect_fixed_vintage(deck_.lines()[std::size_t(c.line() - 1)].text);
-      m_.fixed_vintage = int(vintage_);
-      FixedValues v(c, fixed_card_layout("control card 4", vintage_));
-      note_ignored(v);
-      const std::string& fmt = v.text("coordinate format");
-      if (!fmt.empty() && fmt.rfind("e20", 0) != 0 && fmt.rfind("E20", 0) != 0)
-        v.error(1006, "coordinate format", "e20.x (node coordinates in 20 columns)");
-    }
-    {
-      Card c = next("control card 5");
-      FixedValues v(c, fixed_card_layout("control card 5", vintage_));
-      note_ignored(v);
-      const long avail = remaining_cards();
-      k.numlc = bounded_count(v, "NUMLC", avail);
-      k.num_nodal_load_cards = bounded_count(v, "concentrated nodal loads", avail);
-      k.num_pressure_cards = bounded_count(v, "pressure-loaded sides", avail);
-      k.num_motion_cards = bounded_count(v, "velocity/acceleration boundary cards", avail);
-      k.num_walls = bounded_count(v, "stonewalls", avail);
-      k.num_init_velocity_cards = bounded_count(v, "initial condition parameter", avail);
-      k.num_interfaces = bounded_count(v, "sliding interfaces", avail);
-      static const char* const base[3] = {"base acceleration x", "base acceleration y", "base acceleration z"};
-      for (int f = 0; f < 3; ++f) {
-        const long long flag = v.integer(base[f]);
-        if (flag != 0 && flag != 1) v.error(1006, base[f], "0 none, 1 one base-acceleration card");
-        k.base_acceleration[std::size_t(f)] = flag == 1 ? 1 : 0;
-      }
-    }
-    {
-      Card c = next("control card 6");
-      FixedValues v(c, fixed_card_layout("control card 6", vintage_));
-      note_ignored(v);
-      k.end_time = v["termination time"];
-      if (!(k.end_time > 0)) v.error(1214, "termination time");
-      k.th_interval = v["time-history interval"];
-      k.plot_interval = v["plot interval"];
-      if (k.th_interval < 0) v.error(1221, "time-history interval");
-      if (k.plot_interval < 0) v.error(1221, "plot interval");
-      if (k.th_interval == 0) k.th_interval = k.end_time / 1000;
-      if (k.plot_interval == 0) k.plot_interval = k.end_time / 20;
-      k.restart_dump_cycles = int(v.integer("restart dump cycles"));
-      k.running_restart_cycles = int(v.integer("running restart cycles"));
-      if (k.restart_dump_cycles < 0) v.error(1003, "restart dump cycles", "must not be negative");
-      if (k.running_restart_cycles < 0) v.error(1003, "running restart cycles", "must not be negative");
-      k.initial_dt = v["initial time step"];
-      if (k.initial_dt < 0) v.error(1003, "initial time step", "must not be negative");
-      k.penalty_scale = v["penalty scale factor"];
-      if (k.penalty_scale == 0) k.penalty_scale = 0.10;
-      if (k.penalty_scale < 0) v.error(1003, "penalty scale factor", "must be positive");
-      k.viscosity_flag = int(v.integer("default viscosity flag"));
-      k.tssf = v["time-step scale factor"];
-      if (k.tssf == 0) k.tssf = 0.90;
-      if (!(k.tssf > 0 && k.tssf <= 1)) v.error(1215, "time-step scale factor");
-    }
-    {
-      Card c = next("control card 7");
-      FixedValues v(c, fixed_card_layout("control card 7", vintage_));
-      note_ignored(v);
-      if (vintage_ == FixedVintage::dyna3d_later) mass_damping_sets_ = bounded_count(v, "mass damping sets", remaining_cards());
-    }
-    {
-      Card c = next("control card 8");
-      FixedValues v(c, fixed_card_layout("control card 8", vintage_));
-      note_ignored(v);
-      k.min_step_factor = v["minimum step factor"];
-      if (k.min_step_factor < 0 || k.min_step_factor >= 1) v.error(1003, "minimum step factor", "must be in [0, 1)");
-      beam_rules_ = bounded_count(v, "beam integration rules", remaining_cards());
-      beam_rule_points_ = int(v.integer("beam integration points"));
-    }
-    {
-      Card c = next("control card 9");
-      FixedValues v(c, fixed_card_layout("control card 9", vintage_));
-      note_ignored(v);
-      // mass scaling (IMPACT-3D choice: no DYNA3D manual places it; LS-DYNA's DT2MS, MS1ST, ENDMAS)
-      k.mass_scaling_dt = v["DT2MS"];
-      const long long ms1st = v.integer("MS1ST");
-      if (ms1st != 0 && ms1st != 1) v.error(1006, "MS1ST", "0 (mass scaling every cycle) or 1 (the first cycle only)");
-      k.mass_scaling_first_only = ms1st == 1;
-      k.end_mass_percent = v["ENDMAS"];
-      if (k.end_mass_percent < 0) v.error(1003, "ENDMAS", "must not be negative (0 or blank: no limit)");
-      const long long erode = v.integer("ERODE");  // IMPACT-3D choice: LS-DYNA's *CONTROL_TIMESTEP ERODE
-      if (erode != 0 && erode != 1) v.error(1006, "ERODE", "0 (the run ends below the minimum step) or 1 (solids below it are deleted)");
-      k.erode_small_steps = erode == 1;
-    }
+  }
+
+  void read_control_card_6() {
+    ControlData& k = m_.control;
+    Card c = next("control card 6");
+    FixedValues v(c, fixed_card_layout("control card 6", vintage_));
+    note_ignored(v);
+    k.end_time = v["termination time"];
+    if (!(k.end_time > 0)) v.error(1214, "termination time");
+    k.th_interval = v["time-history interval"];
+    k.plot_interval = v["plot interval"];
+    if (k.th_interval < 0) v.error(1221, "time-history interval");
+    if (k.plot_interval < 0) v.error(1221, "plot interval");
+    if (k.th_interval == 0) k.th_interval = k.end_time / 1000;
+    if (k.plot_interval == 0) k.plot_interval = k.end_time / 20;
+    k.restart_dump_cycles = int(v.integer("restart dump cycles"));
+    k.running_restart_cycles = int(v.integer("running restart cycles"));
+    if (k.restart_dump_cycles < 0) v.error(1003, "restart dump cycles", "must not be negative");
+    if (k.running_restart_cycles < 0) v.error(1003, "running restart cycles", "must not be negative");
+    k.initial_dt = v["initial time step"];
+    if (k.initial_dt < 0) v.error(1003, "initial time step", "must not be negative");
+    k.penalty_scale = v["penalty scale factor"];
+    if (k.penalty_scale == 0) k.penalty_scale = 0.10;
+    if (k.penalty_scale < 0) v.error(1003, "penalty scale factor", "must be positive");
+    k.viscosity_flag = int(v.integer("default viscosity flag"));
+    k.tssf = v["time-step scale factor"];
+    if (k.tssf == 0) k.tssf = 0.90;
+    if (!(k.tssf > 0 && k.tssf <= 1)) v.error(1215, "time-step scale factor");
+  }
+
+  void read_control_card_7() {
+    Card c = next("control card 7");
+    FixedValues v(c, fixed_card_layout("control card 7", vintage_));
+    note_ignored(v);
+    if (vintage_ == FixedVintage::dyna3d_later) mass_damping_sets_ = bounded_count(v, "mass damping sets", remaining_cards());
+  }
+
+  void read_control_card_8() {
+    ControlData& k = m_.control;
+    Card c = next("control card 8");
+    FixedValues v(c, fixed_card_layout("control card 8", vintage_));
+    note_ignored(v);
+    k.min_step_factor = v["minimum step factor"];
+    if (k.min_step_factor < 0 || k.min_step_factor >= 1) v.error(1003, "minimum step factor", "must be in [0, 1)");
+    beam_rules_ = bounded_count(v, "beam integration rules", remaining_cards());
+    beam_rule_points_ = int(v.integer("beam integration points"));
+  }
+
+  void read_control_card_9() {
+    ControlData& k = m_.control;
+    Card c = next("control card 9");
+    FixedValues v(c, fixed_card_layout("control card 9", vintage_));
+    note_ignored(v);
+    // mass scaling (IMPACT-3D choice: no DYNA3D manual places it; LS-DYNA's DT2MS, MS1ST, ENDMAS)
+    k.mass_scaling_dt = v["DT2MS"];
+    const long long ms1st = v.integer("MS1ST");
+    if (ms1st != 0 && ms1st != 1) v.error(1006, "MS1ST", "0 (mass scaling every cycle) or 1 (the first cycle only)");
+    k.mass_scaling_first_only = ms1st == 1;
+    k.end_mass_percent = v["ENDMAS"];
+    if (k.end_mass_percent < 0) v.error(1003, "ENDMAS", "must not be negative (0 or blank: no limit)");
+    const long long erode = v.integer("ERODE");  // IMPACT-3D choice: LS-DYNA's *CONTROL_TIMESTEP ERODE
+    if (erode != 0 && erode != 1) v.error(1006, "ERODE", "0 (the run ends below the minimum step) or 1 (solids below it are deleted)");
+    k.erode_small_steps = erode == 1;
   }
 
   // The counts of control card 2 of the small format (no DYNA3D deck of this vintage is known):
@@ -979,8 +1000,14 @@ class Dyna3dReader {
       read_shell_cards(v, seen);
     }
     report_missing(seen, "shell element");
-    // solids of shell materials
-    int solid_of_shell = 0;
+    refuse_solids_of_shell_materials();
+    drop_unused_rotation_codes();
+  }
+
+  // Solid element cards that name a shell material (element type 2): error 1203 on the card's
+  // material field (its columns from the solid element card table).
+  void refuse_solids_of_shell_materials() {
+    const FixedField& f = sized_layout("solid element card").field("material number");
     for (std::size_t e = 0; e < m_.hex_material.size(); ++e) {
       const int mat = m_.hex_material[e];
       if (mat < 0 || !m_.materials[std::size_t(mat)].shell) continue;
@@ -988,30 +1015,32 @@ class Dyna3dReader {
       loc.file = deck_.name();
       loc.line = m_.hex_line[e];
       loc.card = "solid element card for element " + std::to_string(e + 1);
-      loc.field = "material number";
-      loc.col_first = idw_ + 1;
-      loc.col_last = idw_ + 5;
-      ++solid_of_shell;
+      loc.field = f.name;
+      loc.col_first = f.c1;
+      loc.col_last = f.c2;
       diag_.add(1203, loc, "material " + std::to_string(mat + 1) + " is a shell material (element type 2); solids need element type 0");
       m_.hex_material[e] = -1;
       m_.hex_nodes[e].fill(-1);
     }
-    // rotational codes on nodes no shell uses
-    if (!rot_code_line_.empty()) {
-      const std::vector<char>& shell_node = rotation_nodes();
-      int count = 0, first_line = 0;
-      for (std::size_t i = 0; i < rot_code_line_.size(); ++i)
-        if (rot_code_line_[i] && !shell_node[i]) {
-          if (!first_line || rot_code_line_[i] < first_line) first_line = rot_code_line_[i];
-          ++count;
-          m_.rot_bc[i] = 0;
-        }
-      if (count) {
-        Location loc;
-        loc.file = deck_.name();
-        loc.line = first_line;
-        diag_.add(2005, loc, std::to_string(count) + " node(s) that no shell uses");
+  }
+
+  // Rotational codes of node cards act on shell and beam nodes; on the others they are dropped
+  // (warning 2005, one for all, at the first such card's line).
+  void drop_unused_rotation_codes() {
+    if (rot_code_line_.empty()) return;
+    const std::vector<char>& shell_node = rotation_nodes();
+    int count = 0, first_line = 0;
+    for (std::size_t i = 0; i < rot_code_line_.size(); ++i)
+      if (rot_code_line_[i] && !shell_node[i]) {
+        if (!first_line || rot_code_line_[i] < first_line) first_line = rot_code_line_[i];
+        ++count;
+        m_.rot_bc[i] = 0;
       }
+    if (count) {
+      Location loc;
+      loc.file = deck_.name();
+      loc.line = first_line;
+      diag_.add(2005, loc, std::to_string(count) + " node(s) that no shell uses");
     }
   }
 
@@ -1257,28 +1286,7 @@ class Dyna3dReader {
       bool ok = true;
       if (node < 1 || node > m_.control.numnp) { v.error(1202, "node", "must be 1.." + std::to_string(m_.control.numnp)); ok = false; }
       pm.curve = read_curve_ref(v);
-      const long long dof = v.integer("DOF");
-      if (dof >= 1 && dof <= 3) {
-        pm.dir = {0, 0, 0};
-        pm.dir[std::size_t(dof - 1)] = 1;
-      } else if (dof == 4) {
-        const double vx = v["vx"], vy = v["vy"], vz = v["vz"];
-        const double len = std::sqrt(vx * vx + vy * vy + vz * vz);
-        if (!(len > 0)) { v.error(1213, "vx", "DOF 4 moves along the vector (vx, vy, vz), which is zero"); ok = false; }
-        else pm.dir = {vx / len, vy / len, vz / len};
-      } else if (dof >= 5 && dof <= 7) {  // a rotational velocity about x, y, z of a shell or beam node
-        pm.rotation = true;
-        pm.dir = {0, 0, 0};
-        pm.dir[std::size_t(dof - 5)] = 1;
-        if (v.integer("type") != 0) { v.error(1102, "type", "prescribed rotational accelerations and displacements (DOF 5-7 take type 0)"); ok = false; }
-        if (node >= 1 && node <= m_.control.numnp && !has_rotations(int(node) - 1)) {
-          v.error(1102, "node", "a prescribed rotation of a node no shell or beam uses (it has no rotations)");
-          ok = false;
-        }
-      } else {
-        v.error(1006, "DOF", "1-3 x y z, 4 along a vector, 5-7 rotations");
-        ok = false;
-      }
+      ok = motion_direction(v, node, pm) && ok;
       pm.scale = v["scale factor"];
       const long long type = v.integer("type");
       if (type < 0 || type > 2) { v.error(1006, "type", "0 velocity, 1 acceleration, 2 displacement"); ok = false; }
@@ -1291,6 +1299,37 @@ class Dyna3dReader {
       pm.line = c.line();
       if (ok && pm.curve >= 0) m_.prescribed_motions.push_back(pm);
     }
+  }
+
+  // The direction of a motion card's DOF: 1-3 an axis, 4 along (vx, vy, vz), 5-7 a rotation
+  // about an axis (type 0 only, of a node with rotations); false after an error.
+  bool motion_direction(const FixedValues& v, long long node, PrescribedMotion& pm) {
+    const long long dof = v.integer("DOF");
+    pm.dir = {0, 0, 0};
+    if (dof >= 1 && dof <= 3) {
+      pm.dir[std::size_t(dof - 1)] = 1;
+      return true;
+    }
+    if (dof == 4) {
+      const double vx = v["vx"], vy = v["vy"], vz = v["vz"];
+      const double len = std::sqrt(vx * vx + vy * vy + vz * vz);
+      if (!(len > 0)) { v.error(1213, "vx", "DOF 4 moves along the vector (vx, vy, vz), which is zero"); return false; }
+      pm.dir = {vx / len, vy / len, vz / len};
+      return true;
+    }
+    if (dof < 5 || dof > 7) {
+      v.error(1006, "DOF", "1-3 x y z, 4 along a vector, 5-7 rotations");
+      return false;
+    }
+    pm.rotation = true;  // a rotational velocity about x, y, z of a shell or beam node
+    pm.dir[std::size_t(dof - 5)] = 1;
+    bool ok = true;
+    if (v.integer("type") != 0) { v.error(1102, "type", "prescribed rotational accelerations and displacements (DOF 5-7 take type 0)"); ok = false; }
+    if (node >= 1 && node <= m_.control.numnp && !has_rotations(int(node) - 1)) {
+      v.error(1102, "node", "a prescribed rotation of a node no shell or beam uses (it has no rotations)");
+      ok = false;
+    }
+    return ok;
   }
 
   // Whether node n (0-based) carries rotations: a shell's or a beam's end node.
