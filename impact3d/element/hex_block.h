@@ -23,8 +23,9 @@ constexpr int kLanes = 8;
 using Lanes = double[kLanes];
 // Per-element history values a material may carry beyond stress, back stress and plastic
 // strain (material_types.h); a group gathers only as many as its material has (at most:
-// Johnson-Cook's three and a two-value equation of state).
-constexpr int kMaxHistory = 5;
+// Mooney-Rivlin's six, the left Cauchy-Green tensor; Johnson-Cook's three and a two-value
+// equation of state).
+constexpr int kMaxHistory = 6;
 
 #define IMPACT3D_FOR_LANES _Pragma("omp simd") for (int l = 0; l < kLanes; ++l)
 

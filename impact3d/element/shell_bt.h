@@ -81,10 +81,11 @@ bool calc_shell_frame(const double x[4][3], ShellFrame& fr);
 
 // Per-integration-point stress update callback data: the material updates sigma (5 per point,
 // local xx yy xy yz zx) from d (same order, transverse shears already times SHRF).
-enum class ShellMaterialKind { elastic, plastic_kinematic, piecewise_linear };
+enum class ShellMaterialKind { elastic, plastic_kinematic, piecewise_linear, mooney_rivlin };
 struct ShellPointState {
   double* sig;             // 5 per point
-  double* back;            // 6 per point (plastic-kinematic), else null
+  double* back;            // 6 per point: the back stress (plastic-kinematic) or the left Cauchy-Green
+                           // tensor less I, xx yy xy (Mooney-Rivlin, the first 3); else null
   double* eps_p;           // 1 per point (plastic-kinematic, piecewise-linear), else null
   unsigned char* yielded;  // 1 per point (plastic-kinematic, piecewise-linear), else null
   double* hgq;             // 5 hourglass resultants (stiffness forms), else null

@@ -23,6 +23,7 @@ constexpr ShellMaterial kShellMaterials[] = {
     {3, ShellKernel::plastic_kinematic, nullptr, nullptr},
     {20, ShellKernel::rigid, nullptr, nullptr},
     {24, ShellKernel::piecewise_linear, "TDEL", "deletion of shells by their time step (TDEL)"},
+    {27, ShellKernel::mooney_rivlin, nullptr, nullptr},
 };
 
 const ShellMaterial* find_shell_material(int type) {
@@ -159,7 +160,7 @@ void init_shells(const Model& m, State& s) {
     first[k] = placed;
     placed += count[k];
     plastic = plastic || shell_kernel_is_plastic(g.kernel);
-    kinematic = kinematic || g.kernel == ShellKernel::plastic_kinematic;
+    kinematic = kinematic || shell_kernel_has_back(g.kernel);
     hg_state = hg_state || (g.kernel != ShellKernel::rigid && g.constants.hourglass_type >= 4 &&
                             g.constants.hourglass_coef > 0);
     sh.groups.push_back(g);

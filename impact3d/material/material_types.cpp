@@ -23,6 +23,7 @@ const MaterialType& mat_power_law_type();
 const MaterialType& mat_simplified_johnson_cook_type();
 const MaterialType& mat_piecewise_linear_type();
 const MaterialType& mat_rigid_type();
+const MaterialType& mat_mooney_rivlin_type();
 
 std::span<const MaterialType* const> material_types() {
   static const MaterialType* const table[] = {  // in increasing number
@@ -34,6 +35,7 @@ std::span<const MaterialType* const> material_types() {
       &mat_power_law_type(),
       &mat_rigid_type(),
       &mat_piecewise_linear_type(),
+      &mat_mooney_rivlin_type(),
       &mat_simplified_johnson_cook_type(),
   };
   return table;

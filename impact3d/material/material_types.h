@@ -36,6 +36,7 @@ struct SolidPointState {
   double eps_p = 0;
   double yielded = 0;
   double hist[kMaxHistory] = {};
+  double w[3] = {0, 0, 0};  // the spin (W_xy, W_yz, W_zx; read by kernels of the whole velocity gradient)
 };
 
 // The block form of a point kernel whose work does not vectorize (Newton loops, pow/log/exp):
@@ -50,6 +51,7 @@ inline void update_block_lane_by_lane(const MaterialConstants& m, HexBlock& k, d
     st.eps_p = k.eps_p[l];
     st.yielded = k.yielded[l];
     for (int h = 0; h < nh; ++h) st.hist[h] = k.hist[h][l];
+    for (int c = 0; c < 3; ++c) st.w[c] = k.w[c][l];
     update_point(m, d, dt, st);
     for (int c = 0; c < 6; ++c) k.sig[c][l] = st.sig[c];
     k.eps_p[l] = st.eps_p;

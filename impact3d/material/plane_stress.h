@@ -40,4 +40,16 @@ double update_plane_stress_piecewise_linear(const MaterialConstants& m, const do
                                             double dt, double sig[5],
                                             const PlaneStressPlastic& h);
 
+// Type 27 (Mooney-Rivlin rubber, *MAT_027; types/mat_mooney_rivlin.cpp): incompressible plane
+// stress.  b holds the point's in-plane left Cauchy-Green tensor less I (xx yy xy) in the
+// shell's co-rotational frame, updated with the in-plane rate (b <- dF b dF^T, dF = (I - dt/2
+// D)^-1 (I + dt/2 D)); the thickness stretch squared is b_zz = 1 / det(b) (incompressible); the
+// pressure makes sigma_zz = 0: sigma = 2 (A + B I1) b - 2 B b^2 - p I.  The shells keep their
+// initial thickness, so the stress returned is this Cauchy stress times the thickness stretch
+// sqrt(b_zz) (the force per unit initial thickness: resultants and the stress power per initial
+// volume are those of the thinned shell).  The transverse shears are elastic with G = 2 (A + B).
+// Returns d_zz = -(d_xx + d_yy).
+double update_plane_stress_mooney_rivlin(const MaterialConstants& m, const double d[5], double dt, double sig[5],
+                                         double b[3]);
+
 }  // namespace impact3d

@@ -13,7 +13,13 @@ namespace impact3d {
 
 // Shell kernels, chosen per group from the material type (one table: kShellMaterials in
 // init/shell_init.cpp).
-enum class ShellKernel : std::uint8_t { rigid, elastic, plastic_kinematic, piecewise_linear };
+enum class ShellKernel : std::uint8_t { rigid, elastic, plastic_kinematic, piecewise_linear, mooney_rivlin };
+
+// Whether a kernel keeps 6 values per integration point in ShellState::back (the back stress of
+// the plastic-kinematic kernel, the left Cauchy-Green tensor of the Mooney-Rivlin one).
+inline bool shell_kernel_has_back(ShellKernel k) {
+  return k == ShellKernel::plastic_kinematic || k == ShellKernel::mooney_rivlin;
+}
 
 // Whether a kernel keeps a plastic strain per integration point (eps_p, yielded; FAIL deletes).
 inline bool shell_kernel_is_plastic(ShellKernel k) {
@@ -38,7 +44,7 @@ struct ShellState {
   std::vector<int> nip;                       // integration points of each shell
   std::vector<int> ip_start;                  // first integration point of each shell
   std::vector<double> sig;                    // 5 per point: local xx yy xy yz zx
-  std::vector<double> back;                   // 6 per point (with a plastic-kinematic group; else empty)
+  std::vector<double> back;                   // 6 per point (with a plastic-kinematic or Mooney-Rivlin group; else empty)
   std::vector<double> eps_p;                  // 1 per point (with a plastic group; else empty)
   std::vector<std::uint8_t> yielded;          // 1 per point (with a plastic group; else empty)
   std::vector<double> hgq;                    // 5 per shell: hourglass resultants (stiffness forms)

@@ -12,6 +12,7 @@ constexpr int kMinShellsForThreads = 4096;
 ShellMaterialKind material_kind(ShellKernel k) {
   return k == ShellKernel::plastic_kinematic ? ShellMaterialKind::plastic_kinematic
          : k == ShellKernel::piecewise_linear ? ShellMaterialKind::piecewise_linear
+         : k == ShellKernel::mooney_rivlin    ? ShellMaterialKind::mooney_rivlin
                                               : ShellMaterialKind::elastic;
 }
 
@@ -58,7 +59,7 @@ void process_shell(State& s, const ShellGroup& g, int k, double dt) {
   gather_shell(s, k, dt, io);
   const std::size_t ip = std::size_t(sh.ip_start[std::size_t(k)]);
   const bool plastic = shell_kernel_is_plastic(g.kernel);
-  ShellPointState st{&sh.sig[5 * ip], g.kernel == ShellKernel::plastic_kinematic ? &sh.back[6 * ip] : nullptr,
+  ShellPointState st{&sh.sig[5 * ip], shell_kernel_has_back(g.kernel) ? &sh.back[6 * ip] : nullptr,
                      plastic ? &sh.eps_p[ip] : nullptr, plastic ? &sh.yielded[ip] : nullptr,
                      sh.hgq.empty() ? nullptr : &sh.hgq[5 * std::size_t(k)],
                      &sh.drill[4 * std::size_t(k)]};

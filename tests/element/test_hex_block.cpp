@@ -268,8 +268,10 @@ TEST(HexBlock, TableKernelsEqualTheirScalarKernels) {
         s.eps_p = before.eps_p[l];
         s.yielded = before.yielded[l];
         for (int h = 0; h < kMaxHistory; ++h) s.hist[h] = before.hist[h][l];
+        for (int c = 0; c < 3; ++c) s.w[c] = before.w[c][l];
         t->solid.update_point(m, d, f.dt, s);
-        for (int c = 0; c < 6; ++c) EXPECT_TRUE(same(s.sig[c], f.k.sig[c][l])) << "type " << t->number << " lane " << l << " c " << c;
+        for (int h = 0; h < int(t->history.size()); ++h) EXPECT_TRUE(same(s.hist[h], f.k.hist[h][l])) << "type " << t->number << " h " << h;
+        for (int c = 0; c < 6; ++c) EXPECT_TRUE(same(s.sig[c], f.k.sig[c][l])) << "type " << t->number << " lane " << l << " c " << c << " " << s.sig[c] << " " << f.k.sig[c][l];
         if (t->solid.plastic_strain) {
           EXPECT_TRUE(same(s.eps_p, f.k.eps_p[l])) << "type " << t->number << " lane " << l;
           EXPECT_EQ(s.yielded, f.k.yielded[l]);
