@@ -9,6 +9,7 @@
 #include "impact3d/init/beam_init.h"
 #include "impact3d/init/shell_init.h"
 #include "impact3d/material/eos.h"
+#include "impact3d/material/material_types.h"
 #include "impact3d/solve/element_groups.h"
 
 namespace impact3d {
@@ -86,6 +87,18 @@ void init_elements(const Model& m, State& s) {
     s.rigid_elem[std::size_t(e)] = hex_kernel_for_material_type(mc.type) == HexKernel::rigid;
     // rigid solids have no step of their own and never change it
     if (s.rigid_elem[std::size_t(e)]) s.dt_e[std::size_t(e)] = std::numeric_limits<double>::infinity();
+    const MaterialData& md = m.materials[std::size_t(s.mat[std::size_t(e)])];
+    if (const MaterialType* t = find_material_type(md.type); t && t->temperature_history >= 0) {
+      // the solid's initial temperature: the mean of its nodes' (*INITIAL_TEMPERATURE), a node
+      // without one at the material's initial temperature
+      double sum = 0;
+      for (int j = 0; j < 8; ++j) {
+        const std::size_t n = std::size_t(s.conn[std::size_t(e)][std::size_t(j)]);
+        const double tn = n < m.node_temperature.size() ? m.node_temperature[n] : std::nan("");
+        sum += std::isnan(tn) ? t->initial_temperature(md) : tn;
+      }
+      s.hist[std::size_t(s.hist_stride) * std::size_t(e) + std::size_t(t->temperature_history)] = sum / 8;
+    }
     if (mc.eos_form != 0) {  // an equation of state: the initial energy E0 and its pressure
       const double e0 = m.materials[std::size_t(s.mat[std::size_t(e)])].eos.e0;
       s.hist[std::size_t(s.hist_stride) * std::size_t(e) + std::size_t(mc.eos_hist)] = e0;

@@ -231,6 +231,7 @@ void permute_model(Model& m, const std::vector<int>& node_new_of_old, const std:
   permute_array(m.node_user_id, node_new_of_old);
   permute_array(m.rot_bc, node_new_of_old);
   permute_array(m.init_omega, node_new_of_old);
+  permute_array(m.node_temperature, node_new_of_old);
   // per solid, and their nodes
   for (auto& hn : m.hex_nodes)
     for (int& n : hn) n = node(n);

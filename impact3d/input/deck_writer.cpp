@@ -154,6 +154,7 @@ class KeywordWriter {
     curves();
     walls();
     velocities();
+    temperatures();
     shell_conditions();
     interfaces();
     loads();
@@ -355,6 +356,17 @@ class KeywordWriter {
       const auto& u = v[std::size_t(n)];
       os_ << "*INITIAL_VELOCITY_NODE\n$#     nid        vx        vy        vz       vxr       vyr       vzr\n"
           << kcard({I(nid(n)), R(u[0]), R(u[1]), R(u[2]), R(w[0]), R(w[1]), R(w[2])}) << "\n";
+    }
+  }
+
+  // *INITIAL_TEMPERATURE_NODE: the nodes given one.
+  void temperatures() {
+    bool head = true;
+    for (std::size_t n = 0; n < m_.node_temperature.size(); ++n) {
+      if (std::isnan(m_.node_temperature[n])) continue;
+      if (head) os_ << "*INITIAL_TEMPERATURE_NODE\n$#     nid      temp       loc\n";
+      head = false;
+      os_ << kcard({I(nid(int(n))), R(m_.node_temperature[n])}) << "\n";
     }
   }
 
@@ -662,6 +674,7 @@ class FixedWriter {
 
   void write() {
     if ((!m_.node_user_id.empty() || !m_.hex_user_id.empty())) note("node and element ids renumbered 1..N (the fixed format needs 1..N)");
+    if (!m_.node_temperature.empty()) note("initial nodal temperatures (*INITIAL_TEMPERATURE) have no fixed-format card: not written");
     os_ << T("title card").text("title", m_.title).text("format digits", "88").text("format flag", "large").str() << "\n";
     os_ << "*----- written by IMPACT-3D (impact3d --write-fixed); layout: README.md \"Deck format\"\n";
     control_cards_2_to_4();

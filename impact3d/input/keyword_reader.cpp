@@ -511,6 +511,13 @@ struct RWall {
   Ref nsidex_ref, boxid_ref;
   StoneWall w;
 };
+struct RTemperature {    // one *INITIAL_TEMPERATURE_NODE / _SET card, in deck order
+  bool set = false;       // NSID (0: all nodes), else NID
+  int id = 0;
+  double temp = 0;
+  Ref ref;
+};
+
 struct RVelocity {       // one initial-velocity definition, in deck order
   enum Kind { all, node_set, node, part, part_set } kind = all;
   int id = 0;
@@ -639,6 +646,7 @@ class KeywordReader {
   std::vector<RContact> contacts_;
   std::vector<RWall> walls_;
   std::vector<RVelocity> velocities_;
+  std::vector<RTemperature> temperatures_;
   std::vector<RSpc> spcs_;
   std::vector<RHistory> histories_;
   std::vector<RLoad> loads_;
@@ -1422,6 +1430,8 @@ bool is_ascii_database(const std::string& n) {
         diag_.add(2008, loc, why);
       } else if (n == "INITIAL_VELOCITY") {
         parse_initial_velocity(b);
+      } else if (n == "INITIAL_TEMPERATURE_NODE" || n == "INITIAL_TEMPERATURE_SET") {
+        parse_initial_temperature(b, n == "INITIAL_TEMPERATURE_SET");
       } else if (n == "INITIAL_VELOCITY_NODE") {
         parse_initial_velocity_node(b);
       } else if (n == "INITIAL_VELOCITY_GENERATION") {
@@ -2189,6 +2199,45 @@ bool is_ascii_database(const std::string& n) {
         c.error(1003, 1, "NSIDEX", "a node set id (0: none)");
       }
       velocities_.push_back(v);
+    }
+  }
+
+  // *INITIAL_TEMPERATURE_NODE (NID TEMP LOC per card) and _SET (NSID TEMP LOC; NSID 0: every
+  // node): the nodes' initial temperatures, in deck order (a later card wins); LOC (a shell
+  // surface) is warning 2006: the temperature holds through the thickness.
+  void parse_initial_temperature(const Block& b, bool set) {
+    for (std::size_t k = 0; k < b.data.size(); ++k) {
+      if (is_blank(b.data[k].line->text)) continue;
+      KCard c = card(b, k, "", W(b, 3));
+      RTemperature t;
+      t.set = set;
+      t.id = int(c.i(0, set ? "NSID" : "NID"));
+      t.ref = c.ref(0);
+      t.temp = c.r(1, "TEMP");
+      if (c.i(2, "LOC") != 0) c.error(2006, 2, "LOC", "a shell surface: the temperature holds through the thickness");
+      temperatures_.push_back(t);
+    }
+  }
+
+  void resolve_temperatures() {
+    if (temperatures_.empty()) return;
+    m_.node_temperature.assign(std::size_t(m_.num_nodes()), std::nan(""));
+    for (const RTemperature& t : temperatures_) {
+      const char* kw = t.set ? "*INITIAL_TEMPERATURE_SET" : "*INITIAL_TEMPERATURE_NODE";
+      std::vector<int> nodes;
+      if (!t.set) {
+        const int idx = node_index(t.id);
+        if (idx < 0) {
+          err(1202, t.ref, kw, "NID", "node " + std::to_string(t.id) + " is not defined by *NODE");
+          continue;
+        }
+        nodes = {idx};
+      } else if (t.id == 0) {
+        for (int i = 0; i < m_.num_nodes(); ++i) nodes.push_back(i);
+      } else if (const RIdList* s = find_node_set(t.id, t.ref, kw, "NSID")) {
+        nodes = set_nodes(*s, "*SET_NODE " + std::to_string(t.id));
+      }
+      for (int n : nodes) m_.node_temperature[std::size_t(n)] = t.temp;
     }
   }
 
@@ -3256,6 +3305,7 @@ bool is_ascii_database(const std::string& n) {
     resolve_curves();
     resolve_walls();
     resolve_velocities();
+    resolve_temperatures();
     resolve_contacts();
     resolve_loads();
   }

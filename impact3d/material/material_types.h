@@ -143,6 +143,11 @@ struct MaterialType {
   bool accepts_eos = false;
   bool needs_eos = false;
   std::vector<const char*> history;       // names of the per-element history values (<= kMaxHistory)
+  // the history value that holds a solid's absolute temperature (-1: none): the starter sets it
+  // to the mean of its nodes' *INITIAL_TEMPERATURE (Model::node_temperature), a node without one
+  // counting as initial_temperature(md)
+  int temperature_history = -1;
+  double (*initial_temperature)(const MaterialData&) = nullptr;
 };
 
 // E and nu, which every type has (keyword card 1 fields 2 and 3; fixed format where given).

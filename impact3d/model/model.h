@@ -322,6 +322,10 @@ struct Model {
   // rotational velocities (empty: none); they act on nodes that shells use.
   std::vector<std::uint8_t> rot_bc;
   std::vector<std::array<double, 3>> init_omega;
+  // Initial nodal temperatures (*INITIAL_TEMPERATURE_NODE / _SET; NaN: none given for the node;
+  // empty: none at all): a material with a temperature (type 107) starts each solid at the mean
+  // of its nodes'.
+  std::vector<double> node_temperature;
   double shell_rotary_scale = 1.0;           // *CONTROL_SHELL ROTASCL: scales the rotary inertia
   int num_shells() const { return static_cast<int>(shell_nodes.size()); }
   int shell_id(int k) const { return shell_user_id.empty() ? k + 1 : shell_user_id[std::size_t(k)]; }

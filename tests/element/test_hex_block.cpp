@@ -234,8 +234,11 @@ TEST(HexBlock, TableKernelsEqualTheirScalarKernels) {
       // Johnson-Cook constants where the type has them (OFHC-copper-like, hot enough to soften)
       const std::pair<const char*, double> jc[] = {{"G", 43e9}, {"A", 9e7}, {"B", 2.9e8}, {"N", 0.31}, {"C", 0.025},
                                                    {"EPSO", 1}, {"M", 1.09}, {"TM", 1356}, {"TR", 293}, {"CP", 383},
-                                                   {"D1", 0.54}, {"D2", 4.89}, {"D3", -3.03}, {"D4", 0.014}, {"D5", 1.12}};
-      if (find_param(*t, "A"))
+                                                   {"D1", 0.54}, {"D2", 4.89}, {"D3", -3.03}, {"D4", 0.014}, {"D5", 1.12},
+                                                   // type 107's names (its history 0 is the temperature: 0-700 K)
+                                                   {"A/SIGA", 9e7}, {"B/B", 2.9e8}, {"N/BETA0", 0.31}, {"C/BETA1", 0.025},
+                                                   {"M/NA", 1.09}, {"E0DOT", 1}, {"XSI", 0.9}};
+      if (find_param(*t, "A") || find_param(*t, "A/SIGA"))
         for (const auto& [key, v] : jc)
           if (const MaterialParam* p = find_param(*t, key)) param_value(md, *p) = v;
       if (find_param(*t, "K")) {  // power law: the yield strain (E / K)^(1 / (N - 1)) = 4.1e-4
