@@ -45,7 +45,9 @@ struct Surface {
   std::vector<double> node_k;          // per node: the smallest k0 of its segments (PENOPT)
   std::vector<double> pmax;            // largest accepted penetration
   std::vector<int> elem;               // the solid each segment is a face of (-1: none found)
-  std::vector<int> shell;              // the shell each segment is (-1: a solid face): both sides
+  std::vector<int> shell;              // the shell each segment is (-1: a solid face)
+  std::vector<std::uint8_t> two_sided; // 1: a shell with its contact surfaces at +-t/2 (both sides
+                                       // usable); 0: a solid face or a mid-surface shell (one side)
   // eroding interfaces: the solid on the face's other side (-1: none).  A face is in the surface
   // while its solid lives and the other one (if any) has failed: interior faces join the
   // surface as failures expose them.  A node is in the surface while one of its faces is.
@@ -138,17 +140,28 @@ std::array<int, 4> segment_key(std::array<int, 4> f) {
 // Shell lookup of the segments (by their nodes) and half the thickest shell on each node.
 struct ShellIndex {
   std::map<std::array<int, 4>, int> by_key;
-  std::vector<double> node_half;  // per model node
+  std::vector<double> node_half;             // per model node: over every shell
+  std::vector<double> node_half_deformable;  // the same over the deformable shells only
 };
+
+// Does shell k keep its +-t/2 contact surfaces under SlidingInterface::shell_thickness `mode`?
+bool shell_has_offsets(const State& s, int k, int mode) {
+  return mode == 2 || (mode == 1 && !s.shells.rigid_elem[std::size_t(k)]);
+}
 
 ShellIndex build_shell_index(const State& s) {
   ShellIndex ix;
   const ShellState& sh = s.shells;
   ix.node_half.assign(std::size_t(s.nn), 0.0);
+  ix.node_half_deformable.assign(std::size_t(s.nn), 0.0);
   for (int k = 0; k < sh.ns; ++k) {
     ix.by_key.try_emplace(segment_key(sh.conn[std::size_t(k)]), k);
-    for (int n : sh.conn[std::size_t(k)])
-      ix.node_half[std::size_t(n)] = std::max(ix.node_half[std::size_t(n)], 0.5 * sh.thick[std::size_t(k)]);
+    const double half = 0.5 * sh.thick[std::size_t(k)];
+    for (int n : sh.conn[std::size_t(k)]) {
+      ix.node_half[std::size_t(n)] = std::max(ix.node_half[std::size_t(n)], half);
+      if (shell_has_offsets(s, k, 1))
+        ix.node_half_deformable[std::size_t(n)] = std::max(ix.node_half_deformable[std::size_t(n)], half);
+    }
   }
   return ix;
 }
@@ -186,8 +199,9 @@ void elements_of_eroding_segment(const State& s, const std::array<int, 4>& sg, i
   if (elem < 0) std::swap(elem, other);  // (given inward: the face of that element all the same)
 }
 
+// shell_mode: SlidingInterface::shell_thickness
 void build_surface(const State& s, const ShellIndex& shx, const std::vector<std::array<int, 4>>& segs, double mu,
-                   Surface& sf, bool eroding = false) {
+                   int shell_mode, Surface& sf, bool eroding = false) {
   sf.seg = segs;
   sf.eroding = eroding;
   const std::size_t ns = segs.size();
@@ -203,6 +217,7 @@ void build_surface(const State& s, const ShellIndex& shx, const std::vector<std:
   sf.pmax.assign(ns, 0.0);
   sf.elem.assign(ns, -1);
   sf.shell.assign(ns, -1);
+  sf.two_sided.assign(ns, 0);
   sf.offset.assign(ns, 0.0);
   // rim edges: used by one segment only (a collapsed edge of a triangle is skipped)
   // (eroding: the rim of the initial surface, the faces without a second solid)
@@ -233,18 +248,25 @@ void build_surface(const State& s, const ShellIndex& shx, const std::vector<std:
     sf.elem[j] = el;
     const auto it = el < 0 ? shx.by_key.find(segment_key(sg)) : shx.by_key.end();
     if (it != shx.by_key.end()) {
-      // a shell: its mid-surface with the contact surfaces at +-t/2, both sides usable;
-      // k = mu K A / (longest diagonal) (LS-DYNA's shell form); a node is in contact down to
-      // the mid-surface (past it, it is on the other side)
+      // a shell: k = mu K A / (longest diagonal) (LS-DYNA's shell form).  With offsets: its
+      // mid-surface with the contact surfaces at +-t/2, both sides usable, a node in contact down
+      // to the mid-surface (past it, it is on the other side).  Without (DYNA3D): the
+      // mid-surface itself, one-sided along the segment's normal as written, a node in contact
+      // down to half the segment's width (as a solid face's depth limit)
       const int k = it->second;
       sf.shell[j] = k;
-      const double half = 0.5 * s.shells.thick[std::size_t(k)];
-      sf.offset[j] = half;
       const double d1 = std::hypot(X[2][0] - X[0][0], X[2][1] - X[0][1], X[2][2] - X[0][2]);
       const double d2 = std::hypot(X[3][0] - X[1][0], X[3][1] - X[1][1], X[3][2] - X[1][2]);
       sf.k0[j] = contact::shell_stiffness(mu, s.mats[std::size_t(s.shells.mat[std::size_t(k)])].K, area,
                                           std::max(d1, d2));
-      sf.pmax[j] = half;
+      if (shell_has_offsets(s, k, shell_mode)) {
+        const double half = 0.5 * s.shells.thick[std::size_t(k)];
+        sf.two_sided[j] = 1;
+        sf.offset[j] = half;
+        sf.pmax[j] = half;
+      } else {
+        sf.pmax[j] = kDepthFactor * std::sqrt(area);
+      }
     } else {
       double vol = 0, K = 0;
       if (el >= 0) {
@@ -289,11 +311,14 @@ void build_surface(const State& s, const ShellIndex& shx, const std::vector<std:
       double& kn = sf.node_k[std::size_t(sf.local[j][std::size_t(a)])];
       if (sf.k0[j] > 0) kn = kn > 0 ? std::min(kn, sf.k0[j]) : sf.k0[j];
     }
-  // the nodes' own shell offsets: a shell node touches at half its shell's thickness
+  // the nodes' own shell offsets: a shell node touches at half its shell's thickness (none at
+  // the mid-surface)
   sf.node_off.assign(sf.nodes.size(), 0.0);
   sf.node_off_max = 0;
+  if (shell_mode == 0) return;
+  const std::vector<double>& half = shell_mode == 2 ? shx.node_half : shx.node_half_deformable;
   for (std::size_t q = 0; q < sf.nodes.size(); ++q) {
-    sf.node_off[q] = shx.node_half[std::size_t(sf.nodes[q])];
+    sf.node_off[q] = half[std::size_t(sf.nodes[q])];
     sf.node_off_max = std::max(sf.node_off_max, sf.node_off[q]);
   }
 }
@@ -506,11 +531,10 @@ void SlidingInterfaces::Impl::node_pass(const Model&, const State& s, Interface&
       if (ring && std::any_of(sg.begin(), sg.end(), [&](int v) { return std::binary_search(ring, ring_end, v); }))
         continue;
       if (!segment_active(s, segs, std::size_t(j))) continue;
-      const int shl = segs.shell[std::size_t(j)];
       double X[4][3];
       seg_coords(s, sg, X);
       ++hit.evaluations;
-      contact::SegmentHit h = shl >= 0 ? contact::closest_point_on_shell_segment(X, p, kInteriorTol)
+      contact::SegmentHit h = segs.two_sided[std::size_t(j)] ? contact::closest_point_on_shell_segment(X, p, kInteriorTol)
                                        : contact::closest_point_on_segment(X, p, segs.boundary[std::size_t(j)], kInteriorTol);
       if (!h.valid) continue;
       // nearest contact surface (the mid-surface distance less the offsets); at equal distance
@@ -644,8 +668,9 @@ void SlidingInterfaces::initialize(const Model& m, const State& s) {
       in.npass = 1;
       in.symmetric = true;
     }
-    build_surface(s, shx, d.slave, in.mu, in.surf[0], d.eroding);
-    build_surface(s, shx, in.single ? std::vector<std::array<int, 4>>{} : d.master, in.mu, in.surf[1], d.eroding);
+    build_surface(s, shx, d.slave, in.mu, d.shell_thickness, in.surf[0], d.eroding);
+    build_surface(s, shx, in.single ? std::vector<std::array<int, 4>>{} : d.master, in.mu, d.shell_thickness,
+                  in.surf[1], d.eroding);
     if (in.single) build_rings(in.surf[0]);
     for (int p = 0; p < in.npass; ++p) {
       Pass& ps = in.pass[p];

@@ -547,10 +547,14 @@ class KeywordWriter {
     return s;
   }
 
-  // optional card A: SOFT 0 (DYNA3D), 1 (LS-DYNA soft constraint, SOFSCL), -1 (IMPACT-3D maximum stable)
-  void soft_card(const SlidingInterface& si) {
+  // optional card A: SOFT 0 (DYNA3D), 1 (LS-DYNA soft constraint, SOFSCL), -1 (IMPACT-3D maximum
+  // stable); card B of a non-automatic contact whose shells keep their thickness: THKOPT 1 with
+  // its SHLTHK (*CONTROL_CONTACT SHLTHK, written blank, leaves them at their mid-surface)
+  void soft_card(const SlidingInterface& si, bool automatic) {
     const int soft = si.stiffness_method == 2 ? 1 : si.stiffness_method == 1 ? -1 : 0;
     os_ << "$#    soft    sofscl\n" << kcard({I(soft), R(si.sofscl)}) << "\n";
+    if (!automatic && si.shell_thickness != 0)
+      os_ << "$#  penmax    thkopt    shlthk\n" << kcard({B(), I(1), I(si.shell_thickness)}) << "\n";
   }
 
   void interfaces() {
@@ -564,7 +568,7 @@ class KeywordWriter {
         double s = si.penalty_scale == 0 ? 1.0 : scale_factor(si.penalty_scale, m_.control.penalty_scale);
         os_ << "$#    sfsa      sfsb\n" << kcard({R(s), R(s)}) << "\n";
         if (si.eroding) os_ << "$#    isym    erosop      iadj\n" << kcard({I(0), I(1), I(0)}) << "\n";
-        soft_card(si);
+        soft_card(si, true);
         continue;
       }
       int a = segment_set(si.slave), b = segment_set(si.master);
@@ -581,7 +585,7 @@ class KeywordWriter {
       if (si.penalty_scale != 0 && s == 1.0) note("sliding interface penalty scale equal to the control value: written as the default");
       os_ << "$#    sfsa      sfsb\n" << kcard({R(s), R(s)}) << "\n";
       if (si.eroding) os_ << "$#    isym    erosop      iadj\n" << kcard({I(0), I(1), I(0)}) << "\n";
-      soft_card(si);
+      soft_card(si, si.eroding);
     }
     // force transducers: their sides as node sets (SURFATYP / SURFBTYP 4)
     for (const ForceTransducer& ft : m_.force_transducers) {
@@ -1019,6 +1023,8 @@ class FixedWriter {
     for (const SlidingInterface& si : m_.interfaces) {
       if (si.stiffness_method == 2) note("sliding interface: LS-DYNA's soft constraint (SOFT 1) has no fixed-format value: written as stiffness method 2");
       if (si.penopt != 2) note("sliding interface: PENOPT " + std::to_string(si.penopt) + " has no fixed-format field (the fixed format takes the segment's stiffness)");
+      if (si.type == 3 && si.shell_thickness != 0 && m_.num_shells() > 0)
+        note("sliding interface: shell thickness offsets (SHLTHK " + std::to_string(si.shell_thickness) + ") have no fixed-format field (the fixed format's interfaces meet shells at their mid-surface)");
     }
     for (const SlidingInterface& si : m_.interfaces)
       for (const auto* segs : {&si.slave, &si.master})
@@ -1328,6 +1334,7 @@ std::vector<std::string> model_differences(const Model& a, const Model& b, int m
     D(s + "sofscl", x.sofscl, y.sofscl);
     N(s + "penopt", x.penopt, y.penopt);
     N(s + "symmetric", x.symmetric, y.symmetric);
+    N(s + "shell thickness", x.shell_thickness, y.shell_thickness);
     N(s + "eroding", x.eroding, y.eroding);
     if (x.slave != y.slave) diff(s + "slave segments", std::to_string(x.slave.size()), std::to_string(y.slave.size()));
     if (x.master != y.master) diff(s + "master segments", std::to_string(x.master.size()), std::to_string(y.master.size()));

@@ -1624,6 +1624,8 @@ class Dyna3dReader {
     si.stiffness_method = int(v.integer("stiffness method"));
     const long long one_pass = v.integer("one-pass flag");
     si.symmetric = one_pass == 0 && si.type != 4;  // (single surface: one pass over its own nodes)
+    // DYNA3D's sliding interfaces meet shells at their mid-surface (single surface: both sides)
+    si.shell_thickness = si.type == 4 ? 2 : 0;
     if (si.fs < 0) v.error(1219, "static friction");
     if (si.fd < 0) v.error(1219, "dynamic friction");
     if (si.decay < 0) v.error(1003, "decay coefficient", "must not be negative");

@@ -499,6 +499,8 @@ struct RContact {
   bool transducer = false;          // *CONTACT_FORCE_TRANSDUCER_PENALTY
   bool single = false;              // *CONTACT_AUTOMATIC_SINGLE_SURFACE (SURFA only)
   bool eroding = false;             // *CONTACT_ERODING_* with EROSOP 1: interior faces join
+  bool automatic = false;           // _AUTOMATIC_, single surface, eroding: shells always at +-t/2
+  int thkopt = 0, shlthk = 0;       // optional card B (THKOPT 1: SHLTHK of the card; 2: none)
   int cid = 0;                      // _ID: the contact id
   Ref ref;
   std::string keyword;
@@ -697,6 +699,7 @@ class KeywordReader {
   bool ms1st_ = false, erode_ = false;
   double slsfac_ = 0.1;
   int penopt_ = 1;  // *CONTROL_CONTACT PENOPT (LS-DYNA's default: the smaller stiffness)
+  int shlthk_ = 0;  // *CONTROL_CONTACT SHLTHK (non-automatic contacts: 0 shells at mid-surface)
   int ikedit_ = 100;
   double d3plot_dt_ = 0, d3thdt_dt_ = -1, nodout_dt_ = -1, elout_dt_ = -1, glstat_dt_ = -1, ncforc_dt_ = 0;
   int spcforc_ = 0;
@@ -1362,6 +1365,8 @@ bool is_ascii_database(const std::string& n) {
           if (slsfac_ == 0) slsfac_ = 0.1;
           if (slsfac_ < 0) c.error(1003, 0, "SLSFAC", "must be positive");
           // PENOPT: 0 and 1 the smaller of segment and node stiffness, 2 the segment's, 3 the node's
+          shlthk_ = int(c.i(3, "SHLTHK"));
+          if (shlthk_ < 0 || shlthk_ > 2) c.error(1006, 3, "SHLTHK", "0 shells at their mid-surface, 1 at +-t/2 except rigid shells, 2 at +-t/2");
           penopt_ = int(c.i(4, "PENOPT"));
           if (penopt_ == 0) penopt_ = 1;
           if (penopt_ == 4 || penopt_ == 5) c.error(1102, 4, "PENOPT", "area- or mass-weighted node stiffness (IMPACT-3D has 1 the smaller, 2 the segment's, 3 the node's)");
@@ -2861,6 +2866,7 @@ bool is_ascii_database(const std::string& n) {
     ct.transducer = transducer;
     ct.single = single;
     ct.keyword = b.keyword;
+    ct.automatic = single || eroding || b.keyword.find("AUTOMATIC") != std::string::npos;
     if (b.id_opt && k == 1) {
       KCard ci = card(b, 0, "ID card", W(b, 1));
       ct.cid = int(ci.i(0, "CID"));
@@ -2962,10 +2968,12 @@ bool is_ascii_database(const std::string& n) {
     if (ka + 1 >= b.data.size()) return;
     KCard cb = card(b, ka + 1, "optional card B", W(b, 8));
     if (cb.r(0, "PENMAX") != 0) cb.error(1102, 0, "PENMAX", "a maximum penetration (IMPACT-3D: half the segment's element, README \"Contact\")");
-    const long thkopt = cb.i(1, "THKOPT");
-    if (thkopt == 2) cb.error(1102, 1, "THKOPT", "contact without the shells' thickness");
-    else if (thkopt != 0 && thkopt != 1) cb.error(1006, 1, "THKOPT", "0 or 1 shell thickness considered");
-    if (cb.i(2, "SHLTHK") != 0) cb.error(1102, 2, "SHLTHK", "a per-contact shell thickness option");
+    // THKOPT 0: *CONTROL_CONTACT's SHLTHK, 1: SHLTHK of this card, 2: no thickness (the old
+    // way); automatic contacts always take the thickness (README "Contact")
+    ct.thkopt = int(cb.i(1, "THKOPT"));
+    if (ct.thkopt < 0 || ct.thkopt > 2) cb.error(1006, 1, "THKOPT", "0 *CONTROL_CONTACT's SHLTHK, 1 SHLTHK of this card, 2 no shell thickness");
+    ct.shlthk = int(cb.i(2, "SHLTHK"));
+    if (ct.shlthk < 0 || ct.shlthk > 2) cb.error(1006, 2, "SHLTHK", "0 shells at their mid-surface, 1 at +-t/2 except rigid shells, 2 at +-t/2");
     const long snlog = cb.i(3, "SNLOG");  // IMPACT-3D has no shooting-node logic: 0 and 1 alike
     if (snlog != 0 && snlog != 1) cb.error(1006, 3, "SNLOG", "0 or 1");
     if (cb.i(4, "ISYM") != 0) cb.error(1102, 4, "ISYM", "symmetry-plane option of the contact");
@@ -4956,6 +4964,7 @@ bool is_ascii_database(const std::string& n) {
       si.sofscl = c.sofscl;
       si.penopt = penopt_;
       si.symmetric = c.symmetric;
+      si.shell_thickness = c.automatic ? 2 : c.thkopt == 1 ? c.shlthk : c.thkopt == 2 ? 0 : shlthk_;
       si.intfor_slave = c.sapr;
       si.intfor_master = c.sbpr;
       si.line = c.ref.line ? c.ref.line->number : 0;

@@ -179,6 +179,12 @@ struct SlidingInterface {
   // default), 2 the segment's (DYNA3D), 3 the node's
   int penopt = 2;
   bool symmetric = true;
+  // Shell thickness in the contact (LS-DYNA's SHLTHK): 0 the shells meet at their mid-surface,
+  // one-sided along the segment's normal as written (DYNA3D's sliding interfaces; LS-DYNA's
+  // non-automatic contacts by default); 1 the contact surfaces at +-t/2 on both sides, rigid
+  // shells at their mid-surface; 2 +-t/2 on every shell (automatic, single-surface and
+  // eroding contacts)
+  int shell_thickness = 2;
   // *CONTACT_ERODING_*: the sides hold every face of their solids (an interior face once per
   // solid, outward from it); a face is in the surface while its solid lives and the other solid
   // of the face (if any) has failed

@@ -108,12 +108,13 @@ struct DeckBuilder {
     if (c % 8) extra << "\n";
     extra << "*INITIAL_VELOCITY\n" << ifld(sid, 10) << "\n" << fld(vx, 10) << fld(vy, 10) << fld(vz, 10) << "\n";
   }
+  int shlthk = 0;  // *CONTROL_CONTACT SHLTHK (non-automatic contacts' shell thickness)
   std::string text(double end_time, const std::string& contact) const {
     std::ostringstream d;
     d << "*KEYWORD\n*TITLE\nshell contact test\n*CONTROL_TERMINATION\n" << fld(end_time, 10) << "\n";
     // PENOPT 2: each segment's own stiffness (the closed forms below are the segments' springs;
     // LS-DYNA's default PENOPT 1 would take the smaller of the segment's and the node's)
-    d << "*CONTROL_CONTACT\n" << fld(0.1, 10) << ifld(0, 10) << ifld(0, 10) << ifld(0, 10) << ifld(2, 10) << "\n";
+    d << "*CONTROL_CONTACT\n" << fld(0.1, 10) << ifld(0, 10) << ifld(0, 10) << ifld(shlthk, 10) << ifld(2, 10) << "\n";
     d << "*NODE\n" << nodes.str() << parts.str();
     if (!shells.str().empty()) d << "*ELEMENT_SHELL\n" << shells.str();
     if (!solids.str().empty()) d << "*ELEMENT_SOLID\n" << solids.str();
@@ -248,15 +249,16 @@ TEST(ShellContactKernels, BothSidesRoundedEdgesAndStiffness) {
 
 namespace {
 
-// A rigid 2 x 2 x 2 block (50 mm, its nodes over the plate's nodes) meeting a rigid 4 x 4
-// plate of shells (0.1 m, t = 2 mm) at 5 m/s, from above (side = +1) or below (-1); a 1 mm
-// elastic cube far away sets the step (0.15 us: about 300 steps per contact).
+// A rigid 2 x 2 x 2 block (50 mm, its nodes over the plate's nodes) meeting a rigid n x n plate
+// of shells (0.1 m, t = 2 mm; n = 4, or 5: the block's nodes off the plate's node lines) at 5
+// m/s, from above (side = +1) or below (-1); a 1 mm elastic cube far away sets the step (0.15
+// us: about 300 steps per contact).
 struct RigidDrop {
   DeckBuilder d;
   DeckBuilder::Body plate, block, timer;
   static constexpr double t = 0.002, gap = 1e-4, v0 = 5, sfsa = 0.1;
-  explicit RigidDrop(int side) {
-    plate = d.plate(1, true, t, 0, 0, 0, 0.1, 0.1, 4, 4);
+  explicit RigidDrop(int side, int n = 4) {
+    plate = d.plate(1, true, t, 0, 0, 0, 0.1, 0.1, n, n);
     const double zb = side > 0 ? t / 2 + gap : -t / 2 - gap - 0.05;
     block = d.block(2, true, 0.025, 0.025, zb, 0.05, 2);
     timer = d.block(3, false, 1, 1, 1, 0.001, 1);
@@ -264,12 +266,30 @@ struct RigidDrop {
   }
 };
 
-void check_rigid_drop(int side) {
-  RigidDrop rd(side);
-  Read r = read_text(rd.d.text(1.2e-4, contact_card("AUTOMATIC_SURFACE_TO_SURFACE", 2, 1, RigidDrop::sfsa)));
+// The contact of check_rigid_drop: an automatic one (the shells' contact surfaces at +-t/2), or
+// a non-automatic one whose thickness comes from *CONTROL_CONTACT SHLTHK or card B
+struct DropContact {
+  std::string kind = "AUTOMATIC_SURFACE_TO_SURFACE";
+  int control_shlthk = 0;
+  std::string card_b;    // optional card B after card A (empty: none)
+  int mode = 2;              // expected SlidingInterface::shell_thickness
+  bool mid_surface = false;  // expected: the block meets the plate's mid-surface
+};
+
+// At the mid-surface the plate has 5 x 5 shells (20 mm): 4 plate nodes under the block, none in
+// the planes of its side faces, its 9 bottom nodes inside plate segments; a plate node in the
+// plane of a side face may take that face, which it touches, for its contact segment once it has
+// passed the bottom face (a known limit of the search at zero offsets, README "Shells in contact").
+void check_rigid_drop(int side, const DropContact& dc = DropContact{}) {
+  const int n = dc.mid_surface ? 5 : 4;
+  RigidDrop rd(side, n);
+  rd.d.shlthk = dc.control_shlthk;
+  const double end = 1.2e-4 + (dc.mid_surface ? RigidDrop::t / 2 / RigidDrop::v0 : 0.0);
+  Read r = read_text(rd.d.text(end, contact_card(dc.kind, 2, 1, RigidDrop::sfsa) + dc.card_b));
   ASSERT_TRUE(r.ok) << r.messages();
   ASSERT_EQ(r.m.interfaces.size(), 1u);
-  EXPECT_EQ(r.m.interfaces[0].master.size(), 16u);  // the plate's shells
+  EXPECT_EQ(r.m.interfaces[0].shell_thickness, dc.mode);
+  EXPECT_EQ(r.m.interfaces[0].master.size(), std::size_t(n * n));  // the plate's shells
   Engine e(r.m);
   ASSERT_EQ(e.initialize(), StepStatus::ok);
   const State& s = e.state();
@@ -278,10 +298,10 @@ void check_rigid_drop(int side) {
   EXPECT_NEAR(m2, kRho * 0.1 * 0.1 * RigidDrop::t, 1e-12);
   const double pb0 = body_momentum(s, rd.block, 2), pp0 = body_momentum(s, rd.plate, 2);
   // K: 9 block nodes on shell segments (k = mu K A / diagonal) and 9 shell nodes on block faces
-  // (k = mu K A^2 / V), all at the same penetration
-  const double mu_pen = RigidDrop::sfsa * 0.1, a_s = 0.025 * 0.025;
-  const double k_s = mu_pen * kBulk * a_s / (0.025 * std::sqrt(2.0)), k_b = mu_pen * kBulk * a_s * a_s / (a_s * 0.025);
-  const double K = 9 * (k_s + k_b), mu = m1 * m2 / (m1 + m2);
+  // (k = mu K A^2 / V; 4 on the 5 x 5 plate), all at the same penetration
+  const double mu_pen = RigidDrop::sfsa * 0.1, a_s = 0.025 * 0.025, h_p = 0.1 / n;
+  const double k_s = mu_pen * kBulk * h_p * h_p / (h_p * std::sqrt(2.0)), k_b = mu_pen * kBulk * a_s * a_s / (a_s * 0.025);
+  const double K = 9 * k_s + (dc.mid_surface ? 4 : 9) * k_b, mu = m1 * m2 / (m1 + m2);
   const Trace tr = run(r.m, e);
   ASSERT_TRUE(tr.finished);
   const double T = M_PI * std::sqrt(mu / K), pmax = RigidDrop::v0 * std::sqrt(mu / K);
@@ -295,8 +315,15 @@ void check_rigid_drop(int side) {
   // contact time within two steps, largest penetration within 1 %
   EXPECT_NEAR(tr.contact_time, T, 2 * dt);
   EXPECT_NEAR(tr.max_pen / pmax, 1.0, 0.01);
-  EXPECT_LT(tr.max_pen, RigidDrop::t / 2);  // the block never reaches the mid-surface
-  EXPECT_EQ(tr.force_after, 0.0);           // no force after separation
+  // the contact surface: t/2 above the mid-surface, or the mid-surface itself
+  const double reach = (RigidDrop::gap + (dc.mid_surface ? RigidDrop::t / 2 : 0.0)) / RigidDrop::v0;
+  std::printf("  first force at %.5g us, the contact surface reached at %.5g us\n", tr.first * 1e6, reach * 1e6);
+  // the first force when the block reaches the contact surface (measured 20.097 us for 20 us)
+  EXPECT_NEAR(tr.first, reach, 0.01 * reach + 2 * dt);
+  if (!dc.mid_surface) {
+    EXPECT_LT(tr.max_pen, RigidDrop::t / 2);  // the block never reaches the mid-surface
+  }
+  EXPECT_EQ(tr.force_after, 0.0);  // no force after separation
   // elastic collision: v1' = v0 (m1 - m2)/(m1 + m2), v2' = 2 m1 v0 / (m1 + m2) (along -side z)
   const double v = -side * RigidDrop::v0;
   const double pb1 = body_momentum(s, rd.block, 2), pp1 = body_momentum(s, rd.plate, 2);
@@ -313,6 +340,22 @@ void check_rigid_drop(int side) {
 TEST(ShellContact, RigidBlockDroppedOnRigidShellPlateIsTheClosedFormOscillator) { check_rigid_drop(+1); }
 TEST(ShellContact, RigidBlockRisingOntoTheUndersideOfAShellPlate) { check_rigid_drop(-1); }
 
+// Non-automatic contacts take the shells' thickness as LS-DYNA does: *CONTROL_CONTACT SHLTHK 0
+// (the default) meets the plate's mid-surface, one-sided along its normal as written (+z, the
+// block's side here), as DYNA3D's sliding interfaces do; SHLTHK 2 the +-t/2 surfaces; SHLTHK 1
+// the same but not on rigid shells (this plate is rigid); card B's THKOPT 1 its own SHLTHK,
+// THKOPT 2 none.  The same closed-form oscillator, starting t/2 later at the mid-surface.
+TEST(ShellContact, NonAutomaticContactMeetsTheMidSurfaceUnlessShlthkSaysOtherwise) {
+  const std::string sts = "SURFACE_TO_SURFACE";
+  const std::string b_own = ifld(0, 10) + ifld(1, 10) + ifld(2, 10) + "\n", b_none = ifld(0, 10) + ifld(2, 10) + "\n";
+  check_rigid_drop(+1, {sts, 0, "", 0, true});
+  check_rigid_drop(+1, {sts, 2, "", 2, false});
+  check_rigid_drop(+1, {sts, 1, "", 1, true});
+  check_rigid_drop(+1, {sts, 0, b_own, 2, false});
+  check_rigid_drop(+1, {sts, 2, b_none, 0, true});
+  check_rigid_drop(+1, {"AUTOMATIC_" + sts, 0, b_none, 2, false});
+}
+
 namespace {
 
 // An elastic block (40 mm, 2 x 2 x 2) dropped at 5 m/s on a free elastic plate of 10 x 10
@@ -327,7 +370,7 @@ struct ElasticDrop {
     d.velocity(block, 0, 0, -5);
   }
   std::string text(double sfsa = 1.0, int soft = 0) const {
-    return d.text(1.5e-4, contact_card("SURFACE_TO_SURFACE", 2, 1, sfsa, 3, 3, soft));
+    return d.text(1.5e-4, contact_card("AUTOMATIC_SURFACE_TO_SURFACE", 2, 1, sfsa, 3, 3, soft));
   }
 };
 
