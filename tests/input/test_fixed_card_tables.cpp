@@ -1,10 +1,11 @@
 // The fixed-format cards read by their tables (impact3d/input/fixed_cards.cpp): title card,
-// material card 1, node, solid, shell and shell thickness cards, load curve header and point
-// cards, nodal loads, stonewall, moving stonewall and node list cards, IMPACT-3D's initial
-// velocity range card, segment cards, base accelerations.  A deck of our own in each vintage
-// holds every card kind; it reads, converts fixed -> keyword -> fixed to the same model and
-// runs to the same bits; each malformed card is refused naming file, line, card, field and
-// the columns of its table; the printed echo heads its columns with the tables' field names.
+// material card 1, node, solid, shell and shell thickness cards, beam integration rule cards,
+// load curve header and point cards, nodal loads, stonewall, moving stonewall and node list
+// cards, IMPACT-3D's initial velocity range card, segment cards, base accelerations, and the
+// small format's tables.  A deck of our own in each vintage and format holds every card kind; it
+// reads, converts fixed -> keyword -> fixed to the same model and runs to the same bits; each
+// malformed card is refused naming file, line, card, field and the columns of its table; the
+// printed echo names its columns with the tables' field names.
 
 #include <gtest/gtest.h>
 
@@ -36,8 +37,14 @@ std::string reals(std::initializer_list<double> v) {
   for (double x : v) s += E(x, 10, 3);
   return s;
 }
-std::string node(int id, int code, double x, double y, double z) {
-  return I(id, 8) + I(code, 5) + E(x, 20, 13) + E(y, 20, 13) + E(z, 20, 13) + I(0, 5);
+// The layout of a deck: vintage, and the small format (ids I5) or the large (I8).
+struct Format {
+  bool v88 = false;
+  bool small = false;
+  int w() const { return small ? 5 : 8; }
+};
+std::string node(int id, int code, double x, double y, double z, int w = 8) {
+  return I(id, w) + I(code, 5) + E(x, 20, 13) + E(y, 20, 13) + E(z, 20, 13) + I(0, 5);
 }
 
 // A deck as keyed lines (no comment lines: line k of the deck is entry k - 1), so that a case
@@ -63,17 +70,19 @@ struct KeyedDeck {
   }
 };
 
-void control_cards(KeyedDeck& d, bool v88) {
-  // 2 materials, 12 nodes, 1 solid, 1 shell
-  if (v88) d.add("card 2", I(2, 5) + I(12, 10) + I(1, 10) + I(0, 10) + I(1, 10) + I(0, 10));
-  else d.add("card 2", I(2, 5) + I(12, 10) + I(1, 10) + I(0, 10) + I(1, 10) + I(0, 10) + I(0, 10) + reals({0}) + "  0.0");
+void control_cards(KeyedDeck& d, Format f) {
+  const bool v88 = f.v88;
+  // 3 materials, 14 nodes, 1 solid, 1 beam, 1 shell
+  if (f.small) d.add("card 2", ints({3, 14, 1, 1, 1, 0, 0}) + reals({0}));
+  else if (v88) d.add("card 2", I(3, 5) + I(14, 10) + I(1, 10) + I(1, 10) + I(1, 10) + I(0, 10));
+  else d.add("card 2", I(3, 5) + I(14, 10) + I(1, 10) + I(1, 10) + I(1, 10) + I(0, 10) + I(0, 10) + reals({0}) + "  0.0");
   d.add("card 3", v88 ? ints({1, 1, 0, 1, 0, 0}) : ints({1, 1, 0, 1, 0, 0, 0, 0, 0}));  // node, solid, shell blocks
   d.add("card 4", v88 ? "    0    0    0    0    0    0e20.9" : I(0, 10) + ints({0, 0, 0, 0}) + "e20.0" + I(0, 5) + reals({0}));
   // 1 curve, 1 nodal load, 1 pressure, 1 motion, 1 stonewall, range velocity card, 1 interface, base z
   d.add("card 5", ints({1, 1, 1, 1, 1, 0, 1, 1, 0, 0, 1, 0, 0, 0, 0, 0}));
   d.add("card 6", reals({1e-4, 1e-5, 2e-5}) + ints({0, 0}) + reals({0, 0}) + ints({0, 0}) + reals({0.5}));
   d.add("card 7", v88 ? ints({0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}) : ints({0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0, 0}));
-  d.add("card 8", ints({0, 0}) + reals({0}) + ints({0, 0, 0, 0, 0}) + reals({0, 0, 0}) + ints({0}));
+  d.add("card 8", ints({0, 0}) + reals({0}) + ints({1, 4, 0, 0, 0}) + reals({0, 0, 0}) + ints({0}));  // one user beam rule of 4 points
   d.add("card 9", ints({0, 0, 0, 0}) + reals({0}) + ints({0, 0, 0}));
   if (v88) d.add("free format", "mdamp 1");
 }
@@ -93,51 +102,74 @@ void materials(KeyedDeck& d) {
   d.add("section title", " shell section properties");
   d.add("shell section 1", reals({0.8333, 2, 0, 0}));
   d.add("shell section 2", reals({1e-3, 1e-3, 1e-3, 1e-3}));
+  d.add("material 3 card 1", I(3, 5) + I(1, 5) + E(7.8e3, 10, 4) + tail + I(1, 5) + I(0, 5) + I(1, 5));
+  d.add("material 3 title", "steel beam");
+  d.add("material 3 card 3", reals({2e11}));
+  d.add("material 3 card 4", reals({0.3}));
+  for (int c = 5; c <= 8; ++c) d.add("material 3 card " + std::to_string(c), "");
+  d.add("beam section title", " Hughes-Liu Beam Section Properties");
+  // built-in rule 2 (a keyword deck cannot hold a user rule: *INTEGRATION_BEAM is refused), so
+  // user rule 1 below is read and checked but used by no section
+  d.add("beam section 1", reals({0.8333, 2, 0}));
+  d.add("beam section 2", reals({0.01, 0.01, 0.01, 0.01, 0, 0}));
+  // user rule 1: 2 x 2 Gauss points written as a rule
+  d.add("rule 1 header", I(4, 5) + reals({1}));
+  const double g = 0.5773502692;
+  d.add("rule 1 point 1", reals({-g, -g, 1}));
+  d.add("rule 1 point 2", reals({g, -g, 1}));
+  d.add("rule 1 point 3", reals({g, g, 1}));
+  d.add("rule 1 point 4", reals({-g, g, 1}));
 }
 
-void mesh(KeyedDeck& d) {
+void mesh(KeyedDeck& d, Format f) {
+  const int w = f.w();
   const double h = 0.01;
   const double cube[8][3] = {{0, 0, 0}, {h, 0, 0}, {h, h, 0}, {0, h, 0}, {0, 0, h}, {h, 0, h}, {h, h, h}, {0, h, h}};
-  for (int k = 0; k < 8; ++k) d.add("node " + std::to_string(k + 1), node(k + 1, k < 4 ? 3 : 0, cube[k][0], cube[k][1], cube[k][2]));
+  for (int k = 0; k < 8; ++k) d.add("node " + std::to_string(k + 1), node(k + 1, k < 4 ? 3 : 0, cube[k][0], cube[k][1], cube[k][2], w));
   const double plate[4][2] = {{0, 0}, {h, 0}, {h, h}, {0, h}};
-  for (int k = 0; k < 4; ++k) d.add("node " + std::to_string(k + 9), node(k + 9, 0, plate[k][0], plate[k][1], 1.5 * h));
-  d.add("solid 1", I(1, 8) + I(1, 5) + ints({1, 2, 3, 4, 5, 6, 7, 8}, 8));
-  d.add("shell 1", I(1, 8) + I(2, 5) + ints({9, 10, 11, 12}, 8));
+  for (int k = 0; k < 4; ++k) d.add("node " + std::to_string(k + 9), node(k + 9, 0, plate[k][0], plate[k][1], 1.5 * h, w));
+  d.add("node 13", node(13, 0, 5 * h, 0, 0, w));
+  d.add("node 14", node(14, 0, 6 * h, 0, 0, w));
+  d.add("solid 1", I(1, w) + I(1, 5) + ints({1, 2, 3, 4, 5, 6, 7, 8}, w));
+  d.add("beam 1", I(1, 8) + I(3, 5) + ints({13, 14, 0}, 8));  // (the beam card is I8 in both formats)
+  d.add("shell 1", I(1, w) + I(2, 5) + ints({9, 10, 11, 12}, w));
   d.add("shell 1 thickness", reals({0, 0, 0, 0}));
   d.add("node blocks", ints({5, 12}, 8));
   d.add("solid blocks", ints({1, 1}, 8));
   d.add("shell blocks", ints({1, 1}, 8));
 }
 
-void loads(KeyedDeck& d, bool v88) {
+void loads(KeyedDeck& d, Format f) {
+  const int w = f.w();
   d.add("curve 1 header", ints({1, 2}));
   d.add("curve 1 point 1", reals({0, 1}));
   d.add("curve 1 point 2", reals({1, 1}));
-  d.add("nodal load", I(12, 8) + I(3, 5) + I(1, 5) + reals({-10}));
-  d.add("pressure", I(1, 5) + ints({9, 10, 11, 12}, 8) + reals({1e3, 1e3, 1e3, 1e3}));
+  d.add("nodal load", I(12, w) + I(3, 5) + I(1, 5) + reals({-10}));
+  d.add("pressure", I(1, 5) + ints({9, 10, 11, 12}, w) + reals({1e3, 1e3, 1e3, 1e3}));
   d.add("motion", I(9, 8) + I(1, 5) + I(1, 5) + reals({0}) + reals({0, 0, 0}) + I(0, 5));
   d.add("stonewall", ints({4, 1}) + reals({0, 0, -1e-3, 0, 0, 1, 0}));
   d.add("moving stonewall", reals({100, 0}));
-  d.add("stonewall nodes", ints({1, 2, 3, 4}, 8));
+  d.add("stonewall nodes", ints({1, 2, 3, 4}, w));
   d.add("velocity", I(5, 8) + reals({0, 0, -1}) + I(12, 8) + I(1, 5));
   d.add("interface", I(1, 8) + I(1, 8) + I(3, 5) + reals({0, 0, 0}));
-  d.add("slave segment", I(1, 8) + ints({9, 10, 11, 12}, 8));
-  d.add("master segment", I(1, 8) + ints({5, 6, 7, 8}, 8));
+  d.add("slave segment", I(1, w) + ints({9, 10, 11, 12}, w));
+  d.add("master segment", I(1, w) + ints({5, 6, 7, 8}, w));
   d.add("base z", I(1, 5) + reals({9.81}));
   d.add("mass damping", reals({0.01, 1000, 0, 0}));
-  (void)v88;
 }
 
 // Every card kind of the fixed format in one deck: a steel cube under a shell plate in contact
-// with it, a moving stonewall, a nodal load, a pressure, a prescribed motion, base
+// with it, a free Hughes-Liu beam and a user beam integration rule, a moving stonewall, a nodal load, a pressure, a prescribed motion, base
 // acceleration, mass damping, time-history blocks, IMPACT-3D's range velocity card.
-KeyedDeck every_card_deck(bool v88) {
+KeyedDeck every_card_deck(bool v88, bool small = false) {
+  const Format f{v88, small};
   KeyedDeck d;
-  d.add("title", std::string(v88 ? "every card kind, DYNA3D 88 layout" : "every card kind, later layout").append(72, ' ').substr(0, 72) + "88 large");
-  control_cards(d, v88);
+  d.add("title", std::string(v88 ? "every card kind, DYNA3D 88 layout" : "every card kind, later layout").append(72, ' ').substr(0, 72) +
+                     (small ? "" : "88 large"));
+  control_cards(d, f);
   materials(d);
-  mesh(d);
-  loads(d, v88);
+  mesh(d, f);
+  loads(d, f);
   return d;
 }
 
@@ -152,17 +184,23 @@ State run_to_end(const Model& m) {
 
 }  // namespace
 
-TEST(FixedCardTables, EveryCardKindReadsInBothVintages) {
+TEST(FixedCardTables, EveryCardKindReadsInBothVintagesAndFormats) {
   if (const char* dump = std::getenv("DUMP_TEST_DECKS")) {  // the fuzz seeds every_card_{88,later}.dyn
     std::ofstream(std::string(dump) + "/every_card_88.dyn") << every_card_deck(true).text();
     std::ofstream(std::string(dump) + "/every_card_later.dyn") << every_card_deck(false).text();
+    std::ofstream(std::string(dump) + "/every_card_small.dyn") << every_card_deck(false, true).text();
   }
-  for (bool v88 : {true, false}) {
+  for (int k = 0; k < 4; ++k) {
+    const bool v88 = k % 2 == 0, small = k >= 2;
     Model m;
     Diagnostics d;
-    ASSERT_TRUE(read_string(every_card_deck(v88).text(), m, d)) << all_messages(d);
+    ASSERT_TRUE(read_string(every_card_deck(v88, small).text(), m, d)) << all_messages(d);
+    EXPECT_EQ(m.large_format, !small);
     EXPECT_EQ(m.fixed_vintage, int(v88 ? FixedVintage::dyna3d_88 : FixedVintage::dyna3d_later));
-    EXPECT_EQ(m.num_nodes(), 12);
+    EXPECT_EQ(m.num_nodes(), 14);
+    EXPECT_EQ(m.num_beams(), 1);
+    ASSERT_EQ(m.materials.size(), 3u);
+    EXPECT_EQ(m.materials[2].beam_section.qr, 2);
     EXPECT_EQ(m.bc[0], 3);
     EXPECT_DOUBLE_EQ(m.z[8], 0.015);
     EXPECT_EQ(m.num_hexes(), 1);
@@ -188,12 +226,14 @@ TEST(FixedCardTables, EveryCardKindReadsInBothVintages) {
   }
 }
 
-// fixed -> keyword -> fixed: the same model, and the same run to the last bit.
+// fixed (88 or later, large or small format) -> keyword -> fixed (later, large): the same model,
+// and the same run to the last bit.
 TEST(FixedCardTables, EveryCardKindRoundTripsThroughTheConverterToTheSameRun) {
-  for (bool v88 : {true, false}) {
+  for (int k = 0; k < 4; ++k) {
+    const bool v88 = k % 2 == 0, small = k >= 2;
     Model a;
     Diagnostics da;
-    ASSERT_TRUE(read_string(every_card_deck(v88).text(), a, da)) << all_messages(da);
+    ASSERT_TRUE(read_string(every_card_deck(v88, small).text(), a, da)) << all_messages(da);
     std::ostringstream kw;
     write_keyword_deck(kw, a);
     Model b;
@@ -219,18 +259,43 @@ TEST(FixedCardTables, EveryCardKindRoundTripsThroughTheConverterToTheSameRun) {
   }
 }
 
+namespace {
+
+// A malformed card: the deck's card `key` replaced by `text` gives message `id` on that card's
+// line, naming `card` and `field` with the columns of `table_field` (or `field`) in `table`.
+struct Case {
+  const char* key;
+  std::string text;
+  int id;
+  std::string card;
+  const char* field;
+  const char* table;  // the table whose field gives the columns
+  const char* table_field;  // a message over several fields: the first (the span ends at ZH or t)
+};
+
+void expect_refused(const KeyedDeck& good, const std::vector<Case>& cases) {
+  for (const Case& c : cases) {
+    const KeyedDeck bad = good.with(c.key, c.text);
+    Model m;
+    Diagnostics d;
+    EXPECT_FALSE(read_string(bad.text(), m, d, "tables.dyn")) << c.key;
+    const FixedCardLayout& l = fixed_card_layout(c.table, FixedVintage::dyna3d_later);
+    const FixedField& f = l.field(c.table_field ? c.table_field : c.field);
+    const int c1 = c.id == 1101 ? 73 : f.c1, c2 = c.table_field ? l.field(std::string(c.field) == "XT-ZH" ? "ZH" : "t").c2 : f.c2;
+    bool found = false;
+    for (const Diagnostic& x : d.all())
+      found = found || (x.id == c.id && x.where.file == "tables.dyn" && x.where.line == bad.line_of(c.key) && x.where.card == c.card &&
+                        x.where.field == c.field && x.where.col_first == c1 && x.where.col_last == c2);
+    EXPECT_TRUE(found) << c.key << ": expected " << c.id << " at line " << bad.line_of(c.key) << ", " << c.card << ", field \"" << c.field
+                       << "\" (cols " << c1 << "-" << c2 << ")\n" << all_messages(d);
+  }
+}
+
+}  // namespace
+
 // Each malformed card of the tabled kinds: its message names the file, the card's line, the
 // card, the field and the field's columns in the table.
 TEST(FixedCardTables, MalformedCardsNameFileLineCardFieldAndColumns) {
-  struct Case {
-    const char* key;
-    std::string text;
-    int id;
-    std::string card;
-    const char* field;
-    const char* table;  // the table whose field gives the columns
-    const char* table_field;
-  };
   const KeyedDeck good = every_card_deck(false);
   const std::string tail = I(0, 5) + I(0, 5) + E(0, 10, 4) + I(0, 5) + E(0, 10, 4) + E(0, 10, 4);
   const std::vector<Case> cases = {
@@ -252,10 +317,10 @@ TEST(FixedCardTables, MalformedCardsNameFileLineCardFieldAndColumns) {
       {"curve 1 point 2", reals({0, 1}), 1217, "load curve 1 point 2", "time", "load curve point card", nullptr},
       {"nodal load", I(12, 8) + I(5, 5) + I(1, 5) + reals({-10}), 1102, "nodal load card 1", "direction", "nodal load card", nullptr},
       {"nodal load", I(12, 8) + I(3, 5) + I(3, 5) + reals({-10}), 1201, "nodal load card 1", "load curve", "nodal load card", nullptr},
-      {"nodal load", I(13, 8) + I(3, 5) + I(1, 5) + reals({-10}), 1202, "nodal load card 1", "node", "nodal load card", nullptr},
+      {"nodal load", I(15, 8) + I(3, 5) + I(1, 5) + reals({-10}), 1202, "nodal load card 1", "node", "nodal load card", nullptr},
       {"stonewall", ints({4, 1}) + reals({0, 0, -1e-3, 0, 0, 1, 2}), 1219, "stonewall 1 card 1", "FRIC", "stonewall card", nullptr},
       {"stonewall", ints({4, 1}) + reals({0, 0, 0, 0, 0, 0, 0}), 1213, "stonewall 1 card 1", "XT-ZH", "stonewall card", "XT"},
-      {"stonewall", ints({13, 1}) + reals({0, 0, -1e-3, 0, 0, 1, 0}), 1003, "stonewall 1 card 1", "NSN", "stonewall card", nullptr},
+      {"stonewall", ints({15, 1}) + reals({0, 0, -1e-3, 0, 0, 1, 0}), 1003, "stonewall 1 card 1", "NSN", "stonewall card", nullptr},
       {"moving stonewall", reals({0, 0}), 1003, "stonewall 1 card 2 (moving wall)", "MASS", "moving stonewall card", nullptr},
       {"stonewall nodes", ints({1, 2, 99, 4}, 8), 1202, "stonewall 1 node card 1", "node 3", "node list card", nullptr},
       {"velocity", I(5, 8) + reals({0, 0, -1}) + I(99, 8) + I(1, 5), 1202, "initial-velocity card 1", "last node", "initial velocity range card", nullptr},
@@ -263,21 +328,30 @@ TEST(FixedCardTables, MalformedCardsNameFileLineCardFieldAndColumns) {
       {"slave segment", I(1, 8) + ints({9, 10, 99, 12}, 8), 1202, "sliding interface 1 slave segment card 1 of 1", "node n3", "segment card", nullptr},
       {"base z", I(4, 5) + reals({9.81}), 1201, "base acceleration card (z)", "load curve", "base acceleration card", nullptr},
       {"base z", I(1, 5) + "  9.81.0  ", 1002, "base acceleration card (z)", "scale factor", "base acceleration card", nullptr},
+      {"rule 1 header", I(5, 5) + reals({1}), 1003, "beam integration rule 1 header card", "number of points", "beam integration rule header card", nullptr},
+      {"rule 1 point 2", reals({0.5, -0.5, -1}), 1003, "beam integration rule 1 point 2", "weight", "beam integration point card", nullptr},
+      {"rule 1 point 3", reals({0.5, 1.5, 1}), 1003, "beam integration rule 1 point 3", "s, t", "beam integration point card", "s"},
   };
-  for (const Case& c : cases) {
-    const KeyedDeck bad = good.with(c.key, c.text);
-    Model m;
-    Diagnostics d;
-    EXPECT_FALSE(read_string(bad.text(), m, d, "tables.dyn")) << c.key;
-    const FixedField& f = fixed_card_layout(c.table, FixedVintage::dyna3d_later).field(c.table_field ? c.table_field : c.field);
-    const int c1 = f.c1, c2 = c.table_field ? fixed_card_layout(c.table, FixedVintage::dyna3d_later).field("ZH").c2 : f.c2;
-    bool found = false;
-    for (const Diagnostic& x : d.all())
-      found = found || (x.id == c.id && x.where.file == "tables.dyn" && x.where.line == bad.line_of(c.key) && x.where.card == c.card &&
-                        x.where.field == c.field && x.where.col_first == (c.id == 1101 ? 73 : c1) && x.where.col_last == c2);
-    EXPECT_TRUE(found) << c.key << ": expected " << c.id << " at line " << bad.line_of(c.key) << ", " << c.card << ", field \"" << c.field
-                       << "\" (cols " << c1 << "-" << c2 << ")\n" << all_messages(d);
-  }
+  expect_refused(good, cases);
+}
+
+// The small format's tables (ids I5): each malformed card names the small table's columns.
+TEST(FixedCardTables, MalformedSmallFormatCardsNameTheSmallTablesColumns) {
+  const KeyedDeck good = every_card_deck(false, true);
+  const std::vector<Case> cases = {
+      {"card 2", ints({3, 14, 1, 1, 1, 1, 0}) + reals({0}), 1102, "control card 2", "NUMELT", "control card 2 (small format)", nullptr},
+      {"card 2", ints({3, 14, 1, 1, 1, 0, 0}) + reals({-1}), 1221, "control card 2", "interface output interval", "control card 2 (small format)", nullptr},
+      {"node 3", node(3, 9, 0.01, 0.01, 0, 5), 1216, "node card for node 3", "boundary code", "node card (small format)", nullptr},
+      {"node 3", node(3, 0, 0.01, 0.01, 0, 5).substr(0, 70) + I(9, 5), 1216, "node card for node 3", "rotational code", "node card (small format)", nullptr},
+      {"solid 1", I(1, 5) + I(1, 5) + ints({1, 2, 3, 4, 99, 6, 7, 8}, 5), 1202, "solid element card for element 1", "node n5", "solid element card (small format)", nullptr},
+      {"shell 1", I(1, 5) + I(2, 5) + ints({9, 99, 11, 12}, 5), 1202, "shell element card for element 1", "node n2", "shell element card (small format)", nullptr},
+      {"nodal load", I(12, 5) + I(5, 5) + I(1, 5) + reals({-10}), 1102, "nodal load card 1", "direction", "nodal load card (small format)", nullptr},
+      {"pressure", I(1, 5) + ints({9, 10, 99, 12}, 5) + reals({1e3, 1e3, 1e3, 1e3}), 1202, "pressure card 1", "node n3", "pressure card (small format)", nullptr},
+      {"pressure", I(1, 5) + ints({9, 10, 11, 12}, 5) + reals({1e3, 1e3, 1e3, 1e3}) + "     " + " 1.0.0e-3 ", 1002, "pressure card 1", "arrival time", "pressure card (small format)", nullptr},
+      {"stonewall nodes", ints({1, 2, 99, 4}, 5), 1202, "stonewall 1 node card 1", "node 3", "node list card (small format)", nullptr},
+      {"slave segment", I(1, 5) + ints({9, 10, 99, 12}, 5), 1202, "sliding interface 1 slave segment card 1 of 1", "node n3", "segment card (small format)", nullptr},
+  };
+  expect_refused(good, cases);
 }
 
 // The printed echo heads the node, solid and shell cards with their tables' field names.
@@ -297,7 +371,7 @@ TEST(FixedCardTables, PrintedEchoNamesTheTablesFields) {
         EXPECT_NE(p.find(name), std::string::npos) << id << " " << name << "\n" << p;
       }
     }
-  EXPECT_NE(p.find("n o d e   c a r d s   (the first 10 of 12)"), std::string::npos) << p;
+  EXPECT_NE(p.find("n o d e   c a r d s   (the first 10 of 14)"), std::string::npos) << p;
   // node 9: its card's values under the heads (z = 1.5 cm)
   EXPECT_NE(p.find("1.5000e-02"), std::string::npos) << p;
 }
