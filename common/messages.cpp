@@ -57,6 +57,9 @@ const std::vector<MessageDef> kCatalog = {
     {1241, S::error, "shell thickness must be positive"},
     {1250, S::error, "beam has no length or its orientation node lies on its axis"},
     {1251, S::error, "beam section size must be positive"},
+    {1252, S::error, "spot weld nodes coincide and no coordinate system gives the weld's normal direction"},
+    {1253, S::error, "spot weld node is already constrained (another spot weld or a rigid body)"},
+    {1254, S::error, "spot weld has no mass (its nodes belong to no element)"},
     // 1300-1399: LS-DYNA keyword decks
     {1301, S::error, "keyword not supported by IMPACT-3D (impact3d --lenient-keywords turns this into a warning)"},
     {1305, S::error, "data line before the first keyword"},
@@ -106,6 +109,8 @@ const std::vector<MessageDef> kCatalog = {
     {5002, S::info, "status requested (sense switch sw2)"},
     {5003, S::info, "plot state requested (sense switch sw4)"},
     {5004, S::info, "solid element failed and is deleted"},
+    {5005, S::info, "beam element failed and is deleted"},
+    {5006, S::info, "spot weld failed and is released"},
     {5101, S::warning, "hourglass energy of a part is large against its internal energy"},
     {5102, S::warning, "energy ratio outside its band: the energy balance does not hold"},
     {5103, S::warning, "contact energy is negative beyond its limit (contact forces put energy in)"},

@@ -22,6 +22,7 @@ constexpr BeamMaterial kBeamMaterials[] = {
     {3, false, BeamMaterialKind::plastic_kinematic},
     {20, true, BeamMaterialKind::elastic},
     {24, false, BeamMaterialKind::piecewise_linear},
+    {100, false, BeamMaterialKind::plastic_kinematic},  // *MAT_SPOTWELD: isotropic (beta 1), its failure rule
 };
 
 const BeamMaterial* find_beam_material(int type) {
@@ -226,6 +227,7 @@ void init_beams(const Model& m, State& s) {
     g.material = int(k);
     g.shrf = md.beam_section.shrf > 0 ? md.beam_section.shrf : 1.0;
     g.material_kind = bmat ? bmat->kind : BeamMaterialKind::elastic;
+    g.spot_weld = s.mats[k].type == 100;
     if (!bmat || bmat->rigid) {
       g.kernel = BeamKernel::rigid;
     } else if (md.beam_section.elform == 3) {
@@ -265,6 +267,9 @@ void init_beams(const Model& m, State& s) {
   for (auto* v : {&bm.dt_e, &bm.de_ie, &bm.energy, &bm.area, &bm.length0}) v->assign(std::size_t(nb), 0.0);
   bm.e2.assign(3 * std::size_t(nb), 0.0);
   bm.bad.assign(std::size_t(nb), 0);
+  bm.failed.assign(std::size_t(nb), 0);
+  bm.newly_failed.clear();
+  bm.newly_failed.reserve(std::size_t(nb));
   bm.rigid_elem.assign(std::size_t(nb), 0);
   bm.size.assign(std::size_t(nb), BeamSectionSize{});
   // geometry, masses, rotary inertias

@@ -262,6 +262,89 @@ void init_rigid_bodies(const Model& m, State& s) {
   }
 }
 
+// Spot welds (Model::spot_welds): each a rigid body of its nodes (the input checks have made
+// sure that no node is in two bodies and that each has mass), with its nodes' rotary inertias
+// (isotropic: they add J to every axis) and their angular momentum, and each node's normal.
+void init_spot_welds(const Model& m, State& s) {
+  const ShellState& sh = s.shells;
+  for (std::size_t w = 0; w < m.spot_welds.size(); ++w) {
+    const SpotWeld& sw = m.spot_welds[w];
+    RigidBody rb;
+    rb.weld = int(w);
+    rb.nodes = sw.nodes;
+    bool free = true;
+    for (int n : rb.nodes) free = free && s.rigid_of_node[std::size_t(n)] < 0;
+    if (!free) continue;  // refused by the input checks (1253)
+    double mx = 0, my = 0, mz = 0, px = 0, py = 0, pz = 0, jsum = 0, lx = 0, ly = 0, lz = 0;
+    double gx = 0, gy = 0, gz = 0;  // the geometric centre (normals)
+    for (int n : rb.nodes) {
+      const std::size_t k = std::size_t(n);
+      const double mn = s.mass[k];
+      rb.mass += mn;
+      mx += mn * s.x[k], my += mn * s.y[k], mz += mn * s.z[k];
+      px += mn * s.vx[k], py += mn * s.vy[k], pz += mn * s.vz[k];
+      gx += s.x[k], gy += s.y[k], gz += s.z[k];
+      const int q = sh.node_rot.empty() ? -1 : sh.node_rot[k];
+      if (q >= 0) {
+        const double J = sh.inertia[std::size_t(q)];
+        jsum += J;
+        lx += J * sh.wx[std::size_t(q)], ly += J * sh.wy[std::size_t(q)], lz += J * sh.wz[std::size_t(q)];
+      }
+    }
+    if (!(rb.mass > 0)) continue;  // refused by the input checks (1254)
+    const double nn = double(rb.nodes.size());
+    gx /= nn, gy /= nn, gz /= nn;
+    rb.com = {mx / rb.mass, my / rb.mass, mz / rb.mass};
+    rb.com0 = rb.com;
+    rb.vcom = {px / rb.mass, py / rb.mass, pz / rb.mass};
+    std::array<double, 9> I{};
+    std::array<double, 3> L{lx, ly, lz};
+    for (int a = 0; a < 3; ++a) I[std::size_t(4 * a)] = jsum;
+    for (int n : rb.nodes) {
+      const std::size_t k = std::size_t(n);
+      const double mn = s.mass[k];
+      const double r[3] = {s.x[k] - rb.com[0], s.y[k] - rb.com[1], s.z[k] - rb.com[2]};
+      const double v[3] = {s.vx[k] - rb.vcom[0], s.vy[k] - rb.vcom[1], s.vz[k] - rb.vcom[2]};
+      const double rr = r[0] * r[0] + r[1] * r[1] + r[2] * r[2];
+      for (int a = 0; a < 3; ++a)
+        for (int b = 0; b < 3; ++b) I[std::size_t(3 * a + b)] += mn * ((a == b ? rr : 0) - r[a] * r[b]);
+      L[0] += mn * (r[1] * v[2] - r[2] * v[1]);
+      L[1] += mn * (r[2] * v[0] - r[0] * v[2]);
+      L[2] += mn * (r[0] * v[1] - r[1] * v[0]);
+      rb.r0.insert(rb.r0.end(), {r[0], r[1], r[2]});
+      // the node's normal: towards the geometric centre, or (coincident nodes) CID's z axis
+      double d[3] = {gx - s.x[k], gy - s.y[k], gz - s.z[k]};
+      const double len = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+      if (sw.has_axis) {
+        rb.axis_normal = true;
+        for (int a = 0; a < 3; ++a) d[a] = sw.axis[std::size_t(a)];
+      } else {
+        for (double& c : d) c = len > 0 ? c / len : 0.0;
+      }
+      rb.n0.insert(rb.n0.end(), {d[0], d[1], d[2]});
+    }
+    rb.inertia0 = I;
+    rb.ang_mom = L;
+    rb.omega = rigid_omega(I, L);
+    unsigned fixed = 0;
+    for (int n : rb.nodes) fixed |= s.fix[std::size_t(n)];
+    for (int a = 0; a < 3; ++a)
+      if (fixed & (1u << a)) rb.vcom[std::size_t(a)] = 0;
+    for (std::size_t j = 0; j < rb.nodes.size(); ++j) {
+      const double* r = &rb.r0[3 * j];
+      const std::size_t n = std::size_t(rb.nodes[j]);
+      s.vx[n] = rb.vcom[0] + rb.omega[1] * r[2] - rb.omega[2] * r[1];
+      s.vy[n] = rb.vcom[1] + rb.omega[2] * r[0] - rb.omega[0] * r[2];
+      s.vz[n] = rb.vcom[2] + rb.omega[0] * r[1] - rb.omega[1] * r[0];
+    }
+    const int idx = int(s.rigid.size());
+    for (int n : rb.nodes) s.rigid_of_node[std::size_t(n)] = idx;
+    s.rigid.push_back(std::move(rb));
+  }
+  s.newly_released.clear();
+  s.newly_released.reserve(m.spot_welds.size());
+}
+
 }  // namespace
 
 void initialize_state(const Model& m, State& s) {
@@ -273,6 +356,7 @@ void initialize_state(const Model& m, State& s) {
   init_velocities(m, s);
   init_shell_rotational_velocities(m, s);
   init_rigid_bodies(m, s);
+  init_spot_welds(m, s);
   // net nodal forces: kept only for rigid bodies (their momentum update reads them)
   for (auto* v : {&s.fx, &s.fy, &s.fz}) v->assign(s.rigid.empty() ? 0 : std::size_t(s.nn), 0.0);
   s.wall_force.assign(m.walls.size(), {0, 0, 0});

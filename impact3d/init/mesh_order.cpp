@@ -264,6 +264,8 @@ void permute_model(Model& m, const std::vector<int>& node_new_of_old, const std:
   for (auto& l : m.pressure_loads)
     for (int& n : l.nodes) n = node(n);
   for (auto& pm : m.prescribed_motions) pm.node = node(pm.node);
+  for (auto& w : m.spot_welds)
+    for (int& n : w.nodes) n = node(n);
   compose_order(m.node_order, node_new_of_old);
   compose_order(m.hex_order, hex_new_of_old);
 }

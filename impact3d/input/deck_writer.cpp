@@ -158,6 +158,7 @@ class KeywordWriter {
     shell_conditions();
     interfaces();
     loads();
+    spot_welds();
     os_ << "*END\n";
   }
 
@@ -388,6 +389,41 @@ class KeywordWriter {
     }
     if (!f.empty()) os_ << kcard(f) << "\n";
     return sid;
+  }
+
+  // Spot welds: two-node welds without an axis as *CONSTRAINED_SPOTWELD, the others as
+  // *CONSTRAINED_GENERALIZED_WELD_SPOT (a node set; the axis as the z axis of a coordinate
+  // system of id 900001 on).
+  void spot_welds() {
+    int cid = 900000;
+    for (const SpotWeld& w : m_.spot_welds) {
+      if (!w.generalized && !w.has_axis && w.nodes.size() == 2) {
+        os_ << (w.id ? "*CONSTRAINED_SPOTWELD_ID\n" + kcard({I(w.id)}) + "\n" : std::string("*CONSTRAINED_SPOTWELD\n"))
+            << "$#      n1        n2        sn        ss         n         m        tf\n"
+            << kcard({I(nid(w.nodes[0])), I(nid(w.nodes[1])), R(w.sn), R(w.ss), R(w.n), R(w.m), R(w.tfail)}) << "\n";
+        continue;
+      }
+      int c = 0;
+      if (w.has_axis) {
+        c = ++cid;
+        // local x normal to the axis, y = z x x
+        const auto& z = w.axis;
+        std::array<double, 3> a = std::fabs(z[0]) < 0.9 ? std::array<double, 3>{1, 0, 0} : std::array<double, 3>{0, 1, 0};
+        const double d = a[0] * z[0] + a[1] * z[1] + a[2] * z[2];
+        std::array<double, 3> x = {a[0] - d * z[0], a[1] - d * z[1], a[2] - d * z[2]};
+        const double l = std::sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]);
+        for (double& v : x) v /= l;
+        const std::array<double, 3> y = {z[1] * x[2] - z[2] * x[1], z[2] * x[0] - z[0] * x[2], z[0] * x[1] - z[1] * x[0]};
+        os_ << "*DEFINE_COORDINATE_SYSTEM\n$#     cid        xo        yo        zo        xl        yl        zl\n"
+            << kcard({I(c), R(0), R(0), R(0), R(x[0]), R(x[1]), R(x[2])}) << "\n$#      xp        yp        zp\n"
+            << kcard({R(y[0]), R(y[1]), R(y[2])}) << "\n";
+      }
+      const int sid = node_set(w.nodes);
+      os_ << (w.id ? "*CONSTRAINED_GENERALIZED_WELD_SPOT_ID\n" + kcard({I(w.id)}) + "\n" : std::string("*CONSTRAINED_GENERALIZED_WELD_SPOT\n"))
+          << "$#    nsid       cid\n" << kcard({I(sid), I(c)}) << "\n"
+          << "$#   tfail      epsf        sn        ss         n         m\n"
+          << kcard({R(w.tfail), B(), R(w.sn), R(w.ss), R(w.n), R(w.m)}) << "\n";
+    }
   }
 
   void walls() {
@@ -743,6 +779,8 @@ class FixedWriter {
     for (const PrescribedMotion& pm : m_.prescribed_motions) node_motions_ += pm.node >= 0 ? 1 : 0;
     if (node_motions_ < int(m_.prescribed_motions.size())) note("prescribed motions of rigid bodies have no fixed-format card: not written");
     if (!m_.rigid_body_loads.empty()) note("rigid-body loads have no fixed-format card: not written");
+    if (!m_.spot_welds.empty())
+      note("spot welds (*CONSTRAINED_SPOTWELD, *CONSTRAINED_GENERALIZED_WELD_SPOT) have no fixed-format card: not written");
     damping_card_ = m_.damping.active && m_.damping.curve < 0 && m_.damping.factor == std::array<double, 3>{1, 1, 1};
     if (m_.damping.active && !damping_card_)
       note("global mass damping with a curve or per-axis factors (*DAMPING_GLOBAL) has no fixed-format card: not written");

@@ -546,6 +546,13 @@ struct RSpc {
   int cid = 0;
   Ref ref, cid_ref;
 };
+struct RWeld {            // *CONSTRAINED_SPOTWELD or *CONSTRAINED_GENERALIZED_WELD_SPOT, resolved after nodes and sets
+  std::string keyword;
+  bool generalized = false;  // a node set (NSID) instead of two nodes
+  int n1 = 0, n2 = 0, nsid = 0, cid = 0, wid = 0;
+  double sn = 0, ss = 0, n = 0, m = 0, tfail = 0;
+  Ref ref, ref2, cid_ref;    // N1 (NSID), N2, CID
+};
 struct RLoad {            // one load or prescribed-motion card, resolved after sets and curves
   enum Kind { node, node_set, segment, segment_set, body, rigid_body, motion_node, motion_set, motion_rigid } kind = node;
   std::string keyword;    // as written
@@ -650,6 +657,7 @@ class KeywordReader {
   std::vector<RVelocity> velocities_;
   std::vector<RTemperature> temperatures_;
   std::vector<RSpc> spcs_;
+  std::vector<RWeld> welds_;
   std::vector<RHistory> histories_;
   std::vector<RLoad> loads_;
   RLoad damping_;                        // *DAMPING_GLOBAL (lcid, sf = VALDMP, dir = STX STY STZ)
@@ -1262,7 +1270,7 @@ class KeywordReader {
         "CONTACT_AUTOMATIC_NODES_TO_SURFACE", "CONTACT_ERODING_SURFACE_TO_SURFACE", "CONTACT_ERODING_NODES_TO_SURFACE",
         "CONTACT_ERODING_SINGLE_SURFACE", "BOUNDARY_SPC_NODE", "BOUNDARY_SPC_SET",
         "BOUNDARY_PRESCRIBED_MOTION_NODE", "BOUNDARY_PRESCRIBED_MOTION_SET", "BOUNDARY_PRESCRIBED_MOTION_RIGID",
-        "LOAD_SEGMENT", "LOAD_SEGMENT_SET"};
+        "LOAD_SEGMENT", "LOAD_SEGMENT_SET", "CONSTRAINED_SPOTWELD", "CONSTRAINED_GENERALIZED_WELD_SPOT"};
     if (ends("_TITLE") && (titled.count(n.substr(0, n.size() - 6)) || find_material_type_by_keyword(n.substr(0, n.size() - 6)) ||
                            find_eos_form_by_keyword(n.substr(0, n.size() - 6)))) {
       title = true;
@@ -1443,6 +1451,10 @@ bool is_ascii_database(const std::string& n) {
         parse_initial_velocity_generation(b);
       } else if (n == "BOUNDARY_SPC_NODE" || n == "BOUNDARY_SPC_SET") {
         parse_spc(b, n == "BOUNDARY_SPC_SET");
+      } else if (n == "CONSTRAINED_SPOTWELD") {
+        parse_spotweld(b);
+      } else if (n == "CONSTRAINED_GENERALIZED_WELD_SPOT") {
+        parse_generalized_weld_spot(b);
       } else if (n == "SET_SEGMENT") {
         parse_segment_set(b);
       } else if (n == "RIGIDWALL_PLANAR") {
@@ -2344,6 +2356,82 @@ bool is_ascii_database(const std::string& n) {
     }
   }
 
+  // The failure fields common to both spot-weld keywords: SN SS N M (fields k .. k + 3).
+  static void read_weld_failure(KCard& c, int k, RWeld& w) {
+    w.sn = c.r(k, "SN");
+    w.ss = c.r(k + 1, "SS");
+    w.n = c.r(k + 2, "N");
+    w.m = c.r(k + 3, "M");
+    if (w.sn < 0) c.error(1003, k, "SN", "must not be negative (0: no failure by the normal force)");
+    if (w.ss < 0) c.error(1003, k + 1, "SS", "must not be negative (0: no failure by the shear force)");
+    if (w.sn > 0 && !(w.n > 0)) c.error(1003, k + 2, "N", "the exponent of the normal force must be positive when SN is given");
+    if (w.ss > 0 && !(w.m > 0)) c.error(1003, k + 3, "M", "the exponent of the shear force must be positive when SS is given");
+  }
+
+  // *CONSTRAINED_SPOTWELD(_ID): per weld ([WID]) N1 N2 SN SS N M TF EP.
+  void parse_spotweld(const Block& b) {
+    int wid = 0;
+    for (std::size_t k = 0; k < b.data.size(); ++k) {
+      if (is_blank(b.data[k].line->text)) continue;
+      if (is_id_card(b, k)) {
+        KCard c = card(b, k, "ID card", W(b, 1));
+        wid = int(c.i(0, "WID"));
+        continue;
+      }
+      KCard c = card(b, k, "", W(b, 8));
+      RWeld w;
+      w.keyword = upper(b.keyword);
+      w.wid = wid;
+      wid = 0;
+      w.n1 = int(c.i(0, "N1"));
+      w.n2 = int(c.i(1, "N2"));
+      w.ref = c.ref(0);
+      w.ref2 = c.ref(1);
+      read_weld_failure(c, 2, w);
+      w.tfail = c.r(6, "TF", 1e20);
+      const double ep = c.r(7, "EP", 1e20);
+      if (ep != 0 && ep < 1e19) c.error(1102, 7, "EP", "ductile failure of spot welds (the effective plastic strain at their nodes)");
+      welds_.push_back(w);
+    }
+  }
+
+  // *CONSTRAINED_GENERALIZED_WELD_SPOT(_ID): per weld ([WID]) NSID CID FILTER WINDOW NPRT, then
+  // TFAIL EPSF SN SS N M.
+  void parse_generalized_weld_spot(const Block& b) {
+    int wid = 0;
+    std::vector<std::size_t> cards;
+    for (std::size_t k = 0; k < b.data.size(); ++k) {
+      if (is_blank(b.data[k].line->text)) continue;
+      if (is_id_card(b, k) && cards.size() % 2 == 0) {
+        KCard c = card(b, k, "ID card", W(b, 1));
+        wid = int(c.i(0, "WID"));
+        continue;
+      }
+      cards.push_back(k);
+      if (cards.size() % 2 == 1) continue;
+      KCard c1 = card(b, cards[cards.size() - 2], "card 1", W(b, 5));
+      KCard c2 = card(b, k, "card 2", W(b, 6));
+      RWeld w;
+      w.keyword = upper(b.keyword);
+      w.generalized = true;
+      w.wid = wid;
+      wid = 0;
+      w.nsid = int(c1.i(0, "NSID"));
+      w.ref = c1.ref(0);
+      w.cid = int(c1.i(1, "CID"));
+      w.cid_ref = c1.ref(1);
+      if (c1.i(2, "FILTER") > 1) c1.error(1102, 2, "FILTER", "filtering of the weld forces");
+      if (c1.r(3, "WINDOW") != 0) c1.error(1102, 3, "WINDOW", "filtering of the weld forces");
+      if (c1.i(4, "NPRT") == 1) c1.error(2006, 4, "NPRT", "the weld forces are not printed (no rbdout)");
+      w.tfail = c2.r(0, "TFAIL", 1e20);
+      const double epsf = c2.r(1, "EPSF");
+      if (epsf != 0 && epsf < 1e19) c2.error(1102, 1, "EPSF", "ductile failure of spot welds (the effective plastic strain at their nodes)");
+      read_weld_failure(c2, 2, w);
+      welds_.push_back(w);
+    }
+    if (cards.size() % 2 == 1) missing_card(b, "card 2 (TFAIL EPSF SN SS N M)");
+  }
+
   // ---------------------------------------------------------------- sets, boxes, systems
   // (issue 16) The keywords of this section are read here, so that the dispatch in
   // parse_blocks holds one line for all of them.  Returns false for any other keyword.
@@ -2735,6 +2823,12 @@ bool is_ascii_database(const std::string& n) {
       if (const IncludeTransform* t = transform_of(s.ref.file)) {
         offset(s.id, s.set ? t->idsoff : t->idnoff);
         offset(s.cid, t->iddoff);
+      }
+    for (RWeld& w : welds_)
+      if (const IncludeTransform* t = transform_of(w.ref.file)) {
+        if (w.generalized) offset(w.nsid, t->idsoff);
+        else offset(w.n1, t->idnoff), offset(w.n2, t->idnoff);
+        offset(w.cid, t->iddoff);
       }
     for (RHistory& h : histories_)
       for (std::size_t j = 0; j < h.ids.size(); ++j)
@@ -3309,6 +3403,7 @@ bool is_ascii_database(const std::string& n) {
     resolve_beam_materials();
     resolve_control();
     resolve_spc();
+    resolve_spot_welds();
     resolve_history();
     resolve_curves();
     resolve_walls();
@@ -4241,6 +4336,59 @@ bool is_ascii_database(const std::string& n) {
     if (rotational_spc_) {
       Location loc = loc_of(rotational_ref_, "", nullptr, false);
       diag_.add(2005, loc, std::to_string(rotational_spc_) + " rotational constraint(s) (*NODE RC, *BOUNDARY_SPC DOFR*)");
+    }
+  }
+
+  // Spot welds: their nodes (N1 N2, or the set's) and the normal axis of CID.
+  void resolve_spot_welds() {
+    for (const RWeld& r : welds_) {
+      SpotWeld w;
+      const std::string& card = r.keyword;
+      if (r.generalized) {
+        if (const RIdList* set = find_node_set(r.nsid, r.ref, card, "NSID")) w.nodes = set_nodes(*set, card);
+        else continue;
+        std::vector<int> sorted = w.nodes;
+        std::sort(sorted.begin(), sorted.end());
+        if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end()) remove_repeated_nodes(w.nodes);
+        if (w.nodes.size() < 2) {
+          err(1314, r.ref, card, "NSID", "a spot weld needs two nodes or more; set " + std::to_string(r.nsid) + " has " + std::to_string(w.nodes.size()));
+          continue;
+        }
+      } else {
+        bool ok = true;
+        for (int j = 0; j < 2; ++j) {
+          const int id = j == 0 ? r.n1 : r.n2;
+          const int idx = node_index(id);
+          if (idx < 0) {
+            err(1202, j == 0 ? r.ref : r.ref2, card, j == 0 ? "N1" : "N2", "node " + std::to_string(id) + " is not defined by *NODE");
+            ok = false;
+          }
+          w.nodes.push_back(idx);
+        }
+        if (!ok) continue;
+        if (w.nodes[0] == w.nodes[1]) {
+          Ref rr = r.ref;
+          rr.c2 = r.ref2.c2;
+          err(1003, rr, card, "N1-N2", "N1 = N2: a weld joins two different nodes");
+          continue;
+        }
+      }
+      if (r.cid != 0) {
+        std::array<double, 3> z = {0, 0, 1};
+        if (!global_direction(r.cid, r.cid_ref, card, "CID", z)) continue;
+        w.has_axis = true;
+        w.axis = z;
+      }
+      w.sn = r.sn;
+      w.ss = r.ss;
+      w.n = r.n;
+      w.m = r.m;
+      w.tfail = r.tfail > 0 ? r.tfail : 1e20;
+      w.id = r.wid;
+      w.generalized = r.generalized;
+      w.line = r.ref.line ? r.ref.line->number : 0;
+      w.file = file_index(r.ref.file);
+      m_.spot_welds.push_back(std::move(w));
     }
   }
 

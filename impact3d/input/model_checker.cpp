@@ -225,6 +225,82 @@ void check_beams(const Model& m, const Location& file_loc, Diagnostics& diag,
   }
 }
 
+// Spot welds: each node in one weld at most and on no rigid body (1253), some mass (1254), a
+// normal direction at each node (1252: coincident nodes need CID).  node_used: nodes that
+// elements use.
+void check_spot_welds(const Model& m, const Location& file_loc, Diagnostics& diag, const std::vector<char>& node_used) {
+  if (m.spot_welds.empty()) return;
+  const std::size_t nn = std::size_t(m.num_nodes());
+  // nodes of rigid bodies (their material's elements)
+  std::vector<int> rigid_mat(nn, -1);
+  auto is_rigid = [&](int mat) {
+    if (mat < 0 || std::size_t(mat) >= m.materials.size()) return false;
+    const MaterialType* t = find_material_type(m.materials[std::size_t(mat)].type);
+    return t && t->rigid;
+  };
+  for (int e = 0; e < m.num_hexes(); ++e)
+    if (m.hex_nodes[std::size_t(e)][0] >= 0 && is_rigid(m.hex_material[std::size_t(e)]))
+      for (int n : m.hex_nodes[std::size_t(e)]) rigid_mat[std::size_t(n)] = m.hex_material[std::size_t(e)];
+  for (int k = 0; k < m.num_shells(); ++k)
+    if (m.shell_nodes[std::size_t(k)][0] >= 0 && is_rigid(m.shell_material[std::size_t(k)]))
+      for (int n : m.shell_nodes[std::size_t(k)]) rigid_mat[std::size_t(n)] = m.shell_material[std::size_t(k)];
+  for (int b = 0; b < m.num_beams(); ++b)
+    if (m.beam_nodes[std::size_t(b)][0] >= 0 && is_rigid(m.beam_material[std::size_t(b)]))
+      for (int j = 0; j < 2; ++j) rigid_mat[std::size_t(m.beam_nodes[std::size_t(b)][std::size_t(j)])] = m.beam_material[std::size_t(b)];
+  // the model's size: coincidence is within 1e-9 of it
+  double lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+  for (std::size_t i = 0; i < nn; ++i) {
+    const double p[3] = {m.x[i], m.y[i], m.z[i]};
+    for (int a = 0; a < 3; ++a) lo[a] = std::min(lo[a], p[a]), hi[a] = std::max(hi[a], p[a]);
+  }
+  const double size = std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) + (hi[2] - lo[2]) * (hi[2] - lo[2]));
+  std::vector<int> weld_of(nn, -1);
+  for (std::size_t w = 0; w < m.spot_welds.size(); ++w) {
+    const SpotWeld& sw = m.spot_welds[w];
+    Location loc = file_loc;
+    if (sw.file >= 0 && std::size_t(sw.file) < m.source_files.size()) loc.file = m.source_files[std::size_t(sw.file)];
+    loc.line = sw.line;
+    loc.card = std::string(sw.generalized ? "*CONSTRAINED_GENERALIZED_WELD_SPOT" : "*CONSTRAINED_SPOTWELD") +
+               (sw.id ? " WID " + std::to_string(sw.id) : "");
+    bool mass = false;
+    double c[3] = {0, 0, 0};
+    for (int n : sw.nodes) {
+      const std::size_t k = std::size_t(n);
+      mass = mass || node_used[k];
+      if (rigid_mat[k] >= 0)
+        diag.add(1253, loc, "node " + std::to_string(m.node_id(n)) + " is on the rigid body of material " +
+                                std::to_string(m.materials[std::size_t(rigid_mat[k])].number));
+      else if (weld_of[k] >= 0)
+        diag.add(1253, loc, "node " + std::to_string(m.node_id(n)) + " is also in the weld at line " +
+                                std::to_string(m.spot_welds[std::size_t(weld_of[k])].line));
+      else
+        weld_of[k] = int(w);
+      c[0] += m.x[k] / double(sw.nodes.size());
+      c[1] += m.y[k] / double(sw.nodes.size());
+      c[2] += m.z[k] / double(sw.nodes.size());
+    }
+    if (!mass) diag.add(1254, loc, "nodes " + std::to_string(m.node_id(sw.nodes[0])) + " ...");
+    if (!sw.has_axis && (sw.sn > 0 || sw.ss > 0))  // the failure rule needs the normal
+      for (int n : sw.nodes) {
+        const std::size_t k = std::size_t(n);
+        const double d = std::sqrt((m.x[k] - c[0]) * (m.x[k] - c[0]) + (m.y[k] - c[1]) * (m.y[k] - c[1]) + (m.z[k] - c[2]) * (m.z[k] - c[2]));
+        if (!(d > 1e-9 * size)) {
+          diag.add(1252, loc, "node " + std::to_string(m.node_id(n)) + " lies at the centre of the weld's nodes (give CID, whose local z axis is then the normal)");
+          break;
+        }
+      }
+  }
+  // a prescribed motion on a welded node (the weld moves it as a rigid body)
+  for (const PrescribedMotion& pm : m.prescribed_motions)
+    if (pm.node >= 0 && weld_of[std::size_t(pm.node)] >= 0) {
+      Location loc = file_loc;
+      loc.line = pm.line;
+      loc.card = "prescribed motion";
+      diag.add(1226, loc, "node " + std::to_string(m.node_id(pm.node)) + " is in the spot weld at line " +
+                              std::to_string(m.spot_welds[std::size_t(weld_of[std::size_t(pm.node)])].line));
+    }
+}
+
 namespace {
 // Warning 2014 for each rigid material whose nodes were given velocities (after the constraints
 // have zeroed theirs, as at the start of the run) that no rigid motion v = a + w x r matches.
@@ -408,6 +484,19 @@ bool check_model(const Model& m, Diagnostics& diag) {
   }
   check_shells(m, file_loc, diag, node_used, mat_used);
   check_beams(m, file_loc, diag, node_used, mat_used);
+  check_spot_welds(m, file_loc, diag, node_used);
+  // *MAT_SPOTWELD on solids: TFAIL is a beam rule here
+  for (std::size_t k = 0; k < m.materials.size(); ++k) {
+    const MaterialData& md = m.materials[k];
+    if (md.type != 100 || md.beam || md.shell || !mat_used[k]) continue;
+    const MaterialParam* p = find_param(material_type(100), "TFAIL");
+    if (p && param_value(md, *p) > 0) {
+      Location loc = file_loc;
+      loc.line = md.line;
+      loc.card = "material " + std::to_string(md.number);
+      diag.add(1102, loc, "TFAIL of *MAT_SPOTWELD solids (the failure time acts on spot-weld beams)");
+    }
+  }
   // element faces that are interface segments (only those keys are looked for)
   std::unordered_map<std::array<int, 4>, bool, FaceKeyHash> faces;
   if (has_interface_segments(m)) {

@@ -25,6 +25,7 @@ const MaterialType& mat_piecewise_linear_type();
 const MaterialType& mat_rigid_type();
 const MaterialType& mat_mooney_rivlin_type();
 const MaterialType& mat_modified_johnson_cook_type();
+const MaterialType& mat_spotweld_type();
 
 std::span<const MaterialType* const> material_types() {
   static const MaterialType* const table[] = {  // in increasing number
@@ -38,6 +39,7 @@ std::span<const MaterialType* const> material_types() {
       &mat_piecewise_linear_type(),
       &mat_mooney_rivlin_type(),
       &mat_simplified_johnson_cook_type(),
+      &mat_spotweld_type(),
       &mat_modified_johnson_cook_type(),
   };
   return table;

@@ -150,6 +150,11 @@ struct MaterialType {
   double (*initial_temperature)(const MaterialData&) = nullptr;
 };
 
+// Type 100 (*MAT_SPOTWELD, types/mat_spotweld.cpp): MaterialConstants::k holds the beams'
+// failure resultants NRR NRS NRT MRR MSS MTT (0: not used) from index kSpotWeldNRR on and the
+// failure time TFAIL (0: none) at kSpotWeldTFAIL.
+constexpr int kSpotWeldNRR = 0, kSpotWeldTFAIL = 6;
+
 // E and nu, which every type has (keyword card 1 fields 2 and 3; fixed format where given).
 inline MaterialParam young_modulus_param(int fcard, int fcol) {
   return {.key = "E", .label = nullptr, .kcard = 0, .kfield = 2, .fcard = fcard, .fcol = fcol, .field = &MaterialData::E,

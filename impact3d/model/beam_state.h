@@ -25,6 +25,7 @@ struct BeamGroup {
   double shrf = 1.0;                 // transverse shear factor
   std::vector<BeamRulePoint> rule;   // the section's integration rule (Hughes-Liu)
   int first = 0, count = 0;          // its beams: order[first .. first + count)
+  bool spot_weld = false;            // *MAT_SPOTWELD (type 100): its failure rule deletes beams
 };
 
 struct BeamState {
@@ -53,6 +54,10 @@ struct BeamState {
   std::vector<double> de_ie;                  // this pass's internal-energy increment per beam
   std::vector<double> energy;                 // accumulated internal energy per beam
   std::vector<std::uint8_t> bad;              // 1: zero length in this pass
+  // 1: failed and deleted (no forces, no step; *MAT_SPOTWELD's failure rule); the beams that
+  // failed in the last pass, in group order (the run log lists them)
+  std::vector<std::uint8_t> failed;
+  std::vector<int> newly_failed;
   std::vector<std::uint8_t> rigid_elem;       // 1: beam of a rigid material
   std::size_t corner_base = 0;                // beam b's end j: cfx[corner_base + 2 b + j]
   std::size_t moment_base = 0;                // ... and shells.cmx[moment_base + 2 b + j]

@@ -209,6 +209,26 @@ struct ForceTransducer {
   int line = 0;  // deck line of card 1
 };
 
+// A spot weld: *CONSTRAINED_SPOTWELD (two nodes) or *CONSTRAINED_GENERALIZED_WELD_SPOT (a node
+// set).  Its nodes move as one rigid body (translations and, for nodes with rotations, their
+// rotations) until it fails; then the constraint is released.  It fails when, at one of its
+// nodes, (f_n / SN)^N + (f_s / SS)^M >= 1 (f_n the constraint force's tensile component along
+// the node's normal, f_s its shear component; a term with SN or SS 0 is not used), or at the
+// time TFAIL.  A node's normal points from it to the centre of the weld's nodes (for two nodes,
+// along the line joining them); when the nodes coincide the local z axis of CID gives it.
+struct SpotWeld {
+  std::vector<int> nodes;            // 0-based, >= 2, in the card's or set's order
+  double sn = 0, ss = 0;             // failure forces (0: not used)
+  double n = 0, m = 0;               // exponents of the normal and shear terms
+  double tfail = 1e20;               // failure time
+  bool has_axis = false;             // coincident nodes: the normal from CID
+  std::array<double, 3> axis{};      // ... its local z axis (global, unit)
+  int id = 0;                        // the _ID card's WID (0: none)
+  bool generalized = false;          // *CONSTRAINED_GENERALIZED_WELD_SPOT
+  int line = 0;                      // deck line of the node card (messages)
+  int file = -1;                     // Model::source_files index of that line (-1: the deck)
+};
+
 struct LoadCurve {
   int number = 0;
   std::vector<double> t, f;
@@ -366,6 +386,7 @@ struct Model {
   std::vector<BodyLoad> body_loads;
   std::vector<int> body_load_materials;   // 0-based materials the body loads act on; empty = all
   std::vector<PrescribedMotion> prescribed_motions;
+  std::vector<SpotWeld> spot_welds;
   GlobalDamping damping;
   bool has_loads() const {
     return !nodal_loads.empty() || !rigid_body_loads.empty() || !pressure_loads.empty() || !body_loads.empty() ||

@@ -28,6 +28,14 @@ struct RigidBody {
   // *MAT_RIGID CMO/CON1/CON2: constrained translations and rotations of the body (bits x=1,
   // y=2, z=4, global axes): those components of vcom and omega stay zero
   unsigned fix_translation = 0, fix_rotation = 0;
+  // A spot weld's body (Model::spot_welds[weld]; -1: a rigid material's body): its nodes' rotary
+  // inertias are in inertia0; per node its normal in the initial configuration (3 per node:
+  // towards the centre of the weld's nodes, or CID's z axis, then `axis_normal`); released:
+  // the weld has failed and its nodes move freely
+  int weld = -1;
+  std::vector<double> n0;
+  bool axis_normal = false;
+  bool released = false;
 };
 
 struct ElementGroup {
@@ -126,6 +134,7 @@ struct State {
 
   std::vector<MaterialConstants> mats;
   std::vector<RigidBody> rigid;
+  std::vector<int> newly_released;     // spot welds (rigid-body indices) released in the last cycle
   ShellState shells;                   // the Belytschko-Tsay shells (shell_state.h)
   BeamState beams;                     // the beams (beam_state.h)
 
@@ -164,9 +173,10 @@ struct State {
     v(shells.hgq); v(shells.drill); v(shells.dt_e); v(shells.energy); v(shells.failed); v(shells.cmx); v(shells.cmy); v(shells.cmz);
     v(shells.wx); v(shells.wy); v(shells.wz); v(shells.rot_kinetic);
     v(beams.length); v(beams.e2); v(beams.sig); v(beams.eps_rr); v(beams.back); v(beams.eps_p); v(beams.yielded);
-    v(beams.res); v(beams.bs); v(beams.dt_e); v(beams.energy);
+    v(beams.res); v(beams.bs); v(beams.dt_e); v(beams.energy); v(beams.failed);
+    v(rigid_of_node);
     for (RigidBody& rb : rigid) {
-      v(rb.com); v(rb.vcom); v(rb.rot); v(rb.omega); v(rb.ang_mom);
+      v(rb.com); v(rb.vcom); v(rb.rot); v(rb.omega); v(rb.ang_mom); v(rb.released);
     }
   }
 

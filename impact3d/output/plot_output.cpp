@@ -284,6 +284,7 @@ void fill_plot_state(const Model& m, const State& s, const InterfaceForces& ifac
   ps.beam_vars.resize(nv1d * nb);
   for (std::size_t b = 0; b < nb; ++b) fill_beam_plot_vars(s, int(b), points, &ps.beam_vars[nv1d * b]);
   ps.beam_alive.assign(nb, 1);
+  for (std::size_t b = 0; b < nb; ++b) ps.beam_alive[b] = s.beams.failed[b] ? 0 : 1;  // deleted beams: 0
   ps.shell_alive.assign(ns, 1);
   for (std::size_t k = 0; k < ns && k < s.shells.failed.size(); ++k) ps.shell_alive[k] = s.shells.failed[k] ? 0 : 1;
 }

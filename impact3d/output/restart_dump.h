@@ -44,8 +44,9 @@ struct DumpHeader {
 // State::shells: stresses, history, rotations); 11: the interface-force database (s=, its
 // cursor) in the header; 12: the shells' corner drilling moments; 13: the mesh-order flag in
 // the header; 14: the beams (State::beams: lengths, section axes, stresses, history, resultants,
-// energies).
-constexpr std::uint32_t kDumpVersion = 14;
+// energies); 15: the beams' failure flags, the spot welds (rigid bodies' released flags, the
+// node-to-body map).
+constexpr std::uint32_t kDumpVersion = 15;
 
 // Writes the dump atomically (temporary file, fsync, rename).  Throws std::runtime_error.
 // The contact state (energy books of the sliding interfaces) travels with the State.

@@ -1,7 +1,10 @@
 #include "impact3d/solve/beam_processing.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
+
+#include "impact3d/material/material_types.h"
 
 namespace impact3d {
 
@@ -43,6 +46,13 @@ void gather_beam(const State& s, int b, double dt, BeamKernelIO& io) {
 void process_beam(State& s, const BeamGroup& g, int b, double dt) {
   BeamState& bm = s.beams;
   const std::size_t B = std::size_t(b);
+  if (bm.failed[B]) {  // deleted: no forces, no step
+    zero_beam_ends(s, b);
+    bm.bad[B] = 0;
+    bm.dt_e[B] = std::numeric_limits<double>::infinity();
+    bm.de_ie[B] = 0;
+    return;
+  }
   BeamKernelIO io;
   gather_beam(s, b, dt, io);
   const std::size_t ip = std::size_t(bm.ip_start[B]);
@@ -90,6 +100,30 @@ bool beam_forces_finite(const State& s, int b) {
 
 }  // namespace
 
+bool spot_weld_beam_fails(const MaterialConstants& mc, const double res[6], const double* eps_p, int points, double time) {
+  const double tfail = mc.k[kSpotWeldTFAIL];
+  if (tfail > 0 && time >= tfail) return true;
+  // the failure resultants in the order of BeamState::res (N, Q_s, Q_t, T, M_s, M_t): NRR, NRS,
+  // NRT, MRR, MSS, MTT
+  const double* cap = &mc.k[kSpotWeldNRR];
+  bool any = false;
+  double f = 0;
+  for (int i = 0; i < 6; ++i) {
+    const double c = cap[i];
+    if (!(c > 0)) continue;
+    any = true;
+    const double r = i == 0 ? std::max(res[0], 0.0) : res[i];  // the axial force in tension only
+    f += (r / c) * (r / c);
+  }
+  if (any) return f >= 1;
+  if (mc.fail_strain > 0 && eps_p && points > 0) {
+    for (int p = 0; p < points; ++p)
+      if (eps_p[p] < mc.fail_strain) return false;
+    return true;
+  }
+  return false;
+}
+
 double beam_time_step(double length, const MaterialConstants& mc) {
   const double c = mc.rho > 0 ? std::sqrt(mc.E / mc.rho) : 0.0;
   return c > 0 ? length / c : std::numeric_limits<double>::infinity();
@@ -101,6 +135,7 @@ BeamPassResult calc_forces_for_beams(const Model& m, State& s) {
   out.dt_min = std::numeric_limits<double>::infinity();
   BeamState& bm = s.beams;
   const double dt = s.dt_half;
+  bm.newly_failed.clear();
   for (const BeamGroup& g : bm.groups) {
     const int* ord = &bm.order[std::size_t(g.first)];
     const int n = g.count;
@@ -115,6 +150,7 @@ BeamPassResult calc_forces_for_beams(const Model& m, State& s) {
     for (int q = 0; q < n; ++q) {
       const int b = ord[q];
       const std::size_t B = std::size_t(b);
+      if (bm.failed[B]) continue;
       if (bm.bad[B]) {
         if (out.bad_beam < 0 || b < out.bad_beam) out.bad_beam = b;
         continue;
@@ -126,6 +162,17 @@ BeamPassResult calc_forces_for_beams(const Model& m, State& s) {
         out.dt_beam = b;
       }
       if (!beam_forces_finite(s, b) && (out.non_finite_beam < 0 || b < out.non_finite_beam)) out.non_finite_beam = b;
+      // *MAT_SPOTWELD: its failure rule on this pass's resultants (at x^{n+1}); this pass's
+      // forces still act, from the next pass on the beam carries none
+      if (g.spot_weld && dt > 0) {
+        const std::size_t ip = std::size_t(bm.ip_start[B]);
+        const int points = bm.ip_start[B + 1] - bm.ip_start[B];
+        if (spot_weld_beam_fails(s.mats[std::size_t(g.material)], &bm.res[6 * B], bm.eps_p.empty() ? nullptr : &bm.eps_p[ip],
+                                 points, s.time)) {
+          bm.failed[B] = 1;
+          bm.newly_failed.push_back(b);
+        }
+      }
     }
     s.mat_internal[std::size_t(g.material)] += gie;
     out.die += gie;

@@ -22,6 +22,10 @@ struct BeamPassResult {
 // only its own entries and the sums run in a fixed order: the same bits for any thread count.
 BeamPassResult calc_forces_for_beams(const Model& m, State& s);
 
+// *MAT_SPOTWELD's failure rule (types/mat_spotweld.cpp) for a beam with resultants res (N,
+// Q_s, Q_t, T, M_s, M_t), its section points' plastic strains (null: none) and the time.
+bool spot_weld_beam_fails(const MaterialConstants& mc, const double res[6], const double* eps_p, int points, double time);
+
 // The beam's step: L / c, c = sqrt(E / rho) (the rotary inertia keeps the other modes slower).
 double beam_time_step(double length, const MaterialConstants& mc);
 

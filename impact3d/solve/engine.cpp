@@ -13,6 +13,7 @@
 #include "impact3d/solve/node_processing.h"
 #include "impact3d/solve/rigid_body.h"
 #include "impact3d/solve/shell_processing.h"
+#include "impact3d/solve/spot_weld.h"
 
 namespace impact3d {
 
@@ -157,6 +158,7 @@ StepStatus Engine::step() {
     times_.nodes += seconds_since(t);
     t = Clock::now();
     if (!s.rigid.empty()) update_rigid_body_velocities(s, dt_n, dt_next);
+    if (!m_.spot_welds.empty()) check_spot_weld_failure(m_, s, dt_n);
     if (!m_.walls.empty()) apply_stonewalls_to_nodes(m_, s, dt_next, dt_n);
     times_.walls += seconds_since(t);
     t = Clock::now();

@@ -73,6 +73,7 @@ Mat3 rotation_of(const Vec3& phi) {
 void update_rigid_body_velocities(State& s, double dt_n, double dt_next) {
   (void)dt_next;
   for (RigidBody& rb : s.rigid) {
+    if (rb.released) continue;  // a failed spot weld
     Vec3 F = Vec3::Zero(), M = Vec3::Zero();
     Vec3 c(rb.com[0], rb.com[1], rb.com[2]);
     unsigned fixed = 0;
@@ -131,6 +132,7 @@ std::array<double, 3> rigid_body_old_velocity(const State& s, const RigidBody& r
 
 void update_rigid_body_positions(State& s, double dt_next) {
   for (RigidBody& rb : s.rigid) {
+    if (rb.released) continue;  // a failed spot weld: its nodes moved with their velocities
     Vec3 w(rb.omega[0], rb.omega[1], rb.omega[2]);
     Mat3 R = rotation_of(w * dt_next) * to_mat(rb.rot);
     from_mat(R, rb.rot);

@@ -324,6 +324,10 @@ int run_simulation(const Model& model, const RunOptions& opt, std::ostream& prin
     for (std::size_t k = 0; k < s.newly_failed.size(); ++k)
       log.line(render(Diagnostic{5004, Severity::info, Location{},
                                  describe_solid_failure(model, s, s.newly_failed[k], s.newly_failed_cause[k])}));
+    for (int b : s.beams.newly_failed)
+      log.line(render(Diagnostic{5005, Severity::info, Location{}, describe_beam_failure(model, s, b)}));
+    for (int r : s.newly_released)
+      log.line(render(Diagnostic{5006, Severity::info, Location{}, describe_weld_release(model, s, r)}));
     if (s.cycle % report == 0 || st != StepStatus::ok) {
       log.line(format_cycle_line(model, s, elapsed(), start_time, model.control.end_time));
       for (const std::string& l : checks.check_state({model, s, refused_contacts})) log.line(l);

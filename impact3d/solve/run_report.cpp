@@ -41,6 +41,28 @@ std::string describe_solid_failure(const Model& m, const State& s, int e, FailCa
   return buf;
 }
 
+std::string describe_beam_failure(const Model& m, const State& s, int b) {
+  const BeamState& bm = s.beams;
+  const double* r = &bm.res[6 * std::size_t(b)];
+  char buf[400];
+  std::snprintf(buf, sizeof buf,
+                "beam element %d (material %d) at cycle %d, time %.6e: *MAT_SPOTWELD failure rule met "
+                "(N %.4e, Q_s %.4e, Q_t %.4e, T %.4e, M_s %.4e, M_t %.4e)",
+                m.beam_id(b), m.materials[std::size_t(bm.mat[std::size_t(b)])].number, s.cycle, s.time, r[0], r[1], r[2], r[3], r[4], r[5]);
+  return buf;
+}
+
+std::string describe_weld_release(const Model& m, const State& s, int r) {
+  const RigidBody& rb = s.rigid[std::size_t(r)];
+  const SpotWeld& w = m.spot_welds[std::size_t(rb.weld)];
+  char buf[320];
+  std::snprintf(buf, sizeof buf, "%s weld %d%s (nodes %d, %d%s) at cycle %d, time %.6e: %s",
+                w.generalized ? "*CONSTRAINED_GENERALIZED_WELD_SPOT" : "*CONSTRAINED_SPOTWELD", rb.weld + 1,
+                w.id ? (" WID " + std::to_string(w.id)).c_str() : "", m.node_id(w.nodes[0]), m.node_id(w.nodes[1]),
+                w.nodes.size() > 2 ? ", ..." : "", s.cycle, s.time, s.time >= w.tfail ? "its failure time" : "its failure forces");
+  return buf;
+}
+
 namespace {
 
 void take_node(FinalShape& f, const State& s, int n) {

@@ -13,6 +13,10 @@ namespace impact3d {
 
 // Message 5004's detail for solid e (0-based) deleted in the last cycle by `cause`.
 std::string describe_solid_failure(const Model& m, const State& s, int e, FailCause cause);
+// Message 5005's detail for beam b deleted in the last cycle (*MAT_SPOTWELD's rule).
+std::string describe_beam_failure(const Model& m, const State& s, int b);
+// Message 5006's detail for the spot weld of rigid body r released in the last cycle.
+std::string describe_weld_release(const Model& m, const State& s, int r);
 
 // The final shape of the live elements: solids, shells, beams (failed solids and shells, and
 // nodes only they held, are left out, as in postimpact summary).
