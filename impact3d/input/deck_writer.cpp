@@ -146,6 +146,7 @@ class KeywordWriter {
     for (const auto& b : m_.node_th_blocks) history(b, false);
     for (const auto& b : m_.solid_th_blocks) history(b, true);
     for (const auto& b : m_.shell_th_blocks) history(b, true, true);
+    for (const auto& b : m_.beam_th_blocks) history(b, true, false, true);
     materials();
     nodes();
     elements();
@@ -174,11 +175,14 @@ class KeywordWriter {
   int nid(int idx) const { return m_.node_user_id.empty() ? idx + 1 : m_.node_user_id[std::size_t(idx)]; }
   int eid(int idx) const { return m_.hex_user_id.empty() ? idx + 1 : m_.hex_user_id[std::size_t(idx)]; }
 
-  void history(const std::array<int, 2>& b, bool solid, bool shell = false) {
-    os_ << (shell ? "*DATABASE_HISTORY_SHELL\n$#     eid\n" : solid ? "*DATABASE_HISTORY_SOLID\n$#     eid\n" : "*DATABASE_HISTORY_NODE\n$#     nid\n");
+  void history(const std::array<int, 2>& b, bool solid, bool shell = false, bool beam = false) {
+    os_ << (beam    ? "*DATABASE_HISTORY_BEAM\n$#     eid\n"
+            : shell ? "*DATABASE_HISTORY_SHELL\n$#     eid\n"
+            : solid ? "*DATABASE_HISTORY_SOLID\n$#     eid\n"
+                    : "*DATABASE_HISTORY_NODE\n$#     nid\n");
     std::vector<KField> f;
     for (int n = b[0]; n <= b[1]; ++n) {
-      f.push_back(I(shell ? m_.shell_id(n - 1) : solid ? eid(n - 1) : nid(n - 1)));
+      f.push_back(I(beam ? m_.beam_id(n - 1) : shell ? m_.shell_id(n - 1) : solid ? eid(n - 1) : nid(n - 1)));
       if (f.size() == 8) { os_ << kcard(f) << "\n"; f.clear(); }
     }
     if (!f.empty()) os_ << kcard(f) << "\n";
@@ -763,7 +767,7 @@ class FixedWriter {
                ("interface output interval", k.interface_out_interval).str() << "\n";
     os_ << "*----- CONTROL CARD #3\n";
     os_ << T("control card 3")("node time-history blocks", int(m_.node_th_blocks.size()))
-               ("solid time-history blocks", int(m_.solid_th_blocks.size()))("beam time-history blocks", 0)
+               ("solid time-history blocks", int(m_.solid_th_blocks.size()))("beam time-history blocks", int(m_.beam_th_blocks.size()))
                ("shell time-history blocks", int(m_.shell_th_blocks.size()))("thick shell time-history blocks", 0)
                ("report interval", k.report_interval)("reaction-force print flag", k.reaction_print_flag)
                ("discrete-element print flag", 0)("element deletion flag", 0).str() << "\n";
@@ -968,7 +972,7 @@ class FixedWriter {
 
   void time_history_blocks() {
     os_ << "*----- TIME-HISTORY BLOCKS\n";
-    for (const auto* blocks : {&m_.node_th_blocks, &m_.solid_th_blocks, &m_.shell_th_blocks})  // five blocks a card
+    for (const auto* blocks : {&m_.node_th_blocks, &m_.solid_th_blocks, &m_.beam_th_blocks, &m_.shell_th_blocks})  // five blocks a card
       for (std::size_t b = 0; b < blocks->size(); b += 5) {
         TableLine c = T("time-history block card");
         for (std::size_t j = 0; j < 5 && b + j < blocks->size(); ++j)
@@ -1329,6 +1333,7 @@ std::vector<std::string> model_differences(const Model& a, const Model& b, int m
   blocks("node time-history blocks", a.node_th_blocks, b.node_th_blocks);
   blocks("solid time-history blocks", a.solid_th_blocks, b.solid_th_blocks);
   blocks("shell time-history blocks", a.shell_th_blocks, b.shell_th_blocks);
+  blocks("beam time-history blocks", a.beam_th_blocks, b.beam_th_blocks);
   N("load curves", long(a.load_curves.size()), long(b.load_curves.size()));
   for (std::size_t c = 0; c < std::min(a.load_curves.size(), b.load_curves.size()); ++c) {
     const LoadCurve &x = a.load_curves[c], &y = b.load_curves[c];

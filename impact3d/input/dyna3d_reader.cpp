@@ -52,7 +52,6 @@ class Dyna3dReader {
     read_base_accelerations();
     read_mass_damping();
     report_unused_curves();
-    report_beams();
     report_ignored();
     if (const DeckLine* l = deck_.peek_card()) {
       Location loc;
@@ -1089,6 +1088,7 @@ class Dyna3dReader {
           const std::array<int, 2> blk{int(first), int(last)};
           if (which == 0) m_.node_th_blocks.push_back(blk);
           else if (which == 1) m_.solid_th_blocks.push_back(blk);
+          else if (which == 2) m_.beam_th_blocks.push_back(blk);
           else if (which == 3) m_.shell_th_blocks.push_back(blk);
         }
       }
@@ -1907,12 +1907,6 @@ class Dyna3dReader {
     report_missing(seen, "beam element");
   }
 
-  // Beam materials or rules without beams, and beam time-history blocks (the time-history
-  // database has no beam blocks yet): listed once (2040).
-  void report_beams() {
-    if (beam_th_blocks_ > 0)
-      ignored_fields_.push_back({card2_line_ + 1, std::to_string(beam_th_blocks_) + " beam time-history block(s): beam histories are not written yet"});
-  }
 
   // Mass-proportional damping cards (control card 7 field 11 or free-format mdamp): the damping
   // ratio xi at the circular frequency omega gives every node f = -2 xi omega m v (the global

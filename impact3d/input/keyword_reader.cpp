@@ -572,6 +572,7 @@ struct RLoad {            // one load or prescribed-motion card, resolved after 
 struct RHistory {
   bool solid = false;
   bool shell = false;  // *DATABASE_HISTORY_SHELL (_ID): shell ids
+  bool beam = false;   // *DATABASE_HISTORY_BEAM (_ID): beam ids
   bool sets = false;  // *DATABASE_HISTORY_NODE_SET / _SOLID_SET: the ids are set ids
   std::vector<int> ids;
   std::vector<Ref> refs;
@@ -2451,7 +2452,8 @@ bool is_ascii_database(const std::string& n) {
       parse_coordinate_system(b);
     } else if (n == "DATABASE_HISTORY_NODE" || n == "DATABASE_HISTORY_SOLID" || n == "DATABASE_HISTORY_NODE_SET" ||
                n == "DATABASE_HISTORY_SOLID_SET" || n == "DATABASE_HISTORY_NODE_ID" || n == "DATABASE_HISTORY_SOLID_ID" ||
-               n == "DATABASE_HISTORY_SHELL" || n == "DATABASE_HISTORY_SHELL_ID") {
+               n == "DATABASE_HISTORY_SHELL" || n == "DATABASE_HISTORY_SHELL_ID" || n == "DATABASE_HISTORY_BEAM" ||
+               n == "DATABASE_HISTORY_BEAM_ID") {
       parse_history(b);
     } else {
       return false;
@@ -2868,9 +2870,10 @@ bool is_ascii_database(const std::string& n) {
     RHistory h;
     h.solid = b.name.rfind("DATABASE_HISTORY_SOLID", 0) == 0;
     h.shell = b.name.rfind("DATABASE_HISTORY_SHELL", 0) == 0;
+    h.beam = b.name.rfind("DATABASE_HISTORY_BEAM", 0) == 0;
     h.sets = b.name.size() > 4 && b.name.compare(b.name.size() - 4, 4, "_SET") == 0;
     const bool with_heading = b.name.size() > 3 && b.name.compare(b.name.size() - 3, 3, "_ID") == 0;
-    const char* field = h.sets ? "ID" : (h.solid || h.shell) ? "EID" : "NID";
+    const char* field = h.sets ? "ID" : (h.solid || h.shell || h.beam) ? "EID" : "NID";
     for (std::size_t k = 0; k < b.data.size(); ++k) {
       if (is_blank(b.data[k].line->text)) continue;
       KCard c = card(b, k, "", with_heading ? std::vector<int>{10, 70} : W(b, 8));
@@ -4428,7 +4431,12 @@ bool is_ascii_database(const std::string& n) {
       }
       for (std::size_t j = 0; !h.sets && j < h.ids.size(); ++j) {
         int v = -1;
-        if (h.shell) {  // shell ids: Model::shell_user_id (increasing) or 1..N
+        if (h.beam) {  // beam ids: Model::beam_user_id or 1..N
+          const auto& ids = m_.beam_user_id;
+          if (ids.empty()) v = h.ids[j] >= 1 && h.ids[j] <= m_.num_beams() ? h.ids[j] - 1 : -1;
+          else if (auto it = std::find(ids.begin(), ids.end(), h.ids[j]); it != ids.end()) v = int(it - ids.begin());
+          if (v < 0) err(1201, h.refs[j], "*DATABASE_HISTORY_BEAM", "EID", "element " + std::to_string(h.ids[j]) + " is not defined by *ELEMENT_BEAM");
+        } else if (h.shell) {  // shell ids: Model::shell_user_id (increasing) or 1..N
           const auto& ids = m_.shell_user_id;
           if (ids.empty()) v = h.ids[j] >= 1 && h.ids[j] <= m_.num_shells() ? h.ids[j] - 1 : -1;
           else if (auto it = std::lower_bound(ids.begin(), ids.end(), h.ids[j]); it != ids.end() && *it == h.ids[j]) v = int(it - ids.begin());
@@ -4443,7 +4451,7 @@ bool is_ascii_database(const std::string& n) {
         }
         if (v >= 0) idx.push_back(v);
       }
-      auto& blocks = h.shell ? m_.shell_th_blocks : h.solid ? m_.solid_th_blocks : m_.node_th_blocks;
+      auto& blocks = h.beam ? m_.beam_th_blocks : h.shell ? m_.shell_th_blocks : h.solid ? m_.solid_th_blocks : m_.node_th_blocks;
       for (std::size_t j = 0; j < idx.size();) {
         std::size_t e = j;
         while (e + 1 < idx.size() && idx[e + 1] == idx[e] + 1) ++e;

@@ -373,6 +373,7 @@ struct Model {
 
   std::vector<std::array<int, 2>> node_th_blocks, solid_th_blocks;  // deck numbers, inclusive
   std::vector<std::array<int, 2>> shell_th_blocks;                  // shell numbers 1..N, inclusive
+  std::vector<std::array<int, 2>> beam_th_blocks;                   // beam numbers 1..N, inclusive
   std::vector<LoadCurve> load_curves;
   std::vector<StoneWall> walls;
   std::vector<InitialVelocity> init_velocities;

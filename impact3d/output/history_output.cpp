@@ -39,14 +39,18 @@ void HistoryOutput::open(const Model& m, const std::string& dir, const std::stri
   th_nodes_.clear();
   th_solids_.clear();
   th_shells_.clear();
+  th_beams_.clear();
   for (const auto& b : m.shell_th_blocks)
     for (int k = b[0]; k <= b[1]; ++k) th_shells_.push_back(k - 1);
+  for (const auto& b : m.beam_th_blocks)
+    for (int k = b[0]; k <= b[1]; ++k) th_beams_.push_back(k - 1);
+  beam_points_ = beam_plot_points(m);
   for (const auto& b : m.node_th_blocks)  // deck numbers (init/mesh_order.h)
     for (int n = b[0]; n <= b[1]; ++n) th_nodes_.push_back(m.node_of_deck_number(n));
   for (const auto& b : m.solid_th_blocks)
     for (int e = b[0]; e <= b[1]; ++e) th_solids_.push_back(m.hex_of_deck_number(e));
   bool want[kNumAscii] = {true, true, !m.walls.empty(), m.num_interface_outputs() > 0, !th_nodes_.empty(),
-                          !th_solids_.empty() || !th_shells_.empty()};
+                          !th_solids_.empty() || !th_shells_.empty() || !th_beams_.empty()};
   for (int k = 0; k < kNumAscii; ++k) {
     if (!want[k]) continue;
     const std::string path = dir_ + "/" + kNames[k];
@@ -78,14 +82,18 @@ void HistoryOutput::open(const Model& m, const std::string& dir, const std::stri
                      m.interfaces.size(), m.interfaces.size() + 1, m.interfaces.size() + m.force_transducers.size());
     }
   }
-  // binary time histories: the solids' and shells' nodes plus the listed nodes, in deck order
-  if (!th_nodes_.empty() || !th_solids_.empty() || !th_shells_.empty()) {
+  // binary time histories: the solids', shells' and beams' nodes (a beam's orientation node
+  // too) plus the listed nodes, in deck order
+  if (!th_nodes_.empty() || !th_solids_.empty() || !th_shells_.empty() || !th_beams_.empty()) {
     thdt_node_of_.assign(std::size_t(m.num_nodes()), -1);
     std::vector<int> nodes = th_nodes_;
     for (int e : th_solids_)
       for (int n : m.hex_nodes[std::size_t(e)]) nodes.push_back(n);
     for (int k : th_shells_)
       for (int n : m.shell_nodes[std::size_t(k)]) nodes.push_back(n);
+    for (int b : th_beams_)
+      for (int n : m.beam_nodes[std::size_t(b)])
+        if (n >= 0) nodes.push_back(n);
     std::sort(nodes.begin(), nodes.end());
     nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
     subset_nodes_ = nodes;
@@ -109,6 +117,14 @@ void HistoryOutput::open(const Model& m, const std::string& dir, const std::stri
       g.shell_material.push_back(m.shell_material[std::size_t(k)] + 1);
       g.shell_user_ids.push_back(m.shell_id(k));
     }
+    for (int b : th_beams_) {
+      const auto& c = m.beam_nodes[std::size_t(b)];
+      for (int j = 0; j < 2; ++j) g.beam_nodes.push_back(thdt_node_of_[std::size_t(c[std::size_t(j)])]);
+      g.beam_orientation.push_back(c[2] >= 0 ? thdt_node_of_[std::size_t(c[2])] : -1);
+      g.beam_material.push_back(m.beam_material[std::size_t(b)] + 1);
+      g.beam_user_ids.push_back(m.beam_id(b));
+    }
+    g.beam_points = beam_points_;
     for (const auto& md : m.materials)
       g.part_titles.push_back(md.title.empty() ? "material " + std::to_string(md.number) : md.title.substr(0, 72));
     thdt_ = std::make_unique<PlotWriter>();
@@ -230,6 +246,20 @@ void HistoryOutput::write(const Model& m, const State& s,
       }
     }
   }
+  if (FILE* f = files_[kElout]; f && !th_beams_.empty()) {
+    // beams: the resultants in the beam's local axes (r axial, s and t of the section), as
+    // LS-DYNA's elout lays out its beam block: axial force, shear forces, bending moments, torsion
+    std::fprintf(f,
+                 "\n r e s u l t a n t s   f o r   b e a m s   f o r   t i m e   s t e p %8d   ( at time %12.5E )\n"
+                 "  element  materl       axial      shear-s      shear-t     moment-s     moment-t      torsion\n",
+                 s.cycle, s.time);
+    for (int b : th_beams_) {
+      const double* r = &s.beams.res[6 * std::size_t(b)];  // N, Q_s, Q_t, T, M_s, M_t
+      std::fprintf(f, "%9d %7d %12.4E %12.4E %12.4E %12.4E %12.4E %12.4E%s\n", m.beam_id(b),
+                   m.materials[std::size_t(m.beam_material[std::size_t(b)])].number, r[0] + 0.0, r[1] + 0.0, r[2] + 0.0,
+                   r[4] + 0.0, r[5] + 0.0, r[3] + 0.0, s.beams.failed[std::size_t(b)] ? "  deleted" : "");
+    }
+  }
   for (FILE* f : files_)
     if (f && std::ferror(f)) throw std::runtime_error("write error on a time-history file in " + dir_);
   if (thdt_) {
@@ -259,6 +289,14 @@ void HistoryOutput::write(const Model& m, const State& s,
       const int q = th_shells_[k];
       fill_shell_plot_vars(s, q, &ps_.shell_vars[std::size_t(kShellPlotVars) * k]);
       ps_.shell_alive[k] = !s.shells.failed.empty() && s.shells.failed[std::size_t(q)] ? 0 : 1;
+    }
+    const std::size_t nbh = th_beams_.size(), nv1d = std::size_t(6 + 5 * beam_points_);
+    ps_.beam_vars.resize(nv1d * nbh);
+    ps_.beam_alive.resize(nbh);
+    for (std::size_t k = 0; k < nbh; ++k) {
+      const int b = th_beams_[k];
+      fill_beam_plot_vars(s, b, beam_points_, &ps_.beam_vars[nv1d * k]);
+      ps_.beam_alive[k] = s.beams.failed[std::size_t(b)] ? 0 : 1;
     }
     thdt_->write_state(ps_);
   }

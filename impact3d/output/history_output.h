@@ -43,6 +43,8 @@ class HistoryOutput {
   FILE* files_[kNumAscii] = {};
   std::unique_ptr<PlotWriter> thdt_;
   std::vector<int> th_nodes_, th_solids_, th_shells_;  // 0-based, deck order
+  std::vector<int> th_beams_;   // 0-based beams of the beam time-history blocks
+  int beam_points_ = 0;         // section points per beam record (the d3plot's: beam_plot_points)
   std::vector<int> thdt_node_of_;          // subset: global node -> subset index
   std::vector<int> subset_nodes_;          // subset index -> global node
   PlotState ps_;

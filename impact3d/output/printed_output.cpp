@@ -289,7 +289,9 @@ void write_counts(std::ostream& os, const Model& m) {
      << "     node / solid time-history blocks ..... " << m.node_th_blocks.size() << " / "
      << m.solid_th_blocks.size() << "\n"
      << (m.shell_th_blocks.empty() ? std::string()
-                                   : "     shell time-history blocks ............ " + std::to_string(m.shell_th_blocks.size()) + "\n");
+                                   : "     shell time-history blocks ............ " + std::to_string(m.shell_th_blocks.size()) + "\n")
+     << (m.beam_th_blocks.empty() ? std::string()
+                                  : "     beam time-history blocks ............. " + std::to_string(m.beam_th_blocks.size()) + "\n");
 }
 
 void write_model_summary(std::ostream& os, const Model& m) {
@@ -457,12 +459,14 @@ void write_model_summary(std::ostream& os, const Model& m) {
     os << "\n";
   }
   write_loads(os, m);
-  if (!m.node_th_blocks.empty() || !m.solid_th_blocks.empty() || !m.shell_th_blocks.empty()) {
+  if (!m.node_th_blocks.empty() || !m.solid_th_blocks.empty() || !m.shell_th_blocks.empty() || !m.beam_th_blocks.empty()) {
     os << " t i m e   h i s t o r i e s\n\n";
     for (const auto& b : m.node_th_blocks) os << "   nodes " << b[0] << " to " << b[1] << "\n";
     for (const auto& b : m.solid_th_blocks) os << "   solids " << b[0] << " to " << b[1] << "\n";
     for (const auto& b : m.shell_th_blocks)
       os << "   shells " << m.shell_id(b[0] - 1) << " to " << m.shell_id(b[1] - 1) << "\n";
+    for (const auto& b : m.beam_th_blocks)
+      os << "   beams " << m.beam_id(b[0] - 1) << " to " << m.beam_id(b[1] - 1) << "\n";
     os << "\n";
   }
 }
