@@ -190,6 +190,9 @@ void calc_shell_bt_forces(const ShellGroupConstants& g, const MaterialConstants&
     if (dt > 0) {
       if (kind == ShellMaterialKind::elastic) {
         update_plane_stress_elastic(mc, d, dt, s);
+      } else if (kind == ShellMaterialKind::power_law) {
+        PlaneStressPlastic hp{nullptr, st.eps_p + p, st.yielded + p};
+        update_plane_stress_power_law(mc, d, dt, s, hp);
       } else if (kind == ShellMaterialKind::mooney_rivlin) {
         update_plane_stress_mooney_rivlin(mc, d, dt, s, st.back + 6 * p);
       } else if (kind == ShellMaterialKind::plastic_kinematic) {

@@ -81,7 +81,7 @@ bool calc_shell_frame(const double x[4][3], ShellFrame& fr);
 
 // Per-integration-point stress update callback data: the material updates sigma (5 per point,
 // local xx yy xy yz zx) from d (same order, transverse shears already times SHRF).
-enum class ShellMaterialKind { elastic, plastic_kinematic, piecewise_linear, mooney_rivlin };
+enum class ShellMaterialKind { elastic, plastic_kinematic, piecewise_linear, mooney_rivlin, power_law };
 struct ShellPointState {
   double* sig;             // 5 per point
   double* back;            // 6 per point: the back stress (plastic-kinematic) or the left Cauchy-Green

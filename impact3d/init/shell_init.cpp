@@ -21,6 +21,7 @@ struct ShellMaterial {
 constexpr ShellMaterial kShellMaterials[] = {
     {1, ShellKernel::elastic, nullptr, nullptr},
     {3, ShellKernel::plastic_kinematic, nullptr, nullptr},
+    {18, ShellKernel::power_law, nullptr, nullptr},
     {20, ShellKernel::rigid, nullptr, nullptr},
     {24, ShellKernel::piecewise_linear, "TDEL", "deletion of shells by their time step (TDEL)"},
     {27, ShellKernel::mooney_rivlin, nullptr, nullptr},

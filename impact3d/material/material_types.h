@@ -74,6 +74,8 @@ struct SolidKernel {
 // radial return on its flow curve with its rate factor; types/mat_piecewise_linear.cpp), the
 // solid kernel's scalar form, shared with the shells' plane-stress form (plane_stress.h).
 void update_stress_piecewise_linear(const MaterialConstants& m, const double d[6], double dt, SolidPointState& s);
+// The same for type 18 (*MAT_POWER_LAW_PLASTICITY, types/mat_power_law.cpp).
+void update_stress_power_law(const MaterialConstants& m, const double d[6], double dt, SolidPointState& s);
 
 // A plane-stress kernel for shells: empty today (the shell family still picks its kernel in
 // impact3d/init/shell_init.cpp, shell_kernel_for_material_type; to move here).

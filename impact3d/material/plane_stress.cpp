@@ -91,22 +91,38 @@ double update_plane_stress_plastic_kinematic(const MaterialConstants& m, const d
   return z;
 }
 
-double update_plane_stress_piecewise_linear(const MaterialConstants& m, const double d[5],
-                                            double dt, double sig[5],
-                                            const PlaneStressPlastic& h) {
+namespace {
+
+// The iterative plane stress around a table kernel's 3-D point update (isotropic hardening, a
+// plastic strain per point, no back stress).
+double update_plane_stress_with(const MaterialConstants& m, const double d[5], double dt, double sig[5],
+                                const PlaneStressPlastic& h,
+                                void (*update_point)(const MaterialConstants&, const double*, double, SolidPointState&)) {
   SolidPointState t;
   const double z = solve_thickness_rate(m, d, dt, t.sig, [&](double dzz) {
     const double d3[6] = {d[0], d[1], dzz, d[2], d[3], d[4]};
     load_stress_3d(sig, t.sig);
     t.eps_p = *h.eps_p;
     t.yielded = *h.yielded;
-    update_stress_piecewise_linear(m, d3, dt, t);
+    update_point(m, d3, dt, t);
     return t.sig[2];
   });
   store_stress_3d(t.sig, sig);
   *h.eps_p = t.eps_p;
   *h.yielded = t.yielded != 0.0;
   return z;
+}
+
+}  // namespace
+
+double update_plane_stress_piecewise_linear(const MaterialConstants& m, const double d[5], double dt, double sig[5],
+                                            const PlaneStressPlastic& h) {
+  return update_plane_stress_with(m, d, dt, sig, h, update_stress_piecewise_linear);
+}
+
+double update_plane_stress_power_law(const MaterialConstants& m, const double d[5], double dt, double sig[5],
+                                     const PlaneStressPlastic& h) {
+  return update_plane_stress_with(m, d, dt, sig, h, update_stress_power_law);
 }
 
 }  // namespace impact3d

@@ -40,6 +40,12 @@ double update_plane_stress_piecewise_linear(const MaterialConstants& m, const do
                                             double dt, double sig[5],
                                             const PlaneStressPlastic& h);
 
+// Type 18 (power-law plasticity, *MAT_018): the same iterative plane stress around type 18's own
+// 3-D update (update_stress_power_law: k (eps_yp + eps_p)^n, Cowper-Symonds of the 3-D rate norm
+// with the iterated d_zz (VP = 0) or of the plastic strain rate (VP = 1)).  h.back is not used.
+double update_plane_stress_power_law(const MaterialConstants& m, const double d[5], double dt, double sig[5],
+                                     const PlaneStressPlastic& h);
+
 // Type 27 (Mooney-Rivlin rubber, *MAT_027; types/mat_mooney_rivlin.cpp): incompressible plane
 // stress.  b holds the point's in-plane left Cauchy-Green tensor less I (xx yy xy) in the
 // shell's co-rotational frame, updated with the in-plane rate (b <- dF b dF^T, dF = (I - dt/2

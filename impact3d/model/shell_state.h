@@ -13,7 +13,7 @@ namespace impact3d {
 
 // Shell kernels, chosen per group from the material type (one table: kShellMaterials in
 // init/shell_init.cpp).
-enum class ShellKernel : std::uint8_t { rigid, elastic, plastic_kinematic, piecewise_linear, mooney_rivlin };
+enum class ShellKernel : std::uint8_t { rigid, elastic, plastic_kinematic, piecewise_linear, mooney_rivlin, power_law };
 
 // Whether a kernel keeps 6 values per integration point in ShellState::back (the back stress of
 // the plastic-kinematic kernel, the left Cauchy-Green tensor of the Mooney-Rivlin one).
@@ -23,7 +23,7 @@ inline bool shell_kernel_has_back(ShellKernel k) {
 
 // Whether a kernel keeps a plastic strain per integration point (eps_p, yielded; FAIL deletes).
 inline bool shell_kernel_is_plastic(ShellKernel k) {
-  return k == ShellKernel::plastic_kinematic || k == ShellKernel::piecewise_linear;
+  return k == ShellKernel::plastic_kinematic || k == ShellKernel::piecewise_linear || k == ShellKernel::power_law;
 }
 
 struct ShellGroup {

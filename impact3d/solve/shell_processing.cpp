@@ -13,6 +13,7 @@ ShellMaterialKind material_kind(ShellKernel k) {
   return k == ShellKernel::plastic_kinematic ? ShellMaterialKind::plastic_kinematic
          : k == ShellKernel::piecewise_linear ? ShellMaterialKind::piecewise_linear
          : k == ShellKernel::mooney_rivlin    ? ShellMaterialKind::mooney_rivlin
+         : k == ShellKernel::power_law        ? ShellMaterialKind::power_law
                                               : ShellMaterialKind::elastic;
 }
 

@@ -306,3 +306,35 @@ TEST(MatPiecewiseLinear, TableChecks) {
   EXPECT_EQ(bad[0], "EPS3:1003");
   EXPECT_EQ(bad[1], "ES4:1003");
 }
+
+// An EPS table that is all zero is no table, as LS-DYNA reads it: ES1-ES8 (here a flat 0.7 and a
+// rising tail that, read as a table, would be refused for its strains) are not used, warning 2006
+// names the first nonzero ES, and the flow stress is SIGY and ETAN's: the path of the bilinear
+// material without a table, to the bit.
+TEST(MatPiecewiseLinear, AllZeroEpsTableIsNoTable) {
+  const MaterialType& t = material_type(24);
+  MaterialData md = table_material({{0.0, 0.0}, {0.0, 0.7}, {0.0, 0.8}});
+  md.sigma_y = 0.4, md.E_tan = 20;
+  std::vector<std::string> said;
+  check_material_params(md, t, [&](const MaterialParam& p, int msg, const std::string&) {
+    said.push_back(std::string(p.key) + ":" + std::to_string(msg));
+  });
+  ASSERT_EQ(said.size(), 1u);
+  EXPECT_EQ(said[0], "ES2:2006");
+  const MaterialConstants m = derive_constants(md, Model{});
+  const double Ep = 200 * 20 / (200 - 20.0);
+  ASSERT_EQ(m.curve_eps.size(), 2u);
+  EXPECT_EQ(m.curve_sig[0], 0.4);
+  EXPECT_EQ(m.curve_sig[1], 0.4 + Ep);
+  MaterialData plain = md;
+  for (int i = 1; i <= 8; ++i) param_value(plain, *find_param(t, "ES" + std::to_string(i))) = 0;
+  Path a(md), b(plain);
+  for (int n = 1; n <= 300; ++n) {
+    const double d[6] = {2.5e-4, -1e-4, 0.5e-4, 1e-4, 0, -0.5e-4};
+    a.step(d, 1.0);
+    b.step(d, 1.0);
+  }
+  EXPECT_GT(a.s.eps_p, 0.01);
+  EXPECT_EQ(a.s.eps_p, b.s.eps_p);
+  for (int c = 0; c < 6; ++c) EXPECT_EQ(a.s.sig[c], b.s.sig[c]) << c;
+}

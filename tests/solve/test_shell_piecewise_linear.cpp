@@ -233,3 +233,56 @@ TEST(ShellPiecewiseLinearFailure, DeletesShellsWhoseEveryPointReachedFail) {
   RecordProperty("deleted_shells", std::to_string(nfailed));
   RecordProperty("energy_ratio", std::to_string(s.energy_ratio()));
 }
+
+// Type 18 (*MAT_POWER_LAW_PLASTICITY) on shells: uniaxial plane-stress tension of one shell at
+// d_xx = 100 /s to 30 % (lateral rate by secant iterations, as above): at each of the 3 points
+// sigma_xx = k (eps_yp + eps_p)^n to 1e-9 (steel-like k 600 MPa, n 0.2, SIGY 250 MPa); with
+// VP = 1 and Cowper-Symonds C 40 /s, P 5, sigma_xx = (1 + (dp/(dt C))^(1/P)) k (eps_yp + eps_p)^n
+// with dp the point's own increment of the step, to 1e-9, and well above the rate-free stress.
+TEST(ShellPowerLawElement, UniaxialTensionFollowsThePowerLaw) {
+  for (int vp = 0; vp < 2; ++vp) {
+    MaterialData md = steel_shell(18, 3);
+    const MaterialType& t = material_type(18);
+    set_param_defaults(md, t);
+    md.rho = 7850, md.E = 210e9, md.nu = 0.3;
+    const double k = 600e6, n = 0.2, sigy = 250e6, C = 40, P = 5;
+    param_value(md, *find_param(t, "K")) = k;
+    param_value(md, *find_param(t, "N")) = n;
+    param_value(md, *find_param(t, "SIGY")) = sigy;
+    if (vp) {
+      md.rate_c = C, md.rate_p = P;
+      param_value(md, *find_param(t, "VP")) = 1;
+    }
+    const double eyp = std::pow(sigy / k, 1 / n);
+    OneShell s(md, ShellMaterialKind::power_law);
+    const double a = 100, dt = 1e-6;
+    double b = -0.5 * a, b_prev = -0.3 * a;
+    for (int step = 0; step < 3000; ++step) {
+      const OneShell saved = s;
+      auto lateral = [&](double bb) {
+        s = saved;
+        s.step(a, bb, 0, dt);
+        return s.sig[1];
+      };
+      double y0 = b_prev, y1 = b;
+      double f0 = lateral(y0), f1 = lateral(y1);
+      for (int it = 0; it < 60 && std::fabs(f1) > 1e-10 * std::fabs(s.sig[0]) && f1 != f0; ++it) {
+        const double y2 = y1 - f1 * (y1 - y0) / (f1 - f0);
+        y0 = y1, f0 = f1, y1 = y2;
+        f1 = lateral(y1);
+      }
+      b_prev = y0;
+      b = y1;
+      for (int p = 0; p < 3; ++p) {
+        const double ep = s.eps_p[std::size_t(p)], dp = ep - saved.eps_p[std::size_t(p)];
+        if (!(dp > 0)) continue;
+        const double R = vp ? 1 + std::pow(dp / (dt * C), 1 / P) : 1.0;
+        ASSERT_NEAR(s.sig[5 * std::size_t(p)], R * k * std::pow(eyp + ep, n), 1e-9 * s.sig[0]) << "step " << step << " point " << p;
+      }
+    }
+    EXPECT_GT(s.eps_p[0], 0.25);
+    if (vp) {
+      EXPECT_GT(s.sig[0], 1.2 * k * std::pow(eyp + s.eps_p[0], n));
+    }
+  }
+}

@@ -38,11 +38,20 @@ enum K { kViscoplastic };
 // A parameter (0 when a programmatic MaterialData leaves par short).
 double par(const MaterialData& md, int i) { return std::size_t(i) < md.par.size() ? md.par[std::size_t(i)] : 0.0; }
 
-// The table's points (EPS1.., ES1..): up to the first pair after the first that is all zero.
+// Whether any of EPS1-EPS8 is nonzero: LS-DYNA reads an all-zero EPS table as no table (the
+// flow stress from SIGY and ETAN, or LCSS), whatever ES1-ES8 hold.
+bool eps_table_given(const MaterialData& md) {
+  for (int i = 0; i < 8; ++i)
+    if (par(md, kEps1 + i) != 0) return true;
+  return false;
+}
+
+// The table's points (EPS1.., ES1..): up to the first pair after the first that is all zero;
+// none when EPS1-EPS8 are all zero.
 int table_points(const MaterialData& md) {
   bool any = false;
   for (int i = 0; i < 8; ++i) any = any || par(md, kEs1 + i) != 0;
-  if (!any) return 0;
+  if (!any || !eps_table_given(md)) return 0;
   int n = 1;
   while (n < 8 && (par(md, kEps1 + n) != 0 || par(md, kEs1 + n) != 0)) ++n;
   return n;
@@ -59,6 +68,13 @@ void check(MaterialData& md, const MaterialType& t, const ParamReport& report) {
   const int n = table_points(md);
   static const char* eps_names[] = {"EPS1", "EPS2", "EPS3", "EPS4", "EPS5", "EPS6", "EPS7", "EPS8"};
   static const char* es_names[] = {"ES1", "ES2", "ES3", "ES4", "ES5", "ES6", "ES7", "ES8"};
+  if (!eps_table_given(md))
+    for (int i = 0; i < 8; ++i)
+      if (par(md, kEs1 + i) != 0) {  // the first nonzero ES: not used
+        report(*find_param(t, es_names[i]), 2006,
+               "EPS1-EPS8 are all zero: LS-DYNA reads no table (the flow stress from SIGY and ETAN, or LCSS)");
+        break;
+      }
   for (int i = 0; i < n; ++i) {
     const double e = par(md, kEps1 + i), s = par(md, kEs1 + i);
     if (e < 0 || (i > 0 && !(e > par(md, kEps1 + i - 1))))

@@ -1,9 +1,11 @@
 // Type 18, *MAT_POWER_LAW_PLASTICITY: von Mises plasticity with isotropic power-law hardening
 // sigma_y = k (eps_yp + eps_p)^n, eps_yp = (E / k)^(1 / (n - 1)) (the strain where the power
 // law meets the elastic line) or, with SIGY > 0, (SIGY / k)^(1 / n); Cowper-Symonds scaling
-// 1 + (rate / SRC)^(1 / SRP) with rate = sqrt(D:D) as types 3 and 24 (VP = 0); deletion at the
-// plastic strain EPSF.  The return is solve_radial_return (Newton with bisection); the block
-// form runs the scalar kernel lane by lane.
+// 1 + (rate / SRC)^(1 / SRP), VP = 0: rate = sqrt(D:D) as types 3 and 24 (the yield stress
+// scaled); VP = 1 (viscoplastic): rate = d eps_p / dt, the plastic strain rate of the step,
+// found with the increment; deletion at the plastic strain EPSF.  The return is
+// solve_radial_return (Newton with bisection); the block form runs the scalar kernel lane by
+// lane.  Shells: the plane-stress iterations of plane_stress.h around this 3-D update.
 //
 // Fixed format (an IMPACT-3D choice; no DYNA3D manual fixes type 18): card 3 E, PR, K, N, SRC,
 // SRP; card 4 SIGY, VP, EPSF (8 E10 fields per card, LS-DYNA's order).
@@ -21,7 +23,7 @@ namespace impact3d {
 namespace {
 
 enum Par { pK, pN, pSigy, pVp, kNumPar };
-enum K { kK, kN, kEyp };
+enum K { kK, kN, kEyp, kVp };
 
 double par(const MaterialData& md, int i) { return std::size_t(i) < md.par.size() ? md.par[std::size_t(i)] : 0.0; }
 
@@ -31,10 +33,13 @@ double yield_strain(const MaterialData& d) {
   return n < 1.0 ? std::pow(d.E / k, 1.0 / (n - 1.0)) : 0.0;
 }
 
-void update_point(const MaterialConstants& m, const double d[6], double dt, SolidPointState& st) {
+}  // namespace
+
+void update_stress_power_law(const MaterialConstants& m, const double d[6], double dt, SolidPointState& st) {
   update_stress_elastic(m, d, dt, st.sig);  // elastic trial
   double* sig = st.sig;
-  const double R = m.rate_c > 0.0
+  const bool vp = m.k[kVp] != 0.0 && m.rate_c > 0.0 && dt > 0.0;
+  const double R = m.rate_c > 0.0 && !vp
                        ? 1.0 + std::pow(std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2] +
                                                   2.0 * (d[3] * d[3] + d[4] * d[4] + d[5] * d[5])) / m.rate_c,
                                         m.rate_inv_p)
@@ -43,10 +48,20 @@ void update_point(const MaterialConstants& m, const double d[6], double dt, Soli
   const double s0 = sig[0] - p, s1 = sig[1] - p, s2 = sig[2] - p;
   const double q = std::sqrt(1.5 * (s0 * s0 + s1 * s1 + s2 * s2 + 2.0 * (sig[3] * sig[3] + sig[4] * sig[4] + sig[5] * sig[5])));
   const double k = m.k[kK], n = m.k[kN], eyp = m.k[kEyp];
-  const double de = solve_radial_return(q, 3.0 * m.G, st.eps_p, [&](double e, double& s, double& ds) {
+  const double e0 = st.eps_p, rate_scale = vp ? 1.0 / (dt * m.rate_c) : 0.0;
+  const double de = solve_radial_return(q, 3.0 * m.G, e0, [&](double e, double& s, double& ds) {
     const double x = eyp + e;
-    s = R * k * std::pow(x, n);
-    ds = x > 0.0 ? R * k * n * std::pow(x, n - 1.0) : HUGE_VAL;
+    if (!vp) {  // (the expressions of the VP = 0 kernel as they were: the same bits)
+      s = R * k * std::pow(x, n);
+      ds = x > 0.0 ? R * k * n * std::pow(x, n - 1.0) : HUGE_VAL;
+      return;
+    }
+    const double h = k * std::pow(x, n), dh = x > 0.0 ? k * n * std::pow(x, n - 1.0) : HUGE_VAL;
+    const double r = (e - e0 > 0.0 ? e - e0 : 0.0) * rate_scale;  // plastic strain rate / SRC
+    const double Rv = r > 0.0 ? 1.0 + std::pow(r, m.rate_inv_p) : 1.0;
+    const double dRv = r > 0.0 ? m.rate_inv_p * std::pow(r, m.rate_inv_p - 1.0) * rate_scale : HUGE_VAL;
+    s = Rv * h;
+    ds = dh == HUGE_VAL || dRv == HUGE_VAL ? HUGE_VAL : Rv * dh + h * dRv;
   });
   if (!(de > 0.0)) return;
   const double rs = 3.0 * m.G * de / q;
@@ -60,8 +75,10 @@ void update_point(const MaterialConstants& m, const double d[6], double dt, Soli
   st.yielded = 1.0;
 }
 
+namespace {
+
 void update_block(const MaterialConstants& m, HexBlock& k, double dt) {
-  update_block_lane_by_lane(m, k, dt, 0, update_point);
+  update_block_lane_by_lane(m, k, dt, 0, update_stress_power_law);
 }
 
 void check(MaterialData& md, const MaterialType& t, const ParamReport& report) {
@@ -70,6 +87,7 @@ void check(MaterialData& md, const MaterialType& t, const ParamReport& report) {
   else if (par(md, pSigy) <= 0 && !(par(md, pN) < 1))
     report(*find_param(t, "N"), 1003, "must be below 1 when SIGY is not given (the yield strain is (E/K)^(1/(N-1)))");
   if (md.rate_c > 0 && !(md.rate_p > 0)) report(*find_param(t, "SRP"), 1003, "must be positive when SRC is given");
+  if (par(md, pVp) != 0 && md.rate_c == 0) report(*find_param(t, "VP"), 2006, "VP = 1 without SRC (no rate effect)");
   if (md.fail_strain >= 1e19) md.fail_strain = 0;
 }
 
@@ -84,6 +102,7 @@ void derive(const MaterialData& d, const Model&, MaterialConstants& c) {
   }
   if (d.fail_strain > 0) c.fail_strain = d.fail_strain;
   c.sigma_y = c.k[kK] * std::pow(c.k[kEyp], c.k[kN]);
+  c.k[kVp] = par(d, pVp);
 }
 
 void echo(std::ostream& os, const MaterialData& md) {
@@ -94,6 +113,8 @@ void echo(std::ostream& os, const MaterialData& md) {
   if (md.rate_c > 0) {
     std::snprintf(b, sizeof b, "1 + (rate/C)^(1/P), C %.6e (1/time), P %.4g", md.rate_c, md.rate_p);
     echo_line(os, "strain-rate factor (Cowper-Symonds)", b);
+    echo_line(os, "rate in the factor", par(md, pVp) != 0 ? "the plastic strain rate (VP = 1, viscoplastic)"
+                                                         : "sqrt(D:D), the yield stress scaled (VP = 0)");
   }
   if (md.fail_strain > 0) {
     std::snprintf(b, sizeof b, "%.6e", md.fail_strain);
@@ -119,8 +140,8 @@ const MaterialType& mat_power_law_type() {
         {.key = "SRP", .kcard = 0, .kfield = 7, .fcard = 3, .fcol = 51, .field = &MaterialData::rate_p},
         {.key = "SIGY", .label = "initial yield stress SIGY (0: from E)", .kcard = 1, .kfield = 0, .fcard = 4, .fcol = 1,
          .index = pSigy, .check = ParamCheck::non_negative, .msg = 1211, .unit = "stress"},
-        {.key = "VP", .kcard = 1, .kfield = 1, .fcard = 4, .fcol = 11, .index = pVp, .check = ParamCheck::unsupported,
-         .detail = "VP = 1 (viscoplastic); VP = 0 scales the yield stress"},
+        {.key = "VP", .kcard = 1, .kfield = 1, .fcard = 4, .fcol = 11, .index = pVp, .check = ParamCheck::flag01,
+         .detail = "must be 0 (scale the yield stress) or 1 (viscoplastic)"},
         {.key = "EPSF", .kcard = 1, .kfield = 2, .fcard = 4, .fcol = 21, .field = &MaterialData::fail_strain,
          .check = ParamCheck::non_negative, .detail = "must not be negative (0: no failure)"},
     };
@@ -129,7 +150,7 @@ const MaterialType& mat_power_law_type() {
     t.check = check;
     t.derive = derive;
     t.echo = echo;
-    t.solid = {HexKernel::deformable, update_point, update_block, true};
+    t.solid = {HexKernel::deformable, update_stress_power_law, update_block, true};
     return t;
   }();
   return t;
