@@ -40,9 +40,10 @@ struct alignas(64) HexBlock {
   Lanes d[6], w[3], trd;                        // strain rate, spin, trace of d
   Lanes sig[6], old[6], back[6], eps_p, yielded;  // stress (old: at the start of the step)
   Lanes hist[kMaxHistory];                      // the material's history values
-  Lanes hgs[12];                                // hourglass resultants (types 4, 5)
+  Lanes hgs[12];                                // hourglass resultants (the previous pass's, then this one's)
   Lanes q, q_old;                               // bulk viscosity
   Lanes de_ie, de_hg, de_bv, dt;                // energy increments, element step
+  Lanes hg_old, hg_new, dt_hg;                  // viscous hourglass: old and new resultants' power, stable step
   Lanes de_src;                                 // energy an equation of state deposited (in de_ie too)
   Lanes cs;                                     // sound speed per lane (groups with an equation of state)
 };
@@ -87,6 +88,33 @@ constexpr double kGammaB[4][8] = {
     {1., -1., 1., -1., 1., -1., 1., -1.},
     {-1., 1., -1., 1., 1., -1., 1., -1.},
 };
+// The viscous hourglass forms' stable step M / (4 a_h mu) (hexahedron.cpp
+// viscous_hourglass_step), lane form; M = rho V.
+inline void viscous_hourglass_step_lanes(const Lanes (*g)[8], const Lanes& ah, const Lanes& rho, const Lanes& v,
+                                         Lanes& dt) {
+  IMPACT3D_FOR_LANES {
+    double gram[4][4];
+#pragma GCC unroll 16
+    for (int a = 0; a < 4; ++a)
+#pragma GCC unroll 16
+      for (int b = a; b < 4; ++b) {
+        double s = 0.0;
+#pragma GCC unroll 16
+        for (int n = 0; n < 8; ++n) s += g[a][n][l] * g[b][n][l];
+        gram[a][b] = gram[b][a] = s;
+      }
+    double mu = 0.0;
+#pragma GCC unroll 16
+    for (int a = 0; a < 4; ++a) {
+      const double row = std::fabs(gram[a][0]) + std::fabs(gram[a][1]) + std::fabs(gram[a][2]) + std::fabs(gram[a][3]);
+      mu = row > mu ? row : mu;
+    }
+    const double den = 4.0 * ah[l] * mu;
+    const double mass = rho[l] * v[l];
+    dt[l] = den > 0.0 ? mass / den : DBL_MAX;
+  }
+}
+
 }  // namespace hex_block_detail
 
 // dV/dx at the nodes and the volume V = sum x dV/dx (calc_hex_volume_derivatives).
@@ -253,11 +281,20 @@ inline void calc_hex_hourglass_force_block(HexBlock& k, int type, double qhg, do
   alignas(64) Lanes mean_corr;  // stiffness forms: kappa dt |h|^2 / 2 (the mean resultant's power)
   if (type <= 3) {
     IMPACT3D_FOR_LANES root[l] = cbrt_positive(k.v[l] * k.v[l]);
+    alignas(64) Lanes ah;
     IMPACT3D_FOR_LANES {
-      const double ah = 0.25 * qhg * k.rho[l] * c * root[l];
+      ah[l] = 0.25 * qhg * k.rho[l] * c * root[l];
+      double po = 0.0;
       #pragma GCC unroll 16
-      for (int m = 0; m < 12; ++m) qf[m][l] = ah * h[m][l];
+      for (int m = 0; m < 12; ++m) po += k.hgs[m][l] * h[m][l];
+      k.hg_old[l] = po;
+      #pragma GCC unroll 16
+      for (int m = 0; m < 12; ++m) {
+        k.hgs[m][l] = ah[l] * h[m][l];
+        qf[m][l] = k.hgs[m][l];
+      }
     }
+    hex_block_detail::viscous_hourglass_step_lanes(g, ah, k.rho, k.v, k.dt_hg);
   } else {
     IMPACT3D_FOR_LANES root[l] = cbrt_positive(k.v[l]);
     IMPACT3D_FOR_LANES {
@@ -272,6 +309,8 @@ inline void calc_hex_hourglass_force_block(HexBlock& k, int type, double qhg, do
       #pragma GCC unroll 16
       for (int m = 0; m < 12; ++m) hh += h[m][l] * h[m][l];
       mean_corr[l] = 0.5 * kdt * hh;
+      k.hg_old[l] = 0.0;
+      k.dt_hg[l] = DBL_MAX;
     }
   }
   IMPACT3D_FOR_LANES k.de_hg[l] = 0.0;  // the power, summed node by node
@@ -291,6 +330,11 @@ inline void calc_hex_hourglass_force_block(HexBlock& k, int type, double qhg, do
     }
   }
   if (type > 3) IMPACT3D_FOR_LANES k.de_hg[l] = k.de_hg[l] - mean_corr[l];
+}
+
+// The element step is the smaller of the wave step and the viscous hourglass forms' (k.dt_hg).
+inline void limit_hex_time_step_block(HexBlock& k) {
+  IMPACT3D_FOR_LANES k.dt[l] = k.dt_hg[l] < k.dt[l] ? k.dt_hg[l] : k.dt[l];
 }
 
 // Element step (calc_hex_time_step) into k.dt.

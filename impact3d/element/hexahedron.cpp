@@ -123,6 +123,28 @@ inline double add_hourglass_forces(const double g[4][8], const double q[12], con
   return power;
 }
 
+// The stable step of the viscous hourglass forms, 2 / lambda_max (hexahedron.h).  lambda_max
+// <= a_h mu / (M / 8): mu bounds the largest eigenvalue of the Gram matrix g_a . g_b of the four
+// shape vectors (Gershgorin: the largest row sum of its magnitudes; 8 for the base vectors
+// Gamma, which are orthogonal), M / 8 bounds every corner's nodal mass from below (each node
+// carries at least this solid's eighth).  So dt = 2 M / (8 a_h mu) = M / (4 a_h mu).
+inline double viscous_hourglass_step(const double g[4][8], double ah, double mass) {
+  double gram[4][4];
+  for (int a = 0; a < 4; ++a)
+    for (int b = a; b < 4; ++b) {
+      double s = 0.0;
+      for (int n = 0; n < 8; ++n) s += g[a][n] * g[b][n];
+      gram[a][b] = gram[b][a] = s;
+    }
+  double mu = 0.0;
+  for (int a = 0; a < 4; ++a) {
+    const double row = std::fabs(gram[a][0]) + std::fabs(gram[a][1]) + std::fabs(gram[a][2]) + std::fabs(gram[a][3]);
+    mu = row > mu ? row : mu;
+  }
+  const double den = 4.0 * ah * mu;
+  return den > 0.0 ? mass / den : DBL_MAX;
+}
+
 }  // namespace
 
 double calc_hex_volume(const double x[8], const double y[8], const double z[8]) {
@@ -238,7 +260,8 @@ double calc_hex_hourglass_force(const HourglassInput& in, const double x[8], con
                                 const double z[8], const double dvdx[8], const double dvdy[8],
                                 const double dvdz[8], const double vx[8], const double vy[8],
                                 const double vz[8], double hgs[12], double fx[8], double fy[8],
-                                double fz[8]) {
+                                double fz[8], HourglassExtras* out) {
+  if (out) *out = HourglassExtras{};
   if (in.qhg == 0.0 || in.volume <= 0.0) return 0.0;
   double g[4][8];
   if (in.type <= 1) {
@@ -252,9 +275,14 @@ double calc_hex_hourglass_force(const HourglassInput& in, const double x[8], con
   if (in.type <= 3) {
     const double v23 = cbrt_positive(in.volume * in.volume);
     const double ah = 0.25 * in.qhg * in.rho * in.c * v23;
-    double q[12];
-    for (int k = 0; k < 12; ++k) q[k] = ah * h[k];
-    return add_hourglass_forces(g, q, vx, vy, vz, fx, fy, fz);
+    double old_power = 0.0;
+    for (int k = 0; k < 12; ++k) old_power += hgs[k] * h[k];
+    for (int k = 0; k < 12; ++k) hgs[k] = ah * h[k];
+    if (out) {
+      out->old_power = old_power;
+      out->dt = viscous_hourglass_step(g, ah, in.rho * in.volume);
+    }
+    return add_hourglass_forces(g, hgs, vx, vy, vz, fx, fy, fz);
   }
   const double kappa = 0.25 * in.qhg * in.shear_modulus * cbrt_positive(in.volume);
   const double kdt = kappa * in.dt;

@@ -10,6 +10,8 @@
 // Symmetric tensors in Voigt order xx, yy, zz, xy, yz, zx with TENSOR (not engineering) shear
 // components. Spin w = (W_xy, W_yz, W_zx), W = skew(L) = (L - L^T)/2.
 
+#include <cfloat>
+
 namespace impact3d {
 
 // Exact volume of the trilinear hexahedron (also right for degenerate wedges/tetrahedra).
@@ -40,9 +42,9 @@ void calc_hex_stress_force(const double sig[6], const double dvdx[8], const doub
 //                linear fields, so it vanishes for any linear velocity field)
 //   type 4, 5  : Flanagan-Belytschko stiffness: hourglass resultants hgs[12] accumulate
 //                qhg * G-scaled stiffness * dt * hourglass velocity (type 5 adds 0 viscous part)
-// hgs[12] is the element's hourglass state (used by types 4/5 only, zero initially).
+// hgs[12] is the element's hourglass state: resultants (zero initially), see below.
 // Returns the hourglass power for the energy books: force . velocity (>= 0) for the viscous
-// forms; for the stiffness forms the mean resultant's, (Q^n + Q^{n+1}) / 2 . h = the updated
+// forms (see below for how they are booked); for the stiffness forms the mean resultant's, (Q^n + Q^{n+1}) / 2 . h = the updated
 // force's power less kappa dt |h|^2 / 2, which books the springs' stored energy |Q|^2 / 2 kappa
 // exactly (the updated resultant's power overbooked it by (Q^{n+1} - Q^n) . h / 2 every step,
 // as the internal energy would with the new stress instead of the mean).
@@ -55,11 +57,39 @@ struct HourglassInput {
   double volume;
   double dt;         // time step used for the stiffness forms
 };
+//
+// Viscous forms (1-3): hgs[12] holds the resultants Q_ia = a_h h_ia of the previous pass on entry
+// (zero initially) and this pass's on return; the return value is their power Q . h.  The
+// energy books (solve/element_processing.cpp) take each pass's resultants' work over the
+// velocity step they act in, Q^n . (v^{n-1/2} + v^{n+1/2}) / 2 dt^n: the kinetic energy's own
+// change under that force, whatever the damping per step.  So the next pass needs the old
+// resultants' power at the new velocities, out->old_power = Q^{n-1} . h^n (the new shape vectors
+// stand for the old ones: exact for type 1, whose vectors are constant).
+//   Booking Q^n . h^n dt instead (as before, at the velocity the force was computed from) is over
+//   by the factor 1 / (1 - lambda dt / 2): a mode u with u' = -lambda u advances as
+//   u^{n+1/2} = (1 - lambda dt) u^{n-1/2}, so the kinetic energy falls by lambda dt (2 - lambda dt)
+//   KE per step while Q . h dt = 2 lambda dt KE.
+// out->dt: the viscous forms' stable step.  The update u^{n+1/2} = (1 - lambda dt) u^{n-1/2} of a
+//   free hourglass mode is stable only for lambda dt <= 2 (and alternates in sign, period 2,
+//   beyond 1), lambda = a_h |g|^2 / m the mode's damping rate.  For a cube of side L with its own
+//   mass on its nodes (m = rho L^3 / 8, |Gamma|^2 = 8) lambda = 16 qhg c / L: the wave step L / c
+//   times TSSF gives lambda dt = 16 qhg TSSF, past 2 for qhg > 0.139 at TSSF 0.9 (the manuals'
+//   "values of QM above 0.15 may cause instabilities"); on a distorted solid the FB vectors
+//   gamma grow with the distortion (|gamma|^2 >> 8) and the bound falls far below the wave step.
+//   out->dt = 2 / lambda_max with lambda_max <= a_h mu / (M / 8), mu the Gershgorin bound of the
+//   largest eigenvalue of the Gram matrix g_a . g_b (8 for Gamma) and M = rho V the solid's mass
+//   (each node carries at least M / 8); the element step is the smaller of it and the wave step.
+//   For the cube at qhg 0.1 it is 1.25 L / c: the wave step still rules.
+//   Stiffness forms: old_power 0, dt DBL_MAX.
+struct HourglassExtras {
+  double old_power = 0.0;
+  double dt = DBL_MAX;
+};
 double calc_hex_hourglass_force(const HourglassInput& in, const double x[8], const double y[8],
                                 const double z[8], const double dvdx[8], const double dvdy[8],
                                 const double dvdz[8], const double vx[8], const double vy[8],
                                 const double vz[8], double hgs[12], double fx[8], double fy[8],
-                                double fz[8]);
+                                double fz[8], HourglassExtras* out = nullptr);
 
 // Bulk (artificial) viscosity, compression only:
 // q = rho * l * (q1 * l * trD^2 - q2 * c * trD) when trD < 0, else 0.

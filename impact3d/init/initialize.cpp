@@ -61,6 +61,8 @@ void init_elements(const Model& m, State& s) {
   s.back.assign(back ? std::size_t(6) * ne : 0, 0.0);
   s.hist.assign(std::size_t(s.hist_stride) * std::size_t(ne), 0.0);
   s.hgs.assign(hgs ? std::size_t(12) * ne : 0, 0.0);
+  s.hg_pending.assign(s.groups.size(), 0.0);
+  s.dt_vel = 0;
   s.mat_internal.assign(s.mats.size(), 0.0);
   s.mat_hourglass.assign(s.mats.size(), 0.0);
   s.cfx.assign(std::size_t(8) * s.slot_elem.size(), 0.0);

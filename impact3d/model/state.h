@@ -50,6 +50,7 @@ struct ElementGroup {
 struct BlockResult {
   double die = 0, dhg = 0, dbv = 0;   // energy increments, summed over the lanes in lane order
   double dsrc = 0;                     // energy deposited by equations of state (in die too)
+  double hg_old = 0, hg_new = 0;       // viscous hourglass: old and new resultants' power (not yet booked)
   double dt_min = 0;                   // smallest element step and its element (lowest on ties)
   int dt_elem = -1;
   int bad_volume_elem = -1, non_finite_elem = -1;  // lowest such element, or -1
@@ -121,7 +122,11 @@ struct State {
   std::vector<FailCause> newly_failed_cause;  // and what deleted each
   std::vector<double> hist;            // hist_stride per element: the material's history values (empty when none)
   int hist_stride = 0;
-  std::vector<double> hgs;             // 12 per element: hourglass stiffness resultants (empty when unused)
+  std::vector<double> hgs;             // 12 per element: hourglass resultants (empty without hourglass control)
+  // viscous hourglass forms, per element group: the power of the resultants of the last pass at
+  // the velocities they were computed from, booked with their power at the next velocities over
+  // the velocity step dt_vel between (hexahedron.h, element_processing.cpp)
+  std::vector<double> hg_pending;
   std::vector<double> q;               // bulk viscosity
   std::vector<double> cfx, cfy, cfz;   // 8 per slot: corner internal forces (corner_index)
   std::vector<double> dt_e;            // element time step
@@ -143,6 +148,7 @@ struct State {
   int cycle = 0;
   double dt_half = 0;       // dt^{n-1/2}: the step that led to the current positions
   double dt_next = 0;       // dt^{n+1/2}
+  double dt_vel = 0;        // dt^n: the velocity step of the cycle just done (0 before the first)
   int dt_elem = -1;         // element controlling the step (0-based)
   double dt0 = 0;           // first step (for the minimum step check)
 
@@ -163,10 +169,10 @@ struct State {
   void visit_dynamic_fields(V&& v) {
     v(x); v(y); v(z); v(vx); v(vy); v(vz); v(ax); v(ay); v(az);
     v(vx_old); v(vy_old); v(vz_old); v(fx); v(fy); v(fz); v(fext_x); v(fext_y); v(fext_z);
-    v(vol); v(sig); v(back); v(eps_p); v(hist); v(yielded); v(failed); v(hgs); v(q); v(cfx); v(cfy); v(cfz);
+    v(vol); v(sig); v(back); v(eps_p); v(hist); v(yielded); v(failed); v(hgs); v(hg_pending); v(q); v(cfx); v(cfy); v(cfz);
     v(dt_e); v(mat_internal); v(mat_hourglass);
     v(mass); v(shells.inertia); v(ms_factor); v(shells.ms_factor); v(added_mass); v(mat_added_mass);
-    v(time); v(cycle); v(dt_half); v(dt_next); v(dt_elem); v(dt0);
+    v(time); v(cycle); v(dt_half); v(dt_next); v(dt_vel); v(dt_elem); v(dt0);
     v(kinetic); v(internal); v(hourglass); v(bulk_viscous); v(wall_work); v(contact);
     v(external_work); v(initial_total); v(wall_force); v(wall_disp); v(wall_vel);
     v(shells.area); v(shells.sig); v(shells.back); v(shells.eps_p); v(shells.yielded);

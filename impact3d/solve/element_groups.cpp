@@ -19,7 +19,7 @@ bool group_carries_back_stress(const SolidKernel& kernel, const MaterialConstant
 }
 
 bool group_carries_hourglass_state(const MaterialData& md) {
-  return md.hourglass_type >= 4 && md.hourglass_coef != 0.0;
+  return md.hourglass_coef != 0.0;
 }
 
 void build_element_groups(State& s) {

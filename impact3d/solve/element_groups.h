@@ -15,7 +15,8 @@ namespace impact3d {
 HexKernel hex_kernel_for_material_type(int type);
 
 // Whether a group's solids carry a back stress (type 3 with a kinematic part) and hourglass
-// resultants (hourglass types 4 and 5): the element pass reads and writes s.back / s.hgs only
+// resultants (any hourglass control: the stiffness forms' springs, the viscous forms'
+// resultants of the last pass for the energy books): the element pass reads and writes s.back / s.hgs only
 // for such groups, and they are allocated only when some group needs them.
 bool group_carries_back_stress(const SolidKernel& kernel, const MaterialConstants& mc);
 bool group_carries_hourglass_state(const MaterialData& md);

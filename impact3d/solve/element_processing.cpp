@@ -124,6 +124,27 @@ void update_stress_block(const GroupPass& gp, HexBlock& k) {
   }
 }
 
+// Hourglass forces and their books.  The stiffness forms book their mean resultant's work over
+// the step just done (k.de_hg); the viscous forms leave their resultants' power at the old and
+// the new velocities (k.hg_old, k.hg_new) for calc_forces_for_elems to book over the velocity
+// step between (hexahedron.h), and their stable step in k.dt_hg.
+void calc_hourglass_for_hex_block(const GroupPass& gp, HexBlock& k) {
+  const MaterialData& md = *gp.md;
+  IMPACT3D_FOR_LANES k.hg_old[l] = k.hg_new[l] = 0;
+  IMPACT3D_FOR_LANES k.dt_hg[l] = DBL_MAX;
+  if (md.hourglass_coef == 0.0) {
+    IMPACT3D_FOR_LANES k.de_hg[l] = 0;
+    return;
+  }
+  calc_hex_hourglass_force_block(k, md.hourglass_type, md.hourglass_coef, gp.mc->c, gp.mc->G, gp.dt_hg);
+  if (md.hourglass_type <= 3) {
+    IMPACT3D_FOR_LANES k.hg_new[l] = k.de_hg[l];
+    IMPACT3D_FOR_LANES k.de_hg[l] = 0;
+  } else {
+    IMPACT3D_FOR_LANES k.de_hg[l] = k.de_hg[l] * gp.dt;
+  }
+}
+
 // One block of a deformable group: kinematics, stress, bulk viscosity, forces, hourglass,
 // step.  Results stay in k; store_hex_block writes them.
 void calc_forces_for_hex_block(const GroupPass& gp, HexBlock& k) {
@@ -140,14 +161,10 @@ void calc_forces_for_hex_block(const GroupPass& gp, HexBlock& k) {
   if (gp.eos) IMPACT3D_FOR_LANES k.cs[l] = mc.c;
   update_stress_block(gp, k);
   calc_hex_stress_force_block(k);
-  if (md.hourglass_coef != 0.0) {
-    calc_hex_hourglass_force_block(k, md.hourglass_type, md.hourglass_coef, mc.c, mc.G, gp.dt_hg);
-    IMPACT3D_FOR_LANES k.de_hg[l] = k.de_hg[l] * gp.dt;
-  } else {
-    IMPACT3D_FOR_LANES k.de_hg[l] = 0;
-  }
+  calc_hourglass_for_hex_block(gp, k);
   if (gp.eos) calc_hex_time_step_lanes_block(k, md.q1, md.q2);  // the element's own sound speed
   else calc_hex_time_step_block(k, mc.c, md.q1, md.q2);
+  limit_hex_time_step_block(k);
 }
 
 // Writes lane l's corner forces as zero (failed solids, padding).
@@ -234,6 +251,9 @@ void store_hex_block(State& s, const GroupPass& gp, const int* elems, const bool
       s.dt_e[E] = std::numeric_limits<double>::infinity();
       r.die += die;
       r.dbv += dbv;
+      r.hg_old += k.hg_old[l];  // the last resultants acted over this cycle; none from now on
+      if (gp.hg_state)
+        for (int m = 0; m < 12; ++m) s.hgs[12 * E + std::size_t(m)] = 0;
       continue;
     }
     for (int c = 0; c < 6; ++c) sig[c] = k.sig[c][l];
@@ -244,6 +264,8 @@ void store_hex_block(State& s, const GroupPass& gp, const int* elems, const bool
     r.die += k.de_ie[l];
     r.dsrc += k.de_src[l];
     r.dhg += k.de_hg[l];
+    r.hg_old += k.hg_old[l];
+    r.hg_new += k.hg_new[l];
     r.dbv += k.de_bv[l];
     if (k.dt[l] < r.dt_min) {  // lanes in increasing element order: the lowest wins ties
       r.dt_min = k.dt[l];
@@ -341,12 +363,15 @@ ElementLoopResult calc_forces_for_elems(const Model& m, State& s) {
   double die = 0, dhg = 0, dbv = 0, dsrc = 0;
   double dtmin = std::numeric_limits<double>::infinity();
   int arg = -1, bad = -1, nonfin = -1, failed = 0;
-  for (const ElementGroup& g : s.groups) {
-    double gie = 0, ghg = 0;
+  for (std::size_t gi = 0; gi < s.groups.size(); ++gi) {
+    const ElementGroup& g = s.groups[gi];
+    double gie = 0, ghg = 0, gold = 0, gnew = 0;
     for (int b = g.first_block; b < g.first_block + g.num_blocks; ++b) {
       const BlockResult& r = s.block_results[std::size_t(b)];
       gie += r.die;
       ghg += r.dhg;
+      gold += r.hg_old;
+      gnew += r.hg_new;
       dsrc += r.dsrc;
       dbv += r.dbv;
       // smallest step, lowest element on ties (blocks go group by group, not in element order)
@@ -358,6 +383,10 @@ ElementLoopResult calc_forces_for_elems(const Model& m, State& s) {
       if (r.non_finite_elem >= 0 && (nonfin < 0 || r.non_finite_elem < nonfin)) nonfin = r.non_finite_elem;
       failed += r.failed_now;
     }
+    // the viscous resultants of the last pass: their work over the velocity step they acted in,
+    // at the mean of the velocities before and after it (hexahedron.h)
+    ghg += 0.5 * (s.hg_pending[gi] + gold) * s.dt_vel;
+    s.hg_pending[gi] = gnew;
     s.mat_internal[std::size_t(g.material)] += gie;
     s.mat_hourglass[std::size_t(g.material)] += ghg;
     die += gie;

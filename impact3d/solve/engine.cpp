@@ -192,6 +192,7 @@ StepStatus Engine::step() {
   s.time += dt_next;
   s.cycle += 1;
   s.dt_half = dt_next;
+  s.dt_vel = dt_n;
   t = Clock::now();
   StepStatus st = process_elements();
   times_.elements += seconds_since(t);

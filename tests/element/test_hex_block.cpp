@@ -131,15 +131,19 @@ TEST(HexBlock, ForcesHourglassViscosityAndStepEqualTheScalarKernels) {
       calc_hex_stress_force(se, dvdx, dvdy, dvdz, fx, fy, fz);
       for (int m = 0; m < 12; ++m) hgs[m] = 1e-3 * (m - 5) * (l + 1);
       HourglassInput in{type, qhg, f.k.rho[l], c, G, v, f.dt};
+      HourglassExtras ex;
       const double power = calc_hex_hourglass_force(in, f.x[l], f.y[l], f.z[l], dvdx, dvdy, dvdz, f.vx[l],
-                                                    f.vy[l], f.vz[l], hgs, fx, fy, fz);
+                                                    f.vy[l], f.vz[l], hgs, fx, fy, fz, &ex);
       EXPECT_TRUE(same(power, f.k.de_hg[l])) << "type " << type << " lane " << l;
+      EXPECT_TRUE(same(ex.old_power, f.k.hg_old[l])) << "type " << type << " lane " << l;
+      EXPECT_TRUE(same(ex.dt, f.k.dt_hg[l])) << "type " << type << " lane " << l;
+      if (type <= 3) {
+        EXPECT_LT(ex.dt, DBL_MAX);
+      }
       for (int j = 0; j < 8; ++j)
         EXPECT_TRUE(same(fx[j], f.k.fx[j][l]) && same(fy[j], f.k.fy[j][l]) && same(fz[j], f.k.fz[j][l]))
             << "type " << type << " lane " << l << " corner " << j;
-      if (type >= 4) {
-        for (int m = 0; m < 12; ++m) EXPECT_TRUE(same(hgs[m], f.k.hgs[m][l]));
-      }
+      for (int m = 0; m < 12; ++m) EXPECT_TRUE(same(hgs[m], f.k.hgs[m][l]));
       EXPECT_TRUE(same(calc_hex_time_step(v, amax, c, trd, q1, q2), f.k.dt[l]));
     }
   }
