@@ -1296,6 +1296,9 @@ const char* ignored_keyword_reason(const std::string& n) {
   if (n == "CONTROL_SOLUTION") return "structural analysis only (SOLN 0)";
   if (n == "DATABASE_FORMAT") return "the plot database is always the LS-DYNA binary layout (8-byte words: plotwords=8 on the command line)";
   if (n.rfind("CONTROL_MPP_", 0) == 0) return "MPP decomposition controls have no effect on a shared-memory run";
+  if (n == "CONTROL_CPU") return "no CPU-time limit (CPUTIM): the run ends at its termination time or cycle";
+  if (n == "CONTROL_UNITS") return "the unit names label the model; IMPACT-3D converts nothing (the deck's numbers are used as they are)";
+  if (n == "DATABASE_NODAL_FORCE_GROUP") return "the nodal force group output (nodfor) is not written";
   return nullptr;
 }
 

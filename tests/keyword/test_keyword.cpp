@@ -967,7 +967,7 @@ TEST(KeywordRefusals, CaseVariantsOtherThanBeginEndStayRefusedWhenLenient) {
   EXPECT_EQ(lenient.count(1301), 1) << lenient.messages();
   EXPECT_NE(lenient.messages().find("refused even with --lenient-keywords"), std::string::npos) << lenient.messages();
   // other unsupported keywords are still only warnings with --lenient-keywords
-  Read other = read_text(replaced(prepost_deck(), "*END\n", "*CONTROL_CPU\n         0\n*END\n"), true);
+  Read other = read_text(replaced(prepost_deck(), "*END\n", "*CONTROL_ADAPTIVE\n         0\n*END\n"), true);
   EXPECT_TRUE(other.ok) << other.messages();
   EXPECT_EQ(other.count(2007), 1);
 }
@@ -994,13 +994,29 @@ TEST(KeywordIgnored, ControlCardsThatChangeNothingAreReadAndListed) {
       "*CONTROL_SOLUTION\n         0\n"
       "*DATABASE_FORMAT\n         0         0\n"
       "*CONTROL_MPP_IO_NODUMP\n"
+      "*CONTROL_CPU\n     100.0         0\n"
+      "*CONTROL_UNITS\n        mm        ms        kg\n"
+      "*DATABASE_NODAL_FORCE_GROUP\n         1         0\n"
       "*END\n";
   Read r = read_text(replaced(prepost_deck(), "*END\n", extra));
   EXPECT_TRUE(r.ok) << r.messages();
-  EXPECT_EQ(r.count(2008), 6) << r.messages();
+  EXPECT_EQ(r.count(2008), 9) << r.messages();
   for (const char* kw : {"*CONTROL_PARALLEL", "*CONTROL_ACCURACY", "*CONTROL_SOLID", "*CONTROL_SOLUTION",
-                         "*DATABASE_FORMAT", "*CONTROL_MPP_IO_NODUMP"})
+                         "*DATABASE_FORMAT", "*CONTROL_MPP_IO_NODUMP", "*CONTROL_CPU", "*CONTROL_UNITS",
+                         "*DATABASE_NODAL_FORCE_GROUP"})
     EXPECT_NE(r.messages().find(kw), std::string::npos) << kw << "\n" << r.messages();
+  // they change nothing: the same model runs to the same bits with them and without
+  Read plain = read_text(prepost_deck());
+  ASSERT_TRUE(plain.ok) << plain.messages();
+  Engine with(r.m), without(plain.m);
+  ASSERT_EQ(with.initialize(), StepStatus::ok);
+  ASSERT_EQ(without.initialize(), StepStatus::ok);
+  for (int c = 0; c < 20; ++c) {
+    ASSERT_EQ(with.step(), without.step());
+  }
+  EXPECT_EQ(with.state().kinetic, without.state().kinetic);
+  EXPECT_EQ(with.state().internal, without.state().internal);
+  EXPECT_EQ(with.state().x, without.state().x);
   Read thermal = read_text(replaced(prepost_deck(), "*END\n", "*CONTROL_SOLUTION\n         2\n*END\n"));
   EXPECT_FALSE(thermal.ok);
   EXPECT_EQ(thermal.count(1102), 1) << thermal.messages();
