@@ -1619,6 +1619,13 @@ bool is_ascii_database(const std::string& n) {
     if (rotational_spc_++ == 0) rotational_ref_ = r;
   }
 
+  // A 4-node tetrahedron written with N5-N8 blank (LS-PrePost): LS-DYNA's degenerate hexahedron
+  // N1 N2 N3 N4 N4 N4 N4 N4
+  static void complete_tetrahedron(std::array<int, 8>& n) {
+    if (n[3] != 0 && n[4] == 0 && n[5] == 0 && n[6] == 0 && n[7] == 0)
+      for (int j = 4; j < 8; ++j) n[std::size_t(j)] = n[3];
+  }
+
   void parse_element_solid(const Block& b) {
     const int idw = b.long_fmt ? 20 : b.i10 ? 10 : 8;
     reserve_for(elems_, b.data.size());
@@ -1655,6 +1662,7 @@ bool is_ascii_database(const std::string& n) {
           }
         }
         if (ok && e.id >= 1) {
+          complete_tetrahedron(e.n);
           elems_.push_back(e);
           k += legacy ? 1 : 2;
           continue;
@@ -1696,6 +1704,7 @@ bool is_ascii_database(const std::string& n) {
         k += 2;
       }
       if (e.id < 1) { c.error(1201, 0, "EID", "element ids must be positive"); continue; }
+      complete_tetrahedron(e.n);
       if (ok) elems_.push_back(e);
     }
   }

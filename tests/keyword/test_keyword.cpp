@@ -1049,3 +1049,34 @@ TEST(KeywordTermination, EndCycleStopsTheRunAndRoundTrips) {
   EXPECT_FALSE(neg.ok);
   EXPECT_EQ(neg.count(1003), 1) << neg.messages();
 }
+
+namespace {
+// One tetrahedron (node 4 above the triangle 1-2-3) written as `elem`, an *ELEMENT_SOLID card.
+std::string tet_deck(const std::string& elem) {
+  return "*KEYWORD\n*CONTROL_TERMINATION\n   1.0e-06\n*NODE\n"
+         "       1             0.0             0.0             0.0\n"
+         "       2           0.002             0.0             0.0\n"
+         "       3             0.0           0.002             0.0\n"
+         "       4             0.0             0.0           0.002\n"
+         "*PART\ntet\n         1         1         1\n*SECTION_SOLID\n         1         1\n"
+         "*MAT_ELASTIC\n         1    7850.0   2.0e+11       0.3\n*ELEMENT_SOLID\n" + elem + "*END\n";
+}
+}  // namespace
+
+// A 4-node tetrahedron written by LS-PrePost with N5-N8 blank reads as LS-DYNA's degenerate
+// hexahedron N1 N2 N3 N4 N4 N4 N4 N4 (the same Model as the card that repeats N4), one-line and
+// two-line forms; the element's volume is the tetrahedron's, L^3/6.
+TEST(KeywordElements, TetrahedronWithBlankN5ToN8IsTheDegenerateHexahedron) {
+  const Read repeated = read_text(tet_deck("       1       1       1       2       3       4       4       4       4       4\n"));
+  ASSERT_TRUE(repeated.ok) << repeated.messages();
+  for (const std::string& blank : {std::string("       1       1       1       2       3       4\n"),
+                                   std::string("       1       1\n       1       2       3       4\n")}) {
+    const Read r = read_text(tet_deck(blank));
+    ASSERT_TRUE(r.ok) << r.messages();
+    ASSERT_EQ(r.m.num_hexes(), 1);
+    EXPECT_EQ(r.m.hex_nodes[0], repeated.m.hex_nodes[0]);
+    Engine e(r.m);
+    ASSERT_EQ(e.initialize(), StepStatus::ok);
+    EXPECT_NEAR(e.state().vol0[0], 0.002 * 0.002 * 0.002 / 6, 1e-12 * 0.002 * 0.002 * 0.002);
+  }
+}
