@@ -21,6 +21,7 @@
 #include "impact3d/input/deck_writer.h"
 #include "impact3d/output/printed_output.h"
 #include "impact3d/solve/run.h"
+#include "tests/support/history_runs.h"
 
 using namespace impact3d;
 namespace fs = std::filesystem;
@@ -56,32 +57,9 @@ std::string bar_deck() {
   return d.str();
 }
 
-Model read_text(const std::string& text, const std::string& name) {
-  DeckFile deck;
-  deck.load_from_string(name, text);
-  Model m;
-  Diagnostics d;
-  bool ok = read_deck(deck, m, d, InputOptions{}) && check_model(m, d);
-  std::ostringstream os;
-  d.print(os);
-  EXPECT_TRUE(ok) << os.str();
-  return m;
-}
+Model read_text(const std::string& text, const std::string& name) { return test_support::read_model_text(text, name); }
 
-fs::path run_in(const Model& m, const std::string& name) {
-  const fs::path dir = fs::path(IMPACT3D_BINARY_DIR) / "beam_history_runs" / name;
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  RunOptions o;
-  o.printed = (dir / "d3hsp").string();
-  o.plot = (dir / "d3plot").string();
-  o.dump = (dir / "d3dump").string();
-  o.quiet = true;
-  o.threads = 1;
-  std::ofstream printed(o.printed);
-  EXPECT_EQ(run_simulation(m, o, printed), 0);
-  return dir;
-}
+fs::path run_in(const Model& m, const std::string& name) { return test_support::run_model_in(m, "beam_history_runs", name); }
 
 // elout's beam rows of the last block: id, material, N, Q_s, Q_t, M_s, M_t, T
 struct EloutBeamRow {

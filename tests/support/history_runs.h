@@ -1,0 +1,48 @@
+// Helpers of the output tests that read a keyword or fixed-format deck from text and run it to
+// its output files in a folder of the build tree (tests/output/test_*_histories.cpp).
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "impact3d/input/deck_reader.h"
+#include "impact3d/solve/run.h"
+
+namespace test_support {
+
+// The Model of a deck given as text (`name` tells the format by its extension); a failed read
+// or check fails the test with the messages.
+inline impact3d::Model read_model_text(const std::string& text, const std::string& name) {
+  impact3d::DeckFile deck;
+  deck.load_from_string(name, text);
+  impact3d::Model m;
+  impact3d::Diagnostics d;
+  const bool ok = impact3d::read_deck(deck, m, d, impact3d::InputOptions{}) && impact3d::check_model(m, d);
+  std::ostringstream os;
+  d.print(os);
+  EXPECT_TRUE(ok) << os.str();
+  return m;
+}
+
+// Runs m on one thread with its d3hsp, d3plot and d3dump in IMPACT3D_BINARY_DIR/group/name
+// (emptied first); the run must end normally.
+inline std::filesystem::path run_model_in(const impact3d::Model& m, const std::string& group, const std::string& name) {
+  const std::filesystem::path dir = std::filesystem::path(IMPACT3D_BINARY_DIR) / group / name;
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  impact3d::RunOptions o;
+  o.printed = (dir / "d3hsp").string();
+  o.plot = (dir / "d3plot").string();
+  o.dump = (dir / "d3dump").string();
+  o.quiet = true;
+  o.threads = 1;
+  std::ofstream printed(o.printed);
+  EXPECT_EQ(impact3d::run_simulation(m, o, printed), 0);
+  return dir;
+}
+
+}  // namespace test_support
