@@ -446,8 +446,10 @@ void MiliReader::open(const std::string& path) {
             hc.resize(static_cast<std::size_t>(c.count), 0);
             for (std::int64_t o = first - 1; o < last; ++o, ++e) {
                 const std::int64_t at = at0 + e * words * 4;
-                for (int j = 0; j < nn; ++j)
-                    c.conn[static_cast<std::size_t>(o * nn + j)] = v.i32(at + 4 * j, "connectivity") - 1;
+                for (int j = 0; j < nn; ++j) {  // ordinals from 1 (INT_MIN kept: no overflow; refused below)
+                    const std::int32_t ord = v.i32(at + 4 * j, "connectivity");
+                    c.conn[static_cast<std::size_t>(o * nn + j)] = ord == std::numeric_limits<std::int32_t>::min() ? ord : ord - 1;
+                }
                 c.material[static_cast<std::size_t>(o)] = v.i32(at + 4 * nn, "material");
                 c.part[static_cast<std::size_t>(o)] = v.i32(at + 4 * nn + 4, "part");
                 hc[static_cast<std::size_t>(o)] = 1;
@@ -862,7 +864,7 @@ void MiliReader::build_geometry() {
         for (std::size_t k = 0; k < c.conn.size(); ++k) {
             const int n = c.conn[k];
             if (static_cast<int>(k % static_cast<std::size_t>(c.nodes_per_element)) < used && (n < 0 || n >= nn))
-                fail(F, "class " + c.name + ": node ordinal " + std::to_string(n + 1) + " in the connectivity, the mesh has " +
+                fail(F, "class " + c.name + ": node ordinal " + std::to_string(std::int64_t(n) + 1) + " in the connectivity, the mesh has " +
                             std::to_string(nn) + " nodes");
         }
         for (std::int64_t e = 0; e < c.count; ++e) {
