@@ -1,4 +1,4 @@
-// Taylor-bar convergence runs for README "OFHC copper with Johnson-Cook": the model of
+// Taylor-bar convergence runs for docs/validation.md "OFHC copper with Johnson-Cook": the model of
 // tests/solve/test_taylor_ofhc.cpp (the seed Taylor mesh scaled to the test's size, type 15, all
 // nodes at the impact speed onto the stonewall) on any taylor_bar deck, e.g. a refined one from
 // the deck generator:

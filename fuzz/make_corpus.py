@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Seed corpora of the fuzz targets (README.md, "Fuzzing and sanitizers"), from the shipped
+"""Seed corpora of the fuzz targets (docs/fuzzing.md, "Fuzzing and sanitizers"), from the shipped
 decks, the malformed-deck corpus, the regression references and fuzz/seeds/.
 
 usage: make_corpus.py SOURCE_DIR OUT_DIR IMPACT3D_BINARY

@@ -1,4 +1,4 @@
-// postimpact suite: a user's regression suite (README.md, "Regression suites for users").
+// postimpact suite: a user's regression suite (docs/regression-suites.md, "Regression suites for users").
 //
 // A suite is a folder:
 //   decks/NAME.dyn | NAME.k | NAME.key   the decks (fixed format or keyword)

@@ -1,7 +1,7 @@
 // postimpact summary DB: a few numbers that characterise a run (final length and radius, the
 // largest plastic strain, the final energies, the cycle count), as "key value" lines; and
 // postimpact compare-summary A B: the comparison of two such files with the tolerances of
-// postimpact compare (README.md, "Regression suite").
+// postimpact compare (docs/regression-suites.md, "Regression suite").
 #pragma once
 
 #include <ostream>

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer targets (fuzz/) with clang in build-fuzz/ and runs each of them
-# (README.md, "Fuzzing and sanitizers").
+# (docs/fuzzing.md, "Fuzzing and sanitizers").
 #
 #   tools/fuzz.sh                 short run: every target for 20 s, two at a time (CTest, label fuzz)
 #   tools/fuzz.sh --seconds N     every target for N s (short-run style, two at a time)

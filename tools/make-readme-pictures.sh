@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Regenerates the README pictures of the three seed examples (README.md, "Seed examples"):
+# Regenerates the README pictures of the three seed examples (docs/validation.md, "Seed examples"):
 # builds if needed (tools/build.sh), runs decks/{taylor_bar,crossed_cylinders,oblique_rod}.dyn
 # into out/seed/<name>/ with ncpu=2, then renders each with postimpact and the command file
 # tools/pictures/<name>.cmd into docs/images/<name>_*.png.

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Regenerates the README pictures of a suite report (README.md, "Regression suites for users"):
+# Regenerates the README pictures of a suite report (docs/regression-suites.md, "Regression suites for users"):
 # a suite of three regression decks (tests/regression/decks) in out/suite_demo/suite, references
 # stored with `postimpact suite --update`, then one stress value of column_uniaxial_strain's
 # reference scaled by 1.001 (the first value of 1 MPa..1 TPa magnitude before the middle of

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Rewrites the stored references of the regression suite (README.md, "Regression suite") with
+# Rewrites the stored references of the regression suite (docs/regression-suites.md, "Regression suite") with
 # `postimpact suite tests/regression --update`, the one code path that stores references (users'
 # suites use the same command; the CTest tests run `postimpact suite tests/regression --job NAME`,
 # the same runs: SOURCE_DATE_EPOCH=0, ncpu=1, plotwords=8, plus a deck's options/NAME.txt):

@@ -22,7 +22,7 @@
 // Without it, a node's rotation about the normal is free, and on a curved (faceted) mesh it
 // projects on the neighbours' in-plane axes with opposite signs: it enters their twist as
 // -theta_n / R and takes away the twisting stiffness of a curved shell (the Scordelis-Lo roof
-// 1.47 x the reference; README "Shells").
+// 1.47 x the reference; docs/shells.md "Shells").
 
 #include "impact3d/material/material.h"
 
@@ -35,7 +35,7 @@ constexpr int kMaxShellIntegrationPoints = 10;
 // at 16 x 16: 1.020 x the reference with 1e-4, 0.993 with 1e-3, 0.990 with 1e-2), small enough
 // to add little spurious in-plane bending stiffness (one-point spin: constant per shell, so a
 // spin gradient costs k_d (dx grad omega)^2; the 6 x 1 MacNeal-Harder cantilever's in-plane tip
-// displacement moves by -0.7 % at 1e-3, -7 % at 1e-2): README "Shells".
+// displacement moves by -0.7 % at 1e-3, -7 % at 1e-2): docs/shells.md "Shells".
 constexpr double kShellDrillingCoef = 0.001;
 
 // Through-thickness Gauss-Legendre rule on [-1, 1] with n points (1-10): points and weights

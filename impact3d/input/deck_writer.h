@@ -1,6 +1,6 @@
 #pragma once
 // Deck writers: any Model that was read (from either format) written back as an LS-DYNA keyword
-// deck or as a DYNA3D fixed-format deck (README.md "Deck format" and "Keyword decks"), so that
+// deck or as a DYNA3D fixed-format deck (docs/deck-format.md "Deck format" and "Keyword decks"), so that
 // reading the written deck gives the same model.  Real values are written in their shortest
 // exact form; a keyword card whose values do not fit its columns is written in comma free
 // format, so the keyword deck is always exact.  The fixed format has fixed widths (E10, E20):

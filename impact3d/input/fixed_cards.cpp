@@ -56,7 +56,7 @@ FixedCardLayout node_card(const char* id, int w) {
 void add_model_cards(std::vector<FixedCardLayout>& t) {
   t.push_back({"material card 1", "88 later", {
       {"material number", 1, 5, S, 0, R, nullptr, "a label (elements refer to it)"},
-      {"material type", 6, 10, S, 0, R, nullptr, "README Materials (71: read as type 3)"},
+      {"material type", 6, 10, S, 0, R, nullptr, "Material sets in deck-format.md (71: read as type 3)"},
       {"density", 11, 20, K::real, 0, R, nullptr, "mass density"},
       {"EOS type", 21, 25, S, 0, R, nullptr, "equation of state form (its cards after card 8)"},
       {"hourglass type", 26, 30, S, 1, R, nullptr, "1-5 (0: 1; 6-10 read as 5)"},
@@ -72,7 +72,7 @@ void add_model_cards(std::vector<FixedCardLayout>& t) {
       {"title", 1, 80, K::text, 0, R, nullptr, "material card 2: the material's title (INGRID: \"material type # 3 (...)\")"},
   }});
   t.push_back({"material property card", "88 later", {
-      {"field 1", 1, 10, K::real, 0, R, nullptr, "material cards 3-8: each type's parameters where its table puts them (README Materials)"},
+      {"field 1", 1, 10, K::real, 0, R, nullptr, "material cards 3-8: each type's parameters where its table puts them (Material sets in deck-format.md)"},
       {"field 2", 11, 20, K::real, 0, R, nullptr, "a field no parameter of the type uses: warning 2006 when nonzero"},
       {"field 3", 21, 30, K::real, 0, R, nullptr, ""},
       {"field 4", 31, 40, K::real, 0, R, nullptr, ""},

@@ -3054,7 +3054,7 @@ bool is_ascii_database(const std::string& n) {
   }
 
   // *CONTACT optional cards A (SOFT SOFSCL LCIDAB MAXPAR SBOPT DEPTH BSORT FRCFRQ) and B (PENMAX
-  // THKOPT SHLTHK SNLOG ISYM I2D3D SLDTHK SLDSTF), as LS-DYNA reads them (README "Contact"):
+  // THKOPT SHLTHK SNLOG ISYM I2D3D SLDTHK SLDSTF), as LS-DYNA reads them (docs/contact.md "Contact"):
   // what IMPACT-3D implements is honoured, the rest refused by field.
   void parse_contact_optional_cards(const Block& b, std::size_t ka, RContact& ct) {
     KCard ca = card(b, ka, "optional card A", W(b, 8));
@@ -3078,7 +3078,7 @@ bool is_ascii_database(const std::string& n) {
     KCard cb = card(b, ka + 1, "optional card B", W(b, 8));
     if (cb.r(0, "PENMAX") != 0) cb.error(1102, 0, "PENMAX", "a maximum penetration (IMPACT-3D: half the segment's element, README \"Contact\")");
     // THKOPT 0: *CONTROL_CONTACT's SHLTHK, 1: SHLTHK of this card, 2: no thickness (the old
-    // way); automatic contacts always take the thickness (README "Contact")
+    // way); automatic contacts always take the thickness (docs/contact.md "Contact")
     ct.thkopt = int(cb.i(1, "THKOPT"));
     if (ct.thkopt < 0 || ct.thkopt > 2) cb.error(1006, 1, "THKOPT", "0 *CONTROL_CONTACT's SHLTHK, 1 SHLTHK of this card, 2 no shell thickness");
     ct.shlthk = int(cb.i(2, "SHLTHK"));

@@ -1,4 +1,4 @@
-// The run checks (run_checks.h, README "Run checks").
+// The run checks (run_checks.h, docs/command-line.md "Run checks").
 
 #include "impact3d/solve/run_checks.h"
 

@@ -1,5 +1,5 @@
 #pragma once
-// The run checks (README "Run checks"): what an analyst checks by hand in a run's energies,
+// The run checks (docs/command-line.md "Run checks"): what an analyst checks by hand in a run's energies,
 // checked at every report of the run log and at the end.  Each cause is said once, as a
 // numbered warning (5101-5105) in the printed file and on the terminal, naming the material
 // (part) or the energy it is about; the run ends with a verdict (5110): clean, or suspect with

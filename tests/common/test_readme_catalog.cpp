@@ -1,4 +1,4 @@
-// The README's message table lists exactly the catalog (scripts rely on the documented numbers).
+// docs/messages.md's message table lists exactly the catalog (scripts rely on the documented numbers).
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -9,8 +9,8 @@
 #include "common/messages.h"
 
 TEST(MessageCatalog, ReadmeTableMatchesTheCatalog) {
-  std::ifstream in(std::string(IMPACT3D_SOURCE_DIR) + "/README.md");
-  ASSERT_TRUE(in) << "README.md not found";
+  std::ifstream in(std::string(IMPACT3D_SOURCE_DIR) + "/docs/messages.md");
+  ASSERT_TRUE(in) << "docs/messages.md not found";
   std::set<std::pair<int, std::string>> documented;
   const std::regex row(R"(^\| (\d{4}) \| (error|warning|info) \| (.*) \|$)");
   std::string line;
@@ -21,9 +21,9 @@ TEST(MessageCatalog, ReadmeTableMatchesTheCatalog) {
   std::set<std::pair<int, std::string>> catalog;
   for (const auto& d : impact3d::message_catalog()) {
     std::string text = d.text;
-    // the README escapes '|' in table cells
+    // the table escapes '|' in table cells
     for (std::size_t p = 0; (p = text.find('|', p)) != std::string::npos; p += 2) text.insert(p, "\\");
     catalog.insert({d.id, text});
   }
-  EXPECT_EQ(documented, catalog) << "regenerate the README table from `impact3d --messages`";
+  EXPECT_EQ(documented, catalog) << "regenerate the table of docs/messages.md from `impact3d --messages`";
 }

@@ -1,7 +1,7 @@
 // Contact that creates no energy (issue 25): the spring holds the penetration the node's
 // approach explains, so a node found inside a segment without having moved there (a start
 // inside, a face that failures expose around it, a slide under an edge) gets no spring of its
-// whole depth (README "Contact", "Which penetrations count").
+// whole depth (docs/contact.md "Contact", "Which penetrations count").
 
 #include <gtest/gtest.h>
 
@@ -309,7 +309,7 @@ TEST(ContactStiffness, SoftOneIsLsDynasSoftConstraint) {
   const LightRun rb = run_light_cube(big.m);
   std::printf("SOFT 1, SOFSCL 1000: max omega dt %.3g\n", rb.omega_dt);
   EXPECT_GT(rb.omega_dt, 2.0);
-  // SOFT -1: the IMPACT-3D maximum stable stiffness (README "Contact"), stable by construction
+  // SOFT -1: the IMPACT-3D maximum stable stiffness (docs/contact.md "Contact"), stable by construction
   const ReadDeck ms = read_deck_text(light_cube_deck(0, ki(-1) + "\n", 40e-6));
   ASSERT_TRUE(ms.ok) << ms.messages();
   EXPECT_EQ(ms.m.interfaces[0].stiffness_method, 1);

@@ -13,7 +13,7 @@
 // on the coarse block (0.968 on the 1 mm block) and came back only when the contact ended.  The
 // work is now booked after the rigid bodies, walls and prescribed motions have set the velocities
 // (SlidingInterfaces::book_energy): each cycle's booked contact energy is the forces' work to
-// round-off.  README "Contact" ("Rigid bodies in contact: the energy balance").
+// round-off.  docs/contact.md "Contact" ("Rigid bodies in contact: the energy balance").
 //
 // What is left in the ratio is the central-difference time levels: the kinetic energy is at
 // t^{n+1/2}, the internal energy at t^{n+1}, so the ratio leads by half a cycle's internal-energy
@@ -255,8 +255,8 @@ TEST(RigidCubeImpact, EnergyBalanceAt300And600MetresPerSecond) {
 // alone), and the first cycle of contact throws the cube back with energy no motion gave it
 // (SOFT 0 with PENOPT 2, the segment's stiffness: energy ratio 2.19 at the end at 600 m/s, 1.23
 // at 50 m/s).  SOFT = -1 (the IMPACT-3D maximum stable stiffness of each node pair's masses,
-// README "Contact"; SOFT = 1 before issue 25) keeps it stable: measured
-// 1.0000..1.0298, end 1.0031 at 600 m/s; limits -0.5 % / +4 %, end 1 %.  README "Contact" advises
+// docs/contact.md "Contact"; SOFT = 1 before issue 25) keeps it stable: measured
+// 1.0000..1.0298, end 1.0031 at 600 m/s; limits -0.5 % / +4 %, end 1 %.  docs/contact.md "Contact" advises
 // SOFT -1 for an impactor whose mesh is finer than the target's.
 TEST(RigidCubeImpact, CoarseTargetKeepsTheBalanceWithSoft1) {
   const double v = 600;

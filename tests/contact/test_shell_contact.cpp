@@ -279,7 +279,7 @@ struct DropContact {
 // At the mid-surface the plate has 5 x 5 shells (20 mm): 4 plate nodes under the block, none in
 // the planes of its side faces, its 9 bottom nodes inside plate segments; a plate node in the
 // plane of a side face may take that face, which it touches, for its contact segment once it has
-// passed the bottom face (a known limit of the search at zero offsets, README "Shells in contact").
+// passed the bottom face (a known limit of the search at zero offsets, docs/contact.md "Shells in contact").
 void check_rigid_drop(int side, const DropContact& dc = DropContact{}) {
   const int n = dc.mid_surface ? 5 : 4;
   RigidDrop rd(side, n);

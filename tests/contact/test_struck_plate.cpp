@@ -23,7 +23,7 @@
 // w is the displacement conjugate to it (sum p_i w_i, the block's travel).  Timoshenko's clamped
 // plate under a central point load (Timoshenko and Woinowsky-Krieger, Theory of plates and
 // shells, 1959, table 35, nu = 0.3): w = 0.00560 P a^2 / D, D = E t^3 / (12 (1 - nu^2)); the
-// mesh is checked against it under a point load at the centre node.  README "Shells in contact".
+// mesh is checked against it under a point load at the centre node.  docs/contact.md "Shells in contact".
 // Steel, SI units.
 
 #include <gtest/gtest.h>

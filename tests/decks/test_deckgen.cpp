@@ -121,7 +121,7 @@ struct Deck {
   const Vec& x(int id) const { return X.at(static_cast<std::size_t>(id - 1)); }
 };
 
-// Parses a deck with the layout of README "Deck format" (large format, the sections our
+// Parses a deck with the layout of docs/deck-format.md "Deck format" (large format, the sections our
 // generator writes).  Failures are reported through gtest.
 Deck parse(const std::string& text) {
   Deck d;

@@ -3,7 +3,7 @@
 // diaphragms at the ends, two opposite radial loads P = 1 at mid-length; an octant model of
 // 16 x 16 Belytschko-Tsay shells (P/4 on the loaded node), brought to the static answer by
 // dynamic relaxation (*DAMPING_GLOBAL).  Reference: radial displacement 1.8248e-5 under the load.
-// Measured by hand with the generator's --n (README "Shells"): 8 x 8 0.794, 16 x 16 0.954,
+// Measured by hand with the generator's --n (docs/shells.md "Shells"): 8 x 8 0.794, 16 x 16 0.954,
 // 32 x 32 1.000 x the reference, converging to it from below as 4-node shells do (before the
 // shells' drilling constraint: 0.832, 1.027, 1.085, converging past it to about 1.1 x, as the
 // Scordelis-Lo roof did).  This test checks

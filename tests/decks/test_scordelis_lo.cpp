@@ -1,6 +1,6 @@
 // The Scordelis-Lo roof (MacNeal-Harder 1985 shell benchmark), decks/keyword/scordelis_lo_roof.k:
 // a quarter model of 16 x 16 Belytschko-Tsay shells under 1 % of the self weight (the reference is
-// a linear answer: README "Shells"), brought to the static answer by dynamic relaxation
+// a linear answer: docs/shells.md "Shells"), brought to the static answer by dynamic relaxation
 // (*DAMPING_GLOBAL).  Reference: vertical displacement 0.3024 at the middle of the free edge.
 // Without the shells' drilling constraint the roof converged to 1.47 x the reference (8/16/32:
 // 1.52/1.48/1.47); with it 8 x 8 1.017, 16 x 16 0.993, 32 x 32 0.987 (measured with the

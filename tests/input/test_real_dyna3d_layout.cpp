@@ -326,16 +326,16 @@ TEST(RealDyna3dLayout, ConverterRoundTripsBothVintages) {
   }
 }
 
-// README.md's card tables are the generated ones (impact3d --card-tables): the manual cannot
-// drift from the reader.
+// docs/card-tables.md is the generated text (impact3d --card-tables): the manual cannot drift
+// from the reader.
 TEST(FixedCards, ReadmeTablesAreTheGeneratedOnes) {
-  const std::string readme = read_text(source_path("README.md"));
+  const std::string readme = read_text(source_path("docs/card-tables.md"));
   const std::string begin = "<!-- BEGIN card tables (impact3d --card-tables) -->\n", end = "<!-- END card tables -->";
   const std::size_t a = readme.find(begin), b = readme.find(end);
   ASSERT_NE(a, std::string::npos);
   ASSERT_NE(b, std::string::npos);
   EXPECT_EQ(readme.substr(a + begin.size(), b - a - begin.size()), fixed_card_tables_markdown())
-      << "regenerate: impact3d --card-tables, between the markers in README.md";
+      << "regenerate: impact3d --card-tables, between the markers in docs/card-tables.md";
 }
 
 // Every layout's fields lie within 80 columns, in order, without overlap.

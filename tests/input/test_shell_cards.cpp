@@ -1,4 +1,4 @@
-// DYNA3D fixed-format shell cards (README "Shell element cards", "Material sets": element type
+// DYNA3D fixed-format shell cards (docs/deck-format.md "Shell element cards", "Material sets": element type
 // 2 and the shell section card): a keyword shell deck converted to the fixed format and back is
 // the same Model and runs to the same bits; a hand-written two-shell deck reads as stated; each
 // malformed shell card is a numbered message naming its line, card and columns.

@@ -18,7 +18,8 @@ if(NOT rc EQUAL 0)
 endif()
 set(docdir "${PREFIX}/share/doc/impact3d")
 set(expected bin/impact3d bin/impact3d_deckgen share/doc/impact3d/README.md share/doc/impact3d/copyright
-             share/doc/impact3d/docs/developer-guide.md share/doc/impact3d/examples/one_hex.dyn
+             share/doc/impact3d/LICENSE share/doc/impact3d/docs/developer-guide.md
+             share/doc/impact3d/docs/messages.md share/doc/impact3d/examples/one_hex.dyn
              share/doc/impact3d/examples/taylor_bar.dyn share/doc/impact3d/examples/keyword/taylor_bar.k)
 if(POSTIMPACT)
   list(APPEND expected bin/postimpact)

@@ -312,7 +312,7 @@ TEST(KeywordRead, InitialVelocityGenerationWithOmega) {
                "         7         2    1000.0      10.0       0.0       0.0         0         0\n"
                "$#      xc        yc        zc        nx        ny        nz     phase    irigid\n"
                "       1.0       0.5       0.0       0.0       0.0       2.0         0         0\n");
-  // TSSFAC 0.6: a body one element thick needs <= 0.67 (README, "Physics")
+  // TSSFAC 0.6: a body one element thick needs <= 0.67 (docs/physics.md, "Physics")
   const std::string ts = "       0.0       0.0         0       0.0       0.0         0         0         0\n";
   ASSERT_NE(deck.find(ts), std::string::npos);
   deck.replace(deck.find(ts), ts.size(), "       0.0       0.6         0       0.0       0.0         0         0         0\n");

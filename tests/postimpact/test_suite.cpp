@@ -1,4 +1,4 @@
-// postimpact suite (README.md, "Regression suites for users"): a suite of three of the project's
+// postimpact suite (docs/regression-suites.md, "Regression suites for users"): a suite of three of the project's
 // regression decks whose references `--update` stores; one reference is then damaged (one
 // stress value of one state scaled by 1 + 1e-3, a change a billion times its tolerance).  The
 // suite must fail exactly that deck and name the field, state, element and component, in its
@@ -215,7 +215,7 @@ TEST(Suite, XmlEscape) {
     EXPECT_EQ(postimpact::xml_escape("a<b & \"c\" 'd'>\x01"), "a&lt;b &amp; &quot;c&quot; &#39;d&#39;&gt;?");
 }
 
-// Per-deck options and summary decks (README.md, "Regression suites for users"): a deck with
+// Per-deck options and summary decks (docs/regression-suites.md, "Regression suites for users"): a deck with
 // extra impact3d words (ncpu=2 against a reference run on one thread: the same bits, so it
 // passes), a deck kept by its summary through options ("reference summary"), two big decks of
 // summary_decks.txt outside the suite folder (tests/regression's layout), one of them with a

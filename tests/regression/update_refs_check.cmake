@@ -1,4 +1,4 @@
-# tools/update-regression-refs.sh (README.md, "Regression suite") on a scratch copy of
+# tools/update-regression-refs.sh (docs/regression-suites.md, "Regression suite") on a scratch copy of
 # tests/regression (SUITE=...): it stores a plot database for each small deck and a summary for
 # each deck of summary_decks.txt through `postimpact suite --update`, removes the reference of a
 # deck that no longer exists, a second run stores the same bytes (the references are

@@ -379,7 +379,7 @@ TEST(BeamThreads, SameBitsForOneAndTwoThreads) {
 // (L - a)^3 / EI_2] (nu = 0: the strip bends as a beam), within 3 %.  The strip's share is 6 %
 // here: a strip whose own bending matters is softer than beam theory where the moment enters at
 // one node of one-point shells (measured: the 10 mm strip with a near-rigid beam +16.8 %,
-// README "Beams").
+// docs/beams.md "Beams").
 TEST(BeamShell, SharedRotationsCarryTheMoment) {
   const double a = 0.25, L = 0.5, b = 0.04, h = 0.03, s = 0.01, P = 20.0;
   MaterialData shell_mat;

@@ -7,7 +7,7 @@
 // energy exactly while kappa stays constant.  Until the fix the books took the updated
 // resultant's power Q^{n+1} . h dt, over by (Q^{n+1} - Q^n) . h dt / 2 = kappa dt^2 |h|^2 / 2
 // every step: a first-order error that only grows (an elastic block started at 50 m/s with its
-// bottom held ended at energy ratio 1.238 with IHQ 4; README "Contact", "Energy balance in fast
+// bottom held ended at energy ratio 1.238 with IHQ 4; docs/contact.md "Contact", "Energy balance in fast
 // impacts").
 //
 // Test: a free elastic steel cube of 4 x 4 x 4 solids (10 mm), started with vz = +-1 m/s in a

@@ -1,4 +1,4 @@
-// The run checks (impact3d/solve/run_checks.h, README "Run checks", issue 25): each warning at
+// The run checks (impact3d/solve/run_checks.h, docs/command-line.md "Run checks", issue 25): each warning at
 // its threshold of the one table, said once per cause; the verdict; decks that trip a warning
 // and one that trips none, run as impact3d runs them.
 

@@ -63,7 +63,7 @@ Model ofhc_taylor_bar() {
 
 // Final length and footprint diameter against the measured ones.  Measured here: Lf 17.30 mm
 // (+6.7 %), Dm 14.51 mm (+7.0 %): NOT agreement at the few-percent level.  Separated (issue 13,
-// bench/bench_taylor_ofhc.cpp, README "OFHC copper with Johnson-Cook"): the length is converged
+// bench/bench_taylor_ofhc.cpp, docs/validation.md "OFHC copper with Johnson-Cook"): the length is converged
 // (refined 2x, 3x and 4x in each direction it moves by 0.2 %) and does not depend on VP or the wall
 // friction beyond 1 %; a wall friction of 0.1 brings the footprint within 2 % of the measurement;
 // the same solver reproduces a published Johnson-Cook Taylor bar of DynELA and Abaqus to 0.3 %.

@@ -1,4 +1,4 @@
-# every command of README "Command files" once (the harness runs them dry)
+# every command of docs/post-impact.md "Command files" once (the harness runs them dry)
 size 1600 1200
 plotsize 1200x800
 view iso
