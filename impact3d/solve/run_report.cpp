@@ -3,9 +3,43 @@
 #include "impact3d/solve/run_report.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
+#include "impact3d/solve/mass_scaling.h"
+
 namespace impact3d {
+
+std::string energy_report(const State& s) {
+  char buf[1024];
+  std::snprintf(buf, sizeof buf,
+                "     kinetic energy ....................... %14.6e\n"
+                "     internal energy ...................... %14.6e\n"
+                "     hourglass energy ..................... %14.6e\n"
+                "     bulk viscosity energy ................ %14.6e\n"
+                "     rigid-wall energy (taken by walls) ... %14.6e\n"
+                "     contact energy ....................... %14.6e\n"
+                "     external work ........................ %14.6e\n"
+                "     total energy ......................... %14.6e\n"
+                "     initial total energy ................. %14.6e\n"
+                "     energy ratio (total/(initial+ext)) ... %14.6f",
+                s.kinetic, s.internal, s.hourglass, s.bulk_viscous, s.wall_work, s.contact,
+                s.external_work, s.total_energy(), s.initial_total, s.energy_ratio());
+  return buf;
+}
+
+std::string mass_scaling_report(const ControlData& k, const State& s) {
+  char buf[400];
+  std::snprintf(buf, sizeof buf,
+                " mass scaling (DT2MS %.5e%s): element steps held at >= %.5e, run step >= %.5e\n"
+                "     added mass ........................... %14.6e\n"
+                "     model mass without it ................ %14.6e\n"
+                "     percentage increase .................. %14.6f",
+                k.mass_scaling_dt, k.mass_scaling_first_only ? ", first cycle only" : "",
+                std::fabs(k.mass_scaling_dt), k.tssf * std::fabs(k.mass_scaling_dt), s.added_mass, s.physical_mass,
+                added_mass_percent(s));
+  return buf;
+}
 
 std::string describe_solid_failure(const Model& m, const State& s, int e, FailCause cause) {
   const std::size_t E = std::size_t(e);

@@ -1,7 +1,7 @@
 #pragma once
 // Lines of the run log that describe the model's state (run.cpp prints them): the deletion of
-// a solid (message 5004, naming what deleted it) and the final shape (extents and the largest
-// plastic strain of the live solids, shells and beams).
+// a solid (message 5004, naming what deleted it), the energies, mass scaling, and the final
+// shape (extents and the largest plastic strain of the live solids, shells and beams).
 
 #include <string>
 #include <vector>
@@ -17,6 +17,11 @@ std::string describe_solid_failure(const Model& m, const State& s, int e, FailCa
 std::string describe_beam_failure(const Model& m, const State& s, int b);
 // Message 5006's detail for the spot weld of rigid body r released in the last cycle.
 std::string describe_weld_release(const Model& m, const State& s, int r);
+
+// The energies (kinetic ... total, initial total, energy ratio), one per line.
+std::string energy_report(const State& s);
+// Mass scaling: the target step, the mass added so far and its share of the model's mass.
+std::string mass_scaling_report(const ControlData& k, const State& s);
 
 // The final shape of the live elements: solids, shells, beams (failed solids and shells, and
 // nodes only they held, are left out, as in postimpact summary).

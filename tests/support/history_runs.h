@@ -29,8 +29,9 @@ inline impact3d::Model read_model_text(const std::string& text, const std::strin
 }
 
 // Runs m on one thread with its d3hsp, d3plot and d3dump in IMPACT3D_BINARY_DIR/group/name
-// (emptied first); the run must end normally.
-inline std::filesystem::path run_model_in(const impact3d::Model& m, const std::string& group, const std::string& name) {
+// (emptied first), databases of `plot_word_size` byte words; the run must end normally.
+inline std::filesystem::path run_model_in(const impact3d::Model& m, const std::string& group, const std::string& name,
+                                          int plot_word_size = 4) {
   const std::filesystem::path dir = std::filesystem::path(IMPACT3D_BINARY_DIR) / group / name;
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
@@ -40,6 +41,7 @@ inline std::filesystem::path run_model_in(const impact3d::Model& m, const std::s
   o.dump = (dir / "d3dump").string();
   o.quiet = true;
   o.threads = 1;
+  o.plot_word_size = plot_word_size;
   std::ofstream printed(o.printed);
   EXPECT_EQ(impact3d::run_simulation(m, o, printed), 0);
   return dir;

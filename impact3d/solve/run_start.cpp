@@ -1,0 +1,59 @@
+#include "impact3d/solve/run_start.h"
+
+#include <omp.h>
+
+#include <cstdio>
+
+#include "impact3d/solve/run_report.h"
+
+namespace impact3d {
+
+namespace {
+
+// Reads the restart dump into the engine; false: refused (logged).
+bool resume(Engine& engine, const std::string& path, OutputCursor& cursor, RunLog& log) {
+  try {
+    cursor = read_restart_dump_header(path).cursor;
+    SlidingInterfaces::RestartData cd;
+    read_restart_dump_state(path, engine.state(), cd);
+    engine.contact().restore(cd);
+  } catch (const std::exception& ex) {
+    log.file_error(4005, path, ex.what());
+    log.line("\n E r r o r   t e r m i n a t i o n   (restart dump is invalid)");
+    return false;
+  }
+  return true;
+}
+
+void log_heading(const Model& model, const State& s, const RunOptions& opt, bool restarting, RunLog& log) {
+  char buf[300];
+  if (restarting)
+    std::snprintf(buf, sizeof buf, "\n restart from %s at cycle %d, time %.6e\n threads: %d\n",
+                  opt.restart.c_str(), s.cycle, s.time, omp_get_max_threads());
+  else
+    std::snprintf(buf, sizeof buf, "\n threads: %d\n first time step %.5e (element %d)\n",
+                  omp_get_max_threads(), s.dt_next, s.dt_elem >= 0 ? model.hex_id(s.dt_elem) : 0);
+  log.line(buf);
+  if (model.control.mass_scaling_dt != 0) log.line(mass_scaling_report(model.control, s));
+  log.line(kCycleHeading);
+}
+
+}  // namespace
+
+RunStart start_or_resume(Engine& engine, const RunOptions& opt, RunLog& log) {
+  RunStart r;
+  r.status = engine.initialize();
+  r.restarting = !opt.restart.empty();
+  if (r.restarting) {
+    if (!resume(engine, opt.restart, r.cursor, log)) {
+      r.ok = false;
+      return r;
+    }
+    r.status = engine.finished() ? StepStatus::finished : StepStatus::ok;
+  }
+  r.time = engine.state().time;
+  log_heading(engine.model(), engine.state(), opt, r.restarting, log);
+  return r;
+}
+
+}  // namespace impact3d
