@@ -1,6 +1,6 @@
 #pragma once
 // DYNA3D's sense switches as signals, set by signal handlers and answered once per cycle by the
-// run driver (README "Command line"):
+// run driver (docs/output-files.md):
 //   SIGINT, SIGTERM  sw1: write a restart dump and a plot state, then stop (exit code 5);
 //   SIGUSR1          sw2: print the time, cycle, step and the time remaining;
 //   SIGUSR2          sw4: write a plot state now.
