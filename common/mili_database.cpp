@@ -910,8 +910,8 @@ void MiliReader::build_geometry() {
     if (!titled) g.part_titles.clear();
     layout_ = PlotLayout{};
     // beam integration points (an element-set array of stresses, as DYNA3D's es_1a): the
-    // d3plot point blocks of 5 (axial stress sx, shear stresses sxy and szx, plastic strain,
-    // axial strain: none)
+    // d3plot point blocks of 5 in LS-DYNA's order (shear stresses rs and tr, axial stress in the
+    // beam's axes, plastic strain, axial strain: none; see state())
     for (const auto& bc : beam_cls_) layout_.beam_points = std::max(layout_.beam_points, points(bc.first, "sx"));
     if (!shell_cls_.empty()) {
         layout_.layers = 3;
@@ -924,6 +924,48 @@ void MiliReader::build_geometry() {
         layout_.shell_strain = 33;
     }
 }
+
+namespace {
+
+// The beam's axes from its end nodes (r, node 1 to node 2) and a direction g for s (g projected
+// normal to r; the global axis least aligned with r when g is missing or along r); t = r x s.
+// False when the beam has no length.
+bool beam_axes(const double* x1, const double* x2, const double* g, double r[3], double s[3], double t[3]) {
+    double len = 0;
+    for (int a = 0; a < 3; ++a) {
+        r[a] = x2[a] - x1[a];
+        len += r[a] * r[a];
+    }
+    len = std::sqrt(len);
+    if (!(len > 0) || !std::isfinite(len)) return false;
+    for (int a = 0; a < 3; ++a) r[a] /= len;
+    auto project = [&](const double* d) {
+        const double c = d[0] * r[0] + d[1] * r[1] + d[2] * r[2];
+        double n = 0;
+        for (int a = 0; a < 3; ++a) {
+            s[a] = d[a] - c * r[a];
+            n += s[a] * s[a];
+        }
+        n = std::sqrt(n);
+        const double dn = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+        if (!(n > 1e-6 * dn) || !std::isfinite(n)) return false;
+        for (int a = 0; a < 3; ++a) s[a] /= n;
+        return true;
+    };
+    if (!g || !project(g)) {
+        int k = 0;
+        for (int a = 1; a < 3; ++a)
+            if (std::fabs(r[a]) < std::fabs(r[k])) k = a;
+        const double e[3] = {k == 0 ? 1.0 : 0.0, k == 1 ? 1.0 : 0.0, k == 2 ? 1.0 : 0.0};
+        project(e);
+    }
+    t[0] = r[1] * s[2] - r[2] * s[1];
+    t[1] = r[2] * s[0] - r[0] * s[2];
+    t[2] = r[0] * s[1] - r[1] * s[0];
+    return true;
+}
+
+}  // namespace
 
 PlotState MiliReader::state(int i, int materials) const {
     const std::vector<char> rec = read_record(i);
@@ -1003,9 +1045,47 @@ PlotState MiliReader::state(int i, int materials) const {
             const std::size_t n = static_cast<std::size_t>(classes_[static_cast<std::size_t>(c)].count);
             std::vector<double> b(static_cast<std::size_t>(words) * n, 0.0);
             for (int j = 0; j < kBeamWords; ++j) get(c, res[j], "", -1, b, words, j);
-            const char* pt[4] = {"sx", "sxy", "szx", "eps"};
-            for (int p = 0; p < std::min(layout_.beam_points, points(c, "sx")); ++p)
-                for (int j = 0; j < 4; ++j) get(c, pt[j], "", p, b, words, kBeamWords + 5 * p + j);
+            // integration points (an element-set array such as DYNA3D's es_1a): DYNA3D writes
+            // their stresses in the global axes; each goes into the beam's axes (r from the
+            // state's node positions, s from the S vector svec when written) and into the d3plot
+            // point block, LS-DYNA's order: shear rs, shear tr, axial stress, plastic strain,
+            // axial strain (not written: 0)
+            const int np = std::min(layout_.beam_points, points(c, "sx"));
+            if (np > 0) {
+                const char* comp[6] = {"sx", "sy", "sz", "sxy", "syz", "szx"};
+                std::vector<double> st(6 * n * static_cast<std::size_t>(np), 0.0), ep(n * static_cast<std::size_t>(np), 0.0);
+                for (int p = 0; p < np; ++p) {
+                    for (int j = 0; j < 6; ++j) get(c, comp[j], "", p, st, 6 * np, 6 * p + j);
+                    get(c, "eps", "", p, ep, np, p);
+                }
+                std::vector<double> sv(3 * n, nan);
+                const char* svc[3] = {"svec_x", "svec_y", "svec_z"};
+                bool has_sv = true;
+                for (int j = 0; j < 3; ++j) has_sv = get(c, svc[j], "", -1, sv, 3, j) && has_sv;
+                for (std::size_t e = 0; e < n; ++e) {
+                    const std::size_t be = static_cast<std::size_t>(first) + e;
+                    const std::size_t n1 = static_cast<std::size_t>(g.beam_nodes[2 * be]), n2 = static_cast<std::size_t>(g.beam_nodes[2 * be + 1]);
+                    double r[3], sa[3], ta[3];
+                    if (3 * std::max(n1, n2) + 2 >= s.coords.size() ||
+                        !beam_axes(&s.coords[3 * n1], &s.coords[3 * n2], has_sv ? &sv[3 * e] : nullptr, r, sa, ta))
+                        continue;
+                    for (int p = 0; p < np; ++p) {
+                        const double* q = &st[6 * (e * static_cast<std::size_t>(np) + static_cast<std::size_t>(p))];
+                        const double m[3][3] = {{q[0], q[3], q[5]}, {q[3], q[1], q[4]}, {q[5], q[4], q[2]}};
+                        auto proj = [&](const double* u, const double* w) {
+                            double x = 0;
+                            for (int a = 0; a < 3; ++a)
+                                for (int k = 0; k < 3; ++k) x += u[a] * m[a][k] * w[k];
+                            return x;
+                        };
+                        double* o = &b[static_cast<std::size_t>(words) * e + kBeamWords + 5 * static_cast<std::size_t>(p)];
+                        o[0] = proj(r, sa);
+                        o[1] = proj(ta, r);
+                        o[2] = proj(r, r);
+                        o[3] = ep[e * static_cast<std::size_t>(np) + static_cast<std::size_t>(p)];
+                    }
+                }
+            }
             std::copy(b.begin(), b.end(), s.beam_vars.begin() + words * static_cast<std::ptrdiff_t>(first));
         }
         status(beam_cls_, static_cast<std::size_t>(g.num_beams()), s.beam_alive);

@@ -259,12 +259,14 @@ double element_value(const Quantity& q, const impact3d::PlotGeometry& g, const i
             if (q.key == "axial_force") return rec[0];
             const std::vector<int> pts = chosen_points(q.point, L.beam_points, false);
             if (pts.empty()) return 0.0;
+            // a point's words in LS-DYNA's order: shear stresses rs and tr, axial stress,
+            // plastic strain, axial strain
             double ax = 0, t1 = 0, t2 = 0, eps = 0;
             for (int p : pts) {
                 const double* v = rec + 6 + 5 * p;
-                ax += v[0] / pts.size();
-                t1 += v[1] / pts.size();
-                t2 += v[2] / pts.size();
+                t1 += v[0] / pts.size();
+                t2 += v[1] / pts.size();
+                ax += v[2] / pts.size();
                 eps += v[3] / pts.size();
             }
             const double st[6] = {ax, 0, 0, t1, 0, t2};

@@ -215,6 +215,7 @@ def main():
                 status = max(status, 1)
             print("   %-8s %-6d %-28s %12.4e %13.5e %13.5e  %s" % (c["family"], c["id"], c["quantity"][:28], dev, c["v"][-1], end_ours, verdict))
         full_field(postimpact, os.path.join(wd, "d3plot"), os.path.join(image, name, name + ".pltA"), wd)
+        beam_field(postimpact, os.path.join(wd, "d3plot"), os.path.join(image, name, name + ".pltA"), wd)
     return status
 
 
@@ -233,6 +234,49 @@ def full_field(postimpact, ours, mili, wd):
     else:
         last = [l for l in r.stdout.splitlines() if l.strip()]
         print("   full field vs %s: not compared (%s)" % (os.path.basename(mili), last[-1] if last else "no output"))
+
+
+def history_table(postimpact, db, wd, words, tag):
+    """Times and columns of one POST-IMPACT history call (None if it failed)."""
+    png = os.path.join(wd, "beams_%s.png" % tag)
+    r = run([postimpact, db, "-d", wd, "-e", "history %s %s" % (os.path.basename(png), " ".join(words))], wd)
+    csv_path = png[:-4] + ".csv"
+    if r.returncode != 0 or not os.path.exists(csv_path):
+        return None
+    with open(csv_path) as f:
+        rows = list(csv.reader(f))[1:]
+    return [float(x[1]) for x in rows], [[float(x[2 + j]) for x in rows] for j in range(len(words) // 2)]
+
+
+def beam_field(postimpact, ours, mili, wd):
+    """Per beam, against DYNA3D's own database: the plastic strain (mean of the section's points)
+    and the axial force, largest deviation over DYNA3D's states and the end values (information:
+    where the beams' plastic response differs).  The Mili reader turns DYNA3D's point stresses
+    (global axes) into the beam's axes, as ours."""
+    if not os.path.exists(mili):
+        return
+    m = re.search(r"^beams (\d+)", run([postimpact, "summary", mili], wd).stdout, re.M)
+    nb = int(m.group(1)) if m else 0
+    if nb == 0:
+        return
+    words = []
+    for b in range(1, nb + 1):
+        words += ["beam", str(b), "eps", "axial_force"]
+    print("   beams vs %s (mean plastic strain of the section points, axial force; information):" % os.path.basename(mili))
+    print("   %-6s %12s %10s %10s %12s" % ("beam", "eps max|dev|", "DYNA3D end", "ours end", "N max|dev|"))
+    for k in range(0, len(words), 40):  # 10 beams a call
+        chunk = words[k:k + 40]
+        d = history_table(postimpact, mili, wd, chunk, "d%d" % k)
+        o = history_table(postimpact, ours, wd, chunk, "o%d" % k)
+        if d is None or o is None:
+            print("   (postimpact failed)")
+            return
+        (td, dv), (to, ov) = d, o
+        for j in range(0, len(chunk) // 4):
+            eps_d, eps_o, n_d, n_o = dv[2 * j], ov[2 * j], dv[2 * j + 1], ov[2 * j + 1]
+            de = max(abs(interp(to, eps_o, t) - v) for t, v in zip(td, eps_d))
+            dn = max(abs(interp(to, n_o, t) - v) for t, v in zip(td, n_d))
+            print("   %-6s %12.4f %10.4f %10.4f %12.4g" % (chunk[4 * j + 1], de, eps_d[-1], interp(to, eps_o, td[-1]), dn))
 
 
 if __name__ == "__main__":

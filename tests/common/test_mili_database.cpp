@@ -163,6 +163,85 @@ TEST(MiliReader, RawResultsByClass) {
     EXPECT_EQ(r.param_string("title"), "mili test model");
 }
 
+// DYNA3D writes a beam's integration-point stresses (element set es_1a) in the global axes
+// (d3samp6: a column along z shows its axial stress in sz) and the beam's s axis as svec.  The
+// reader turns each point into the beam's axes (r from the state's node positions, s = svec
+// projected normal to r, t = r x s) and lays it out as a d3plot point block in LS-DYNA's order:
+// shear rs, shear tr, axial stress, plastic strain, axial strain (0).
+TEST(MiliReader, BeamPointStressesTurnIntoTheBeamsAxes) {
+    mili_test::Options o;
+    o.beam_points = 2;
+    Written w;
+    w.base = (scratch("beam_points") / "db.plt").string();
+    mili_test::sample_model(w.g, w.states, 3);
+    const double g_dir[3] = {0.0, 0.6, 0.8};
+    auto axes = [&](const PlotState& s, int b, double r[3], double sa[3], double ta[3]) {
+        const int n1 = w.g.beam_nodes[static_cast<std::size_t>(2 * b)], n2 = w.g.beam_nodes[static_cast<std::size_t>(2 * b + 1)];
+        double len = 0, c = 0, n = 0;
+        for (int a = 0; a < 3; ++a) {
+            r[a] = s.coords[static_cast<std::size_t>(3 * n2 + a)] - s.coords[static_cast<std::size_t>(3 * n1 + a)];
+            len += r[a] * r[a];
+        }
+        for (int a = 0; a < 3; ++a) {
+            r[a] /= std::sqrt(len);
+            c += r[a] * g_dir[a];
+        }
+        for (int a = 0; a < 3; ++a) {
+            sa[a] = g_dir[a] - c * r[a];
+            n += sa[a] * sa[a];
+        }
+        for (int a = 0; a < 3; ++a) sa[a] /= std::sqrt(n);
+        ta[0] = r[1] * sa[2] - r[2] * sa[1];
+        ta[1] = r[2] * sa[0] - r[0] * sa[2];
+        ta[2] = r[0] * sa[1] - r[1] * sa[0];
+    };
+    // local values of beam b, point p, state k
+    auto local = [](int k, int b, int p, double v[4]) {
+        v[0] = 7.0 + b - p;          // shear rs
+        v[1] = -3.0 - k + 0.5 * p;   // shear tr
+        v[2] = 100.0 + 10 * b + k - 50 * p;  // axial
+        v[3] = 0.125 * (k + p);      // plastic strain
+    };
+    for (std::size_t k = 0; k < w.states.size(); ++k) {
+        PlotState& s = w.states[k];
+        for (int b = 0; b < 3; ++b) {
+            double r[3], sa[3], ta[3];
+            axes(s, b, r, sa, ta);
+            for (int p = 0; p < 2; ++p) {
+                double v[4];
+                local(static_cast<int>(k), b, p, v);
+                double m[3][3];
+                for (int i = 0; i < 3; ++i)
+                    for (int j = 0; j < 3; ++j)
+                        m[i][j] = v[2] * r[i] * r[j] + v[0] * (r[i] * sa[j] + sa[i] * r[j]) + v[1] * (ta[i] * r[j] + r[i] * ta[j]);
+                s.beam_vars.insert(s.beam_vars.end(), {m[0][0], m[1][1], m[2][2], m[0][1], m[1][2], m[2][0], v[3]});
+            }
+            s.beam_vars.insert(s.beam_vars.end(), g_dir, g_dir + 3);
+        }
+    }
+    mili_test::Writer(o).write(w.base, w.g, w.states);
+    MiliReader rd;
+    rd.open(w.base + "A");
+    EXPECT_EQ(rd.layout().beam_points, 2);
+    for (int k = 0; k < 3; ++k) {
+        SCOPED_TRACE(k);
+        const PlotState st = rd.state(k);
+        ASSERT_EQ(st.beam_vars.size(), 3u * (6 + 5 * 2));
+        for (int b = 0; b < 3; ++b) {
+            const double* rec = &st.beam_vars[static_cast<std::size_t>(16 * b)];
+            for (int j = 0; j < 6; ++j) EXPECT_EQ(rec[j], w.states[static_cast<std::size_t>(k)].beam_vars[static_cast<std::size_t>(6 * b + j)]);
+            for (int p = 0; p < 2; ++p) {
+                double v[4];
+                local(k, b, p, v);
+                const double* q = rec + 6 + 5 * p;
+                for (int j = 0; j < 3; ++j) EXPECT_NEAR(q[j], v[j], 1e-4) << "beam " << b << " point " << p << " word " << j;
+                EXPECT_EQ(q[3], v[3]);
+                EXPECT_EQ(q[4], 0.0);
+            }
+        }
+    }
+}
+
 TEST(MiliReader, IsMiliFileByContent) {
     const Written w = write("magic", mili_test::Options{});
     EXPECT_TRUE(MiliReader::is_mili_file(w.base + "A"));

@@ -174,6 +174,32 @@ TEST(LsDyna, BeamQuantitiesAndTemperatures) {
     EXPECT_EQ(node_values(quantity("x"), g, s)[0], g.x0[0]);
 }
 
+// A beam's integration-point block in LS-DYNA's order (database manual; IMPACT-3D writes it
+// so): shear stress rs, shear stress tr, axial stress, plastic strain, axial strain.  The beam
+// quantities take the axial stress as sxx, the shears as sxy and szx (means over the points,
+// or one point with @ipK).
+TEST(LsDyna, BeamPointWordsAreShearShearAxialStrainStrain) {
+    impact3d::PlotGeometry g;
+    g.x0 = {0, 0, 0, 1, 0, 0};
+    g.beam_nodes = {0, 1};
+    g.beam_material = {1};
+    g.beam_user_ids = {7};
+    g.num_materials = 1;
+    impact3d::PlotLayout L;
+    L.beam_points = 2;
+    impact3d::PlotState s;
+    s.coords = g.x0;
+    s.beam_vars = {-50, 1, 2, 3, 4, 5, /* point 1 */ 1, 2, 300, 0.1, -0.01, /* point 2 */ 3, 4, 100, 0.3, 0.02};
+    EXPECT_EQ(element_value(quantity("sxx"), g, L, s, 0), 200.0);
+    EXPECT_EQ(element_value(quantity("sxy"), g, L, s, 0), 2.0);
+    EXPECT_EQ(element_value(quantity("szx"), g, L, s, 0), 3.0);
+    EXPECT_NEAR(element_value(quantity("eps"), g, L, s, 0), 0.2, 1e-15);
+    EXPECT_EQ(element_value(quantity("sxx@ip1"), g, L, s, 0), 300.0);
+    EXPECT_EQ(element_value(quantity("szx@ip2"), g, L, s, 0), 4.0);
+    EXPECT_NEAR(element_value(quantity("vm"), g, L, s, 0), std::sqrt(200.0 * 200.0 + 3 * (2.0 * 2.0 + 3.0 * 3.0)), 1e-9);
+    EXPECT_EQ(element_value(quantity("axial_force"), g, L, s, 0), -50.0);
+}
+
 TEST(LsDyna, DeletedShellIsHiddenAndLeftOutOfTheFringe) {
     const fs::path dir = fs::temp_directory_path() / ("impact3d_pi_lsdyna_" + std::to_string(::getpid()));
     fs::remove_all(dir);

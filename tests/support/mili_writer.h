@@ -9,7 +9,10 @@
 //            mat: matpe matke (object ordered);
 //            node: nodpos (float) then nodvel (double) then nodacc (float), result ordered;
 //            brick: stress eps sand, object ordered, in two ordinal blocks;
-//            beam: two subrecords (first half, second half): axf sfs sft ms mt tor sand;
+//            beam: two subrecords (first half, second half): axf sfs sft ms mt tor sand; with
+//            Options::beam_points a third: es_1a (per point sx sy sz sxy syz szx eps, global
+//            axes, as DYNA3D writes them) and svec, taken from the words after the states'
+//            6 resultants per beam (per beam 7 x beam_points + 3 words);
 //            shell: stress_mid eeff_mid stress_in eeff_in stress_out eeff_out bend shear normal
 //            thick inteng es_3c (strains at 2 points: inner, outer) sand.
 // Options: file version 2 (state maps in the A file) or 3 (in the T file), directory version
@@ -34,6 +37,7 @@ struct Options {
     int dir_version = 2;        // 2 (int32 directory entries) or 3 (int64)
     bool big_endian = false;
     int states_per_file = 2;
+    int beam_points = 0;        // > 0: the beams' es_1a points and svec (see above)
 };
 
 class Writer {
@@ -282,6 +286,11 @@ private:
         for (const char* n : {"nxx", "nyy", "nxy"}) scalar(n);
         for (const char* n : {"thick", "inteng", "ex", "ey", "ez", "exy", "eyz", "ezx", "matpe", "matke"}) scalar(n);
         v.push_back({3, 2, "es_3c", "Element Set 3c", {2}, {"ex", "ey", "ez", "exy", "eyz", "ezx"}});
+        if (o_.beam_points > 0) {
+            v.push_back({3, 2, "es_1a", "Element Set 1a", {o_.beam_points}, {"sx", "sy", "sz", "sxy", "syz", "szx", "eps"}});
+            for (const char* n : {"svec_x", "svec_y", "svec_z"}) scalar(n);
+            vec("svec", {"svec_x", "svec_y", "svec_z"});
+        }
         std::string ints, strs;
         for (const Var& x : v) {
             i32(ints, x.agg);
@@ -347,6 +356,16 @@ private:
                                   [at, alive](const S& s, int e, int t, int) {
                                       return t < 6 ? at(s.beam_vars, 6 * static_cast<std::size_t>(e) + static_cast<std::size_t>(t))
                                                    : alive(s.beam_alive, e);
+                                  }});
+            }
+            if (o_.beam_points > 0) {
+                const int np = o_.beam_points;
+                const std::size_t per = 7 * static_cast<std::size_t>(np) + 3;
+                srecs_.push_back({"3beam", "beam", 1, false, {{1, nb}}, {"es_1a", "svec"},
+                                  {std::vector<int>(7 * static_cast<std::size_t>(np), 2), {2, 2, 2}},
+                                  [at, nb, np, per](const S& s, int e, int t, int j) {
+                                      const std::size_t b = 6 * static_cast<std::size_t>(nb) + per * static_cast<std::size_t>(e);
+                                      return at(s.beam_vars, b + static_cast<std::size_t>(t == 0 ? j : 7 * np + j));
                                   }});
             }
         }
