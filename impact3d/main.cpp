@@ -19,6 +19,7 @@
 #include "common/messages.h"
 #include "impact3d/input/deck_reader.h"
 #include "impact3d/input/fixed_cards.h"
+#include "impact3d/input/keyword_cards.h"
 #include "impact3d/init/mesh_order.h"
 #include "impact3d/input/deck_writer.h"
 #include "impact3d/output/printed_output.h"
@@ -35,7 +36,7 @@ const char* kUsage =
     "usage: impact3d i=DECK [o=PRINTED] [g=PLOTDB] [d=DUMP] [s=INTFOR] [ncpu=N] [plotwords=4|8] [x=N]\n"
     "                [reorder=auto|on|off] [--check]\n"
     "       impact3d r=DUMP [o=PRINTED] [g=PLOTDB] [d=DUMP] [s=INTFOR] [ncpu=N]\n"
-    "       impact3d --help | --version | --messages | --card-tables\n"
+    "       impact3d --help | --version | --messages | --card-tables | --keyword-tables\n"
     "\n"
     "  i=DECK     input deck: DYNA3D fixed format or LS-DYNA keyword (chosen by content)\n"
     "  o=FILE     printed output file (default d3hsp)\n"
@@ -62,6 +63,7 @@ const char* kUsage =
     "             keyword / DYNA3D fixed-format deck; nothing is run\n"
     "  --messages list the message catalog\n"
     "  --card-tables  print the DYNA3D fixed-format card tables (Markdown, as in README.md)\n"
+    "  --keyword-tables  print the keyword card tables (Markdown, as in docs/keyword-tables.md)\n"
     "\n"
     "exit codes: 0 normal termination, 2 input errors, 3 bad command line, 4 file error,\n"
     "            5 error termination, 6 stopped by signal, 7 suspect run (--strict),\n"
@@ -181,6 +183,9 @@ int run_main(int argc, char** argv) {
       return exit_code::ok;
     } else if (arg == "--card-tables") {
       std::cout << fixed_card_tables_markdown();
+      return exit_code::ok;
+    } else if (arg == "--keyword-tables") {
+      std::cout << keyword_tables_markdown();
       return exit_code::ok;
     } else if (arg == "--check") {
       check_only = true;

@@ -7,6 +7,7 @@
 // decks") lists the keywords and fields.
 
 #include "impact3d/input/keyword_reader.h"
+#include "impact3d/input/keyword_families.h"
 #include "impact3d/init/beam_init.h"
 #include "impact3d/init/shell_init.h"
 #include "impact3d/material/eos.h"
@@ -36,28 +37,7 @@ namespace impact3d {
 
 namespace {
 
-std::string upper(std::string_view v) {
-  std::string s(v);
-  for (auto& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-  return s;
-}
-std::string_view trim_sv(std::string_view s) {
-  std::size_t b = 0, e = s.size();
-  while (b < e && (s[b] == ' ' || s[b] == '\r')) ++b;
-  while (e > b && (s[e - 1] == ' ' || s[e - 1] == '\r')) --e;
-  return s.substr(b, e - b);
-}
-std::string rtrim(std::string_view s) {
-  while (!s.empty() && (s.back() == ' ' || s.back() == '\r')) s.remove_suffix(1);
-  return std::string(s);
-}
-bool is_blank(std::string_view s) { return trim_sv(s).empty(); }
-
-// Frees a vector's storage (v = {} would keep it).
-template <class V>
-void release(V& v) {
-  V().swap(v);
-}
+using namespace kw;
 
 // Boundary code 0-7 <-> fixed translational components (bit 0 x, bit 1 y, bit 2 z).
 int bc_bits(int code) {
@@ -68,285 +48,9 @@ int bc_code(int bits) {
   return code[bits & 7];
 }
 
-// A place in a deck: file, line and columns of a field.
-struct Ref {
-  const DeckFile* file = nullptr;
-  const DeckLine* line = nullptr;
-  int c1 = 0, c2 = 0;
-};
-
-struct KLine {
-  const DeckFile* file = nullptr;
-  const DeckLine* line = nullptr;
-};
-
-// One data card of a keyword: fields by index, in fixed columns (widths) or, when the line has
-// a comma, by comma-separated tokens.
-// *PARAMETER values, by upper-case name: 'R' real, 'I' integer, 'C' text.
-struct Param {
-  char type = 'R';
-  double value = 0;
-  std::string text;
-};
-using ParamTable = std::map<std::string, Param>;
-
-class KCard {
- public:
-  KCard(const KLine& l, std::string card, const std::vector<int>& widths, Diagnostics& diag)
-      : l_(l), card_(std::move(card)), diag_(diag) {
-    const std::string_view t = l.line->text;
-    free_ = t.find(',') != std::string::npos;
-    if (free_) {
-      std::size_t start = 0;
-      while (true) {
-        std::size_t comma = t.find(',', start);
-        std::size_t end = comma == std::string::npos ? t.size() : comma;
-        cols_.emplace_back(int(start) + 1, int(end));
-        if (comma == std::string::npos) break;
-        start = comma + 1;
-      }
-    } else {
-      int c = 1;
-      for (int w : widths) {
-        cols_.emplace_back(c, c + w - 1);
-        c += w;
-      }
-    }
-    for (std::size_t k = 0; k < t.size(); ++k) {
-      unsigned char ch = static_cast<unsigned char>(t[k]);
-      if (ch == '\t') {
-        report(1011, int(k) + 1, int(k) + 1, nullptr, {}, false);
-        break;
-      }
-      if ((ch < 32 || ch >= 127) && !(ch == '\r' && k + 1 == t.size())) {
-        report(1012, int(k) + 1, int(k) + 1, nullptr, "byte " + std::to_string(int(ch)), false);
-        break;
-      }
-    }
-  }
-
-  int fields() const { return int(cols_.size()); }
-  void set_params(const ParamTable* p) { params_ = p; }
-  // The field's text, with a *PARAMETER reference "&name" or "-&name" replaced by the value
-  // (an undefined name is error 1310; the text is then left as it is, and fails as a number).
-  std::string text(int k, const char* field = nullptr) {
-    std::string t = literal(k);
-    if (!params_ || t.empty()) return t;
-    const bool neg = t[0] == '-' && t.size() > 1 && t[1] == '&';
-    if (t[0] != '&' && !neg) return t;
-    std::string name = t.substr(neg ? 2 : 1);
-    for (char& ch : name) ch = char(std::toupper(static_cast<unsigned char>(ch)));
-    auto it = params_->find(name);
-    if (it == params_->end() || it->second.type == 'C') {
-      error(1310, k, field, it == params_->end() ? "parameter &" + name + " is not defined by *PARAMETER"
-                                                   : "parameter &" + name + " is text, not a number");
-      bad_.push_back(k);
-      return {};
-    }
-    char buf[40];
-    std::snprintf(buf, sizeof buf, "%.17g", neg ? -it->second.value : it->second.value);
-    return buf;
-  }
-  std::string literal(int k) const {
-    if (k >= fields()) return {};
-    const std::string_view t = l_.line->text;
-    auto [c1, c2] = cols_[std::size_t(k)];
-    if (std::size_t(c1 - 1) >= t.size()) return {};
-    return std::string(trim_sv(std::string_view(t).substr(std::size_t(c1 - 1), std::size_t(c2 - c1 + 1))));
-  }
-  std::string raw(int k) const {  // untrimmed (titles)
-    if (k >= fields()) return {};
-    const std::string_view t = l_.line->text;
-    auto [c1, c2] = cols_[std::size_t(k)];
-    if (std::size_t(c1 - 1) >= t.size()) return {};
-    return rtrim(t.substr(std::size_t(c1 - 1), std::size_t(c2 - c1 + 1)));
-  }
-  bool blank(int k) const { return literal(k).empty(); }
-
-  long long i(int k, const char* field, long long def = 0) {
-    long long v = def;
-    const std::size_t nbad = bad_.size();
-    const std::string t = text(k, field);
-    if (bad_.size() != nbad) return def;  // an undefined parameter (reported)
-    FieldStatus st = parse_fortran_int(t, v);
-    if (st == FieldStatus::ok) return v;
-    if (st == FieldStatus::bad) {
-      // Some tools write integer fields as reals with a zero fraction ("1.", "0.0").
-      double r = 0;
-      if (parse_fortran_real(t, r) == FieldStatus::ok && r == std::floor(r) &&
-          std::fabs(r) < 2e9)
-        return static_cast<long long>(r);
-      error(1001, k, field);
-      bad_.push_back(k);
-    }
-    return def;
-  }
-  double r(int k, const char* field, double def = 0.0) {
-    double v = def;
-    const std::size_t nbad = bad_.size();
-    const std::string t = text(k, field);
-    if (bad_.size() != nbad) return def;  // an undefined parameter (reported)
-    FieldStatus st = parse_fortran_real(t, v);
-    if (st == FieldStatus::ok) return v;
-    if (st == FieldStatus::bad) {
-      error(1002, k, field);
-      bad_.push_back(k);
-    }
-    return def;
-  }
-  Ref ref(int k) const {
-    Ref r;
-    r.file = l_.file;
-    r.line = l_.line;
-    if (k >= 0 && k < fields()) {
-      r.c1 = cols_[std::size_t(k)].first;
-      r.c2 = cols_[std::size_t(k)].second;
-    }
-    return r;
-  }
-  void error(int id, int k, const char* field, std::string detail = {}) {
-    if (id != 1001 && id != 1002 && std::find(bad_.begin(), bad_.end(), k) != bad_.end()) return;
-    int c1 = 0, c2 = 0;
-    if (k >= 0 && k < fields()) {
-      c1 = cols_[std::size_t(k)].first;
-      c2 = cols_[std::size_t(k)].second;
-    }
-    report(id, c1, c2, field, std::move(detail), k >= 0);
-  }
-  void note(int id, std::string detail = {}) { report(id, 0, 0, nullptr, std::move(detail), false); }
-  const std::string& card() const { return card_; }
-  void set_card(std::string c) { card_ = std::move(c); }
-  int line() const { return l_.line->number; }
-  const KLine& kline() const { return l_; }
-
- private:
-  void report(int id, int c1, int c2, const char* field, std::string detail, bool show_found) {
-    Location loc;
-    loc.file = l_.file->name();
-    loc.line = l_.line->number;
-    loc.card = card_;
-    if (field) loc.field = field;
-    loc.col_first = c1;
-    loc.col_last = c2;
-    if (show_found && c1 > 0) {
-      const std::string_view t = l_.line->text;
-      if (std::size_t(c1 - 1) < t.size())
-        loc.found = std::string(trim_sv(std::string_view(t).substr(std::size_t(c1 - 1), std::size_t(c2 - c1 + 1))));
-      loc.show_found = true;
-    }
-    diag_.add(id, loc, std::move(detail));
-  }
-
-  KLine l_;
-  std::string card_;
-  Diagnostics& diag_;
-  bool free_ = false;
-  std::vector<std::pair<int, int>> cols_;
-  std::vector<int> bad_;
-  const ParamTable* params_ = nullptr;
-};
-
-Ref field_ref(const KLine& l, const std::vector<int>& widths, int k) {
-  Diagnostics quiet;  // the card was read already: anything about it was reported then
-  return KCard(l, std::string(), widths, quiet).ref(k);
-}
-
-// Fast path for the bulk cards (*NODE, *ELEMENT_SOLID): a card with no comma, no '&'
-// (*PARAMETER reference) and only printable ASCII is read by columns without a KCard when every
-// field reads as a number (or is blank) and passes its checks, so that no message can come from
-// it; anything else is read again, the normal way, by the code that reports every problem.
-bool plain_keyword_card(std::string_view t) {
-  unsigned bad = 0;  // no early exit: the loop vectorises
-  for (char ch : t) {
-    const unsigned char c = static_cast<unsigned char>(ch);
-    bad |= static_cast<unsigned>(c - 32u >= 95u) | static_cast<unsigned>(c == ',') | static_cast<unsigned>(c == '&');
-  }
-  return bad == 0;
-}
-// Field k (0-based) of a plain card with these widths, as KCard::i / KCard::r read it: blank is 0.
-struct PlainFields {
-  std::string_view t;
-  const std::vector<int>& widths;
-  int c1[20] = {};
-  PlainFields(std::string_view text, const std::vector<int>& w) : t(text), widths(w) {
-    int c = 1;
-    for (std::size_t k = 0; k < w.size() && k < 20; ++k) {
-      c1[k] = c;
-      c += w[k];
-    }
-  }
-  std::string_view field(int k) const { return card_columns(t, c1[k], c1[k] + widths[std::size_t(k)] - 1); }
-  bool i(int k, int& v) const {
-    long long x = 0;
-    const FieldStatus st = parse_fortran_int(field(k), x);
-    if (st == FieldStatus::bad) return false;
-    v = st == FieldStatus::ok ? int(x) : 0;
-    return true;
-  }
-  bool r(int k, double& v) const {
-    double x = 0;
-    const FieldStatus st = parse_fortran_real(field(k), x);
-    if (st == FieldStatus::bad) return false;
-    v = st == FieldStatus::ok ? x : 0.0;
-    return true;
-  }
-};
-
-// The data lines of a block, all in one file: 4-byte indices into the file's lines (a block
-// may hold millions of lines), read back as KLine values.
-class BlockLines {
- public:
-  void push_back(const KLine& l) {
-    file_ = l.file;
-    idx_.push_back(std::uint32_t(l.line - l.file->lines().data()));
-  }
-  std::size_t size() const { return idx_.size(); }
-  bool empty() const { return idx_.empty(); }
-  KLine operator[](std::size_t k) const { return {file_, file_->lines().data() + idx_[k]}; }
-  void swap(BlockLines& o) noexcept {
-    std::swap(file_, o.file_);
-    idx_.swap(o.idx_);
-  }
-
-  class iterator {
-   public:
-    iterator(const BlockLines* b, std::size_t k) : b_(b), k_(k) {}
-    KLine operator*() const { return (*b_)[k_]; }
-    iterator& operator++() {
-      ++k_;
-      return *this;
-    }
-    bool operator!=(const iterator& o) const { return k_ != o.k_; }
-
-   private:
-    const BlockLines* b_;
-    std::size_t k_;
-  };
-  iterator begin() const { return {this, 0}; }
-  iterator end() const { return {this, idx_.size()}; }
-
- private:
-  const DeckFile* file_ = nullptr;
-  std::vector<std::uint32_t, HugePageAllocator<std::uint32_t>> idx_;
-};
-
-struct Block {
-  std::string name;     // upper case, suffix removed
-  std::string keyword;  // as written (for messages)
-  KLine kw;
-  bool long_fmt = false, i10 = false;
-  bool title_opt = false, id_opt = false;  // _TITLE / _ID option cards
-  bool moving_opt = false;                 // *RIGIDWALL_PLANAR_MOVING: card 3 MASS, V0
-  std::vector<int> cases;                  // the *CASE_BEGIN_n sections (and CID=n) it is in
-  BlockLines data;
-};
-
 // Raw records, before resolution.  Nodes and solids are the bulk of a deck: they keep their
 // card (file and line) and the widths it was read with, and find the columns of a field again
 // (field_ref) only when a message needs them.
-
-// The place of field k of a card read with these widths (or at its commas).
-Ref field_ref(const KLine& l, const std::vector<int>& widths, int k);
 
 // *NODE field widths: 0 standard (I8 3E16 I8 I8), 1 long (6 x 20), 2 I10 (I10 3E16 I10 I10).
 const std::vector<int>& node_widths(int format) {
@@ -578,29 +282,6 @@ struct RHistory {
   std::vector<Ref> refs;
 };
 
-Location loc_of(const Ref& r, const std::string& card, const char* field = nullptr, bool found = true) {
-  Location loc;
-  if (r.file) loc.file = r.file->name();
-  if (r.line) loc.line = r.line->number;
-  loc.card = card;
-  if (field) loc.field = field;
-  if (field) {  // columns only with a field
-    loc.col_first = r.c1;
-    loc.col_last = r.c2;
-  }
-  if (found && field && r.line && r.c1 > 0) {
-    const std::string_view t = r.line->text;
-    if (std::size_t(r.c1 - 1) < t.size())
-      loc.found = std::string(trim_sv(std::string_view(t).substr(std::size_t(r.c1 - 1), std::size_t(r.c2 - r.c1 + 1))));
-    loc.show_found = true;
-  }
-  return loc;
-}
-
-std::string at(const Ref& r) {
-  if (!r.file || !r.line) return "";
-  return r.file->name() + ":" + std::to_string(r.line->number);
-}
 
 // Faces of the hexahedron (0-based local nodes), counter-clockwise seen from outside.
 constexpr int kHexFaces[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4},
@@ -690,7 +371,6 @@ class KeywordReader {
     return " (it is defined by " + it->second + ", a keyword IMPACT-3D does not support)";
   }
   int rotational_spc_ = 0;
-  double rotascl_ = 1.0;  // *CONTROL_SHELL ROTASCL
   std::vector<Ref> rot_refs_;
   Ref w_ref_;
   std::vector<char> shell_node_;  // per node: used by a shell  // last rotational initial velocity (message when no shell node takes it)  // first rotational field of each *BOUNDARY_SPC card that has one
@@ -698,27 +378,8 @@ class KeywordReader {
   std::set<int> initially_elastic_;  // part ids
   Ref rotational_ref_;
 
-  // controls
-  bool have_termination_ = false;
-  double end_time_ = 0, dtmin_ = 0;
-  int end_cycle_ = 0;
-  Ref end_ref_;
-  double dtinit_ = 0, tssfac_ = 0.9;
-  double dt2ms_ = 0, endmas_ = 0;
-  bool ms1st_ = false, erode_ = false;
-  double slsfac_ = 0.1;
-  int penopt_ = 1;  // *CONTROL_CONTACT PENOPT (LS-DYNA's default: the smaller stiffness)
-  int shlthk_ = 0;  // *CONTROL_CONTACT SHLTHK (non-automatic contacts: 0 shells at mid-surface)
-  int ikedit_ = 100;
-  double d3plot_dt_ = 0, d3thdt_dt_ = -1, nodout_dt_ = -1, elout_dt_ = -1, glstat_dt_ = -1, ncforc_dt_ = 0;
-  int spcforc_ = 0;
-  int d3dump_ = 0, runrsf_ = 0;
-  int ctrl_ihq_ = 0;
-  double ctrl_qh_ = 0.1;
-  Ref ctrl_ihq_ref_;
-  double ctrl_q1_ = 1.5, ctrl_q2_ = 0.06;
-  int ctrl_btype_ = 1;
-  std::map<std::string, Ref> seen_once_;
+  KeywordContext ctx_{diag_, params_, {}};
+  KeywordControls ctl_;  // control and database cards
 
   // ---------------------------------------------------------------- pass 1: blocks
   void check_first_line() {
@@ -873,7 +534,7 @@ class KeywordReader {
     const auto& data = b.data;
     std::size_t k = 0;
     while (k < data.size() && is_blank(data[k].line->text)) ++k;
-    if (k >= data.size()) { missing_card(b, "card 1 (FILENAME)"); return; }
+    if (k >= data.size()) { ctx_.missing_card(b, "card 1 (FILENAME)"); return; }
     std::string name;
     const KLine first = data[k];
     for (; k < data.size(); ++k) {
@@ -1060,7 +721,7 @@ class KeywordReader {
       c.ref.line = b.kw.line;
       std::size_t k = 0;
       while (k < b.data.size() && is_blank(b.data[k].line->text)) ++k;
-      if (k >= b.data.size()) { missing_card(b, "card 1 (CASEID JOBID)"); continue; }
+      if (k >= b.data.size()) { ctx_.missing_card(b, "card 1 (CASEID JOBID)"); continue; }
       // card 1: CASEID and JOBID, written in columns or separated by blanks
       std::istringstream first(std::string(b.data[k].line->text));
       std::string id_text;
@@ -1222,29 +883,6 @@ class KeywordReader {
   // Option cards (_ID / _TITLE) at the start of a block: returns the number of lines used.
   std::size_t skip_option_card(const Block& b) { return (b.title_opt || b.id_opt) && !b.data.empty() ? 1 : 0; }
 
-  void once(const Block& b) {
-    auto it = seen_once_.find(b.name);
-    if (it != seen_once_.end()) {
-      Location loc;
-      loc.file = b.kw.file->name();
-      loc.line = b.kw.line->number;
-      loc.card = b.keyword;
-      diag_.add(2010, loc, "also given at " + at(it->second));
-    }
-    Ref r;
-    r.file = b.kw.file;
-    r.line = b.kw.line;
-    seen_once_[b.name] = r;
-  }
-
-  void missing_card(const Block& b, const char* what) {
-    Location loc;
-    loc.file = b.kw.file->name();
-    loc.line = b.kw.line->number;
-    loc.card = b.keyword;
-    diag_.add(1316, loc, std::string("missing: ") + what);
-  }
-
   // Strips the _TITLE / _ID options the supported keywords know.
   static std::string base_name(const std::string& n, bool& title, bool& id) {
     auto ends = [&](const char* s) {
@@ -1284,34 +922,6 @@ class KeywordReader {
     return n;
   }
 
-  static // Keywords read and ignored (warning 2008): they change nothing in IMPACT-3D's physics or
-// output.  Returns why, or nullptr for any other keyword.
-const char* ignored_keyword_reason(const std::string& n) {
-  if (n == "CONTROL_ENERGY") return "IMPACT-3D always computes all energies";
-  if (n == "KEYWORD_ID") return "the model identification (project, number, stage) is not used";
-  if (n == "DATABASE_EXTENT_BINARY") return "IMPACT-3D writes its fixed set of plot variables";
-  if (n == "CONTROL_PARALLEL") return "threads are set on the command line (ncpu=); results do not depend on them";
-  if (n == "CONTROL_ACCURACY") return "no accuracy options for solids here (invariant numbering and objective updates are for shells and fully integrated elements)";
-  if (n == "CONTROL_SOLID") return "solids are always the one-point hexahedron (degenerate shapes included)";
-  if (n == "CONTROL_SOLUTION") return "structural analysis only (SOLN 0)";
-  if (n == "DATABASE_FORMAT") return "the plot database is always the LS-DYNA binary layout (8-byte words: plotwords=8 on the command line)";
-  if (n.rfind("CONTROL_MPP_", 0) == 0) return "MPP decomposition controls have no effect on a shared-memory run";
-  if (n == "CONTROL_CPU") return "no CPU-time limit (CPUTIM): the run ends at its termination time or cycle";
-  if (n == "CONTROL_UNITS") return "the unit names label the model; IMPACT-3D converts nothing (the deck's numbers are used as they are)";
-  if (n == "DATABASE_NODAL_FORCE_GROUP") return "the nodal force group output (nodfor) is not written";
-  return nullptr;
-}
-
-bool is_ascii_database(const std::string& n) {
-    static const std::set<std::string> names = {
-        "DATABASE_GLSTAT", "DATABASE_MATSUM", "DATABASE_NODOUT", "DATABASE_ELOUT",
-        "DATABASE_RCFORC", "DATABASE_RWFORC", "DATABASE_SPCFORC", "DATABASE_NCFORC",
-        "DATABASE_SLEOUT", "DATABASE_RBDOUT", "DATABASE_BNDOUT", "DATABASE_NODFOR",
-        "DATABASE_DEFORC", "DATABASE_SECFORC", "DATABASE_ABSTAT", "DATABASE_JNTFORC",
-        "DATABASE_SBTOUT", "DATABASE_SWFORC", "DATABASE_SPHOUT", "DATABASE_TPRINT"};
-    return names.count(n) > 0;
-  }
-
   void parse_blocks() {
     for (Block& b : blocks_) {
       if (b.name == "PARAMETER") continue;  // read first (collect_parameters)
@@ -1327,6 +937,7 @@ bool is_ascii_database(const std::string& n) {
         continue;
       }
       if (parse_structure_keyword(b)) continue;  // sets, boxes, coordinate systems, histories
+      if (read_control_database(b, ctx_, ctl_)) continue;  // keyword_control_database.cpp
       if (n == "TITLE") {
         for (const KLine& l : b.data) {
           m_.title = rtrim(l.line->text.substr(0, std::min<std::size_t>(80, l.line->text.size())));
@@ -1350,101 +961,15 @@ bool is_ascii_database(const std::string& n) {
         parse_element_beam(b, n == "ELEMENT_BEAM_THICKNESS");
       } else if (n == "SECTION_BEAM") {
         parse_section_beam(b);
-      } else if (n == "CONTROL_SHELL") {
-        once(b);
-        parse_control_shell(b);
       } else if (const EosForm* ef = find_eos_form_by_keyword(n)) {
         parse_eos(b, *ef);
       } else if (n == "HOURGLASS") {
         parse_hourglass(b);
-      } else if (n == "CONTROL_HOURGLASS") {
-        once(b);
-        parse_control_hourglass(b);
-      } else if (n == "CONTROL_BULK_VISCOSITY") {
-        once(b);
-        parse_control_bulk(b);
-      } else if (n == "CONTROL_TERMINATION") {
-        once(b);
-        parse_control_termination(b);
-      } else if (n == "CONTROL_TIMESTEP") {
-        once(b);
-        parse_control_timestep(b);
-      } else if (n == "CONTROL_CONTACT") {
-        once(b);
-        if (!b.data.empty()) {
-          KCard c = card(b, 0, "card 1", W(b, 8));
-          slsfac_ = c.r(0, "SLSFAC", 0.1);
-          if (slsfac_ == 0) slsfac_ = 0.1;
-          if (slsfac_ < 0) c.error(1003, 0, "SLSFAC", "must be positive");
-          // PENOPT: 0 and 1 the smaller of segment and node stiffness, 2 the segment's, 3 the node's
-          shlthk_ = int(c.i(3, "SHLTHK"));
-          if (shlthk_ < 0 || shlthk_ > 2) c.error(1006, 3, "SHLTHK", "0 shells at their mid-surface, 1 at +-t/2 except rigid shells, 2 at +-t/2");
-          penopt_ = int(c.i(4, "PENOPT"));
-          if (penopt_ == 0) penopt_ = 1;
-          if (penopt_ == 4 || penopt_ == 5) c.error(1102, 4, "PENOPT", "area- or mass-weighted node stiffness (IMPACT-3D has 1 the smaller, 2 the segment's, 3 the node's)");
-          else if (penopt_ < 1 || penopt_ > 5) c.error(1006, 4, "PENOPT", "1 the smaller of segment and node stiffness, 2 the segment's, 3 the node's");
-        }
-      } else if (n == "CONTROL_OUTPUT") {
-        once(b);
-        if (!b.data.empty()) {
-          KCard c = card(b, 0, "card 1", W(b, 8));
-          ikedit_ = int(c.i(6, "IKEDIT", 100));
-          if (ikedit_ == 0) ikedit_ = 100;
-          if (ikedit_ < 0) c.error(1003, 6, "IKEDIT", "must not be negative");
-        }
-      } else if (n == "DATABASE_BINARY_D3PLOT") {
-        once(b);
-        if (!b.data.empty()) {
-          KCard c = card(b, 0, "card 1", W(b, 5));
-          d3plot_dt_ = c.r(0, "DT");
-          if (d3plot_dt_ < 0) c.error(1221, 0, "DT");
-          if (!c.blank(1) && c.i(1, "LCDT") != 0) c.error(1102, 1, "LCDT", "plot interval from a load curve");
-        }
       } else if (n == "DAMPING_GLOBAL") {
-        once(b);
+        ctx_.once(b);
         parse_damping_global(b);
       } else if (n == "MAT_ADD_EROSION") {
         parse_mat_add_erosion(b);
-      } else if (n == "DATABASE_BINARY_D3THDT") {
-        // the binary time-history database's interval: IMPACT-3D has one time-history interval
-        // (d3thdt and the ASCII tables), and this DT takes precedence over the ASCII ones
-        once(b);
-        if (!b.data.empty()) {
-          KCard c = card(b, 0, "card 1", W(b, 5));
-          d3thdt_dt_ = c.r(0, "DT");
-          if (d3thdt_dt_ < 0) c.error(1221, 0, "DT");
-          if (!c.blank(1) && c.i(1, "LCDT") != 0) c.error(1102, 1, "LCDT", "time-history interval from a load curve");
-        }
-      } else if (n == "DATABASE_BINARY_D3DUMP" || n == "DATABASE_BINARY_RUNRSF") {
-        once(b);
-        if (!b.data.empty()) {
-          KCard c = card(b, 0, "card 1", W(b, 2));
-          double cy = c.r(0, "CYCL");
-          if (cy < 0 || cy > 2e9) c.error(1003, 0, "CYCL", "cycles between dumps, >= 0");
-          else (n == "DATABASE_BINARY_D3DUMP" ? d3dump_ : runrsf_) = int(std::lround(cy));
-        }
-      } else if (is_ascii_database(n)) {
-        if (!b.data.empty()) {
-          KCard c = card(b, 0, "card 1", W(b, 4));
-          double dt = c.r(0, "DT");
-          if (dt < 0) c.error(1221, 0, "DT");
-          if (n == "DATABASE_NODOUT") nodout_dt_ = dt;
-          if (n == "DATABASE_ELOUT") elout_dt_ = dt;
-          if (n == "DATABASE_GLSTAT") glstat_dt_ = dt;
-          if (n == "DATABASE_NCFORC") ncforc_dt_ = dt;
-          if (n == "DATABASE_SPCFORC") spcforc_ = dt > 0 ? 1 : 0;
-        }
-      } else if (const char* why = ignored_keyword_reason(n)) {
-        if (n == "CONTROL_SOLUTION" && !b.data.empty()) {
-          // SOLN 1 (thermal only) and 2 (coupled) change the analysis: refused, not ignored
-          KCard c = card(b, 0, "card 1", W(b, 8));
-          if (c.i(0, "SOLN") != 0) c.error(1102, 0, "SOLN", "thermal and coupled thermal-structural analysis");
-        }
-        Location loc;
-        loc.file = b.kw.file->name();
-        loc.line = b.kw.line->number;
-        loc.card = b.keyword;
-        diag_.add(2008, loc, why);
       } else if (n == "INITIAL_VELOCITY") {
         parse_initial_velocity(b);
       } else if (n == "INITIAL_TEMPERATURE_NODE" || n == "INITIAL_TEMPERATURE_SET") {
@@ -1473,16 +998,6 @@ bool is_ascii_database(const std::string& n) {
         parse_contact(b, n == "CONTACT_ERODING_SURFACE_TO_SURFACE", false, n == "CONTACT_ERODING_SINGLE_SURFACE", true);
       } else if (n == "CONTACT_FORCE_TRANSDUCER_PENALTY") {
         parse_contact(b, false, true);
-      } else if (n == "DATABASE_BINARY_INTFOR") {
-        // the interface-force database (written with s=, default intfor beside g=)
-        once(b);
-        m_.control.intfor_interval = 0;
-        if (!b.data.empty()) {
-          KCard c = card(b, 0, "card 1", W(b, 5));
-          m_.control.intfor_interval = c.r(0, "DT");
-          if (m_.control.intfor_interval < 0) c.error(1221, 0, "DT");
-          if (!c.blank(1) && c.i(1, "LCDT") != 0) c.error(1102, 1, "LCDT", "interface-force interval from a load curve");
-        }
       } else if (n == "DEFINE_CURVE") {
         parse_curve(b);
       } else if (n == "LOAD_NODE_POINT" || n == "LOAD_NODE_SET" || n == "LOAD_RIGID_BODY") {
@@ -1492,7 +1007,7 @@ bool is_ascii_database(const std::string& n) {
       } else if (n == "LOAD_BODY_X" || n == "LOAD_BODY_Y" || n == "LOAD_BODY_Z" || n == "LOAD_BODY_VECTOR") {
         parse_load_body(b, n.back() == 'X' ? 0 : n.back() == 'Y' ? 1 : n.back() == 'Z' ? 2 : 3);
       } else if (n == "LOAD_BODY_PARTS") {
-        once(b);
+        ctx_.once(b);
         if (!b.data.empty()) {
           KCard c = card(b, 0, "card 1", W(b, 1));
           body_parts_psid_ = xid(int(c.i(0, "PSID")), b, &IncludeTransform::idsoff);
@@ -1715,7 +1230,7 @@ bool is_ascii_database(const std::string& n) {
     while (k < b.data.size()) {
       std::string title = rtrim(b.data[k].line->text.substr(0, std::min<std::size_t>(80, b.data[k].line->text.size())));
       if (k + 1 >= b.data.size()) {
-        if (!is_blank(b.data[k].line->text)) missing_card(b, "card 2 (PID SECID MID ...)");
+        if (!is_blank(b.data[k].line->text)) ctx_.missing_card(b, "card 2 (PID SECID MID ...)");
         break;
       }
       KCard c = card(b, k + 1, "card 2", W(b, 8));
@@ -1802,7 +1317,7 @@ bool is_ascii_database(const std::string& n) {
 
   void parse_section_shell(const Block& b) {
     std::size_t k = skip_option_card(b);
-    if (k >= b.data.size()) { missing_card(b, "card 1"); return; }
+    if (k >= b.data.size()) { ctx_.missing_card(b, "card 1"); return; }
     KCard c = card(b, k, "card 1", W(b, 8));
     const int id = int(c.i(0, "SECID"));
     c.set_card(b.keyword + " " + std::to_string(id));
@@ -1824,7 +1339,7 @@ bool is_ascii_database(const std::string& n) {
     if (c.i(6, "ICOMP") != 0) c.error(1102, 6, "ICOMP", "composite layups");
     c.r(7, "SETYP");
     if (k + 1 >= b.data.size()) {
-      missing_card(b, "card 2 (T1 T2 T3 T4 NLOC MAREA IDOF EDGSET)");
+      ctx_.missing_card(b, "card 2 (T1 T2 T3 T4 NLOC MAREA IDOF EDGSET)");
     } else {
       KCard c2 = card(b, k + 1, "card 2", W(b, 8));
       c2.set_card(b.keyword + " " + std::to_string(id));
@@ -1896,7 +1411,7 @@ bool is_ascii_database(const std::string& n) {
   // TT1 TT2 NSLOC NTLOC, (ELFORM 3) A RAMPT STRESS.
   void parse_section_beam(const Block& b) {
     std::size_t k = skip_option_card(b);
-    if (k >= b.data.size()) { missing_card(b, "card 1"); return; }
+    if (k >= b.data.size()) { ctx_.missing_card(b, "card 1"); return; }
     KCard c = card(b, k, "card 1", W(b, 8));
     const int id = int(c.i(0, "SECID"));
     c.set_card(b.keyword + " " + std::to_string(id));
@@ -1921,7 +1436,7 @@ bool is_ascii_database(const std::string& n) {
     if (c.r(5, "SCOOR") != 0) c.error(1102, 5, "SCOOR", "cross-section location options");
     if (c.r(6, "NSM") != 0) c.error(1102, 6, "NSM", "non-structural mass");
     if (k + 1 >= b.data.size() || is_keyword_line(b.data[k + 1].line->text)) {
-      missing_card(b, sec.elform == 3   ? "card 2 (A RAMPT STRESS)"
+      ctx_.missing_card(b, sec.elform == 3   ? "card 2 (A RAMPT STRESS)"
                       : sec.elform == 2 ? "card 2 (A ISS ITT J SA IST)"
                                         : "card 2 (TS1 TS2 TT1 TT2 NSLOC NTLOC)");
     } else {
@@ -1965,36 +1480,10 @@ bool is_ascii_database(const std::string& n) {
   // INTGRD LAMSHT CSTYP6 TSHELL.  THEORY must be Belytschko-Tsay (2); ROTASCL scales the rotary
   // inertia; the options that change nothing for Belytschko-Tsay shells with constant
   // thickness are listed as ignored (2006).
-  void parse_control_shell(const Block& b) {
-    if (b.data.empty()) return;
-    KCard c = card(b, 0, "card 1", W(b, 8));
-    c.r(0, "WRPANG");
-    if (c.i(1, "ESORT") != 0) c.error(2006, 1, "ESORT", "triangles are always degenerate Belytschko-Tsay quadrilaterals");
-    c.i(2, "IRNXX");
-    if (c.i(3, "ISTUPD") != 0) c.error(2006, 3, "ISTUPD", "the shell thickness stays constant");
-    const long long theory = c.i(4, "THEORY", 2);
-    if (theory != 0 && theory != 2) c.error(1102, 4, "THEORY", "shell theory " + std::to_string(theory) + "; only 2 (Belytschko-Tsay)");
-    const long long bwc = c.i(5, "BWC", 2);
-    if (bwc == 1) c.error(2006, 5, "BWC", "no warping stiffness for Belytschko-Tsay shells");
-    const long long miter = c.i(6, "MITER", 1);
-    if (miter == 3) c.error(2006, 6, "MITER", "plane-stress plasticity is always iterated to sigma_zz = 0");
-    c.i(7, "PROJ");
-    if (b.data.size() > 1) {
-      KCard c2 = card(b, 1, "card 2", W(b, 8));
-      rotascl_ = c2.r(0, "ROTASCL", 1.0);
-      if (rotascl_ == 0) rotascl_ = 1.0;
-      if (rotascl_ < 0) c2.error(1003, 0, "ROTASCL", "rotary inertia scale factor must be positive");
-      if (c2.i(1, "INTGRD") != 0) c2.error(1102, 1, "INTGRD", "Lobatto integration through the thickness");
-      c2.i(2, "LAMSHT");
-      c2.i(3, "CSTYP6");
-      c2.i(4, "TSHELL");
-    }
-  }
-
   // *MAT_...: the cards and fields its type's table names (material_types.h), checked there.
   void parse_mat(const Block& b, const MaterialType& t) {
     std::size_t start = skip_option_card(b);
-    if (start >= b.data.size()) { missing_card(b, "card 1"); return; }
+    if (start >= b.data.size()) { ctx_.missing_card(b, "card 1"); return; }
     KCard c = card(b, start, "card 1", W(b, 8));
     int mid = xid(int(c.i(0, "MID")), b, &IncludeTransform::idmoff);
     c.set_card(b.keyword + " material " + std::to_string(mid));
@@ -2036,7 +1525,7 @@ bool is_ascii_database(const std::string& n) {
   // the part's material.
   void parse_eos(const Block& b, const EosForm& f) {
     const std::size_t start = skip_option_card(b);
-    if (start >= b.data.size()) { missing_card(b, "card 1"); return; }
+    if (start >= b.data.size()) { ctx_.missing_card(b, "card 1"); return; }
     std::vector<KCard> cards;
     for (std::size_t k = 0; k < f.widths.size() && start + k < b.data.size(); ++k)
       cards.push_back(card(b, start + k, "card " + std::to_string(k + 1), W(b, eos_card_fields(f, int(k)), f.widths[k])));
@@ -2128,73 +1617,6 @@ bool is_ascii_database(const std::string& n) {
     }
   }
 
-  void parse_control_hourglass(const Block& b) {
-    if (b.data.empty()) return;
-    KCard c = card(b, 0, "", W(b, 2));
-    ctrl_ihq_ = int(c.i(0, "IHQ"));
-    ctrl_ihq_ref_ = c.ref(0);
-    ctrl_qh_ = c.r(1, "QH", 0.1);
-    if (ctrl_qh_ == 0) ctrl_qh_ = 0.1;
-    // LS-DYNA knows IHQ 0-10 and negative values (shell variants): those IMPACT-3D lacks are not
-    // supported, not invalid
-    if ((ctrl_ihq_ >= 6 && ctrl_ihq_ <= 10) || (ctrl_ihq_ >= -10 && ctrl_ihq_ < 0))
-      c.error(1102, 0, "IHQ", "hourglass type " + std::to_string(ctrl_ihq_) + " (IMPACT-3D has 0/1 viscous, 2/3 Flanagan-Belytschko viscous, 4/5 stiffness)");
-    else if (ctrl_ihq_ < 0 || ctrl_ihq_ > 5) c.error(1006, 0, "IHQ", "0/1 viscous, 2/3 Flanagan-Belytschko viscous, 4/5 stiffness");
-    if (ctrl_qh_ < 0) c.error(1220, 1, "QH");
-  }
-
-  void parse_control_bulk(const Block& b) {
-    if (b.data.empty()) return;
-    KCard c = card(b, 0, "", W(b, 5));
-    ctrl_q1_ = c.r(0, "Q1", 1.5);
-    ctrl_q2_ = c.r(1, "Q2", 0.06);
-    int type = int(c.i(2, "TYPE", 1));
-    if (ctrl_q1_ < 0) c.error(1220, 0, "Q1");
-    if (ctrl_q2_ < 0) c.error(1220, 1, "Q2");
-    if (type != 0 && type != 1 && type != -1 && type != -2)
-      c.error(1006, 2, "TYPE", "1 standard (-1, -2 differ only for shells)");
-    ctrl_btype_ = 1;
-  }
-
-  void parse_control_termination(const Block& b) {
-    have_termination_ = true;
-    if (b.data.empty()) { missing_card(b, "card 1 (ENDTIM)"); return; }
-    KCard c = card(b, 0, "", W(b, 6));
-    end_time_ = c.r(0, "ENDTIM");
-    end_ref_ = c.ref(0);
-    if (!(end_time_ > 0)) c.error(1214, 0, "ENDTIM");
-    const long long endcyc = c.i(1, "ENDCYC");
-    if (endcyc < 0 || endcyc > 2147483647LL) c.error(1003, 1, "ENDCYC", "must be 0 (no limit) or a cycle count");
-    else end_cycle_ = int(endcyc);
-    dtmin_ = c.r(2, "DTMIN");
-    if (dtmin_ < 0 || dtmin_ >= 1) c.error(1003, 2, "DTMIN", "must be in [0, 1)");
-    if (c.r(3, "ENDENG") != 0) c.error(1102, 3, "ENDENG", "termination by energy change");
-    endmas_ = c.r(4, "ENDMAS");
-    if (endmas_ < 0) c.error(1003, 4, "ENDMAS", "must not be negative (0 or blank: no limit)");
-    if (endmas_ >= 1e8) endmas_ = 0;  // LS-DYNA's default 1e8: no limit
-    c.i(5, "NOSOL");
-  }
-
-  void parse_control_timestep(const Block& b) {
-    if (b.data.empty()) return;
-    KCard c = card(b, 0, "card 1", W(b, 8));
-    dtinit_ = c.r(0, "DTINIT");
-    if (dtinit_ < 0) c.error(1003, 0, "DTINIT", "must not be negative");
-    tssfac_ = c.r(1, "TSSFAC", 0.9);
-    if (tssfac_ == 0) tssfac_ = 0.9;
-    if (!(tssfac_ > 0 && tssfac_ <= 1)) c.error(1215, 1, "TSSFAC");
-    c.i(2, "ISDO");
-    if (c.r(3, "TSLIMT") != 0) c.error(2006, 3, "TSLIMT", "shell time-step limit");
-    dt2ms_ = c.r(4, "DT2MS");
-    if (c.i(5, "LCTM") != 0) c.error(1102, 5, "LCTM", "time-step limit from a load curve");
-    const long long erode = c.i(6, "ERODE");
-    if (erode != 0 && erode != 1) c.error(1006, 6, "ERODE", "0 (the run ends below DTMIN) or 1 (solids below DTMIN x the first step are deleted)");
-    erode_ = erode == 1;
-    const long long ms1st = c.i(7, "MS1ST");
-    if (ms1st != 0 && ms1st != 1) c.error(1006, 7, "MS1ST", "0 (mass scaling every cycle) or 1 (the first cycle only)");
-    ms1st_ = ms1st == 1;
-  }
-
   // *INITIAL_VELOCITY: card 1 NSID NSIDEX BOXID IRIGID ICID, card 2 VX VY VZ (VXR-VZR), and
   // with NSIDEX card 3 VXE VYE VZE (VXRE-VZRE): the velocity of the exempted nodes.
   void parse_initial_velocity(const Block& b) {
@@ -2212,14 +1634,14 @@ bool is_ascii_database(const std::string& n) {
       c.i(3, "IRIGID");  // rigid-body velocities from *PART_INERTIA: IMPACT-3D has none
       v.icid = int(c.i(4, "ICID"));
       v.icid_ref = c.ref(4);
-      if (k + 1 >= b.data.size()) { missing_card(b, "card 2 (VX VY VZ)"); break; }
+      if (k + 1 >= b.data.size()) { ctx_.missing_card(b, "card 2 (VX VY VZ)"); break; }
       KCard c2 = card(b, k + 1, "card 2", W(b, 6));
       v.v = {c2.r(0, "VX"), c2.r(1, "VY"), c2.r(2, "VZ")};
       v.w = {c2.r(3, "VXR"), c2.r(4, "VYR"), c2.r(5, "VZR")};
       v.has_w = v.w[0] != 0 || v.w[1] != 0 || v.w[2] != 0;
       if (v.has_w) w_ref_ = c2.ref(3);
       if (v.nsidex > 0) {
-        if (k + 2 >= b.data.size()) { missing_card(b, "card 3 (VXE VYE VZE), needed with NSIDEX"); break; }
+        if (k + 2 >= b.data.size()) { ctx_.missing_card(b, "card 3 (VXE VYE VZE), needed with NSIDEX"); break; }
         KCard c3 = card(b, k + 2, "card 3", W(b, 6));
         v.ve = {c3.r(0, "VXE"), c3.r(1, "VYE"), c3.r(2, "VZE")};
         for (int f = 3; f < 6; ++f)
@@ -2442,7 +1864,7 @@ bool is_ascii_database(const std::string& n) {
       read_weld_failure(c2, 2, w);
       welds_.push_back(w);
     }
-    if (cards.size() % 2 == 1) missing_card(b, "card 2 (TFAIL EPSF SN SS N M)");
+    if (cards.size() % 2 == 1) ctx_.missing_card(b, "card 2 (TFAIL EPSF SN SS N M)");
   }
 
   // ---------------------------------------------------------------- sets, boxes, systems
@@ -2494,7 +1916,7 @@ bool is_ascii_database(const std::string& n) {
 
   void parse_set(const Block& b, std::map<int, RIdList>& sets, const char* field, const std::string& form) {
     std::size_t k = skip_option_card(b);
-    if (k >= b.data.size()) { missing_card(b, "card 1 (SID)"); return; }
+    if (k >= b.data.size()) { ctx_.missing_card(b, "card 1 (SID)"); return; }
     KCard c = card(b, k, "card 1", W(b, 6));
     int sid = xid(int(c.i(0, "SID")), b, &IncludeTransform::idsoff);
     c.set_card(b.keyword + " " + std::to_string(sid));
@@ -2543,7 +1965,7 @@ bool is_ascii_database(const std::string& n) {
   // cards as for the other _GENERAL sets).
   void parse_segment_set_terms(const Block& b) {
     std::size_t k = skip_option_card(b);
-    if (k >= b.data.size()) { missing_card(b, "card 1 (SID)"); return; }
+    if (k >= b.data.size()) { ctx_.missing_card(b, "card 1 (SID)"); return; }
     KCard c = card(b, k, "card 1", W(b, 6));
     const int sid = xid(int(c.i(0, "SID")), b, &IncludeTransform::idsoff);
     c.set_card(b.keyword + " " + std::to_string(sid));
@@ -2649,7 +2071,7 @@ bool is_ascii_database(const std::string& n) {
         for (int f = 0; f < 6; ++f) r.v[std::size_t(f)] = c.r(1 + f, names[f]);
         r.cid = int(c.i(7, "CIDL"));
         r.cid_ref = c.ref(7);
-        if (k + 1 >= b.data.size()) { missing_card(b, "card 2 (XP YP ZP)"); return; }
+        if (k + 1 >= b.data.size()) { ctx_.missing_card(b, "card 2 (XP YP ZP)"); return; }
         KCard c2 = card(b, ++k, "system " + std::to_string(r.id) + " card 2", W(b, 3));
         const char* names2[] = {"XP", "YP", "ZP"};
         for (int f = 0; f < 3; ++f) r.v[std::size_t(6 + f)] = c2.r(f, names2[f]);
@@ -2698,7 +2120,7 @@ bool is_ascii_database(const std::string& n) {
   void parse_define_transformation(const Block& b) {
     std::size_t k = skip_option_card(b);
     while (k < b.data.size() && is_blank(b.data[k].line->text)) ++k;
-    if (k >= b.data.size()) { missing_card(b, "card 1 (TRANID)"); return; }
+    if (k >= b.data.size()) { ctx_.missing_card(b, "card 1 (TRANID)"); return; }
     KCard c = card(b, k, "card 1", W(b, 1));
     const int id = int(c.i(0, "TRANID"));
     c.set_card(b.keyword + " " + std::to_string(id));
@@ -2899,7 +2321,7 @@ bool is_ascii_database(const std::string& n) {
 
   void parse_segment_set(const Block& b) {
     std::size_t k = skip_option_card(b);
-    if (k >= b.data.size()) { missing_card(b, "card 1 (SID)"); return; }
+    if (k >= b.data.size()) { ctx_.missing_card(b, "card 1 (SID)"); return; }
     KCard c = card(b, k, "card 1", W(b, 6));
     int sid = xid(int(c.i(0, "SID")), b, &IncludeTransform::idsoff);
     RSegSet s;
@@ -2926,7 +2348,7 @@ bool is_ascii_database(const std::string& n) {
     std::size_t k = 0;
     while (k < b.data.size()) {
       if (b.id_opt) ++k;  // RWID, heading
-      if (k + 1 >= b.data.size()) { missing_card(b, "cards 1 and 2"); return; }
+      if (k + 1 >= b.data.size()) { ctx_.missing_card(b, "cards 1 and 2"); return; }
       KCard c = card(b, k, "card 1", W(b, 7));
       RWall w;
       w.keyword = upper(b.keyword);
@@ -2956,7 +2378,7 @@ bool is_ascii_database(const std::string& n) {
       w.w.line = c.line();
       k += 2;
       if (b.moving_opt) {
-        if (k >= b.data.size()) { missing_card(b, "card 3 (MASS, V0)"); return; }
+        if (k >= b.data.size()) { ctx_.missing_card(b, "card 3 (MASS, V0)"); return; }
         KCard c3 = card(b, k, "card 3", W(b, 2));
         w.w.mass = c3.r(0, "MASS");
         w.w.v0 = c3.r(1, "V0");
@@ -2969,7 +2391,7 @@ bool is_ascii_database(const std::string& n) {
 
   void parse_contact(const Block& b, bool symmetric, bool transducer = false, bool single = false, bool eroding = false) {
     std::size_t k = skip_option_card(b);
-    if (k >= b.data.size()) { missing_card(b, "card 1"); return; }
+    if (k >= b.data.size()) { ctx_.missing_card(b, "card 1"); return; }
     RContact ct;
     ct.symmetric = symmetric;
     ct.transducer = transducer;
@@ -3040,7 +2462,7 @@ bool is_ascii_database(const std::string& n) {
     std::size_t ka = k + 3;  // optional card A
     if (eroding) {
       // the _ERODING_ card: ISYM EROSOP IADJ (LS-DYNA: EROSOP 0 keeps the exterior only)
-      if (k + 3 >= b.data.size()) { missing_card(b, "the _ERODING_ card (ISYM EROSOP IADJ)"); return; }
+      if (k + 3 >= b.data.size()) { ctx_.missing_card(b, "the _ERODING_ card (ISYM EROSOP IADJ)"); return; }
       KCard ce = card(b, k + 3, "eroding card", W(b, 8));
       if (ce.i(0, "ISYM") != 0) ce.error(1102, 0, "ISYM", "symmetry-plane options of eroding contact");
       const long erosop = ce.i(1, "EROSOP");
@@ -3164,7 +2586,7 @@ bool is_ascii_database(const std::string& n) {
 
   // *LOAD_BODY_X / _Y / _Z: LCID SF LCIDDR XC YC ZC CID; *LOAD_BODY_VECTOR: the same, then V1 V2 V3
   void parse_load_body(const Block& b, int axis) {
-    if (b.data.empty()) { missing_card(b, "card 1 (LCID)"); return; }
+    if (b.data.empty()) { ctx_.missing_card(b, "card 1 (LCID)"); return; }
     KCard c = card(b, 0, "card 1", W(b, 8));
     RLoad l;
     l.kind = RLoad::body;
@@ -3179,7 +2601,7 @@ bool is_ascii_database(const std::string& n) {
     if (axis < 3) {
       l.dir[std::size_t(axis)] = 1;
     } else if (b.data.size() < 2) {
-      missing_card(b, "card 2 (V1 V2 V3)");
+      ctx_.missing_card(b, "card 2 (V1 V2 V3)");
       return;
     } else {
       KCard c2 = card(b, 1, "card 2", W(b, 8));
@@ -3196,7 +2618,7 @@ bool is_ascii_database(const std::string& n) {
   // supported.  A value equal to EXCL switches its criterion off.
   void parse_mat_add_erosion(const Block& b) {
     std::size_t start = skip_option_card(b);
-    if (start >= b.data.size()) { missing_card(b, "card 1"); return; }
+    if (start >= b.data.size()) { ctx_.missing_card(b, "card 1"); return; }
     KCard c = card(b, start, "card 1", W(b, 8));
     const int mid = xid(int(c.i(0, "MID")), b, &IncludeTransform::idmoff);
     c.set_card(b.keyword + " material " + std::to_string(mid));
@@ -3271,7 +2693,7 @@ bool is_ascii_database(const std::string& n) {
     while (k < b.data.size()) {
       std::size_t next = k + 1 + id_cards;
       if (!is_blank(b.data[k].line->text) && read_prescribed_motion(b, k, kind)) {
-        if (k + 1 >= b.data.size()) missing_card(b, "card 2 (OFFSET1 OFFSET2 LRB NODE1 NODE2), read with |DOF| 9-11 or VAD 4");
+        if (k + 1 >= b.data.size()) ctx_.missing_card(b, "card 2 (OFFSET1 OFFSET2 LRB NODE1 NODE2), read with |DOF| 9-11 or VAD 4");
         ++next;
       }
       k = next;
@@ -3320,7 +2742,7 @@ bool is_ascii_database(const std::string& n) {
 
   void parse_curve(const Block& b) {
     std::size_t k = skip_option_card(b);
-    if (k >= b.data.size()) { missing_card(b, "card 1 (LCID)"); return; }
+    if (k >= b.data.size()) { ctx_.missing_card(b, "card 1 (LCID)"); return; }
     KCard c = card(b, k, "card 1", W(b, 8));
     LoadCurve lc;
     int lcid = xid(int(c.i(0, "LCID")), b, &IncludeTransform::idfoff);
@@ -3416,7 +2838,7 @@ bool is_ascii_database(const std::string& n) {
     resolve_materials();
     resolve_shell_materials();
     resolve_beam_materials();
-    resolve_control();
+    build_controls(ctl_, main_.name(), reaction_flag_, m_, diag_);
     resolve_spc();
     resolve_spot_welds();
     resolve_history();
@@ -3622,10 +3044,10 @@ bool is_ascii_database(const std::string& n) {
       }
       resolve_part_eos(md, p, card, mit != mats_.end() ? mit->second.type : nullptr);
       // hourglass and bulk viscosity
-      int ihq = ctrl_ihq_;
-      double qm = ctrl_qh_;
-      md.q1 = ctrl_q1_;
-      md.q2 = ctrl_q2_;
+      int ihq = ctl_.ihq;
+      double qm = ctl_.qh;
+      md.q1 = ctl_.q1;
+      md.q2 = ctl_.q2;
       if (p.hgid != 0) {
         auto hit = hourglasses_.find(p.hgid);
         if (hit == hourglasses_.end()) {
@@ -3640,7 +3062,7 @@ bool is_ascii_database(const std::string& n) {
       }
       md.hourglass_type = ihq == 0 ? 1 : ihq;
       md.hourglass_coef = qm > 0 ? qm : 0.10;
-      md.bulk_type = ctrl_btype_;
+      md.bulk_type = ctl_.btype;
       part_material_[k] = int(m_.materials.size());
       m_.materials.push_back(md);
     }
@@ -3707,7 +3129,7 @@ bool is_ascii_database(const std::string& n) {
     m_.shell_user_id.clear();
     if (!identity) m_.shell_user_id = ids;
     release(shells_);
-    m_.shell_rotary_scale = rotascl_;
+    m_.shell_rotary_scale = ctl_.rotascl;
   }
 
   // *ELEMENT_BEAM cards -> Model::beam_* in increasing id order (material: -2 - part index
@@ -3801,7 +3223,7 @@ bool is_ascii_database(const std::string& n) {
         err(1102, eit->second.second, "*MAT_ADD_EROSION material " + std::to_string(p.mid), "MID", "erosion (element deletion) of beams");
       md.beam = true;
       md.beam_section = sit->second.sec;
-      md.bulk_type = ctrl_btype_;
+      md.bulk_type = ctl_.btype;
       const int mat = int(m_.materials.size());
       m_.materials.push_back(md);
       for (int e : part_beams_[k]) {
@@ -3871,8 +3293,8 @@ bool is_ascii_database(const std::string& n) {
       md.shell_section.nip = sit->second.nip;
       md.shell_section.shrf = sit->second.shrf;
       md.shell_section.t = sit->second.t;
-      int ihq = ctrl_ihq_;
-      double qm = ctrl_qh_;
+      int ihq = ctl_.ihq;
+      double qm = ctl_.qh;
       if (p.hgid != 0) {
         auto hit = hourglasses_.find(p.hgid);
         if (hit == hourglasses_.end()) {
@@ -3885,7 +3307,7 @@ bool is_ascii_database(const std::string& n) {
       md.hourglass_type = ihq == 0 ? 1 : ihq;
       if (md.hourglass_type > 5) err(1102, p.hg_ref.line ? p.hg_ref : p.ref, card, "HGID", "shell hourglass type " + std::to_string(md.hourglass_type) + " (IHQ 1-3 viscous, 4-5 stiffness)");
       md.hourglass_coef = qm > 0 ? qm : 0.10;
-      md.bulk_type = ctrl_btype_;
+      md.bulk_type = ctl_.btype;
       const int mat = int(m_.materials.size());
       m_.materials.push_back(md);
       for (int e : part_shells_[k]) {
@@ -3907,36 +3329,6 @@ bool is_ascii_database(const std::string& n) {
         m_.shell_material[e] = -1;
         m_.shell_nodes[e].fill(-1);
       }
-  }
-
-  void resolve_control() {
-    ControlData& k = m_.control;
-    k.nmmat = int(m_.materials.size());
-    k.numnp = m_.num_nodes();
-    k.numelh = m_.num_hexes();
-    if (!have_termination_) {
-      Location loc;
-      loc.file = main_.name();
-      diag_.add(1311, loc, "*CONTROL_TERMINATION (ENDTIM) is required");
-    }
-    k.end_time = end_time_;
-    k.end_cycle = end_cycle_;
-    k.min_step_factor = dtmin_;
-    k.initial_dt = dtinit_;
-    k.tssf = tssfac_;
-    k.mass_scaling_dt = dt2ms_;
-    k.mass_scaling_first_only = ms1st_;
-    k.end_mass_percent = endmas_;
-    k.erode_small_steps = erode_;
-    k.penalty_scale = slsfac_;
-    k.report_interval = ikedit_;
-    k.plot_interval = d3plot_dt_ > 0 ? d3plot_dt_ : end_time_ / 20;
-    double th = d3thdt_dt_ > 0 ? d3thdt_dt_ : nodout_dt_ > 0 ? nodout_dt_ : elout_dt_ > 0 ? elout_dt_ : glstat_dt_ > 0 ? glstat_dt_ : 0;
-    k.th_interval = th > 0 ? th : end_time_ / 1000;
-    k.interface_out_interval = ncforc_dt_;
-    k.reaction_print_flag = reaction_flag_ >= 0 ? reaction_flag_ : spcforc_;
-    k.restart_dump_cycles = d3dump_;
-    k.running_restart_cycles = runrsf_;
   }
 
   // Indices (into sorted ids) of the ids BBEG..BEND by INC.
@@ -5126,13 +4518,13 @@ bool is_ascii_database(const std::string& n) {
       si.fs = c.fs;
       si.fd = c.fd;
       si.decay = c.dc;
-      si.penalty_scale = c.sfsa == 1 ? 0 : c.sfsa * slsfac_;
+      si.penalty_scale = c.sfsa == 1 ? 0 : c.sfsa * ctl_.slsfac;
       // SOFT 0 DYNA3D, 1 LS-DYNA's soft constraint, -1 IMPACT-3D maximum stable
       si.stiffness_method = c.soft == 1 ? 2 : c.soft == -1 ? 1 : 0;
       si.sofscl = c.sofscl;
-      si.penopt = penopt_;
+      si.penopt = ctl_.penopt;
       si.symmetric = c.symmetric;
-      si.shell_thickness = c.automatic ? 2 : c.thkopt == 1 ? c.shlthk : c.thkopt == 2 ? 0 : shlthk_;
+      si.shell_thickness = c.automatic ? 2 : c.thkopt == 1 ? c.shlthk : c.thkopt == 2 ? 0 : ctl_.shlthk;
       si.intfor_slave = c.sapr;
       si.intfor_master = c.sbpr;
       si.line = c.ref.line ? c.ref.line->number : 0;

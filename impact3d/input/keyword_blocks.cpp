@@ -1,0 +1,82 @@
+// The keyword reader's generic card reader (keyword_blocks.h): one card of a block read by its
+// table (keyword_cards.h) into named values, with the table's checks.
+
+#include "impact3d/input/keyword_blocks.h"
+
+#include <stdexcept>
+
+namespace impact3d::kw {
+
+KeywordValues::KeywordValues(const Block& b, std::size_t k, const KeywordCardLayout& layout, Diagnostics& diag,
+                             const ParamTable* params)
+    : layout_(layout),
+      card_(b.data[k], b.keyword + (layout.card[0] ? std::string(" ") + layout.card : std::string()),
+            std::vector<int>(std::size_t(layout.count), b.long_fmt ? 20 : layout.width), diag) {
+  card_.set_params(params);
+  const std::size_t n = layout.fields.size();
+  values_.assign(n, 0.0);
+  passed_.assign(n, 1);
+  for (std::size_t f = 0; f < n; ++f) {
+    read(f);
+    if (layout.order == CheckOrder::per_field) check(f);
+  }
+  if (layout.order == CheckOrder::after_card)
+    for (std::size_t f = 0; f < n; ++f) check(f);
+}
+
+void KeywordValues::read(std::size_t k) {
+  const KeywordField& f = layout_.fields[k];
+  double v = f.kind == FieldKind::real ? card_.r(f.index, f.name, f.blank)
+                                       : double(card_.i(f.index, f.name, static_cast<long long>(f.blank)));
+  if (f.zero_is_blank && v == 0) v = f.blank;
+  values_[k] = v;
+}
+
+void KeywordValues::check(std::size_t k) {
+  const KeywordField& f = layout_.fields[k];
+  for (const KeywordCheck& c : f.checks) {
+    if (!c.fires(values_[k])) continue;
+    passed_[k] = 0;
+    std::string detail = c.detail ? c.detail : "";
+    if (const std::size_t p = detail.find("%v"); p != std::string::npos)
+      detail.replace(p, 2, std::to_string(static_cast<long long>(values_[k])));
+    card_.error(c.id, f.index, f.name, std::move(detail));
+    return;
+  }
+}
+
+std::size_t KeywordValues::index(std::string_view name) const {
+  for (std::size_t k = 0; k < layout_.fields.size(); ++k)
+    if (name == layout_.fields[k].name) return k;
+  throw std::logic_error("keyword card table: " + std::string(layout_.card) + " has no field " + std::string(name));
+}
+
+void KeywordValues::error(int id, std::string_view name, std::string detail) {
+  const KeywordField& f = layout_.fields[index(name)];
+  card_.error(id, f.index, f.name, std::move(detail));
+}
+
+void KeywordContext::once(const Block& b) {
+  auto it = seen_once.find(b.name);
+  if (it != seen_once.end()) {
+    Location loc;
+    loc.file = b.kw.file->name();
+    loc.line = b.kw.line->number;
+    loc.card = b.keyword;
+    diag.add(2010, loc, "also given at " + at(it->second));
+  }
+  Ref r;
+  r.file = b.kw.file;
+  r.line = b.kw.line;
+  seen_once[b.name] = r;
+}
+
+void KeywordContext::missing_card(const Block& b, const char* what) {
+  Location loc;
+  loc.file = b.kw.file->name();
+  loc.line = b.kw.line->number;
+  loc.card = b.keyword;
+  diag.add(1316, loc, std::string("missing: ") + what);
+}
+
+}  // namespace impact3d::kw

@@ -1,0 +1,83 @@
+#pragma once
+// LS-DYNA keyword cards as data: each keyword the schema-driven families read is an entry of
+// its cards, and each card a table of fields (name, position, kind, blank value, what a 0
+// means, the checks on the value and the message each gives), in the same form as the
+// DYNA3D fixed-format card tables (fixed_cards.h).  The reader (KeywordValues in
+// keyword_blocks.h) and docs/keyword-tables.md (impact3d --keyword-tables) both come from these
+// tables, so a field's position, default and checks are written down once.
+//
+// Columns: a card of `count` fields of `width` columns (LS-DYNA's 8 fields of 10; 20 columns
+// each in long format, "+" after the keyword or *KEYWORD LONG=Y), or the fields at its commas
+// (free format) when the line has one.
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "impact3d/input/fixed_cards.h"
+
+namespace impact3d {
+
+// A check on a field's value (blank and 0 already replaced as the field says): when it holds,
+// message `id` names the field, with `detail` ("%v" in it: the value, as an integer).
+struct KeywordCheck {
+  enum Test {
+    outside,   // v not in the interval [lo, hi] (lo_open / hi_open: that end excluded)
+    inside,    // v in [lo, hi] (a refused range of values)
+    neither,   // v is neither lo nor hi
+  };
+  Test test;
+  double lo, hi;
+  bool lo_open, hi_open;
+  int id;
+  const char* detail;  // nullptr: the message's text alone
+  bool fires(double v) const;
+  std::string text() const;  // "< 0", "not in (0, 1]", "6 to 10", ... (for the tables)
+};
+
+struct KeywordField {
+  const char* name;    // LS-DYNA's field name (in messages and tables)
+  int index;           // position on the card, 0-based (columns 1 + index * width ...)
+  FieldKind kind;      // integer (an integral real such as "1." also reads) or real
+  double blank;        // the value of a blank field
+  bool zero_is_blank;  // 0 stands for the blank value (LS-DYNA's "0: default")
+  std::vector<KeywordCheck> checks;  // the first that holds gives its message
+  const char* meaning;               // one line for the tables
+};
+
+// When the checks of a card run: each right after its field is read, or all after every
+// field of the card is read (as the reader has always reported them: the message order).
+enum class CheckOrder { per_field, after_card };
+
+struct KeywordCardLayout {
+  const char* card;   // "card 1", ... as messages name it after the keyword ("" none)
+  int count;          // fields on the card in fixed columns
+  int width;          // columns of a field in standard format (20 in long format)
+  CheckOrder order;
+  std::vector<KeywordField> fields;
+  const char* when;   // when the card is read ("" always; else e.g. "when given")
+  const KeywordField& field(std::string_view name) const;  // every name a reader asks for exists
+};
+
+// The families of keywords (one reader file each, keyword_<family>.cpp).
+enum class KeywordFamily {
+  control_database,  // *CONTROL_..., *DATABASE_... (keyword_control_database.cpp)
+  ignored,           // read and ignored, warning 2008 with the note (keyword_control_database.cpp)
+};
+
+struct KeywordSpec {
+  std::vector<const char*> names;  // upper case, without '*' (several: the same cards)
+  KeywordFamily family;
+  bool once;                       // given again: warning 2010, the last one is used
+  std::vector<KeywordCardLayout> cards;
+  const char* note;                // one line for the page ("" none)
+  const KeywordCardLayout& card(std::string_view label) const;
+};
+
+// The entry of a keyword (upper case, options stripped), or nullptr if no table has it.
+const KeywordSpec* find_keyword_spec(std::string_view name);
+const std::vector<KeywordSpec>& all_keyword_specs();
+// docs/keyword-tables.md, in Markdown (impact3d --keyword-tables prints it).
+std::string keyword_tables_markdown();
+
+}  // namespace impact3d

@@ -1,0 +1,166 @@
+// The keyword cards read by their tables (impact3d/input/keyword_cards.cpp): the control and
+// database cards give the Model's controls from their fields, blank and 0 values as the tables
+// say; a bad field is refused naming file, line, card, field and the columns of its position
+// (standard, long and comma formats); the checks come in the tables' order; docs/keyword-tables.md is
+// the generated page (impact3d --keyword-tables).
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <string>
+
+#include "common/messages.h"
+#include "impact3d/input/deck_reader.h"
+#include "impact3d/input/keyword_cards.h"
+#include "impact3d/input/keyword_reader.h"
+
+using namespace impact3d;
+
+namespace {
+
+std::string file_text(const std::string& rel) {
+  std::ifstream in(std::string(IMPACT3D_SOURCE_DIR) + "/" + rel, std::ios::binary);
+  std::ostringstream os;
+  os << in.rdbuf();
+  return os.str();
+}
+
+// One hexahedron with these control cards.
+std::string deck(const std::string& controls) {
+  return "*KEYWORD\n" + controls +
+         "*PART\ncube\n         1         1         1\n*SECTION_SOLID\n         1         1\n"
+         "*MAT_ELASTIC\n         17.85000E-9  200000.0       0.3\n*NODE\n"
+         "       1             0.0             0.0             0.0\n       2             1.0             0.0             0.0\n"
+         "       3             1.0             1.0             0.0\n       4             0.0             1.0             0.0\n"
+         "       5             0.0             0.0             1.0\n       6             1.0             0.0             1.0\n"
+         "       7             1.0             1.0             1.0\n       8             0.0             1.0             1.0\n"
+         "*ELEMENT_SOLID\n       1       1       1       2       3       4       5       6       7       8\n*END\n";
+}
+
+// A card of fields right-aligned in `width` columns.
+std::string card(std::initializer_list<const char*> fields, int width = 10) {
+  std::string s;
+  for (const char* f : fields) s += std::string(std::size_t(width) - std::string(f).size(), ' ') + f;
+  return s + "\n";
+}
+
+struct Read {
+  Model m;
+  Diagnostics d;
+  bool ok = false;
+  std::vector<std::string> lines() const {
+    std::vector<std::string> v;
+    for (const Diagnostic& x : d.all()) v.push_back(render(x));
+    return v;
+  }
+};
+
+Read read(const std::string& text) {
+  Read r;
+  DeckFile f;
+  f.load_from_string("deck.k", text);
+  r.ok = read_keyword_deck(f, r.m, r.d);
+  return r;
+}
+
+}  // namespace
+
+TEST(KeywordCards, ControlCardsGiveTheModelsControls) {
+  const Read r = read(deck("*CONTROL_TERMINATION\n" + card({"2.0E-05", "40", "0.25", "0", "1.E+8"}) +
+                           "*CONTROL_TIMESTEP\n" + card({"1.E-7", "0.0", "", "", "0.0", "", "1", "1"}) +
+                           "*CONTROL_CONTACT\n" + card({"0.0", "", "", "2", "3"}) +
+                           "*CONTROL_OUTPUT\n" + card({"", "", "", "", "", "", "0"}) +
+                           "*DATABASE_BINARY_D3PLOT\n    5.0E-7\n*DATABASE_NODOUT\n    2.0E-7\n"
+                           "*DATABASE_BINARY_D3DUMP\n        7.\n*DATABASE_BINARY_INTFOR\n\n"));
+  ASSERT_TRUE(r.ok) << r.lines().front();
+  const ControlData& k = r.m.control;
+  EXPECT_EQ(k.end_time, 2.0e-5);
+  EXPECT_EQ(k.end_cycle, 40);
+  EXPECT_EQ(k.min_step_factor, 0.25);
+  EXPECT_EQ(k.end_mass_percent, 0.0) << "ENDMAS 1e8: LS-DYNA's default, no limit";
+  EXPECT_EQ(k.initial_dt, 1e-7);
+  EXPECT_EQ(k.tssf, 0.9) << "TSSFAC 0 stands for its blank value";
+  EXPECT_TRUE(k.erode_small_steps);
+  EXPECT_TRUE(k.mass_scaling_first_only);
+  EXPECT_EQ(k.penalty_scale, 0.1) << "SLSFAC 0 stands for 0.1";
+  EXPECT_EQ(k.report_interval, 100) << "IKEDIT 0 stands for 100";
+  EXPECT_EQ(k.plot_interval, 5e-7);
+  EXPECT_EQ(k.th_interval, 2e-7);
+  EXPECT_EQ(k.restart_dump_cycles, 7) << "an integral real reads as the count";
+  EXPECT_EQ(k.intfor_interval, 0.0) << "*DATABASE_BINARY_INTFOR with a blank card: the plot interval";
+}
+
+TEST(KeywordCards, BlankControlsTakeTheTablesBlankValues) {
+  const Read r = read(deck("*CONTROL_TERMINATION\n   1.0E-05\n*CONTROL_TIMESTEP\n\n*CONTROL_HOURGLASS\n\n"));
+  ASSERT_TRUE(r.ok) << r.lines().front();
+  EXPECT_EQ(r.m.control.tssf, 0.9);
+  EXPECT_EQ(r.m.control.report_interval, 100);
+  EXPECT_EQ(r.m.control.plot_interval, 1e-5 / 20);
+  EXPECT_EQ(r.m.control.th_interval, 1e-5 / 1000);
+  EXPECT_LT(r.m.control.intfor_interval, 0.0) << "no *DATABASE_BINARY_INTFOR: no interface-force database";
+}
+
+// Each message names the field and the columns of its position: 10 columns a field, 20 in
+// long format, the text between commas in free format.
+TEST(KeywordCards, ErrorsNameTheFieldsColumnsInEveryFormat) {
+  const Read fixed = read(deck("*CONTROL_TERMINATION\n   1.0E-05\n*CONTROL_CONTACT\n" + card({"", "", "", "7"})));
+  ASSERT_EQ(fixed.lines().size(), 1u);
+  EXPECT_EQ(fixed.lines()[0], "deck.k:5: error 1006: *CONTROL_CONTACT card 1, field \"SHLTHK\" (cols 31-40): not a valid choice: "
+                              "0 shells at their mid-surface, 1 at +-t/2 except rigid shells, 2 at +-t/2 [found \"7\"]");
+  const Read lng = read(deck("*CONTROL_TERMINATION\n   1.0E-05\n*CONTROL_CONTACT +\n" + card({"", "", "", "7"}, 20)));
+  ASSERT_EQ(lng.lines().size(), 1u);
+  EXPECT_NE(lng.lines()[0].find("field \"SHLTHK\" (cols 61-80)"), std::string::npos) << lng.lines()[0];
+  const Read free = read(deck("*CONTROL_TERMINATION\n1.0E-05,-2\n"));
+  ASSERT_EQ(free.lines().size(), 1u);
+  EXPECT_EQ(free.lines()[0], "deck.k:3: error 1003: *CONTROL_TERMINATION, field \"ENDCYC\" (cols 9-10): value out of range: "
+                             "must be 0 (no limit) or a cycle count [found \"-2\"]");
+}
+
+// Checks per field (each right after its field) or after the card, as the tables say: the
+// order of the messages is the reader's of old.
+TEST(KeywordCards, ChecksComeInTheTablesOrder) {
+  const Read per_field = read(deck("*CONTROL_TERMINATION\n      -1.0       abc\n"));
+  ASSERT_EQ(per_field.lines().size(), 2u);
+  EXPECT_NE(per_field.lines()[0].find("error 1214"), std::string::npos);
+  EXPECT_NE(per_field.lines()[1].find("error 1001"), std::string::npos);
+  const Read after = read(deck("*CONTROL_TERMINATION\n   1.0E-05\n*CONTROL_HOURGLASS\n         7        zz\n"));
+  ASSERT_EQ(after.lines().size(), 2u);
+  EXPECT_NE(after.lines()[0].find("error 1002"), std::string::npos);
+  EXPECT_NE(after.lines()[1].find("error 1102"), std::string::npos);
+  EXPECT_NE(after.lines()[1].find("hourglass type 7 (IMPACT-3D has"), std::string::npos) << after.lines()[1];
+}
+
+TEST(KeywordCards, EveryCardHoldsItsFieldsOnceInOrder) {
+  std::set<std::string> names;
+  for (const KeywordSpec& s : all_keyword_specs()) {
+    for (const char* n : s.names) {
+      EXPECT_TRUE(names.insert(n).second) << n << " has two entries";
+      EXPECT_EQ(find_keyword_spec(n), &s) << n;
+    }
+    for (const KeywordCardLayout& c : s.cards) {
+      int last = -1;
+      for (const KeywordField& f : c.fields) {
+        EXPECT_GT(f.index, last) << s.names.front() << " " << f.name;
+        EXPECT_LT(f.index, c.count) << s.names.front() << " " << f.name;
+        last = f.index;
+        for (const KeywordCheck& ch : f.checks) EXPECT_EQ(message_def(ch.id).id, ch.id) << f.name;
+      }
+    }
+  }
+  EXPECT_NE(find_keyword_spec("CONTROL_MPP_IO_NODUMP"), nullptr) << "CONTROL_MPP_* is a prefix";
+  EXPECT_EQ(find_keyword_spec("CONTROL_ADAPTIVE"), nullptr);
+}
+
+// docs/keyword-tables.md's tables are the generated ones (impact3d --keyword-tables): the manual
+// cannot drift from the reader.
+TEST(KeywordCards, DocsPageIsTheGeneratedOne) {
+  const std::string page = file_text("docs/keyword-tables.md");
+  const std::string begin = "<!-- BEGIN keyword tables (impact3d --keyword-tables) -->\n", end = "<!-- END keyword tables -->";
+  const std::size_t a = page.find(begin), b = page.find(end);
+  ASSERT_NE(a, std::string::npos);
+  ASSERT_NE(b, std::string::npos);
+  EXPECT_EQ(page.substr(a + begin.size(), b - a - begin.size()), keyword_tables_markdown())
+      << "regenerate: impact3d --keyword-tables, between the markers in docs/keyword-tables.md";
+}
