@@ -60,6 +60,7 @@ const std::vector<MessageDef> kCatalog = {
     {1252, S::error, "spot weld nodes coincide and no coordinate system gives the weld's normal direction"},
     {1253, S::error, "spot weld node is already constrained (another spot weld or a rigid body)"},
     {1254, S::error, "spot weld has no mass (its nodes belong to no element)"},
+    {1255, S::error, "beam-to-beam contact is not supported: beams take part in contact as slave nodes only, against solid faces or shells"},
     // 1300-1399: LS-DYNA keyword decks
     {1301, S::error, "keyword not supported by IMPACT-3D (impact3d --lenient-keywords turns this into a warning)"},
     {1305, S::error, "data line before the first keyword"},

@@ -60,7 +60,10 @@ struct Surface {
   // single-surface contact: per node, its ring (the sorted nodes of the segments that have it);
   // a segment with a node of the ring is not a candidate for the node
   std::vector<int> ring_start, ring;
-  std::vector<int> nodes;              // sorted, unique
+  // sorted, unique: first the segments' nodes (seg_nodes of them), then the side's beam nodes
+  // (SlidingInterface::slave_nodes / master_nodes, sorted): contact nodes without segments
+  std::vector<int> nodes;
+  std::size_t seg_nodes = 0;
   std::vector<std::array<int, 4>> local;  // per segment: its nodes' indices in `nodes`
   std::vector<double> node_force;      // 3 per node: contact force of the last apply() (intfor sides only)
 };
@@ -140,9 +143,19 @@ std::array<int, 4> segment_key(std::array<int, 4> f) {
 // Shell lookup of the segments (by their nodes) and half the thickest shell on each node.
 struct ShellIndex {
   std::map<std::array<int, 4>, int> by_key;
-  std::vector<double> node_half;             // per model node: over every shell
-  std::vector<double> node_half_deformable;  // the same over the deformable shells only
+  std::vector<double> node_half;             // per model node: over every shell and beam
+  std::vector<double> node_half_deformable;  // the same over the deformable shells and beams only
 };
+
+// Half a beam's section size, its contact radius in the contacts that take thicknesses: half
+// the larger side of a rectangle, a tube's outer radius, sqrt(A / pi) for a truss or a
+// resultant beam (no section shape).
+double beam_contact_radius(const BeamState& bm, const BeamGroup& g, int b) {
+  const std::size_t B = std::size_t(b);
+  if (g.kernel == BeamKernel::truss || g.kernel == BeamKernel::resultant) return std::sqrt(bm.area[B] / M_PI);
+  const BeamSectionSize& z = bm.size[B];
+  return z.cst == BeamCrossSection::rectangular ? 0.5 * std::max(z.ts, z.tt) : 0.5 * z.ts;
+}
 
 // Does shell k keep its +-t/2 contact surfaces under SlidingInterface::shell_thickness `mode`?
 bool shell_has_offsets(const State& s, int k, int mode) {
@@ -163,6 +176,17 @@ ShellIndex build_shell_index(const State& s) {
         ix.node_half_deformable[std::size_t(n)] = std::max(ix.node_half_deformable[std::size_t(n)], half);
     }
   }
+  const BeamState& bm = s.beams;
+  for (const BeamGroup& g : bm.groups)
+    for (int q = g.first; q < g.first + g.count; ++q) {
+      const int b = bm.order[std::size_t(q)];
+      const double r = beam_contact_radius(bm, g, b);
+      for (int j = 0; j < 2; ++j) {
+        const std::size_t n = std::size_t(bm.conn[std::size_t(b)][std::size_t(j)]);
+        ix.node_half[n] = std::max(ix.node_half[n], r);
+        if (!bm.rigid_elem[std::size_t(b)]) ix.node_half_deformable[n] = std::max(ix.node_half_deformable[n], r);
+      }
+    }
   return ix;
 }
 
@@ -200,8 +224,10 @@ void elements_of_eroding_segment(const State& s, const std::array<int, 4>& sg, i
 }
 
 // shell_mode: SlidingInterface::shell_thickness
-void build_surface(const State& s, const ShellIndex& shx, const std::vector<std::array<int, 4>>& segs, double mu,
-                   int shell_mode, Surface& sf, bool eroding = false) {
+// free_nodes: the side's beam nodes (contact nodes without segments), appended after the
+// segments' nodes
+void build_surface(const State& s, const ShellIndex& shx, const std::vector<std::array<int, 4>>& segs,
+                   const std::vector<int>& free_nodes, double mu, int shell_mode, Surface& sf, bool eroding = false) {
   sf.seg = segs;
   sf.eroding = eroding;
   const std::size_t ns = segs.size();
@@ -288,6 +314,9 @@ void build_surface(const State& s, const ShellIndex& shx, const std::vector<std:
     for (int a = 0; a < 4; ++a)
       sf.local[j][std::size_t(a)] =
           int(std::lower_bound(sf.nodes.begin(), sf.nodes.end(), segs[j][std::size_t(a)]) - sf.nodes.begin());
+  sf.seg_nodes = sf.nodes.size();
+  for (int n : free_nodes)
+    if (!std::binary_search(sf.nodes.begin(), sf.nodes.begin() + std::ptrdiff_t(sf.seg_nodes), n)) sf.nodes.push_back(n);
   if (eroding) {  // per node its segments (CSR, segment order)
     sf.node_seg_start.assign(sf.nodes.size() + 1, 0);
     for (const auto& lc : sf.local)
@@ -464,6 +493,13 @@ double elastic_step(const State& s, double tssf) {
     if (sh.rigid_elem[K] || sh.failed[K]) continue;
     if (sh.dt_e[K] > 0 && sh.dt_e[K] < dtmin) dtmin = sh.dt_e[K];
   }
+  // beams: their element step
+  const BeamState& bm = s.beams;
+  for (int b = 0; b < bm.nb; ++b) {
+    const std::size_t B = std::size_t(b);
+    if (bm.rigid_elem[B] || bm.failed[B]) continue;
+    if (bm.dt_e[B] > 0 && bm.dt_e[B] < dtmin) dtmin = bm.dt_e[B];
+  }
   return tssf * dtmin;
 }
 
@@ -509,7 +545,7 @@ void SlidingInterfaces::Impl::node_pass(const Model&, const State& s, Interface&
       continue;
     const int c = cell_coord(g, 0, p[0]) + g.dim[0] * (cell_coord(g, 1, p[1]) + g.dim[1] * cell_coord(g, 2, p[2]));
     // eroding: a node none of whose faces is in the surface (its solids failed) is not
-    if (nodes_sf.eroding) {
+    if (nodes_sf.eroding && std::size_t(q) < nodes_sf.seg_nodes) {  // (a beam node always is)
       bool on = false;
       for (int c2 = nodes_sf.node_seg_start[std::size_t(q)]; c2 < nodes_sf.node_seg_start[std::size_t(q) + 1] && !on; ++c2)
         on = segment_active(s, nodes_sf, std::size_t(nodes_sf.node_seg[std::size_t(c2)]));
@@ -668,9 +704,9 @@ void SlidingInterfaces::initialize(const Model& m, const State& s) {
       in.npass = 1;
       in.symmetric = true;
     }
-    build_surface(s, shx, d.slave, in.mu, d.shell_thickness, in.surf[0], d.eroding);
-    build_surface(s, shx, in.single ? std::vector<std::array<int, 4>>{} : d.master, in.mu, d.shell_thickness,
-                  in.surf[1], d.eroding);
+    build_surface(s, shx, d.slave, d.slave_nodes, in.mu, d.shell_thickness, in.surf[0], d.eroding);
+    build_surface(s, shx, in.single ? std::vector<std::array<int, 4>>{} : d.master,
+                  in.single ? std::vector<int>{} : d.master_nodes, in.mu, d.shell_thickness, in.surf[1], d.eroding);
     if (in.single) build_rings(in.surf[0]);
     for (int p = 0; p < in.npass; ++p) {
       Pass& ps = in.pass[p];

@@ -253,6 +253,10 @@ void permute_model(Model& m, const std::vector<int>& node_new_of_old, const std:
       for (int& n : sg) n = node(n);
     for (auto& sg : si.master)
       for (int& n : sg) n = node(n);
+    for (auto* list : {&si.slave_nodes, &si.master_nodes}) {
+      for (int& n : *list) n = node(n);
+      std::sort(list->begin(), list->end());  // kept sorted (SlidingInterface)
+    }
   }
   for (auto& ft : m.force_transducers) {
     for (auto* list : {&ft.a_nodes, &ft.b_nodes}) {

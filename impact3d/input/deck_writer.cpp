@@ -597,6 +597,23 @@ class KeywordWriter {
       os_ << "$#  penmax    thkopt    shlthk\n" << kcard({B(), I(1), I(si.shell_thickness)}) << "\n";
   }
 
+  // An interface's beam nodes (contact nodes without segments) against the segment set seg_set:
+  // a nodes-to-surface contact of their node set (SURFATYP 4) with the interface's constants;
+  // read back, the same forces (one more interface in the model).
+  void beam_node_contact(const SlidingInterface& si, const std::vector<int>& nodes, int seg_set) {
+    if (nodes.empty()) return;
+    note("sliding interface's " + std::to_string(nodes.size()) +
+         " beam nodes written as a *CONTACT_NODES_TO_SURFACE of their node set (one more interface, the same forces)");
+    const int ns = node_set(nodes);
+    os_ << (si.eroding ? "*CONTACT_ERODING_NODES_TO_SURFACE\n" : "*CONTACT_NODES_TO_SURFACE\n");
+    os_ << "$#   surfa     surfb  surfatyp  surfbtyp\n" << kcard({I(ns), I(seg_set), I(4), I(0)}) << "\n";
+    os_ << "$#      fs        fd        dc\n" << kcard({R(si.fs), R(si.fd), R(si.decay)}) << "\n";
+    double s = si.penalty_scale == 0 ? 1.0 : scale_factor(si.penalty_scale, m_.control.penalty_scale);
+    os_ << "$#    sfsa      sfsb\n" << kcard({R(s), R(s)}) << "\n";
+    if (si.eroding) os_ << "$#    isym    erosop      iadj\n" << kcard({I(0), I(1), I(0)}) << "\n";
+    soft_card(si, si.eroding);
+  }
+
   void interfaces() {
     for (const SlidingInterface& si : m_.interfaces) {
       if (si.type == 4) {  // single surface: side A only, a segment set
@@ -609,6 +626,11 @@ class KeywordWriter {
         os_ << "$#    sfsa      sfsb\n" << kcard({R(s), R(s)}) << "\n";
         if (si.eroding) os_ << "$#    isym    erosop      iadj\n" << kcard({I(0), I(1), I(0)}) << "\n";
         soft_card(si, true);
+        beam_node_contact(si, si.slave_nodes, a);
+        continue;
+      }
+      if (si.slave.empty()) {  // a side of beams only: its nodes against the master segments (one pass)
+        beam_node_contact(si, si.slave_nodes, segment_set(si.master));
         continue;
       }
       int a = segment_set(si.slave), b = segment_set(si.master);
@@ -626,6 +648,8 @@ class KeywordWriter {
       os_ << "$#    sfsa      sfsb\n" << kcard({R(s), R(s)}) << "\n";
       if (si.eroding) os_ << "$#    isym    erosop      iadj\n" << kcard({I(0), I(1), I(0)}) << "\n";
       soft_card(si, si.eroding);
+      beam_node_contact(si, si.slave_nodes, b);
+      if (si.symmetric) beam_node_contact(si, si.master_nodes, a);
     }
     // force transducers: their sides as node sets (SURFATYP / SURFBTYP 4)
     for (const ForceTransducer& ft : m_.force_transducers) {
@@ -1138,6 +1162,13 @@ int write_converted_decks(const Model& m, const std::string& keyword_path, const
               << " is a resultant beam or a truss (ELFORM 2/3: DYNA3D's beam cards hold Hughes-Liu beams; write a keyword deck)\n";
           return exit_code::input_error;
         }
+    if (k == 1)  // beam contact nodes: the fixed format's interfaces hold segments only
+      for (std::size_t j = 0; j < m.interfaces.size(); ++j)
+        if (!m.interfaces[j].slave_nodes.empty() || !m.interfaces[j].master_nodes.empty()) {
+          log << " error: the fixed-format deck " << path << " cannot hold this model (not written): sliding interface "
+              << j + 1 << " has beam nodes (contact nodes without segments: no fixed-format card; write a keyword deck)\n";
+          return exit_code::input_error;
+        }
     if (k == 1)  // eroding contact has no fixed-format card (its sides hold interior faces)
       for (std::size_t j = 0; j < m.interfaces.size(); ++j)
         if (m.interfaces[j].eroding) {
@@ -1381,6 +1412,8 @@ std::vector<std::string> model_differences(const Model& a, const Model& b, int m
     N(s + "eroding", x.eroding, y.eroding);
     if (x.slave != y.slave) diff(s + "slave segments", std::to_string(x.slave.size()), std::to_string(y.slave.size()));
     if (x.master != y.master) diff(s + "master segments", std::to_string(x.master.size()), std::to_string(y.master.size()));
+    if (x.slave_nodes != y.slave_nodes) diff(s + "slave beam nodes", std::to_string(x.slave_nodes.size()), std::to_string(y.slave_nodes.size()));
+    if (x.master_nodes != y.master_nodes) diff(s + "master beam nodes", std::to_string(x.master_nodes.size()), std::to_string(y.master_nodes.size()));
     N(s + "intfor slave side", x.intfor_slave, y.intfor_slave);
     N(s + "intfor master side", x.intfor_master, y.intfor_master);
   }

@@ -4424,10 +4424,24 @@ class KeywordReader {
     resolving_segments_.erase(&s);
   }
 
+  // A side's segments (out, with their cards' lines and files) and its beam nodes (the end
+  // nodes of its parts' beams, or the node set's beam end nodes; in SABOXID / SBBOXID's box;
+  // sorted, none a node of the side's segments): beams are contact nodes, never segments.
+  // can_be_nodes: a side of beam nodes alone is a contact's slave side (else error 1255).
   void resolve_side(const RSide& side, bool slave, const std::string& card, std::vector<std::array<int, 4>>& out,
-                    std::vector<int>& lines, std::vector<int>& files) {
+                    std::vector<int>& lines, std::vector<int>& files, std::vector<int>& beam_nodes,
+                    bool can_be_nodes) {
     const int errors_before = diag_.error_count();
     const char* field = slave ? "SURFA" : "SURFB";
+    std::vector<char> beam_end(std::size_t(m_.num_nodes()), 0);
+    auto mark_beam_ends = [&](int e) {
+      const auto& bn = m_.beam_nodes[std::size_t(e)];
+      if (bn[0] >= 0 && bn[1] >= 0) beam_end[std::size_t(bn[0])] = beam_end[std::size_t(bn[1])] = 1;
+    };
+    auto in_set = [&](const std::vector<char>& mark, int e) {
+      const auto& bn = m_.beam_nodes[std::size_t(e)];
+      return bn[0] >= 0 && bn[1] >= 0 && (mark[std::size_t(bn[0])] || mark[std::size_t(bn[1])]);
+    };
     if (side.type == 0) {
       auto it = seg_sets_.find(side.id);
       if (it == seg_sets_.end()) {
@@ -4444,16 +4458,34 @@ class KeywordReader {
         parts = parts_of(side.type == 2, side.id, side.id_ref, card, field);
       exterior_faces(parts, nullptr, out, lines, files);
       shell_segments(parts, nullptr, out, lines, files);
+      for (int p : parts)
+        for (int e : part_beams_[std::size_t(p)]) mark_beam_ends(e);
     } else if (side.type == 4) {
       if (const RIdList* s = find_node_set(side.id, side.id_ref, card, field)) {
         std::vector<char> mark(std::size_t(m_.num_nodes()), 0);
         for (int n : set_nodes(*s, "*SET_NODE_LIST " + std::to_string(side.id))) mark[std::size_t(n)] = 1;
         exterior_faces({}, &mark, out, lines, files);
         shell_segments({}, &mark, out, lines, files);
+        for (int e = 0; e < m_.num_beams(); ++e)
+          if (in_set(mark, e)) mark_beam_ends(e);
+        for (std::size_t n = 0; n < mark.size(); ++n) beam_end[n] = char(beam_end[n] && mark[n]);
       }
     }
     if (side.boxid != 0) keep_segments_in_box(side, slave, card, out, lines, files);
-    if (out.empty() && diag_.error_count() == errors_before &&
+    const auto bit = side.boxid != 0 ? boxes_.find(side.boxid) : boxes_.end();  // (an undefined box: 1310 above)
+    const Box* box = bit != boxes_.end() ? &bit->second.box : nullptr;
+    for (const auto& sg : out)
+      for (int v : sg) beam_end[std::size_t(v)] = 0;
+    beam_nodes.clear();
+    for (std::size_t n = 0; n < beam_end.size(); ++n)
+      if (beam_end[n] && (!box || box->contains(m_.x[n], m_.y[n], m_.z[n]))) beam_nodes.push_back(int(n));
+    if (out.empty() && !beam_nodes.empty() && !can_be_nodes && diag_.error_count() == errors_before) {
+      err(1255, side.id_ref, card, field,
+          std::string(slave ? "the single surface" : "the master side (SURFB)") + " holds beams (" +
+              std::to_string(beam_nodes.size()) + " beam nodes) and no solid faces or shells to strike");
+      return;
+    }
+    if (out.empty() && beam_nodes.empty() && diag_.error_count() == errors_before &&
         (side.type == 0 || side.type == 2 || side.type == 3 || side.type == 4 || side.type == 5))
       err(1314, side.boxid != 0 ? side.box_ref : side.id_ref, card, side.boxid != 0 ? (slave ? "SABOXID" : "SBBOXID") : field,
           side.boxid != 0 ? "no segment has its centroid in the box" : "no segments");
@@ -4500,9 +4532,10 @@ class KeywordReader {
               nodes = set_nodes(*s, "*SET_NODE_LIST " + std::to_string(side.id));
           } else {
             std::vector<std::array<int, 4>> segs;
-            std::vector<int> lines, files;
-            resolve_side(side, sd == 0, c.keyword, segs, lines, files);
+            std::vector<int> lines, files, beam_nodes;
+            resolve_side(side, sd == 0, c.keyword, segs, lines, files, beam_nodes, true);
             for (const auto& sg : segs) nodes.insert(nodes.end(), sg.begin(), sg.end());
+            nodes.insert(nodes.end(), beam_nodes.begin(), beam_nodes.end());
           }
           std::sort(nodes.begin(), nodes.end());
           nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
@@ -4528,8 +4561,9 @@ class KeywordReader {
       si.intfor_slave = c.sapr;
       si.intfor_master = c.sbpr;
       si.line = c.ref.line ? c.ref.line->number : 0;
-      resolve_side(c.a, true, c.keyword, si.slave, si.slave_line, si.slave_file);
-      if (!c.single) resolve_side(c.b, false, c.keyword, si.master, si.master_line, si.master_file);
+      resolve_side(c.a, true, c.keyword, si.slave, si.slave_line, si.slave_file, si.slave_nodes, !c.single);
+      if (!c.single) resolve_side(c.b, false, c.keyword, si.master, si.master_line, si.master_file, si.master_nodes, false);
+      if (!c.symmetric) si.master_nodes.clear();  // one pass: the master side's nodes search nothing
       all_faces_ = false;
       m_.interfaces.push_back(std::move(si));
     }

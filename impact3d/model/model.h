@@ -194,6 +194,11 @@ struct SlidingInterface {
   bool intfor_slave = false, intfor_master = false;
   std::string name;  // DYNA3D free-format "lagop ... name NAME endfree" (empty: none)
   std::vector<std::array<int, 4>> slave, master;  // 0-based nodes
+  // Beam nodes of each side (0-based, sorted, unique; none of them a node of the side's
+  // segments): contact nodes without segments.  They search the other side's segments as the
+  // segments' nodes do (slave side: pass 0; master side: the symmetric pass 1; a single surface:
+  // its one pass); beams are never segments (docs/contact.md "Beams in contact").
+  std::vector<int> slave_nodes, master_nodes;
   std::vector<int> slave_line, master_line;       // deck line of each segment card (messages)
   std::vector<int> slave_file, master_file;       // Model::source_files index of that line (empty: the deck)
   int line = 0;

@@ -389,8 +389,13 @@ void write_model_summary(std::ostream& os, const Model& m) {
       const bool single = si.type == 4;
       os << "   interface " << i + 1 << ": type " << si.type
          << (single ? " (single surface)" : " (sliding with impact and separation)") << (si.eroding ? ", eroding" : "") << ", "
-         << (single ? std::to_string(si.slave.size()) + " segments\n"
-                    : std::to_string(si.slave.size()) + " slave / " + std::to_string(si.master.size()) + " master segments\n")
+         << (single ? std::to_string(si.slave.size()) + " segments"
+                    : std::to_string(si.slave.size()) + " slave / " + std::to_string(si.master.size()) + " master segments")
+         << (si.slave_nodes.empty() && si.master_nodes.empty()
+                 ? std::string()
+                 : single ? ", " + std::to_string(si.slave_nodes.size()) + " beam nodes"
+                          : ", " + std::to_string(si.slave_nodes.size()) + " slave / " + std::to_string(si.master_nodes.size()) + " master beam nodes")
+         << "\n"
          << "     friction static/dynamic/decay ........ " << fmt("%.4g", si.fs) << " / "
          << fmt("%.4g", si.fd) << " / " << fmt("%.4g", si.decay) << "\n"
          << "     penalty stiffness .................... "
