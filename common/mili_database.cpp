@@ -7,7 +7,6 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <functional>
 #include <limits>
 #include <sstream>
 #include <stdexcept>
@@ -130,6 +129,22 @@ std::string class_in_label_name(const std::string& s) {
 
 bool starts_with(const std::string& s, const char* p) { return s.rfind(p, 0) == 0; }
 
+// An ordinal block first..last (from 1; empty when last = first - 1) of `what`.
+void check_block(const std::string& file, std::int64_t first, std::int64_t last, const std::string& what) {
+    if (first < 1 || last < first - 1 || last > (std::int64_t{1} << 31) - 2)
+        fail(file, what + ": ordinal block " + std::to_string(first) + ".." + std::to_string(last));
+}
+
+// Ordinals up to `last` of class ci stay within the objects the file backs with data.
+void check_backed(const std::string& file, const std::vector<std::int64_t>& backed, int ci, std::int64_t last,
+                  const std::string& what) {
+    if (last > backed[static_cast<std::size_t>(ci)])
+        fail(file, what + ": ordinal " + std::to_string(last) + " beyond the " +
+                       std::to_string(backed[static_cast<std::size_t>(ci)]) + " objects with data");
+}
+
+void grow(MiliClass& c, std::int64_t n) { c.count = std::max(c.count, n); }
+
 }  // namespace
 
 int mili_nodes_per_element(int sc) {
@@ -190,6 +205,19 @@ std::vector<std::string> MiliReader::state_files() const {
 
 void MiliReader::open(const std::string& path) {
     *this = MiliReader();
+    read_header(path);
+    const std::vector<Dir> dirs = read_directory();
+    read_parameters(dirs);
+    read_classes(dirs);
+    read_labels(dirs);
+    read_variables(dirs);
+    read_record_format(dirs);
+    check_state_maps();
+    build_geometry();
+}
+
+// The A file: its 16-byte header (versions, byte order, state-file suffix length).
+void MiliReader::read_header(const std::string& path) {
     a_file_ = path;
     if (path.empty() || path.back() != 'A') {
         if (file_size(path + "A") >= 0) a_file_ = path + "A";
@@ -216,9 +244,14 @@ void MiliReader::open(const std::string& path) {
     if (suffix_length_ < 1 || suffix_length_ > 9)
         fail(F, "state-file suffix length " + std::to_string(suffix_length_) + " at byte 8 (1 to 9)");
     big_endian_ = endian == 1;
-    const View v(a_, F, big_endian_ != host_big_endian());
+}
 
-    // ---- footer, state maps, directory entries, string table (from the end backwards)
+// From the end of the A file backwards: the footer, the state maps (or the T file), the
+// directory entries and the string table that names them.
+std::vector<MiliReader::Dir> MiliReader::read_directory() {
+    const std::string& F = a_file_;
+    const View v(a_, F, big_endian_ != host_big_endian());
+    const std::int64_t size = static_cast<std::int64_t>(a_.size());
     const std::int64_t string_bytes = v.i32(size - 16, "footer: string-table bytes");
     const std::int64_t num_dirs = v.i32(size - 8, "footer: directory entries");
     const std::int64_t footer_smaps = v.i32(size - 4, "footer: state maps");
@@ -254,7 +287,6 @@ void MiliReader::open(const std::string& path) {
     const std::int64_t strings_at = dirs_at - string_bytes;
     const std::vector<std::string> strings = split_strings(a_, strings_at, string_bytes);
 
-    struct Dir { std::int64_t type, m1, m2, nstr, offset, length; std::vector<std::string> s; };
     std::vector<Dir> dirs(static_cast<std::size_t>(num_dirs));
     std::size_t next_string = 0;
     for (std::int64_t k = 0; k < num_dirs; ++k) {
@@ -282,8 +314,13 @@ void MiliReader::open(const std::string& path) {
             fail(F, where.str() + ": no name");
         if (d.type == 7 && d.nstr < 2) fail(F, where.str() + ": class definition without short and long name");
     }
+    return dirs;
+}
 
-    // ---- parameters
+// The parameters (scalars and arrays) by name; the mesh dimension.
+void MiliReader::read_parameters(const std::vector<Dir>& dirs) {
+    const std::string& F = a_file_;
+    const View v(a_, F, big_endian_ != host_big_endian());
     for (const Dir& d : dirs) {
         if (d.type != 5 && d.type != 6 && d.type != 9) continue;
         Param p;
@@ -313,8 +350,30 @@ void MiliReader::open(const std::string& path) {
     }
     const std::int64_t dim = param_int("mesh dimensions", 3);
     if (dim != 2 && dim != 3) fail(F, "mesh dimensions " + std::to_string(dim) + " (2 or 3 are read)");
+}
 
-    // ---- classes: definitions, identifiers, nodes, connectivity
+// The classes: definitions and identifiers, the objects the file backs with data, node
+// coordinates, connectivity; then each class complete.
+void MiliReader::read_classes(const std::vector<Dir>& dirs) {
+    read_class_definitions(dirs);
+    const std::vector<std::int64_t> backed = objects_with_data(dirs);
+    std::vector<std::vector<double>> coords(classes_.size());
+    std::vector<std::vector<unsigned char>> have(classes_.size());
+    read_node_coordinates(dirs, backed, coords, have);
+    std::vector<std::vector<unsigned char>> has_conn(classes_.size());
+    read_connectivity(dirs, backed, has_conn);
+    finish_classes(coords, have, has_conn);
+}
+
+int MiliReader::class_of(const std::string& name, const char* dir) const {
+    const int c = find_class(name);
+    if (c < 0) fail(a_file_, std::string(dir) + " of class \"" + name + "\", which no class definition names");
+    return c;
+}
+
+void MiliReader::read_class_definitions(const std::vector<Dir>& dirs) {
+    const std::string& F = a_file_;
+    const View v(a_, F, big_endian_ != host_big_endian());
     for (const Dir& d : dirs) {
         if (d.type != 7) continue;
         if (find_class(d.s[0]) >= 0) fail(F, "class \"" + d.s[0] + "\" defined twice");
@@ -325,23 +384,19 @@ void MiliReader::open(const std::string& path) {
         c.nodes_per_element = mili_nodes_per_element(c.superclass);
         classes_.push_back(c);
     }
-    auto class_of = [&](const std::string& name, const char* dir) {
-        const int c = find_class(name);
-        if (c < 0) fail(F, std::string(dir) + " of class \"" + name + "\", which no class definition names");
-        return c;
-    };
-    auto check_block = [&](std::int64_t first, std::int64_t last, const std::string& what) {
-        if (first < 1 || last < first - 1 || last > (std::int64_t{1} << 31) - 2)
-            fail(F, what + ": ordinal block " + std::to_string(first) + ".." + std::to_string(last));
-    };
     for (const Dir& d : dirs) {
         if (d.type != 2) continue;
         MiliClass& c = classes_[static_cast<std::size_t>(class_of(d.s[0], "identifiers"))];
         const std::int64_t first = v.i32(d.offset + 4, "class identifiers"), last = v.i32(d.offset + 8, "class identifiers");
         if (d.length < 12) fail_at(F, d.offset, "class identifiers", 12, d.length);
-        check_block(first, last, "identifiers of class " + c.name);
+        check_block(F, first, last, "identifiers of class " + c.name);
         c.count = std::max(c.count, last);
     }
+}
+
+std::vector<std::int64_t> MiliReader::objects_with_data(const std::vector<Dir>& dirs) const {
+    const std::string& F = a_file_;
+    const View v(a_, F, big_endian_ != host_big_endian());
     // Objects the file backs with data (node coordinates, connectivity): ordinals must stay
     // within them, so that no allocation is larger than the file justifies.
     std::vector<std::int64_t> backed(classes_.size(), 0);
@@ -349,7 +404,7 @@ void MiliReader::open(const std::string& path) {
         if (d.type == 0) {
             const int ci = class_of(d.s[0], "nodes");
             const std::int64_t first = v.i32(d.offset, "node block"), last = v.i32(d.offset + 4, "node block");
-            check_block(first, last, "nodes of class " + d.s[0]);
+            check_block(F, first, last, "nodes of class " + d.s[0]);
             backed[static_cast<std::size_t>(ci)] = add(backed[static_cast<std::size_t>(ci)], last - first + 1, F, "nodes");
         } else if (d.type == 1) {
             const int ci = class_of(d.s[0], "connectivity");
@@ -368,23 +423,21 @@ void MiliReader::open(const std::string& path) {
         if (backed[ci] == 0 && c.count > (1 << 20))
             fail(F, "class " + c.name + ": " + std::to_string(c.count) + " objects without data (implausible)");
     }
-    auto check_backed = [&](int ci, std::int64_t last, const std::string& what) {
-        if (last > backed[static_cast<std::size_t>(ci)])
-            fail(F, what + ": ordinal " + std::to_string(last) + " beyond the " +
-                        std::to_string(backed[static_cast<std::size_t>(ci)]) + " objects with data");
-    };
-    std::vector<std::vector<double>> coords(classes_.size());
-    std::vector<std::vector<unsigned char>> have(classes_.size());
-    auto grow = [&](int ci, std::int64_t n) {
-        MiliClass& c = classes_[static_cast<std::size_t>(ci)];
-        c.count = std::max(c.count, n);
-    };
+    return backed;
+}
+
+void MiliReader::read_node_coordinates(const std::vector<Dir>& dirs, const std::vector<std::int64_t>& backed,
+                                       std::vector<std::vector<double>>& coords,
+                                       std::vector<std::vector<unsigned char>>& have) {
+    const std::string& F = a_file_;
+    const View v(a_, F, big_endian_ != host_big_endian());
+    const std::int64_t dim = param_int("mesh dimensions", 3);
     for (const Dir& d : dirs) {
         if (d.type != 0) continue;
         const int ci = class_of(d.s[0], "nodes");
         const std::int64_t first = v.i32(d.offset, "node block"), last = v.i32(d.offset + 4, "node block");
-        check_block(first, last, "nodes of class " + d.s[0]);
-        check_backed(ci, last, "nodes of class " + d.s[0]);
+        check_block(F, first, last, "nodes of class " + d.s[0]);
+        check_backed(F, backed, ci, last, "nodes of class " + d.s[0]);
         const std::int64_t n = last - first + 1;
         const std::int64_t values = mul(n, dim, F, "node coordinates");
         const std::int64_t room = d.length - 8;
@@ -392,7 +445,7 @@ void MiliReader::open(const std::string& path) {
         if (mul(values, fb, F, "node coordinates") > room)
             fail_at(F, d.offset + 8, "coordinates of nodes " + std::to_string(first) + ".." + std::to_string(last),
                     values * fb, d.offset + d.length);
-        grow(ci, last);
+        grow(classes_[static_cast<std::size_t>(ci)], last);
         auto& x = coords[static_cast<std::size_t>(ci)];
         auto& h = have[static_cast<std::size_t>(ci)];
         x.resize(static_cast<std::size_t>(3 * last), 0.0);
@@ -406,7 +459,12 @@ void MiliReader::open(const std::string& path) {
             }
         }
     }
-    std::vector<std::vector<unsigned char>> has_conn(classes_.size());
+}
+
+void MiliReader::read_connectivity(const std::vector<Dir>& dirs, const std::vector<std::int64_t>& backed,
+                                   std::vector<std::vector<unsigned char>>& has_conn) {
+    const std::string& F = a_file_;
+    const View v(a_, F, big_endian_ != host_big_endian());
     for (const Dir& d : dirs) {
         if (d.type != 1) continue;
         const int ci = class_of(d.s[0], "connectivity");
@@ -425,8 +483,8 @@ void MiliReader::open(const std::string& path) {
         for (std::int64_t b = 0; b < nb; ++b) {
             const std::int64_t first = v.i32(d.offset + 8 + 8 * b, "connectivity block"),
                                last = v.i32(d.offset + 12 + 8 * b, "connectivity block");
-            check_block(first, last, "connectivity of class " + c.name);
-            check_backed(ci, last, "connectivity of class " + c.name);
+            check_block(F, first, last, "connectivity of class " + c.name);
+            check_backed(F, backed, ci, last, "connectivity of class " + c.name);
             blocks.emplace_back(first, last);
             qty = add(qty, last - first + 1, F, "connectivity");
         }
@@ -438,7 +496,7 @@ void MiliReader::open(const std::string& path) {
             fail_at(F, at0, "connectivity of class " + c.name, qty * words * 4, d.offset + d.length);
         std::int64_t e = 0;
         for (const auto& [first, last] : blocks) {
-            grow(ci, last);
+            grow(c, last);
             c.conn.resize(static_cast<std::size_t>(c.count * nn), 0);
             c.material.resize(static_cast<std::size_t>(c.count), 0);
             c.part.resize(static_cast<std::size_t>(c.count), 0);
@@ -456,6 +514,13 @@ void MiliReader::open(const std::string& path) {
             }
         }
     }
+}
+
+// Every element with connectivity, every node with coordinates; the node, material and mesh
+// classes.
+void MiliReader::finish_classes(std::vector<std::vector<double>>& coords, std::vector<std::vector<unsigned char>>& have,
+                                std::vector<std::vector<unsigned char>>& has_conn) {
+    const std::string& F = a_file_;
     for (std::size_t ci = 0; ci < classes_.size(); ++ci) {
         MiliClass& c = classes_[ci];
         if (c.nodes_per_element > 0 && !c.conn.empty()) {
@@ -483,8 +548,12 @@ void MiliReader::open(const std::string& path) {
         x0_ = std::move(coords[static_cast<std::size_t>(node_cls_)]);
         x0_.resize(static_cast<std::size_t>(3 * c.count), 0.0);
     }
+}
 
-    // ---- labels (TI parameters), appended in directory order
+// The labels (TI parameters), appended in directory order; ordinals where a class has none.
+void MiliReader::read_labels(const std::vector<Dir>& dirs) {
+    const std::string& F = a_file_;
+    const View v(a_, F, big_endian_ != host_big_endian());
     for (const Dir& d : dirs) {
         if (d.type != 9) continue;
         const std::string& name = d.s[0];
@@ -513,8 +582,34 @@ void MiliReader::open(const std::string& path) {
                         " objects");
         }
     }
+}
 
-    // ---- state variables
+// The integers and names of a variable dictionary or a record format, read in turn.
+struct MiliReader::Tokens {
+    const View& v;
+    const std::string& file;
+    const char* what;           // "variable dictionary" or "record format"
+    std::int64_t entry;         // the directory entry's byte offset (for messages)
+    std::int64_t first;         // the byte offset of the first integer
+    std::int64_t ni;            // integers
+    std::vector<std::string> ss;
+    std::int64_t ii = 0;
+    std::size_t si = 0;
+
+    std::int64_t next_int() {
+        if (ii >= ni) fail(file, std::string(what) + " at byte " + std::to_string(entry) + ": runs out of integers");
+        return static_cast<std::int64_t>(v.i32(first + 4 * ii++, what));
+    }
+    const std::string& next_str() {
+        if (si >= ss.size()) fail(file, std::string(what) + " at byte " + std::to_string(entry) + ": runs out of names");
+        return ss[si++];
+    }
+};
+
+// The state variables (directory type 3), then their components resolved by name.
+void MiliReader::read_variables(const std::vector<Dir>& dirs) {
+    const std::string& F = a_file_;
+    const View v(a_, F, big_endian_ != host_big_endian());
     std::vector<std::vector<std::string>> comp_names;
     for (const Dir& d : dirs) {
         if (d.type != 3) continue;
@@ -525,49 +620,8 @@ void MiliReader::open(const std::string& path) {
             fail_at(F, d.offset, "variable dictionary of " + std::to_string(iw) + " words and " + std::to_string(sb) +
                                      " string bytes", -1, d.offset + d.length);
         const std::int64_t ni = iw - 2;
-        const std::vector<std::string> ss = split_strings(a_, d.offset + 8 + 4 * ni, sb);
-        std::int64_t ii = 0;
-        std::size_t si = 0;
-        auto next_int = [&]() {
-            if (ii >= ni) fail(F, "variable dictionary at byte " + std::to_string(d.offset) + ": runs out of integers");
-            return static_cast<std::int64_t>(v.i32(d.offset + 8 + 4 * ii++, "variable dictionary"));
-        };
-        auto next_str = [&]() -> const std::string& {
-            if (si >= ss.size()) fail(F, "variable dictionary at byte " + std::to_string(d.offset) + ": runs out of names");
-            return ss[si++];
-        };
-        std::function<void(int)> parse = [&](int depth) {
-            if (depth > kMaxNesting) fail(F, "variable dictionary: variables nested deeper than " + std::to_string(kMaxNesting));
-            MiliVariable var;
-            var.aggregate = static_cast<int>(next_int());
-            var.type = static_cast<int>(next_int());
-            var.name = next_str();
-            var.title = next_str();
-            if (var.aggregate < 0 || var.aggregate > 3) fail(F, "variable " + var.name + ": aggregate type " + std::to_string(var.aggregate));
-            if (type_bytes(var.type) == 0) fail(F, "variable " + var.name + ": data type " + std::to_string(var.type));
-            if (var.aggregate == 2 || var.aggregate == 3) {
-                const std::int64_t order = next_int();
-                if (order < 1 || order > 8) fail(F, "variable " + var.name + ": array rank " + std::to_string(order));
-                std::int64_t n = 1;
-                for (std::int64_t k = 0; k < order; ++k) {
-                    const std::int64_t dm = next_int();
-                    if (dm < 0 || dm > 100000) fail(F, "variable " + var.name + ": array dimension " + std::to_string(dm));
-                    n = mul(n, dm, F, "an array variable");
-                    var.dims.push_back(static_cast<int>(dm));
-                }
-            }
-            std::vector<std::string> comps;
-            if (var.aggregate == 1 || var.aggregate == 3) {
-                const std::int64_t ls = next_int();
-                if (ls < 0 || ls > 100000) fail(F, "variable " + var.name + ": " + std::to_string(ls) + " components");
-                for (std::int64_t k = 0; k < ls; ++k) comps.push_back(next_str());
-                for (const std::string& cn : comps)
-                    if (find_variable(cn) < 0) parse(depth + 1);  // an undefined component follows inline
-            }
-            vars_.push_back(var);
-            comp_names.push_back(comps);
-        };
-        while (ii < ni) parse(0);
+        Tokens t{v, F, "variable dictionary", d.offset, d.offset + 8, ni, split_strings(a_, d.offset + 8 + 4 * ni, sb)};
+        while (t.ii < ni) read_variable(t, 0, comp_names);
     }
     for (std::size_t k = 0; k < vars_.size(); ++k)
         for (const std::string& cn : comp_names[k]) {
@@ -575,8 +629,47 @@ void MiliReader::open(const std::string& path) {
             if (c < 0) fail(F, "variable " + vars_[k].name + ": component \"" + cn + "\" is not defined");
             vars_[k].components.push_back(c);
         }
+}
 
-    // ---- subrecords (one state-record format)
+// One variable of a dictionary (and, first, the undefined components that follow it inline).
+void MiliReader::read_variable(Tokens& t, int depth, std::vector<std::vector<std::string>>& comp_names) {
+    const std::string& F = a_file_;
+    if (depth > kMaxNesting) fail(F, "variable dictionary: variables nested deeper than " + std::to_string(kMaxNesting));
+    MiliVariable var;
+    var.aggregate = static_cast<int>(t.next_int());
+    var.type = static_cast<int>(t.next_int());
+    var.name = t.next_str();
+    var.title = t.next_str();
+    if (var.aggregate < 0 || var.aggregate > 3) fail(F, "variable " + var.name + ": aggregate type " + std::to_string(var.aggregate));
+    if (type_bytes(var.type) == 0) fail(F, "variable " + var.name + ": data type " + std::to_string(var.type));
+    if (var.aggregate == 2 || var.aggregate == 3) {
+        const std::int64_t order = t.next_int();
+        if (order < 1 || order > 8) fail(F, "variable " + var.name + ": array rank " + std::to_string(order));
+        std::int64_t n = 1;
+        for (std::int64_t k = 0; k < order; ++k) {
+            const std::int64_t dm = t.next_int();
+            if (dm < 0 || dm > 100000) fail(F, "variable " + var.name + ": array dimension " + std::to_string(dm));
+            n = mul(n, dm, F, "an array variable");
+            var.dims.push_back(static_cast<int>(dm));
+        }
+    }
+    std::vector<std::string> comps;
+    if (var.aggregate == 1 || var.aggregate == 3) {
+        const std::int64_t ls = t.next_int();
+        if (ls < 0 || ls > 100000) fail(F, "variable " + var.name + ": " + std::to_string(ls) + " components");
+        for (std::int64_t k = 0; k < ls; ++k) comps.push_back(t.next_str());
+        for (const std::string& cn : comps)
+            if (find_variable(cn) < 0) read_variable(t, depth + 1, comp_names);  // an undefined component follows inline
+    }
+    vars_.push_back(var);
+    comp_names.push_back(comps);
+}
+
+// The state-record format (directory type 4; one is read): its subrecords, which must add up to
+// the size it declares.
+void MiliReader::read_record_format(const std::vector<Dir>& dirs) {
+    const std::string& F = a_file_;
+    const View v(a_, F, big_endian_ != host_big_endian());
     int srec_dirs = 0;
     for (const Dir& d : dirs) {
         if (d.type != 4) continue;
@@ -587,114 +680,10 @@ void MiliReader::open(const std::string& path) {
         if (d.length < 16 || ni < 0 || sb < 0 || mul(ni, 4, F, "the record format") > d.length - 16 ||
             sb > d.length - 16 - 4 * ni || count < 0 || count > ni)
             fail_at(F, d.offset, "record format of " + std::to_string(count) + " subrecords", -1, d.offset + d.length);
-        const std::vector<std::string> ss = split_strings(a_, d.offset + 16 + 4 * ni, sb);
-        std::int64_t ii = 0;
-        std::size_t si = 0;
-        auto next_int = [&]() {
-            if (ii >= ni) fail(F, "record format at byte " + std::to_string(d.offset) + ": runs out of integers");
-            return static_cast<std::int64_t>(v.i32(d.offset + 16 + 4 * ii++, "record format"));
-        };
-        auto next_str = [&]() -> const std::string& {
-            if (si >= ss.size()) fail(F, "record format at byte " + std::to_string(d.offset) + ": runs out of names");
-            return ss[si++];
-        };
+        Tokens t{v, F, "record format", d.offset, d.offset + 16, ni, split_strings(a_, d.offset + 16 + 4 * ni, sb)};
         std::int64_t offset = 0;
-        // scalars per object of a variable (0 for empty vectors and arrays), at most 100000
-        std::function<std::int64_t(int, int)> atoms_of = [&](int var, int depth) -> std::int64_t {
-            if (depth > kMaxNesting) fail(F, "variable dictionary: variables nested deeper than " + std::to_string(kMaxNesting));
-            const MiliVariable& mv = vars_[static_cast<std::size_t>(var)];
-            std::int64_t n = 1;
-            for (int dm : mv.dims) n = mul(n, dm, F, "an array variable");
-            if (mv.aggregate == 1 || mv.aggregate == 3) {
-                std::int64_t sum = 0;
-                for (int comp : mv.components) sum = add(sum, atoms_of(comp, depth + 1), F, "a vector variable");
-                n = mul(mv.aggregate == 3 ? n : 1, sum, F, "a vector variable");
-            } else if (mv.aggregate == 0) {
-                n = 1;
-            }
-            if (n > 100000) fail(F, "variable " + mv.name + ": more than 100000 values per object");
-            return n;
-        };
         for (std::int64_t k = 0; k < count; ++k) {
-            MiliSubrecord s;
-            s.organization = static_cast<int>(next_int());
-            const std::int64_t nsv = next_int(), nb = next_int();
-            if (nsv < 0 || nsv > ni || nb < 0 || nb > ni)
-                fail(F, "record format: subrecord " + std::to_string(k) + ": " + std::to_string(nsv) + " variables, " +
-                            std::to_string(nb) + " blocks");
-            std::vector<std::int64_t> raw;
-            for (std::int64_t b = 0; b < 2 * nb; ++b) raw.push_back(next_int());
-            s.name = next_str();
-            s.class_name = next_str();
-            for (std::int64_t j = 0; j < nsv; ++j) {
-                const std::string& vn = next_str();
-                const int vi = find_variable(vn);
-                if (vi < 0) fail(F, "subrecord " + s.name + ": variable \"" + vn + "\" is not defined");
-                s.variables.push_back(vi);
-            }
-            if (s.organization != 0 && s.organization != 1)
-                fail(F, "subrecord " + s.name + ": organization " + std::to_string(s.organization));
-            s.cls = class_of(s.class_name, ("subrecord " + s.name).c_str());
-            const MiliClass& c = classes_[static_cast<std::size_t>(s.cls)];
-            if (c.superclass == kMiliMesh) {
-                s.objects = 1;
-                s.blocks.emplace_back(0, 1);
-            } else {
-                for (std::int64_t b = 0; b < nb; ++b) {
-                    check_block(raw[2 * b], raw[2 * b + 1], "subrecord " + s.name);
-                    if (raw[2 * b + 1] > c.count)
-                        fail(F, "subrecord " + s.name + ": ordinals up to " + std::to_string(raw[2 * b + 1]) + ", class " +
-                                    c.name + " has " + std::to_string(c.count));
-                    s.blocks.emplace_back(raw[2 * b] - 1, raw[2 * b + 1] - raw[2 * b] + 1);
-                    s.objects = add(s.objects, raw[2 * b + 1] - raw[2 * b] + 1, F, "a subrecord");
-                }
-            }
-            // the slots of one object: each top variable flattened (vectors into their
-            // components, arrays point by point)
-            std::int64_t object_bytes = 0;
-            for (std::size_t t = 0; t < s.variables.size(); ++t) {
-                std::int64_t top_bytes = 0;
-                std::function<void(int, int, std::vector<int>&, int)> flat = [&](int var, int point, std::vector<int>& path,
-                                                                                 int depth) {
-                    if (depth > kMaxNesting) fail(F, "subrecord " + s.name + ": variables nested too deeply");
-                    const MiliVariable& mv = vars_[static_cast<std::size_t>(var)];
-                    if (atoms_of(var, 0) == 0) return;
-                    path.push_back(var);
-                    std::int64_t n = 1;
-                    for (int dm : mv.dims) n = mul(n, dm, F, "a subrecord");
-                    for (std::int64_t p = 0; p < (mv.aggregate >= 2 ? n : 1); ++p) {
-                        const int pt = mv.aggregate >= 2 ? static_cast<int>(p) : point;
-                        if (mv.aggregate == 1 || mv.aggregate == 3) {
-                            for (int comp : mv.components) flat(comp, pt, path, depth + 1);
-                        } else {
-                            MiliAtom a;
-                            a.leaf = var;
-                            a.top = s.variables[t];
-                            a.point = pt;
-                            a.top_pos = static_cast<int>(t);
-                            a.path = path;
-                            a.type = mv.type;
-                            a.offset = s.organization == 1 ? object_bytes + top_bytes : top_bytes;
-                            top_bytes = add(top_bytes, type_bytes(mv.type), F, "a subrecord");
-                            s.atoms.push_back(a);
-                            if (s.atoms.size() > 100000) fail(F, "subrecord " + s.name + ": more than 100000 values per object");
-                        }
-                    }
-                    path.pop_back();
-                };
-                std::vector<int> path;
-                flat(s.variables[t], -1, path, 0);
-                s.top_bytes.push_back(top_bytes);
-                if (s.organization == 0) {
-                    s.top_block.push_back(s.bytes);
-                    s.bytes = add(s.bytes, mul(top_bytes, s.objects, F, "a subrecord"), F, "a subrecord");
-                } else {
-                    s.top_block.push_back(object_bytes);
-                }
-                object_bytes = add(object_bytes, top_bytes, F, "a subrecord");
-            }
-            s.object_bytes = object_bytes;
-            if (s.organization == 1) s.bytes = mul(object_bytes, s.objects, F, "a subrecord");
+            MiliSubrecord s = read_subrecord(t, k);
             s.offset = offset;
             offset = add(offset, s.bytes, F, "the state record");
             srecs_.push_back(std::move(s));
@@ -704,8 +693,117 @@ void MiliReader::open(const std::string& path) {
                         std::to_string(declared));
         record_bytes_ = offset;
     }
+}
 
-    // ---- the states lie inside their files
+// Subrecord k of the record format: its variables, class and object blocks, and the slots of
+// one object (each top variable flattened: vectors into their components, arrays point by point).
+MiliSubrecord MiliReader::read_subrecord(Tokens& t, std::int64_t k) const {
+    const std::string& F = a_file_;
+    MiliSubrecord s;
+    s.organization = static_cast<int>(t.next_int());
+    const std::int64_t nsv = t.next_int(), nb = t.next_int();
+    if (nsv < 0 || nsv > t.ni || nb < 0 || nb > t.ni)
+        fail(F, "record format: subrecord " + std::to_string(k) + ": " + std::to_string(nsv) + " variables, " +
+                    std::to_string(nb) + " blocks");
+    std::vector<std::int64_t> raw;
+    for (std::int64_t b = 0; b < 2 * nb; ++b) raw.push_back(t.next_int());
+    s.name = t.next_str();
+    s.class_name = t.next_str();
+    for (std::int64_t j = 0; j < nsv; ++j) {
+        const std::string& vn = t.next_str();
+        const int vi = find_variable(vn);
+        if (vi < 0) fail(F, "subrecord " + s.name + ": variable \"" + vn + "\" is not defined");
+        s.variables.push_back(vi);
+    }
+    if (s.organization != 0 && s.organization != 1)
+        fail(F, "subrecord " + s.name + ": organization " + std::to_string(s.organization));
+    s.cls = class_of(s.class_name, ("subrecord " + s.name).c_str());
+    const MiliClass& c = classes_[static_cast<std::size_t>(s.cls)];
+    if (c.superclass == kMiliMesh) {
+        s.objects = 1;
+        s.blocks.emplace_back(0, 1);
+    } else {
+        for (std::int64_t b = 0; b < nb; ++b) {
+            check_block(F, raw[2 * b], raw[2 * b + 1], "subrecord " + s.name);
+            if (raw[2 * b + 1] > c.count)
+                fail(F, "subrecord " + s.name + ": ordinals up to " + std::to_string(raw[2 * b + 1]) + ", class " +
+                            c.name + " has " + std::to_string(c.count));
+            s.blocks.emplace_back(raw[2 * b] - 1, raw[2 * b + 1] - raw[2 * b] + 1);
+            s.objects = add(s.objects, raw[2 * b + 1] - raw[2 * b] + 1, F, "a subrecord");
+        }
+    }
+    std::int64_t object_bytes = 0;
+    for (std::size_t top = 0; top < s.variables.size(); ++top) {
+        std::int64_t top_bytes = 0;
+        std::vector<int> path;
+        flatten(s, top, s.variables[top], -1, path, 0, object_bytes, top_bytes);
+        s.top_bytes.push_back(top_bytes);
+        if (s.organization == 0) {
+            s.top_block.push_back(s.bytes);
+            s.bytes = add(s.bytes, mul(top_bytes, s.objects, F, "a subrecord"), F, "a subrecord");
+        } else {
+            s.top_block.push_back(object_bytes);
+        }
+        object_bytes = add(object_bytes, top_bytes, F, "a subrecord");
+    }
+    s.object_bytes = object_bytes;
+    if (s.organization == 1) s.bytes = mul(object_bytes, s.objects, F, "a subrecord");
+    return s;
+}
+
+// Scalars per object of a variable (0 for empty vectors and arrays), at most 100000.
+std::int64_t MiliReader::atoms_of(int var, int depth) const {
+    const std::string& F = a_file_;
+    if (depth > kMaxNesting) fail(F, "variable dictionary: variables nested deeper than " + std::to_string(kMaxNesting));
+    const MiliVariable& mv = vars_[static_cast<std::size_t>(var)];
+    std::int64_t n = 1;
+    for (int dm : mv.dims) n = mul(n, dm, F, "an array variable");
+    if (mv.aggregate == 1 || mv.aggregate == 3) {
+        std::int64_t sum = 0;
+        for (int comp : mv.components) sum = add(sum, atoms_of(comp, depth + 1), F, "a vector variable");
+        n = mul(mv.aggregate == 3 ? n : 1, sum, F, "a vector variable");
+    } else if (mv.aggregate == 0) {
+        n = 1;
+    }
+    if (n > 100000) fail(F, "variable " + mv.name + ": more than 100000 values per object");
+    return n;
+}
+
+// The slots of variable `var` (inside top variable `top` of subrecord s, at array point `point`,
+// -1 outside arrays) appended to s.atoms; `top_bytes` counts the top variable's bytes so far.
+void MiliReader::flatten(MiliSubrecord& s, std::size_t top, int var, int point, std::vector<int>& path, int depth,
+                         std::int64_t object_bytes, std::int64_t& top_bytes) const {
+    const std::string& F = a_file_;
+    if (depth > kMaxNesting) fail(F, "subrecord " + s.name + ": variables nested too deeply");
+    const MiliVariable& mv = vars_[static_cast<std::size_t>(var)];
+    if (atoms_of(var, 0) == 0) return;
+    path.push_back(var);
+    std::int64_t n = 1;
+    for (int dm : mv.dims) n = mul(n, dm, F, "a subrecord");
+    for (std::int64_t p = 0; p < (mv.aggregate >= 2 ? n : 1); ++p) {
+        const int pt = mv.aggregate >= 2 ? static_cast<int>(p) : point;
+        if (mv.aggregate == 1 || mv.aggregate == 3) {
+            for (int comp : mv.components) flatten(s, top, comp, pt, path, depth + 1, object_bytes, top_bytes);
+        } else {
+            MiliAtom a;
+            a.leaf = var;
+            a.top = s.variables[top];
+            a.point = pt;
+            a.top_pos = static_cast<int>(top);
+            a.path = path;
+            a.type = mv.type;
+            a.offset = s.organization == 1 ? object_bytes + top_bytes : top_bytes;
+            top_bytes = add(top_bytes, type_bytes(mv.type), F, "a subrecord");
+            s.atoms.push_back(a);
+            if (s.atoms.size() > 100000) fail(F, "subrecord " + s.name + ": more than 100000 values per object");
+        }
+    }
+    path.pop_back();
+}
+
+// Every state lies inside its state file.
+void MiliReader::check_state_maps() const {
+    const std::string& F = a_file_;
     std::map<std::int32_t, std::int64_t> sizes;
     const std::vector<std::string> names = state_files();
     for (std::size_t k = 0; k < smaps_.size(); ++k) {
@@ -723,7 +821,6 @@ void MiliReader::open(const std::string& path) {
             fail_at(sf, m.offset, "state " + std::to_string(k + 1) + " (time, record id, " + std::to_string(record_bytes_) +
                                       " bytes of subrecords)", record_bytes_ + 8, it->second);
     }
-    build_geometry();
 }
 
 double MiliReader::time(int i) const {

@@ -162,6 +162,32 @@ private:
     double load(const std::vector<char>& rec, std::int64_t at, int type) const;
     void build_geometry();
 
+    // open()'s steps, in order (mili_database.cpp)
+    struct Dir { std::int64_t type, m1, m2, nstr, offset, length; std::vector<std::string> s; };  // a directory entry
+    struct Tokens;  // the integers and names of a variable dictionary or record format
+    void read_header(const std::string& path);
+    std::vector<Dir> read_directory();
+    void read_parameters(const std::vector<Dir>& dirs);
+    void read_classes(const std::vector<Dir>& dirs);
+    void read_class_definitions(const std::vector<Dir>& dirs);
+    std::vector<std::int64_t> objects_with_data(const std::vector<Dir>& dirs) const;
+    void read_node_coordinates(const std::vector<Dir>& dirs, const std::vector<std::int64_t>& backed,
+                               std::vector<std::vector<double>>& coords, std::vector<std::vector<unsigned char>>& have);
+    void read_connectivity(const std::vector<Dir>& dirs, const std::vector<std::int64_t>& backed,
+                           std::vector<std::vector<unsigned char>>& has_conn);
+    void finish_classes(std::vector<std::vector<double>>& coords, std::vector<std::vector<unsigned char>>& have,
+                        std::vector<std::vector<unsigned char>>& has_conn);
+    int class_of(const std::string& name, const char* dir) const;  // the class a directory entry names
+    void read_labels(const std::vector<Dir>& dirs);
+    void read_variables(const std::vector<Dir>& dirs);
+    void read_variable(Tokens& t, int depth, std::vector<std::vector<std::string>>& comp_names);
+    void read_record_format(const std::vector<Dir>& dirs);
+    MiliSubrecord read_subrecord(Tokens& t, std::int64_t k) const;
+    std::int64_t atoms_of(int var, int depth) const;
+    void flatten(MiliSubrecord& s, std::size_t top, int var, int point, std::vector<int>& path, int depth,
+                 std::int64_t object_bytes, std::int64_t& top_bytes) const;
+    void check_state_maps() const;
+
     std::string a_file_, base_;
     int file_version_ = 0, dir_version_ = 0, suffix_length_ = 2;
     bool big_endian_ = false;
