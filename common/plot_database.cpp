@@ -139,6 +139,7 @@ public:
         pos_ += nwords * ws_;
     }
     std::int64_t abs_offset() const { return base_ + pos_; }
+    int word_size() const { return ws_; }
     const std::string& file() const { return file_; }
 
 private:
@@ -457,9 +458,173 @@ void PlotWriter::resume(const std::string& root_path, const PlotGeometry& g, int
     open_impl(root_path, g, word_size, member_size_limit_words, keep_states);
 }
 
+namespace {
+
+// The parts that elements of one family use (NUMMAT4 for shells, NUMMAT2 for beams), each
+// element's material checked to be in 1..nmat.
+std::int64_t parts_used(const std::vector<int>& material, int nmat, const char* what) {
+    std::vector<char> used(static_cast<std::size_t>(nmat) + 1, 0);
+    for (std::size_t e = 0; e < material.size(); ++e) {
+        if (material[e] < 1 || material[e] > nmat)
+            throw std::invalid_argument("PlotWriter: " + std::string(what) + " " + std::to_string(e) +
+                                        " material not in 1.." + std::to_string(nmat));
+        used[static_cast<std::size_t>(material[e])] = 1;
+    }
+    std::int64_t n = 0;
+    for (char c : used) n += c;
+    return n;
+}
+
+// Node indices of `nodes_per` node elements within 0..numnp-1.
+void check_element_nodes(const std::vector<int>& nodes, std::size_t nodes_per, std::size_t numnp, const char* what) {
+    for (std::size_t k = 0; k < nodes.size(); ++k)
+        if (nodes[k] < 0 || static_cast<std::size_t>(nodes[k]) >= numnp)
+            throw std::invalid_argument("PlotWriter: " + std::string(what) + " " + std::to_string(k / nodes_per) +
+                                        " node index out of range");
+}
+
+// The connectivity of the root file: solids (IX8), beams (IX2), shells (IX4), each with its
+// material.
+void put_connectivity(std::vector<char>& b, int ws, const PlotGeometry& g) {
+    const std::size_t nel8 = g.hex_material.size(), nel2 = g.beam_material.size(), nel4 = g.shell_material.size();
+    for (std::size_t e = 0; e < nel8; ++e) {
+        for (int k = 0; k < 8; ++k) put_int(b, ws, g.hex_nodes[8 * e + k] + 1);
+        put_int(b, ws, g.hex_material[e]);
+    }
+    for (std::size_t e = 0; e < nel2; ++e) {  // IX2 (after solids, thick shells: none): n1 n2 n3, two unused, material
+        put_int(b, ws, g.beam_nodes[2 * e] + 1);
+        put_int(b, ws, g.beam_nodes[2 * e + 1] + 1);
+        put_int(b, ws, g.beam_orientation.empty() || g.beam_orientation[e] < 0 ? 0 : g.beam_orientation[e] + 1);
+        put_int(b, ws, 0);
+        put_int(b, ws, 0);
+        put_int(b, ws, g.beam_material[e]);
+    }
+    for (std::size_t e = 0; e < nel4; ++e) {  // IX4 (after solids, thick shells, beams)
+        for (int k = 0; k < 4; ++k) put_int(b, ws, g.shell_nodes[4 * e + k] + 1);
+        put_int(b, ws, g.shell_material[e]);
+    }
+}
+
+// The NARBS section, NSORT < 0 variant (16-word header + part id arrays).
+void put_user_ids(std::vector<char>& b, int ws, const PlotGeometry& g, const std::vector<int>& pids) {
+    const std::int64_t np = static_cast<std::int64_t>(g.x0.size() / 3), n8 = static_cast<std::int64_t>(g.hex_material.size());
+    const std::int64_t n2 = static_cast<std::int64_t>(g.beam_material.size()), n4 = static_cast<std::int64_t>(g.shell_material.size());
+    const std::size_t numnp = g.x0.size() / 3, nel8 = g.hex_material.size(), nel2 = g.beam_material.size(), nel4 = g.shell_material.size();
+    const int nmat = g.num_materials;
+    const std::int64_t nsort = 100;
+    const std::int64_t nsrh = nsort + np, nsrb = nsrh + n8, nsrs = nsrb + n2, nsrt = nsrs + n4;
+    const std::int64_t nsrma = nsrt, nsrmu = nsrma + nmat, nsrmp = nsrmu + nmat;
+    const std::int64_t hdr[16] = {-nsort, nsrh, nsrb, nsrs, nsrt, np, n8, n2, n4, 0,
+                                  nsrma, nsrmu, nsrmp, nmat, 0, nmat};
+    for (std::int64_t v : hdr) put_int(b, ws, v);
+    for (std::size_t n = 0; n < numnp; ++n)
+        put_int(b, ws, g.node_user_ids.empty() ? static_cast<std::int64_t>(n + 1) : g.node_user_ids[n]);
+    for (std::size_t e = 0; e < nel8; ++e)
+        put_int(b, ws, g.hex_user_ids.empty() ? static_cast<std::int64_t>(e + 1) : g.hex_user_ids[e]);
+    for (std::size_t e = 0; e < nel2; ++e)  // beams, then shells
+        put_int(b, ws, g.beam_user_ids.empty() ? static_cast<std::int64_t>(e + 1) : g.beam_user_ids[e]);
+    for (std::size_t e = 0; e < nel4; ++e)
+        put_int(b, ws, g.shell_user_ids.empty() ? static_cast<std::int64_t>(e + 1) : g.shell_user_ids[e]);
+    for (int p : pids) put_int(b, ws, p);   // NORDER (ascending)
+    for (int p : pids) put_int(b, ws, p);   // NSRMU (input order)
+    for (int p = 1; p <= nmat; ++p) put_int(b, ws, p);  // NSRMP (cross reference)
+}
+
+// The end marker, the title records (90001 part titles first: VTK expects them right after the
+// marker; then 90000, the model title) and the closing marker.
+void put_titles(std::vector<char>& b, int ws, const PlotGeometry& g, const std::vector<int>& pids) {
+    const int nmat = g.num_materials;
+    put_real(b, ws, kEndMarker);
+    put_int(b, ws, 90001);
+    put_int(b, ws, nmat);
+    for (int p = 0; p < nmat; ++p) {
+        put_int(b, ws, pids[p]);
+        put_text(b, g.part_titles.empty() ? "part " + std::to_string(pids[p]) : g.part_titles[p],
+                 kTitleRecordBytes);
+    }
+    put_int(b, ws, 90000);
+    put_text(b, g.title, kTitleRecordBytes);
+    put_real(b, ws, kEndMarker);
+}
+
+// On resume: the family must be this model's (the root file the writer would write now, but
+// for the run-time word, word 10).
+void check_root_to_resume(const std::string& root_path, const std::vector<char>& b, int ws) {
+    const bool exists = file_size_or(root_path, -1) >= 0;  // (missing: resume_members says so)
+    const std::vector<char> old = exists ? read_whole_file(root_path) : std::vector<char>{};
+    const std::size_t rt0 = 10u * static_cast<std::size_t>(ws), rt1 = rt0 + static_cast<std::size_t>(ws);
+    const bool same = old.size() == b.size() && std::equal(old.begin(), old.begin() + static_cast<std::ptrdiff_t>(rt0), b.begin()) &&
+                      std::equal(old.begin() + static_cast<std::ptrdiff_t>(rt1), old.end(), b.begin() + static_cast<std::ptrdiff_t>(rt1));
+    if (exists && !same)
+        throw std::runtime_error("plot database " + root_path + ": cannot resume: the root file does not belong to "
+                                 "this model (control words, geometry, ids or titles differ)");
+}
+
+// Removes stale family members of an earlier run (root + digits, and their .tmp), so that no
+// reader continues into them.
+void remove_stale_members(const std::string& root_path, const std::string& dir) {
+    const std::string base = std::filesystem::path(root_path).filename().string();
+    std::error_code ec;
+    std::vector<std::filesystem::path> stale;
+    for (std::filesystem::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
+        const std::string name = it->path().filename().string();
+        if (name.size() <= base.size() || name.compare(0, base.size(), base) != 0) continue;
+        std::string rest = name.substr(base.size());
+        if (rest.size() > 4 && rest.compare(rest.size() - 4, 4, ".tmp") == 0) rest.resize(rest.size() - 4);
+        if (all_digits(rest)) stale.push_back(it->path());
+    }
+    for (const auto& p : stale) {
+        std::error_code rec;
+        std::filesystem::remove(p, rec);
+        if (rec) throw std::runtime_error("plot database: cannot remove stale family member " + p.string() +
+                                          ": " + rec.message());
+    }
+}
+
+// Writes the root file, synced.
+void write_root_file(const std::string& root_path, const std::string& dir, const std::vector<char>& b) {
+    const int fd = ::open(root_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+    if (fd < 0) io_fail("open of", root_path, errno);
+    try {
+        pwrite_all(fd, b.data(), b.size(), 0, root_path);
+        fsync_or_throw(fd, root_path);
+    } catch (...) {
+        ::close(fd);
+        throw;
+    }
+    if (::close(fd) != 0) io_fail("close of", root_path, errno);
+    fsync_dir_best_effort(dir);
+}
+
+}  // namespace
+
 void PlotWriter::open_impl(const std::string& root_path, const PlotGeometry& g, int word_size,
                            std::int64_t member_size_limit_words, int keep_states) {
     close();
+    check_geometry(g, word_size, member_size_limit_words);
+    set_sizes(g, word_size, member_size_limit_words);
+    root_ = root_path;
+    x0_ = g.x0;
+    members_ = 0;
+    states_in_member_ = 0;
+    states_written_ = 0;
+    marker_pos_ = 0;
+
+    const std::string dir = parent_dir(root_path);
+    const std::vector<char> b = root_file(g);
+    if (keep_states >= 0) {
+        check_root_to_resume(root_path, b, ws_);
+        resume_members(keep_states);
+        return;
+    }
+    remove_stale_members(root_path, dir);
+    write_root_file(root_path, dir, b);
+    root_written_ = true;
+}
+
+// What the writer refuses (std::invalid_argument): word sizes, sizes of the geometry's arrays,
+// node and material indices out of range, implausible counts.
+void PlotWriter::check_geometry(const PlotGeometry& g, int word_size, std::int64_t member_size_limit_words) {
     if (word_size != 4 && word_size != 8)
         throw std::invalid_argument("PlotWriter: word size must be 4 or 8, got " + std::to_string(word_size));
     if (member_size_limit_words < 1)
@@ -481,37 +646,17 @@ void PlotWriter::open_impl(const std::string& root_path, const PlotGeometry& g, 
     check_size(g.shell_nodes, 4 * nel4, "shell_nodes", false);
     check_size(g.shell_user_ids, nel4, "shell_user_ids", true);
     if (nel4 > 100000000u) throw std::invalid_argument("PlotWriter: model too large");
-    for (std::size_t k = 0; k < g.shell_nodes.size(); ++k)
-        if (g.shell_nodes[k] < 0 || static_cast<std::size_t>(g.shell_nodes[k]) >= numnp)
-            throw std::invalid_argument("PlotWriter: shell " + std::to_string(k / 4) + " node index out of range");
-    // shell materials: distinct from the solids' ones (NUMMAT4; NUMMAT8 = the others)
-    std::vector<char> shell_mat(static_cast<std::size_t>(nmat) + 1, 0);
-    for (std::size_t e = 0; e < nel4; ++e) {
-        if (g.shell_material[e] < 1 || g.shell_material[e] > nmat)
-            throw std::invalid_argument("PlotWriter: shell " + std::to_string(e) + " material not in 1.." + std::to_string(nmat));
-        shell_mat[static_cast<std::size_t>(g.shell_material[e])] = 1;
-    }
-    std::int64_t nummat4 = 0;
-    for (char c : shell_mat) nummat4 += c;
-    // beams: the same for NUMMAT2
+    check_element_nodes(g.shell_nodes, 4, numnp, "shell");
+    parts_used(g.shell_material, nmat, "shell");
     if (nel2 > 100000000u) throw std::invalid_argument("PlotWriter: model too large");
     check_size(g.beam_nodes, 2 * nel2, "beam_nodes", false);
     check_size(g.beam_user_ids, nel2, "beam_user_ids", true);
     check_size(g.beam_orientation, nel2, "beam_orientation", true);
     if (g.beam_points < 0 || g.beam_points > 10000) throw std::invalid_argument("PlotWriter: implausible number of beam points");
-    for (std::size_t k = 0; k < g.beam_nodes.size(); ++k)
-        if (g.beam_nodes[k] < 0 || static_cast<std::size_t>(g.beam_nodes[k]) >= numnp)
-            throw std::invalid_argument("PlotWriter: beam " + std::to_string(k / 2) + " node index out of range");
+    check_element_nodes(g.beam_nodes, 2, numnp, "beam");
     for (int n : g.beam_orientation)
         if (n >= 0 && static_cast<std::size_t>(n) >= numnp) throw std::invalid_argument("PlotWriter: beam orientation node out of range");
-    std::vector<char> beam_mat(static_cast<std::size_t>(nmat) + 1, 0);
-    for (std::size_t e = 0; e < nel2; ++e) {
-        if (g.beam_material[e] < 1 || g.beam_material[e] > nmat)
-            throw std::invalid_argument("PlotWriter: beam " + std::to_string(e) + " material not in 1.." + std::to_string(nmat));
-        beam_mat[static_cast<std::size_t>(g.beam_material[e])] = 1;
-    }
-    std::int64_t nummat2 = 0;
-    for (char c : beam_mat) nummat2 += c;
+    parts_used(g.beam_material, nmat, "beam");
     check_size(g.part_titles, static_cast<std::size_t>(nmat), "part_titles", true);
     check_size(g.part_user_ids, static_cast<std::size_t>(nmat), "part_user_ids", true);
     for (std::size_t k = 0; k < g.hex_nodes.size(); ++k)
@@ -525,7 +670,20 @@ void PlotWriter::open_impl(const std::string& root_path, const PlotGeometry& g, 
     for (std::size_t p = 1; p < g.part_user_ids.size(); ++p)
         if (g.part_user_ids[p] <= g.part_user_ids[p - 1])
             throw std::invalid_argument("PlotWriter: part_user_ids must be strictly ascending");
+    if (g.num_rigid_walls < 0 || g.num_rigid_walls > 100000)
+        throw std::invalid_argument("PlotWriter: implausible number of rigid walls");
+    if (g.num_interfaces < 0 || g.num_interfaces > 100000)
+        throw std::invalid_argument("PlotWriter: implausible number of sliding interfaces");
+    if (g.num_solid_history < 0 || g.num_solid_history > 1000)
+        throw std::invalid_argument("PlotWriter: implausible number of solid history values");
+}
 
+void PlotWriter::set_sizes(const PlotGeometry& g, int word_size, std::int64_t member_size_limit_words) {
+    const std::size_t numnp = g.x0.size() / 3;
+    const std::size_t nel8 = g.hex_material.size();
+    const std::size_t nel4 = g.shell_material.size();
+    const std::size_t nel2 = g.beam_material.size();
+    const int nmat = g.num_materials;
     ws_ = word_size;
     limit_words_ = member_size_limit_words;
     numnp_ = static_cast<int>(numnp);
@@ -534,32 +692,38 @@ void PlotWriter::open_impl(const std::string& root_path, const PlotGeometry& g, 
     nel2_ = static_cast<int>(nel2);
     nv1d_ = nel2 > 0 ? 6 + 5 * g.beam_points : 0;
     nmmat_ = nmat;
-    if (g.num_rigid_walls < 0 || g.num_rigid_walls > 100000)
-        throw std::invalid_argument("PlotWriter: implausible number of rigid walls");
     nrw_ = g.num_rigid_walls;
-    if (g.num_interfaces < 0 || g.num_interfaces > 100000)
-        throw std::invalid_argument("PlotWriter: implausible number of sliding interfaces");
     nif_ = g.num_interfaces;
     nglbv_ = 6 + 7 * static_cast<std::int64_t>(nmat) + nrw_ + 3 * static_cast<std::int64_t>(nif_);
-    if (g.num_solid_history < 0 || g.num_solid_history > 1000)
-        throw std::invalid_argument("PlotWriter: implausible number of solid history values");
     neiph_ = g.num_solid_history;
     // time, globals, coords + vel + acc, 7 + NEIPH words and one deletion flag per solid, the
     // beam records and one deletion flag per beam, the shell records and one deletion flag per
     // shell
     state_words_ = 1 + nglbv_ + 9 * static_cast<std::int64_t>(numnp) + (8 + neiph_) * static_cast<std::int64_t>(nel8) +
                    (nv1d_ + 1) * static_cast<std::int64_t>(nel2) + (kShellPlotVars + 1) * static_cast<std::int64_t>(nel4);
-    root_ = root_path;
-    x0_ = g.x0;
-    members_ = 0;
-    states_in_member_ = 0;
-    states_written_ = 0;
-    marker_pos_ = 0;
+}
 
-    const std::string dir = parent_dir(root_path);
-    // ---- root file
+// The root file: control words, geometry, user ids, titles.
+std::vector<char> PlotWriter::root_file(const PlotGeometry& g) const {
     const int ws = ws_;
     std::vector<char> b;
+    put_control_words(b, g);
+    for (double x : g.x0) put_real(b, ws, x);
+    put_connectivity(b, ws, g);
+    std::vector<int> pids = g.part_user_ids;
+    if (pids.empty())
+        for (int p = 1; p <= nmmat_; ++p) pids.push_back(p);
+    put_user_ids(b, ws, g, pids);
+    put_titles(b, ws, g, pids);
+    return b;
+}
+
+// The 64 control words (title, run time, FILETYPE, NDIM, counts, NARBS, IOSHL, NMMAT, word 63).
+void PlotWriter::put_control_words(std::vector<char>& b, const PlotGeometry& g) const {
+    const int ws = ws_;
+    const int nmat = g.num_materials;
+    const std::int64_t nummat4 = parts_used(g.shell_material, nmat, "shell");
+    const std::int64_t nummat2 = parts_used(g.beam_material, nmat, "beam");
     std::string title40 = g.title;
     put_text(b, title40, 10u * ws);
     for (int k = 10; k < 64; ++k) {
@@ -593,106 +757,6 @@ void PlotWriter::open_impl(const std::string& root_path, const PlotGeometry& g, 
         else if (k == 14) put_real(b, ws, 960.0);
         else put_int(b, ws, v);
     }
-    for (double x : g.x0) put_real(b, ws, x);
-    for (std::size_t e = 0; e < nel8; ++e) {
-        for (int k = 0; k < 8; ++k) put_int(b, ws, g.hex_nodes[8 * e + k] + 1);
-        put_int(b, ws, g.hex_material[e]);
-    }
-    for (std::size_t e = 0; e < nel2; ++e) {  // IX2 (after solids, thick shells: none): n1 n2 n3, two unused, material
-        put_int(b, ws, g.beam_nodes[2 * e] + 1);
-        put_int(b, ws, g.beam_nodes[2 * e + 1] + 1);
-        put_int(b, ws, g.beam_orientation.empty() || g.beam_orientation[e] < 0 ? 0 : g.beam_orientation[e] + 1);
-        put_int(b, ws, 0);
-        put_int(b, ws, 0);
-        put_int(b, ws, g.beam_material[e]);
-    }
-    for (std::size_t e = 0; e < nel4; ++e) {  // IX4 (after solids, thick shells, beams)
-        for (int k = 0; k < 4; ++k) put_int(b, ws, g.shell_nodes[4 * e + k] + 1);
-        put_int(b, ws, g.shell_material[e]);
-    }
-    // NARBS section, NSORT < 0 variant (16-word header + part id arrays)
-    std::vector<int> pids = g.part_user_ids;
-    if (pids.empty())
-        for (int p = 1; p <= nmat; ++p) pids.push_back(p);
-    {
-        const std::int64_t nsort = 100;
-        const std::int64_t nsrh = nsort + numnp_, nsrb = nsrh + nel8_, nsrs = nsrb + nel2_, nsrt = nsrs + nel4_;
-        const std::int64_t nsrma = nsrt, nsrmu = nsrma + nmat, nsrmp = nsrmu + nmat;
-        const std::int64_t hdr[16] = {-nsort, nsrh, nsrb, nsrs, nsrt, numnp_, nel8_, nel2_, nel4_, 0,
-                                      nsrma, nsrmu, nsrmp, nmat, 0, nmat};
-        for (std::int64_t v : hdr) put_int(b, ws, v);
-        for (std::size_t n = 0; n < numnp; ++n)
-            put_int(b, ws, g.node_user_ids.empty() ? static_cast<std::int64_t>(n + 1) : g.node_user_ids[n]);
-        for (std::size_t e = 0; e < nel8; ++e)
-            put_int(b, ws, g.hex_user_ids.empty() ? static_cast<std::int64_t>(e + 1) : g.hex_user_ids[e]);
-        for (std::size_t e = 0; e < nel2; ++e)  // beams, then shells
-            put_int(b, ws, g.beam_user_ids.empty() ? static_cast<std::int64_t>(e + 1) : g.beam_user_ids[e]);
-        for (std::size_t e = 0; e < nel4; ++e)
-            put_int(b, ws, g.shell_user_ids.empty() ? static_cast<std::int64_t>(e + 1) : g.shell_user_ids[e]);
-        for (int p : pids) put_int(b, ws, p);   // NORDER (ascending)
-        for (int p : pids) put_int(b, ws, p);   // NSRMU (input order)
-        for (int p = 1; p <= nmat; ++p) put_int(b, ws, p);  // NSRMP (cross reference)
-    }
-    put_real(b, ws, kEndMarker);
-    // titles: 90001 part titles first (VTK expects it right after the marker), then 90000
-    put_int(b, ws, 90001);
-    put_int(b, ws, nmat);
-    for (int p = 0; p < nmat; ++p) {
-        put_int(b, ws, pids[p]);
-        put_text(b, g.part_titles.empty() ? "part " + std::to_string(pids[p]) : g.part_titles[p],
-                 kTitleRecordBytes);
-    }
-    put_int(b, ws, 90000);
-    put_text(b, g.title, kTitleRecordBytes);
-    put_real(b, ws, kEndMarker);
-
-    if (keep_states >= 0) {
-        // the family must be this model's: the root file the writer would write now, but for
-        // the run-time word (word 10)
-        const bool exists = file_size_or(root_path, -1) >= 0;  // (missing: resume_members says so)
-        const std::vector<char> old = exists ? read_whole_file(root_path) : std::vector<char>{};
-        const std::size_t rt0 = 10u * static_cast<std::size_t>(ws), rt1 = rt0 + static_cast<std::size_t>(ws);
-        const bool same = old.size() == b.size() && std::equal(old.begin(), old.begin() + static_cast<std::ptrdiff_t>(rt0), b.begin()) &&
-                          std::equal(old.begin() + static_cast<std::ptrdiff_t>(rt1), old.end(), b.begin() + static_cast<std::ptrdiff_t>(rt1));
-        if (exists && !same)
-            throw std::runtime_error("plot database " + root_path + ": cannot resume: the root file does not belong to "
-                                     "this model (control words, geometry, ids or titles differ)");
-        resume_members(keep_states);
-        return;
-    }
-    // Remove stale family members of an earlier run, so no reader continues into them.
-
-    const std::string base = std::filesystem::path(root_path).filename().string();
-    {
-        std::error_code ec;
-        std::vector<std::filesystem::path> stale;
-        for (std::filesystem::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
-            const std::string name = it->path().filename().string();
-            if (name.size() <= base.size() || name.compare(0, base.size(), base) != 0) continue;
-            std::string rest = name.substr(base.size());
-            if (rest.size() > 4 && rest.compare(rest.size() - 4, 4, ".tmp") == 0) rest.resize(rest.size() - 4);
-            if (all_digits(rest)) stale.push_back(it->path());
-        }
-        for (const auto& p : stale) {
-            std::error_code rec;
-            std::filesystem::remove(p, rec);
-            if (rec) throw std::runtime_error("plot database: cannot remove stale family member " + p.string() +
-                                              ": " + rec.message());
-        }
-    }
-
-    const int fd = ::open(root_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-    if (fd < 0) io_fail("open of", root_path, errno);
-    try {
-        pwrite_all(fd, b.data(), b.size(), 0, root_path);
-        fsync_or_throw(fd, root_path);
-    } catch (...) {
-        ::close(fd);
-        throw;
-    }
-    if (::close(fd) != 0) io_fail("close of", root_path, errno);
-    fsync_dir_best_effort(dir);
-    root_written_ = true;
 }
 
 void PlotWriter::write_state(const PlotState& s) {
@@ -936,26 +1000,20 @@ PlotLayout make_layout(const PlotControl& c, const std::string& f) {
     return L;
 }
 
-}  // namespace
+// A control word that counts something: checked, in 64 bits, against what the family can hold
+// (each node, element, part, state word or extra word takes at least one word of it).
+void check_count(std::int64_t v, const char* name, const std::string& f, std::int64_t family_words) {
+    if (v < 0 || v > std::numeric_limits<std::int32_t>::max() || v > family_words)
+        throw std::runtime_error("plot database " + f + ": implausible control word " + name + " = " +
+                                 std::to_string(v) + " (the family holds " + std::to_string(family_words) +
+                                 " words)");
+}
 
-void PlotReader::open(const std::string& root_path) {
-    root_ = root_path;
-    ctl_ = PlotControl{};
-    geom_ = PlotGeometry{};
-    layout_ = PlotLayout{};
-    rigid_shells_ = 0;
-    states_.clear();
-    state_bytes_ = 0;
-    static_end_ = 0;
-    num_members_ = 0;
-
-    const std::vector<char> d = read_whole_file(root_path);
-    const std::string& f = root_path;
-    PlotControl c = parse_control(d, f);
+// What this reader supports: refuses (std::runtime_error naming the control word) what it does
+// not read, and counts the family cannot hold.
+void check_supported(const PlotControl& c, const std::string& f, std::int64_t family_words) {
     const int ws = c.word_size;
-    const bool swap = c.byte_swapped != kHostBig;
-
-    // ---- what this reader supports
+    auto bad_count = [&](std::int64_t v, const char* name) { check_count(v, name, f, family_words); };
     if (c.nmmat == kFemzipMarker)
         throw std::runtime_error("plot database " + f + ": femzip-compressed d3plot (NMMAT " +
                                  std::to_string(kFemzipMarker) +
@@ -965,16 +1023,6 @@ void PlotReader::open(const std::string& root_path) {
     if (c.filetype > 1000 && ws == 4) unsupported(f, "64-bit user ids in a 4-byte file (FILETYPE > 1000)");
     if (c.ndim != 4 && c.ndim != 5)
         unsupported(f, "NDIM " + std::to_string(c.ndim) + " (only 4, and 5 with the material-type section)");
-    // Every count of the header is untrusted: it is checked, in 64 bits, against what the family
-    // can hold (each node, element, part, state word or extra word takes at least one word of
-    // it) before anything is sized or added from it.
-    const std::int64_t family_words = family_bytes(root_path, d.size()) / ws;
-    auto bad_count = [&](std::int64_t v, const char* name) {
-        if (v < 0 || v > std::numeric_limits<std::int32_t>::max() || v > family_words)
-            throw std::runtime_error("plot database " + f + ": implausible control word " + name + " = " +
-                                     std::to_string(v) + " (the family holds " + std::to_string(family_words) +
-                                     " words)");
-    };
     if (c.nel8 < 0) unsupported(f, "10-node tetrahedra (NEL8 < 0)");
     bad_count(c.numnp, "NUMNP");
     bad_count(c.nel8, "NEL8");
@@ -1008,117 +1056,102 @@ void PlotReader::open(const std::string& root_path) {
         if (flag != 0 && flag != 1) throw std::runtime_error("plot database " + f + ": implausible IU/IV/IA flag " +
                                                              std::to_string(flag));
 
-    Cursor cur(d.data(), static_cast<std::int64_t>(d.size()), f, 0, ws, swap);
-    cur.seek(64 * ws);
-    if (c.extra > 0) {
-        cur.need_words(c.extra, "the EXTRA control words");
-        std::int64_t x[16] = {};
-        for (std::int64_t k = 0; k < c.extra; ++k) {
-            const std::int64_t v = cur.i("EXTRA control word");
-            if (k < 16) x[k] = v;
-        }
-        c.nel20 = x[0]; c.nt3d = x[1]; c.nel27 = x[2]; c.neipb = x[3]; c.nel21p = x[4]; c.nel15t = x[5];
-        c.soleng = x[6]; c.nel20t = x[7]; c.nel40p = x[8]; c.nel64 = x[9]; c.quadr = x[10]; c.cubic = x[11];
-        c.tsheng = x[12];
-        bad_count(c.nt3d, "NT3D");
-        bad_count(c.neipb, "NEIPB");
-        const std::pair<std::int64_t, const char*> higher[] = {
-            {c.nel20, "20-node solids (NEL20)"}, {c.nel27, "27-node solids (NEL27)"},
-            {c.nel21p, "21-node pentahedra (NEL21P)"}, {c.nel15t, "15-node tetrahedra (NEL15T)"},
-            {c.nel20t, "20-node tetrahedra (NEL20T)"}, {c.nel40p, "40-node pentahedra (NEL40P)"},
-            {c.nel64, "64-node solids (NEL64)"}};
-        for (const auto& [n, what] : higher)
-            if (n != 0) unsupported(f, std::to_string(n) + " " + what);
-    }
-    const std::int64_t nparts = c.nmmat > 0 ? c.nmmat : c.nummat8 + c.nummatt + c.nummat2 + c.nummat4;
-    // The part count sizes per-part arrays and loops here and in POST-IMPACT, but nothing in
-    // the root file has to follow from it: checked against the words the whole family holds
-    // (each part has words in every state), so a corrupt count cannot ask for gigabytes.
-    if (nparts > family_words)
-        throw std::runtime_error("plot database " + f + ": implausible control words: " + std::to_string(nparts) +
-                                 " parts (NMMAT/NUMMAT8) in a family of " + std::to_string(family_words) + " words");
-    const PlotLayout layout = make_layout(c, f);
-    const std::int64_t numnp = c.numnp, nel8 = c.nel8;
+}
 
-    PlotGeometry g;
-    g.title = c.title;
-    // ---- material-type section (NDIM 5): rigid shells have no state data
-    if (c.ndim == 5) {
-        const std::int64_t numrbe = cur.i("NUMRBE");
-        const std::int64_t nm = cur.i("material-type section NMMAT");
-        if (numrbe < 0 || numrbe > c.nel4 || nm != nparts) {
-            cur.seek(cur.pos() - 2 * ws);
-            cur.fail("NUMRBE in 0.." + std::to_string(c.nel4) + " and NMMAT " + std::to_string(nparts) +
-                         " (material-type section), found " + std::to_string(numrbe) + " and " + std::to_string(nm),
-                     -1);
-        }
-        cur.need_words(nparts, "the material types of " + std::to_string(nparts) + " parts");
-        g.part_types.resize(static_cast<std::size_t>(nparts));
-        for (auto& t : g.part_types) t = static_cast<int>(std::clamp<std::int64_t>(cur.i("material type"), -1, 1000000));
-        rigid_shells_ = numrbe;
+// The EXTRA control words after the 64 (NT3D, NEIPB, the higher-order solid counts).
+void read_extra_control_words(Cursor& cur, PlotControl& c, const std::string& f, std::int64_t family_words) {
+    auto bad_count = [&](std::int64_t v, const char* name) { check_count(v, name, f, family_words); };
+    cur.need_words(c.extra, "the EXTRA control words");
+    std::int64_t x[16] = {};
+    for (std::int64_t k = 0; k < c.extra; ++k) {
+        const std::int64_t v = cur.i("EXTRA control word");
+        if (k < 16) x[k] = v;
     }
-    // ---- geometry
-    cur.need_words(checked_mul(3, numnp, f), "initial coordinates of " + std::to_string(numnp) + " nodes");
-    g.x0.resize(static_cast<std::size_t>(3 * numnp));
-    for (auto& x : g.x0) x = cur.r("coordinate");
-    // one element block: per element `nodes` node words (the first `kept` of them checked and
-    // kept; beams: the orientation node and two unused words follow), then the material number
-    auto read_block = [&](std::int64_t count, int nodes, int kept, const char* what,
-                          std::vector<int>& node_out, std::vector<int>& mat_out) {
-        cur.need_words(checked_mul(nodes + 1, count, f), "connectivity of " + std::to_string(count) + " " + what);
-        node_out.resize(static_cast<std::size_t>(kept * count));
-        mat_out.resize(static_cast<std::size_t>(count));
-        for (std::int64_t e = 0; e < count; ++e) {
-            for (int k = 0; k < nodes; ++k) {
-                const std::int64_t n = cur.i("node number");
-                if (k >= kept) continue;
-                if (n < 1 || n > numnp) {
-                    cur.seek(cur.pos() - ws);
-                    cur.fail("a node number in 1.." + std::to_string(numnp) + " for " + what + " " +
-                                 std::to_string(e + 1) + ", found " + std::to_string(n),
-                             -1);
-                }
-                node_out[static_cast<std::size_t>(kept * e + k)] = static_cast<int>(n - 1);
-            }
-            const std::int64_t m = cur.i("material number");
-            if (m < 1 || m > nparts) {
+    c.nel20 = x[0]; c.nt3d = x[1]; c.nel27 = x[2]; c.neipb = x[3]; c.nel21p = x[4]; c.nel15t = x[5];
+    c.soleng = x[6]; c.nel20t = x[7]; c.nel40p = x[8]; c.nel64 = x[9]; c.quadr = x[10]; c.cubic = x[11];
+    c.tsheng = x[12];
+    bad_count(c.nt3d, "NT3D");
+    bad_count(c.neipb, "NEIPB");
+    const std::pair<std::int64_t, const char*> higher[] = {
+        {c.nel20, "20-node solids (NEL20)"}, {c.nel27, "27-node solids (NEL27)"},
+        {c.nel21p, "21-node pentahedra (NEL21P)"}, {c.nel15t, "15-node tetrahedra (NEL15T)"},
+        {c.nel20t, "20-node tetrahedra (NEL20T)"}, {c.nel40p, "40-node pentahedra (NEL40P)"},
+        {c.nel64, "64-node solids (NEL64)"}};
+    for (const auto& [n, what] : higher)
+        if (n != 0) unsupported(f, std::to_string(n) + " " + what);
+}
+
+// The material-type section (NDIM 5): the parts' material types; returns NUMRBE (rigid shells,
+// which have no state data).
+std::int64_t read_part_types(Cursor& cur, const PlotControl& c, std::int64_t nparts, PlotGeometry& g) {
+    const int ws = c.word_size;
+    const std::int64_t numrbe = cur.i("NUMRBE");
+    const std::int64_t nm = cur.i("material-type section NMMAT");
+    if (numrbe < 0 || numrbe > c.nel4 || nm != nparts) {
+        cur.seek(cur.pos() - 2 * ws);
+        cur.fail("NUMRBE in 0.." + std::to_string(c.nel4) + " and NMMAT " + std::to_string(nparts) +
+                     " (material-type section), found " + std::to_string(numrbe) + " and " + std::to_string(nm),
+                 -1);
+    }
+    cur.need_words(nparts, "the material types of " + std::to_string(nparts) + " parts");
+    g.part_types.resize(static_cast<std::size_t>(nparts));
+    for (auto& t : g.part_types) t = static_cast<int>(std::clamp<std::int64_t>(cur.i("material type"), -1, 1000000));
+    return numrbe;
+}
+
+// One element block: per element `nodes` node words (the first `kept` of them checked and kept;
+// beams: the orientation node and two unused words follow), then the material number.
+void read_element_block(Cursor& cur, std::int64_t count, int nodes, int kept, const char* what, std::int64_t numnp,
+                        std::int64_t nparts, std::vector<int>& node_out, std::vector<int>& mat_out) {
+    const std::string& f = cur.file();
+    const int ws = cur.word_size();
+    cur.need_words(checked_mul(nodes + 1, count, f), "connectivity of " + std::to_string(count) + " " + what);
+    node_out.resize(static_cast<std::size_t>(kept * count));
+    mat_out.resize(static_cast<std::size_t>(count));
+    for (std::int64_t e = 0; e < count; ++e) {
+        for (int k = 0; k < nodes; ++k) {
+            const std::int64_t n = cur.i("node number");
+            if (k >= kept) continue;
+            if (n < 1 || n > numnp) {
                 cur.seek(cur.pos() - ws);
-                cur.fail("a material number in 1.." + std::to_string(nparts) + " for " + what + " " +
-                             std::to_string(e + 1) + ", found " + std::to_string(m),
+                cur.fail("a node number in 1.." + std::to_string(numnp) + " for " + what + " " +
+                             std::to_string(e + 1) + ", found " + std::to_string(n),
                          -1);
             }
-            mat_out[static_cast<std::size_t>(e)] = static_cast<int>(m);
+            node_out[static_cast<std::size_t>(kept * e + k)] = static_cast<int>(n - 1);
         }
-    };
-    read_block(nel8, 8, 8, "solid", g.hex_nodes, g.hex_material);
-    read_block(c.nelt, 8, 8, "thick shell", g.tshell_nodes, g.tshell_material);
-    read_block(c.nel2, 5, 2, "beam", g.beam_nodes, g.beam_material);
-    read_block(c.nel4, 4, 4, "shell", g.shell_nodes, g.shell_material);
-    if (rigid_shells_ > 0) {
-        std::int64_t rigid = 0;
-        for (int m : g.shell_material)
-            if (g.part_types[static_cast<std::size_t>(m - 1)] == kRigidPartType) ++rigid;
-        if (rigid != rigid_shells_)
-            unsupported(f, "NUMRBE " + std::to_string(rigid_shells_) + " rigid shells, but " + std::to_string(rigid) +
-                               " shells belong to parts of material type 20");
+        const std::int64_t m = cur.i("material number");
+        if (m < 1 || m > nparts) {
+            cur.seek(cur.pos() - ws);
+            cur.fail("a material number in 1.." + std::to_string(nparts) + " for " + what + " " +
+                         std::to_string(e + 1) + ", found " + std::to_string(m),
+                     -1);
+        }
+        mat_out[static_cast<std::size_t>(e)] = static_cast<int>(m);
     }
-    g.num_materials = static_cast<int>(nparts);
-    {
-        // after the per-part block: NUMRW rigid-wall words, then 3 words per sliding interface
-        // (control word 63, ours); a word 63 that does not fit is not ours: all are walls.
-        // LS-DYNA from VERSION 971 on writes 4 words per wall: the force, then its x y z position.
-        const std::int64_t extra_globals = c.nglbv - 6 - 7 * nparts;
-        const std::int64_t nif = (c.nintf > 0 && c.nintf <= 100000 && c.nintf <= extra_globals / 3) ? c.nintf : 0;
-        g.num_interfaces = static_cast<int>(nif);
-        const std::int64_t wall_words = extra_globals - 3 * nif;
-        g.num_rigid_walls = extra_globals <= 0 ? 0 : static_cast<int>(c.version >= 971.0 && nif == 0 ? wall_words / 4 : wall_words);
-    }
+}
 
-    // ---- NARBS user-id section: nodes, solids, beams, shells, thick shells, parts
-    auto sequential = [](std::vector<int>& ids, std::int64_t n) {
-        ids.resize(static_cast<std::size_t>(n));
-        for (std::int64_t k = 0; k < n; ++k) ids[static_cast<std::size_t>(k)] = static_cast<int>(k + 1);
-    };
+// After the per-part globals: NUMRW rigid-wall words, then 3 words per sliding interface
+// (control word 63, ours); a word 63 that does not fit is not ours: all are walls. LS-DYNA from
+// VERSION 971 on writes 4 words per wall: the force, then its x y z position.
+void count_walls_and_interfaces(const PlotControl& c, std::int64_t nparts, PlotGeometry& g) {
+    const std::int64_t extra_globals = c.nglbv - 6 - 7 * nparts;
+    const std::int64_t nif = (c.nintf > 0 && c.nintf <= 100000 && c.nintf <= extra_globals / 3) ? c.nintf : 0;
+    g.num_interfaces = static_cast<int>(nif);
+    const std::int64_t wall_words = extra_globals - 3 * nif;
+    g.num_rigid_walls = extra_globals <= 0 ? 0 : static_cast<int>(c.version >= 971.0 && nif == 0 ? wall_words / 4 : wall_words);
+}
+
+void sequential_ids(std::vector<int>& ids, std::int64_t n) {
+    ids.resize(static_cast<std::size_t>(n));
+    for (std::int64_t k = 0; k < n; ++k) ids[static_cast<std::size_t>(k)] = static_cast<int>(k + 1);
+}
+
+// The NARBS user-id section (nodes, solids, beams, shells, thick shells, parts), or ids 1..n.
+void read_user_ids(Cursor& cur, const PlotControl& c, std::int64_t nparts, PlotGeometry& g) {
+    const std::string& f = cur.file();
+    const int ws = c.word_size;
+    const std::int64_t numnp = c.numnp, nel8 = c.nel8;
     if (c.narbs > 0) {
         cur.need_words(c.narbs, "the user-id (NARBS) section of " + std::to_string(c.narbs) + " words");
         const std::int64_t start = cur.pos();
@@ -1150,16 +1183,20 @@ void PlotReader::open(const std::string& root_path) {
         }
         cur.seek(start + c.narbs * ws);
     } else {
-        sequential(g.node_user_ids, numnp);
-        sequential(g.hex_user_ids, nel8);
-        sequential(g.beam_user_ids, c.nel2);
-        sequential(g.shell_user_ids, c.nel4);
-        sequential(g.tshell_user_ids, c.nelt);
+        sequential_ids(g.node_user_ids, numnp);
+        sequential_ids(g.hex_user_ids, nel8);
+        sequential_ids(g.beam_user_ids, c.nel2);
+        sequential_ids(g.shell_user_ids, c.nel4);
+        sequential_ids(g.tshell_user_ids, c.nelt);
     }
-    if (g.part_user_ids.empty() && nparts <= cur.remaining() + 1000000) sequential(g.part_user_ids, nparts);
-    static_end_ = cur.pos();
+    if (g.part_user_ids.empty() && nparts <= cur.remaining() + 1000000) sequential_ids(g.part_user_ids, nparts);
+}
 
-    // ---- marker, title records (part titles by part id), marker
+// The title records after the end marker: part titles by part id (90001), the model title
+// (90000); d3prop lines skipped.
+void read_title_records(Cursor& cur, std::int64_t nparts, PlotGeometry& g) {
+    const std::string& f = cur.file();
+    const int ws = cur.word_size();
     if (cur.has(ws) && cur.r("end marker") == kEndMarker) {
         while (cur.has(ws)) {
             const std::int64_t at = cur.pos();
@@ -1198,39 +1235,110 @@ void PlotReader::open(const std::string& root_path) {
         }
     }
 
-    // ---- state size and family scan
+}
+
+// The words of one state.
+std::int64_t state_words(const PlotControl& c, std::int64_t rigid_shells, const std::string& f) {
+    const std::int64_t numnp = c.numnp, nel8 = c.nel8;
     const NodeWords nw = node_words(c);
     std::int64_t words = checked_add(1 + c.nglbv, checked_mul(numnp, nw.total(), f), f);
     words = checked_add(words, checked_mul(nel8, c.nt3d, f), f);
     words = checked_add(words, checked_mul(nel8, c.nv3d, f), f);
     words = checked_add(words, checked_mul(c.nelt, c.nv3dt, f), f);
     words = checked_add(words, checked_mul(c.nel2, c.nv1d, f), f);
-    words = checked_add(words, checked_mul(c.nel4 - rigid_shells_, c.nv2d, f), f);
+    words = checked_add(words, checked_mul(c.nel4 - rigid_shells, c.nv2d, f), f);
     if (c.maxint < -10000) words = checked_add(words, nel8 + c.nelt + c.nel4 + c.nel2, f);
     else if (c.maxint < 0) words = checked_add(words, numnp, f);
-    state_bytes_ = checked_mul(words, ws, f);
+    return words;
+}
+
+// The state's first word (its time) at p.
+double time_word(const char* p, int ws, bool swap) {
+    char tmp[8];
+    std::memcpy(tmp, p, ws);
+    if (swap) std::reverse(tmp, tmp + ws);
+    if (ws == 4) {
+        float x;
+        std::memcpy(&x, tmp, 4);
+        return static_cast<double>(x);
+    }
+    double x;
+    std::memcpy(&x, tmp, 8);
+    return x;
+}
+
+}  // namespace
+
+void PlotReader::open(const std::string& root_path) {
+    root_ = root_path;
+    ctl_ = PlotControl{};
+    geom_ = PlotGeometry{};
+    layout_ = PlotLayout{};
+    rigid_shells_ = 0;
+    states_.clear();
+    state_bytes_ = 0;
+    static_end_ = 0;
+    num_members_ = 0;
+
+    const std::vector<char> d = read_whole_file(root_path);
+    const std::string& f = root_path;
+    PlotControl c = parse_control(d, f);
+    const int ws = c.word_size;
+    const bool swap = c.byte_swapped != kHostBig;
+    // Every count of the header is untrusted: it is checked against what the family can hold
+    // before anything is sized or added from it.
+    const std::int64_t family_words = family_bytes(root_path, d.size()) / ws;
+    check_supported(c, f, family_words);
+
+    Cursor cur(d.data(), static_cast<std::int64_t>(d.size()), f, 0, ws, swap);
+    cur.seek(64 * ws);
+    if (c.extra > 0) read_extra_control_words(cur, c, f, family_words);
+    const std::int64_t nparts = c.nmmat > 0 ? c.nmmat : c.nummat8 + c.nummatt + c.nummat2 + c.nummat4;
+    // The part count sizes per-part arrays and loops here and in POST-IMPACT, but nothing in
+    // the root file has to follow from it: checked against the words the whole family holds
+    // (each part has words in every state), so a corrupt count cannot ask for gigabytes.
+    if (nparts > family_words)
+        throw std::runtime_error("plot database " + f + ": implausible control words: " + std::to_string(nparts) +
+                                 " parts (NMMAT/NUMMAT8) in a family of " + std::to_string(family_words) + " words");
+    const PlotLayout layout = make_layout(c, f);
+    const std::int64_t numnp = c.numnp, nel8 = c.nel8;
+
+    PlotGeometry g;
+    g.title = c.title;
+    // ---- material-type section (NDIM 5), geometry, user ids, titles
+    if (c.ndim == 5) rigid_shells_ = read_part_types(cur, c, nparts, g);
+    cur.need_words(checked_mul(3, numnp, f), "initial coordinates of " + std::to_string(numnp) + " nodes");
+    g.x0.resize(static_cast<std::size_t>(3 * numnp));
+    for (auto& x : g.x0) x = cur.r("coordinate");
+    read_element_block(cur, nel8, 8, 8, "solid", numnp, nparts, g.hex_nodes, g.hex_material);
+    read_element_block(cur, c.nelt, 8, 8, "thick shell", numnp, nparts, g.tshell_nodes, g.tshell_material);
+    read_element_block(cur, c.nel2, 5, 2, "beam", numnp, nparts, g.beam_nodes, g.beam_material);
+    read_element_block(cur, c.nel4, 4, 4, "shell", numnp, nparts, g.shell_nodes, g.shell_material);
+    if (rigid_shells_ > 0) {
+        std::int64_t rigid = 0;
+        for (int m : g.shell_material)
+            if (g.part_types[static_cast<std::size_t>(m - 1)] == kRigidPartType) ++rigid;
+        if (rigid != rigid_shells_)
+            unsupported(f, "NUMRBE " + std::to_string(rigid_shells_) + " rigid shells, but " + std::to_string(rigid) +
+                               " shells belong to parts of material type 20");
+    }
+    g.num_materials = static_cast<int>(nparts);
+    count_walls_and_interfaces(c, nparts, g);
+    read_user_ids(cur, c, nparts, g);
+    static_end_ = cur.pos();
+    read_title_records(cur, nparts, g);
+
+    // ---- state size and family scan
+    state_bytes_ = checked_mul(state_words(c, rigid_shells_, f), ws, f);
     ctl_ = c;
     geom_ = std::move(g);
     layout_ = layout;
-    auto word_at = [&](const char* p) {
-        char tmp[8];
-        std::memcpy(tmp, p, ws);
-        if (swap) std::reverse(tmp, tmp + ws);
-        if (ws == 4) {
-            float x;
-            std::memcpy(&x, tmp, 4);
-            return static_cast<double>(x);
-        }
-        double x;
-        std::memcpy(&x, tmp, 8);
-        return x;
-    };
     // Root file: states may follow the static part directly (old layouts); a marker ends them.
     {
         std::int64_t pos = static_end_;
         const std::int64_t size = static_cast<std::int64_t>(d.size());
         while (pos + ws <= size) {
-            const double t = word_at(d.data() + pos);
+            const double t = time_word(d.data() + pos, ws, swap);
             if (t == kEndMarker || state_bytes_ > size - pos) break;
             states_.push_back({0, pos, t});
             pos += state_bytes_;
@@ -1252,7 +1360,7 @@ void PlotReader::open(const std::string& root_path) {
                 os << "plot database " << name << ": read error at byte offset " << pos;
                 throw std::runtime_error(os.str());
             }
-            const double t = word_at(w);
+            const double t = time_word(w, ws, swap);
             if (t == kEndMarker) break;
             if (state_bytes_ > size - pos) {
                 partial = true;

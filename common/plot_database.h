@@ -212,6 +212,11 @@ private:
     void open_impl(const std::string& root_path, const PlotGeometry& geometry, int word_size,
                    std::int64_t member_size_limit_words, int keep_states);
     void resume_members(int keep_states);
+    // open_impl's steps (plot_database.cpp)
+    static void check_geometry(const PlotGeometry& g, int word_size, std::int64_t member_size_limit_words);
+    void set_sizes(const PlotGeometry& g, int word_size, std::int64_t member_size_limit_words);
+    std::vector<char> root_file(const PlotGeometry& g) const;
+    void put_control_words(std::vector<char>& b, const PlotGeometry& g) const;
     void start_member(const std::vector<char>& buf);
     void append_to_member(const std::vector<char>& buf);
 
