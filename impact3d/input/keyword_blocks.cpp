@@ -15,27 +15,37 @@ KeywordValues::KeywordValues(const Block& b, std::size_t k, const KeywordCardLay
   card_.set_params(params);
   const std::size_t n = layout.fields.size();
   values_.assign(n, 0.0);
+  read_.assign(n, 0);
   passed_.assign(n, 1);
-  for (std::size_t f = 0; f < n; ++f) {
-    read(f);
-    if (layout.order == CheckOrder::per_field) check(f);
-  }
-  if (layout.order == CheckOrder::after_card)
-    for (std::size_t f = 0; f < n; ++f) check(f);
 }
 
-void KeywordValues::read(std::size_t k) {
+double KeywordValues::value(std::size_t k) {
+  if (read_[k]) return values_[k];
+  read_[k] = 1;
   const KeywordField& f = layout_.fields[k];
   double v = f.kind == FieldKind::real ? card_.r(f.index, f.name, f.blank)
                                        : double(card_.i(f.index, f.name, static_cast<long long>(f.blank)));
   if (f.zero_is_blank && v == 0) v = f.blank;
   values_[k] = v;
+  for (std::size_t j = 0; j < layout_.fields.size(); ++j)
+    if (read_[j] && layout_.check_point(layout_.fields[j]) == f.index) check(j);
+  const int point = layout_.check_point(f);  // read after its check point: checked now
+  if (point != f.index)
+    for (std::size_t j = 0; j < layout_.fields.size(); ++j)
+      if (layout_.fields[j].index == point && read_[j]) check(k);
+  return v;
+}
+
+KeywordValues& KeywordValues::rest() {
+  for (std::size_t k = 0; k < layout_.fields.size(); ++k) value(k);
+  return *this;
 }
 
 void KeywordValues::check(std::size_t k) {
   const KeywordField& f = layout_.fields[k];
   for (const KeywordCheck& c : f.checks) {
     if (!c.fires(values_[k])) continue;
+    if (c.id == 0) return;  // accepted
     passed_[k] = 0;
     std::string detail = c.detail ? c.detail : "";
     if (const std::size_t p = detail.find("%v"); p != std::string::npos)

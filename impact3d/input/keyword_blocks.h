@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <functional>
 #include <map>
 #include <string>
 #include <string_view>
@@ -344,40 +345,55 @@ inline std::string at(const Ref& r) {
   return r.file->name() + ":" + std::to_string(r.line->number);
 }
 
-// One card of a block read by its table (keyword_cards.h) into named values: every field read
-// (1001/1002/1310 for bad text), a blank field (and a 0 where the table says so) takes its blank
-// value, and the table's checks give their messages, per field or after the card as the table
-// says.  The card is named in messages as the keyword and the table's card label.
+// One card of a block read by its table (keyword_cards.h) into named values: a field is read
+// when first asked for (rest(): every field not read yet, in the table's order), with
+// 1001/1002/1310 for bad text; a blank field (and a 0 where the table says so) takes its blank
+// value; once the field at a check point is read, the table's checks of the fields checked
+// there give their messages.  So the messages come in the order the family reads the fields,
+// its own checks between them.  The card is named in messages as the keyword and the table's
+// card label (card().set_card renames it, e.g. once its id is read).
 class KeywordValues {
  public:
   KeywordValues(const Block& b, std::size_t k, const KeywordCardLayout& layout, Diagnostics& diag, const ParamTable* params);
-  double operator[](std::string_view name) const { return values_[index(name)]; }
-  long long integer(std::string_view name) const { return static_cast<long long>(values_[index(name)]); }
+  double operator[](std::string_view name) { return value(index(name)); }
+  long long integer(std::string_view name) { return static_cast<long long>(value(index(name))); }
   bool blank(std::string_view name) const { return card_.blank(layout_.fields[index(name)].index); }
-  // No check of the table held for the field (its value may be used as it is).
-  bool passed(std::string_view name) const { return passed_[index(name)] != 0; }
+  // Read; no check of the table held for the field (its value may be used as it is).
+  bool passed(std::string_view name) { return value(index(name)), passed_[index(name)] != 0; }
   Ref ref(std::string_view name) const { return card_.ref(layout_.fields[index(name)].index); }
   void error(int id, std::string_view name, std::string detail = {});
+  KeywordValues& rest();
   KCard& card() { return card_; }
 
  private:
   std::size_t index(std::string_view name) const;
-  void read(std::size_t k);
+  double value(std::size_t k);
   void check(std::size_t k);
   const KeywordCardLayout& layout_;
   KCard card_;
   std::vector<double> values_;
-  std::vector<char> passed_;
+  std::vector<char> read_, passed_;
 };
+
+// The option cards (_ID / _TITLE) at the start of a block: the number of lines they use.
+inline std::size_t option_cards(const Block& b) { return (b.title_opt || b.id_opt) && !b.data.empty() ? 1 : 0; }
 
 // The state every family reader shares: messages, *PARAMETER values, the keywords given once.
 struct KeywordContext {
   Diagnostics& diag;
   const ParamTable& params;
   std::map<std::string, Ref> seen_once;
+  // The card's values, every field read (values) or each when first asked for (fields).
   KeywordValues values(const Block& b, std::size_t k, const KeywordCardLayout& layout) {
+    KeywordValues v(b, k, layout, diag, &params);
+    v.rest();
+    return v;
+  }
+  KeywordValues fields(const Block& b, std::size_t k, const KeywordCardLayout& layout) {
     return KeywordValues(b, k, layout, diag, &params);
   }
+  // An id a keyword defines, with the *INCLUDE_TRANSFORM offset of its file (the reader's).
+  std::function<int(int id, const Block& b, char kind)> xid;
   // A keyword that is read once: warning 2010 naming the earlier one when given again.
   void once(const Block& b);
   // Error 1316: the block ends before a required card.

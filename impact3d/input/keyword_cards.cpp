@@ -32,6 +32,13 @@ KeywordCheck outside(double lo, double hi, int id, const char* detail = nullptr,
 // v in [lo, hi]
 KeywordCheck inside(double lo, double hi, int id, const char* detail) { return {KeywordCheck::inside, lo, hi, false, false, id, detail}; }
 KeywordCheck nonzero(int id, const char* detail) { return outside(0, 0, id, detail); }
+// v not a whole number in [lo, hi]
+KeywordCheck not_whole(double lo, double hi, int id, const char* detail) { return {KeywordCheck::not_whole, lo, hi, false, false, id, detail}; }
+// checked once the field at `point` is read (instead of right after this one)
+KeywordField checked_after(KeywordField f, int point) {
+  f.checked_after = point;
+  return f;
+}
 KeywordCheck neither(double a, double b, int id, const char* detail) { return {KeywordCheck::neither, a, b, false, false, id, detail}; }
 
 // A field read and given no check: its value is only checked to be a number.
@@ -53,6 +60,223 @@ KeywordSpec binary_database(const char* name, const char* lcdt_feature, const ch
 // IMPACT-3D's physics or output.  A name ending in '*' is a prefix.
 KeywordSpec ignored(const char* name, const char* why, std::vector<KeywordCardLayout> cards = {}) {
   return {{name}, KeywordFamily::ignored, false, std::move(cards), why};
+}
+
+// *SECTION_SHELL and *SECTION_BEAM SHRF: 0 and blank are 1.
+KeywordField shear_factor(const char* detail) {
+  return {"SHRF", 2, E, 1.0, true, {outside(0, 1, 1003, detail, true)}, "shear factor"};
+}
+
+std::vector<KeywordSpec> parts_sections_specs() {
+  const KeywordFamily F = KeywordFamily::parts_sections;
+  std::vector<KeywordSpec> t;
+  t.push_back({{"PART"}, F, false,
+               {{"card 2", 8, 10, per_field, {
+                   {"PID", 0, I, 0, false, {}, "part id (the card is then named \"part PID\" in messages)"},
+                   {"SECID", 1, I, 0, false, {}, "section"},
+                   {"MID", 2, I, 0, false, {}, "material"},
+                   {"EOSID", 3, I, 0, false, {}, "equation of state (0: none)"},
+                   {"HGID", 4, I, 0, false, {}, "*HOURGLASS (0: the control values)"},
+                   {"GRAV", 5, I, 0, false, {nonzero(1102, "body forces")}, "body forces"},
+                   plain("ADPOPT", 6, I),
+                   {"TMID", 7, I, 0, false, {nonzero(1102, "thermal materials")}, "thermal material"},
+               }, "after each heading card"}},
+               "pairs of cards: a heading (80 columns), then card 2; card 2 missing after a heading that is not blank: error 1316"});
+  t.push_back({{"SECTION_SOLID"}, F, false,
+               {{"", 3, 10, per_field, {
+                   {"SECID", 0, I, 0, false, {}, "section id (defined twice: error 1200)"},
+                   {"ELFORM", 1, I, 1, false, {}, "element formulation (solids: the one-point hexahedron)"},
+                   {"AET", 2, I, 0, false, {nonzero(1102, "ambient element types")}, "ambient element type"},
+               }, ""}},
+               "one card (the cards of other ELFORMs after it are not read)"});
+  t.push_back({{"SECTION_SHELL"}, F, false,
+               {{"card 1", 8, 10, per_field, {
+                   {"SECID", 0, I, 0, false, {}, "section id (the cards are then named by it in messages; defined twice: error 1200)"},
+                   {"ELFORM", 1, I, 2, false, {neither(0, 2, 1102, "shell formulation %v; only ELFORM 2 (Belytschko-Tsay)")}, "shell formulation"},
+                   shear_factor("shear factor in (0, 1] (5/6 for isotropic shells)"),
+                   {"NIP", 3, E, 2, true, {not_whole(0, kInf, 1003, "integration points 1-10"),
+                                           outside(-kInf, 10, 1102, "more than 10 Gauss points (user-defined integration rules)")}, "through-thickness Gauss points"},
+                   plain("PROPT", 4, E),
+                   {"QR/IRID", 5, E, 0, false, {nonzero(1102, "user-defined and trapezoidal integration rules (Gauss only)")}, "integration rule"},
+                   {"ICOMP", 6, I, 0, false, {nonzero(1102, "composite layups")}, "composite layup"},
+                   plain("SETYP", 7, E),
+               }, ""},
+                {"card 2", 8, 10, per_field, {
+                   checked_after({"T1", 0, E, 0, false, {below(0, 1241)}, "thickness at node 1"}, 3),
+                   {"T2", 1, E, 0, false, {}, "thickness at node 2 (0: T1)"},
+                   {"T3", 2, E, 0, false, {}, "thickness at node 3 (0: T1)"},
+                   {"T4", 3, E, 0, false, {}, "thickness at node 4 (0: T1)"},
+                   {"NLOC", 4, E, 0, false, {nonzero(1102, "reference-surface offsets")}, "reference surface"},
+                   {"MAREA", 5, E, 0, false, {nonzero(1102, "non-structural mass")}, "non-structural mass"},
+                   {"IDOF", 6, E, 0, false, {nonzero(1102, "thickness-stretch degrees of freedom")}, "thickness stretch"},
+                   {"EDGSET", 7, E, 0, false, {nonzero(1102, "edge sets")}, "edge set"},
+               }, "named by SECID; missing: error 1316"}},
+               ""});
+  t.push_back({{"SECTION_BEAM"}, F, false,
+               {{"card 1", 8, 10, per_field, {
+                   {"SECID", 0, I, 0, false, {}, "section id (the cards are then named by it in messages; defined twice: error 1200)"},
+                   {"ELFORM", 1, I, 1, true, {outside(1, 3, 1102, "beam formulation %v; only ELFORM 1 (Hughes-Liu), 2 (Belytschko-Schwer) and 3 (truss)")}, "beam formulation"},
+                   shear_factor("shear factor in (0, 1] (5/6 for a rectangle)"),
+                   {"QR/IRID", 3, E, 2, true, {below(0, 1102, "user-defined integration rules (*INTEGRATION_BEAM); rules 1-5"),
+                                               not_whole(-kInf, 5, 1003, "quadrature rule 1-5")}, "quadrature rule"},
+                   {"CST", 4, I, 0, false, {outside(0, 1, 1102, "cross section %v; only 0 (rectangular) and 1 (tubular)")}, "cross section: 0 rectangular, 1 tubular"},
+                   {"SCOOR", 5, E, 0, false, {nonzero(1102, "cross-section location options")}, "cross-section location"},
+                   {"NSM", 6, E, 0, false, {nonzero(1102, "non-structural mass")}, "non-structural mass"},
+               }, ""},
+                {"card 2", 8, 10, per_field, {
+                   checked_after({"TS1", 0, E, 0, false, {below(0, 1251)}, "s thickness or diameter at node 1"}, 3),
+                   {"TS2", 1, E, 0, false, {}, "at node 2 (0: TS1)"},
+                   checked_after({"TT1", 2, E, 0, false, {below(0, 1251)}, "t thickness or diameter at node 1"}, 3),
+                   {"TT2", 3, E, 0, false, {}, "at node 2 (0: TT1)"},
+                   {"NSLOC", 4, E, 0, false, {nonzero(1102, "reference-axis offsets")}, "reference axis"},
+                   {"NTLOC", 5, E, 0, false, {nonzero(1102, "reference-axis offsets")}, "reference axis"},
+               }, "ELFORM 1"},
+                {"card 2", 8, 10, per_field, {
+                   checked_after({"A", 0, E, 0, false, {outside(0, kInf, 1251, "the area must be positive", true)}, "area"}, 4),
+                   checked_after({"ISS", 1, E, 0, false, {outside(0, kInf, 1251, nullptr, true)}, "moment of inertia about s"}, 4),
+                   checked_after({"ITT", 2, E, 0, false, {outside(0, kInf, 1251, nullptr, true)}, "moment of inertia about t"}, 4),
+                   checked_after({"J", 3, E, 0, false, {below(0, 1251)}, "torsional constant"}, 4),
+                   {"SA", 4, E, 0, false, {}, "shear area"},
+                   {"IST", 5, E, 0, false, {nonzero(1102, "a product of inertia (unsymmetric sections)")}, "product of inertia"},
+               }, "ELFORM 2"},
+                {"card 2", 8, 10, per_field, {
+                   {"A", 0, E, 0, false, {outside(0, kInf, 1251, "the truss area must be positive", true)}, "area"},
+                   {"RAMPT", 1, E, 0, false, {nonzero(1102, "initial stress ramps")}, "stress ramp time"},
+                   {"STRESS", 2, E, 0, false, {nonzero(1102, "initial stress")}, "initial stress"},
+               }, "ELFORM 3"}},
+               "card 2 by ELFORM (another ELFORM: as 1), named by SECID; missing: error 1316"});
+  t.push_back({{"HOURGLASS"}, F, false,
+               {{"", 8, 10, per_field, {
+                   {"HGID", 0, I, 0, false, {}, "hourglass id (the card is then named by it in messages; defined twice: error 1200)"},
+                   checked_after({"IHQ", 1, I, 0, false, {inside(6, 10, 1102, "hourglass type %v (IMPACT-3D has 0 control default, 1 viscous, 2/3 Flanagan-Belytschko viscous, 4/5 stiffness)"),
+                                                          outside(0, 5, 1006, "0 (control default), 1 viscous, 2/3 Flanagan-Belytschko viscous, 4/5 stiffness")}, "hourglass type (0: the control value)"}, 5),
+                   checked_after({"QM", 2, E, 0.1, false, {below(0, 1220)}, "hourglass coefficient (0: the control value)"}, 5),
+                   plain("IBQ", 3, I),
+                   checked_after({"Q1", 4, E, 1.5, false, {below(0, 1220)}, "quadratic bulk viscosity (blank: *CONTROL_BULK_VISCOSITY)"}, 5),
+                   {"Q2", 5, E, 0.06, false, {below(0, 1220)}, "linear bulk viscosity (blank: *CONTROL_BULK_VISCOSITY)"},
+               }, ""}},
+               "one card"});
+  return t;
+}
+
+// LCID of a load: required (a load without a curve does nothing).
+KeywordField load_curve(int index) {
+  return {"LCID", index, I, 0, false, {inside(0, 0, 1003, "a load curve (*DEFINE_CURVE) is required")}, "load curve"};
+}
+KeywordField scale_factor(int index) { return {"SF", index, E, 1.0, false, {}, "scale factor of the curve"}; }
+
+// *LOAD_NODE_POINT / _SET, *LOAD_RIGID_BODY: ID DOF LCID SF CID M1 M2 M3
+KeywordSpec load_node(const char* name, const char* id, const char* id_meaning) {
+  return {{name}, KeywordFamily::loads, false,
+          {{"", 8, 10, per_field, {
+              {id, 0, I, 0, false, {}, id_meaning},
+              {"DOF", 1, I, 0, false, {inside(4, 4, 1102, "follower forces"), inside(8, 8, 1102, "follower moments"),
+                                       inside(5, 7, 1102, "moments (solid nodes have no rotations)"), outside(1, 8, 1006, "1 x, 2 y, 3 z")},
+               "1 x, 2 y, 3 z (along the axes of CID)"},
+              load_curve(2),
+              scale_factor(3),
+              {"CID", 4, I, 0, false, {}, "coordinate system of DOF (0: global)"},
+              plain("M1/M2/M3", 5, I), plain("M1/M2/M3", 6, I), plain("M1/M2/M3", 7, I),
+          }, "each card ([ID card] with _ID)"}},
+          ""};
+}
+
+// *BOUNDARY_PRESCRIBED_MOTION_NODE / _SET / _RIGID: ID DOF VAD LCID SF VID DEATH BIRTH.  DOF
+// 9-11 (and VAD 4) take LS-DYNA's card 2 (OFFSET1 OFFSET2 LRB NODE1 NODE2), skipped.
+KeywordSpec prescribed_motion(const char* name, const char* id, bool rigid) {
+  std::vector<KeywordCheck> dof;
+  dof.push_back(inside(-4, -4, 1102, "motion along a vector with the normal plane held (DOF -4)"));
+  if (rigid) {
+    dof.push_back(inside(4, 4, 1102, "rigid-body motion along a vector"));
+    dof.push_back(inside(5, 8, 1102, "prescribed rotations of rigid bodies"));
+    dof.push_back(outside(1, 3, 1006, "1 x, 2 y, 3 z"));
+  } else {
+    dof.push_back(inside(4, 4, 0, nullptr));  // along the vector VID
+    dof.push_back(inside(5, 8, 1102, "rotations (solid nodes have no rotations)"));
+    dof.push_back(inside(9, 11, 1102, "motion of nodes rotating about an axis through (OFFSET1, OFFSET2) (DOF 9-11; its card 2 is skipped)"));
+    dof.push_back(inside(-11, -9, 1102, "motion of nodes rotating about an axis through (OFFSET1, OFFSET2) (DOF 9-11; its card 2 is skipped)"));
+    dof.push_back(outside(-4, 11, 1006, "1 x, 2 y, 3 z"));
+    dof.push_back(outside(1, 3, 1102, "1 x, 2 y, 3 z"));
+  }
+  return {{name}, KeywordFamily::loads, false,
+          {{"", 8, 10, per_field, {
+              {id, 0, I, 0, false, {}, rigid ? "part (a *MAT_RIGID part)" : "node or node set"},
+              {"DOF", 1, I, 0, false, std::move(dof), rigid ? "1 x, 2 y, 3 z" : "1 x, 2 y, 3 z, 4 along VID"},
+              {"VAD", 2, I, 0, false, {inside(3, 3, 1102, "velocity as a function of displacement"), inside(4, 4, 1102, "relative displacement"),
+                                       outside(0, 2, 1006, "0 velocity, 1 acceleration, 2 displacement")}, "0 velocity, 1 acceleration, 2 displacement"},
+              load_curve(3),
+              scale_factor(4),
+              {"VID", 5, I, 0, false, {}, "*DEFINE_VECTOR of DOF 4 (required with it: error 1003)"},
+              {"DEATH", 6, E, 0, false, {}, "death time (0: none; before BIRTH: error 1003)"},
+              {"BIRTH", 7, E, 0, false, {}, "birth time"},
+          }, "each motion ([ID card] with _ID; card 2 after it with |DOF| 9-11 or VAD 4, missing: error 1316)"}},
+          ""};
+}
+
+std::vector<KeywordSpec> loads_specs() {
+  const KeywordFamily F = KeywordFamily::loads;
+  std::vector<KeywordSpec> t;
+  t.push_back(load_node("LOAD_NODE_POINT", "NID", "node"));
+  t.push_back(load_node("LOAD_NODE_SET", "NSID", "node set"));
+  t.push_back(load_node("LOAD_RIGID_BODY", "PID", "part (a *MAT_RIGID part)"));
+  t.push_back({{"LOAD_SEGMENT"}, F, false,
+               {{"", 8, 10, per_field, {
+                   load_curve(0),
+                   scale_factor(1),
+                   {"AT", 2, E, 0, false, {}, "arrival time (the pressure acts from AT on)"},
+                   {"N1", 3, I, 0, false, {}, "segment nodes (N4 0: a triangle)"},
+                   {"N2", 4, I, 0, false, {}, ""},
+                   {"N3", 5, I, 0, false, {}, ""},
+                   {"N4", 6, I, 0, false, {}, ""},
+                   {"N5", 7, I, 0, false, {nonzero(1102, "higher-order (8-node) segments")}, "higher-order segments"},
+               }, "each card ([ID card] with _ID)"}},
+               ""});
+  t.push_back({{"LOAD_SEGMENT_SET"}, F, false,
+               {{"", 8, 10, per_field, {
+                   {"SSID", 0, I, 0, false, {}, "segment set"},
+                   load_curve(1),
+                   scale_factor(2),
+                   {"AT", 3, E, 0, false, {}, "arrival time"},
+                   {"DT", 4, E, 0, false, {}, "death time (0: none)"},
+               }, "each card ([ID card] with _ID)"}},
+               ""});
+  const KeywordCardLayout body_card1{"card 1", 8, 10, per_field, {
+      load_curve(0),
+      scale_factor(1),
+      {"LCIDDR", 2, I, 0, false, {nonzero(2006, "no dynamic relaxation")}, "dynamic relaxation curve"},
+      plain("XC/YC/ZC", 3, E), plain("XC/YC/ZC", 4, E), plain("XC/YC/ZC", 5, E),
+      {"CID", 6, I, 0, false, {}, "coordinate system of the direction (0: global)"},
+  }, "required (missing: error 1316)"};
+  t.push_back({{"LOAD_BODY_X", "LOAD_BODY_Y", "LOAD_BODY_Z"}, F, false, {body_card1}, ""});
+  t.push_back({{"LOAD_BODY_VECTOR"}, F, false,
+               {body_card1,
+                {"card 2", 8, 10, per_field, {
+                   {"V1", 0, E, 0, false, {}, "direction (normalised; zero: error 1003)"},
+                   {"V2", 1, E, 0, false, {}, ""},
+                   {"V3", 2, E, 0, false, {}, ""},
+               }, "required (missing: error 1316)"}},
+               ""});
+  t.push_back({{"LOAD_BODY_PARTS"}, F, true,
+               {{"card 1", 1, 10, per_field, {
+                   {"PSID", 0, I, 0, false, {}, "part set the body loads act on"},
+               }, "when given"}},
+               ""});
+  t.push_back({{"DAMPING_GLOBAL"}, F, true,
+               {{"card 1", 8, 10, per_field, {
+                   {"LCID", 0, I, 0, false, {}, "curve of the damping constant (0: VALDMP)"},
+                   {"VALDMP", 1, E, 0, false, {below(0, 1003, "the damping constant must not be negative")}, "damping constant"},
+                   {"STX", 2, E, 0, false, {below(0, 1003, "a scale factor must not be negative")}, "factors per axis (all six 0: all 1)"},
+                   {"STY", 3, E, 0, false, {below(0, 1003, "a scale factor must not be negative")}, ""},
+                   {"STZ", 4, E, 0, false, {below(0, 1003, "a scale factor must not be negative")}, ""},
+                   {"SRX", 5, E, 0, false, {below(0, 1003, "a scale factor must not be negative")}, "rotations (shells: not damped, warning 2006)"},
+                   {"SRY", 6, E, 0, false, {below(0, 1003, "a scale factor must not be negative")}, ""},
+                   {"SRZ", 7, E, 0, false, {below(0, 1003, "a scale factor must not be negative")}, ""},
+               }, "when given"}},
+               ""});
+  t.push_back(prescribed_motion("BOUNDARY_PRESCRIBED_MOTION_NODE", "NID", false));
+  t.push_back(prescribed_motion("BOUNDARY_PRESCRIBED_MOTION_SET", "NSID", false));
+  t.push_back(prescribed_motion("BOUNDARY_PRESCRIBED_MOTION_RIGID", "PID", true));
+  return t;
 }
 
 std::vector<KeywordSpec> control_database_specs() {
@@ -181,6 +405,7 @@ bool KeywordCheck::fires(double v) const {
     case outside: return !((lo_open ? v > lo : v >= lo) && (hi_open ? v < hi : v <= hi));
     case inside: return v >= lo && v <= hi;
     case neither: return v != lo && v != hi;
+    case not_whole: return !(v == std::floor(v) && v >= lo && v <= hi);
   }
   return false;
 }
@@ -194,6 +419,7 @@ std::string KeywordCheck::text() const {
       return std::string("not in ") + (lo_open ? "(" : "[") + number(lo) + ", " + number(hi) + (hi_open ? ")" : "]");
     case inside: return lo == hi ? number(lo) : number(lo) + " to " + number(hi);
     case neither: return "not " + number(lo) + " or " + number(hi);
+    case not_whole: return lo == -kInf ? "not a whole number <= " + number(hi) : "not a whole number >= " + number(lo);
   }
   return {};
 }
@@ -204,14 +430,24 @@ const KeywordField& KeywordCardLayout::field(std::string_view name) const {
   throw std::logic_error("keyword card table: no field " + std::string(name));
 }
 
-const KeywordCardLayout& KeywordSpec::card(std::string_view label) const {
+int KeywordCardLayout::check_point(const KeywordField& f) const {
+  if (f.checked_after >= 0) return f.checked_after;
+  return order == CheckOrder::after_card && !fields.empty() ? fields.back().index : f.index;
+}
+
+const KeywordCardLayout& KeywordSpec::card(std::string_view label, std::string_view when) const {
   for (const KeywordCardLayout& c : cards)
-    if (label == c.card) return c;
+    if (label == c.card && (when.empty() || when == c.when)) return c;
   throw std::logic_error(std::string("keyword card table: ") + names.front() + " has no " + std::string(label));
 }
 
 const std::vector<KeywordSpec>& all_keyword_specs() {
-  static const std::vector<KeywordSpec> t = control_database_specs();
+  static const std::vector<KeywordSpec> t = [] {
+    std::vector<KeywordSpec> all = parts_sections_specs();
+    for (KeywordSpec& s : loads_specs()) all.push_back(std::move(s));
+    for (KeywordSpec& s : control_database_specs()) all.push_back(std::move(s));
+    return all;
+  }();
   return t;
 }
 
@@ -242,9 +478,17 @@ std::string keyword_tables_markdown() {
            << " | " << number(f.blank) << (f.zero_is_blank ? " (also for 0)" : "") << " | " << f.meaning << " | ";
         for (std::size_t k = 0; k < f.checks.size(); ++k) {
           const KeywordCheck& ch = f.checks[k];
+          if (ch.id == 0) {
+            os << (k ? "; " : "") << ch.text() << ": accepted";
+            continue;
+          }
           const MessageDef& m = message_def(ch.id);
           os << (k ? "; " : "") << ch.text() << ": " << (m.severity == Severity::error ? "error " : "warning ") << ch.id;
-          if (ch.detail) os << " (" << ch.detail << ")";
+          if (ch.detail) {
+            std::string d = ch.detail;
+            if (const std::size_t p = d.find("%v"); p != std::string::npos) d.replace(p, 2, "N");
+            os << " (" << d << ")";
+          }
         }
         os << " |\n";
       }

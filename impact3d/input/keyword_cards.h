@@ -19,12 +19,14 @@
 namespace impact3d {
 
 // A check on a field's value (blank and 0 already replaced as the field says): when it holds,
-// message `id` names the field, with `detail` ("%v" in it: the value, as an integer).
+// message `id` names the field, with `detail` ("%v" in it: the value, as an integer); id 0:
+// the value is accepted (the checks after it are not tried).
 struct KeywordCheck {
   enum Test {
     outside,   // v not in the interval [lo, hi] (lo_open / hi_open: that end excluded)
     inside,    // v in [lo, hi] (a refused range of values)
     neither,   // v is neither lo nor hi
+    not_whole, // v is not a whole number in [lo, hi]
   };
   Test test;
   double lo, hi;
@@ -43,6 +45,8 @@ struct KeywordField {
   bool zero_is_blank;  // 0 stands for the blank value (LS-DYNA's "0: default")
   std::vector<KeywordCheck> checks;  // the first that holds gives its message
   const char* meaning;               // one line for the tables
+  int checked_after = -1;            // the checks run once the field at this position is read
+                                     // (-1: this field; the card's CheckOrder)
 };
 
 // When the checks of a card run: each right after its field is read, or all after every
@@ -55,12 +59,16 @@ struct KeywordCardLayout {
   int width;          // columns of a field in standard format (20 in long format)
   CheckOrder order;
   std::vector<KeywordField> fields;
-  const char* when;   // when the card is read ("" always; else e.g. "when given")
+  const char* when;   // when the card is read ("" always; else e.g. "when given", "ELFORM 2")
   const KeywordField& field(std::string_view name) const;  // every name a reader asks for exists
+  // The position after whose reading the checks of field f run.
+  int check_point(const KeywordField& f) const;
 };
 
 // The families of keywords (one reader file each, keyword_<family>.cpp).
 enum class KeywordFamily {
+  parts_sections,    // *PART, *SECTION_..., *HOURGLASS (keyword_parts_sections.cpp)
+  loads,             // *LOAD_..., *BOUNDARY_PRESCRIBED_MOTION_..., *DAMPING_GLOBAL (keyword_loads_bcs.cpp)
   control_database,  // *CONTROL_..., *DATABASE_... (keyword_control_database.cpp)
   ignored,           // read and ignored, warning 2008 with the note (keyword_control_database.cpp)
 };
@@ -71,7 +79,7 @@ struct KeywordSpec {
   bool once;                       // given again: warning 2010, the last one is used
   std::vector<KeywordCardLayout> cards;
   const char* note;                // one line for the page ("" none)
-  const KeywordCardLayout& card(std::string_view label) const;
+  const KeywordCardLayout& card(std::string_view label, std::string_view when = {}) const;
 };
 
 // The entry of a keyword (upper case, options stripped), or nullptr if no table has it.

@@ -15,7 +15,7 @@ void read_termination(const Block& b, KeywordContext& ctx, const KeywordSpec& s,
     ctx.missing_card(b, "card 1 (ENDTIM)");
     return;
   }
-  const KeywordValues v = ctx.values(b, 0, s.card(""));
+  KeywordValues v = ctx.values(b, 0, s.card(""));
   c.end_time = v["ENDTIM"];
   if (v.passed("ENDCYC")) c.end_cycle = int(v.integer("ENDCYC"));
   c.dtmin = v["DTMIN"];
@@ -23,7 +23,7 @@ void read_termination(const Block& b, KeywordContext& ctx, const KeywordSpec& s,
   if (c.endmas >= 1e8) c.endmas = 0;  // LS-DYNA's default 1e8: no limit
 }
 
-void read_timestep(const KeywordValues& v, KeywordControls& c) {
+void read_timestep(KeywordValues& v, KeywordControls& c) {
   c.dtinit = v["DTINIT"];
   c.tssfac = v["TSSFAC"];
   c.dt2ms = v["DT2MS"];
@@ -43,7 +43,7 @@ void read_ascii_database(const std::string& n, double dt, KeywordControls& c) {
 // The cards of one keyword of the family (b.data is not empty).
 void read_cards(const Block& b, KeywordContext& ctx, const KeywordSpec& s, KeywordControls& c) {
   const std::string& n = b.name;
-  const KeywordValues v = ctx.values(b, 0, s.cards.front());
+  KeywordValues v = ctx.values(b, 0, s.cards.front());
   if (n == "CONTROL_TIMESTEP") {
     read_timestep(v, c);
   } else if (n == "CONTROL_CONTACT") {

@@ -3,12 +3,90 @@
 // its keywords' cards by their tables (keyword_cards.h) into its records, and builds its part
 // of the Model from them once the whole deck is read.
 
+#include <array>
+#include <map>
 #include <string>
+#include <vector>
 
 #include "impact3d/input/keyword_blocks.h"
 #include "impact3d/model/model.h"
 
 namespace impact3d::kw {
+
+// ---------------------------------------------------------------- parts and sections
+// (keyword_parts_sections.cpp)
+// *SECTION_BEAM
+struct RBeamSection {
+  BeamSectionData sec;
+  Ref ref;
+};
+// *SECTION_SHELL
+struct RShellSection {
+  int nip = 2;
+  double shrf = 1.0;
+  std::array<double, 4> t{};
+  Ref ref;
+};
+struct RPart {
+  int pid = 0, secid = 0, mid = 0, eosid = 0, hgid = 0;
+  std::string title;
+  Ref ref, sec_ref, mid_ref, eos_ref, hg_ref;
+  int line = 0;
+};
+struct RSection {
+  int elform = 1;
+  Ref ref;
+};
+struct RHourglass {
+  int ihq = 0;
+  double qm = 0, q1 = 0, q2 = 0;
+  bool q1_blank = true, q2_blank = true;
+  Ref ref, ihq_ref;
+};
+
+struct KeywordParts {
+  std::vector<RPart> parts;  // in deck order
+  std::map<int, RSection> sections;
+  std::map<int, RShellSection> shell_sections;
+  std::map<int, RBeamSection> beam_sections;
+  std::map<int, RHourglass> hourglasses;
+};
+
+// Reads *PART, *SECTION_SOLID / _SHELL / _BEAM and *HOURGLASS into p; false if the keyword is
+// none of them.
+bool read_parts_sections(const Block& b, KeywordContext& ctx, KeywordParts& p);
+
+// ---------------------------------------------------------------- loads and prescribed motions
+// (keyword_loads_bcs.cpp)
+struct RLoad {            // one load or prescribed-motion card, resolved after sets and curves
+  enum Kind { node, node_set, segment, segment_set, body, rigid_body, motion_node, motion_set, motion_rigid } kind = node;
+  std::string keyword;    // as written
+  int id = 0;             // node, set or part id
+  Ref ref;
+  int dof = 0;            // 1-3: x y z
+  MotionKind vad = MotionKind::velocity;
+  int lcid = 0;
+  Ref lc_ref;
+  double sf = 1, birth = 0, death = 1e28;
+  std::array<int, 4> nodes{};     // *LOAD_SEGMENT
+  std::array<Ref, 4> node_refs{};
+  std::array<double, 3> dir{};    // *LOAD_BODY_*
+  int cid = 0, vid = 0;           // local system of DOF (loads), vector of DOF 4 (motions)
+  Ref cid_ref, vid_ref;
+};
+
+struct KeywordLoads {
+  std::vector<RLoad> loads;  // in deck order
+  RLoad damping;             // *DAMPING_GLOBAL (lcid, sf = VALDMP, dir = STX STY STZ)
+  bool damping_given = false, damping_rotations = false;
+  int body_parts_psid = 0;   // *LOAD_BODY_PARTS
+  Ref body_parts_ref;
+};
+
+// Reads *LOAD_NODE_POINT / _SET, *LOAD_RIGID_BODY, *LOAD_SEGMENT (_SET), *LOAD_BODY_X / _Y / _Z
+// / _VECTOR / _PARTS, *DAMPING_GLOBAL and *BOUNDARY_PRESCRIBED_MOTION_NODE / _SET / _RIGID into
+// l; false if the keyword is none of them.
+bool read_loads(const Block& b, KeywordContext& ctx, KeywordLoads& l);
 
 // ---------------------------------------------------------------- control and database cards
 // (keyword_control_database.cpp)

@@ -108,27 +108,6 @@ struct RBeam {
   const DeckFile* file = nullptr;
 };
 // *SECTION_BEAM
-struct RBeamSection {
-  BeamSectionData sec;
-  Ref ref;
-};
-// *SECTION_SHELL
-struct RShellSection {
-  int nip = 2;
-  double shrf = 1.0;
-  std::array<double, 4> t{};
-  Ref ref;
-};
-struct RPart {
-  int pid = 0, secid = 0, mid = 0, eosid = 0, hgid = 0;
-  std::string title;
-  Ref ref, sec_ref, mid_ref, eos_ref, hg_ref;
-  int line = 0;
-};
-struct RSection {
-  int elform = 1;
-  Ref ref;
-};
 struct RMat {
   const MaterialType* type = nullptr;  // material_types.h
   MaterialData md;                     // type, rho and the type's parameters
@@ -140,12 +119,6 @@ struct REos {  // *EOS_... (material/eos.h)
   EosData eos;
   Ref ref;
   Ref lcid_ref;  // form 6: the LCID field
-};
-struct RHourglass {
-  int ihq = 0;
-  double qm = 0, q1 = 0, q2 = 0;
-  bool q1_blank = true, q2_blank = true;
-  Ref ref, ihq_ref;
 };
 // One card of a *SET_..._GENERAL (OPTION E1-E7, continued by cards of 8 more ids), or the
 // member sets of a *SET_..._ADD (option "SET"): applied in deck order, a "D" option removes.
@@ -257,22 +230,6 @@ struct RWeld {            // *CONSTRAINED_SPOTWELD or *CONSTRAINED_GENERALIZED_W
   double sn = 0, ss = 0, n = 0, m = 0, tfail = 0;
   Ref ref, ref2, cid_ref;    // N1 (NSID), N2, CID
 };
-struct RLoad {            // one load or prescribed-motion card, resolved after sets and curves
-  enum Kind { node, node_set, segment, segment_set, body, rigid_body, motion_node, motion_set, motion_rigid } kind = node;
-  std::string keyword;    // as written
-  int id = 0;             // node, set or part id
-  Ref ref;
-  int dof = 0;            // 1-3: x y z
-  MotionKind vad = MotionKind::velocity;
-  int lcid = 0;
-  Ref lc_ref;
-  double sf = 1, birth = 0, death = 1e28;
-  std::array<int, 4> nodes{};     // *LOAD_SEGMENT
-  std::array<Ref, 4> node_refs{};
-  std::array<double, 3> dir{};    // *LOAD_BODY_*
-  int cid = 0, vid = 0;           // local system of DOF (loads), vector of DOF 4 (motions)
-  Ref cid_ref, vid_ref;
-};
 struct RHistory {
   bool solid = false;
   bool shell = false;  // *DATABASE_HISTORY_SHELL (_ID): shell ids
@@ -317,18 +274,19 @@ class KeywordReader {
   // raw records
   std::vector<RNode, HugePageAllocator<RNode>> nodes_;
   std::vector<RElem, HugePageAllocator<RElem>> elems_;
-  std::vector<RPart> parts_;
-  std::map<int, RSection> sections_;
-  std::map<int, RShellSection> shell_sections_;
+  KeywordParts ps_;  // parts, sections, hourglass (keyword_parts_sections.cpp)
+  std::vector<RPart>& parts_ = ps_.parts;
+  std::map<int, RSection>& sections_ = ps_.sections;
+  std::map<int, RShellSection>& shell_sections_ = ps_.shell_sections;
   std::vector<RShell> shells_;
   std::vector<std::vector<int>> part_shells_;  // per part: its shells (indices into Model::shell_nodes)
-  std::map<int, RBeamSection> beam_sections_;
+  std::map<int, RBeamSection>& beam_sections_ = ps_.beam_sections;
   std::vector<RBeam> beams_;
   std::vector<std::vector<int>> part_beams_;  // per part: its beams (indices into Model::beam_nodes)
   std::vector<std::pair<int, int>> node_rc_;  // *NODE RC: node id, rotation bits
   std::map<int, RMat> mats_;
   std::map<int, std::pair<ErosionData, Ref>> erosion_;  // *MAT_ADD_EROSION by MID
-  std::map<int, RHourglass> hourglasses_;
+  std::map<int, RHourglass>& hourglasses_ = ps_.hourglasses;
   std::map<int, REos> eos_;                   // EOSID -> equation of state (material/eos.h)
   std::map<int, std::string> unsupported_eosids_;  // EOSID -> the refused *EOS keyword, line
   std::map<int, RIdList> node_sets_, part_sets_;
@@ -341,11 +299,13 @@ class KeywordReader {
   std::vector<RSpc> spcs_;
   std::vector<RWeld> welds_;
   std::vector<RHistory> histories_;
-  std::vector<RLoad> loads_;
-  RLoad damping_;                        // *DAMPING_GLOBAL (lcid, sf = VALDMP, dir = STX STY STZ)
-  bool damping_given_ = false, damping_rotations_ = false;
-  int body_parts_psid_ = 0;              // *LOAD_BODY_PARTS
-  Ref body_parts_ref_;
+  KeywordLoads ld_;  // loads, prescribed motions, damping (keyword_loads_bcs.cpp)
+  std::vector<RLoad>& loads_ = ld_.loads;
+  RLoad& damping_ = ld_.damping;
+  bool& damping_given_ = ld_.damping_given;
+  bool& damping_rotations_ = ld_.damping_rotations;
+  int& body_parts_psid_ = ld_.body_parts_psid;
+  Ref& body_parts_ref_ = ld_.body_parts_ref;
   std::map<int, RIdList> solid_sets_, shell_sets_;  // shell sets: read, kept for shell elements
   std::map<int, RBox> boxes_;
   std::vector<RCoordSystem> coord_defs_;  // resolved into coords_ once the nodes are known
@@ -378,7 +338,15 @@ class KeywordReader {
   std::set<int> initially_elastic_;  // part ids
   Ref rotational_ref_;
 
-  KeywordContext ctx_{diag_, params_, {}};
+  // the families' shared state; ids they define get their file's *INCLUDE_TRANSFORM offset by
+  // kind: n nodes, e elements, p parts, m materials, s sets, f curves, d boxes and systems,
+  // r sections, hourglass and EOS
+  KeywordContext ctx_{diag_, params_, {}, [this](int id, const Block& b, char kind) {
+                        return xid(id, b, kind == 'n' ? &IncludeTransform::idnoff : kind == 'e' ? &IncludeTransform::ideoff
+                                            : kind == 'p' ? &IncludeTransform::idpoff : kind == 'm' ? &IncludeTransform::idmoff
+                                            : kind == 's' ? &IncludeTransform::idsoff : kind == 'f' ? &IncludeTransform::idfoff
+                                            : kind == 'd' ? &IncludeTransform::iddoff : &IncludeTransform::idroff);
+                      }};
   KeywordControls ctl_;  // control and database cards
 
   // ---------------------------------------------------------------- pass 1: blocks
@@ -881,7 +849,7 @@ class KeywordReader {
   }
 
   // Option cards (_ID / _TITLE) at the start of a block: returns the number of lines used.
-  std::size_t skip_option_card(const Block& b) { return (b.title_opt || b.id_opt) && !b.data.empty() ? 1 : 0; }
+  static std::size_t skip_option_card(const Block& b) { return option_cards(b); }
 
   // Strips the _TITLE / _ID options the supported keywords know.
   static std::string base_name(const std::string& n, bool& title, bool& id) {
@@ -938,6 +906,8 @@ class KeywordReader {
       }
       if (parse_structure_keyword(b)) continue;  // sets, boxes, coordinate systems, histories
       if (read_control_database(b, ctx_, ctl_)) continue;  // keyword_control_database.cpp
+      if (read_parts_sections(b, ctx_, ps_)) continue;      // keyword_parts_sections.cpp
+      if (read_loads(b, ctx_, ld_)) continue;               // keyword_loads_bcs.cpp
       if (n == "TITLE") {
         for (const KLine& l : b.data) {
           m_.title = rtrim(l.line->text.substr(0, std::min<std::size_t>(80, l.line->text.size())));
@@ -947,27 +917,14 @@ class KeywordReader {
         parse_node(b);
       } else if (n == "ELEMENT_SOLID") {
         parse_element_solid(b);
-      } else if (n == "PART") {
-        parse_part(b);
-      } else if (n == "SECTION_SOLID") {
-        parse_section(b);
       } else if (const MaterialType* mt = find_material_type_by_keyword(n)) {
         parse_mat(b, *mt);
       } else if (n == "ELEMENT_SHELL" || n == "ELEMENT_SHELL_THICKNESS") {
         parse_element_shell(b, n == "ELEMENT_SHELL_THICKNESS");
-      } else if (n == "SECTION_SHELL") {
-        parse_section_shell(b);
       } else if (n == "ELEMENT_BEAM" || n == "ELEMENT_BEAM_THICKNESS") {
         parse_element_beam(b, n == "ELEMENT_BEAM_THICKNESS");
-      } else if (n == "SECTION_BEAM") {
-        parse_section_beam(b);
       } else if (const EosForm* ef = find_eos_form_by_keyword(n)) {
         parse_eos(b, *ef);
-      } else if (n == "HOURGLASS") {
-        parse_hourglass(b);
-      } else if (n == "DAMPING_GLOBAL") {
-        ctx_.once(b);
-        parse_damping_global(b);
       } else if (n == "MAT_ADD_EROSION") {
         parse_mat_add_erosion(b);
       } else if (n == "INITIAL_VELOCITY") {
@@ -1000,23 +957,6 @@ class KeywordReader {
         parse_contact(b, false, true);
       } else if (n == "DEFINE_CURVE") {
         parse_curve(b);
-      } else if (n == "LOAD_NODE_POINT" || n == "LOAD_NODE_SET" || n == "LOAD_RIGID_BODY") {
-        parse_load_node(b, n == "LOAD_NODE_SET" ? RLoad::node_set : n == "LOAD_RIGID_BODY" ? RLoad::rigid_body : RLoad::node);
-      } else if (n == "LOAD_SEGMENT" || n == "LOAD_SEGMENT_SET") {
-        parse_load_segment(b, n == "LOAD_SEGMENT_SET");
-      } else if (n == "LOAD_BODY_X" || n == "LOAD_BODY_Y" || n == "LOAD_BODY_Z" || n == "LOAD_BODY_VECTOR") {
-        parse_load_body(b, n.back() == 'X' ? 0 : n.back() == 'Y' ? 1 : n.back() == 'Z' ? 2 : 3);
-      } else if (n == "LOAD_BODY_PARTS") {
-        ctx_.once(b);
-        if (!b.data.empty()) {
-          KCard c = card(b, 0, "card 1", W(b, 1));
-          body_parts_psid_ = xid(int(c.i(0, "PSID")), b, &IncludeTransform::idsoff);
-          body_parts_ref_ = c.ref(0);
-        }
-      } else if (n == "BOUNDARY_PRESCRIBED_MOTION_NODE" || n == "BOUNDARY_PRESCRIBED_MOTION_SET" ||
-                 n == "BOUNDARY_PRESCRIBED_MOTION_RIGID") {
-        parse_prescribed_motion(b, n == "BOUNDARY_PRESCRIBED_MOTION_NODE" ? RLoad::motion_node
-                                   : n == "BOUNDARY_PRESCRIBED_MOTION_SET" ? RLoad::motion_set : RLoad::motion_rigid);
       } else {
         unsupported_.push_back(&b);
         // remember the ids that unsupported material and section keywords define, so that a
@@ -1224,52 +1164,6 @@ class KeywordReader {
     }
   }
 
-  void parse_part(const Block& b) {
-    // pairs of cards: heading, then PID SECID MID EOSID HGID GRAV ADPOPT TMID
-    std::size_t k = 0;
-    while (k < b.data.size()) {
-      std::string title = rtrim(b.data[k].line->text.substr(0, std::min<std::size_t>(80, b.data[k].line->text.size())));
-      if (k + 1 >= b.data.size()) {
-        if (!is_blank(b.data[k].line->text)) ctx_.missing_card(b, "card 2 (PID SECID MID ...)");
-        break;
-      }
-      KCard c = card(b, k + 1, "card 2", W(b, 8));
-      RPart p;
-      p.title = title;
-      p.pid = int(c.i(0, "PID"));
-      c.set_card(b.keyword + " part " + std::to_string(p.pid));
-      p.secid = int(c.i(1, "SECID"));
-      p.mid = int(c.i(2, "MID"));
-      p.eosid = int(c.i(3, "EOSID"));
-      p.hgid = int(c.i(4, "HGID"));
-      if (c.i(5, "GRAV") != 0) c.error(1102, 5, "GRAV", "body forces");
-      c.i(6, "ADPOPT");
-      if (c.i(7, "TMID") != 0) c.error(1102, 7, "TMID", "thermal materials");
-      p.ref = c.ref(0);
-      p.sec_ref = c.ref(1);
-      p.mid_ref = c.ref(2);
-      p.eos_ref = c.ref(3);
-      p.hg_ref = c.ref(4);
-      p.line = c.line();
-      parts_.push_back(p);
-      k += 2;
-    }
-  }
-
-  void parse_section(const Block& b) {
-    for (std::size_t k = skip_option_card(b); k < b.data.size(); ++k) {
-      KCard c = card(b, k, "", W(b, 3));
-      int id = xid(int(c.i(0, "SECID")), b, &IncludeTransform::idroff);
-      RSection s;
-      s.elform = int(c.i(1, "ELFORM", 1));
-      s.ref = c.ref(1);
-      if (sections_.count(id)) c.error(1200, 0, "SECID", "also defined at " + at(sections_[id].ref));
-      sections_[id] = s;
-      if (c.i(2, "AET") != 0) c.error(1102, 2, "AET", "ambient element types");
-      break;  // ELFORM 1 has one card; anything after belongs to other ELFORMs
-    }
-  }
-
   // ---- shells (Belytschko-Tsay): *ELEMENT_SHELL(_THICKNESS), *SECTION_SHELL, *CONTROL_SHELL
 
   void parse_element_shell(const Block& b, bool thickness) {
@@ -1313,51 +1207,6 @@ class KeywordReader {
       if (e.id < 1) { c.error(1201, 0, "EID", "element ids must be positive"); continue; }
       if (ok) shells_.push_back(e);
     }
-  }
-
-  void parse_section_shell(const Block& b) {
-    std::size_t k = skip_option_card(b);
-    if (k >= b.data.size()) { ctx_.missing_card(b, "card 1"); return; }
-    KCard c = card(b, k, "card 1", W(b, 8));
-    const int id = int(c.i(0, "SECID"));
-    c.set_card(b.keyword + " " + std::to_string(id));
-    RShellSection sec;
-    sec.ref = c.ref(0);
-    // ELFORM 2 (Belytschko-Tsay, LS-DYNA's default: blank or 0 reads as 2) only
-    const long long elform = c.i(1, "ELFORM", 2);
-    if (elform != 2 && elform != 0)
-      c.error(1102, 1, "ELFORM", "shell formulation " + std::to_string(elform) + "; only ELFORM 2 (Belytschko-Tsay)");
-    sec.shrf = c.r(2, "SHRF", 1.0);
-    if (sec.shrf == 0) sec.shrf = 1.0;  // LS-DYNA: 0 -> 1
-    if (!(sec.shrf > 0 && sec.shrf <= 1)) c.error(1003, 2, "SHRF", "shear factor in (0, 1] (5/6 for isotropic shells)");
-    const double nip = c.r(3, "NIP", 2);
-    sec.nip = nip == 0 ? 2 : int(nip);
-    if (nip != std::floor(nip) || nip < 0) c.error(1003, 3, "NIP", "integration points 1-10");
-    else if (nip > 10) c.error(1102, 3, "NIP", "more than 10 Gauss points (user-defined integration rules)");
-    c.r(4, "PROPT");  // output option: no effect
-    if (c.r(5, "QR/IRID") != 0) c.error(1102, 5, "QR/IRID", "user-defined and trapezoidal integration rules (Gauss only)");
-    if (c.i(6, "ICOMP") != 0) c.error(1102, 6, "ICOMP", "composite layups");
-    c.r(7, "SETYP");
-    if (k + 1 >= b.data.size()) {
-      ctx_.missing_card(b, "card 2 (T1 T2 T3 T4 NLOC MAREA IDOF EDGSET)");
-    } else {
-      KCard c2 = card(b, k + 1, "card 2", W(b, 8));
-      c2.set_card(b.keyword + " " + std::to_string(id));
-      for (int j = 0; j < 4; ++j) {
-        const std::string f = "T" + std::to_string(j + 1);
-        sec.t[std::size_t(j)] = c2.r(j, f.c_str());
-      }
-      // LS-DYNA: T2-T4 default to T1
-      for (int j = 1; j < 4; ++j)
-        if (sec.t[std::size_t(j)] == 0) sec.t[std::size_t(j)] = sec.t[0];
-      if (sec.t[0] < 0) c2.error(1241, 0, "T1");
-      if (c2.r(4, "NLOC") != 0) c2.error(1102, 4, "NLOC", "reference-surface offsets");
-      if (c2.r(5, "MAREA") != 0) c2.error(1102, 5, "MAREA", "non-structural mass");
-      if (c2.r(6, "IDOF") != 0) c2.error(1102, 6, "IDOF", "thickness-stretch degrees of freedom");
-      if (c2.r(7, "EDGSET") != 0) c2.error(1102, 7, "EDGSET", "edge sets");
-    }
-    if (shell_sections_.count(id) || sections_.count(id)) c.error(1200, 0, "SECID", "section also defined earlier");
-    shell_sections_[id] = sec;
   }
 
   // ---- beams (Hughes-Liu, truss): *ELEMENT_BEAM(_THICKNESS), *SECTION_BEAM
@@ -1405,75 +1254,6 @@ class KeywordReader {
       if (e.id < 1) { c.error(1201, 0, "EID", "element ids must be positive"); continue; }
       if (ok) beams_.push_back(e);
     }
-  }
-
-  // *SECTION_BEAM: card 1 SECID ELFORM SHRF QR/IRID CST SCOOR NSM; card 2 (ELFORM 1) TS1 TS2
-  // TT1 TT2 NSLOC NTLOC, (ELFORM 3) A RAMPT STRESS.
-  void parse_section_beam(const Block& b) {
-    std::size_t k = skip_option_card(b);
-    if (k >= b.data.size()) { ctx_.missing_card(b, "card 1"); return; }
-    KCard c = card(b, k, "card 1", W(b, 8));
-    const int id = int(c.i(0, "SECID"));
-    c.set_card(b.keyword + " " + std::to_string(id));
-    RBeamSection r;
-    r.ref = c.ref(0);
-    BeamSectionData& sec = r.sec;
-    sec.line = c.line();
-    const long long elform = c.i(1, "ELFORM", 1);
-    sec.elform = elform == 0 ? 1 : int(elform);
-    if (sec.elform < 1 || sec.elform > 3)
-      c.error(1102, 1, "ELFORM", "beam formulation " + std::to_string(sec.elform) + "; only ELFORM 1 (Hughes-Liu), 2 (Belytschko-Schwer) and 3 (truss)");
-    sec.shrf = c.r(2, "SHRF", 1.0);
-    if (sec.shrf == 0) sec.shrf = 1.0;  // LS-DYNA: 0 -> 1
-    if (!(sec.shrf > 0 && sec.shrf <= 1)) c.error(1003, 2, "SHRF", "shear factor in (0, 1] (5/6 for a rectangle)");
-    const double qr = c.r(3, "QR/IRID", 2.0);
-    sec.qr = qr == 0 ? 2 : int(qr);
-    if (qr < 0) c.error(1102, 3, "QR/IRID", "user-defined integration rules (*INTEGRATION_BEAM); rules 1-5");
-    else if (qr != std::floor(qr) || qr > 5) c.error(1003, 3, "QR/IRID", "quadrature rule 1-5");
-    const long long cst = c.i(4, "CST");
-    if (cst == 0 || cst == 1) sec.cst = cst == 0 ? BeamCrossSection::rectangular : BeamCrossSection::tubular;
-    else c.error(1102, 4, "CST", "cross section " + std::to_string(cst) + "; only 0 (rectangular) and 1 (tubular)");
-    if (c.r(5, "SCOOR") != 0) c.error(1102, 5, "SCOOR", "cross-section location options");
-    if (c.r(6, "NSM") != 0) c.error(1102, 6, "NSM", "non-structural mass");
-    if (k + 1 >= b.data.size() || is_keyword_line(b.data[k + 1].line->text)) {
-      ctx_.missing_card(b, sec.elform == 3   ? "card 2 (A RAMPT STRESS)"
-                      : sec.elform == 2 ? "card 2 (A ISS ITT J SA IST)"
-                                        : "card 2 (TS1 TS2 TT1 TT2 NSLOC NTLOC)");
-    } else {
-      KCard c2 = card(b, k + 1, "card 2", W(b, 8));
-      c2.set_card(b.keyword + " " + std::to_string(id));
-      if (sec.elform == 2) {
-        sec.area = c2.r(0, "A");
-        sec.iss = c2.r(1, "ISS");
-        sec.itt = c2.r(2, "ITT");
-        sec.jt = c2.r(3, "J");
-        sec.sa = c2.r(4, "SA");
-        if (!(sec.area > 0)) c2.error(1251, 0, "A", "the area must be positive");
-        if (!(sec.iss > 0)) c2.error(1251, 1, "ISS");
-        if (!(sec.itt > 0)) c2.error(1251, 2, "ITT");
-        if (sec.jt < 0) c2.error(1251, 3, "J");
-        if (c2.r(5, "IST") != 0) c2.error(1102, 5, "IST", "a product of inertia (unsymmetric sections)");
-      } else if (sec.elform == 3) {
-        sec.area = c2.r(0, "A");
-        if (!(sec.area > 0)) c2.error(1251, 0, "A", "the truss area must be positive");
-        if (c2.r(1, "RAMPT") != 0) c2.error(1102, 1, "RAMPT", "initial stress ramps");
-        if (c2.r(2, "STRESS") != 0) c2.error(1102, 2, "STRESS", "initial stress");
-      } else {
-        sec.ts1 = c2.r(0, "TS1");
-        sec.ts2 = c2.r(1, "TS2");
-        sec.tt1 = c2.r(2, "TT1");
-        sec.tt2 = c2.r(3, "TT2");
-        if (sec.ts2 == 0) sec.ts2 = sec.ts1;  // IMPACT-3D: a blank node-2 size is node 1's
-        if (sec.tt2 == 0) sec.tt2 = sec.tt1;
-        if (sec.ts1 < 0) c2.error(1251, 0, "TS1");
-        if (sec.tt1 < 0) c2.error(1251, 2, "TT1");
-        if (c2.r(4, "NSLOC") != 0) c2.error(1102, 4, "NSLOC", "reference-axis offsets");
-        if (c2.r(5, "NTLOC") != 0) c2.error(1102, 5, "NTLOC", "reference-axis offsets");
-      }
-    }
-    if (beam_sections_.count(id) || shell_sections_.count(id) || sections_.count(id))
-      c.error(1200, 0, "SECID", "section also defined earlier");
-    beam_sections_[id] = r;
   }
 
   // *CONTROL_SHELL: card 1 WRPANG ESORT IRNXX ISTUPD THEORY BWC MITER PROJ; card 2 ROTASCL
@@ -1587,33 +1367,6 @@ class KeywordReader {
       while (k < curves_.size() && curves_[k].number != lc) ++k;
       if (k < curves_.size()) md.eos.c[kEosLeakCurve] = double(k + 1);
       else err(1310, it->second.lcid_ref, "*EOS " + std::to_string(p.eosid), "LCID", "*DEFINE_CURVE " + std::to_string(lc) + " is not defined");
-    }
-  }
-
-  void parse_hourglass(const Block& b) {
-    for (std::size_t k = skip_option_card(b); k < b.data.size(); ++k) {
-      KCard c = card(b, k, "", W(b, 8));
-      int id = xid(int(c.i(0, "HGID")), b, &IncludeTransform::idroff);
-      c.set_card(b.keyword + " " + std::to_string(id));
-      RHourglass h;
-      h.ref = c.ref(0);
-      h.ihq = int(c.i(1, "IHQ"));
-      h.ihq_ref = c.ref(1);
-      h.qm = c.r(2, "QM", 0.1);
-      c.i(3, "IBQ");
-      h.q1_blank = c.blank(4);
-      h.q2_blank = c.blank(5);
-      h.q1 = c.r(4, "Q1", 1.5);
-      h.q2 = c.r(5, "Q2", 0.06);
-      // LS-DYNA knows IHQ 0-10: the types IMPACT-3D lacks are not supported, not invalid
-      if (h.ihq >= 6 && h.ihq <= 10) c.error(1102, 1, "IHQ", "hourglass type " + std::to_string(h.ihq) + " (IMPACT-3D has 0 control default, 1 viscous, 2/3 Flanagan-Belytschko viscous, 4/5 stiffness)");
-      else if (h.ihq < 0 || h.ihq > 5) c.error(1006, 1, "IHQ", "0 (control default), 1 viscous, 2/3 Flanagan-Belytschko viscous, 4/5 stiffness");
-      if (h.qm < 0) c.error(1220, 2, "QM");
-      if (h.q1 < 0) c.error(1220, 4, "Q1");
-      if (h.q2 < 0) c.error(1220, 5, "Q2");
-      if (hourglasses_.count(id)) c.error(1200, 0, "HGID", "also defined at " + at(hourglasses_[id].ref));
-      hourglasses_[id] = h;
-      break;
     }
   }
 
@@ -2515,104 +2268,6 @@ class KeywordReader {
 
   // Data cards of a load keyword: with the _ID option each definition is an ID card followed
   // by its data card (several pairs may follow one keyword).
-  std::vector<std::size_t> load_data_cards(const Block& b) {
-    std::vector<std::size_t> out;
-    const std::size_t step = b.id_opt ? 2 : 1;
-    for (std::size_t k = b.id_opt ? 1 : skip_option_card(b); k < b.data.size(); k += step)
-      if (!is_blank(b.data[k].line->text)) out.push_back(k);
-    return out;
-  }
-
-  // LCID of a load card: required (a load without a curve does nothing)
-  void read_load_curve_field(const Block& b, KCard& c, int f, RLoad& l) {
-    l.lcid = xid(int(c.i(f, "LCID")), b, &IncludeTransform::idfoff);
-    l.lc_ref = c.ref(f);
-    if (l.lcid == 0) c.error(1003, f, "LCID", "a load curve (*DEFINE_CURVE) is required");
-  }
-
-  // *LOAD_NODE_POINT / _SET: NID|NSID DOF LCID SF CID M1 M2 M3; *LOAD_RIGID_BODY: PID DOF LCID SF CID M1 M2 M3
-  void parse_load_node(const Block& b, RLoad::Kind kind) {
-    const char* idf = kind == RLoad::node ? "NID" : kind == RLoad::node_set ? "NSID" : "PID";
-    for (std::size_t k : load_data_cards(b)) {
-      KCard c = card(b, k, "", W(b, 8));
-      RLoad l;
-      l.kind = kind;
-      l.keyword = upper(b.keyword);
-      l.id = xid(int(c.i(0, idf)), b, kind == RLoad::node ? &IncludeTransform::idnoff : kind == RLoad::node_set ? &IncludeTransform::idsoff : &IncludeTransform::idpoff);
-      l.ref = c.ref(0);
-      l.dof = int(c.i(1, "DOF"));
-      if (l.dof >= 4 && l.dof <= 8) c.error(1102, 1, "DOF", l.dof == 4 ? "follower forces" : l.dof == 8 ? "follower moments" : "moments (solid nodes have no rotations)");
-      else if (l.dof < 1 || l.dof > 8) c.error(1006, 1, "DOF", "1 x, 2 y, 3 z");
-      read_load_curve_field(b, c, 2, l);
-      l.sf = c.r(3, "SF", 1.0);
-      l.cid = xid(int(c.i(4, "CID")), b, &IncludeTransform::iddoff);  // DOF along that system's axis
-      l.cid_ref = c.ref(4);
-      for (int f = 5; f < 8; ++f) c.i(f, "M1/M2/M3");
-      loads_.push_back(l);
-    }
-  }
-
-  // *LOAD_SEGMENT: LCID SF AT N1 N2 N3 N4 (N5..N8 of higher-order faces refused);
-  // *LOAD_SEGMENT_SET: SSID LCID SF AT DT
-  void parse_load_segment(const Block& b, bool set) {
-    for (std::size_t k : load_data_cards(b)) {
-      KCard c = card(b, k, "", W(b, 8));
-      RLoad l;
-      l.kind = set ? RLoad::segment_set : RLoad::segment;
-      l.keyword = upper(b.keyword);
-      const int o = set ? 1 : 0;
-      if (set) {
-        l.id = xid(int(c.i(0, "SSID")), b, &IncludeTransform::idsoff);
-        l.ref = c.ref(0);
-      }
-      read_load_curve_field(b, c, o, l);
-      l.sf = c.r(o + 1, "SF", 1.0);
-      l.birth = c.r(o + 2, "AT");
-      if (set) {
-        double dt = c.r(4, "DT");
-        if (dt > 0) l.death = dt;
-      } else {
-        const char* names[] = {"N1", "N2", "N3", "N4"};
-        for (int q = 0; q < 4; ++q) {
-          l.nodes[std::size_t(q)] = xid(int(c.i(3 + q, names[q])), b, &IncludeTransform::idnoff);
-          l.node_refs[std::size_t(q)] = c.ref(3 + q);
-        }
-        if (l.nodes[3] == 0) l.nodes[3] = l.nodes[2];  // a triangle
-        if (c.i(7, "N5") != 0) c.error(1102, 7, "N5", "higher-order (8-node) segments");
-      }
-      loads_.push_back(l);
-    }
-  }
-
-  // *LOAD_BODY_X / _Y / _Z: LCID SF LCIDDR XC YC ZC CID; *LOAD_BODY_VECTOR: the same, then V1 V2 V3
-  void parse_load_body(const Block& b, int axis) {
-    if (b.data.empty()) { ctx_.missing_card(b, "card 1 (LCID)"); return; }
-    KCard c = card(b, 0, "card 1", W(b, 8));
-    RLoad l;
-    l.kind = RLoad::body;
-    l.keyword = upper(b.keyword);
-    l.ref = c.ref(0);
-    read_load_curve_field(b, c, 0, l);
-    l.sf = c.r(1, "SF", 1.0);
-    if (c.i(2, "LCIDDR") != 0) c.error(2006, 2, "LCIDDR", "no dynamic relaxation");
-    for (int f = 3; f < 6; ++f) c.r(f, "XC/YC/ZC");
-    l.cid = xid(int(c.i(6, "CID")), b, &IncludeTransform::iddoff);  // the direction in that system
-    l.cid_ref = c.ref(6);
-    if (axis < 3) {
-      l.dir[std::size_t(axis)] = 1;
-    } else if (b.data.size() < 2) {
-      ctx_.missing_card(b, "card 2 (V1 V2 V3)");
-      return;
-    } else {
-      KCard c2 = card(b, 1, "card 2", W(b, 8));
-      l.dir = {c2.r(0, "V1"), c2.r(1, "V2"), c2.r(2, "V3")};
-      const double len = std::sqrt(l.dir[0] * l.dir[0] + l.dir[1] * l.dir[1] + l.dir[2] * l.dir[2]);
-      if (!(len > 0)) { c2.error(1003, 0, "V1", "the direction V1 V2 V3 must not be zero"); return; }
-      for (double& a : l.dir) a /= len;
-    }
-    loads_.push_back(l);
-  }
-
   // *MAT_ADD_EROSION: card 1 MID EXCL MXPRES MNEPS EFFEPS VOLEPS NUMFIP NCS, card 2 MNPRES SIGP1
   // SIGVM MXEPS EPSSH SIGTH IMPULSE FAILTM; Tuler-Butcher and the damage cards (3 on) are not
   // supported.  A value equal to EXCL switches its criterion off.
@@ -2655,89 +2310,6 @@ class KeywordReader {
     }
     if (erosion_.count(mid)) c.error(1200, 0, "MID", "*MAT_ADD_EROSION of this material also given at " + at(erosion_[mid].second));
     erosion_[mid] = {e, c.ref(0)};
-  }
-
-  // *DAMPING_GLOBAL: LCID VALDMP STX STY STZ SRX SRY SRZ (all six factors 0: all 1, as LS-DYNA)
-  void parse_damping_global(const Block& b) {
-    if (b.data.empty()) return;  // a card of defaults: no damping
-    KCard c = card(b, 0, "card 1", W(b, 8));
-    damping_ = RLoad();
-    damping_.kind = RLoad::body;
-    damping_.keyword = upper(b.keyword);
-    damping_.lcid = xid(int(c.i(0, "LCID")), b, &IncludeTransform::idfoff);
-    damping_.lc_ref = c.ref(0);
-    damping_.ref = c.ref(0);
-    damping_.sf = c.r(1, "VALDMP");
-    if (damping_.sf < 0) c.error(1003, 1, "VALDMP", "the damping constant must not be negative");
-    static const char* names[6] = {"STX", "STY", "STZ", "SRX", "SRY", "SRZ"};
-    double f[6];
-    bool any = false;
-    for (int k = 0; k < 6; ++k) {
-      f[k] = c.r(2 + k, names[k]);
-      if (f[k] < 0) c.error(1003, 2 + k, names[k], "a scale factor must not be negative");
-      any = any || f[k] != 0;
-    }
-    if (!any) for (double& x : f) x = 1;
-    damping_.dir = {f[0], f[1], f[2]};
-    if (f[3] != 0 || f[4] != 0 || f[5] != 0) damping_rotations_ = true;
-    damping_given_ = damping_.lcid != 0 || damping_.sf > 0;
-  }
-
-  // *BOUNDARY_PRESCRIBED_MOTION_NODE / _SET / _RIGID: per motion [the _ID card], card 1 ID DOF
-  // VAD LCID SF VID DEATH BIRTH, and card 2 (OFFSET1 OFFSET2 LRB NODE1 NODE2) when |DOF| is
-  // 9-11 or VAD is 4, as LS-DYNA reads them: a refused DOF or VAD still takes its card 2, so the
-  // next motion is read from the card it starts on.
-  void parse_prescribed_motion(const Block& b, RLoad::Kind kind) {
-    const std::size_t id_cards = b.id_opt ? 1 : 0;
-    std::size_t k = b.id_opt ? 1 : skip_option_card(b);
-    while (k < b.data.size()) {
-      std::size_t next = k + 1 + id_cards;
-      if (!is_blank(b.data[k].line->text) && read_prescribed_motion(b, k, kind)) {
-        if (k + 1 >= b.data.size()) ctx_.missing_card(b, "card 2 (OFFSET1 OFFSET2 LRB NODE1 NODE2), read with |DOF| 9-11 or VAD 4");
-        ++next;
-      }
-      k = next;
-    }
-  }
-
-  // Whether a motion with these DOF and VAD has LS-DYNA's card 2 (OFFSET1 OFFSET2 LRB NODE1 NODE2).
-  static bool motion_has_card2(long long dof, long long vad) {
-    return (dof >= 9 && dof <= 11) || (dof >= -11 && dof <= -9) || vad == 4;
-  }
-
-  // Card 1 of a prescribed motion at data card k; true when card 2 follows it.
-  bool read_prescribed_motion(const Block& b, std::size_t k, RLoad::Kind kind) {
-    const char* idf = kind == RLoad::motion_node ? "NID" : kind == RLoad::motion_set ? "NSID" : "PID";
-    KCard c = card(b, k, "", W(b, 8));
-    RLoad l;
-    l.kind = kind;
-    l.keyword = upper(b.keyword);
-    l.id = xid(int(c.i(0, idf)), b, kind == RLoad::motion_node ? &IncludeTransform::idnoff : kind == RLoad::motion_set ? &IncludeTransform::idsoff : &IncludeTransform::idpoff);
-    l.ref = c.ref(0);
-    l.dof = int(c.i(1, "DOF"));
-    if (l.dof == -4) c.error(1102, 1, "DOF", "motion along a vector with the normal plane held (DOF -4)");
-    else if (l.dof == 4 && kind == RLoad::motion_rigid) c.error(1102, 1, "DOF", "rigid-body motion along a vector");
-    else if (l.dof == 4) {}
-    else if (l.dof >= 5 && l.dof <= 8) c.error(1102, 1, "DOF", kind == RLoad::motion_rigid ? "prescribed rotations of rigid bodies" : "rotations (solid nodes have no rotations)");
-    else if (motion_has_card2(l.dof, 0) && kind != RLoad::motion_rigid) c.error(1102, 1, "DOF", "motion of nodes rotating about an axis through (OFFSET1, OFFSET2) (DOF 9-11; its card 2 is skipped)");
-    else if (l.dof < 1 || l.dof > 3) c.error(kind == RLoad::motion_rigid || l.dof < -4 || l.dof > 11 ? 1006 : 1102, 1, "DOF", "1 x, 2 y, 3 z");
-    const long long vad = c.i(2, "VAD");
-    if (vad == 0) l.vad = MotionKind::velocity;
-    else if (vad == 1) l.vad = MotionKind::acceleration;
-    else if (vad == 2) l.vad = MotionKind::displacement;
-    else if (vad == 3 || vad == 4) c.error(1102, 2, "VAD", vad == 3 ? "velocity as a function of displacement" : "relative displacement");
-    else c.error(1006, 2, "VAD", "0 velocity, 1 acceleration, 2 displacement");
-    read_load_curve_field(b, c, 3, l);
-    l.sf = c.r(4, "SF", 1.0);
-    l.vid = xid(int(c.i(5, "VID")), b, &IncludeTransform::iddoff);  // the direction of DOF 4 (*DEFINE_VECTOR)
-    l.vid_ref = c.ref(5);
-    if (l.dof == 4 && l.vid == 0) c.error(1003, 5, "VID", "DOF 4 moves along a vector: VID (*DEFINE_VECTOR) is required");
-    const double death = c.r(6, "DEATH");
-    l.death = death > 0 ? death : 1e28;
-    l.birth = c.r(7, "BIRTH");
-    if (l.death < l.birth) c.error(1003, 6, "DEATH", "the death time comes before the birth time");
-    loads_.push_back(l);
-    return motion_has_card2(l.dof, vad);
   }
 
   void parse_curve(const Block& b) {

@@ -1,0 +1,219 @@
+// Keyword decks: the loads (*LOAD_NODE_POINT / _SET, *LOAD_RIGID_BODY, *LOAD_SEGMENT (_SET),
+// *LOAD_BODY_...), *DAMPING_GLOBAL and the prescribed motions (*BOUNDARY_PRESCRIBED_MOTION_...),
+// read by their tables (keyword_cards.cpp) into load records that the reader resolves once the
+// sets, curves and coordinate systems are known.
+
+#include "impact3d/input/keyword_families.h"
+
+#include <cmath>
+
+namespace impact3d::kw {
+
+namespace {
+
+// The data cards of a load keyword: every card, or with _ID every second one after its ID card.
+std::vector<std::size_t> load_data_cards(const Block& b) {
+  std::vector<std::size_t> out;
+  const std::size_t step = b.id_opt ? 2 : 1;
+  for (std::size_t k = b.id_opt ? 1 : option_cards(b); k < b.data.size(); k += step)
+    if (!is_blank(b.data[k].line->text)) out.push_back(k);
+  return out;
+}
+
+// LCID of a load card (required: checked by the table)
+void read_load_curve(const Block& b, KeywordContext& ctx, KeywordValues& v, RLoad& l) {
+  l.lcid = ctx.xid(int(v.integer("LCID")), b, 'f');
+  l.lc_ref = v.ref("LCID");
+}
+
+// A load or motion of a node, set or part: its id (field idf, id kind for the include offset)
+// and DOF, read from the card's first two fields.
+RLoad load_record(const Block& b, KeywordContext& ctx, KeywordValues& v, RLoad::Kind kind, const char* idf, char id_kind) {
+  RLoad l;
+  l.kind = kind;
+  l.keyword = upper(b.keyword);
+  l.id = ctx.xid(int(v.integer(idf)), b, id_kind);
+  l.ref = v.ref(idf);
+  l.dof = int(v.integer("DOF"));
+  return l;
+}
+
+// *LOAD_NODE_POINT / _SET: NID|NSID DOF LCID SF CID M1 M2 M3; *LOAD_RIGID_BODY: PID ...
+void read_load_node(const Block& b, KeywordContext& ctx, const KeywordSpec& s, RLoad::Kind kind, KeywordLoads& out) {
+  const char* idf = kind == RLoad::node ? "NID" : kind == RLoad::node_set ? "NSID" : "PID";
+  for (std::size_t k : load_data_cards(b)) {
+    KeywordValues v = ctx.fields(b, k, s.card(""));
+    RLoad l = load_record(b, ctx, v, kind, idf, kind == RLoad::node ? 'n' : kind == RLoad::node_set ? 's' : 'p');
+    read_load_curve(b, ctx, v, l);
+    l.sf = v["SF"];
+    l.cid = ctx.xid(int(v.integer("CID")), b, 'd');  // DOF along that system's axis
+    l.cid_ref = v.ref("CID");
+    v.rest();
+    out.loads.push_back(l);
+  }
+}
+
+// *LOAD_SEGMENT: LCID SF AT N1 N2 N3 N4 (N5..N8 of higher-order faces refused);
+// *LOAD_SEGMENT_SET: SSID LCID SF AT DT
+void read_load_segment(const Block& b, KeywordContext& ctx, const KeywordSpec& s, bool set, KeywordLoads& out) {
+  for (std::size_t k : load_data_cards(b)) {
+    KeywordValues v = ctx.fields(b, k, s.card(""));
+    RLoad l;
+    l.kind = set ? RLoad::segment_set : RLoad::segment;
+    l.keyword = upper(b.keyword);
+    if (set) {
+      l.id = ctx.xid(int(v.integer("SSID")), b, 's');
+      l.ref = v.ref("SSID");
+    }
+    read_load_curve(b, ctx, v, l);
+    l.sf = v["SF"];
+    l.birth = v["AT"];
+    if (set) {
+      const double dt = v["DT"];
+      if (dt > 0) l.death = dt;
+    } else {
+      static const char* const names[] = {"N1", "N2", "N3", "N4"};
+      for (std::size_t q = 0; q < 4; ++q) {
+        l.nodes[q] = ctx.xid(int(v.integer(names[q])), b, 'n');
+        l.node_refs[q] = v.ref(names[q]);
+      }
+      if (l.nodes[3] == 0) l.nodes[3] = l.nodes[2];  // a triangle
+      v.rest();
+    }
+    out.loads.push_back(l);
+  }
+}
+
+// *LOAD_BODY_X / _Y / _Z: LCID SF LCIDDR XC YC ZC CID; *LOAD_BODY_VECTOR: the same, then V1 V2 V3
+void read_load_body(const Block& b, KeywordContext& ctx, const KeywordSpec& s, int axis, KeywordLoads& out) {
+  if (b.data.empty()) {
+    ctx.missing_card(b, "card 1 (LCID)");
+    return;
+  }
+  KeywordValues v = ctx.fields(b, 0, s.card("card 1"));
+  RLoad l;
+  l.kind = RLoad::body;
+  l.keyword = upper(b.keyword);
+  l.ref = v.ref("LCID");
+  read_load_curve(b, ctx, v, l);
+  l.sf = v["SF"];
+  v.rest();
+  l.cid = ctx.xid(int(v.integer("CID")), b, 'd');  // the direction in that system
+  l.cid_ref = v.ref("CID");
+  if (axis < 3) {
+    l.dir[std::size_t(axis)] = 1;
+  } else if (b.data.size() < 2) {
+    ctx.missing_card(b, "card 2 (V1 V2 V3)");
+    return;
+  } else {
+    KeywordValues v2 = ctx.values(b, 1, s.card("card 2"));
+    l.dir = {v2["V1"], v2["V2"], v2["V3"]};
+    const double len = std::sqrt(l.dir[0] * l.dir[0] + l.dir[1] * l.dir[1] + l.dir[2] * l.dir[2]);
+    if (!(len > 0)) {
+      v2.error(1003, "V1", "the direction V1 V2 V3 must not be zero");
+      return;
+    }
+    for (double& a : l.dir) a /= len;
+  }
+  out.loads.push_back(l);
+}
+
+// *DAMPING_GLOBAL: LCID VALDMP STX STY STZ SRX SRY SRZ (all six factors 0: all 1, as LS-DYNA)
+void read_damping(const Block& b, KeywordContext& ctx, const KeywordSpec& s, KeywordLoads& out) {
+  if (b.data.empty()) return;  // a card of defaults: no damping
+  KeywordValues v = ctx.values(b, 0, s.card("card 1"));
+  RLoad& d = out.damping;
+  d = RLoad();
+  d.kind = RLoad::body;
+  d.keyword = upper(b.keyword);
+  d.lcid = ctx.xid(int(v.integer("LCID")), b, 'f');
+  d.lc_ref = v.ref("LCID");
+  d.ref = v.ref("LCID");
+  d.sf = v["VALDMP"];
+  static const char* const names[6] = {"STX", "STY", "STZ", "SRX", "SRY", "SRZ"};
+  double f[6];
+  bool any = false;
+  for (std::size_t k = 0; k < 6; ++k) {
+    f[k] = v[names[k]];
+    any = any || f[k] != 0;
+  }
+  if (!any)
+    for (double& x : f) x = 1;
+  d.dir = {f[0], f[1], f[2]};
+  if (f[3] != 0 || f[4] != 0 || f[5] != 0) out.damping_rotations = true;
+  out.damping_given = d.lcid != 0 || d.sf > 0;
+}
+
+// Whether a motion with these DOF and VAD has LS-DYNA's card 2 (OFFSET1 OFFSET2 LRB NODE1 NODE2).
+bool motion_has_card2(long long dof, long long vad) {
+  return (dof >= 9 && dof <= 11) || (dof >= -11 && dof <= -9) || vad == 4;
+}
+
+// Card 1 of a prescribed motion at data card k; true when card 2 follows it.
+bool read_motion(const Block& b, KeywordContext& ctx, const KeywordSpec& s, std::size_t k, RLoad::Kind kind,
+                 KeywordLoads& out) {
+  const char* idf = kind == RLoad::motion_node ? "NID" : kind == RLoad::motion_set ? "NSID" : "PID";
+  KeywordValues v = ctx.fields(b, k, s.card(""));
+  RLoad l = load_record(b, ctx, v, kind, idf, kind == RLoad::motion_node ? 'n' : kind == RLoad::motion_set ? 's' : 'p');
+  const long long vad = v.integer("VAD");
+  if (vad == 0) l.vad = MotionKind::velocity;
+  else if (vad == 1) l.vad = MotionKind::acceleration;
+  else if (vad == 2) l.vad = MotionKind::displacement;
+  read_load_curve(b, ctx, v, l);
+  l.sf = v["SF"];
+  l.vid = ctx.xid(int(v.integer("VID")), b, 'd');  // the direction of DOF 4 (*DEFINE_VECTOR)
+  l.vid_ref = v.ref("VID");
+  if (l.dof == 4 && l.vid == 0) v.error(1003, "VID", "DOF 4 moves along a vector: VID (*DEFINE_VECTOR) is required");
+  const double death = v["DEATH"];
+  l.death = death > 0 ? death : 1e28;
+  l.birth = v["BIRTH"];
+  if (l.death < l.birth) v.error(1003, "DEATH", "the death time comes before the birth time");
+  out.loads.push_back(l);
+  return motion_has_card2(l.dof, vad);
+}
+
+// *BOUNDARY_PRESCRIBED_MOTION_NODE / _SET / _RIGID: per motion [the _ID card], card 1, and card
+// 2 when |DOF| is 9-11 or VAD is 4, as LS-DYNA reads them: a refused DOF or VAD still takes its
+// card 2, so the next motion is read from the card it starts on.
+void read_motions(const Block& b, KeywordContext& ctx, const KeywordSpec& s, RLoad::Kind kind, KeywordLoads& out) {
+  const std::size_t id_cards = b.id_opt ? 1 : 0;
+  std::size_t k = b.id_opt ? 1 : option_cards(b);
+  while (k < b.data.size()) {
+    std::size_t next = k + 1 + id_cards;
+    if (!is_blank(b.data[k].line->text) && read_motion(b, ctx, s, k, kind, out)) {
+      if (k + 1 >= b.data.size()) ctx.missing_card(b, "card 2 (OFFSET1 OFFSET2 LRB NODE1 NODE2), read with |DOF| 9-11 or VAD 4");
+      ++next;
+    }
+    k = next;
+  }
+}
+
+}  // namespace
+
+bool read_loads(const Block& b, KeywordContext& ctx, KeywordLoads& l) {
+  const KeywordSpec* s = find_keyword_spec(b.name);
+  if (!s || s->family != KeywordFamily::loads) return false;
+  if (s->once) ctx.once(b);
+  const std::string& n = b.name;
+  if (n == "LOAD_NODE_POINT" || n == "LOAD_NODE_SET" || n == "LOAD_RIGID_BODY") {
+    read_load_node(b, ctx, *s, n == "LOAD_NODE_SET" ? RLoad::node_set : n == "LOAD_RIGID_BODY" ? RLoad::rigid_body : RLoad::node, l);
+  } else if (n == "LOAD_SEGMENT" || n == "LOAD_SEGMENT_SET") {
+    read_load_segment(b, ctx, *s, n == "LOAD_SEGMENT_SET", l);
+  } else if (n == "LOAD_BODY_PARTS") {
+    if (!b.data.empty()) {
+      KeywordValues v = ctx.values(b, 0, s->card("card 1"));
+      l.body_parts_psid = ctx.xid(int(v.integer("PSID")), b, 's');
+      l.body_parts_ref = v.ref("PSID");
+    }
+  } else if (n.rfind("LOAD_BODY_", 0) == 0) {
+    read_load_body(b, ctx, *s, n.back() == 'X' ? 0 : n.back() == 'Y' ? 1 : n.back() == 'Z' ? 2 : 3, l);
+  } else if (n == "DAMPING_GLOBAL") {
+    read_damping(b, ctx, *s, l);
+  } else {
+    read_motions(b, ctx, *s, n == "BOUNDARY_PRESCRIBED_MOTION_NODE" ? RLoad::motion_node
+                            : n == "BOUNDARY_PRESCRIBED_MOTION_SET" ? RLoad::motion_set : RLoad::motion_rigid, l);
+  }
+  return true;
+}
+
+}  // namespace impact3d::kw
