@@ -270,6 +270,18 @@ void init_beams(const Model& m, State& s) {
   bm.failed.assign(std::size_t(nb), 0);
   bm.newly_failed.clear();
   bm.newly_failed.reserve(std::size_t(nb));
+  // *MAT_SPOTWELD NF: room for each such beam's last NF resultant vectors
+  bool filtered = false;
+  for (const BeamGroup& g : bm.groups) filtered = filtered || (g.spot_weld && s.mats[std::size_t(g.material)].k[kSpotWeldNF] > 0);
+  bm.weld_res_start.assign(filtered ? std::size_t(nb) + 1 : 0, 0);
+  bm.weld_res_count.assign(filtered ? std::size_t(nb) : 0, 0);
+  if (filtered)
+    for (int b = 0; b < nb; ++b) {
+      const MaterialConstants& mc = s.mats[std::size_t(bm.mat[std::size_t(b)])];
+      const int nf = mc.type == 100 ? int(mc.k[kSpotWeldNF]) : 0;
+      bm.weld_res_start[std::size_t(b) + 1] = bm.weld_res_start[std::size_t(b)] + 6 * nf;
+    }
+  bm.weld_res.assign(filtered ? std::size_t(bm.weld_res_start[std::size_t(nb)]) : 0, 0.0);
   bm.rigid_elem.assign(std::size_t(nb), 0);
   bm.size.assign(std::size_t(nb), BeamSectionSize{});
   // geometry, masses, rotary inertias

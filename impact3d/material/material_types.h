@@ -153,9 +153,11 @@ struct MaterialType {
 };
 
 // Type 100 (*MAT_SPOTWELD, types/mat_spotweld.cpp): MaterialConstants::k holds the beams'
-// failure resultants NRR NRS NRT MRR MSS MTT (0: not used) from index kSpotWeldNRR on and the
-// failure time TFAIL (0: none) at kSpotWeldTFAIL.
-constexpr int kSpotWeldNRR = 0, kSpotWeldTFAIL = 6;
+// failure resultants NRR NRS NRT MRR MSS MTT (0: not used) from index kSpotWeldNRR on, the
+// failure time TFAIL (0: none) at kSpotWeldTFAIL and NF (the number of resultant vectors whose
+// mean the failure rule takes; 0: this cycle's alone) at kSpotWeldNF.
+constexpr int kSpotWeldNRR = 0, kSpotWeldTFAIL = 6, kSpotWeldNF = 7;
+constexpr int kSpotWeldMaxNF = 30;
 
 // E and nu, which every type has (keyword card 1 fields 2 and 3; fixed format where given).
 inline MaterialParam young_modulus_param(int fcard, int fcol) {

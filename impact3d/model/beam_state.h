@@ -58,6 +58,11 @@ struct BeamState {
   // failed in the last pass, in group order (the run log lists them)
   std::vector<std::uint8_t> failed;
   std::vector<int> newly_failed;
+  // *MAT_SPOTWELD NF > 0: per such beam its last NF resultant vectors (6 each; a ring, slot
+  // count % NF next) from weld_res_start[b] (nb + 1 entries; empty without such a group), and
+  // weld_res_count[b] the vectors stored so far; the failure rule takes their mean
+  std::vector<double> weld_res;
+  std::vector<int> weld_res_start, weld_res_count;
   std::vector<std::uint8_t> rigid_elem;       // 1: beam of a rigid material
   std::size_t corner_base = 0;                // beam b's end j: cfx[corner_base + 2 b + j]
   std::size_t moment_base = 0;                // ... and shells.cmx[moment_base + 2 b + j]

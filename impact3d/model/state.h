@@ -180,6 +180,7 @@ struct State {
     v(shells.wx); v(shells.wy); v(shells.wz); v(shells.rot_kinetic);
     v(beams.length); v(beams.e2); v(beams.sig); v(beams.eps_rr); v(beams.back); v(beams.eps_p); v(beams.yielded);
     v(beams.res); v(beams.bs); v(beams.dt_e); v(beams.energy); v(beams.failed);
+    v(beams.weld_res); v(beams.weld_res_count);
     v(rigid_of_node);
     for (RigidBody& rb : rigid) {
       v(rb.com); v(rb.vcom); v(rb.rot); v(rb.omega); v(rb.ang_mom); v(rb.released);

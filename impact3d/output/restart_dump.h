@@ -46,8 +46,9 @@ struct DumpHeader {
 // the header; 14: the beams (State::beams: lengths, section axes, stresses, history, resultants,
 // energies); 15: the beams' failure flags, the spot welds (rigid bodies' released flags, the
 // node-to-body map); 16: the viscous hourglass forms' resultants (State::hgs) and their pending
-// power (State::hg_pending, State::dt_vel).
-constexpr std::uint32_t kDumpVersion = 16;
+// power (State::hg_pending, State::dt_vel); 17: the spot-weld beams' stored resultants (NF,
+// BeamState::weld_res, weld_res_count).
+constexpr std::uint32_t kDumpVersion = 17;
 
 // Writes the dump atomically (temporary file, fsync, rename).  Throws std::runtime_error.
 // The contact state (energy books of the sliding interfaces) travels with the State.

@@ -129,6 +129,25 @@ double beam_time_step(double length, const MaterialConstants& mc) {
   return c > 0 ? length / c : std::numeric_limits<double>::infinity();
 }
 
+const double* filtered_weld_resultants(BeamState& bm, int b, double mean[6]) {
+  const std::size_t B = std::size_t(b);
+  const double* res = &bm.res[6 * B];
+  if (bm.weld_res_start.empty()) return res;
+  const int first = bm.weld_res_start[B], nf = (bm.weld_res_start[B + 1] - first) / 6;
+  if (nf == 0) return res;
+  double* ring = &bm.weld_res[std::size_t(first)];
+  int& count = bm.weld_res_count[B];
+  for (int i = 0; i < 6; ++i) ring[6 * (count % nf) + i] = res[i];
+  ++count;
+  const int stored = std::min(count, nf);
+  for (int i = 0; i < 6; ++i) {
+    double sum = 0;
+    for (int k = 0; k < stored; ++k) sum += ring[6 * k + i];  // slot order: the same bits on a restart
+    mean[i] = sum / stored;
+  }
+  return mean;
+}
+
 BeamPassResult calc_forces_for_beams(const Model& m, State& s) {
   (void)m;
   BeamPassResult out;
@@ -167,8 +186,10 @@ BeamPassResult calc_forces_for_beams(const Model& m, State& s) {
       if (g.spot_weld && dt > 0) {
         const std::size_t ip = std::size_t(bm.ip_start[B]);
         const int points = bm.ip_start[B + 1] - bm.ip_start[B];
-        if (spot_weld_beam_fails(s.mats[std::size_t(g.material)], &bm.res[6 * B], bm.eps_p.empty() ? nullptr : &bm.eps_p[ip],
-                                 points, s.time)) {
+        double mean[6];
+        const double* res = filtered_weld_resultants(bm, b, mean);
+        if (spot_weld_beam_fails(s.mats[std::size_t(g.material)], res, bm.eps_p.empty() ? nullptr : &bm.eps_p[ip], points,
+                                 s.time)) {
           bm.failed[B] = 1;
           bm.newly_failed.push_back(b);
         }

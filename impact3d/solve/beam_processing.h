@@ -26,6 +26,11 @@ BeamPassResult calc_forces_for_beams(const Model& m, State& s);
 // Q_s, Q_t, T, M_s, M_t), its section points' plastic strains (null: none) and the time.
 bool spot_weld_beam_fails(const MaterialConstants& mc, const double res[6], const double* eps_p, int points, double time);
 
+// The resultants the failure rule of spot-weld beam b takes: with NF > 0 (BeamState::weld_res),
+// this pass's vector joins the beam's ring of its last NF and their mean is written to mean
+// (returned); otherwise this pass's resultants (BeamState::res).
+const double* filtered_weld_resultants(BeamState& bm, int b, double mean[6]);
+
 // The beam's step: L / c, c = sqrt(E / rho) (the rotary inertia keeps the other modes slower).
 double beam_time_step(double length, const MaterialConstants& mc);
 

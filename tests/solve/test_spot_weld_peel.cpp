@@ -50,8 +50,9 @@ std::string fmt(const char* f, double a, double b = 0, double c = 0, double d = 
 }
 
 // The deck; weld: "beam" (*MAT_SPOTWELD) or "constraint" (*CONSTRAINED_SPOTWELD); dump_cycles:
-// *DATABASE_BINARY_D3DUMP (0: none).
-std::string peel_deck(const std::string& weld, double end_time, int dump_cycles = 0) {
+// *DATABASE_BINARY_D3DUMP (0: none); nf: the weld beam's NF (its failure rule on the mean of
+// its last NF resultant vectors).
+std::string peel_deck(const std::string& weld, double end_time, int dump_cycles = 0, int nf = 0) {
   std::ostringstream d;
   d << "*KEYWORD\n*TITLE\nspot-welded sheets pulled apart\n*CONTROL_TERMINATION\n" << fmt("%10.4g\n", end_time);
   d << "*DATABASE_BINARY_D3PLOT\n" << fmt("%10.4g\n", end_time / 6);
@@ -77,7 +78,7 @@ std::string peel_deck(const std::string& weld, double end_time, int dump_cycles 
     d << "*PART\nweld\n         2         2         2\n";
     d << "*SECTION_BEAM\n         2         1       1.0         2         0\n     0.005     0.005     0.005     0.005\n";
     d << "*MAT_SPOTWELD\n         2    7850.0   2.1e+11       0.3   5.0e+08       0.0       0.0       0.0\n";
-    d << "       0.0" << fmt("%10.4g", kFail) << "       0.0       0.0       0.0       0.0       0.0\n";
+    d << "       0.0" << fmt("%10.4g", kFail) << "       0.0       0.0       0.0       0.0       0.0" << fmt("%10.0f\n", nf);
     d << "*ELEMENT_BEAM\n" << fmt("%8.0f       2", 1000) << fmt("%8.0f%8.0f%8.0f\n", c0, c1, node_id(0, kN, kN / 2));
   } else {
     d << "*CONSTRAINED_SPOTWELD\n" << fmt("%10.0f%10.0f", c0, c1) << fmt("%10.4g       0.0       2.0       2.0\n", kFail);
@@ -225,12 +226,13 @@ TEST(SpotWeldPeel, FailureIsReportedOnce) {
 // with the beam weld, whose 1 mm length sets the step; cycle 3600 of about 7200 with the
 // constraint), before the weld fails (t_f = 10 ms), continues to the same bits: the plot database
 // (8-byte words) of the restarted run is the uninterrupted run's, byte for byte; the restarted
-// run reports the failure once.
+// run reports the failure once.  The weld beam filters its failure rule over its last 5
+// resultants (NF 5): the dump carries them.
 TEST(SpotWeldPeel, RestartBeforeTheFailureEndsWithTheSameBits) {
   for (const std::string weld : {"beam", "constraint"}) {
     SCOPED_TRACE(weld);
     const int dump_every = weld == "beam" ? 34000 : 3600;  // about half the run (6 ms)
-    const std::string deck = peel_deck(weld, 1.2 * kTf, dump_every);
+    const std::string deck = peel_deck(weld, 1.2 * kTf, dump_every, 5);  // (the beam's last 5 resultants in the dump)
     Read r = read_text(deck);
     ASSERT_TRUE(r.ok) << r.messages();
     const fs::path dir = fresh_dir("peel_restart_" + weld);

@@ -39,6 +39,13 @@ void derive(const MaterialData& d, const Model&, MaterialConstants& c) {
   if (d.fail_strain > 0) c.fail_strain = d.fail_strain;
   for (int i = 0; i < 6; ++i) c.k[std::size_t(kSpotWeldNRR + i)] = d.par[std::size_t(kNRR + i)];
   c.k[kSpotWeldTFAIL] = d.par[kTFAIL];
+  c.k[kSpotWeldNF] = d.par[kNF];
+}
+
+// NF: at most kSpotWeldMaxNF resultant vectors are kept (LS-DYNA's limit)
+void check(MaterialData& md, const MaterialType& t, const ParamReport& report) {
+  if (md.par[kNF] > kSpotWeldMaxNF)
+    report(*find_param(t, "NF"), 1003, "at most " + std::to_string(kSpotWeldMaxNF) + " resultant vectors are filtered");
 }
 
 std::string f6(double v) {
@@ -52,6 +59,7 @@ void echo(std::ostream& os, const MaterialData& md) {
   for (int i = 0; i < 6; ++i) resultants = resultants || md.par[std::size_t(kNRR + i)] > 0;
   echo_line(os, "beam failure rule", resultants ? "resultants (NRR NRS NRT MRR MSS MTT)" : md.fail_strain > 0 ? "plastic strain EFAIL" : "none");
   if (md.par[kTFAIL] > 0) echo_line(os, "failure time TFAIL", f6(md.par[kTFAIL]));
+  if (md.par[kNF] > 0) echo_line(os, "failure rule on the mean of the last NF resultants", std::to_string(int(md.par[kNF])));
 }
 
 MaterialParam force(const char* key, const char* label, int kfield, int fcol, int index) {
@@ -93,13 +101,14 @@ const MaterialType& mat_spotweld_type() {
         force("MRR", "torsional failure moment MRR", 4, 41, kMRR),
         force("MSS", "bending failure moment MSS", 5, 51, kMSS),
         force("MTT", "bending failure moment MTT", 6, 61, kMTT),
-        {.key = "NF", .kcard = 1, .kfield = 7, .index = kNF, .check = ParamCheck::unsupported,
-         .detail = "filtering of the failure forces (NF)"},
+        {.key = "NF", .fname = "filtered resultants NF", .kcard = 1, .kfield = 7, .fcard = 8, .fcol = 71, .index = kNF,
+         .check = ParamCheck::integer, .detail = "a whole number of resultant vectors, 0 to 30", .optional_write = true},
     };
     t.num_par = kNumPar;
     t.keyword_cards = 2;
     t.extra_card_feature = "the damage and failure option cards of *MAT_SPOTWELD";
     t.one_per_card = true;
+    t.check = check;
     t.derive = derive;
     t.echo = echo;
     t.solid = {HexKernel::deformable, update_point, update_block, true};
