@@ -8,9 +8,9 @@
 namespace impact3d::kw {
 
 KeywordValues::KeywordValues(const Block& b, std::size_t k, const KeywordCardLayout& layout, Diagnostics& diag,
-                             const ParamTable* params)
+                             const ParamTable* params, const std::string* label)
     : layout_(layout),
-      card_(b.data[k], b.keyword + (layout.card[0] ? std::string(" ") + layout.card : std::string()),
+      card_(b.data[k], b.keyword + (label ? " " + *label : layout.card[0] ? std::string(" ") + layout.card : std::string()),
             std::vector<int>(std::size_t(layout.count), b.long_fmt ? 20 : layout.width), diag) {
   card_.set_params(params);
   const std::size_t n = layout.fields.size();

@@ -354,8 +354,11 @@ inline std::string at(const Ref& r) {
 // card label (card().set_card renames it, e.g. once its id is read).
 class KeywordValues {
  public:
-  KeywordValues(const Block& b, std::size_t k, const KeywordCardLayout& layout, Diagnostics& diag, const ParamTable* params);
+  // label: the card's name after the keyword in messages (default: the table's card label)
+  KeywordValues(const Block& b, std::size_t k, const KeywordCardLayout& layout, Diagnostics& diag, const ParamTable* params,
+                const std::string* label = nullptr);
   double operator[](std::string_view name) { return value(index(name)); }
+  double nth(std::size_t k) { return value(k); }  // the table's k-th field (names that repeat)
   long long integer(std::string_view name) { return static_cast<long long>(value(index(name))); }
   bool blank(std::string_view name) const { return card_.blank(layout_.fields[index(name)].index); }
   // Read; no check of the table held for the field (its value may be used as it is).
@@ -378,6 +381,26 @@ class KeywordValues {
 // The option cards (_ID / _TITLE) at the start of a block: the number of lines they use.
 inline std::size_t option_cards(const Block& b) { return (b.title_opt || b.id_opt) && !b.data.empty() ? 1 : 0; }
 
+// An ID card (ID, HEADING) among the data cards of an _ID keyword, as ANSA and LS-PrePost
+// write several definitions under one keyword: the first card of the block, or an integer id
+// followed by blank columns or by a heading that starts with a letter in column 11 (a data
+// card has a number or a blank there).
+inline bool is_id_card(const Block& b, std::size_t k) {
+  if (!b.id_opt) return false;
+  std::size_t first = 0;
+  while (first < b.data.size() && is_blank(b.data[first].line->text)) ++first;
+  if (k == first) return true;
+  Diagnostics quiet;
+  KCard c(b.data[k], b.keyword, std::vector<int>(8, b.long_fmt ? 20 : 10), quiet);
+  long long id = 0;
+  if (parse_fortran_int(c.literal(0), id) != FieldStatus::ok) return false;
+  const std::string heading = c.literal(1);
+  if (!heading.empty()) return std::isalpha(static_cast<unsigned char>(heading[0])) != 0;
+  for (int f = 2; f < c.fields(); ++f)
+    if (!c.literal(f).empty()) return false;
+  return true;
+}
+
 // The state every family reader shares: messages, *PARAMETER values, the keywords given once.
 struct KeywordContext {
   Diagnostics& diag;
@@ -389,8 +412,8 @@ struct KeywordContext {
     v.rest();
     return v;
   }
-  KeywordValues fields(const Block& b, std::size_t k, const KeywordCardLayout& layout) {
-    return KeywordValues(b, k, layout, diag, &params);
+  KeywordValues fields(const Block& b, std::size_t k, const KeywordCardLayout& layout, const std::string* label = nullptr) {
+    return KeywordValues(b, k, layout, diag, &params, label);
   }
   // An id a keyword defines, with the *INCLUDE_TRANSFORM offset of its file (the reader's).
   std::function<int(int id, const Block& b, char kind)> xid;

@@ -7,6 +7,7 @@
 #include <iomanip>
 #include <limits>
 #include <sstream>
+#include <utility>
 #include <stdexcept>
 
 #include "common/messages.h"
@@ -167,7 +168,7 @@ KeywordField scale_factor(int index) { return {"SF", index, E, 1.0, false, {}, "
 
 // *LOAD_NODE_POINT / _SET, *LOAD_RIGID_BODY: ID DOF LCID SF CID M1 M2 M3
 KeywordSpec load_node(const char* name, const char* id, const char* id_meaning) {
-  return {{name}, KeywordFamily::loads, false,
+  return {{name}, KeywordFamily::loads_bcs, false,
           {{"", 8, 10, per_field, {
               {id, 0, I, 0, false, {}, id_meaning},
               {"DOF", 1, I, 0, false, {inside(4, 4, 1102, "follower forces"), inside(8, 8, 1102, "follower moments"),
@@ -198,7 +199,7 @@ KeywordSpec prescribed_motion(const char* name, const char* id, bool rigid) {
     dof.push_back(outside(-4, 11, 1006, "1 x, 2 y, 3 z"));
     dof.push_back(outside(1, 3, 1102, "1 x, 2 y, 3 z"));
   }
-  return {{name}, KeywordFamily::loads, false,
+  return {{name}, KeywordFamily::loads_bcs, false,
           {{"", 8, 10, per_field, {
               {id, 0, I, 0, false, {}, rigid ? "part (a *MAT_RIGID part)" : "node or node set"},
               {"DOF", 1, I, 0, false, std::move(dof), rigid ? "1 x, 2 y, 3 z" : "1 x, 2 y, 3 z, 4 along VID"},
@@ -213,8 +214,8 @@ KeywordSpec prescribed_motion(const char* name, const char* id, bool rigid) {
           ""};
 }
 
-std::vector<KeywordSpec> loads_specs() {
-  const KeywordFamily F = KeywordFamily::loads;
+std::vector<KeywordSpec> loads_bcs_specs() {
+  const KeywordFamily F = KeywordFamily::loads_bcs;
   std::vector<KeywordSpec> t;
   t.push_back(load_node("LOAD_NODE_POINT", "NID", "node"));
   t.push_back(load_node("LOAD_NODE_SET", "NSID", "node set"));
@@ -272,6 +273,81 @@ std::vector<KeywordSpec> loads_specs() {
                    {"SRY", 6, E, 0, false, {below(0, 1003, "a scale factor must not be negative")}, ""},
                    {"SRZ", 7, E, 0, false, {below(0, 1003, "a scale factor must not be negative")}, ""},
                }, "when given"}},
+               ""});
+  for (const auto& [name, id] : {std::pair{"BOUNDARY_SPC_NODE", "NID"}, std::pair{"BOUNDARY_SPC_SET", "NSID"}}) {
+    KeywordCardLayout c{"", 8, 10, per_field, {
+        {id, 0, I, 0, false, {}, id[1] == 'I' ? "node" : "node set"},
+        {"CID", 1, I, 0, false, {}, "coordinate system of the DOFs (0: global)"},
+    }, "each card (ID cards with _ID)"};
+    static const char* const dofs[6] = {"DOFX", "DOFY", "DOFZ", "DOFRX", "DOFRY", "DOFRZ"};
+    for (int k = 0; k < 6; ++k)
+      c.fields.push_back({dofs[k], 2 + k, I, 0, false, {outside(0, 1, 1006, "0 free or 1 fixed")}, k == 0 ? "1: fixed (rotations: shell and beam nodes)" : ""});
+    t.push_back({{name}, F, false, {c}, ""});
+  }
+  for (const auto& [name, id] : {std::pair{"INITIAL_TEMPERATURE_NODE", "NID"}, std::pair{"INITIAL_TEMPERATURE_SET", "NSID"}})
+    t.push_back({{name}, F, false,
+                 {{"", 3, 10, per_field, {
+                     {id, 0, I, 0, false, {}, id[1] == 'I' ? "node" : "node set (0: every node)"},
+                     {"TEMP", 1, E, 0, false, {}, "temperature (a later card wins)"},
+                     {"LOC", 2, I, 0, false, {nonzero(2006, "a shell surface: the temperature holds through the thickness")}, "shell surface"},
+                 }, "each card"}},
+                 ""});
+  t.push_back({{"INITIAL_VELOCITY_NODE"}, F, false,
+               {{"", 8, 10, per_field, {
+                   {"NID", 0, I, 0, false, {}, "node"},
+                   {"VX", 1, E, 0, false, {}, "velocity"}, {"VY", 2, E, 0, false, {}, ""}, {"VZ", 3, E, 0, false, {}, ""},
+                   {"VXR", 4, E, 0, false, {}, "rotational velocity (shell nodes)"}, {"VYR", 5, E, 0, false, {}, ""}, {"VZR", 6, E, 0, false, {}, ""},
+                   {"ICID", 7, I, 0, false, {}, "coordinate system of the velocities (0: global)"},
+               }, "each card"}},
+               ""});
+  t.push_back({{"INITIAL_VELOCITY"}, F, false,
+               {{"card 1", 5, 10, per_field, {
+                   {"NSID", 0, I, 0, false, {}, "node set (0: every node)"},
+                   {"NSIDEX", 1, I, 0, false, {}, "node set exempted (< 0: error 1003); they take card 3's velocity"},
+                   {"BOXID", 2, I, 0, false, {}, "only the nodes in this box"},
+                   plain("IRIGID", 3, I),
+                   {"ICID", 4, I, 0, false, {}, "coordinate system of the velocities (0: global)"},
+               }, "each definition"},
+                {"card 2", 6, 10, per_field, {
+                   {"VX", 0, E, 0, false, {}, "velocity"}, {"VY", 1, E, 0, false, {}, ""}, {"VZ", 2, E, 0, false, {}, ""},
+                   {"VXR", 3, E, 0, false, {}, "rotational velocity (shell nodes)"}, {"VYR", 4, E, 0, false, {}, ""}, {"VZR", 5, E, 0, false, {}, ""},
+               }, "required (missing: error 1316)"},
+                {"card 3", 6, 10, per_field, {
+                   {"VXE", 0, E, 0, false, {}, "velocity of the exempted nodes"}, {"VYE", 1, E, 0, false, {}, ""}, {"VZE", 2, E, 0, false, {}, ""},
+                   {"VRE", 3, E, 0, false, {}, "VXRE-VZRE (solid nodes have no rotations: the first nonzero is warning 2006, the rest not read)"},
+                   {"VRE", 4, E, 0, false, {}, ""}, {"VRE", 5, E, 0, false, {}, ""},
+               }, "with NSIDEX > 0 (missing: error 1316)"}},
+               "pairs (with NSIDEX, triples) of cards"});
+  t.push_back({{"INITIAL_VELOCITY_GENERATION"}, F, false,
+               {{"card 1", 8, 10, per_field, {
+                   {"ID", 0, I, 0, false, {}, "part set, part or node set"},
+                   {"STYP", 1, I, 0, false, {outside(1, 3, 1006, "1 part set, 2 part, 3 node set")}, "1 part set, 2 part, 3 node set"},
+                   {"OMEGA", 2, E, 0, false, {}, "angular velocity about the axis of card 2 (needs it: error 1316)"},
+                   {"VX", 3, E, 0, false, {}, "velocity"}, {"VY", 4, E, 0, false, {}, ""}, {"VZ", 5, E, 0, false, {}, ""},
+                   {"IVATN", 6, I, 0, false, {nonzero(1102, "slave parts of rigid bodies")}, "slave parts of rigid bodies"},
+                   {"ICID", 7, I, 0, false, {}, "coordinate system of the velocities (0: global)"},
+               }, "each definition"},
+                {"card 2", 8, 10, per_field, {
+                   {"XC", 0, E, 0, false, {}, "a point on the axis"}, {"YC", 1, E, 0, false, {}, ""}, {"ZC", 2, E, 0, false, {}, ""},
+                   {"NX", 3, E, 0, false, {}, "the axis (normalised; zero with OMEGA: error 1003)"}, {"NY", 4, E, 0, false, {}, ""}, {"NZ", 5, E, 0, false, {}, ""},
+                   {"PHASE", 6, E, 0, false, {nonzero(2006, "no dynamic relaxation: velocities apply at time 0")}, "dynamic relaxation phase"},
+                   plain("IRIGID", 7, I),
+               }, "when given"}},
+               "pairs of cards"});
+  t.push_back({{"DEFINE_CURVE"}, F, false,
+               {{"card 1", 8, 10, per_field, {
+                   {"LCID", 0, I, 0, false, {}, "curve id (the cards are then named by it in messages; defined twice: error 1200)"},
+                   {"SIDR", 1, I, 0, false, {nonzero(2006, "dynamic relaxation")}, "dynamic relaxation"},
+                   {"SFA", 2, E, 1.0, true, {}, "abscissa scale factor"},
+                   {"SFO", 3, E, 1.0, true, {}, "ordinate scale factor"},
+                   {"OFFA", 4, E, 0, false, {}, "abscissa offset"},
+                   {"OFFO", 5, E, 0, false, {}, "ordinate offset"},
+                   plain("DATTYP", 6, I),
+               }, "after the _TITLE card (missing: error 1316)"},
+                {"point", 2, 20, per_field, {
+                   {"A", 0, E, 0, false, {}, "abscissa: A x SFA + OFFA, increasing (else error 1217)"},
+                   {"O", 1, E, 0, false, {}, "ordinate: O x SFO + OFFO"},
+               }, "each card after card 1 (named \"curve LCID point\"; 20 columns in either format)"}},
                ""});
   t.push_back(prescribed_motion("BOUNDARY_PRESCRIBED_MOTION_NODE", "NID", false));
   t.push_back(prescribed_motion("BOUNDARY_PRESCRIBED_MOTION_SET", "NSID", false));
@@ -444,7 +520,7 @@ const KeywordCardLayout& KeywordSpec::card(std::string_view label, std::string_v
 const std::vector<KeywordSpec>& all_keyword_specs() {
   static const std::vector<KeywordSpec> t = [] {
     std::vector<KeywordSpec> all = parts_sections_specs();
-    for (KeywordSpec& s : loads_specs()) all.push_back(std::move(s));
+    for (KeywordSpec& s : loads_bcs_specs()) all.push_back(std::move(s));
     for (KeywordSpec& s : control_database_specs()) all.push_back(std::move(s));
     return all;
   }();

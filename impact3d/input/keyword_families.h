@@ -56,7 +56,7 @@ struct KeywordParts {
 // none of them.
 bool read_parts_sections(const Block& b, KeywordContext& ctx, KeywordParts& p);
 
-// ---------------------------------------------------------------- loads and prescribed motions
+// ---------------------------------------------------------------- loads, motions, initial conditions, constraints
 // (keyword_loads_bcs.cpp)
 struct RLoad {            // one load or prescribed-motion card, resolved after sets and curves
   enum Kind { node, node_set, segment, segment_set, body, rigid_body, motion_node, motion_set, motion_rigid } kind = node;
@@ -75,8 +75,49 @@ struct RLoad {            // one load or prescribed-motion card, resolved after 
   Ref cid_ref, vid_ref;
 };
 
+struct RTemperature {    // one *INITIAL_TEMPERATURE_NODE / _SET card, in deck order
+  bool set = false;       // NSID (0: all nodes), else NID
+  int id = 0;
+  double temp = 0;
+  Ref ref;
+};
+
+struct RVelocity {       // one initial-velocity definition, in deck order
+  enum Kind { all, node_set, node, part, part_set } kind = all;
+  int id = 0;
+  Ref ref;
+  std::array<double, 3> v{};
+  // *INITIAL_VELOCITY_GENERATION: rotation OMEGA about the axis through xc along n (unit)
+  double omega = 0;
+  std::array<double, 3> xc{}, n{};
+  // *INITIAL_VELOCITY: exempted node set (its nodes take ve), box (only nodes inside), and the
+  // local system of the velocities (ICID)
+  std::string keyword;  // as written
+  int nsidex = 0, boxid = 0, icid = 0;
+  Ref nsidex_ref, boxid_ref, icid_ref;
+  std::array<double, 3> ve{};
+  std::array<double, 3> w{};  // VXR VYR VZR: rotational velocities (shell nodes)
+  bool has_w = false;
+};
+struct RSpc {
+  std::string keyword;  // as written (*BOUNDARY_SPC_SET_ID, ...)
+  bool set = false;
+  int id = 0;
+  int bits = 0;  // fixed local directions (global when cid is 0)
+  int rbits = 0;  // rotations: bit 0 rx, 1 ry, 2 rz (they act on shell nodes)
+  int cid = 0;
+  Ref ref, cid_ref;
+};
+
 struct KeywordLoads {
+  std::vector<LoadCurve> curves;  // *DEFINE_CURVE, in deck order
+  std::vector<Ref> curve_refs;    // their LCID fields
   std::vector<RLoad> loads;  // in deck order
+  std::vector<RVelocity> velocities;
+  std::vector<RTemperature> temperatures;
+  std::vector<RSpc> spcs;
+  std::vector<Ref> rot_refs;  // first rotational field of each *BOUNDARY_SPC card that has one
+  Ref w_ref;                  // last rotational initial velocity (message when no shell node takes it)
   RLoad damping;             // *DAMPING_GLOBAL (lcid, sf = VALDMP, dir = STX STY STZ)
   bool damping_given = false, damping_rotations = false;
   int body_parts_psid = 0;   // *LOAD_BODY_PARTS
@@ -84,9 +125,10 @@ struct KeywordLoads {
 };
 
 // Reads *LOAD_NODE_POINT / _SET, *LOAD_RIGID_BODY, *LOAD_SEGMENT (_SET), *LOAD_BODY_X / _Y / _Z
-// / _VECTOR / _PARTS, *DAMPING_GLOBAL and *BOUNDARY_PRESCRIBED_MOTION_NODE / _SET / _RIGID into
-// l; false if the keyword is none of them.
-bool read_loads(const Block& b, KeywordContext& ctx, KeywordLoads& l);
+// / _VECTOR / _PARTS, *DEFINE_CURVE, *DAMPING_GLOBAL, *BOUNDARY_PRESCRIBED_MOTION_NODE / _SET / _RIGID,
+// *BOUNDARY_SPC_NODE / _SET, *INITIAL_VELOCITY (_NODE, _GENERATION) and *INITIAL_TEMPERATURE_NODE
+// / _SET into l; false if the keyword is none of them.
+bool read_loads_bcs(const Block& b, KeywordContext& ctx, KeywordLoads& l);
 
 // ---------------------------------------------------------------- control and database cards
 // (keyword_control_database.cpp)

@@ -1,7 +1,8 @@
 // Keyword decks: the loads (*LOAD_NODE_POINT / _SET, *LOAD_RIGID_BODY, *LOAD_SEGMENT (_SET),
-// *LOAD_BODY_...), *DAMPING_GLOBAL and the prescribed motions (*BOUNDARY_PRESCRIBED_MOTION_...),
-// read by their tables (keyword_cards.cpp) into load records that the reader resolves once the
-// sets, curves and coordinate systems are known.
+// *LOAD_BODY_...), their curves (*DEFINE_CURVE), *DAMPING_GLOBAL, the prescribed motions (*BOUNDARY_PRESCRIBED_MOTION_...), the
+// constraints (*BOUNDARY_SPC_...) and the initial conditions (*INITIAL_VELOCITY...,
+// *INITIAL_TEMPERATURE_...), read by their tables (keyword_cards.cpp) into records that the
+// reader resolves once the sets, curves and coordinate systems are known.
 
 #include "impact3d/input/keyword_families.h"
 
@@ -188,11 +189,178 @@ void read_motions(const Block& b, KeywordContext& ctx, const KeywordSpec& s, RLo
   }
 }
 
+// *BOUNDARY_SPC_NODE / _SET: NID|NSID CID DOFX DOFY DOFZ DOFRX DOFRY DOFRZ
+void read_spc(const Block& b, KeywordContext& ctx, const KeywordSpec& s, bool set, KeywordLoads& out) {
+  for (std::size_t k = 0; k < b.data.size(); ++k) {
+    if (is_blank(b.data[k].line->text) || is_id_card(b, k)) continue;
+    KeywordValues v = ctx.values(b, k, s.card(""));
+    RSpc r;
+    r.keyword = upper(b.keyword);
+    r.set = set;
+    r.id = int(v.integer(set ? "NSID" : "NID"));
+    r.ref = v.ref(set ? "NSID" : "NID");
+    r.cid = int(v.integer("CID"));  // DOFX-DOFZ are along the axes of this system
+    r.cid_ref = v.ref("CID");
+    static const char* const names[] = {"DOFX", "DOFY", "DOFZ", "DOFRX", "DOFRY", "DOFRZ"};
+    for (int f = 0; f < 6; ++f) {
+      if (v.integer(names[f]) != 1) continue;
+      if (f < 3) r.bits |= 1 << f;
+      if (f >= 3 && r.rbits == 0) out.rot_refs.push_back(v.ref(names[f]));
+      if (f >= 3) r.rbits |= 1 << (f - 3);
+    }
+    out.spcs.push_back(r);
+  }
+}
+
+// *INITIAL_TEMPERATURE_NODE (NID TEMP LOC per card) and _SET (NSID TEMP LOC; NSID 0: every
+// node): the nodes' initial temperatures, in deck order (a later card wins); LOC (a shell
+// surface) is warning 2006: the temperature holds through the thickness.
+void read_temperatures(const Block& b, KeywordContext& ctx, const KeywordSpec& s, bool set, KeywordLoads& out) {
+  for (std::size_t k = 0; k < b.data.size(); ++k) {
+    if (is_blank(b.data[k].line->text)) continue;
+    KeywordValues v = ctx.values(b, k, s.card(""));
+    RTemperature t;
+    t.set = set;
+    t.id = int(v.integer(set ? "NSID" : "NID"));
+    t.ref = v.ref(set ? "NSID" : "NID");
+    t.temp = v["TEMP"];
+    out.temperatures.push_back(t);
+  }
+}
+
+// An initial-velocity record: its keyword, and its id from field idf; ICID when the card has it.
+RVelocity velocity_record(const Block& b, KeywordValues& v, const char* idf) {
+  RVelocity r;
+  r.keyword = upper(b.keyword);
+  r.id = int(v.integer(idf));
+  r.ref = v.ref(idf);
+  return r;
+}
+void read_icid(KeywordValues& v, RVelocity& r) {
+  r.icid = int(v.integer("ICID"));
+  r.icid_ref = v.ref("ICID");
+}
+
+// VX VY VZ and VXR VYR VZR of an initial velocity (a rotational one remembered for the message
+// when no shell node takes it).
+void read_velocities(KeywordValues& v, RVelocity& r, KeywordLoads& out) {
+  r.v = {v["VX"], v["VY"], v["VZ"]};
+  r.w = {v["VXR"], v["VYR"], v["VZR"]};
+  r.has_w = r.w[0] != 0 || r.w[1] != 0 || r.w[2] != 0;
+  if (r.has_w) out.w_ref = v.ref("VXR");
+}
+
+void read_velocity_nodes(const Block& b, KeywordContext& ctx, const KeywordSpec& s, KeywordLoads& out) {
+  for (std::size_t k = 0; k < b.data.size(); ++k) {
+    if (is_blank(b.data[k].line->text)) continue;
+    KeywordValues v = ctx.values(b, k, s.card(""));
+    RVelocity r = velocity_record(b, v, "NID");
+    r.kind = RVelocity::node;
+    read_velocities(v, r, out);
+    read_icid(v, r);
+    out.velocities.push_back(r);
+  }
+}
+
+// *INITIAL_VELOCITY: card 1 NSID NSIDEX BOXID IRIGID ICID, card 2 VX VY VZ (VXR-VZR), and with
+// NSIDEX card 3 VXE VYE VZE (VXRE-VZRE): the velocity of the exempted nodes.
+void read_initial_velocity(const Block& b, KeywordContext& ctx, const KeywordSpec& s, KeywordLoads& out) {
+  for (std::size_t k = 0; k < b.data.size(); k += 2) {
+    KeywordValues v = ctx.values(b, k, s.card("card 1"));
+    RVelocity r = velocity_record(b, v, "NSID");
+    r.kind = r.id == 0 ? RVelocity::all : RVelocity::node_set;
+    r.nsidex = int(v.integer("NSIDEX"));
+    r.nsidex_ref = v.ref("NSIDEX");
+    r.boxid = int(v.integer("BOXID"));
+    r.boxid_ref = v.ref("BOXID");
+    read_icid(v, r);
+    if (k + 1 >= b.data.size()) {
+      ctx.missing_card(b, "card 2 (VX VY VZ)");
+      break;
+    }
+    KeywordValues v2 = ctx.values(b, k + 1, s.card("card 2"));
+    read_velocities(v2, r, out);
+    if (r.nsidex > 0) {
+      if (k + 2 >= b.data.size()) {
+        ctx.missing_card(b, "card 3 (VXE VYE VZE), needed with NSIDEX");
+        break;
+      }
+      KeywordValues v3 = ctx.fields(b, k + 2, s.card("card 3"));
+      r.ve = {v3["VXE"], v3["VYE"], v3["VZE"]};
+      for (std::size_t f = 3; f < 6; ++f)  // the first nonzero VXRE-VZRE only
+        if (v3.nth(f) != 0) {
+          v3.card().error(2006, int(f), "VXRE/VYRE/VZRE", "solid nodes have no rotations");
+          break;
+        }
+      ++k;
+    } else if (r.nsidex < 0) {
+      v.error(1003, "NSIDEX", "a node set id (0: none)");
+    }
+    out.velocities.push_back(r);
+  }
+}
+
+// *INITIAL_VELOCITY_GENERATION: card 1 ID STYP OMEGA VX VY VZ IVATN ICID, card 2 XC YC ZC NX NY
+// NZ PHASE IRIGID.
+void read_velocity_generation(const Block& b, KeywordContext& ctx, const KeywordSpec& s, KeywordLoads& out) {
+  for (std::size_t k = 0; k < b.data.size(); k += 2) {
+    KeywordValues v = ctx.values(b, k, s.card("card 1"));
+    RVelocity r = velocity_record(b, v, "ID");
+    const long long styp = v.integer("STYP");
+    r.kind = styp == 1 ? RVelocity::part_set : styp == 2 ? RVelocity::part : RVelocity::node_set;
+    r.omega = v["OMEGA"];
+    r.v = {v["VX"], v["VY"], v["VZ"]};
+    read_icid(v, r);
+    if (k + 1 < b.data.size()) {
+      KeywordValues v2 = ctx.values(b, k + 1, s.card("card 2"));
+      r.xc = {v2["XC"], v2["YC"], v2["ZC"]};
+      r.n = {v2["NX"], v2["NY"], v2["NZ"]};
+      const double len = std::sqrt(r.n[0] * r.n[0] + r.n[1] * r.n[1] + r.n[2] * r.n[2]);
+      if (r.omega != 0 && !(len > 0)) v2.error(1003, "NX", "the rotation axis NX NY NZ must not be zero when OMEGA is given");
+      else if (len > 0)
+        for (double& a : r.n) a /= len;
+    } else if (r.omega != 0) {
+      v.error(1316, "OMEGA", "OMEGA needs card 2 (the axis: XC YC ZC NX NY NZ)");
+    }
+    if (styp >= 1 && styp <= 3) out.velocities.push_back(r);
+  }
+}
+
+// *DEFINE_CURVE: card 1 LCID SIDR SFA SFO OFFA OFFO DATTYP, then points A O (2 x 20 columns).
+void read_curve(const Block& b, KeywordContext& ctx, const KeywordSpec& s, KeywordLoads& out) {
+  std::size_t k = option_cards(b);
+  if (k >= b.data.size()) {
+    ctx.missing_card(b, "card 1 (LCID)");
+    return;
+  }
+  KeywordValues v = ctx.fields(b, k, s.card("card 1"));
+  const int lcid = ctx.xid(int(v.integer("LCID")), b, 'f');
+  v.card().set_card(b.keyword + " " + std::to_string(lcid));
+  v.rest();
+  const double sfa = v["SFA"], sfo = v["SFO"], offa = v["OFFA"], offo = v["OFFO"];
+  LoadCurve lc;
+  lc.number = lcid;
+  const std::string point = "curve " + std::to_string(lcid) + " point";
+  for (++k; k < b.data.size(); ++k) {
+    if (is_blank(b.data[k].line->text)) continue;
+    KeywordValues p = ctx.fields(b, k, s.card("point"), &point);
+    const double t = p["A"] * sfa + offa;
+    const double f = p["O"] * sfo + offo;
+    if (!lc.t.empty() && !(t > lc.t.back())) p.error(1217, "A");
+    lc.t.push_back(t);
+    lc.f.push_back(f);
+  }
+  for (std::size_t j = 0; j < out.curves.size(); ++j)
+    if (out.curves[j].number == lcid) v.error(1200, "LCID", "also defined at " + at(out.curve_refs[j]));
+  out.curves.push_back(std::move(lc));
+  out.curve_refs.push_back(v.ref("LCID"));
+}
+
 }  // namespace
 
-bool read_loads(const Block& b, KeywordContext& ctx, KeywordLoads& l) {
+bool read_loads_bcs(const Block& b, KeywordContext& ctx, KeywordLoads& l) {
   const KeywordSpec* s = find_keyword_spec(b.name);
-  if (!s || s->family != KeywordFamily::loads) return false;
+  if (!s || s->family != KeywordFamily::loads_bcs) return false;
   if (s->once) ctx.once(b);
   const std::string& n = b.name;
   if (n == "LOAD_NODE_POINT" || n == "LOAD_NODE_SET" || n == "LOAD_RIGID_BODY") {
@@ -209,6 +377,18 @@ bool read_loads(const Block& b, KeywordContext& ctx, KeywordLoads& l) {
     read_load_body(b, ctx, *s, n.back() == 'X' ? 0 : n.back() == 'Y' ? 1 : n.back() == 'Z' ? 2 : 3, l);
   } else if (n == "DAMPING_GLOBAL") {
     read_damping(b, ctx, *s, l);
+  } else if (n == "DEFINE_CURVE") {
+    read_curve(b, ctx, *s, l);
+  } else if (n == "BOUNDARY_SPC_NODE" || n == "BOUNDARY_SPC_SET") {
+    read_spc(b, ctx, *s, n == "BOUNDARY_SPC_SET", l);
+  } else if (n == "INITIAL_TEMPERATURE_NODE" || n == "INITIAL_TEMPERATURE_SET") {
+    read_temperatures(b, ctx, *s, n == "INITIAL_TEMPERATURE_SET", l);
+  } else if (n == "INITIAL_VELOCITY_NODE") {
+    read_velocity_nodes(b, ctx, *s, l);
+  } else if (n == "INITIAL_VELOCITY") {
+    read_initial_velocity(b, ctx, *s, l);
+  } else if (n == "INITIAL_VELOCITY_GENERATION") {
+    read_velocity_generation(b, ctx, *s, l);
   } else {
     read_motions(b, ctx, *s, n == "BOUNDARY_PRESCRIBED_MOTION_NODE" ? RLoad::motion_node
                             : n == "BOUNDARY_PRESCRIBED_MOTION_SET" ? RLoad::motion_set : RLoad::motion_rigid, l);

@@ -190,39 +190,6 @@ struct RWall {
   Ref nsidex_ref, boxid_ref;
   StoneWall w;
 };
-struct RTemperature {    // one *INITIAL_TEMPERATURE_NODE / _SET card, in deck order
-  bool set = false;       // NSID (0: all nodes), else NID
-  int id = 0;
-  double temp = 0;
-  Ref ref;
-};
-
-struct RVelocity {       // one initial-velocity definition, in deck order
-  enum Kind { all, node_set, node, part, part_set } kind = all;
-  int id = 0;
-  Ref ref;
-  std::array<double, 3> v{};
-  // *INITIAL_VELOCITY_GENERATION: rotation OMEGA about the axis through xc along n (unit)
-  double omega = 0;
-  std::array<double, 3> xc{}, n{};
-  // *INITIAL_VELOCITY: exempted node set (its nodes take ve), box (only nodes inside), and the
-  // local system of the velocities (ICID)
-  std::string keyword;  // as written
-  int nsidex = 0, boxid = 0, icid = 0;
-  Ref nsidex_ref, boxid_ref, icid_ref;
-  std::array<double, 3> ve{};
-  std::array<double, 3> w{};  // VXR VYR VZR: rotational velocities (shell nodes)
-  bool has_w = false;
-};
-struct RSpc {
-  std::string keyword;  // as written (*BOUNDARY_SPC_SET_ID, ...)
-  bool set = false;
-  int id = 0;
-  int bits = 0;  // fixed local directions (global when cid is 0)
-  int rbits = 0;  // rotations: bit 0 rx, 1 ry, 2 rz (they act on shell nodes)
-  int cid = 0;
-  Ref ref, cid_ref;
-};
 struct RWeld {            // *CONSTRAINED_SPOTWELD or *CONSTRAINED_GENERALIZED_WELD_SPOT, resolved after nodes and sets
   std::string keyword;
   bool generalized = false;  // a node set (NSID) instead of two nodes
@@ -272,6 +239,7 @@ class KeywordReader {
   bool global_long_ = false, global_i10_ = false;
 
   // raw records
+  KeywordLoads ld_;  // loads, prescribed motions, damping, initial conditions, constraints (keyword_loads_bcs.cpp)
   std::vector<RNode, HugePageAllocator<RNode>> nodes_;
   std::vector<RElem, HugePageAllocator<RElem>> elems_;
   KeywordParts ps_;  // parts, sections, hourglass (keyword_parts_sections.cpp)
@@ -294,12 +262,11 @@ class KeywordReader {
   std::map<int, RSegSet> seg_sets_;
   std::vector<RContact> contacts_;
   std::vector<RWall> walls_;
-  std::vector<RVelocity> velocities_;
-  std::vector<RTemperature> temperatures_;
-  std::vector<RSpc> spcs_;
+  std::vector<RVelocity>& velocities_ = ld_.velocities;
+  std::vector<RTemperature>& temperatures_ = ld_.temperatures;
+  std::vector<RSpc>& spcs_ = ld_.spcs;
   std::vector<RWeld> welds_;
   std::vector<RHistory> histories_;
-  KeywordLoads ld_;  // loads, prescribed motions, damping (keyword_loads_bcs.cpp)
   std::vector<RLoad>& loads_ = ld_.loads;
   RLoad& damping_ = ld_.damping;
   bool& damping_given_ = ld_.damping_given;
@@ -313,8 +280,8 @@ class KeywordReader {
   // *ELEMENT_SOLID cards of 10-node tetrahedra (N9 or N10 not 0): refused in one message
   long long tet10_count_ = 0;
   std::pair<Ref, int> tet10_first_;
-  std::vector<LoadCurve> curves_;
-  std::vector<Ref> curve_refs_;
+  std::vector<LoadCurve>& curves_ = ld_.curves;
+  std::vector<Ref>& curve_refs_ = ld_.curve_refs;
   std::map<int, int> curve_index_;       // LCID -> index in curves_ (= Model::load_curves)
   std::vector<char> curve_used_;
   std::vector<const Block*> unsupported_;
@@ -331,9 +298,9 @@ class KeywordReader {
     return " (it is defined by " + it->second + ", a keyword IMPACT-3D does not support)";
   }
   int rotational_spc_ = 0;
-  std::vector<Ref> rot_refs_;
-  Ref w_ref_;
-  std::vector<char> shell_node_;  // per node: used by a shell  // last rotational initial velocity (message when no shell node takes it)  // first rotational field of each *BOUNDARY_SPC card that has one
+  std::vector<Ref>& rot_refs_ = ld_.rot_refs;
+  Ref& w_ref_ = ld_.w_ref;
+  std::vector<char> shell_node_;  // per node: used by a shell
   int reaction_flag_ = -1;
   std::set<int> initially_elastic_;  // part ids
   Ref rotational_ref_;
@@ -907,7 +874,7 @@ class KeywordReader {
       if (parse_structure_keyword(b)) continue;  // sets, boxes, coordinate systems, histories
       if (read_control_database(b, ctx_, ctl_)) continue;  // keyword_control_database.cpp
       if (read_parts_sections(b, ctx_, ps_)) continue;      // keyword_parts_sections.cpp
-      if (read_loads(b, ctx_, ld_)) continue;               // keyword_loads_bcs.cpp
+      if (read_loads_bcs(b, ctx_, ld_)) continue;           // keyword_loads_bcs.cpp
       if (n == "TITLE") {
         for (const KLine& l : b.data) {
           m_.title = rtrim(l.line->text.substr(0, std::min<std::size_t>(80, l.line->text.size())));
@@ -927,16 +894,6 @@ class KeywordReader {
         parse_eos(b, *ef);
       } else if (n == "MAT_ADD_EROSION") {
         parse_mat_add_erosion(b);
-      } else if (n == "INITIAL_VELOCITY") {
-        parse_initial_velocity(b);
-      } else if (n == "INITIAL_TEMPERATURE_NODE" || n == "INITIAL_TEMPERATURE_SET") {
-        parse_initial_temperature(b, n == "INITIAL_TEMPERATURE_SET");
-      } else if (n == "INITIAL_VELOCITY_NODE") {
-        parse_initial_velocity_node(b);
-      } else if (n == "INITIAL_VELOCITY_GENERATION") {
-        parse_initial_velocity_generation(b);
-      } else if (n == "BOUNDARY_SPC_NODE" || n == "BOUNDARY_SPC_SET") {
-        parse_spc(b, n == "BOUNDARY_SPC_SET");
       } else if (n == "CONSTRAINED_SPOTWELD") {
         parse_spotweld(b);
       } else if (n == "CONSTRAINED_GENERALIZED_WELD_SPOT") {
@@ -955,8 +912,6 @@ class KeywordReader {
         parse_contact(b, n == "CONTACT_ERODING_SURFACE_TO_SURFACE", false, n == "CONTACT_ERODING_SINGLE_SURFACE", true);
       } else if (n == "CONTACT_FORCE_TRANSDUCER_PENALTY") {
         parse_contact(b, false, true);
-      } else if (n == "DEFINE_CURVE") {
-        parse_curve(b);
       } else {
         unsupported_.push_back(&b);
         // remember the ids that unsupported material and section keywords define, so that a
@@ -1370,60 +1325,6 @@ class KeywordReader {
     }
   }
 
-  // *INITIAL_VELOCITY: card 1 NSID NSIDEX BOXID IRIGID ICID, card 2 VX VY VZ (VXR-VZR), and
-  // with NSIDEX card 3 VXE VYE VZE (VXRE-VZRE): the velocity of the exempted nodes.
-  void parse_initial_velocity(const Block& b) {
-    for (std::size_t k = 0; k < b.data.size(); k += 2) {
-      KCard c = card(b, k, "card 1", W(b, 5));
-      RVelocity v;
-      v.keyword = upper(b.keyword);
-      v.id = int(c.i(0, "NSID"));
-      v.kind = v.id == 0 ? RVelocity::all : RVelocity::node_set;
-      v.ref = c.ref(0);
-      v.nsidex = int(c.i(1, "NSIDEX"));
-      v.nsidex_ref = c.ref(1);
-      v.boxid = int(c.i(2, "BOXID"));
-      v.boxid_ref = c.ref(2);
-      c.i(3, "IRIGID");  // rigid-body velocities from *PART_INERTIA: IMPACT-3D has none
-      v.icid = int(c.i(4, "ICID"));
-      v.icid_ref = c.ref(4);
-      if (k + 1 >= b.data.size()) { ctx_.missing_card(b, "card 2 (VX VY VZ)"); break; }
-      KCard c2 = card(b, k + 1, "card 2", W(b, 6));
-      v.v = {c2.r(0, "VX"), c2.r(1, "VY"), c2.r(2, "VZ")};
-      v.w = {c2.r(3, "VXR"), c2.r(4, "VYR"), c2.r(5, "VZR")};
-      v.has_w = v.w[0] != 0 || v.w[1] != 0 || v.w[2] != 0;
-      if (v.has_w) w_ref_ = c2.ref(3);
-      if (v.nsidex > 0) {
-        if (k + 2 >= b.data.size()) { ctx_.missing_card(b, "card 3 (VXE VYE VZE), needed with NSIDEX"); break; }
-        KCard c3 = card(b, k + 2, "card 3", W(b, 6));
-        v.ve = {c3.r(0, "VXE"), c3.r(1, "VYE"), c3.r(2, "VZE")};
-        for (int f = 3; f < 6; ++f)
-          if (c3.r(f, "VRE") != 0) { c3.error(2006, f, "VXRE/VYRE/VZRE", "solid nodes have no rotations"); break; }
-        ++k;
-      } else if (v.nsidex < 0) {
-        c.error(1003, 1, "NSIDEX", "a node set id (0: none)");
-      }
-      velocities_.push_back(v);
-    }
-  }
-
-  // *INITIAL_TEMPERATURE_NODE (NID TEMP LOC per card) and _SET (NSID TEMP LOC; NSID 0: every
-  // node): the nodes' initial temperatures, in deck order (a later card wins); LOC (a shell
-  // surface) is warning 2006: the temperature holds through the thickness.
-  void parse_initial_temperature(const Block& b, bool set) {
-    for (std::size_t k = 0; k < b.data.size(); ++k) {
-      if (is_blank(b.data[k].line->text)) continue;
-      KCard c = card(b, k, "", W(b, 3));
-      RTemperature t;
-      t.set = set;
-      t.id = int(c.i(0, set ? "NSID" : "NID"));
-      t.ref = c.ref(0);
-      t.temp = c.r(1, "TEMP");
-      if (c.i(2, "LOC") != 0) c.error(2006, 2, "LOC", "a shell surface: the temperature holds through the thickness");
-      temperatures_.push_back(t);
-    }
-  }
-
   void resolve_temperatures() {
     if (temperatures_.empty()) return;
     m_.node_temperature.assign(std::size_t(m_.num_nodes()), std::nan(""));
@@ -1443,104 +1344,6 @@ class KeywordReader {
         nodes = set_nodes(*s, "*SET_NODE " + std::to_string(t.id));
       }
       for (int n : nodes) m_.node_temperature[std::size_t(n)] = t.temp;
-    }
-  }
-
-  void parse_initial_velocity_node(const Block& b) {
-    for (std::size_t k = 0; k < b.data.size(); ++k) {
-      if (is_blank(b.data[k].line->text)) continue;
-      KCard c = card(b, k, "", W(b, 8));
-      RVelocity v;
-      v.keyword = upper(b.keyword);
-      v.kind = RVelocity::node;
-      v.id = int(c.i(0, "NID"));
-      v.ref = c.ref(0);
-      v.v = {c.r(1, "VX"), c.r(2, "VY"), c.r(3, "VZ")};
-      v.w = {c.r(4, "VXR"), c.r(5, "VYR"), c.r(6, "VZR")};
-      v.has_w = v.w[0] != 0 || v.w[1] != 0 || v.w[2] != 0;
-      if (v.has_w) w_ref_ = c.ref(4);
-      v.icid = int(c.i(7, "ICID"));
-      v.icid_ref = c.ref(7);
-      velocities_.push_back(v);
-    }
-  }
-
-  void parse_initial_velocity_generation(const Block& b) {
-    for (std::size_t k = 0; k < b.data.size(); k += 2) {
-      KCard c = card(b, k, "card 1", W(b, 8));
-      RVelocity v;
-      v.keyword = upper(b.keyword);
-      v.id = int(c.i(0, "ID"));
-      v.ref = c.ref(0);
-      int styp = int(c.i(1, "STYP"));
-      if (styp == 1) v.kind = RVelocity::part_set;
-      else if (styp == 2) v.kind = RVelocity::part;
-      else if (styp == 3) v.kind = RVelocity::node_set;
-      else c.error(1006, 1, "STYP", "1 part set, 2 part, 3 node set");
-      v.omega = c.r(2, "OMEGA");
-      v.v = {c.r(3, "VX"), c.r(4, "VY"), c.r(5, "VZ")};
-      if (c.i(6, "IVATN") != 0) c.error(1102, 6, "IVATN", "slave parts of rigid bodies");
-      v.icid = int(c.i(7, "ICID"));
-      v.icid_ref = c.ref(7);
-      if (k + 1 < b.data.size()) {
-        KCard c2 = card(b, k + 1, "card 2", W(b, 8));
-        const char* names[] = {"XC", "YC", "ZC", "NX", "NY", "NZ"};
-        for (int f = 0; f < 3; ++f) v.xc[std::size_t(f)] = c2.r(f, names[f]);
-        for (int f = 0; f < 3; ++f) v.n[std::size_t(f)] = c2.r(3 + f, names[3 + f]);
-        if (c2.r(6, "PHASE") != 0) c2.error(2006, 6, "PHASE", "no dynamic relaxation: velocities apply at time 0");
-        c2.i(7, "IRIGID");
-        const double len = std::sqrt(v.n[0] * v.n[0] + v.n[1] * v.n[1] + v.n[2] * v.n[2]);
-        if (v.omega != 0 && !(len > 0)) c2.error(1003, 3, "NX", "the rotation axis NX NY NZ must not be zero when OMEGA is given");
-        else if (len > 0) for (double& a : v.n) a /= len;
-      } else if (v.omega != 0) {
-        c.error(1316, 2, "OMEGA", "OMEGA needs card 2 (the axis: XC YC ZC NX NY NZ)");
-      }
-      if (styp >= 1 && styp <= 3) velocities_.push_back(v);
-    }
-  }
-
-  // An ID card (ID, HEADING) among the data cards of an _ID keyword, as ANSA and LS-PrePost
-  // write several definitions under one keyword: the first card of the block, or an integer id
-  // followed by blank columns or by a heading that starts with a letter in column 11 (a data
-  // card has a number or a blank there).
-  bool is_id_card(const Block& b, std::size_t k) {
-    if (!b.id_opt) return false;
-    std::size_t first = 0;
-    while (first < b.data.size() && is_blank(b.data[first].line->text)) ++first;
-    if (k == first) return true;
-    Diagnostics quiet;
-    KCard c(b.data[k], b.keyword, W(b, 8), quiet);
-    long long id = 0;
-    if (parse_fortran_int(c.literal(0), id) != FieldStatus::ok) return false;
-    const std::string heading = c.literal(1);
-    if (!heading.empty()) return std::isalpha(static_cast<unsigned char>(heading[0])) != 0;
-    for (int f = 2; f < c.fields(); ++f)
-      if (!c.literal(f).empty()) return false;
-    return true;
-  }
-
-  void parse_spc(const Block& b, bool set) {
-    for (std::size_t k = 0; k < b.data.size(); ++k) {
-      if (is_blank(b.data[k].line->text) || is_id_card(b, k)) continue;
-      KCard c = card(b, k, "", W(b, 8));
-      RSpc s;
-      s.keyword = upper(b.keyword);
-      s.set = set;
-      s.id = int(c.i(0, set ? "NSID" : "NID"));
-      s.ref = c.ref(0);
-      s.cid = int(c.i(1, "CID"));  // DOFX-DOFZ are along the axes of this system
-      s.cid_ref = c.ref(1);
-      const char* names[] = {"DOFX", "DOFY", "DOFZ", "DOFRX", "DOFRY", "DOFRZ"};
-      for (int f = 0; f < 6; ++f) {
-        long long d = c.i(2 + f, names[f]);
-        if (d != 0 && d != 1) c.error(1006, 2 + f, names[f], "0 free or 1 fixed");
-        if (d == 1 && f < 3) s.bits |= 1 << f;
-        if (d == 1 && f >= 3) {
-          s.rbits |= 1 << (f - 3);
-          if (s.rbits == 1 << (f - 3)) rot_refs_.push_back(c.ref(2 + f));
-        }
-      }
-      spcs_.push_back(s);
     }
   }
 
@@ -2310,36 +2113,6 @@ class KeywordReader {
     }
     if (erosion_.count(mid)) c.error(1200, 0, "MID", "*MAT_ADD_EROSION of this material also given at " + at(erosion_[mid].second));
     erosion_[mid] = {e, c.ref(0)};
-  }
-
-  void parse_curve(const Block& b) {
-    std::size_t k = skip_option_card(b);
-    if (k >= b.data.size()) { ctx_.missing_card(b, "card 1 (LCID)"); return; }
-    KCard c = card(b, k, "card 1", W(b, 8));
-    LoadCurve lc;
-    int lcid = xid(int(c.i(0, "LCID")), b, &IncludeTransform::idfoff);
-    c.set_card(b.keyword + " " + std::to_string(lcid));
-    if (c.i(1, "SIDR") != 0) c.error(2006, 1, "SIDR", "dynamic relaxation");
-    double sfa = c.r(2, "SFA", 1.0), sfo = c.r(3, "SFO", 1.0);
-    if (sfa == 0) sfa = 1;
-    if (sfo == 0) sfo = 1;
-    double offa = c.r(4, "OFFA"), offo = c.r(5, "OFFO");
-    c.i(6, "DATTYP");
-    lc.number = lcid;
-    std::vector<int> w = {b.long_fmt ? 20 : 20, b.long_fmt ? 20 : 20};
-    for (++k; k < b.data.size(); ++k) {
-      if (is_blank(b.data[k].line->text)) continue;
-      KCard p = card(b, k, "curve " + std::to_string(lcid) + " point", w);
-      double t = p.r(0, "A") * sfa + offa;
-      double f = p.r(1, "O") * sfo + offo;
-      if (!lc.t.empty() && !(t > lc.t.back())) p.error(1217, 0, "A");
-      lc.t.push_back(t);
-      lc.f.push_back(f);
-    }
-    for (std::size_t j = 0; j < curves_.size(); ++j)
-      if (curves_[j].number == lcid) c.error(1200, 0, "LCID", "also defined at " + at(curve_refs_[j]));
-    curves_.push_back(std::move(lc));
-    curve_refs_.push_back(c.ref(0));
   }
 
   // Keywords whose absence changes what the rest of the deck means: --lenient-keywords cannot

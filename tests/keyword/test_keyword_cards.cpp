@@ -188,3 +188,26 @@ TEST(KeywordCards, SectionCardsByTheirTables) {
   EXPECT_NE(hg.lines()[0].find("*HOURGLASS 3, field \"IHQ\" (cols 11-20): feature not supported by IMPACT-3D: hourglass type 7"), std::string::npos) << hg.lines()[0];
   EXPECT_NE(hg.lines()[1].find("*HOURGLASS 3, field \"QM\""), std::string::npos) << hg.lines()[1];
 }
+
+// Curves and initial conditions by their tables: SFA / SFO 0 stand for 1; a point card is named
+// by its curve and read in 20 columns in either format; the first nonzero VXRE-VZRE of
+// *INITIAL_VELOCITY card 3 is the one warning.
+TEST(KeywordCards, CurvesAndInitialVelocitiesByTheirTables) {
+  const std::string head = "*CONTROL_TERMINATION\n   1.0E-05\n";
+  const Read curve = read(deck(head + "*DEFINE_CURVE\n" + card({"4", "", "0.0", "2.0", "1.0"}) + card({"0.0", "1.0"}, 20) +
+                               card({"1.0", "3.0"}, 20) + "*LOAD_NODE_POINT\n" + card({"1", "1", "4"})));
+  ASSERT_TRUE(curve.ok) << curve.lines().front();
+  ASSERT_EQ(curve.m.load_curves.size(), 1u);
+  EXPECT_EQ(curve.m.load_curves[0].t, (std::vector<double>{1.0, 2.0})) << "A x SFA (0: 1) + OFFA";
+  EXPECT_EQ(curve.m.load_curves[0].f, (std::vector<double>{2.0, 6.0})) << "O x SFO";
+  const Read bad = read(deck(head + "*DEFINE_CURVE\n" + card({"4"}) + card({"1.0", "0.0"}, 20) + card({"0.5", "x"}, 20) +
+                             "*LOAD_NODE_POINT\n" + card({"1", "1", "4"})));
+  ASSERT_EQ(bad.lines().size(), 2u);
+  EXPECT_EQ(bad.lines()[0], "deck.k:7: error 1002: *DEFINE_CURVE curve 4 point, field \"O\" (cols 21-40): not a real number [found \"x\"]");
+  EXPECT_NE(bad.lines()[1].find("error 1217: *DEFINE_CURVE curve 4 point, field \"A\" (cols 1-20)"), std::string::npos) << bad.lines()[1];
+  const Read vel = read(deck(head + "*SET_NODE_LIST\n" + card({"1"}) + card({"1", "2"}) + "*INITIAL_VELOCITY\n" + card({"0", "1"}) +
+                             card({"5.0"}) + card({"1.0", "", "", "", "2.0", "3.0"})));
+  ASSERT_EQ(vel.lines().size(), 1u);
+  EXPECT_NE(vel.lines()[0].find("warning 2006: *INITIAL_VELOCITY card 3, field \"VXRE/VYRE/VZRE\" (cols 41-50)"), std::string::npos)
+      << vel.lines()[0];
+}
