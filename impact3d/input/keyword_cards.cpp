@@ -355,6 +355,22 @@ std::vector<KeywordSpec> loads_bcs_specs() {
   return t;
 }
 
+std::vector<KeywordSpec> sets_boxes_specs() {
+  std::vector<KeywordSpec> t;
+  t.push_back({{"DEFINE_BOX"}, KeywordFamily::sets_boxes, false,
+               {{"", 7, 10, per_field, {
+                   {"BOXID", 0, I, 0, false, {}, "box id (> 0, else error 1201; the card is then named by it; defined twice: error 1200)"},
+                   {"XMN", 1, E, 0, false, {}, "bounds, a maximum below its minimum: error 1003"},
+                   {"XMX", 2, E, 0, false, {}, ""},
+                   {"YMN", 3, E, 0, false, {}, ""},
+                   {"YMX", 4, E, 0, false, {}, ""},
+                   {"ZMN", 5, E, 0, false, {}, ""},
+                   {"ZMX", 6, E, 0, false, {}, ""},
+               }, "the first card that is not blank (after the _TITLE card)"}},
+               "one box per keyword, as in LS-DYNA"});
+  return t;
+}
+
 std::vector<KeywordSpec> control_database_specs() {
   std::vector<KeywordSpec> t;
   t.push_back({{"CONTROL_TERMINATION"}, KeywordFamily::control_database, true,
@@ -520,6 +536,7 @@ const KeywordCardLayout& KeywordSpec::card(std::string_view label, std::string_v
 const std::vector<KeywordSpec>& all_keyword_specs() {
   static const std::vector<KeywordSpec> t = [] {
     std::vector<KeywordSpec> all = parts_sections_specs();
+    for (KeywordSpec& s : sets_boxes_specs()) all.push_back(std::move(s));
     for (KeywordSpec& s : loads_bcs_specs()) all.push_back(std::move(s));
     for (KeywordSpec& s : control_database_specs()) all.push_back(std::move(s));
     return all;

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "impact3d/input/coordinate_systems.h"
 #include "impact3d/input/keyword_blocks.h"
 #include "impact3d/model/model.h"
 
@@ -129,6 +130,20 @@ struct KeywordLoads {
 // *BOUNDARY_SPC_NODE / _SET, *INITIAL_VELOCITY (_NODE, _GENERATION) and *INITIAL_TEMPERATURE_NODE
 // / _SET into l; false if the keyword is none of them.
 bool read_loads_bcs(const Block& b, KeywordContext& ctx, KeywordLoads& l);
+
+// ---------------------------------------------------------------- sets, boxes and coordinate systems
+// (keyword_sets_boxes.cpp; the sets and systems are still read by keyword_reader.cpp)
+struct RBox {  // *DEFINE_BOX
+  Box box;
+  Ref ref;
+};
+
+struct KeywordSetsBoxes {
+  std::map<int, RBox> boxes;  // by BOXID
+};
+
+// Reads *DEFINE_BOX into s; false if the keyword is none of the family's tables.
+bool read_sets_boxes(const Block& b, KeywordContext& ctx, KeywordSetsBoxes& s);
 
 // ---------------------------------------------------------------- control and database cards
 // (keyword_control_database.cpp)

@@ -139,10 +139,6 @@ struct RIdList {  // node, part, solid or shell set, or history list
   std::string keyword;          // as written (*SET_NODE_GENERAL, ...), upper case
   Ref ref;
 };
-struct RBox {  // *DEFINE_BOX
-  Box box;
-  Ref ref;
-};
 struct RCoordSystem {  // *DEFINE_COORDINATE_SYSTEM (_NODES, _VECTOR), *DEFINE_VECTOR
   enum Kind { points, nodes, vectors, vector } kind = points;
   int id = 0;
@@ -239,6 +235,7 @@ class KeywordReader {
   bool global_long_ = false, global_i10_ = false;
 
   // raw records
+  KeywordSetsBoxes sb_;  // sets, boxes, coordinate systems (keyword_sets_boxes.cpp)
   KeywordLoads ld_;  // loads, prescribed motions, damping, initial conditions, constraints (keyword_loads_bcs.cpp)
   std::vector<RNode, HugePageAllocator<RNode>> nodes_;
   std::vector<RElem, HugePageAllocator<RElem>> elems_;
@@ -274,7 +271,7 @@ class KeywordReader {
   int& body_parts_psid_ = ld_.body_parts_psid;
   Ref& body_parts_ref_ = ld_.body_parts_ref;
   std::map<int, RIdList> solid_sets_, shell_sets_;  // shell sets: read, kept for shell elements
-  std::map<int, RBox> boxes_;
+  std::map<int, RBox>& boxes_ = sb_.boxes;
   std::vector<RCoordSystem> coord_defs_;  // resolved into coords_ once the nodes are known
   CoordinateTable coords_;
   // *ELEMENT_SOLID cards of 10-node tetrahedra (N9 or N10 not 0): refused in one message
@@ -1433,8 +1430,7 @@ class KeywordReader {
       return true;
     }
     if (parse_set_keyword(b)) return true;
-    if (n == "DEFINE_BOX") {
-      parse_define_box(b);
+    if (read_sets_boxes(b, ctx_, sb_)) {  // keyword_sets_boxes.cpp
     } else if (n == "DEFINE_TRANSFORMATION") {
       parse_define_transformation(b);
     } else if (n == "DEFINE_COORDINATE_SYSTEM" || n == "DEFINE_COORDINATE_NODES" || n == "DEFINE_COORDINATE_VECTOR" ||
@@ -1582,27 +1578,6 @@ class KeywordReader {
   }
 
   // *DEFINE_BOX: BOXID XMN XMX YMN YMX ZMN ZMX.
-  void parse_define_box(const Block& b) {
-    for (std::size_t k = skip_option_card(b); k < b.data.size(); ++k) {
-      if (is_blank(b.data[k].line->text)) continue;
-      KCard c = card(b, k, "", W(b, 7));
-      const int id = xid(int(c.i(0, "BOXID")), b, &IncludeTransform::iddoff);
-      c.set_card(b.keyword + " " + std::to_string(id));
-      RBox r;
-      r.ref = c.ref(0);
-      const char* names[] = {"XMN", "XMX", "YMN", "YMX", "ZMN", "ZMX"};
-      for (int a = 0; a < 3; ++a) {
-        r.box.lo[std::size_t(a)] = c.r(1 + 2 * a, names[2 * a]);
-        r.box.hi[std::size_t(a)] = c.r(2 + 2 * a, names[2 * a + 1]);
-        if (r.box.hi[std::size_t(a)] < r.box.lo[std::size_t(a)]) c.error(1003, 2 + 2 * a, names[2 * a + 1], std::string("must not be below ") + names[2 * a]);
-      }
-      if (id < 1) c.error(1201, 0, "BOXID", "box ids must be positive");
-      if (boxes_.count(id)) c.error(1200, 0, "BOXID", "also defined at " + at(boxes_[id].ref));
-      boxes_[id] = r;
-      break;  // one box per keyword, as in LS-DYNA
-    }
-  }
-
   // *DEFINE_COORDINATE_SYSTEM: CID XO YO ZO XL YL ZL CIDL; XP YP ZP.
   // *DEFINE_COORDINATE_NODES: CID N1 N2 N3 FLAG DIR (DIR X only).
   // *DEFINE_COORDINATE_VECTOR: CID XX YX ZX XV YV ZV NID.
