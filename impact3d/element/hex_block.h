@@ -46,6 +46,7 @@ struct alignas(64) HexBlock {
   Lanes hg_old, hg_new, dt_hg;                  // viscous hourglass: old and new resultants' power, stable step
   Lanes de_src;                                 // energy an equation of state deposited (in de_ie too)
   Lanes cs;                                     // sound speed per lane (groups with an equation of state)
+  Lanes de_old;                                 // fully integrated solids: the old stress's share of de_ie
 };
 
 namespace hex_block_detail {

@@ -49,7 +49,7 @@ void init_elements(const Model& m, State& s) {
   for (auto* v : {&s.vol0, &s.vol, &s.mass_e, &s.eps_p, &s.q, &s.dt_e})
     v->assign(std::size_t(ne), 0.0);
   s.sig.assign(std::size_t(6) * ne, 0.0);
-  build_element_groups(s);
+  build_element_groups(s, m);
   // back stresses and hourglass resultants only when some group carries them
   bool back = false, hgs = false;
   s.hist_stride = 0;
@@ -108,6 +108,7 @@ void init_elements(const Model& m, State& s) {
       for (int c = 0; c < 3; ++c) s.sig[6 * std::size_t(e) + std::size_t(c)] = -p0;
     }
   }
+  init_point_state(s);  // the fully integrated solids' points start from their solid's state
   // node -> corner map, in increasing (element, corner) order of the deck's numbering: a node
   // sums its corner forces in the same order whether or not the mesh was renumbered
   // (init/mesh_order.h), so renumbering changes no bit of the nodal forces

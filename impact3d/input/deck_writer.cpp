@@ -251,12 +251,18 @@ class KeywordWriter {
 
   void materials() {
     os_ << "*SECTION_SOLID\n$#   secid    elform\n" << kcard({I(1), I(1)}) << "\n";
+    // the fully integrated solids' section (ELFORM 2) after the shells' and beams' (1 + pid)
+    const int sri_secid = int(m_.materials.size()) + 2;
+    bool any_sri = false;
+    for (const MaterialData& md : m_.materials) any_sri = any_sri || (!md.shell && !md.beam && md.solid_elform == 2);
+    if (any_sri) os_ << "*SECTION_SOLID\n$#   secid    elform\n" << kcard({I(sri_secid), I(2)}) << "\n";
     for (std::size_t k = 0; k < m_.materials.size(); ++k) {
       const MaterialData& md = m_.materials[k];
       int id = int(k) + 1;
       os_ << "*PART\n$# title\n" << md.title << "\n";
       // a shell part has its own *SECTION_SHELL (secid 1 + pid)
-      os_ << "$#     pid     secid       mid     eosid      hgid\n" << kcard({I(id), I(md.shell || md.beam ? 1 + id : 1), I(id), I(md.eos.form != 0 ? id : 0), I(id)}) << "\n";
+      const int secid = md.shell || md.beam ? 1 + id : md.solid_elform == 2 ? sri_secid : 1;
+      os_ << "$#     pid     secid       mid     eosid      hgid\n" << kcard({I(id), I(secid), I(id), I(md.eos.form != 0 ? id : 0), I(id)}) << "\n";
       if (md.beam) {  // a beam part: its own *SECTION_BEAM (secid 1 + pid)
         const BeamSectionData& sec = md.beam_section;
         os_ << "*SECTION_BEAM\n$#   secid    elform      shrf   qr/irid       cst\n"
@@ -869,6 +875,8 @@ class FixedWriter {
     for (std::size_t j = 0; j < m_.materials.size(); ++j) {
       const MaterialData& md = m_.materials[j];
       const std::string what = "material " + std::to_string(j + 1);
+      if (!md.shell && !md.beam && md.solid_elform == 2)
+        note(what + ": a fully integrated solid (*SECTION_SOLID ELFORM 2) has no DYNA3D element formulation: written as the one-point hexahedron (with hourglass type 1, coefficient 0.1)");
       os_ << T("material card 1", what + " card 1")("material number", int(j) + 1)("material type", md.type)("density", md.rho)
                  ("EOS type", md.eos.form)("hourglass type", md.hourglass_type)("hourglass coefficient", md.hourglass_coef)
                  ("bulk viscosity type", md.bulk_type)("quadratic bulk viscosity Q1", md.q1)("linear bulk viscosity Q2", md.q2)

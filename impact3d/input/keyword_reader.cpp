@@ -2336,8 +2336,8 @@ class KeywordReader {
         auto u = unsupported_secids_.find(p.secid);
         if (u != unsupported_secids_.end()) err(1102, p.sec_ref, card, "SECID", "section " + std::to_string(p.secid) + " is " + u->second + "; solids need *SECTION_SOLID");
         else err(1310, p.sec_ref, card, "SECID", "*SECTION_SOLID " + std::to_string(p.secid) + " is not defined");
-      } else if (sit->second.elform != 0 && sit->second.elform != 1) {
-        err(1102, sit->second.ref, "*SECTION_SOLID " + std::to_string(p.secid), "ELFORM", "only ELFORM 1 (one-point constant-stress hexahedron)");
+      } else if (sit->second.elform != 0 && sit->second.elform != 1 && sit->second.elform != 2) {
+        err(1102, sit->second.ref, "*SECTION_SOLID " + std::to_string(p.secid), "ELFORM", "only ELFORM 1 (one-point constant-stress hexahedron) and 2 (fully integrated selective-reduced)");
       }
       if (mit == mats_.end()) {
         auto u = unsupported_mids_.find(p.mid);
@@ -2383,6 +2383,10 @@ class KeywordReader {
       md.hourglass_type = ihq == 0 ? 1 : ihq;
       md.hourglass_coef = qm > 0 ? qm : 0.10;
       md.bulk_type = ctl_.btype;
+      if (sit != sections_.end() && sit->second.elform == 2) {  // no zero-energy modes: LS-DYNA ignores IHQ
+        md.solid_elform = 2;
+        md.hourglass_coef = 0;
+      }
       part_material_[k] = int(m_.materials.size());
       m_.materials.push_back(md);
     }

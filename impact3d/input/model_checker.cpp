@@ -440,6 +440,26 @@ void check_material_curves(const Model& m, Diagnostics& diag, const Location& fi
   }
 }
 
+// Fully integrated solids (ELFORM 2, element/hex_sri.h): each Gauss point runs the type's
+// scalar point update; an equation of state (a pressure from the element's energy and volume)
+// is not served per point.
+void check_solid_formulations(const Model& m, const Location& file_loc, Diagnostics& diag,
+                              const std::vector<char>& mat_used) {
+  for (std::size_t k = 0; k < m.materials.size(); ++k) {
+    const MaterialData& md = m.materials[k];
+    if (md.solid_elform != 2 || md.shell || md.beam || !mat_used[k]) continue;
+    Location loc = file_loc;
+    loc.line = md.line;
+    loc.card = "material " + std::to_string(md.number);
+    const MaterialType* t = find_material_type(md.type);
+    if (!t) continue;  // refused when read
+    if (md.eos.form != 0 || t->needs_eos)
+      diag.add(1102, loc, "an equation of state on fully integrated solids (*SECTION_SOLID ELFORM 2); use ELFORM 1");
+    else if (!t->rigid && !t->solid.update_point)
+      diag.add(1103, loc, "material type " + std::to_string(md.type) + " on fully integrated solids (*SECTION_SOLID ELFORM 2): it has no point update; use ELFORM 1");
+  }
+}
+
 bool check_model(const Model& m, Diagnostics& diag) {
   const int before = diag.error_count();
   Location file_loc;
@@ -485,6 +505,7 @@ bool check_model(const Model& m, Diagnostics& diag) {
   check_shells(m, file_loc, diag, node_used, mat_used);
   check_beams(m, file_loc, diag, node_used, mat_used);
   check_spot_welds(m, file_loc, diag, node_used);
+  check_solid_formulations(m, file_loc, diag, mat_used);
   // *MAT_SPOTWELD on solids: TFAIL is a beam rule here
   for (std::size_t k = 0; k < m.materials.size(); ++k) {
     const MaterialData& md = m.materials[k];

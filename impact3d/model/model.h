@@ -146,6 +146,9 @@ struct MaterialData {
   int line = 0;          // line of card 1, for messages
   bool shell = false;    // the part is a shell part (its elements are in Model::shell_nodes)
   bool beam = false;     // the part is a beam part (its elements are in Model::beam_nodes)
+  // a solid part's formulation (*SECTION_SOLID ELFORM): 1 the one-point hexahedron, 2 the fully
+  // integrated selective-reduced hexahedron (element/hex_sri.h; no hourglass control)
+  int solid_elform = 1;
   ErosionData erosion;   // *MAT_ADD_EROSION (keyword decks)
   EosData eos;           // its equation of state (form 0: none; material/eos.h)
   ShellSectionData shell_section;

@@ -44,6 +44,10 @@ struct ElementGroup {
   int material = 0;          // 0-based material index
   int history = 0;           // history values per solid (State::hist)
   int first_block = 0, num_blocks = 0, num_elems = 0;
+  // *SECTION_SOLID ELFORM: 1 the one-point hexahedron (block kernels, hourglass control), 2 the
+  // fully integrated selective-reduced hexahedron (element/hex_sri.h: scalar, per-point state
+  // in State::pt_*)
+  int formulation = 1;
 };
 
 // What one block of the element pass hands to the reductions.
@@ -123,6 +127,14 @@ struct State {
   std::vector<double> hist;            // hist_stride per element: the material's history values (empty when none)
   int hist_stride = 0;
   std::vector<double> hgs;             // 12 per element: hourglass resultants (empty without hourglass control)
+  // Fully integrated solids (ELFORM 2 groups): their Gauss points' material state, 8 points per
+  // solid from pt_first[e] (-1: a one-point solid), in element order; point g of solid e is
+  // pt_first[e] + g.  pt_sig 6 per point, pt_back 6 per point (empty when no such group carries
+  // a back stress), pt_eps_p and pt_yielded 1, pt_hist hist_stride.  The element arrays (sig,
+  // eps_p, yielded, hist) hold the mean of the points (the plot database's stress and plastic
+  // strain, the failure criteria).  Empty without such solids.
+  std::vector<int> pt_first;
+  std::vector<double> pt_sig, pt_back, pt_eps_p, pt_yielded, pt_hist;
   // viscous hourglass forms, per element group: the power of the resultants of the last pass at
   // the velocities they were computed from, booked with their power at the next velocities over
   // the velocity step dt_vel between (hexahedron.h, element_processing.cpp)
@@ -169,7 +181,8 @@ struct State {
   void visit_dynamic_fields(V&& v) {
     v(x); v(y); v(z); v(vx); v(vy); v(vz); v(ax); v(ay); v(az);
     v(vx_old); v(vy_old); v(vz_old); v(fx); v(fy); v(fz); v(fext_x); v(fext_y); v(fext_z);
-    v(vol); v(sig); v(back); v(eps_p); v(hist); v(yielded); v(failed); v(hgs); v(hg_pending); v(q); v(cfx); v(cfy); v(cfz);
+    v(vol); v(sig); v(back); v(eps_p); v(hist); v(yielded); v(failed); v(hgs);
+    v(pt_sig); v(pt_back); v(pt_eps_p); v(pt_yielded); v(pt_hist); v(hg_pending); v(q); v(cfx); v(cfy); v(cfz);
     v(dt_e); v(mat_internal); v(mat_hourglass);
     v(mass); v(shells.inertia); v(ms_factor); v(shells.ms_factor); v(added_mass); v(mat_added_mass);
     v(time); v(cycle); v(dt_half); v(dt_next); v(dt_vel); v(dt_elem); v(dt0);

@@ -22,8 +22,13 @@ bool group_carries_back_stress(const SolidKernel& kernel, const MaterialConstant
 bool group_carries_hourglass_state(const MaterialData& md);
 
 // Fills s.groups, s.slot_elem, s.elem_slot and s.block_results from s.conn and s.mat: one
-// group per material (in material order), its elements in increasing order.  With one
-// material, slot = element.
-void build_element_groups(State& s);
+// group per material (in material order), its elements in increasing order, its formulation
+// the material's MaterialData::solid_elform.  With one material, slot = element.
+void build_element_groups(State& s, const Model& m);
+
+// Allocates the fully integrated solids' point state (State::pt_*) and starts each point from
+// its solid's state (stress, plastic strain, history: initial temperatures and the like).
+// After s.hist_stride, s.back and the initial element state are set.
+void init_point_state(State& s);
 
 }  // namespace impact3d

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "impact3d/element/hex_block.h"
+#include "impact3d/element/hex_sri.h"
 #include "impact3d/material/eos.h"
 #include "impact3d/material/material_block.h"
 #include "impact3d/solve/element_groups.h"
@@ -35,6 +36,7 @@ struct GroupPass {
   bool with_back; // type 3 with a kinematic part: the back stress is carried
   bool hg_state;  // hourglass types 4, 5 carry resultants
   bool eos;       // the pressure comes from an equation of state (material/eos.h)
+  bool sri;       // fully integrated selective-reduced solids (ELFORM 2, element/hex_sri.h)
   double time;    // t^n (erosion by failure time)
   const Model* model;  // initial coordinates (erosion by strain)
 };
@@ -145,9 +147,8 @@ void calc_hourglass_for_hex_block(const GroupPass& gp, HexBlock& k) {
   }
 }
 
-// One block of a deformable group: kinematics, stress, bulk viscosity, forces, hourglass,
-// step.  Results stay in k; store_hex_block writes them.
-void calc_forces_for_hex_block(const GroupPass& gp, HexBlock& k) {
+// Kinematics, density and bulk viscosity of a gathered block, and the viscosity's work.
+void calc_hex_kinematics_and_viscosity_block(const GroupPass& gp, HexBlock& k) {
   const MaterialConstants& mc = *gp.mc;
   const MaterialData& md = *gp.md;
   calc_hex_kinematics_block(k, gp.dt);
@@ -158,12 +159,129 @@ void calc_forces_for_hex_block(const GroupPass& gp, HexBlock& k) {
   // depend on it) so that an equation of state books its work into the element's energy.
   calc_hex_bulk_viscosity_block(k, mc.c, md.q1, md.q2);
   IMPACT3D_FOR_LANES k.de_bv[l] = -0.5 * (k.q_old[l] + k.q[l]) * k.trd[l] * k.vm[l] * gp.dt;
+}
+
+// One block of a deformable group: kinematics, stress, bulk viscosity, forces, hourglass,
+// step.  Results stay in k; store_hex_block writes them.
+void calc_forces_for_hex_block(const GroupPass& gp, HexBlock& k) {
+  const MaterialConstants& mc = *gp.mc;
+  const MaterialData& md = *gp.md;
+  calc_hex_kinematics_and_viscosity_block(gp, k);
   if (gp.eos) IMPACT3D_FOR_LANES k.cs[l] = mc.c;
   update_stress_block(gp, k);
   calc_hex_stress_force_block(k);
   calc_hourglass_for_hex_block(gp, k);
   if (gp.eos) calc_hex_time_step_lanes_block(k, md.q1, md.q2);  // the element's own sound speed
   else calc_hex_time_step_block(k, mc.c, md.q1, md.q2);
+  limit_hex_time_step_block(k);
+}
+
+// A fully integrated solid's Gauss points (hex_sri.h) read from and written to State::pt_*.
+struct SriPoint {
+  SolidPointState st;
+  std::size_t p;  // the point's index
+  void load(const State& s, const GroupPass& gp) {
+    for (std::size_t c = 0; c < 6; ++c) st.sig[c] = s.pt_sig[6 * p + c];
+    if (gp.with_back)
+      for (std::size_t c = 0; c < 6; ++c) st.back[c] = s.pt_back[6 * p + c];
+    st.eps_p = s.pt_eps_p[p];
+    st.yielded = s.pt_yielded[p];
+    const std::size_t hs = std::size_t(s.hist_stride);
+    for (int h = 0; h < gp.history; ++h) st.hist[h] = s.pt_hist[hs * p + std::size_t(h)];
+  }
+  void store(State& s, const GroupPass& gp) const {
+    for (std::size_t c = 0; c < 6; ++c) s.pt_sig[6 * p + c] = st.sig[c];
+    if (gp.with_back)
+      for (std::size_t c = 0; c < 6; ++c) s.pt_back[6 * p + c] = st.back[c];
+    s.pt_eps_p[p] = st.eps_p;
+    s.pt_yielded[p] = st.yielded;
+    const std::size_t hs = std::size_t(s.hist_stride);
+    for (int h = 0; h < gp.history; ++h) s.pt_hist[hs * p + std::size_t(h)] = st.hist[h];
+  }
+};
+
+// The stress power of a step (trapezoid in stress; shear pairs twice) and the old stress's share.
+void sri_point_power(const double old[6], const double sig[6], const double d[6], double& pw, double& pw0) {
+  pw = 0, pw0 = 0;
+  for (int c = 0; c < 3; ++c) pw += 0.5 * (old[c] + sig[c]) * d[c], pw0 += 0.5 * old[c] * d[c];
+  for (int c = 3; c < 6; ++c) pw += (old[c] + sig[c]) * d[c], pw0 += old[c] * d[c];
+}
+
+// Lane l (solid e) of a fully integrated block whose kinematics and bulk viscosity are done:
+// each Gauss point's stress update with its own strain rate (the element's mean trD) and spin
+// at the midpoint x^{n-1/2}, the stress work, then the B-bar corner forces at x^n (hex_sri.h).
+// The lane's sig, eps_p, yielded and history become the means of the points (what
+// store_hex_block writes to the element: output, failure criteria).  A point whose Jacobian is
+// not positive makes the lane's volume that Jacobian (the run stops on a bad volume).
+void calc_forces_for_sri_lane(State& s, const GroupPass& gp, HexBlock& k, int l, int e) {
+  const double dt = gp.dt;
+  double x[8], y[8], z[8], xm[8], ym[8], zm[8], vx[8], vy[8], vz[8];
+  for (int j = 0; j < 8; ++j) {
+    x[j] = k.x[j][l], y[j] = k.y[j][l], z[j] = k.z[j][l];
+    vx[j] = k.vx[j][l], vy[j] = k.vy[j][l], vz[j] = k.vz[j][l];
+    xm[j] = x[j] - 0.5 * dt * vx[j], ym[j] = y[j] - 0.5 * dt * vy[j], zm[j] = z[j] - 0.5 * dt * vz[j];
+  }
+  double mean[6] = {0, 0, 0, 0, 0, 0}, eps = 0, yielded = 0, hist[kMaxHistory] = {}, de = 0, de0 = 0;
+  double worst = k.v[l];  // the smallest Jacobian met
+  SriPoint pt;
+  double b[3][8];
+  for (int g = 0; g < kSriPoints; ++g) {
+    pt.p = std::size_t(s.pt_first[std::size_t(e)] + g);
+    pt.load(s, gp);
+    const double jm = calc_hex_sri_point_gradients(xm, ym, zm, g, b[0], b[1], b[2]);
+    worst = std::min(worst, jm);
+    double d[6], old[6];
+    calc_hex_sri_strain_rate(b[0], b[1], b[2], vx, vy, vz, k.trd[l], d, pt.st.w);
+    for (int c = 0; c < 6; ++c) old[c] = pt.st.sig[c];
+    if (dt > 0) {
+      rotate_stress_jaumann(pt.st.sig, pt.st.w, dt);
+      if (gp.with_back) rotate_stress_jaumann(pt.st.back, pt.st.w, dt);
+      gp.solid->update_point(*gp.mc, d, dt, pt.st);
+      double pw, pw0;
+      sri_point_power(old, pt.st.sig, d, pw, pw0);
+      de += pw * jm * dt;
+      de0 += pw0 * jm * dt;
+    }
+    pt.store(s, gp);
+    for (int c = 0; c < 6; ++c) mean[c] += pt.st.sig[c];
+    eps += pt.st.eps_p;
+    yielded = pt.st.yielded != 0.0 ? 1.0 : yielded;
+    for (int h = 0; h < gp.history; ++h) hist[h] += pt.st.hist[h];
+  }
+  double fx[8] = {}, fy[8] = {}, fz[8] = {}, jp = 0;
+  for (int g = 0; g < kSriPoints; ++g) {
+    const std::size_t p = std::size_t(s.pt_first[std::size_t(e)] + g);
+    const double jn = calc_hex_sri_point_gradients(x, y, z, g, b[0], b[1], b[2]);
+    worst = std::min(worst, jn);
+    jp += add_hex_sri_point_forces(&s.pt_sig[6 * p], b[0], b[1], b[2], jn, fx, fy, fz);
+  }
+  const double pq = jp / k.v[l] - k.q[l];  // the mean pressure and the bulk viscosity
+  for (int j = 0; j < 8; ++j) {
+    k.fx[j][l] = fx[j] + pq * k.dvdx[j][l];
+    k.fy[j][l] = fy[j] + pq * k.dvdy[j][l];
+    k.fz[j][l] = fz[j] + pq * k.dvdz[j][l];
+  }
+  constexpr double kInv = 1.0 / kSriPoints;
+  for (int c = 0; c < 6; ++c) k.sig[c][l] = mean[c] * kInv;
+  k.eps_p[l] = eps * kInv;
+  k.yielded[l] = yielded;
+  for (int h = 0; h < gp.history; ++h) k.hist[h][l] = hist[h] * kInv;
+  k.de_ie[l] = de;
+  k.de_old[l] = de0;
+  if (!(worst > 0)) k.v[l] = worst;
+}
+
+// A block of fully integrated solids: the one-point element's kinematics and bulk viscosity
+// (mean strain rate, dV/dx, step), the points lane by lane, no hourglass control.
+void calc_forces_for_sri_block(State& s, const GroupPass& gp, const int* elems, const bool* active, HexBlock& k) {
+  calc_hex_kinematics_and_viscosity_block(gp, k);
+  IMPACT3D_FOR_LANES {
+    k.de_ie[l] = k.de_old[l] = k.de_src[l] = k.de_hg[l] = k.hg_old[l] = k.hg_new[l] = 0;
+    k.dt_hg[l] = DBL_MAX;
+  }
+  for (int l = 0; l < kLanes; ++l)
+    if (active[l] && k.v[l] > 0 && k.vm[l] > 0) calc_forces_for_sri_lane(s, gp, k, l, elems[l]);
+  calc_hex_time_step_block(k, gp.mc->c, gp.md->q1, gp.md->q2);
   limit_hex_time_step_block(k);
 }
 
@@ -243,7 +361,7 @@ void store_hex_block(State& s, const GroupPass& gp, const int* elems, const bool
       double pw0 = 0;
       for (int c = 0; c < 3; ++c) pw0 += 0.5 * k.old[c][l] * k.d[c][l];
       for (int c = 3; c < 6; ++c) pw0 += k.old[c][l] * k.d[c][l];
-      const double die = pw0 * k.vm[l] * gp.dt;
+      const double die = gp.sri ? k.de_old[l] : pw0 * k.vm[l] * gp.dt;
       const double dbv = -0.5 * s.q[E] * k.trd[l] * k.vm[l] * gp.dt;
       for (int c = 0; c < 6; ++c) sig[c] = 0;
       s.q[E] = 0;
@@ -301,7 +419,8 @@ void process_hex_block(State& s, const GroupPass& gp, int block) {
   }
   HexBlock k;
   gather_hex_block(s, gp, elems, k);
-  calc_forces_for_hex_block(gp, k);
+  if (gp.sri) calc_forces_for_sri_block(s, gp, elems, active, k);
+  else calc_forces_for_hex_block(gp, k);
   store_hex_block(s, gp, elems, active, block, k);
 }
 
@@ -353,6 +472,7 @@ ElementLoopResult calc_forces_for_elems(const Model& m, State& s) {
     gp.with_back = group_carries_back_stress(*g.solid, *gp.mc);
     gp.hg_state = group_carries_hourglass_state(*gp.md);
     gp.eos = gp.mc->eos_form != 0;
+    gp.sri = g.formulation == 2;
     gp.time = s.time;
     gp.model = &m;
     const int b0 = g.first_block, nb = g.num_blocks;
