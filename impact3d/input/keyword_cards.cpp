@@ -86,7 +86,7 @@ std::vector<KeywordSpec> parts_sections_specs() {
   t.push_back({{"SECTION_SOLID"}, F, false,
                {{"", 3, 10, per_field, {
                    {"SECID", 0, I, 0, false, {}, "section id (defined twice: error 1200)"},
-                   {"ELFORM", 1, I, 1, false, {}, "element formulation (solids: the one-point hexahedron)"},
+                   {"ELFORM", 1, I, 1, false, {}, "element formulation (solids: 0/1 the one-point hexahedron, 2 the fully integrated selective-reduced one; others: error 1102 for a part that uses it)"},
                    {"AET", 2, I, 0, false, {nonzero(1102, "ambient element types")}, "ambient element type"},
                }, ""}},
                "one card (the cards of other ELFORMs after it are not read)"});
