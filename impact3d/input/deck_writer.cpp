@@ -266,7 +266,7 @@ class KeywordWriter {
       if (md.beam) {  // a beam part: its own *SECTION_BEAM (secid 1 + pid)
         const BeamSectionData& sec = md.beam_section;
         os_ << "*SECTION_BEAM\n$#   secid    elform      shrf   qr/irid       cst\n"
-            << kcard({I(1 + id), I(sec.elform), R(sec.shrf), I(sec.qr), I(int(sec.cst))}) << "\n";
+            << kcard({I(1 + id), I(sec.spot_weld_beam ? 9 : sec.elform), R(sec.shrf), I(sec.qr), I(int(sec.cst))}) << "\n";
         if (sec.elform == 3) os_ << "$#       a\n" << kcard({R(sec.area)}) << "\n";
         else if (sec.elform == 2)
           os_ << "$#       a       iss       itt         j        sa\n" << kcard({R(sec.area), R(sec.iss), R(sec.itt), R(sec.jt), R(sec.sa)}) << "\n";

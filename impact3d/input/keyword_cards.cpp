@@ -116,7 +116,9 @@ std::vector<KeywordSpec> parts_sections_specs() {
   t.push_back({{"SECTION_BEAM"}, F, false,
                {{"card 1", 8, 10, per_field, {
                    {"SECID", 0, I, 0, false, {}, "section id (the cards are then named by it in messages; defined twice: error 1200)"},
-                   {"ELFORM", 1, I, 1, true, {outside(1, 3, 1102, "beam formulation %v; only ELFORM 1 (Hughes-Liu), 2 (Belytschko-Schwer) and 3 (truss)")}, "beam formulation"},
+                   {"ELFORM", 1, I, 1, true, {inside(9, 9, 0, nullptr),
+                                              outside(1, 3, 1102, "beam formulation %v; only ELFORM 1 (Hughes-Liu), 2 (Belytschko-Schwer), 3 (truss) and 9 (spot-weld beam)")},
+                    "beam formulation (9: spot-weld beam, run as 1)"},
                    shear_factor("shear factor in (0, 1] (5/6 for a rectangle)"),
                    {"QR/IRID", 3, E, 2, true, {below(0, 1102, "user-defined integration rules (*INTEGRATION_BEAM); rules 1-5"),
                                                not_whole(-kInf, 5, 1003, "quadrature rule 1-5")}, "quadrature rule"},
@@ -144,7 +146,16 @@ std::vector<KeywordSpec> parts_sections_specs() {
                    {"A", 0, E, 0, false, {outside(0, kInf, 1251, "the truss area must be positive", true)}, "area"},
                    {"RAMPT", 1, E, 0, false, {nonzero(1102, "initial stress ramps")}, "stress ramp time"},
                    {"STRESS", 2, E, 0, false, {nonzero(1102, "initial stress")}, "initial stress"},
-               }, "ELFORM 3"}},
+               }, "ELFORM 3"},
+                {"card 2", 8, 10, per_field, {
+                   checked_after({"TS1", 0, E, 0, false, {below(0, 1251)}, "diameter (CST 1) or s thickness at node 1"}, 3),
+                   {"TS2", 1, E, 0, false, {}, "at node 2 (0: TS1)"},
+                   checked_after({"TT1", 2, E, 0, false, {below(0, 1251)}, "inner diameter (CST 1; 0: solid) or t thickness at node 1"}, 3),
+                   {"TT2", 3, E, 0, false, {}, "at node 2 (0: TT1)"},
+                   {"PRINT", 4, E, 0, false, {}, "SWFORC output flag (read; no SWFORC file is written)"},
+                   plain("UNUSED", 5, E),
+                   {"ITOFF", 6, E, 0, false, {nonzero(1102, "torsion-free spot-weld beams (ITOFF 1)")}, "0: torsional stiffness active"},
+               }, "ELFORM 9"}},
                "card 2 by ELFORM (another ELFORM: as 1), named by SECID; missing: error 1316"});
   t.push_back({{"HOURGLASS"}, F, false,
                {{"", 8, 10, per_field, {

@@ -124,6 +124,7 @@ void read_beam_section(const Block& b, KeywordContext& ctx, const KeywordSpec& s
   sec.line = v.card().line();
   v.rest();
   sec.elform = int(v.integer("ELFORM"));
+  const bool spot_weld_beam = sec.elform == 9;  // LS-DYNA's spot-weld beam: card 2 as ELFORM 1, and ITOFF
   sec.shrf = v["SHRF"];
   sec.qr = int(v["QR/IRID"]);
   if (v.passed("CST")) sec.cst = v.integer("CST") == 0 ? BeamCrossSection::rectangular : BeamCrossSection::tubular;
@@ -132,9 +133,16 @@ void read_beam_section(const Block& b, KeywordContext& ctx, const KeywordSpec& s
                         : sec.elform == 2 ? "card 2 (A ISS ITT J SA IST)"
                                           : "card 2 (TS1 TS2 TT1 TT2 NSLOC NTLOC)");
   } else {
-    KeywordValues v2 = ctx.fields(b, k + 1, s.card("card 2", sec.elform == 2 ? "ELFORM 2" : sec.elform == 3 ? "ELFORM 3" : "ELFORM 1"));
+    KeywordValues v2 = ctx.fields(b, k + 1, s.card("card 2", spot_weld_beam    ? "ELFORM 9"
+                                                             : sec.elform == 2 ? "ELFORM 2"
+                                                             : sec.elform == 3 ? "ELFORM 3"
+                                                                               : "ELFORM 1"));
     v2.card().set_card(b.keyword + " " + std::to_string(id));
     read_beam_section_card2(v2, sec);
+  }
+  if (spot_weld_beam) {  // the Hughes-Liu kernel with the card's (round) section
+    sec.elform = 1;
+    sec.spot_weld_beam = true;
   }
   if (p.beam_sections.count(id) || p.shell_sections.count(id) || p.sections.count(id))
     v.error(1200, "SECID", "section also defined earlier");

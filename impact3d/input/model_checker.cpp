@@ -196,6 +196,8 @@ void check_beams(const Model& m, const Location& file_loc, Diagnostics& diag,
         diag.add(1103, ml, "material type " + std::to_string(md.type) + " has no beam form; beams take types " + beam_material_numbers());
       if (sec.elform < 1 || sec.elform > 3)
         diag.add(1102, ml, "ELFORM " + std::to_string(sec.elform) + ": beam formulations 1 (Hughes-Liu), 2 (Belytschko-Schwer) and 3 (truss) only");
+      if (sec.spot_weld_beam && md.type != 100 && has_beam_kernel(md.type))
+        diag.add(1103, ml, "material type " + std::to_string(md.type) + ": the spot-weld beam (ELFORM 9) takes *MAT_SPOTWELD (100)");
       if (sec.elform == 2 && md.type != 1 && has_beam_kernel(md.type) && !material_type(md.type).rigid)
         diag.add(1103, ml, "material type " + std::to_string(md.type) + ": the resultant beam (ELFORM 2) is elastic (type 1) or rigid (20)");
       if (sec.elform == 2 && (!(sec.area > 0) || !(sec.iss > 0) || !(sec.itt > 0) || sec.jt < 0)) {

@@ -69,6 +69,10 @@ struct BeamSectionData {
   // co-rotational, transverse shear), 2 Belytschko-Schwer resultant beam (elastic, Euler-
   // Bernoulli), 3 truss (axial force only, no rotations)
   int elform = 1;
+  // ELFORM 9 on the card (LS-DYNA's spot-weld beam, *MAT_SPOTWELD only): run as ELFORM 1, the
+  // Hughes-Liu kernel, with the card's section (CST 1: TS the weld's diameter, TT 0 a solid
+  // round bar); kept to write the card back and to check the material
+  bool spot_weld_beam = false;
   double shrf = 1.0;  // transverse shear factor SHRF (0 -> 1; 5/6 for a rectangle is usual)
   // quadrature rule QR (ELFORM 1): 1 one point (no bending stiffness), 2 2x2 Gauss, 3 3x3
   // Gauss, 4 3x3 Lobatto, 5 4x4 Gauss (a tube: 1 point, else 2, 3, 3, 4 Gauss points through

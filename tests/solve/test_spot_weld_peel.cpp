@@ -1,6 +1,7 @@
 // Two welded steel sheets pulled apart (issue 24): a cross-tension peel.  Two square sheets of
 // 4 x 4 Belytschko-Tsay shells (40 mm, t = 1 mm, elastic), their mid-surfaces 1 mm apart, are
-// joined at their centre nodes by one spot weld: a *MAT_SPOTWELD beam (NRR) or a
+// joined at their centre nodes by one spot weld: a *MAT_SPOTWELD beam (NRR; a square Hughes-Liu
+// section, or LS-DYNA's spot-weld beam ELFORM 9 with a round one of the same area) or a
 // *CONSTRAINED_SPOTWELD (SN).  The upper sheet is pulled up at its edges y = 0 and y = 40 mm, the
 // lower one down at its edges x = 0 and x = 40 mm, each by F = k t in all (the sheets cross, as
 // in a cross-tension specimen): the sheets bend, and by equilibrium the weld carries N = F in
@@ -73,10 +74,14 @@ std::string peel_deck(const std::string& weld, double end_time, int dump_cycles 
         d << fmt("%8.0f       1", ++eid) << fmt("%8.0f%8.0f", node_id(sheet, i, j), node_id(sheet, i + 1, j))
           << fmt("%8.0f%8.0f\n", node_id(sheet, i + 1, j + 1), node_id(sheet, i, j + 1));
   const int c0 = node_id(0, kN / 2, kN / 2), c1 = node_id(1, kN / 2, kN / 2);
-  if (weld == "beam") {
-    // a 5 mm square weld beam between the centre nodes; NRR = kFail (axial force only)
+  if (weld == "beam" || weld == "beam9") {
+    // a 5 mm square weld beam between the centre nodes; NRR = kFail (axial force only); beam9:
+    // LS-DYNA's spot-weld beam (ELFORM 9, CST 1) of the same area, diameter 5.642 mm
     d << "*PART\nweld\n         2         2         2\n";
-    d << "*SECTION_BEAM\n         2         1       1.0         2         0\n     0.005     0.005     0.005     0.005\n";
+    if (weld == "beam9")
+      d << "*SECTION_BEAM\n         2         9       1.0         2         1\n  0.005642  0.005642\n";
+    else
+      d << "*SECTION_BEAM\n         2         1       1.0         2         0\n     0.005     0.005     0.005     0.005\n";
     d << "*MAT_SPOTWELD\n         2    7850.0   2.1e+11       0.3   5.0e+08       0.0       0.0       0.0\n";
     d << "       0.0" << fmt("%10.4g", kFail) << "       0.0       0.0       0.0       0.0       0.0" << fmt("%10.0f\n", nf);
     d << "*ELEMENT_BEAM\n" << fmt("%8.0f       2", 1000) << fmt("%8.0f%8.0f%8.0f\n", c0, c1, node_id(0, kN, kN / 2));
@@ -155,7 +160,7 @@ std::string file_bytes(const fs::path& p) {
 // (within 2 %: the sheets' inertia), the run log reports it once, and the sheets separate with
 // equal and opposite momenta, each its load's impulse since t_f.
 TEST(SpotWeldPeel, WeldFailsAtItsCardForceAndTheSheetsSeparate) {
-  for (const std::string weld : {"beam", "constraint"}) {
+  for (const std::string weld : {"beam", "beam9", "constraint"}) {
     SCOPED_TRACE(weld);
     const double end = 1.2 * kTf;
     Read r = read_text(peel_deck(weld, end));
@@ -170,7 +175,7 @@ TEST(SpotWeldPeel, WeldFailsAtItsCardForceAndTheSheetsSeparate) {
     while (st == StepStatus::ok) {
       const double t0 = s.time;
       st = e.step();
-      const bool failed_now = weld == "beam" ? !s.beams.newly_failed.empty() : !s.newly_released.empty();
+      const bool failed_now = weld != "constraint" ? !s.beams.newly_failed.empty() : !s.newly_released.empty();
       if (failed_now) {
         ++failures;
         if (t_fail < 0) t_fail = s.time;
@@ -178,7 +183,7 @@ TEST(SpotWeldPeel, WeldFailsAtItsCardForceAndTheSheetsSeparate) {
       if (t_fail >= 0) continue;
       // the weld's tension: the beam's axial resultant, or the constraint force on the upper
       // node along the weld (the node is pulled down by the weld: -f_z)
-      const double n = weld == "beam" ? s.beams.res[0] : -spot_weld_constraint_force(s, s.rigid[0], 1, s.dt_half)[2];
+      const double n = weld != "constraint" ? s.beams.res[0] : -spot_weld_constraint_force(s, s.rigid[0], 1, s.dt_half)[2];
       if (t0 <= 0.5 * kTf) n_half = n, t_half = t0;
       n_last = n;
     }
