@@ -187,8 +187,8 @@ void add_small_format_cards(std::vector<FixedCardLayout>& t) {
   t.push_back(std::move(seg));
 }
 
-std::vector<FixedCardLayout> make_layouts() {
-  std::vector<FixedCardLayout> t;
+// The title card and control cards 2 to 5.
+void add_control_cards_1_to_5(std::vector<FixedCardLayout>& t) {
   t.push_back({"title card", "88 later", {
       {"title", 1, 72, K::text, 0, R, nullptr, "the problem's title"},
       {"format digits", 73, 74, K::text, 0, R, nullptr, "\"88\" (\"10\" with \"large\": refused)"},
@@ -254,6 +254,10 @@ std::vector<FixedCardLayout> make_layouts() {
       {"momentum deposit", 71, 75, K::integer, 0, X, "momentum deposition", ""},
       {"detonation points", 76, 80, K::integer, 0, X, "detonation (high explosives)", ""},
   }});
+}
+
+// Control cards 6 to 9.
+void add_control_cards_6_to_9(std::vector<FixedCardLayout>& t) {
   t.push_back({"control card 6", "88 later", {
       {"termination time", 1, 10, K::real, 0, R, nullptr, "end time"},
       {"time-history interval", 11, 20, K::real, 0, R, nullptr, "(0: end time / 1000)"},
@@ -324,7 +328,11 @@ std::vector<FixedCardLayout> make_layouts() {
       {"ENDMAS", 61, 70, K::real, 0, R, nullptr, "IMPACT-3D: added-mass limit, percent"},
       {"ERODE", 71, 75, K::integer, 0, R, nullptr, "IMPACT-3D: 1 = solids below the minimum step are deleted"},
   }});
-  // ---- cards after the control cards ----
+}
+
+// The cards after the control cards: time-history blocks, pressures, prescribed motions,
+// initial velocities, sliding interfaces, and the old IMPACT-3D forms of some of them.
+void add_interface_and_boundary_cards(std::vector<FixedCardLayout>& t) {
   t.push_back({"time-history block card", "88 later", {
       {"first 1", 1, 8, K::integer, 0, R, nullptr, "five blocks a card: first and last id of each"},
       {"last 1", 9, 16, K::integer, 0, R, nullptr, ""},
@@ -423,6 +431,10 @@ std::vector<FixedCardLayout> make_layouts() {
       {"T3", 51, 60, K::real, 0, R, nullptr, ""},
       {"T4", 61, 70, K::real, 0, R, nullptr, ""},
   }});
+}
+
+// Mass damping, beam elements, beam and shell sections.
+void add_section_cards(std::vector<FixedCardLayout>& t) {
   t.push_back({"mass damping card", "later", {
       {"damping ratio", 1, 10, K::real, 0, R, nullptr, "fraction of critical at the frequency below"},
       {"frequency", 11, 20, K::real, 0, R, nullptr, "circular frequency (rad per time unit)"},
@@ -467,6 +479,14 @@ std::vector<FixedCardLayout> make_layouts() {
       {"T4", 31, 40, K::real, 0, R, nullptr, "(0: T1)"},
       {"field 5", 41, 50, K::real, 0, I, "a shell-section field of DYNA3D not known here", ""},
   }});
+}
+
+std::vector<FixedCardLayout> make_layouts() {
+  std::vector<FixedCardLayout> t;
+  add_control_cards_1_to_5(t);
+  add_control_cards_6_to_9(t);
+  add_interface_and_boundary_cards(t);
+  add_section_cards(t);
   add_model_cards(t);
   add_load_cards(t);
   add_small_format_cards(t);
