@@ -1215,285 +1215,322 @@ int write_converted_decks(const Model& m, const std::string& keyword_path, const
   return exit_code::ok;
 }
 
-std::vector<std::string> model_differences(const Model& a, const Model& b, int max_lines) {
-  std::vector<std::string> out;
-  auto diff = [&](const std::string& what, const std::string& va, const std::string& vb) {
+namespace {
+
+// The differences found so far (at most max_lines), "what: a vs b".
+struct Differences {
+  std::vector<std::string>& out;
+  int max_lines;
+  void diff(const std::string& what, const std::string& va, const std::string& vb) {
     if (int(out.size()) < max_lines) out.push_back(what + ": " + va + " vs " + vb);
-  };
-  auto D = [&](const std::string& what, double x, double y) {
+  }
+  void D(const std::string& what, double x, double y) {
     if (!(x == y) && !(std::isnan(x) && std::isnan(y))) diff(what, shortest(x), shortest(y));
-  };
-  auto N = [&](const std::string& what, long long x, long long y) {
+  }
+  void N(const std::string& what, long long x, long long y) {
     if (x != y) diff(what, std::to_string(x), std::to_string(y));
-  };
-  if (a.title != b.title) diff("title", "\"" + a.title + "\"", "\"" + b.title + "\"");
+  }
+};
+
+// The title and the control data.
+void control_differences(const Model& a, const Model& b, Differences& d) {
+  if (a.title != b.title) d.diff("title", "\"" + a.title + "\"", "\"" + b.title + "\"");
   const ControlData &ka = a.control, &kb = b.control;
-  N("NMMAT", ka.nmmat, kb.nmmat);
-  N("NUMNP", ka.numnp, kb.numnp);
-  N("NUMELH", ka.numelh, kb.numelh);
-  N("interface segments out", ka.interface_segments_out, kb.interface_segments_out);
-  D("interface output interval", ka.interface_out_interval, kb.interface_out_interval);
-  N("node time-history blocks", ka.node_th_blocks, kb.node_th_blocks);
-  N("solid time-history blocks", ka.solid_th_blocks, kb.solid_th_blocks);
-  N("report interval", ka.report_interval, kb.report_interval);
-  N("reaction print flag", ka.reaction_print_flag, kb.reaction_print_flag);
-  N("NUMLC", ka.numlc, kb.numlc);
-  N("stonewalls", ka.num_walls, kb.num_walls);
-  N("initial-velocity cards", ka.num_init_velocity_cards, kb.num_init_velocity_cards);
-  N("sliding interfaces", ka.num_interfaces, kb.num_interfaces);
-  D("end time", ka.end_time, kb.end_time);
-  N("end cycle", ka.end_cycle, kb.end_cycle);
-  D("time-history interval", ka.th_interval, kb.th_interval);
-  D("plot interval", ka.plot_interval, kb.plot_interval);
-  N("restart dump cycles", ka.restart_dump_cycles, kb.restart_dump_cycles);
-  N("running restart cycles", ka.running_restart_cycles, kb.running_restart_cycles);
-  D("initial time step", ka.initial_dt, kb.initial_dt);
-  D("penalty scale", ka.penalty_scale, kb.penalty_scale);
-  N("viscosity flag", ka.viscosity_flag, kb.viscosity_flag);
-  D("TSSF", ka.tssf, kb.tssf);
-  D("mass-scaling step DT2MS", ka.mass_scaling_dt, kb.mass_scaling_dt);
-  N("MS1ST", ka.mass_scaling_first_only ? 1 : 0, kb.mass_scaling_first_only ? 1 : 0);
-  D("ENDMAS", ka.end_mass_percent, kb.end_mass_percent);
-  N("ERODE", ka.erode_small_steps ? 1 : 0, kb.erode_small_steps ? 1 : 0);
-  D("minimum step factor", ka.min_step_factor, kb.min_step_factor);
-  N("materials", long(a.materials.size()), long(b.materials.size()));
+  d.N("NMMAT", ka.nmmat, kb.nmmat);
+  d.N("NUMNP", ka.numnp, kb.numnp);
+  d.N("NUMELH", ka.numelh, kb.numelh);
+  d.N("interface segments out", ka.interface_segments_out, kb.interface_segments_out);
+  d.D("interface output interval", ka.interface_out_interval, kb.interface_out_interval);
+  d.N("node time-history blocks", ka.node_th_blocks, kb.node_th_blocks);
+  d.N("solid time-history blocks", ka.solid_th_blocks, kb.solid_th_blocks);
+  d.N("report interval", ka.report_interval, kb.report_interval);
+  d.N("reaction print flag", ka.reaction_print_flag, kb.reaction_print_flag);
+  d.N("NUMLC", ka.numlc, kb.numlc);
+  d.N("stonewalls", ka.num_walls, kb.num_walls);
+  d.N("initial-velocity cards", ka.num_init_velocity_cards, kb.num_init_velocity_cards);
+  d.N("sliding interfaces", ka.num_interfaces, kb.num_interfaces);
+  d.D("end time", ka.end_time, kb.end_time);
+  d.N("end cycle", ka.end_cycle, kb.end_cycle);
+  d.D("time-history interval", ka.th_interval, kb.th_interval);
+  d.D("plot interval", ka.plot_interval, kb.plot_interval);
+  d.N("restart dump cycles", ka.restart_dump_cycles, kb.restart_dump_cycles);
+  d.N("running restart cycles", ka.running_restart_cycles, kb.running_restart_cycles);
+  d.D("initial time step", ka.initial_dt, kb.initial_dt);
+  d.D("penalty scale", ka.penalty_scale, kb.penalty_scale);
+  d.N("viscosity flag", ka.viscosity_flag, kb.viscosity_flag);
+  d.D("TSSF", ka.tssf, kb.tssf);
+  d.D("mass-scaling step DT2MS", ka.mass_scaling_dt, kb.mass_scaling_dt);
+  d.N("MS1ST", ka.mass_scaling_first_only ? 1 : 0, kb.mass_scaling_first_only ? 1 : 0);
+  d.D("ENDMAS", ka.end_mass_percent, kb.end_mass_percent);
+  d.N("ERODE", ka.erode_small_steps ? 1 : 0, kb.erode_small_steps ? 1 : 0);
+  d.D("minimum step factor", ka.min_step_factor, kb.min_step_factor);
+}
+
+// The materials: number, type, density, hourglass and bulk viscosity, EOS, erosion, parameters.
+void material_differences(const Model& a, const Model& b, Differences& d) {
+  d.N("materials", long(a.materials.size()), long(b.materials.size()));
   for (std::size_t k = 0; k < std::min(a.materials.size(), b.materials.size()); ++k) {
     const MaterialData &x = a.materials[k], &y = b.materials[k];
     std::string w = "material " + std::to_string(k + 1) + " ";
-    N(w + "number", x.number, y.number);
-    N(w + "type", x.type, y.type);
-    D(w + "rho", x.rho, y.rho);
-    N(w + "hourglass type", x.hourglass_type, y.hourglass_type);
-    D(w + "hourglass coefficient", x.hourglass_coef, y.hourglass_coef);
-    N(w + "bulk type", x.bulk_type, y.bulk_type);
-    D(w + "Q1", x.q1, y.q1);
-    D(w + "Q2", x.q2, y.q2);
-    if (x.title != y.title) diff(w + "title", x.title, y.title);
-    N(w + "erosion", x.erosion.active ? 1 : 0, y.erosion.active ? 1 : 0);
-    N(w + "EOS form", x.eos.form, y.eos.form);
-    for (std::size_t j = 0; j < x.eos.c.size(); ++j) D(w + "EOS constant " + std::to_string(j), x.eos.c[j], y.eos.c[j]);
-    D(w + "EOS E0", x.eos.e0, y.eos.e0);
-    D(w + "EOS V0", x.eos.v0, y.eos.v0);
-    D(w + "erosion EXCL", x.erosion.excl, y.erosion.excl);
-    D(w + "erosion MXPRES", x.erosion.mxpres, y.erosion.mxpres);
-    D(w + "erosion MNPRES", x.erosion.mnpres, y.erosion.mnpres);
-    D(w + "erosion SIGP1", x.erosion.sigp1, y.erosion.sigp1);
-    D(w + "erosion SIGVM", x.erosion.sigvm, y.erosion.sigvm);
-    D(w + "erosion VOLEPS", x.erosion.voleps, y.erosion.voleps);
-    D(w + "erosion FAILTM", x.erosion.failtm, y.erosion.failtm);
-    D(w + "erosion MNEPS", x.erosion.mneps, y.erosion.mneps);
-    D(w + "erosion EFFEPS", x.erosion.effeps, y.erosion.effeps);
-    D(w + "erosion MXEPS", x.erosion.mxeps, y.erosion.mxeps);
-    D(w + "erosion EPSSH", x.erosion.epssh, y.erosion.epssh);
-    N(w + "erosion NCS", x.erosion.ncs, y.erosion.ncs);
-    D(w + "E", x.E, y.E);
-    D(w + "nu", x.nu, y.nu);
-    D(w + "sigma_y", x.sigma_y, y.sigma_y);
-    D(w + "E_tan", x.E_tan, y.E_tan);
-    D(w + "beta", x.beta, y.beta);
-    N(w + "initially elastic", x.initially_elastic, y.initially_elastic);
-    D(w + "strain-rate C", x.rate_c, y.rate_c);
-    D(w + "strain-rate P", x.rate_p, y.rate_p);
-    D(w + "failure strain", x.fail_strain, y.fail_strain);
+    d.N(w + "number", x.number, y.number);
+    d.N(w + "type", x.type, y.type);
+    d.D(w + "rho", x.rho, y.rho);
+    d.N(w + "hourglass type", x.hourglass_type, y.hourglass_type);
+    d.D(w + "hourglass coefficient", x.hourglass_coef, y.hourglass_coef);
+    d.N(w + "bulk type", x.bulk_type, y.bulk_type);
+    d.D(w + "Q1", x.q1, y.q1);
+    d.D(w + "Q2", x.q2, y.q2);
+    if (x.title != y.title) d.diff(w + "title", x.title, y.title);
+    d.N(w + "erosion", x.erosion.active ? 1 : 0, y.erosion.active ? 1 : 0);
+    d.N(w + "EOS form", x.eos.form, y.eos.form);
+    for (std::size_t j = 0; j < x.eos.c.size(); ++j) d.D(w + "EOS constant " + std::to_string(j), x.eos.c[j], y.eos.c[j]);
+    d.D(w + "EOS E0", x.eos.e0, y.eos.e0);
+    d.D(w + "EOS V0", x.eos.v0, y.eos.v0);
+    d.D(w + "erosion EXCL", x.erosion.excl, y.erosion.excl);
+    d.D(w + "erosion MXPRES", x.erosion.mxpres, y.erosion.mxpres);
+    d.D(w + "erosion MNPRES", x.erosion.mnpres, y.erosion.mnpres);
+    d.D(w + "erosion SIGP1", x.erosion.sigp1, y.erosion.sigp1);
+    d.D(w + "erosion SIGVM", x.erosion.sigvm, y.erosion.sigvm);
+    d.D(w + "erosion VOLEPS", x.erosion.voleps, y.erosion.voleps);
+    d.D(w + "erosion FAILTM", x.erosion.failtm, y.erosion.failtm);
+    d.D(w + "erosion MNEPS", x.erosion.mneps, y.erosion.mneps);
+    d.D(w + "erosion EFFEPS", x.erosion.effeps, y.erosion.effeps);
+    d.D(w + "erosion MXEPS", x.erosion.mxeps, y.erosion.mxeps);
+    d.D(w + "erosion EPSSH", x.erosion.epssh, y.erosion.epssh);
+    d.N(w + "erosion NCS", x.erosion.ncs, y.erosion.ncs);
+    d.D(w + "E", x.E, y.E);
+    d.D(w + "nu", x.nu, y.nu);
+    d.D(w + "sigma_y", x.sigma_y, y.sigma_y);
+    d.D(w + "E_tan", x.E_tan, y.E_tan);
+    d.D(w + "beta", x.beta, y.beta);
+    d.N(w + "initially elastic", x.initially_elastic, y.initially_elastic);
+    d.D(w + "strain-rate C", x.rate_c, y.rate_c);
+    d.D(w + "strain-rate P", x.rate_p, y.rate_p);
+    d.D(w + "failure strain", x.fail_strain, y.fail_strain);
     for (std::size_t j = 0; j < std::max(x.par.size(), y.par.size()); ++j)
-      D(w + "parameter " + std::to_string(j), j < x.par.size() ? x.par[j] : 0.0, j < y.par.size() ? y.par[j] : 0.0);
+      d.D(w + "parameter " + std::to_string(j), j < x.par.size() ? x.par[j] : 0.0, j < y.par.size() ? y.par[j] : 0.0);
   }
-  N("nodes", a.num_nodes(), b.num_nodes());
+}
+
+// The nodes, solids, shells and beams (connectivity, materials, sizes, ids).
+void mesh_differences(const Model& a, const Model& b, Differences& d) {
+  d.N("nodes", a.num_nodes(), b.num_nodes());
   for (int n = 0; n < std::min(a.num_nodes(), b.num_nodes()); ++n) {
     std::string w = "node " + std::to_string(n + 1) + " ";
-    D(w + "x", a.x[std::size_t(n)], b.x[std::size_t(n)]);
-    D(w + "y", a.y[std::size_t(n)], b.y[std::size_t(n)]);
-    D(w + "z", a.z[std::size_t(n)], b.z[std::size_t(n)]);
-    N(w + "bc", a.bc[std::size_t(n)], b.bc[std::size_t(n)]);
+    d.D(w + "x", a.x[std::size_t(n)], b.x[std::size_t(n)]);
+    d.D(w + "y", a.y[std::size_t(n)], b.y[std::size_t(n)]);
+    d.D(w + "z", a.z[std::size_t(n)], b.z[std::size_t(n)]);
+    d.N(w + "bc", a.bc[std::size_t(n)], b.bc[std::size_t(n)]);
   }
-  if (a.node_user_id != b.node_user_id) diff("node ids", std::to_string(a.node_user_id.size()), std::to_string(b.node_user_id.size()));
-  if (a.hex_user_id != b.hex_user_id) diff("element ids", std::to_string(a.hex_user_id.size()), std::to_string(b.hex_user_id.size()));
-  N("solids", a.num_hexes(), b.num_hexes());
+  if (a.node_user_id != b.node_user_id) d.diff("node ids", std::to_string(a.node_user_id.size()), std::to_string(b.node_user_id.size()));
+  if (a.hex_user_id != b.hex_user_id) d.diff("element ids", std::to_string(a.hex_user_id.size()), std::to_string(b.hex_user_id.size()));
+  d.N("solids", a.num_hexes(), b.num_hexes());
   for (int e = 0; e < std::min(a.num_hexes(), b.num_hexes()); ++e) {
     std::string w = "solid " + std::to_string(e + 1) + " ";
-    N(w + "material", a.hex_material[std::size_t(e)], b.hex_material[std::size_t(e)]);
+    d.N(w + "material", a.hex_material[std::size_t(e)], b.hex_material[std::size_t(e)]);
     for (int j = 0; j < 8; ++j)
-      N(w + "node " + std::to_string(j + 1), a.hex_nodes[std::size_t(e)][std::size_t(j)], b.hex_nodes[std::size_t(e)][std::size_t(j)]);
+      d.N(w + "node " + std::to_string(j + 1), a.hex_nodes[std::size_t(e)][std::size_t(j)], b.hex_nodes[std::size_t(e)][std::size_t(j)]);
   }
-  N("shells", a.num_shells(), b.num_shells());
+  d.N("shells", a.num_shells(), b.num_shells());
   for (int e = 0; e < std::min(a.num_shells(), b.num_shells()); ++e) {
     std::string w = "shell " + std::to_string(e + 1) + " ";
-    N(w + "material", a.shell_material[std::size_t(e)], b.shell_material[std::size_t(e)]);
+    d.N(w + "material", a.shell_material[std::size_t(e)], b.shell_material[std::size_t(e)]);
     for (int j = 0; j < 4; ++j) {
-      N(w + "node " + std::to_string(j + 1), a.shell_nodes[std::size_t(e)][std::size_t(j)], b.shell_nodes[std::size_t(e)][std::size_t(j)]);
-      D(w + "thickness " + std::to_string(j + 1), a.shell_thickness[std::size_t(e)][std::size_t(j)], b.shell_thickness[std::size_t(e)][std::size_t(j)]);
+      d.N(w + "node " + std::to_string(j + 1), a.shell_nodes[std::size_t(e)][std::size_t(j)], b.shell_nodes[std::size_t(e)][std::size_t(j)]);
+      d.D(w + "thickness " + std::to_string(j + 1), a.shell_thickness[std::size_t(e)][std::size_t(j)], b.shell_thickness[std::size_t(e)][std::size_t(j)]);
     }
   }
-  if (a.shell_user_id != b.shell_user_id) diff("shell ids", std::to_string(a.shell_user_id.size()), std::to_string(b.shell_user_id.size()));
-  N("beams", a.num_beams(), b.num_beams());
+  if (a.shell_user_id != b.shell_user_id) d.diff("shell ids", std::to_string(a.shell_user_id.size()), std::to_string(b.shell_user_id.size()));
+  d.N("beams", a.num_beams(), b.num_beams());
   for (int e = 0; e < std::min(a.num_beams(), b.num_beams()); ++e) {
     std::string w = "beam " + std::to_string(e + 1) + " ";
-    N(w + "material", a.beam_material[std::size_t(e)], b.beam_material[std::size_t(e)]);
+    d.N(w + "material", a.beam_material[std::size_t(e)], b.beam_material[std::size_t(e)]);
     for (int j = 0; j < 3; ++j)
-      N(w + "node " + std::to_string(j + 1), a.beam_nodes[std::size_t(e)][std::size_t(j)], b.beam_nodes[std::size_t(e)][std::size_t(j)]);
+      d.N(w + "node " + std::to_string(j + 1), a.beam_nodes[std::size_t(e)][std::size_t(j)], b.beam_nodes[std::size_t(e)][std::size_t(j)]);
     for (int j = 0; j < 4; ++j)
-      D(w + "size " + std::to_string(j + 1), a.beam_thickness[std::size_t(e)][std::size_t(j)], b.beam_thickness[std::size_t(e)][std::size_t(j)]);
+      d.D(w + "size " + std::to_string(j + 1), a.beam_thickness[std::size_t(e)][std::size_t(j)], b.beam_thickness[std::size_t(e)][std::size_t(j)]);
   }
-  if (a.beam_user_id != b.beam_user_id) diff("beam ids", std::to_string(a.beam_user_id.size()), std::to_string(b.beam_user_id.size()));
+  if (a.beam_user_id != b.beam_user_id) d.diff("beam ids", std::to_string(a.beam_user_id.size()), std::to_string(b.beam_user_id.size()));
+}
+
+// The sections of shell and beam materials, rotational constraints and velocities, time-history
+// blocks, load curves, walls, initial velocities, sliding interfaces, force transducers.
+void section_and_output_differences(const Model& a, const Model& b, Differences& d) {
   for (std::size_t k = 0; k < std::min(a.materials.size(), b.materials.size()); ++k) {
     const auto &x = a.materials[k], &y = b.materials[k];
     std::string w = "material " + std::to_string(k + 1) + " ";
-    N(w + "shell", x.shell, y.shell);
-    N(w + "NIP", x.shell_section.nip, y.shell_section.nip);
-    D(w + "SHRF", x.shell_section.shrf, y.shell_section.shrf);
-    for (int j = 0; j < 4; ++j) D(w + "section T" + std::to_string(j + 1), x.shell_section.t[std::size_t(j)], y.shell_section.t[std::size_t(j)]);
-    N(w + "beam", x.beam, y.beam);
+    d.N(w + "shell", x.shell, y.shell);
+    d.N(w + "NIP", x.shell_section.nip, y.shell_section.nip);
+    d.D(w + "SHRF", x.shell_section.shrf, y.shell_section.shrf);
+    for (int j = 0; j < 4; ++j) d.D(w + "section T" + std::to_string(j + 1), x.shell_section.t[std::size_t(j)], y.shell_section.t[std::size_t(j)]);
+    d.N(w + "beam", x.beam, y.beam);
     const BeamSectionData &bx = x.beam_section, &by = y.beam_section;
-    N(w + "ELFORM", bx.elform, by.elform);
-    N(w + "QR", bx.qr, by.qr);
-    N(w + "CST", int(bx.cst), int(by.cst));
-    D(w + "beam SHRF", bx.shrf, by.shrf);
-    D(w + "TS1", bx.ts1, by.ts1);
-    D(w + "TS2", bx.ts2, by.ts2);
-    D(w + "TT1", bx.tt1, by.tt1);
-    D(w + "TT2", bx.tt2, by.tt2);
-    D(w + "A", bx.area, by.area);
-    D(w + "ISS", bx.iss, by.iss);
-    D(w + "ITT", bx.itt, by.itt);
-    D(w + "J", bx.jt, by.jt);
-    D(w + "SA", bx.sa, by.sa);
+    d.N(w + "ELFORM", bx.elform, by.elform);
+    d.N(w + "QR", bx.qr, by.qr);
+    d.N(w + "CST", int(bx.cst), int(by.cst));
+    d.D(w + "beam SHRF", bx.shrf, by.shrf);
+    d.D(w + "TS1", bx.ts1, by.ts1);
+    d.D(w + "TS2", bx.ts2, by.ts2);
+    d.D(w + "TT1", bx.tt1, by.tt1);
+    d.D(w + "TT2", bx.tt2, by.tt2);
+    d.D(w + "A", bx.area, by.area);
+    d.D(w + "ISS", bx.iss, by.iss);
+    d.D(w + "ITT", bx.itt, by.itt);
+    d.D(w + "J", bx.jt, by.jt);
+    d.D(w + "SA", bx.sa, by.sa);
   }
   auto nonzero = [](const auto& v) {
     for (const auto& x : v)
       if (x != std::decay_t<decltype(x)>{}) return true;
     return false;
   };
-  if ((nonzero(a.rot_bc) || nonzero(b.rot_bc)) && a.rot_bc != b.rot_bc) diff("rotational constraints", "", "other");
-  if ((nonzero(a.init_omega) || nonzero(b.init_omega)) && a.init_omega != b.init_omega) diff("initial rotational velocities", "", "other");
-  D("rotary inertia scale", a.shell_rotary_scale, b.shell_rotary_scale);
+  if ((nonzero(a.rot_bc) || nonzero(b.rot_bc)) && a.rot_bc != b.rot_bc) d.diff("rotational constraints", "", "other");
+  if ((nonzero(a.init_omega) || nonzero(b.init_omega)) && a.init_omega != b.init_omega) d.diff("initial rotational velocities", "", "other");
+  d.D("rotary inertia scale", a.shell_rotary_scale, b.shell_rotary_scale);
   auto blocks = [&](const char* w, const std::vector<std::array<int, 2>>& x, const std::vector<std::array<int, 2>>& y) {
-    if (x != y) diff(w, std::to_string(x.size()) + " block(s)", std::to_string(y.size()) + " block(s), or other ranges");
+    if (x != y) d.diff(w, std::to_string(x.size()) + " block(s)", std::to_string(y.size()) + " block(s), or other ranges");
   };
   blocks("node time-history blocks", a.node_th_blocks, b.node_th_blocks);
   blocks("solid time-history blocks", a.solid_th_blocks, b.solid_th_blocks);
   blocks("shell time-history blocks", a.shell_th_blocks, b.shell_th_blocks);
   blocks("beam time-history blocks", a.beam_th_blocks, b.beam_th_blocks);
-  N("load curves", long(a.load_curves.size()), long(b.load_curves.size()));
+  d.N("load curves", long(a.load_curves.size()), long(b.load_curves.size()));
   for (std::size_t c = 0; c < std::min(a.load_curves.size(), b.load_curves.size()); ++c) {
     const LoadCurve &x = a.load_curves[c], &y = b.load_curves[c];
-    N("load curve " + std::to_string(c + 1) + " number", x.number, y.number);
-    if (x.t != y.t || x.f != y.f) diff("load curve " + std::to_string(c + 1), "points", "other points");
+    d.N("load curve " + std::to_string(c + 1) + " number", x.number, y.number);
+    if (x.t != y.t || x.f != y.f) d.diff("load curve " + std::to_string(c + 1), "points", "other points");
   }
-  N("walls", long(a.walls.size()), long(b.walls.size()));
+  d.N("walls", long(a.walls.size()), long(b.walls.size()));
   for (std::size_t w = 0; w < std::min(a.walls.size(), b.walls.size()); ++w) {
     const StoneWall &x = a.walls[w], &y = b.walls[w];
     std::string s = "wall " + std::to_string(w + 1) + " ";
     for (int q = 0; q < 3; ++q) {
-      D(s + "tail", x.tail[std::size_t(q)], y.tail[std::size_t(q)]);
-      D(s + "head", x.head[std::size_t(q)], y.head[std::size_t(q)]);
+      d.D(s + "tail", x.tail[std::size_t(q)], y.tail[std::size_t(q)]);
+      d.D(s + "head", x.head[std::size_t(q)], y.head[std::size_t(q)]);
     }
-    D(s + "friction", x.friction, y.friction);
-    D(s + "mass", x.mass, y.mass);
-    D(s + "V0", x.v0, y.v0);
-    if (x.nodes != y.nodes) diff(s + "nodes", std::to_string(x.nodes.size()), std::to_string(y.nodes.size()));
+    d.D(s + "friction", x.friction, y.friction);
+    d.D(s + "mass", x.mass, y.mass);
+    d.D(s + "V0", x.v0, y.v0);
+    if (x.nodes != y.nodes) d.diff(s + "nodes", std::to_string(x.nodes.size()), std::to_string(y.nodes.size()));
   }
-  N("initial velocities", long(a.init_velocities.size()), long(b.init_velocities.size()));
+  d.N("initial velocities", long(a.init_velocities.size()), long(b.init_velocities.size()));
   for (std::size_t v = 0; v < std::min(a.init_velocities.size(), b.init_velocities.size()); ++v) {
     const InitialVelocity &x = a.init_velocities[v], &y = b.init_velocities[v];
     std::string s = "initial velocity " + std::to_string(v + 1) + " ";
-    N(s + "first", x.first, y.first);
+    d.N(s + "first", x.first, y.first);
     if (x.first != 0) {
-      N(s + "last", x.last, y.last);
-      N(s + "increment", x.increment, y.increment);
+      d.N(s + "last", x.last, y.last);
+      d.N(s + "increment", x.increment, y.increment);
     }
-    for (int q = 0; q < 3; ++q) D(s + "v", x.v[std::size_t(q)], y.v[std::size_t(q)]);
+    for (int q = 0; q < 3; ++q) d.D(s + "v", x.v[std::size_t(q)], y.v[std::size_t(q)]);
   }
-  N("sliding interfaces", long(a.interfaces.size()), long(b.interfaces.size()));
+  d.N("sliding interfaces", long(a.interfaces.size()), long(b.interfaces.size()));
   for (std::size_t i = 0; i < std::min(a.interfaces.size(), b.interfaces.size()); ++i) {
     const SlidingInterface &x = a.interfaces[i], &y = b.interfaces[i];
     std::string s = "interface " + std::to_string(i + 1) + " ";
-    N(s + "type", x.type, y.type);
-    D(s + "fs", x.fs, y.fs);
-    D(s + "fd", x.fd, y.fd);
-    D(s + "decay", x.decay, y.decay);
-    D(s + "penalty scale", x.penalty_scale, y.penalty_scale);
-    N(s + "stiffness method", x.stiffness_method, y.stiffness_method);
-    D(s + "sofscl", x.sofscl, y.sofscl);
-    N(s + "penopt", x.penopt, y.penopt);
-    N(s + "symmetric", x.symmetric, y.symmetric);
-    N(s + "shell thickness", x.shell_thickness, y.shell_thickness);
-    N(s + "eroding", x.eroding, y.eroding);
-    if (x.slave != y.slave) diff(s + "slave segments", std::to_string(x.slave.size()), std::to_string(y.slave.size()));
-    if (x.master != y.master) diff(s + "master segments", std::to_string(x.master.size()), std::to_string(y.master.size()));
-    if (x.slave_nodes != y.slave_nodes) diff(s + "slave beam nodes", std::to_string(x.slave_nodes.size()), std::to_string(y.slave_nodes.size()));
-    if (x.master_nodes != y.master_nodes) diff(s + "master beam nodes", std::to_string(x.master_nodes.size()), std::to_string(y.master_nodes.size()));
-    N(s + "intfor slave side", x.intfor_slave, y.intfor_slave);
-    N(s + "intfor master side", x.intfor_master, y.intfor_master);
+    d.N(s + "type", x.type, y.type);
+    d.D(s + "fs", x.fs, y.fs);
+    d.D(s + "fd", x.fd, y.fd);
+    d.D(s + "decay", x.decay, y.decay);
+    d.D(s + "penalty scale", x.penalty_scale, y.penalty_scale);
+    d.N(s + "stiffness method", x.stiffness_method, y.stiffness_method);
+    d.D(s + "sofscl", x.sofscl, y.sofscl);
+    d.N(s + "penopt", x.penopt, y.penopt);
+    d.N(s + "symmetric", x.symmetric, y.symmetric);
+    d.N(s + "shell thickness", x.shell_thickness, y.shell_thickness);
+    d.N(s + "eroding", x.eroding, y.eroding);
+    if (x.slave != y.slave) d.diff(s + "slave segments", std::to_string(x.slave.size()), std::to_string(y.slave.size()));
+    if (x.master != y.master) d.diff(s + "master segments", std::to_string(x.master.size()), std::to_string(y.master.size()));
+    if (x.slave_nodes != y.slave_nodes) d.diff(s + "slave beam nodes", std::to_string(x.slave_nodes.size()), std::to_string(y.slave_nodes.size()));
+    if (x.master_nodes != y.master_nodes) d.diff(s + "master beam nodes", std::to_string(x.master_nodes.size()), std::to_string(y.master_nodes.size()));
+    d.N(s + "intfor slave side", x.intfor_slave, y.intfor_slave);
+    d.N(s + "intfor master side", x.intfor_master, y.intfor_master);
   }
-  N("force transducers", long(a.force_transducers.size()), long(b.force_transducers.size()));
+  d.N("force transducers", long(a.force_transducers.size()), long(b.force_transducers.size()));
   for (std::size_t i = 0; i < std::min(a.force_transducers.size(), b.force_transducers.size()); ++i) {
     const ForceTransducer &x = a.force_transducers[i], &y = b.force_transducers[i];
     std::string s = "force transducer " + std::to_string(i + 1) + " ";
-    if (x.a_nodes != y.a_nodes) diff(s + "side A nodes", std::to_string(x.a_nodes.size()), std::to_string(y.a_nodes.size()));
-    if (x.b_nodes != y.b_nodes || x.has_b != y.has_b) diff(s + "side B nodes", std::to_string(x.b_nodes.size()), std::to_string(y.b_nodes.size()));
+    if (x.a_nodes != y.a_nodes) d.diff(s + "side A nodes", std::to_string(x.a_nodes.size()), std::to_string(y.a_nodes.size()));
+    if (x.b_nodes != y.b_nodes || x.has_b != y.has_b) d.diff(s + "side B nodes", std::to_string(x.b_nodes.size()), std::to_string(y.b_nodes.size()));
   }
-  D("interface-force database interval", a.control.intfor_interval, b.control.intfor_interval);
+  d.D("interface-force database interval", a.control.intfor_interval, b.control.intfor_interval);
+}
+
+// Loads and prescribed motions: what acts (curve values, directions, effective scales), damping.
+void load_differences(const Model& a, const Model& b, Differences& d) {
   // loads and prescribed motions: what acts (curve values, directions, effective scales)
   auto curve_differs = [&](const std::string& w, int ca, int cb) {
     if (ca < 0 || cb < 0) {  // no curve (a constant) on one side or both
-      if ((ca < 0) != (cb < 0)) diff(w + "load curve", ca < 0 ? "none" : "a curve", cb < 0 ? "none" : "a curve");
+      if ((ca < 0) != (cb < 0)) d.diff(w + "load curve", ca < 0 ? "none" : "a curve", cb < 0 ? "none" : "a curve");
       return;
     }
     const LoadCurve &x = a.load_curves[std::size_t(ca)], &y = b.load_curves[std::size_t(cb)];
-    if (x.t != y.t || x.f != y.f) diff(w + "load curve", std::to_string(x.number), std::to_string(y.number));
+    if (x.t != y.t || x.f != y.f) d.diff(w + "load curve", std::to_string(x.number), std::to_string(y.number));
   };
   auto dir_differs = [&](const std::string& w, const std::array<double, 3>& x, const std::array<double, 3>& y) {
-    for (int q = 0; q < 3; ++q) D(w + "direction " + "xyz"[q], x[std::size_t(q)], y[std::size_t(q)]);
+    for (int q = 0; q < 3; ++q) d.D(w + "direction " + "xyz"[q], x[std::size_t(q)], y[std::size_t(q)]);
   };
-  N("nodal loads", long(a.nodal_loads.size()), long(b.nodal_loads.size()));
+  d.N("nodal loads", long(a.nodal_loads.size()), long(b.nodal_loads.size()));
   for (std::size_t j = 0; j < std::min(a.nodal_loads.size(), b.nodal_loads.size()); ++j) {
     const NodalLoad &x = a.nodal_loads[j], &y = b.nodal_loads[j];
     const std::string w = "nodal load " + std::to_string(j + 1) + " ";
-    N(w + "node", x.node, y.node);
+    d.N(w + "node", x.node, y.node);
     dir_differs(w, x.dir, y.dir);
     curve_differs(w, x.curve, y.curve);
-    D(w + "scale", x.scale, y.scale);
+    d.D(w + "scale", x.scale, y.scale);
   }
-  N("rigid-body loads", long(a.rigid_body_loads.size()), long(b.rigid_body_loads.size()));
-  N("pressure loads", long(a.pressure_loads.size()), long(b.pressure_loads.size()));
+  d.N("rigid-body loads", long(a.rigid_body_loads.size()), long(b.rigid_body_loads.size()));
+  d.N("pressure loads", long(a.pressure_loads.size()), long(b.pressure_loads.size()));
   for (std::size_t j = 0; j < std::min(a.pressure_loads.size(), b.pressure_loads.size()); ++j) {
     const PressureLoad &x = a.pressure_loads[j], &y = b.pressure_loads[j];
     const std::string w = "pressure load " + std::to_string(j + 1) + " ";
-    if (x.nodes != y.nodes) diff(w + "nodes", "", "");
+    if (x.nodes != y.nodes) d.diff(w + "nodes", "", "");
     curve_differs(w, x.curve, y.curve);
-    for (int q = 0; q < 4; ++q) D(w + "scale at node " + std::to_string(q + 1), x.scale * x.factor[std::size_t(q)], y.scale * y.factor[std::size_t(q)]);
-    D(w + "birth", x.birth, y.birth);
-    D(w + "death", x.death, y.death);
+    for (int q = 0; q < 4; ++q) d.D(w + "scale at node " + std::to_string(q + 1), x.scale * x.factor[std::size_t(q)], y.scale * y.factor[std::size_t(q)]);
+    d.D(w + "birth", x.birth, y.birth);
+    d.D(w + "death", x.death, y.death);
   }
-  N("body loads", long(a.body_loads.size()), long(b.body_loads.size()));
+  d.N("body loads", long(a.body_loads.size()), long(b.body_loads.size()));
   for (std::size_t j = 0; j < std::min(a.body_loads.size(), b.body_loads.size()); ++j) {
     const BodyLoad &x = a.body_loads[j], &y = b.body_loads[j];
     const std::string w = "body load " + std::to_string(j + 1) + " ";
     dir_differs(w, x.dir, y.dir);
     curve_differs(w, x.curve, y.curve);
-    D(w + "scale", x.scale, y.scale);
+    d.D(w + "scale", x.scale, y.scale);
   }
-  N("global damping", a.damping.active ? 1 : 0, b.damping.active ? 1 : 0);
+  d.N("global damping", a.damping.active ? 1 : 0, b.damping.active ? 1 : 0);
   if (a.damping.active && b.damping.active) {
     curve_differs("global damping ", a.damping.curve, b.damping.curve);
-    D("global damping D", a.damping.d, b.damping.d);
-    for (int q = 0; q < 3; ++q) D("global damping factor " + std::to_string(q + 1), a.damping.factor[std::size_t(q)], b.damping.factor[std::size_t(q)]);
+    d.D("global damping D", a.damping.d, b.damping.d);
+    for (int q = 0; q < 3; ++q) d.D("global damping factor " + std::to_string(q + 1), a.damping.factor[std::size_t(q)], b.damping.factor[std::size_t(q)]);
   }
-  if (a.body_load_materials != b.body_load_materials) diff("body-load materials", std::to_string(a.body_load_materials.size()), std::to_string(b.body_load_materials.size()));
-  N("prescribed motions", long(a.prescribed_motions.size()), long(b.prescribed_motions.size()));
+  if (a.body_load_materials != b.body_load_materials) d.diff("body-load materials", std::to_string(a.body_load_materials.size()), std::to_string(b.body_load_materials.size()));
+  d.N("prescribed motions", long(a.prescribed_motions.size()), long(b.prescribed_motions.size()));
   for (std::size_t j = 0; j < std::min(a.prescribed_motions.size(), b.prescribed_motions.size()); ++j) {
     const PrescribedMotion &x = a.prescribed_motions[j], &y = b.prescribed_motions[j];
     const std::string w = "prescribed motion " + std::to_string(j + 1) + " ";
-    N(w + "node", x.node, y.node);
-    N(w + "rigid body", x.rigid_material, y.rigid_material);
+    d.N(w + "node", x.node, y.node);
+    d.N(w + "rigid body", x.rigid_material, y.rigid_material);
     dir_differs(w, x.dir, y.dir);
-    N(w + "kind", int(x.kind), int(y.kind));
-    N(w + "rotation", x.rotation ? 1 : 0, y.rotation ? 1 : 0);
+    d.N(w + "kind", int(x.kind), int(y.kind));
+    d.N(w + "rotation", x.rotation ? 1 : 0, y.rotation ? 1 : 0);
     curve_differs(w, x.curve, y.curve);
-    D(w + "scale", x.scale, y.scale);
-    D(w + "birth", x.birth, y.birth);
-    D(w + "death", x.death, y.death);
+    d.D(w + "scale", x.scale, y.scale);
+    d.D(w + "birth", x.birth, y.birth);
+    d.D(w + "death", x.death, y.death);
   }
+}
+
+}  // namespace
+
+std::vector<std::string> model_differences(const Model& a, const Model& b, int max_lines) {
+  std::vector<std::string> out;
+  Differences d{out, max_lines};
+  control_differences(a, b, d);
+  material_differences(a, b, d);
+  mesh_differences(a, b, d);
+  section_and_output_differences(a, b, d);
+  load_differences(a, b, d);
   return out;
 }
 
