@@ -19,6 +19,7 @@
 #include "impact3d/input/deck_reader.h"
 #include "impact3d/input/deck_writer.h"
 #include "impact3d/solve/engine.h"
+#include "../support/deck_text.h"
 
 using namespace impact3d;
 
@@ -140,28 +141,9 @@ std::string contact_card(const std::string& kind, int a, int b, double sfsa, int
          "\n" + fld(sfsa, 10) + fld(sfsa, 10) + "\n";
 }
 
-struct Read {
-  Model m;
-  Diagnostics d;
-  bool ok = false;
-  std::string messages() const {
-    std::ostringstream os;
-    d.print(os);
-    return os.str();
-  }
-};
+using Read = test_support::ReadDeck;
 
-Read read_text(const std::string& text) {
-  Read r;
-  DeckFile deck;
-  deck.load_from_string("beam_contact.k", text);
-  r.ok = read_deck(deck, r.m, r.d, InputOptions{});
-  if (r.ok) {
-    orient_interface_segments(r.m, r.d);
-    r.ok = check_model(r.m, r.d);
-  }
-  return r;
-}
+Read read_text(const std::string& text) { return test_support::read_deck_text(text, "beam_contact.k", InputOptions{}, true); }
 
 double momentum_z(const State& s, const Deck::Body& b) {
   double p = 0;

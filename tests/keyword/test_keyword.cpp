@@ -17,6 +17,7 @@
 #include "impact3d/input/deck_writer.h"
 #include "impact3d/input/keyword_reader.h"
 #include "impact3d/solve/engine.h"
+#include "../support/deck_text.h"
 
 using namespace impact3d;
 namespace fs = std::filesystem;
@@ -25,33 +26,13 @@ namespace {
 
 const std::string kSource = IMPACT3D_SOURCE_DIR;
 
-struct Read {
-  Model m;
-  Diagnostics d;
-  bool ok = false;
-  std::string messages() const {
-    std::ostringstream os;
-    d.print(os);
-    return os.str();
-  }
-  int count(int id) const { return d.count(id); }
-  const Diagnostic* first(int id) const {
-    for (const auto& x : d.all())
-      if (x.id == id) return &x;
-    return nullptr;
-  }
-};
+using Read = test_support::ReadDeck;
 
 // Reads deck text as read_and_check_deck does (content decides the reader; then the checks).
 Read read_text(const std::string& text, bool lenient = false, const std::string& name = "deck.k") {
-  Read r;
-  DeckFile deck;
-  deck.load_from_string(name, text);
   InputOptions o;
   o.lenient_keywords = lenient;
-  r.ok = read_deck(deck, r.m, r.d, o);
-  if (r.ok) r.ok = check_model(r.m, r.d);
-  return r;
+  return test_support::read_deck_text(text, name, o);
 }
 
 Read read_path(const std::string& path, bool lenient = false) {

@@ -14,30 +14,15 @@
 #include "impact3d/material/eos.h"
 #include "impact3d/material/material_types.h"
 #include "impact3d/output/printed_output.h"
+#include "../support/deck_text.h"
 
 using namespace impact3d;
 
 namespace {
 
-struct Read {
-  Model m;
-  Diagnostics d;
-  bool ok = false;
-  std::string messages() const {
-    std::ostringstream os;
-    d.print(os);
-    return os.str();
-  }
-};
+using Read = test_support::ReadDeck;
 
-Read read_text(const std::string& text, const std::string& name = "deck.k") {
-  Read r;
-  DeckFile deck;
-  deck.load_from_string(name, text);
-  r.ok = read_deck(deck, r.m, r.d, InputOptions{});
-  if (r.ok) r.ok = check_model(r.m, r.d);
-  return r;
-}
+Read read_text(const std::string& text, const std::string& name = "deck.k") { return test_support::read_deck_text(text, name); }
 
 std::string join(const std::vector<std::string>& v) {
   std::string s;

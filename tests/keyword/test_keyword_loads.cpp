@@ -11,31 +11,15 @@
 
 #include "impact3d/input/deck_reader.h"
 #include "impact3d/input/deck_writer.h"
+#include "../support/deck_text.h"
 
 using namespace impact3d;
 
 namespace {
 
-struct Read {
-  Model m;
-  Diagnostics d;
-  bool ok = false;
-  std::string messages() const {
-    std::ostringstream os;
-    d.print(os);
-    return os.str();
-  }
-};
+using Read = test_support::ReadDeck;
 
-Read read_text(const std::string& text) {
-  Read r;
-  DeckFile deck;
-  deck.load_from_string("loads.k", text);
-  InputOptions o;
-  r.ok = read_deck(deck, r.m, r.d, o);
-  if (r.ok) r.ok = check_model(r.m, r.d);
-  return r;
-}
+Read read_text(const std::string& text) { return test_support::read_deck_text(text, "loads.k"); }
 
 // A 2 x 1 x 1 block of unit hexahedra (part 7, elastic steel, mm-t-s), nodes 1..12
 // (node ix + 3 iy + 6 iz + 1), and a rigid cube (part 8) of nodes 101..108.

@@ -23,37 +23,16 @@
 #include "impact3d/input/deck_reader.h"
 #include "impact3d/input/keyword_reader.h"
 #include "impact3d/solve/engine.h"
+#include "../support/deck_text.h"
 
 using namespace impact3d;
 namespace fs = std::filesystem;
 
 namespace {
 
-struct Read {
-  Model m;
-  Diagnostics d;
-  bool ok = false;
-  std::string messages() const {
-    std::ostringstream os;
-    d.print(os);
-    return os.str();
-  }
-  int count(int id) const { return d.count(id); }
-  const Diagnostic* first(int id) const {
-    for (const auto& x : d.all())
-      if (x.id == id) return &x;
-    return nullptr;
-  }
-};
+using Read = test_support::ReadDeck;
 
-Read read_text(const std::string& text, const std::string& name = "deck.k") {
-  Read r;
-  DeckFile deck;
-  deck.load_from_string(name, text);
-  r.ok = read_deck(deck, r.m, r.d);
-  if (r.ok) r.ok = check_model(r.m, r.d);
-  return r;
-}
+Read read_text(const std::string& text, const std::string& name = "deck.k") { return test_support::read_deck_text(text, name); }
 
 // A 3 x 1 x 1 row of unit hexahedra (x 0..3), nodes 101 + ix + 4 iy + 8 iz, elements 11, 12 of
 // part 7 and 13 of part 8; the deck ends with "*END".

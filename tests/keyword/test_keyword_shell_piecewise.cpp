@@ -25,6 +25,7 @@
 #include "impact3d/solve/engine.h"
 #include "impact3d/solve/run.h"
 #include "tests/keyword/shell_piecewise_deck.h"
+#include "../support/deck_text.h"
 
 using namespace impact3d;
 namespace fs = std::filesystem;
@@ -38,15 +39,8 @@ TEST(KeywordShellPiecewise, PulledStripRunsAndItsD3plotHoldsPlasticStrainAndDele
   ASSERT_EQ(m.num_shells(), 20);
   ASSERT_EQ(m.materials[0].type, 24);
   EXPECT_TRUE(m.materials[0].shell);
-  const fs::path dir = fs::path(IMPACT3D_BINARY_DIR) / "shell_piecewise_runs" / "strip";
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  RunOptions o;
-  o.printed = (dir / "d3hsp").string();
-  o.plot = (dir / "d3plot").string();
-  o.dump = (dir / "d3dump").string();
-  o.quiet = true;
-  o.threads = 1;
+  const fs::path dir = test_support::empty_run_folder("shell_piecewise_runs", "strip");
+  RunOptions o = test_support::run_options_in(dir);
   {
     std::ofstream printed(o.printed);
     ASSERT_EQ(run_simulation(m, o, printed), 0);

@@ -13,6 +13,7 @@
 #include "impact3d/material/material_types.h"
 #include "impact3d/solve/run.h"
 #include "tests/keyword/shell_piecewise_deck.h"
+#include "../support/deck_text.h"
 
 using namespace impact3d;
 using namespace shell_piecewise_test;
@@ -153,15 +154,8 @@ TEST(KeywordTrust, FinalSummaryOfAShellOnlyModel) {
   Model m;
   Diagnostics d;
   ASSERT_TRUE(read_text(strip_deck(), "strip_summary.k", m, d)) << messages(d);
-  const std::filesystem::path dir = std::filesystem::path(IMPACT3D_BINARY_DIR) / "keyword_trust" / "strip";
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
-  RunOptions o;
-  o.printed = (dir / "d3hsp").string();
-  o.plot = (dir / "d3plot").string();
-  o.dump = (dir / "d3dump").string();
-  o.quiet = true;
-  o.threads = 1;
+  const std::filesystem::path dir = test_support::empty_run_folder("keyword_trust", "strip");
+  RunOptions o = test_support::run_options_in(dir);
   {
     std::ofstream printed(o.printed);
     ASSERT_EQ(run_simulation(m, o, printed), 0);

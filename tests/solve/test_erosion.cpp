@@ -25,6 +25,7 @@
 #include "impact3d/solve/engine.h"
 #include "impact3d/solve/run.h"
 #include "tests/solve/test_models.h"
+#include "../support/deck_text.h"
 
 using namespace impact3d;
 using namespace solve_test;
@@ -354,26 +355,9 @@ TEST(Erosion, PrincipalStressOfAShearState) {
 
 namespace {
 
-struct Read {
-  Model m;
-  Diagnostics d;
-  bool ok = false;
-  std::string messages() const {
-    std::ostringstream os;
-    d.print(os);
-    return os.str();
-  }
-};
+using Read = test_support::ReadDeck;
 
-Read read_text(const std::string& text) {
-  Read r;
-  DeckFile deck;
-  deck.load_from_string("erosion.k", text);
-  InputOptions o;
-  r.ok = read_deck(deck, r.m, r.d, o);
-  if (r.ok) r.ok = check_model(r.m, r.d);
-  return r;
-}
+Read read_text(const std::string& text) { return test_support::read_deck_text(text, "erosion.k"); }
 
 std::string hex_deck(const std::string& mat, const std::string& extra) {
   return "*KEYWORD\n*TITLE\nerosion\n*CONTROL_TERMINATION\n   1.0E-05\n*DATABASE_BINARY_D3PLOT\n   5.0E-07\n"
@@ -478,15 +462,8 @@ TEST(Erosion, DeletionMessageNamesTheCause) {
   for (int n = 0; n < m.num_nodes(); ++n) m.bc[std::size_t(n)] = m.z[std::size_t(n)] < 1e-12 ? 7 : 4;
   m.control.end_time = 4e-5;
   m.control.tssf = 0.5;
-  const std::filesystem::path dir = std::filesystem::path(IMPACT3D_BINARY_DIR) / "erosion_message";
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
-  RunOptions o;
-  o.printed = (dir / "d3hsp").string();
-  o.plot = (dir / "d3plot").string();
-  o.dump = (dir / "d3dump").string();
-  o.quiet = true;
-  o.threads = 1;
+  const std::filesystem::path dir = test_support::empty_run_folder("erosion_message");
+  RunOptions o = test_support::run_options_in(dir);
   std::ostringstream printed;
   run_simulation(m, o, printed);
   const std::string log = printed.str();

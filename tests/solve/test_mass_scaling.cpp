@@ -17,6 +17,7 @@
 #include "impact3d/solve/engine.h"
 #include "impact3d/solve/mass_scaling.h"
 #include "tests/solve/test_models.h"
+#include "../support/deck_text.h"
 
 using namespace impact3d;
 using namespace solve_test;
@@ -240,26 +241,9 @@ TEST(MassScaling, RestartDumpContinuesBitForBit) {
 
 namespace {
 
-struct Read {
-  Model m;
-  Diagnostics d;
-  bool ok = false;
-  std::string messages() const {
-    std::ostringstream os;
-    d.print(os);
-    return os.str();
-  }
-};
+using Read = test_support::ReadDeck;
 
-Read read_text(const std::string& name, const std::string& text) {
-  Read r;
-  DeckFile deck;
-  deck.load_from_string(name, text);
-  InputOptions o;
-  r.ok = read_deck(deck, r.m, r.d, o);
-  if (r.ok) r.ok = check_model(r.m, r.d);
-  return r;
-}
+Read read_text(const std::string& name, const std::string& text) { return test_support::read_deck_text(text, name); }
 
 std::string one_hex_deck(const std::string& controls) {
   return "*KEYWORD\n*TITLE\nmass scaling\n" + controls + "*DATABASE_BINARY_D3PLOT\n   5.0E-07\n" +

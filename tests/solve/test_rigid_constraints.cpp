@@ -15,31 +15,15 @@
 #include "impact3d/input/deck_reader.h"
 #include "impact3d/input/deck_writer.h"
 #include "impact3d/solve/engine.h"
+#include "../support/deck_text.h"
 
 using namespace impact3d;
 
 namespace {
 
-struct Read {
-  Model m;
-  Diagnostics d;
-  bool ok = false;
-  std::string messages() const {
-    std::ostringstream os;
-    d.print(os);
-    return os.str();
-  }
-};
+using Read = test_support::ReadDeck;
 
-Read read_text(const std::string& name, const std::string& text) {
-  Read r;
-  DeckFile deck;
-  deck.load_from_string(name, text);
-  InputOptions o;
-  r.ok = read_deck(deck, r.m, r.d, o);
-  if (r.ok) r.ok = check_model(r.m, r.d);
-  return r;
-}
+Read read_text(const std::string& name, const std::string& text) { return test_support::read_deck_text(text, name); }
 
 // A rigid steel cube of 0.1 m (2 x 2 x 2 solids, nodes id 1 + ix + 3 iy + 9 iz) thrown at
 // (3, 4, 5) m/s spinning at 10 rad/s about the vertical axis through its centre; card 2 of

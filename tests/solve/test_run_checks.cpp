@@ -13,6 +13,7 @@
 #include "impact3d/input/deck_reader.h"
 #include "impact3d/solve/run.h"
 #include "impact3d/solve/run_checks.h"
+#include "../support/deck_text.h"
 
 using namespace impact3d;
 
@@ -211,15 +212,8 @@ RunResult run_deck(const std::string& text, const std::string& name, bool strict
     r.log = os.str();
     return r;
   }
-  const std::filesystem::path dir = std::filesystem::path(IMPACT3D_BINARY_DIR) / "run_checks" / name;
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
-  RunOptions o;
-  o.printed = (dir / "d3hsp").string();
-  o.plot = (dir / "d3plot").string();
-  o.dump = (dir / "d3dump").string();
-  o.quiet = true;
-  o.threads = 1;
+  const std::filesystem::path dir = test_support::empty_run_folder("run_checks", name);
+  RunOptions o = test_support::run_options_in(dir);
   o.strict = strict;
   {
     std::ofstream printed(o.printed);

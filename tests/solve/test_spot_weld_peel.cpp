@@ -29,6 +29,7 @@
 #include "impact3d/solve/engine.h"
 #include "impact3d/solve/run.h"
 #include "impact3d/solve/spot_weld.h"
+#include "../support/deck_text.h"
 
 using namespace impact3d;
 namespace fs = std::filesystem;
@@ -102,25 +103,9 @@ std::string peel_deck(const std::string& weld, double end_time, int dump_cycles 
   return d.str();
 }
 
-struct Read {
-  Model m;
-  Diagnostics d;
-  bool ok = false;
-  std::string messages() const {
-    std::ostringstream os;
-    d.print(os);
-    return os.str();
-  }
-};
+using Read = test_support::ReadDeck;
 
-Read read_text(const std::string& text) {
-  Read r;
-  DeckFile deck;
-  deck.load_from_string("peel.k", text);
-  r.ok = read_deck(deck, r.m, r.d, InputOptions{});
-  if (r.ok) r.ok = check_model(r.m, r.d);
-  return r;
-}
+Read read_text(const std::string& text) { return test_support::read_deck_text(text, "peel.k"); }
 
 // Momentum along z of sheet `sheet` (its node ids sheet * 100 + 1 ...).
 double sheet_momentum(const Model& m, const State& s, int sheet) {

@@ -27,36 +27,15 @@
 #include "impact3d/solve/engine.h"
 #include "impact3d/solve/spot_weld.h"
 #include "tests/support/box_mesh.h"
+#include "../support/deck_text.h"
 
 using namespace impact3d;
 
 namespace {
 
-struct Read {
-  Model m;
-  Diagnostics d;
-  bool ok = false;
-  std::string messages() const {
-    std::ostringstream os;
-    d.print(os);
-    return os.str();
-  }
-  const Diagnostic* first(int id) const {
-    for (const auto& x : d.all())
-      if (x.id == id) return &x;
-    return nullptr;
-  }
-};
+using Read = test_support::ReadDeck;
 
-Read read_text(const std::string& text) {
-  Read r;
-  DeckFile deck;
-  deck.load_from_string("welds.k", text);
-  InputOptions o;
-  r.ok = read_deck(deck, r.m, r.d, o);
-  if (r.ok) r.ok = check_model(r.m, r.d);
-  return r;
-}
+Read read_text(const std::string& text) { return test_support::read_deck_text(text, "welds.k"); }
 
 constexpr double kRate = 1e6;  // N/s on each cube
 

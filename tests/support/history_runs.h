@@ -11,36 +11,24 @@
 
 #include "impact3d/input/deck_reader.h"
 #include "impact3d/solve/run.h"
+#include "deck_text.h"
 
 namespace test_support {
 
 // The Model of a deck given as text (`name` tells the format by its extension); a failed read
 // or check fails the test with the messages.
 inline impact3d::Model read_model_text(const std::string& text, const std::string& name) {
-  impact3d::DeckFile deck;
-  deck.load_from_string(name, text);
-  impact3d::Model m;
-  impact3d::Diagnostics d;
-  const bool ok = impact3d::read_deck(deck, m, d, impact3d::InputOptions{}) && impact3d::check_model(m, d);
-  std::ostringstream os;
-  d.print(os);
-  EXPECT_TRUE(ok) << os.str();
-  return m;
+  ReadDeck r = read_deck_text(text, name);
+  EXPECT_TRUE(r.ok) << r.messages();
+  return std::move(r.m);
 }
 
 // Runs m on one thread with its d3hsp, d3plot and d3dump in IMPACT3D_BINARY_DIR/group/name
 // (emptied first), databases of `plot_word_size` byte words; the run must end normally.
 inline std::filesystem::path run_model_in(const impact3d::Model& m, const std::string& group, const std::string& name,
                                           int plot_word_size = 4) {
-  const std::filesystem::path dir = std::filesystem::path(IMPACT3D_BINARY_DIR) / group / name;
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
-  impact3d::RunOptions o;
-  o.printed = (dir / "d3hsp").string();
-  o.plot = (dir / "d3plot").string();
-  o.dump = (dir / "d3dump").string();
-  o.quiet = true;
-  o.threads = 1;
+  const std::filesystem::path dir = empty_run_folder(group, name);
+  impact3d::RunOptions o = run_options_in(dir);
   o.plot_word_size = plot_word_size;
   std::ofstream printed(o.printed);
   EXPECT_EQ(impact3d::run_simulation(m, o, printed), 0);
