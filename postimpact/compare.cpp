@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <map>
 #include <memory>
 #include <sstream>
 #include <stdexcept>
@@ -213,6 +214,306 @@ std::string where(const Diff& d, Database& db) {
     return s;
 }
 
+int family_count(const impact3d::PlotGeometry& g, int f) {
+    const int n[4] = {g.num_hexes(), g.num_tshells(), g.num_beams(), g.num_shells()};
+    return n[f];
+}
+
+// A's nodes and elements matched to B's by user id (per family); a family only one database has
+// is skipped when matching by time.
+struct Matching {
+    bool skip_family[4] = {false, false, false, false};
+    std::vector<int> node_b, elem_b;  // B's node / element of each of A's (-1: none, or skipped)
+};
+
+// The meshes have the same counts (nodes, elements per family, materials when matching by
+// state); by time, a family only one database has is noted and skipped. False: not comparable
+// (said on out).
+bool same_counts(const impact3d::PlotGeometry& ga, const impact3d::PlotGeometry& gb, bool by_time, Matching& mt,
+                 std::ostream& out) {
+    if (by_time) {
+        const char* names[4] = {"solids", "thick shells", "beams", "shells"};
+        for (int f = 0; f < 4; ++f) {
+            const int ca = family_count(ga, f), cb = family_count(gb, f);
+            if ((ca == 0) == (cb == 0)) continue;
+            mt.skip_family[f] = true;
+            out << "compare: note: " << (ca ? "A" : "B") << " has " << std::max(ca, cb) << " " << names[f] << ", "
+                << (ca ? "B" : "A") << " none: not compared\n";
+        }
+    }
+    auto same_count = [&](int f) { return mt.skip_family[f] || family_count(ga, f) == family_count(gb, f); };
+    if (ga.num_nodes() != gb.num_nodes() || !same_count(0) || (!by_time && ga.num_materials != gb.num_materials) ||
+        !same_count(1) || !same_count(2) || !same_count(3)) {
+        out << "compare: the meshes differ: A has " << ga.num_nodes() << " nodes, " << ga.num_hexes()
+            << " solids, " << ga.num_materials << " materials; B has " << gb.num_nodes() << ", "
+            << gb.num_hexes() << ", " << gb.num_materials;
+        if (num_elements(ga) != ga.num_hexes() || num_elements(gb) != gb.num_hexes())
+            out << " (thick shells, beams, shells: A " << ga.num_tshells() << ", " << ga.num_beams() << ", "
+                << ga.num_shells() << "; B " << gb.num_tshells() << ", " << gb.num_beams() << ", " << gb.num_shells() << ")";
+        out << "\nresult: NOT COMPARABLE\n";
+        return false;
+    }
+    return true;
+}
+
+// Matches nodes and elements (per family) by user id. False: some of A's are not in B (said).
+bool match_by_user_id(Database& A, Database& B, Matching& mt, std::ostream& out) {
+    const auto& ga = A.geometry();
+    const auto& gb = B.geometry();
+    mt.node_b.assign(static_cast<std::size_t>(ga.num_nodes()), 0);
+    mt.elem_b.assign(static_cast<std::size_t>(num_elements(ga)), 0);
+    std::vector<int> unmatched;
+    for (int k = 0; k < ga.num_nodes(); ++k) {
+        const int j = B.node_index(A.node_id(k));
+        mt.node_b[static_cast<std::size_t>(k)] = j;
+        if (j < 0) unmatched.push_back(A.node_id(k));
+    }
+    std::map<std::pair<int, int>, int> b_elems;  // (family, user id) -> B element
+    for (int e = 0; e < num_elements(gb); ++e)
+        b_elems.emplace(std::make_pair(static_cast<int>(element_ref(gb, e).family), element_user_id(gb, e)), e);
+    std::vector<std::string> unmatched_elems;
+    for (int e = 0; e < num_elements(ga); ++e) {
+        const ElementRef r = element_ref(ga, e);
+        if (mt.skip_family[static_cast<int>(r.family)]) {
+            mt.elem_b[static_cast<std::size_t>(e)] = -1;
+            continue;
+        }
+        const auto it = b_elems.find({static_cast<int>(r.family), element_user_id(ga, e)});
+        mt.elem_b[static_cast<std::size_t>(e)] = it == b_elems.end() ? -1 : it->second;
+        if (it == b_elems.end()) unmatched_elems.push_back(std::string(family_name(r.family)) + " " + std::to_string(element_user_id(ga, e)));
+    }
+    if (!unmatched.empty() || !unmatched_elems.empty()) {
+        out << "compare: the meshes differ: " << unmatched.size() << " node and " << unmatched_elems.size()
+            << " element user id(s) of A are not in B (first: "
+            << (unmatched.empty() ? unmatched_elems.front() : "node " + std::to_string(unmatched.front()))
+            << ")\nresult: NOT COMPARABLE\n";
+        return false;
+    }
+    return true;
+}
+
+// The rigid-wall and interface force blocks have the same counts (a Mili database holds none:
+// then they are noted and left out). False: not comparable (said).
+bool same_global_blocks(Database& A, Database& B, bool by_time, std::ostream& out) {
+    const auto& ga = A.geometry();
+    const auto& gb = B.geometry();
+    if ((ga.num_rigid_walls != gb.num_rigid_walls || ga.num_interfaces != gb.num_interfaces) && by_time &&
+        (A.is_mili() || B.is_mili())) {
+        // a Mili database holds no rigid-wall or interface-force block: those forces are left out
+        out << "compare: note: A has " << ga.num_rigid_walls << " rigid-wall and " << ga.num_interfaces
+            << " interface force(s), B " << gb.num_rigid_walls << " and " << gb.num_interfaces
+            << " (a Mili database holds none): the forces are not compared\n";
+    } else if (ga.num_rigid_walls != gb.num_rigid_walls || ga.num_interfaces != gb.num_interfaces) {
+        out << "compare: the global blocks differ: A has " << ga.num_rigid_walls << " rigid-wall and "
+            << ga.num_interfaces << " interface force(s); B has " << gb.num_rigid_walls << " and "
+            << gb.num_interfaces << "\nresult: NOT COMPARABLE\n";
+        return false;
+    }
+    return true;
+}
+
+// Connectivity through the matches: A's element nodes, as B nodes, are B's element nodes (a
+// warning when not).
+void warn_if_connectivity_differs(const impact3d::PlotGeometry& ga, const impact3d::PlotGeometry& gb, const Matching& mt,
+                                  std::ostream& out) {
+    bool same = true;
+    for (int e = 0; e < num_elements(ga) && same; ++e) {
+        if (mt.elem_b[static_cast<std::size_t>(e)] < 0) continue;
+        int ca = 0, cb = 0;
+        const int* na = element_nodes(ga, e, ca);
+        const int* nb = element_nodes(gb, mt.elem_b[static_cast<std::size_t>(e)], cb);
+        for (int k = 0; k < ca && same; ++k) same = mt.node_b[static_cast<std::size_t>(na[k])] == nb[k];
+    }
+    if (!same) out << "compare: warning: the element connectivities differ\n";
+}
+
+const char* const kXyz[3] = {"x", "y", "z"};
+const char* const kStressComps[6] = {"sxx", "syy", "szz", "sxy", "syz", "szx"};
+
+// The statistics of every field (Tolerances::kFields order), and how many of the largest
+// differences each keeps.
+struct FieldTable {
+    std::vector<FieldStats> fs;
+    std::size_t keep = 0;
+    FieldStats& operator()(const char* n) {
+        for (auto& x : fs)
+            if (x.name == n) return x;
+        return fs[0];
+    }
+    void add(const char* field, const Diff& d) { postimpact::add((*this)(field), d, keep); }
+};
+
+// Nodal fields (coordinates, velocities, accelerations, temperatures) of state i.
+void compare_nodes(Database& A, const impact3d::PlotState& sa, const impact3d::PlotState& sb, int i, const Matching& mt,
+                   FieldTable& F) {
+    auto nodal = [&](const char* field, const std::vector<double>& a, const std::vector<double>& b, int per) {
+        if (a.empty() || b.empty() || a.size() != b.size()) return;
+        for (std::size_t k = 0; k < a.size(); ++k) {
+            const std::size_t kb = per * static_cast<std::size_t>(mt.node_b[k / per]) + k % per;
+            F.add(field, Diff{0, a[k], b[kb], 0, 0, i, A.node_id(static_cast<int>(k / per)), "node", per == 3 ? kXyz[k % 3] : ""});
+        }
+    };
+    nodal("coords", sa.coords, sb.coords, 3);
+    nodal("vel", sa.vel, sb.vel, 3);
+    nodal("acc", sa.acc, sb.acc, 3);
+    nodal("temp", sa.temperature, sb.temperature, 1);
+}
+
+// Element fields of state i: solid stresses and EPS; thick shells, beams, shells: middle-surface
+// stresses and EPS (beams: mean over the points).
+void compare_elements(Database& A, Database& B, const impact3d::PlotState& sa, const impact3d::PlotState& sb, int i,
+                      const Matching& mt, FieldTable& F) {
+    const auto& ga = A.geometry();
+    const auto& gb = B.geometry();
+    const std::size_t nh = static_cast<std::size_t>(ga.num_hexes());
+    if (sa.stress.size() == sb.stress.size() && !mt.skip_family[0])
+        for (std::size_t k = 0; k < sa.stress.size(); ++k)
+            F.add("stress", Diff{0, sa.stress[k], sb.stress[6 * static_cast<std::size_t>(mt.elem_b[k / 6]) + k % 6], 0, 0, i,
+                                 A.element_id(static_cast<int>(k / 6)), "elem", kStressComps[k % 6]});
+    if (sa.eps.size() == sb.eps.size() && !mt.skip_family[0])
+        for (std::size_t k = 0; k < sa.eps.size(); ++k)
+            F.add("eps", Diff{0, sa.eps[k], sb.eps[static_cast<std::size_t>(mt.elem_b[k])], 0, 0, i, A.element_id(static_cast<int>(k)), "elem", ""});
+    for (int e = static_cast<int>(nh); e < num_elements(ga); ++e) {
+        const int eb = mt.elem_b[static_cast<std::size_t>(e)];
+        if (eb < 0) continue;
+        const std::string what = family_name(element_ref(ga, e).family);
+        for (int c = 0; c < 7; ++c) {
+            Quantity q;
+            find_quantity(c < 6 ? kStressComps[c] : "eps", q);
+            F.add(c < 6 ? "stress" : "eps",
+                  Diff{0, element_value(q, ga, A.layout(), sa, e), element_value(q, gb, B.layout(), sb, eb), 0, 0, i,
+                       A.element_id(e), what, c < 6 ? kStressComps[c] : ""});
+        }
+    }
+}
+
+// Global fields of state i: energies (model and per material), the model's and the materials'
+// velocities, the materials' masses, rigid-wall and interface forces.
+void compare_globals(const impact3d::PlotState& sa, const impact3d::PlotState& sb, int i, FieldTable& F) {
+    F.add("energy", Diff{0, sa.kinetic_energy, sb.kinetic_energy, 0, 0, i, 0, "", "kinetic"});
+    F.add("energy", Diff{0, sa.internal_energy, sb.internal_energy, 0, 0, i, 0, "", "internal"});
+    F.add("energy", Diff{0, sa.total_energy, sb.total_energy, 0, 0, i, 0, "", "total"});
+    auto mat = [&](const char* comp, const std::vector<double>& a, const std::vector<double>& b) {
+        if (a.size() != b.size()) return;
+        for (std::size_t k = 0; k < a.size(); ++k)
+            F.add("energy", Diff{0, a[k], b[k], 0, 0, i, static_cast<int>(k + 1), "material", comp});
+    };
+    mat("internal", sa.mat_internal_energy, sb.mat_internal_energy);
+    mat("kinetic", sa.mat_kinetic_energy, sb.mat_kinetic_energy);
+    mat("hourglass", sa.mat_hourglass_energy, sb.mat_hourglass_energy);
+    // model velocity and per-material mean velocities (field vel), per-material masses
+    for (std::size_t k = 0; k < 3; ++k)
+        F.add("vel", Diff{0, sa.velocity[k], sb.velocity[k], 0, 0, i, 0, "model", kXyz[k]});
+    if (sa.mat_velocity.size() == sb.mat_velocity.size())
+        for (std::size_t k = 0; k < sa.mat_velocity.size(); ++k)
+            F.add("vel", Diff{0, sa.mat_velocity[k], sb.mat_velocity[k], 0, 0, i, static_cast<int>(k / 3 + 1), "material", kXyz[k % 3]});
+    if (sa.mat_mass.size() == sb.mat_mass.size())
+        for (std::size_t k = 0; k < sa.mat_mass.size(); ++k)
+            F.add("mass", Diff{0, sa.mat_mass[k], sb.mat_mass[k], 0, 0, i, static_cast<int>(k + 1), "material", ""});
+    // rigid-wall normal forces and interface resultant forces (the same counts: checked above)
+    if (sa.rigid_wall_forces.size() == sb.rigid_wall_forces.size())
+        for (std::size_t k = 0; k < sa.rigid_wall_forces.size(); ++k)
+            F.add("force", Diff{0, sa.rigid_wall_forces[k], sb.rigid_wall_forces[k], 0, 0, i, static_cast<int>(k + 1), "wall", "normal"});
+    if (sa.interface_forces.size() == sb.interface_forces.size())
+        for (std::size_t k = 0; k < sa.interface_forces.size(); ++k)
+            F.add("force", Diff{0, sa.interface_forces[k], sb.interface_forces[k], 0, 0, i, static_cast<int>(k / 3 + 1), "interface", kXyz[k % 3]});
+}
+
+// Element deletion flags of state i must agree (every family).
+void compare_deletion(Database& A, Database& B, const impact3d::PlotState& sa, const impact3d::PlotState& sb, int i,
+                      const Matching& mt, FieldTable& F) {
+    const auto& ga = A.geometry();
+    const auto& gb = B.geometry();
+    const int nh = ga.num_hexes();
+    for (int e = 0; e < num_elements(ga); ++e) {
+        if (mt.elem_b[static_cast<std::size_t>(e)] < 0) continue;
+        const bool la = element_alive(sa, ga, e), lb = element_alive(sb, gb, mt.elem_b[static_cast<std::size_t>(e)]);
+        if (la != lb)
+            F.add("eps", Diff{0, la ? 1.0 : 0.0, lb ? 1.0 : 0.0, 0, 0, i, A.element_id(e),
+                              e < nh ? std::string("elem") : std::string(family_name(element_ref(ga, e).family)),
+                              "alive"});
+    }
+}
+
+// The matched states compared field by field; counts the states compared, those interpolated
+// between two of B's and those outside B's time span.
+struct StateCounts {
+    int compared = 0, interpolated = 0, outside_span = 0;
+};
+
+StateCounts compare_states(Database& A, Database& B, bool by_time, const Matching& mt, FieldTable& F) {
+    StateCounts n;
+    for (const StateMatch& m : match_states(A, B, by_time)) {
+        if (m.b0 < 0) {
+            ++n.outside_span;
+            continue;
+        }
+        ++n.compared;
+        const int i = m.a;
+        const impact3d::PlotState sa = A.state(i);  // copies: the cache may be trimmed
+        impact3d::PlotState sb = B.state(m.b0);
+        if (m.b1 != m.b0) {
+            ++n.interpolated;
+            const impact3d::PlotState s1 = B.state(m.b1);
+            sb = interpolate(sb, s1, m.w);
+        }
+        F.add("time", Diff{0, sa.time, sb.time, 0, 0, i, 0, "", ""});
+        compare_nodes(A, sa, sb, i, mt, F);
+        compare_elements(A, B, sa, sb, i, mt, F);
+        compare_globals(sa, sb, i, F);
+        compare_deletion(A, B, sa, sb, i, mt, F);
+    }
+    return n;
+}
+
+// The table of fields (tolerances, largest differences, values outside) and the largest
+// differences outside tolerance, worst first; kept in res too. Returns the values outside.
+long long report_fields(FieldTable& F, Database& A, CompareResult& res, std::ostream& out) {
+    const std::size_t keep = F.keep;
+    char line[512];
+    out << "\n";
+    std::snprintf(line, sizeof line, "%-7s %10s %10s  %12s  %12s  %10s  %s\n", "field", "rel tol", "abs tol",
+                  "max |a-b|", "max rel", "outside", "largest absolute difference at");
+    out << line;
+    long long outside = 0;
+    std::vector<std::pair<std::string, Diff>> all_worst;
+    for (auto& f : F.fs) {
+        if (f.compared == 0) {
+            if (f.name == "temp") continue;  // (a row only for databases with temperatures)
+            std::snprintf(line, sizeof line, "%-7s %10s %10s  %12s  %12s  %10s\n", f.name.c_str(), g(f.tol.rel).c_str(),
+                          g(f.tol.abs).c_str(), "-", "-", "-");
+            out << line;
+            continue;
+        }
+        outside += f.outside;
+        res.fields.push_back(CompareFieldRow{f.name, f.tol, f.compared, f.outside, f.max_abs.absd, f.max_rel.reld});
+        std::snprintf(line, sizeof line, "%-7s %10s %10s  %12s  %12s  %10lld  %s\n", f.name.c_str(), g(f.tol.rel).c_str(),
+                      g(f.tol.abs).c_str(), g(f.max_abs.absd).c_str(), g(f.max_rel.reld).c_str(), f.outside,
+                      f.max_abs.absd > 0 ? where(f.max_abs, A).c_str() : "");
+        out << line;
+        for (const auto& d : f.worst) all_worst.emplace_back(f.name, d);
+    }
+    std::stable_sort(all_worst.begin(), all_worst.end(), [](const auto& x, const auto& y) {
+        return x.second.ratio > y.second.ratio || (x.second.ratio == y.second.ratio && x.second.absd > y.second.absd);
+    });
+    for (std::size_t k = 0; k < std::min(keep, all_worst.size()); ++k) {
+        const auto& [name, d] = all_worst[k];
+        res.worst.push_back(CompareFinding{name, d.state + 1, A.time(d.state), d.what, d.id, d.comp, d.a, d.b,
+                                           d.absd, d.reld, d.ratio});
+    }
+    if (!all_worst.empty() && keep > 0) {
+        out << "\nlargest differences outside tolerance (|a-b| / allowed, worst first):\n";
+        for (std::size_t k = 0; k < std::min(keep, all_worst.size()); ++k) {
+            const auto& [name, d] = all_worst[k];
+            std::snprintf(line, sizeof line, "  %-7s %s: a %s  b %s  |a-b| %s  rel %s  x%s\n", name.c_str(),
+                          where(d, A).c_str(), g(d.a).c_str(), g(d.b).c_str(), g(d.absd).c_str(), g(d.reld).c_str(),
+                          std::isinf(d.ratio) ? "inf" : g(d.ratio).c_str());
+            out << line;
+        }
+    }
+    return outside;
+}
+
 }  // namespace
 
 int compare_databases(const std::string& pa, const std::string& pb, const CompareOptions& opt,
@@ -246,237 +547,27 @@ int compare_databases(const std::string& pa, const std::string& pb, const Compar
     }
     res.states_a = A->num_states();
     res.states_b = B->num_states();
-    const auto& ga = A->geometry();
-    const auto& gb = B->geometry();
     const bool by_time = opt.by_time || A->is_mili() || B->is_mili();
     out << "compare: A = " << pa << " (" << A->num_states() << " states" << (A->is_mili() ? ", Mili" : "") << ")\n"
         << "         B = " << pb << " (" << B->num_states() << " states" << (B->is_mili() ? ", Mili" : "") << ")\n";
-    // by time: a family only one database has is left out
-    auto count = [](const impact3d::PlotGeometry& g, int f) {
-        const int n[4] = {g.num_hexes(), g.num_tshells(), g.num_beams(), g.num_shells()};
-        return n[f];
-    };
-    bool skip_family[4] = {false, false, false, false};
-    if (by_time) {
-        const char* names[4] = {"solids", "thick shells", "beams", "shells"};
-        for (int f = 0; f < 4; ++f) {
-            const int ca = count(ga, f), cb = count(gb, f);
-            if ((ca == 0) == (cb == 0)) continue;
-            skip_family[f] = true;
-            out << "compare: note: " << (ca ? "A" : "B") << " has " << std::max(ca, cb) << " " << names[f] << ", "
-                << (ca ? "B" : "A") << " none: not compared\n";
-        }
-    }
-    auto same_count = [&](int f) { return skip_family[f] || count(ga, f) == count(gb, f); };
-    if (ga.num_nodes() != gb.num_nodes() || !same_count(0) || (!by_time && ga.num_materials != gb.num_materials) ||
-        !same_count(1) || !same_count(2) || !same_count(3)) {
-        out << "compare: the meshes differ: A has " << ga.num_nodes() << " nodes, " << ga.num_hexes()
-            << " solids, " << ga.num_materials << " materials; B has " << gb.num_nodes() << ", "
-            << gb.num_hexes() << ", " << gb.num_materials;
-        if (num_elements(ga) != ga.num_hexes() || num_elements(gb) != gb.num_hexes())
-            out << " (thick shells, beams, shells: A " << ga.num_tshells() << ", " << ga.num_beams() << ", "
-                << ga.num_shells() << "; B " << gb.num_tshells() << ", " << gb.num_beams() << ", " << gb.num_shells() << ")";
-        out << "\nresult: NOT COMPARABLE\n";
+    Matching mt;
+    if (!same_counts(A->geometry(), B->geometry(), by_time, mt, out) || !match_by_user_id(*A, *B, mt, out) ||
+        !same_global_blocks(*A, *B, by_time, out))
         return not_comparable();
-    }
-    // match nodes and elements (per family) by user id
-    std::vector<int> node_b(static_cast<std::size_t>(ga.num_nodes())), elem_b(static_cast<std::size_t>(num_elements(ga)));
-    {
-        std::vector<int> unmatched;
-        for (int k = 0; k < ga.num_nodes(); ++k) {
-            const int j = B->node_index(A->node_id(k));
-            node_b[static_cast<std::size_t>(k)] = j;
-            if (j < 0) unmatched.push_back(A->node_id(k));
-        }
-        std::map<std::pair<int, int>, int> b_elems;  // (family, user id) -> B element
-        for (int e = 0; e < num_elements(gb); ++e)
-            b_elems.emplace(std::make_pair(static_cast<int>(element_ref(gb, e).family), element_user_id(gb, e)), e);
-        std::vector<std::string> unmatched_elems;
-        for (int e = 0; e < num_elements(ga); ++e) {
-            const ElementRef r = element_ref(ga, e);
-            if (skip_family[static_cast<int>(r.family)]) {
-                elem_b[static_cast<std::size_t>(e)] = -1;
-                continue;
-            }
-            const auto it = b_elems.find({static_cast<int>(r.family), element_user_id(ga, e)});
-            elem_b[static_cast<std::size_t>(e)] = it == b_elems.end() ? -1 : it->second;
-            if (it == b_elems.end()) unmatched_elems.push_back(std::string(family_name(r.family)) + " " + std::to_string(element_user_id(ga, e)));
-        }
-        if (!unmatched.empty() || !unmatched_elems.empty()) {
-            out << "compare: the meshes differ: " << unmatched.size() << " node and " << unmatched_elems.size()
-                << " element user id(s) of A are not in B (first: "
-                << (unmatched.empty() ? unmatched_elems.front() : "node " + std::to_string(unmatched.front()))
-                << ")\nresult: NOT COMPARABLE\n";
-            return not_comparable();
-        }
-    }
-    if ((ga.num_rigid_walls != gb.num_rigid_walls || ga.num_interfaces != gb.num_interfaces) && by_time &&
-        (A->is_mili() || B->is_mili())) {
-        // a Mili database holds no rigid-wall or interface-force block: those forces are left out
-        out << "compare: note: A has " << ga.num_rigid_walls << " rigid-wall and " << ga.num_interfaces
-            << " interface force(s), B " << gb.num_rigid_walls << " and " << gb.num_interfaces
-            << " (a Mili database holds none): the forces are not compared\n";
-    } else if (ga.num_rigid_walls != gb.num_rigid_walls || ga.num_interfaces != gb.num_interfaces) {
-        out << "compare: the global blocks differ: A has " << ga.num_rigid_walls << " rigid-wall and "
-            << ga.num_interfaces << " interface force(s); B has " << gb.num_rigid_walls << " and "
-            << gb.num_interfaces << "\nresult: NOT COMPARABLE\n";
-        return not_comparable();
-    }
-    {
-        // connectivity through the matches: A's element nodes, as B nodes, are B's element nodes
-        bool same = true;
-        for (int e = 0; e < num_elements(ga) && same; ++e) {
-            if (elem_b[static_cast<std::size_t>(e)] < 0) continue;
-            int ca = 0, cb = 0;
-            const int* na = element_nodes(ga, e, ca);
-            const int* nb = element_nodes(gb, elem_b[static_cast<std::size_t>(e)], cb);
-            for (int k = 0; k < ca && same; ++k) same = node_b[static_cast<std::size_t>(na[k])] == nb[k];
-        }
-        if (!same) out << "compare: warning: the element connectivities differ\n";
-    }
-    const std::size_t keep = static_cast<std::size_t>(std::max(opt.report, 0));
-    std::vector<FieldStats> fs;
-    for (const char* f : Tolerances::kFields) fs.push_back(FieldStats{f, opt.tol.get(f), 0, 0, {}, {}, {}});
-    auto F = [&](const char* n) -> FieldStats& {
-        for (auto& x : fs)
-            if (x.name == n) return x;
-        return fs[0];
-    };
-    const char* xyz[3] = {"x", "y", "z"};
-    const char* sc[6] = {"sxx", "syy", "szz", "sxy", "syz", "szx"};
-    const std::vector<StateMatch> matches = match_states(*A, *B, by_time);
-    int ns = 0, interpolated = 0, outside_span = 0;
-    for (const StateMatch& m : matches) {
-        if (m.b0 < 0) {
-            ++outside_span;
-            continue;
-        }
-        ++ns;
-        const int i = m.a;
-        const impact3d::PlotState sa = A->state(i);  // copies: the cache may be trimmed
-        impact3d::PlotState sb = B->state(m.b0);
-        if (m.b1 != m.b0) {
-            ++interpolated;
-            const impact3d::PlotState s1 = B->state(m.b1);
-            sb = interpolate(sb, s1, m.w);
-        }
-        add(F("time"), Diff{0, sa.time, sb.time, 0, 0, i, 0, "", ""}, keep);
-        auto nodal = [&](const char* field, const std::vector<double>& a, const std::vector<double>& b, int per) {
-            if (a.empty() || b.empty() || a.size() != b.size()) return;
-            for (std::size_t k = 0; k < a.size(); ++k) {
-                const std::size_t kb = per * static_cast<std::size_t>(node_b[k / per]) + k % per;
-                add(F(field), Diff{0, a[k], b[kb], 0, 0, i, A->node_id(static_cast<int>(k / per)), "node", per == 3 ? xyz[k % 3] : ""}, keep);
-            }
-        };
-        nodal("coords", sa.coords, sb.coords, 3);
-        nodal("vel", sa.vel, sb.vel, 3);
-        nodal("acc", sa.acc, sb.acc, 3);
-        nodal("temp", sa.temperature, sb.temperature, 1);
-        const std::size_t nh = static_cast<std::size_t>(ga.num_hexes());
-        if (sa.stress.size() == sb.stress.size() && !skip_family[0])
-            for (std::size_t k = 0; k < sa.stress.size(); ++k)
-                add(F("stress"), Diff{0, sa.stress[k], sb.stress[6 * static_cast<std::size_t>(elem_b[k / 6]) + k % 6], 0, 0, i, A->element_id(static_cast<int>(k / 6)), "elem", sc[k % 6]}, keep);
-        if (sa.eps.size() == sb.eps.size() && !skip_family[0])
-            for (std::size_t k = 0; k < sa.eps.size(); ++k)
-                add(F("eps"), Diff{0, sa.eps[k], sb.eps[static_cast<std::size_t>(elem_b[k])], 0, 0, i, A->element_id(static_cast<int>(k)), "elem", ""}, keep);
-        // thick shells, beams, shells: middle-surface stresses and EPS (beams: mean over the points)
-        for (int e = static_cast<int>(nh); e < num_elements(ga); ++e) {
-            const int eb = elem_b[static_cast<std::size_t>(e)];
-            if (eb < 0) continue;
-            const std::string what = family_name(element_ref(ga, e).family);
-            for (int c = 0; c < 7; ++c) {
-                Quantity q;
-                find_quantity(c < 6 ? sc[c] : "eps", q);
-                add(F(c < 6 ? "stress" : "eps"),
-                    Diff{0, element_value(q, ga, A->layout(), sa, e), element_value(q, gb, B->layout(), sb, eb), 0, 0, i,
-                         A->element_id(e), what, c < 6 ? sc[c] : ""},
-                    keep);
-            }
-        }
-        add(F("energy"), Diff{0, sa.kinetic_energy, sb.kinetic_energy, 0, 0, i, 0, "", "kinetic"}, keep);
-        add(F("energy"), Diff{0, sa.internal_energy, sb.internal_energy, 0, 0, i, 0, "", "internal"}, keep);
-        add(F("energy"), Diff{0, sa.total_energy, sb.total_energy, 0, 0, i, 0, "", "total"}, keep);
-        auto mat = [&](const char* comp, const std::vector<double>& a, const std::vector<double>& b) {
-            if (a.size() != b.size()) return;
-            for (std::size_t k = 0; k < a.size(); ++k)
-                add(F("energy"), Diff{0, a[k], b[k], 0, 0, i, static_cast<int>(k + 1), "material", comp}, keep);
-        };
-        mat("internal", sa.mat_internal_energy, sb.mat_internal_energy);
-        mat("kinetic", sa.mat_kinetic_energy, sb.mat_kinetic_energy);
-        mat("hourglass", sa.mat_hourglass_energy, sb.mat_hourglass_energy);
-        // model velocity and per-material mean velocities (field vel), per-material masses
-        for (std::size_t k = 0; k < 3; ++k)
-            add(F("vel"), Diff{0, sa.velocity[k], sb.velocity[k], 0, 0, i, 0, "model", xyz[k]}, keep);
-        if (sa.mat_velocity.size() == sb.mat_velocity.size())
-            for (std::size_t k = 0; k < sa.mat_velocity.size(); ++k)
-                add(F("vel"), Diff{0, sa.mat_velocity[k], sb.mat_velocity[k], 0, 0, i, static_cast<int>(k / 3 + 1), "material", xyz[k % 3]}, keep);
-        if (sa.mat_mass.size() == sb.mat_mass.size())
-            for (std::size_t k = 0; k < sa.mat_mass.size(); ++k)
-                add(F("mass"), Diff{0, sa.mat_mass[k], sb.mat_mass[k], 0, 0, i, static_cast<int>(k + 1), "material", ""}, keep);
-        // rigid-wall normal forces and interface resultant forces (the same counts: checked above)
-        if (sa.rigid_wall_forces.size() == sb.rigid_wall_forces.size())
-            for (std::size_t k = 0; k < sa.rigid_wall_forces.size(); ++k)
-                add(F("force"), Diff{0, sa.rigid_wall_forces[k], sb.rigid_wall_forces[k], 0, 0, i, static_cast<int>(k + 1), "wall", "normal"}, keep);
-        if (sa.interface_forces.size() == sb.interface_forces.size())
-            for (std::size_t k = 0; k < sa.interface_forces.size(); ++k)
-                add(F("force"), Diff{0, sa.interface_forces[k], sb.interface_forces[k], 0, 0, i, static_cast<int>(k / 3 + 1), "interface", xyz[k % 3]}, keep);
-        // element deletion flags must agree (every family)
-        for (int e = 0; e < num_elements(ga); ++e) {
-            if (elem_b[static_cast<std::size_t>(e)] < 0) continue;
-            const bool la = element_alive(sa, ga, e), lb = element_alive(sb, gb, elem_b[static_cast<std::size_t>(e)]);
-            if (la != lb)
-                add(F("eps"), Diff{0, la ? 1.0 : 0.0, lb ? 1.0 : 0.0, 0, 0, i, A->element_id(e),
-                                   e < static_cast<int>(nh) ? std::string("elem") : std::string(family_name(element_ref(ga, e).family)),
-                                   "alive"}, keep);
-        }
-    }
-    char line[512];
-    out << "\n";
-    std::snprintf(line, sizeof line, "%-7s %10s %10s  %12s  %12s  %10s  %s\n", "field", "rel tol", "abs tol",
-                  "max |a-b|", "max rel", "outside", "largest absolute difference at");
-    out << line;
-    long long outside = 0;
-    std::vector<std::pair<std::string, Diff>> all_worst;
-    for (auto& f : fs) {
-        if (f.compared == 0) {
-            if (f.name == "temp") continue;  // (a row only for databases with temperatures)
-            std::snprintf(line, sizeof line, "%-7s %10s %10s  %12s  %12s  %10s\n", f.name.c_str(), g(f.tol.rel).c_str(),
-                          g(f.tol.abs).c_str(), "-", "-", "-");
-            out << line;
-            continue;
-        }
-        outside += f.outside;
-        res.fields.push_back(CompareFieldRow{f.name, f.tol, f.compared, f.outside, f.max_abs.absd, f.max_rel.reld});
-        std::snprintf(line, sizeof line, "%-7s %10s %10s  %12s  %12s  %10lld  %s\n", f.name.c_str(), g(f.tol.rel).c_str(),
-                      g(f.tol.abs).c_str(), g(f.max_abs.absd).c_str(), g(f.max_rel.reld).c_str(), f.outside,
-                      f.max_abs.absd > 0 ? where(f.max_abs, *A).c_str() : "");
-        out << line;
-        for (const auto& d : f.worst) all_worst.emplace_back(f.name, d);
-    }
-    std::stable_sort(all_worst.begin(), all_worst.end(), [](const auto& x, const auto& y) {
-        return x.second.ratio > y.second.ratio || (x.second.ratio == y.second.ratio && x.second.absd > y.second.absd);
-    });
-    for (std::size_t k = 0; k < std::min(keep, all_worst.size()); ++k) {
-        const auto& [name, d] = all_worst[k];
-        res.worst.push_back(CompareFinding{name, d.state + 1, A->time(d.state), d.what, d.id, d.comp, d.a, d.b,
-                                           d.absd, d.reld, d.ratio});
-    }
-    if (!all_worst.empty() && keep > 0) {
-        out << "\nlargest differences outside tolerance (|a-b| / allowed, worst first):\n";
-        for (std::size_t k = 0; k < std::min(keep, all_worst.size()); ++k) {
-            const auto& [name, d] = all_worst[k];
-            std::snprintf(line, sizeof line, "  %-7s %s: a %s  b %s  |a-b| %s  rel %s  x%s\n", name.c_str(),
-                          where(d, *A).c_str(), g(d.a).c_str(), g(d.b).c_str(), g(d.absd).c_str(), g(d.reld).c_str(),
-                          std::isinf(d.ratio) ? "inf" : g(d.ratio).c_str());
-            out << line;
-        }
-    }
+    warn_if_connectivity_differs(A->geometry(), B->geometry(), mt, out);
+
+    FieldTable F;
+    F.keep = static_cast<std::size_t>(std::max(opt.report, 0));
+    for (const char* f : Tolerances::kFields) F.fs.push_back(FieldStats{f, opt.tol.get(f), 0, 0, {}, {}, {}});
+    const StateCounts n = compare_states(*A, *B, by_time, mt, F);
+    const long long outside = report_fields(F, *A, res, out);
+    const int ns = n.compared;
     int rc = 0;
     out << "\n";
     if (by_time) {
-        out << "states: matched by time: " << ns << " of A's " << A->num_states() << " (" << interpolated
+        out << "states: matched by time: " << ns << " of A's " << A->num_states() << " (" << n.interpolated
             << " interpolated between two of B's " << B->num_states() << ")";
-        if (outside_span > 0) out << "; " << outside_span << " outside B's time span, not compared";
+        if (n.outside_span > 0) out << "; " << n.outside_span << " outside B's time span, not compared";
         out << "\n";
         if (ns == 0) {
             out << "compare: no state of A lies in B's time span\nresult: NOT COMPARABLE\n";

@@ -37,24 +37,16 @@ double dot3(const double a[3], const double b[3]) { return a[0] * b[0] + a[1] * 
 
 bool has_beam_kernel(int type) { return find_beam_material(type) != nullptr; }
 
-std::string beam_material_keywords() {
-  std::string out;
-  for (const BeamMaterial& b : kBeamMaterials) {
-    if (!out.empty()) out += ", ";
-    out += std::string("*") + material_type(b.type).keywords[0];
-  }
-  return out;
+// The material types of the family's table, in its order.
+static std::vector<int> beam_material_types() {
+  std::vector<int> types;
+  for (const BeamMaterial& m : kBeamMaterials) types.push_back(m.type);
+  return types;
 }
 
-std::string beam_material_numbers() {
-  std::string out;
-  const std::size_t n = std::size(kBeamMaterials);
-  for (std::size_t i = 0; i < n; ++i) {
-    if (i > 0) out += i + 1 == n ? " and " : ", ";
-    out += std::to_string(kBeamMaterials[i].type);
-  }
-  return out;
-}
+std::string beam_material_keywords() { return keywords_of_types(beam_material_types()); }
+
+std::string beam_material_numbers() { return numbers_of_types(beam_material_types()); }
 
 BeamSectionSize beam_section_size(const Model& m, int b) {
   const BeamSectionData& sec = m.materials[std::size_t(m.beam_material[std::size_t(b)])].beam_section;

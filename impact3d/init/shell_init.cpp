@@ -42,24 +42,16 @@ ShellKernel shell_kernel_for_material_type(int type) {
   throw std::logic_error("no shell kernel for material type " + std::to_string(type));
 }
 
-std::string shell_material_keywords() {
-  std::string out;
-  for (const ShellMaterial& s : kShellMaterials) {
-    if (!out.empty()) out += ", ";
-    out += std::string("*") + material_type(s.type).keywords[0];
-  }
-  return out;
+// The material types of the family's table, in its order.
+static std::vector<int> shell_material_types() {
+  std::vector<int> types;
+  for (const ShellMaterial& m : kShellMaterials) types.push_back(m.type);
+  return types;
 }
 
-std::string shell_material_numbers() {
-  std::string out;
-  const std::size_t n = std::size(kShellMaterials);
-  for (std::size_t i = 0; i < n; ++i) {
-    if (i > 0) out += i + 1 == n ? " and " : ", ";
-    out += std::to_string(kShellMaterials[i].type);
-  }
-  return out;
-}
+std::string shell_material_keywords() { return keywords_of_types(shell_material_types()); }
+
+std::string shell_material_numbers() { return numbers_of_types(shell_material_types()); }
 
 const MaterialParam* refused_shell_param(const MaterialData& md, const char** feature) {
   const ShellMaterial* s = find_shell_material(md.type);

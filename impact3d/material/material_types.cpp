@@ -83,6 +83,24 @@ std::string supported_material_keywords() {
   return s;
 }
 
+std::string keywords_of_types(const std::vector<int>& types) {
+  std::string out;
+  for (int type : types) {
+    if (!out.empty()) out += ", ";
+    out += std::string("*") + material_type(type).keywords[0];
+  }
+  return out;
+}
+
+std::string numbers_of_types(const std::vector<int>& types) {
+  std::string out;
+  for (std::size_t i = 0; i < types.size(); ++i) {
+    if (i > 0) out += i + 1 == types.size() ? " and " : ", ";
+    out += std::to_string(types[i]);
+  }
+  return out;
+}
+
 std::string eos_material_types() {
   std::string s;
   for (const MaterialType* t : material_types())

@@ -188,6 +188,10 @@ std::string supported_material_types();
 std::string supported_material_keywords();
 // "9 null (fluid...), 15 Johnson-Cook": the types that take an equation of state.
 std::string eos_material_types();
+// For the material types an element family takes (messages): "*MAT_ELASTIC, *MAT_..." (each
+// type's first keyword) and "1, 3 and 24".
+std::string keywords_of_types(const std::vector<int>& types);
+std::string numbers_of_types(const std::vector<int>& types);
 
 // The parameter's value in a material.
 double& param_value(MaterialData& md, const MaterialParam& p);
