@@ -1,4 +1,5 @@
 #include "impact3d/element/hex_sri.h"
+#include "impact3d/element/hexahedron.h"
 
 namespace impact3d {
 
@@ -50,28 +51,11 @@ double calc_hex_sri_point_gradients(const double x[8], const double y[8], const 
 void calc_hex_sri_strain_rate(const double bx[8], const double by[8], const double bz[8],
                               const double vx[8], const double vy[8], const double vz[8],
                               double trd_mean, double d[6], double w[3]) {
-  double lxx = 0, lxy = 0, lxz = 0, lyx = 0, lyy = 0, lyz = 0, lzx = 0, lzy = 0, lzz = 0;
-  for (int n = 0; n < 8; ++n) {
-    lxx += vx[n] * bx[n];
-    lxy += vx[n] * by[n];
-    lxz += vx[n] * bz[n];
-    lyx += vy[n] * bx[n];
-    lyy += vy[n] * by[n];
-    lyz += vy[n] * bz[n];
-    lzx += vz[n] * bx[n];
-    lzy += vz[n] * by[n];
-    lzz += vz[n] * bz[n];
-  }
-  const double shift = (trd_mean - (lxx + lyy + lzz)) / 3.0;  // the point's trace -> the mean one
-  d[0] = lxx + shift;
-  d[1] = lyy + shift;
-  d[2] = lzz + shift;
-  d[3] = 0.5 * (lxy + lyx);
-  d[4] = 0.5 * (lyz + lzy);
-  d[5] = 0.5 * (lzx + lxz);
-  w[0] = 0.5 * (lxy - lyx);
-  w[1] = 0.5 * (lyz - lzy);
-  w[2] = 0.5 * (lzx - lxz);
+  calc_hex_strain_rate(bx, by, bz, vx, vy, vz, d, w);
+  const double shift = (trd_mean - (d[0] + d[1] + d[2])) / 3.0;  // the point's trace -> the mean one
+  d[0] += shift;
+  d[1] += shift;
+  d[2] += shift;
 }
 
 double add_hex_sri_point_forces(const double sig[6], const double bx[8], const double by[8],
