@@ -190,200 +190,284 @@ void Session::execute_line(const std::string& line, const std::string& where) {
     if (!w.empty()) execute(w, where);
 }
 
+namespace {
+
+// Throws the command's usage when it has fewer than lo or more than hi arguments.
+void need_args(const std::vector<std::string>& w, std::size_t lo, std::size_t hi, const char* usage) {
+    const std::size_t na = w.size() - 1;
+    if (na < lo || na > hi) throw CommandError(w[0] + ": usage: " + usage);
+}
+
+// The words after the first `from` joined by single spaces.
+std::string join_from(const std::vector<std::string>& w, std::size_t from) {
+    std::string t;
+    for (std::size_t i = from; i < w.size(); ++i) t += (i > from ? " " : "") + w[i];
+    return t;
+}
+
+}  // namespace
+
+// The command table: each command word and the member that carries it out.
+const std::vector<Session::CommandEntry>& Session::commands() {
+    static const std::vector<CommandEntry> table = {
+        {"open", &Session::cmd_open},         {"database", &Session::cmd_open},
+        {"outdir", &Session::cmd_outdir},     {"size", &Session::cmd_size},
+        {"plotsize", &Session::cmd_size},     {"view", &Session::cmd_view},
+        {"up", &Session::cmd_up},             {"mirror", &Session::cmd_mirror},
+        {"fringe", &Session::cmd_fringe},     {"range", &Session::cmd_range},
+        {"bands", &Session::cmd_bands},       {"supersample", &Session::cmd_supersample},
+        {"timing", &Session::cmd_timing},     {"average", &Session::cmd_switch},
+        {"edges", &Session::cmd_switch},      {"legend", &Session::cmd_switch},
+        {"triad", &Session::cmd_switch},      {"units", &Session::cmd_units},
+        {"scale", &Session::cmd_scale},       {"font", &Session::cmd_font},
+        {"title", &Session::cmd_title},       {"mark", &Session::cmd_mark},
+        {"state", &Session::cmd_state},       {"picture", &Session::cmd_picture},
+        {"sequence", &Session::cmd_sequence}, {"frames", &Session::cmd_frames},
+        {"history", &Session::cmd_history},   {"echo", &Session::cmd_echo},
+        {"default", &Session::cmd_default},
+    };
+    return table;
+}
+
 void Session::execute(const std::vector<std::string>& w, const std::string& where) {
     const std::string& c = w.at(0);
-    const std::size_t na = w.size() - 1;
-    auto need = [&](std::size_t lo, std::size_t hi, const char* usage) {
-        if (na < lo || na > hi) throw CommandError(c + ": usage: " + usage);
-    };
     t0_wall_ = wall_now();
     t0_cpu_ = cpu_now();
     try {
-        if (c == "open" || c == "database") {
-            need(1, 1, "open PATH");
-            db_ = std::make_unique<Database>(w[1]);
-            state_ = -1;
-            log_ << "opened " << w[1] << ": " << db_->geometry().num_nodes() << " nodes, "
-                 << db_->geometry().num_hexes() << " solids, ";
-            const auto& g = db_->geometry();
-            if (g.num_tshells()) log_ << g.num_tshells() << " thick shells, ";
-            if (g.num_beams()) log_ << g.num_beams() << " beams, ";
-            if (g.num_shells()) log_ << g.num_shells() << " shells, ";
-            log_ << db_->num_states() << " states\n";
-        } else if (c == "outdir") {
-            need(1, 1, "outdir DIR");
-            outdir_ = w[1];
-            std::filesystem::create_directories(outdir_);
-        } else if (c == "size" || c == "plotsize") {
-            need(1, 2, "size W H (or WxH)");
-            int W = 0, H = 0;
-            bool ok = false;
-            if (na == 2) ok = to_int(w[1], W) && to_int(w[2], H);
-            else if (auto x = w[1].find('x'); x != std::string::npos) ok = to_int(w[1].substr(0, x), W) && to_int(w[1].substr(x + 1), H);
-            if (!ok || W < 64 || H < 64 || W > 8192 || H > 8192) throw CommandError(c + ": expected a width and a height in 64..8192");
-            if (c == "size") { ps_.width = W; ps_.height = H; }
-            else { plot_w_ = W; plot_h_ = H; }
-        } else if (c == "view") {
-            need(1, 2, "view NAME | view AZIMUTH ELEVATION");
-            if (na == 1) {
-                if (!named_view(w[1], ps_.view))
-                    throw CommandError("view: unknown view '" + w[1] + "' (iso front back left right top bottom +x -x +y -y +z -z, or AZ EL)");
-            } else {
-                double az = 0, el = 0;
-                if (!to_double(w[1], az) || !to_double(w[2], el) || el < -90 || el > 90)
-                    throw CommandError("view: expected azimuth and elevation in degrees (elevation -90..90)");
-                ps_.view.azimuth = az;
-                ps_.view.elevation = el;
-            }
-        } else if (c == "up") {
-            need(1, 1, "up x|y|z");
-            if (w[1] == "x") ps_.view.up = 0;
-            else if (w[1] == "y") ps_.view.up = 1;
-            else if (w[1] == "z") ps_.view.up = 2;
-            else throw CommandError("up: expected x, y or z");
-        } else if (c == "mirror") {
-            need(1, 1, "mirror none|x|y|z|xy|xz|yz|xyz");
-            try { ps_.mirror = parse_mirror(w[1]); } catch (const std::invalid_argument& e) { throw CommandError(e.what()); }
-        } else if (c == "fringe") {
-            need(1, 1, "fringe QUANTITY|none|material");
-            Quantity q;
-            if (w[1] != "none" && w[1] != "material" && !find_quantity(w[1], q))
-                throw CommandError("fringe: unknown quantity '" + w[1] + "' (none material " + quantity_keys() + ")");
-            // the normalized key, with its "@surface" / "@ipK" suffix
-            const auto at = w[1].find('@');
-            ps_.fringe = (w[1] == "none" || w[1] == "material") ? w[1]
-                                                                 : q.key + (at != std::string::npos ? w[1].substr(at) : std::string());
-        } else if (c == "range") {
-            need(1, 2, "range auto | range MIN MAX");
-            if (na == 1 && w[1] == "auto") ps_.range_auto = true;
-            else {
-                double lo = 0, hi = 0;
-                if (na != 2 || !to_double(w[1], lo) || !to_double(w[2], hi) || !(hi > lo))
-                    throw CommandError("range: expected auto or MIN MAX with MIN < MAX");
-                ps_.range_auto = false;
-                ps_.range_lo = lo;
-                ps_.range_hi = hi;
-            }
-        } else if (c == "bands") {
-            need(1, 1, "bands N");
-            int n = 0;
-            if (!to_int(w[1], n) || n < 2 || n > 64) throw CommandError("bands: expected 2..64");
-            ps_.bands = n;
-        } else if (c == "supersample") {
-            need(1, 1, "supersample N");
-            int n = 0;
-            if (!to_int(w[1], n) || n < 1 || n > 4) throw CommandError("supersample: expected 1..4");
-            ps_.supersample = n;
-        } else if (c == "timing") {
-            need(1, 1, "timing on|off");
-            if (!on_off(w[1], timing_)) throw CommandError("timing: expected on or off");
-        } else if (c == "average" || c == "edges" || c == "legend" || c == "triad") {
-            need(1, 1, "on|off");
-            bool v = false;
-            if (!on_off(w[1], v)) throw CommandError(c + ": expected on or off");
-            (c == "average" ? ps_.average : c == "edges" ? ps_.edges : c == "legend" ? ps_.legend : ps_.triad) = v;
-        } else if (c == "units") {
-            need(1, 1, "units si|none");
-            if (w[1] == "si" || w[1] == "SI") ps_.units.si = true;
-            else if (w[1] == "none") ps_.units.si = false;
-            else throw CommandError("units: expected si or none");
-        } else if (c == "scale") {
-            need(1, 1, "scale FACTOR");
-            double f = 0;
-            if (!to_double(w[1], f)) throw CommandError("scale: expected a number");
-            ps_.deform_scale = f;
-        } else if (c == "font") {
-            need(1, 1, "font PATH");
-            font_path_ = w[1];
-            font_ = std::make_unique<Font>(font_path_);
-        } else if (c == "title") {
-            if (na == 0) throw CommandError("title: usage: title TEXT | title auto");
-            if (na == 1 && w[1] == "auto") ps_.title.clear();
-            else {
-                std::string t;
-                for (std::size_t i = 1; i < w.size(); ++i) t += (i > 1 ? " " : "") + w[i];
-                ps_.title = t;
-            }
-        } else if (c == "mark") {
-            if (na == 1 && w[1] == "off") { ps_.marks.clear(); return; }
-            if (na < 2) throw CommandError("mark: usage: mark node|elem|solid|tshell|beam|shell ID [LABEL] | mark off");
-            static const char* const kinds[] = {"node", "elem", "element", "solid", "tshell", "beam", "shell"};
-            if (std::find(std::begin(kinds), std::end(kinds), w[1]) == std::end(kinds))
-                throw CommandError("mark: unknown kind '" + w[1] + "' (node elem solid tshell beam shell)");
-            PictureMark m;
-            m.what = w[1] == "element" ? "elem" : w[1];
-            if (!to_int(w[2], m.id) || m.id <= 0) throw CommandError("mark: expected a positive user id, not '" + w[2] + "'");
-            for (std::size_t i = 3; i < w.size(); ++i) m.label += (i > 3 ? " " : "") + w[i];
-            ps_.marks.push_back(m);
-        } else if (c == "state") {
-            need(1, 1, "state N|first|middle|last|t=TIME");
-            state_ = parse_state(w[1], c);
-        } else if (c == "picture") {
-            need(1, 2, "picture FILE [STATE]");
-            Database& d = db(c);
-            const int si = na == 2 ? parse_state(w[2], c) : (state_ >= 0 ? state_ : d.num_states() - 1);
-            if (d.num_states() == 0) throw CommandError("picture: the database has no states");
-            if (dry_run_) { d.state(si); return; }
-            const std::string path = out_path(with_ext(w[1], ".png"));
-            write_png(path, make_picture(d, {si}, ps_, renderer(), font(), {}, &mark_spots_));
-            wrote(path);
-        } else if (c == "sequence") {
-            if (na < 1) throw CommandError("sequence: usage: sequence FILE [STATES...|all|every K|count N]");
-            Database& d = db(c);
-            const std::vector<int> st = parse_states(w, 2, c);
-            if (st.size() > 16) throw CommandError("sequence: at most 16 states side by side (frames makes an animation)");
-            if (dry_run_) { for (int si : st) d.state(si); return; }
-            const std::string path = out_path(with_ext(w[1], ".png"));
-            write_png(path, make_picture(d, st, ps_, renderer(), font()));
-            wrote(path);
-        } else if (c == "frames") {
-            if (na < 1) throw CommandError("frames: usage: frames PREFIX [STATES...|all|every K|count N]");
-            Database& d = db(c);
-            const std::vector<int> st = na == 1 ? parse_states({"frames", "x", "all"}, 2, c) : parse_states(w, 2, c);
-            if (dry_run_) { for (int si : st) d.state(si); return; }
-            int k = 0;
-            for (int si : st) {
-                char num[16];
-                std::snprintf(num, sizeof num, "%04d", ++k);
-                const std::string path = out_path(w[1] + num + ".png");
-                write_png(path, make_picture(d, {si}, ps_, renderer(), font(), st));
-                wrote(path);
-            }
-        } else if (c == "history") {
-            if (na < 2) throw CommandError("history: usage: history FILE energy | global VARS | material ID VARS | node ID VARS | element ID VARS ...");
-            Database& d = db(c);
-            std::vector<HistoryCurve> curves;
-            try {
-                curves = parse_history(std::vector<std::string>(w.begin() + 2, w.end()), d);
-            } catch (const std::invalid_argument& e) {
-                throw CommandError(e.what());
-            }
-            const HistoryData h = extract_history(d, curves);
-            if (dry_run_) return;
-            const std::string png = out_path(with_ext(w[1], ".png"));
-            std::filesystem::path csv(png);
-            csv.replace_extension(".csv");
-            std::string title = ps_.title.empty() ? d.geometry().title : ps_.title;
-            while (!title.empty() && title.back() == ' ') title.pop_back();
-            write_png(png, plot_history(h, title, ps_.units, plot_w_, plot_h_, font()));
-            wrote(png);
-            write_csv(csv.string(), h, ps_.units);
-            written_.push_back(csv.string());
-            log_ << "wrote " << csv.string() << "\n";
-        } else if (c == "echo") {
-            for (std::size_t i = 1; i < w.size(); ++i) log_ << (i > 1 ? " " : "") << w[i];
-            log_ << "\n";
-        } else if (c == "default") {
-            need(0, 0, "default");
-            default_set();
-        } else {
-            throw CommandError("unknown command '" + c + "'");
-        }
+        const auto& table = commands();
+        const auto it = std::find_if(table.begin(), table.end(), [&](const CommandEntry& e) { return c == e.name; });
+        if (it == table.end()) throw CommandError("unknown command '" + c + "'");
+        (this->*(it->run))(w);
     } catch (const CommandError& e) {
         throw CommandError(where.empty() ? e.what() : where + ": " + e.what());
     } catch (const std::exception& e) {
         throw CommandError((where.empty() ? "" : where + ": ") + c + ": " + e.what());
     }
+}
+
+void Session::cmd_open(const Words& w) {
+    need_args(w, 1, 1, "open PATH");
+    db_ = std::make_unique<Database>(w[1]);
+    state_ = -1;
+    log_ << "opened " << w[1] << ": " << db_->geometry().num_nodes() << " nodes, "
+         << db_->geometry().num_hexes() << " solids, ";
+    const auto& g = db_->geometry();
+    if (g.num_tshells()) log_ << g.num_tshells() << " thick shells, ";
+    if (g.num_beams()) log_ << g.num_beams() << " beams, ";
+    if (g.num_shells()) log_ << g.num_shells() << " shells, ";
+    log_ << db_->num_states() << " states\n";
+}
+
+void Session::cmd_outdir(const Words& w) {
+    need_args(w, 1, 1, "outdir DIR");
+    outdir_ = w[1];
+    std::filesystem::create_directories(outdir_);
+}
+
+void Session::cmd_size(const Words& w) {
+    need_args(w, 1, 2, "size W H (or WxH)");
+    int W = 0, H = 0;
+    bool ok = false;
+    if (w.size() == 3) ok = to_int(w[1], W) && to_int(w[2], H);
+    else if (auto x = w[1].find('x'); x != std::string::npos) ok = to_int(w[1].substr(0, x), W) && to_int(w[1].substr(x + 1), H);
+    if (!ok || W < 64 || H < 64 || W > 8192 || H > 8192) throw CommandError(w[0] + ": expected a width and a height in 64..8192");
+    if (w[0] == "size") { ps_.width = W; ps_.height = H; }
+    else { plot_w_ = W; plot_h_ = H; }
+}
+
+void Session::cmd_view(const Words& w) {
+    need_args(w, 1, 2, "view NAME | view AZIMUTH ELEVATION");
+    if (w.size() == 2) {
+        if (!named_view(w[1], ps_.view))
+            throw CommandError("view: unknown view '" + w[1] + "' (iso front back left right top bottom +x -x +y -y +z -z, or AZ EL)");
+        return;
+    }
+    double az = 0, el = 0;
+    if (!to_double(w[1], az) || !to_double(w[2], el) || el < -90 || el > 90)
+        throw CommandError("view: expected azimuth and elevation in degrees (elevation -90..90)");
+    ps_.view.azimuth = az;
+    ps_.view.elevation = el;
+}
+
+void Session::cmd_up(const Words& w) {
+    need_args(w, 1, 1, "up x|y|z");
+    if (w[1] == "x") ps_.view.up = 0;
+    else if (w[1] == "y") ps_.view.up = 1;
+    else if (w[1] == "z") ps_.view.up = 2;
+    else throw CommandError("up: expected x, y or z");
+}
+
+void Session::cmd_mirror(const Words& w) {
+    need_args(w, 1, 1, "mirror none|x|y|z|xy|xz|yz|xyz");
+    try { ps_.mirror = parse_mirror(w[1]); } catch (const std::invalid_argument& e) { throw CommandError(e.what()); }
+}
+
+void Session::cmd_fringe(const Words& w) {
+    need_args(w, 1, 1, "fringe QUANTITY|none|material");
+    Quantity q;
+    if (w[1] != "none" && w[1] != "material" && !find_quantity(w[1], q))
+        throw CommandError("fringe: unknown quantity '" + w[1] + "' (none material " + quantity_keys() + ")");
+    // the normalized key, with its "@surface" / "@ipK" suffix
+    const auto at = w[1].find('@');
+    ps_.fringe = (w[1] == "none" || w[1] == "material") ? w[1]
+                                                         : q.key + (at != std::string::npos ? w[1].substr(at) : std::string());
+}
+
+void Session::cmd_range(const Words& w) {
+    need_args(w, 1, 2, "range auto | range MIN MAX");
+    if (w.size() == 2 && w[1] == "auto") {
+        ps_.range_auto = true;
+        return;
+    }
+    double lo = 0, hi = 0;
+    if (w.size() != 3 || !to_double(w[1], lo) || !to_double(w[2], hi) || !(hi > lo))
+        throw CommandError("range: expected auto or MIN MAX with MIN < MAX");
+    ps_.range_auto = false;
+    ps_.range_lo = lo;
+    ps_.range_hi = hi;
+}
+
+void Session::cmd_bands(const Words& w) {
+    need_args(w, 1, 1, "bands N");
+    int n = 0;
+    if (!to_int(w[1], n) || n < 2 || n > 64) throw CommandError("bands: expected 2..64");
+    ps_.bands = n;
+}
+
+void Session::cmd_supersample(const Words& w) {
+    need_args(w, 1, 1, "supersample N");
+    int n = 0;
+    if (!to_int(w[1], n) || n < 1 || n > 4) throw CommandError("supersample: expected 1..4");
+    ps_.supersample = n;
+}
+
+void Session::cmd_timing(const Words& w) {
+    need_args(w, 1, 1, "timing on|off");
+    if (!on_off(w[1], timing_)) throw CommandError("timing: expected on or off");
+}
+
+void Session::cmd_switch(const Words& w) {
+    need_args(w, 1, 1, "on|off");
+    const std::string& c = w[0];
+    bool v = false;
+    if (!on_off(w[1], v)) throw CommandError(c + ": expected on or off");
+    (c == "average" ? ps_.average : c == "edges" ? ps_.edges : c == "legend" ? ps_.legend : ps_.triad) = v;
+}
+
+void Session::cmd_units(const Words& w) {
+    need_args(w, 1, 1, "units si|none");
+    if (w[1] == "si" || w[1] == "SI") ps_.units.si = true;
+    else if (w[1] == "none") ps_.units.si = false;
+    else throw CommandError("units: expected si or none");
+}
+
+void Session::cmd_scale(const Words& w) {
+    need_args(w, 1, 1, "scale FACTOR");
+    double f = 0;
+    if (!to_double(w[1], f)) throw CommandError("scale: expected a number");
+    ps_.deform_scale = f;
+}
+
+void Session::cmd_font(const Words& w) {
+    need_args(w, 1, 1, "font PATH");
+    font_path_ = w[1];
+    font_ = std::make_unique<Font>(font_path_);
+}
+
+void Session::cmd_title(const Words& w) {
+    if (w.size() == 1) throw CommandError("title: usage: title TEXT | title auto");
+    if (w.size() == 2 && w[1] == "auto") ps_.title.clear();
+    else ps_.title = join_from(w, 1);
+}
+
+void Session::cmd_mark(const Words& w) {
+    if (w.size() == 2 && w[1] == "off") {
+        ps_.marks.clear();
+        return;
+    }
+    if (w.size() < 3) throw CommandError("mark: usage: mark node|elem|solid|tshell|beam|shell ID [LABEL] | mark off");
+    static const char* const kinds[] = {"node", "elem", "element", "solid", "tshell", "beam", "shell"};
+    if (std::find(std::begin(kinds), std::end(kinds), w[1]) == std::end(kinds))
+        throw CommandError("mark: unknown kind '" + w[1] + "' (node elem solid tshell beam shell)");
+    PictureMark m;
+    m.what = w[1] == "element" ? "elem" : w[1];
+    if (!to_int(w[2], m.id) || m.id <= 0) throw CommandError("mark: expected a positive user id, not '" + w[2] + "'");
+    m.label = join_from(w, 3);
+    ps_.marks.push_back(m);
+}
+
+void Session::cmd_state(const Words& w) {
+    need_args(w, 1, 1, "state N|first|middle|last|t=TIME");
+    state_ = parse_state(w[1], w[0]);
+}
+
+void Session::cmd_picture(const Words& w) {
+    need_args(w, 1, 2, "picture FILE [STATE]");
+    Database& d = db(w[0]);
+    const int si = w.size() == 3 ? parse_state(w[2], w[0]) : (state_ >= 0 ? state_ : d.num_states() - 1);
+    if (d.num_states() == 0) throw CommandError("picture: the database has no states");
+    if (dry_run_) { d.state(si); return; }
+    const std::string path = out_path(with_ext(w[1], ".png"));
+    write_png(path, make_picture(d, {si}, ps_, renderer(), font(), {}, &mark_spots_));
+    wrote(path);
+}
+
+void Session::cmd_sequence(const Words& w) {
+    if (w.size() < 2) throw CommandError("sequence: usage: sequence FILE [STATES...|all|every K|count N]");
+    Database& d = db(w[0]);
+    const std::vector<int> st = parse_states(w, 2, w[0]);
+    if (st.size() > 16) throw CommandError("sequence: at most 16 states side by side (frames makes an animation)");
+    if (dry_run_) { for (int si : st) d.state(si); return; }
+    const std::string path = out_path(with_ext(w[1], ".png"));
+    write_png(path, make_picture(d, st, ps_, renderer(), font()));
+    wrote(path);
+}
+
+void Session::cmd_frames(const Words& w) {
+    if (w.size() < 2) throw CommandError("frames: usage: frames PREFIX [STATES...|all|every K|count N]");
+    Database& d = db(w[0]);
+    const std::vector<int> st = w.size() == 2 ? parse_states({"frames", "x", "all"}, 2, w[0]) : parse_states(w, 2, w[0]);
+    if (dry_run_) { for (int si : st) d.state(si); return; }
+    int k = 0;
+    for (int si : st) {
+        char num[16];
+        std::snprintf(num, sizeof num, "%04d", ++k);
+        const std::string path = out_path(w[1] + num + ".png");
+        write_png(path, make_picture(d, {si}, ps_, renderer(), font(), st));
+        wrote(path);
+    }
+}
+
+void Session::cmd_history(const Words& w) {
+    if (w.size() < 3) throw CommandError("history: usage: history FILE energy | global VARS | material ID VARS | node ID VARS | element ID VARS ...");
+    Database& d = db(w[0]);
+    std::vector<HistoryCurve> curves;
+    try {
+        curves = parse_history(std::vector<std::string>(w.begin() + 2, w.end()), d);
+    } catch (const std::invalid_argument& e) {
+        throw CommandError(e.what());
+    }
+    const HistoryData h = extract_history(d, curves);
+    if (dry_run_) return;
+    const std::string png = out_path(with_ext(w[1], ".png"));
+    std::filesystem::path csv(png);
+    csv.replace_extension(".csv");
+    std::string title = ps_.title.empty() ? d.geometry().title : ps_.title;
+    while (!title.empty() && title.back() == ' ') title.pop_back();
+    write_png(png, plot_history(h, title, ps_.units, plot_w_, plot_h_, font()));
+    wrote(png);
+    write_csv(csv.string(), h, ps_.units);
+    written_.push_back(csv.string());
+    log_ << "wrote " << csv.string() << "\n";
+}
+
+void Session::cmd_echo(const Words& w) {
+    log_ << join_from(w, 1) << "\n";
+}
+
+void Session::cmd_default(const Words& w) {
+    need_args(w, 0, 0, "default");
+    default_set();
 }
 
 void Session::run_text(const std::string& text, const std::string& name) {

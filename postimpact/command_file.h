@@ -51,6 +51,38 @@ public:
     const std::vector<MarkSpot>& mark_spots() const { return mark_spots_; }
 
 private:
+    using Words = std::vector<std::string>;
+    struct CommandEntry {
+        const char* name;
+        void (Session::*run)(const Words&);
+    };
+    static const std::vector<CommandEntry>& commands();
+    // One member a command (w[0] is the command word as written).
+    void cmd_open(const Words& w);
+    void cmd_outdir(const Words& w);
+    void cmd_size(const Words& w);
+    void cmd_view(const Words& w);
+    void cmd_up(const Words& w);
+    void cmd_mirror(const Words& w);
+    void cmd_fringe(const Words& w);
+    void cmd_range(const Words& w);
+    void cmd_bands(const Words& w);
+    void cmd_supersample(const Words& w);
+    void cmd_timing(const Words& w);
+    void cmd_switch(const Words& w);
+    void cmd_units(const Words& w);
+    void cmd_scale(const Words& w);
+    void cmd_font(const Words& w);
+    void cmd_title(const Words& w);
+    void cmd_mark(const Words& w);
+    void cmd_state(const Words& w);
+    void cmd_picture(const Words& w);
+    void cmd_sequence(const Words& w);
+    void cmd_frames(const Words& w);
+    void cmd_history(const Words& w);
+    void cmd_echo(const Words& w);
+    void cmd_default(const Words& w);
+
     Database& db(const std::string& cmd);
     Renderer& renderer();
     const Font& font();
