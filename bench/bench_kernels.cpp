@@ -5,6 +5,7 @@
 #include <benchmark/benchmark.h>
 #include <omp.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <stdexcept>
@@ -168,6 +169,28 @@ void BM_TaylorBarWholeRun(benchmark::State& st) {
 }
 BENCHMARK(BM_TaylorBarWholeRun)->Arg(1)->Arg(2)->Unit(benchmark::kSecond)->Iterations(1);
 
+// Plastic shells, NIP 5, yielding every cycle (the yield stress 1 kPa): type 3 plastic-kinematic
+// (beta 0.5), 24 piecewise-linear (a 4-point table from 1 kPa).
+MaterialData plastic_plate_material(int type) {
+  MaterialData md = shell_test::steel_shell(type, 5);
+  if (type == 24) {
+    const MaterialType& t = material_type(24);
+    set_param_defaults(md, t);  // (blanks E, nu, rho: set again below)
+    const MaterialData steel = shell_test::steel_shell(type, 5);
+    md.rho = steel.rho;
+    md.E = steel.E;
+    md.nu = steel.nu;
+    const double eps[4] = {0, 0.01, 0.05, 0.2}, es[4] = {1e3, 3e8, 3.8e8, 4.2e8};
+    for (int i = 0; i < 4; ++i) {
+      param_value(md, *find_param(t, "EPS" + std::to_string(i + 1))) = eps[i];
+      param_value(md, *find_param(t, "ES" + std::to_string(i + 1))) = es[i];
+    }
+  }
+  md.sigma_y = 1e3;
+  md.beta = 0.5;
+  return md;
+}
+
 // Belytschko-Tsay shells: one shell through the scalar kernel (elastic NIP 2; plastic NIP 5,
 // yielding: type 3, and type 24 with a 4-point table), and a whole cycle of a 100 x 100 plate
 // (clamped edge, transverse velocity).
@@ -184,17 +207,7 @@ void BM_ShellBTKernel(benchmark::State& st) {
   mc.E_tan = md.E_tan;
   mc.beta = 0.5;
   derive_material_constants(mc);
-  if (table) {  // yields every cycle: the table starts at 1 kPa
-    MaterialData m24 = shell_test::steel_shell(24, 5);
-    const MaterialType& t = material_type(24);
-    set_param_defaults(m24, t);
-    const double eps[4] = {0, 0.01, 0.05, 0.2}, es[4] = {1e3, 3e8, 3.8e8, 4.2e8};
-    for (int i = 0; i < 4; ++i) {
-      param_value(m24, *find_param(t, "EPS" + std::to_string(i + 1))) = eps[i];
-      param_value(m24, *find_param(t, "ES" + std::to_string(i + 1))) = es[i];
-    }
-    mc = derive_constants(m24, Model{});
-  }
+  if (table) mc = derive_constants(plastic_plate_material(24), Model{});  // the table starts at 1 kPa
   ShellGroupConstants g;
   g.nip = md.shell_section.nip;
   gauss_legendre_rule(g.nip, g.zeta, g.weight);
@@ -245,6 +258,27 @@ void BM_Cycle_ShellPlate(benchmark::State& st) {
   st.SetItemsProcessed(st.iterations() * eng.state().shells.ns);
 }
 BENCHMARK(BM_Cycle_ShellPlate)->Unit(benchmark::kMicrosecond);
+
+// The plate above, plastic (plastic_plate_material: Arg 3 or 24), NIP 5, the nodes starting
+// with a stretching, bending and twisting velocity field: every point yields every cycle.
+// Items: shell-cycles.
+void BM_Cycle_ShellPlatePlastic(benchmark::State& st) {
+  omp_set_num_threads(1);
+  const int n = 100;
+  Model m = shell_test::make_plate(n, n, 1.0, 1.0, 0.01, plastic_plate_material(int(st.range(0))), 1.0);
+  for (int j = 0; j <= n; ++j) m.bc[std::size_t(shell_test::plate_node(n, 0, j))] = 7;
+  for (int i = 0; i < m.num_nodes(); ++i) {  // stretching, bending and twisting everywhere
+    const std::size_t I = std::size_t(i);
+    m.init_velocities.push_back({i + 1, i + 1, 1, {100 * (m.x[I] - 0.5), 100 * (m.y[I] - 0.5), 10 * m.x[I] * m.y[I]}});
+  }
+  Engine eng(m);
+  eng.initialize();
+  for (auto _ : st) benchmark::DoNotOptimize(eng.step());
+  st.SetItemsProcessed(st.iterations() * eng.state().shells.ns);
+  const auto& e = eng.state().shells.eps_p;
+  st.counters["yielded"] = double(std::count_if(e.begin(), e.end(), [](double v) { return v > 0; })) / double(e.size());
+}
+BENCHMARK(BM_Cycle_ShellPlatePlastic)->Arg(3)->Arg(24)->Unit(benchmark::kMicrosecond);
 
 // Beams: one whole cycle of a clamped line of 10,000 Hughes-Liu beams (50 mm square steel,
 // swinging), one thread; Arg: the quadrature rule QR (2: 2x2 Gauss, 3: 3x3) x 10 + material type
