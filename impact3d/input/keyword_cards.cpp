@@ -294,7 +294,34 @@ std::vector<KeywordSpec> loads_bcs_specs() {
     for (int k = 0; k < 6; ++k)
       c.fields.push_back({dofs[k], 2 + k, I, 0, false, {outside(0, 1, 1006, "0 free or 1 fixed")}, k == 0 ? "1: fixed (rotations: shell and beam nodes)" : ""});
     t.push_back({{name}, F, false, {c}, ""});
+    // _BIRTH_DEATH: the same card 1, then card 2 BIRTH DEATH (each pair: the constraint holds
+    // from BIRTH to DEATH, a zero velocity prescribed in each fixed direction)
+    KeywordCardLayout c1 = c;
+    c1.card = "card 1";
+    c1.when = "each constraint (ID cards with _ID)";
+    c1.fields[2].meaning = "1: fixed from BIRTH to DEATH (rotations: shell and beam nodes)";
+    t.push_back({{name == std::string("BOUNDARY_SPC_NODE") ? "BOUNDARY_SPC_NODE_BIRTH_DEATH" : "BOUNDARY_SPC_SET_BIRTH_DEATH"}, F, false,
+                 {c1,
+                  {"card 2", 2, 10, per_field, {
+                      {"BIRTH", 0, E, 0, false, {}, "time the constraint starts to act"},
+                      {"DEATH", 1, E, 1e20, true, {}, "time it is removed (0: 1e20, never; before BIRTH: error 1003)"},
+                  }, "after each card 1 (missing: error 1316)"}},
+                 "pairs of cards; LS-DYNA's *BOUNDARY_SPC_..._ID_BIRTH_DEATH and _BIRTH_DEATH_ID both read"});
   }
+  t.push_back({{"CONSTRAINED_GLOBAL"}, F, false,
+               {{"", 7, 10, per_field, {
+                   {"TC", 0, I, 0, false, {outside(0, 7, 1006, "0 none, 1 x, 2 y, 3 z, 4 x and y, 5 y and z, 6 z and x, 7 all")},
+                    "translations held: 0 none, 1 x, 2 y, 3 z, 4 x and y, 5 y and z, 6 z and x, 7 all"},
+                   {"RC", 1, I, 0, false, {outside(0, 7, 1006, "0 none, 1 x, 2 y, 3 z, 4 x and y, 5 y and z, 6 z and x, 7 all")},
+                    "rotations held, coded as TC (shell and beam nodes; solid nodes have none)"},
+                   {"DIR", 2, I, 0, false, {outside(1, 3, 1006, "1 x, 2 y, 3 z")}, "normal of the plane: 1 x, 2 y, 3 z"},
+                   {"X", 3, E, 0, false, {}, "a point of the plane (the coordinate along DIR counts)"},
+                   {"Y", 4, E, 0, false, {}, ""},
+                   {"Z", 5, E, 0, false, {}, ""},
+                   {"TOL", 6, E, 0, false, {below(0, 1003, "the tolerance must not be negative")},
+                    "nodes within TOL of the plane are held (0: 1e-3 of the model's shortest element edge)"},
+               }, "each card (one plane)"}},
+               "every node (of any element, or of none) within TOL of the plane"});
   for (const auto& [name, id] : {std::pair{"INITIAL_TEMPERATURE_NODE", "NID"}, std::pair{"INITIAL_TEMPERATURE_SET", "NSID"}})
     t.push_back({{name}, F, false,
                  {{"", 3, 10, per_field, {

@@ -108,6 +108,16 @@ struct RSpc {
   int rbits = 0;  // rotations: bit 0 rx, 1 ry, 2 rz (they act on shell nodes)
   int cid = 0;
   Ref ref, cid_ref;
+  // *BOUNDARY_SPC_..._BIRTH_DEATH: the constraint holds from birth to death only
+  bool birth_death = false;
+  double birth = 0, death = 1e20;
+};
+struct RGlobalConstraint {  // *CONSTRAINED_GLOBAL: one plane
+  int tc = 0, rc = 0;        // codes 0-7 (1 x, 2 y, 3 z, 4 x+y, 5 y+z, 6 z+x, 7 all)
+  int dir = 1;               // normal: 1 x, 2 y, 3 z
+  double at = 0;             // the plane's coordinate along dir
+  double tol = 0;            // 0: from the mesh
+  Ref ref;                   // TC
 };
 
 struct KeywordLoads {
@@ -117,6 +127,7 @@ struct KeywordLoads {
   std::vector<RVelocity> velocities;
   std::vector<RTemperature> temperatures;
   std::vector<RSpc> spcs;
+  std::vector<RGlobalConstraint> globals;  // *CONSTRAINED_GLOBAL, in deck order
   std::vector<Ref> rot_refs;  // first rotational field of each *BOUNDARY_SPC card that has one
   Ref w_ref;                  // last rotational initial velocity (message when no shell node takes it)
   RLoad damping;             // *DAMPING_GLOBAL (lcid, sf = VALDMP, dir = STX STY STZ)
@@ -127,7 +138,7 @@ struct KeywordLoads {
 
 // Reads *LOAD_NODE_POINT / _SET, *LOAD_RIGID_BODY, *LOAD_SEGMENT (_SET), *LOAD_BODY_X / _Y / _Z
 // / _VECTOR / _PARTS, *DEFINE_CURVE, *DAMPING_GLOBAL, *BOUNDARY_PRESCRIBED_MOTION_NODE / _SET / _RIGID,
-// *BOUNDARY_SPC_NODE / _SET, *INITIAL_VELOCITY (_NODE, _GENERATION) and *INITIAL_TEMPERATURE_NODE
+// *BOUNDARY_SPC_NODE / _SET (_BIRTH_DEATH), *CONSTRAINED_GLOBAL, *INITIAL_VELOCITY (_NODE, _GENERATION) and *INITIAL_TEMPERATURE_NODE
 // / _SET into l; false if the keyword is none of them.
 bool read_loads_bcs(const Block& b, KeywordContext& ctx, KeywordLoads& l);
 

@@ -189,12 +189,24 @@ void read_motions(const Block& b, KeywordContext& ctx, const KeywordSpec& s, RLo
   }
 }
 
-// *BOUNDARY_SPC_NODE / _SET: NID|NSID CID DOFX DOFY DOFZ DOFRX DOFRY DOFRZ
-void read_spc(const Block& b, KeywordContext& ctx, const KeywordSpec& s, bool set, KeywordLoads& out) {
+// *BOUNDARY_SPC_NODE / _SET: NID|NSID CID DOFX DOFY DOFZ DOFRX DOFRY DOFRZ; with _BIRTH_DEATH
+// each such card is followed by card 2 BIRTH DEATH.
+void read_spc(const Block& b, KeywordContext& ctx, const KeywordSpec& s, bool set, bool birth_death, KeywordLoads& out) {
   for (std::size_t k = 0; k < b.data.size(); ++k) {
     if (is_blank(b.data[k].line->text) || is_id_card(b, k)) continue;
-    KeywordValues v = ctx.values(b, k, s.card(""));
+    KeywordValues v = ctx.values(b, k, s.card(birth_death ? "card 1" : ""));
     RSpc r;
+    if (birth_death) {
+      r.birth_death = true;
+      if (k + 1 >= b.data.size()) {
+        ctx.missing_card(b, "card 2 (BIRTH DEATH)");
+      } else {
+        KeywordValues v2 = ctx.values(b, k + 1, s.card("card 2"));
+        r.birth = v2["BIRTH"];
+        r.death = v2["DEATH"];
+        if (r.death < r.birth) v2.error(1003, "DEATH", "the death time comes before the birth time");
+      }
+    }
     r.keyword = upper(b.keyword);
     r.set = set;
     r.id = int(v.integer(set ? "NSID" : "NID"));
@@ -209,6 +221,24 @@ void read_spc(const Block& b, KeywordContext& ctx, const KeywordSpec& s, bool se
       if (f >= 3) r.rbits |= 1 << (f - 3);
     }
     out.spcs.push_back(r);
+    if (birth_death) ++k;  // card 2
+  }
+}
+
+// *CONSTRAINED_GLOBAL: TC RC DIR X Y Z TOL, one plane a card
+void read_constrained_global(const Block& b, KeywordContext& ctx, const KeywordSpec& s, KeywordLoads& out) {
+  for (std::size_t k = 0; k < b.data.size(); ++k) {
+    if (is_blank(b.data[k].line->text)) continue;
+    KeywordValues v = ctx.values(b, k, s.card(""));
+    RGlobalConstraint g;
+    g.tc = int(v.integer("TC"));
+    g.ref = v.ref("TC");
+    g.rc = int(v.integer("RC"));
+    g.dir = int(v.integer("DIR"));
+    const double at[3] = {v["X"], v["Y"], v["Z"]};
+    g.at = g.dir >= 1 && g.dir <= 3 ? at[g.dir - 1] : 0;
+    g.tol = v["TOL"];
+    out.globals.push_back(g);
   }
 }
 
@@ -379,8 +409,10 @@ bool read_loads_bcs(const Block& b, KeywordContext& ctx, KeywordLoads& l) {
     read_damping(b, ctx, *s, l);
   } else if (n == "DEFINE_CURVE") {
     read_curve(b, ctx, *s, l);
-  } else if (n == "BOUNDARY_SPC_NODE" || n == "BOUNDARY_SPC_SET") {
-    read_spc(b, ctx, *s, n == "BOUNDARY_SPC_SET", l);
+  } else if (n.rfind("BOUNDARY_SPC_", 0) == 0) {
+    read_spc(b, ctx, *s, n.rfind("BOUNDARY_SPC_SET", 0) == 0, n.find("_BIRTH_DEATH") != std::string::npos, l);
+  } else if (n == "CONSTRAINED_GLOBAL") {
+    read_constrained_global(b, ctx, *s, l);
   } else if (n == "INITIAL_TEMPERATURE_NODE" || n == "INITIAL_TEMPERATURE_SET") {
     read_temperatures(b, ctx, *s, n == "INITIAL_TEMPERATURE_SET", l);
   } else if (n == "INITIAL_VELOCITY_NODE") {

@@ -839,14 +839,19 @@ class KeywordReader {
         "RIGIDWALL_PLANAR", "RIGIDWALL_PLANAR_MOVING", "CONTACT_SURFACE_TO_SURFACE", "CONTACT_AUTOMATIC_SURFACE_TO_SURFACE",
         "CONTACT_NODES_TO_SURFACE", "CONTACT_FORCE_TRANSDUCER_PENALTY", "CONTACT_AUTOMATIC_SINGLE_SURFACE",
         "CONTACT_AUTOMATIC_NODES_TO_SURFACE", "CONTACT_ERODING_SURFACE_TO_SURFACE", "CONTACT_ERODING_NODES_TO_SURFACE",
-        "CONTACT_ERODING_SINGLE_SURFACE", "BOUNDARY_SPC_NODE", "BOUNDARY_SPC_SET",
-        "BOUNDARY_PRESCRIBED_MOTION_NODE", "BOUNDARY_PRESCRIBED_MOTION_SET", "BOUNDARY_PRESCRIBED_MOTION_RIGID",
+        "CONTACT_ERODING_SINGLE_SURFACE", "BOUNDARY_SPC_NODE", "BOUNDARY_SPC_SET", "BOUNDARY_SPC_NODE_BIRTH_DEATH",
+        "BOUNDARY_SPC_SET_BIRTH_DEATH", "BOUNDARY_PRESCRIBED_MOTION_NODE", "BOUNDARY_PRESCRIBED_MOTION_SET", "BOUNDARY_PRESCRIBED_MOTION_RIGID",
         "LOAD_SEGMENT", "LOAD_SEGMENT_SET", "CONSTRAINED_SPOTWELD", "CONSTRAINED_GENERALIZED_WELD_SPOT"};
     if (ends("_TITLE") && (titled.count(n.substr(0, n.size() - 6)) || find_material_type_by_keyword(n.substr(0, n.size() - 6)) ||
                            find_eos_form_by_keyword(n.substr(0, n.size() - 6)))) {
       title = true;
       return n.substr(0, n.size() - 6);
     }
+    for (const char* spc : {"BOUNDARY_SPC_NODE_ID_BIRTH_DEATH", "BOUNDARY_SPC_SET_ID_BIRTH_DEATH"})
+      if (n == spc) {  // LS-DYNA's option order NODE|SET, ID, BIRTH_DEATH (_BIRTH_DEATH_ID also reads)
+        id = true;
+        return n.substr(0, n.size() - 15) + "_BIRTH_DEATH";
+      }
     if (ends("_ID") && with_id.count(n.substr(0, n.size() - 3))) {
       id = true;
       return n.substr(0, n.size() - 3);
@@ -2168,6 +2173,7 @@ class KeywordReader {
     resolve_temperatures();
     resolve_contacts();
     resolve_loads();
+    resolve_timed_spc();
   }
 
   void resolve_nodes() {
@@ -3045,17 +3051,115 @@ class KeywordReader {
     return out;
   }
 
-  void resolve_spc() {
-    for (const RSpc& s : spcs_) {
-      std::vector<int> nodes;
-      const std::string& card = s.keyword;
-      if (s.set) {
-        if (const RIdList* set = find_node_set(s.id, s.ref, card, "NSID")) nodes = set_nodes(*set, card);
-      } else {
-        int idx = node_index(s.id);
-        if (idx < 0) err(1202, s.ref, card, "NID", "node " + std::to_string(s.id) + " is not defined by *NODE");
-        else nodes.push_back(idx);
+  // The nodes of a *BOUNDARY_SPC card (its NID or NSID).
+  std::vector<int> spc_nodes(const RSpc& s) {
+    std::vector<int> nodes;
+    const std::string& card = s.keyword;
+    if (s.set) {
+      if (const RIdList* set = find_node_set(s.id, s.ref, card, "NSID")) nodes = set_nodes(*set, card);
+    } else {
+      int idx = node_index(s.id);
+      if (idx < 0) err(1202, s.ref, card, "NID", "node " + std::to_string(s.id) + " is not defined by *NODE");
+      else nodes.push_back(idx);
+    }
+    return nodes;
+  }
+
+  // The shortest element edge of the model (solids, shells, beams; 0 when there is none).
+  double shortest_edge() const {
+    double h2 = std::numeric_limits<double>::infinity();
+    auto edge = [&](int a, int b) {
+      if (a < 0 || b < 0 || a == b) return;
+      const std::size_t i = std::size_t(a), j = std::size_t(b);
+      const double dx = m_.x[i] - m_.x[j], dy = m_.y[i] - m_.y[j], dz = m_.z[i] - m_.z[j];
+      const double d2 = dx * dx + dy * dy + dz * dz;
+      if (d2 > 0) h2 = std::min(h2, d2);
+    };
+    static const int hex_edges[12][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {5, 6}, {6, 7}, {7, 4}, {0, 4}, {1, 5}, {2, 6}, {3, 7}};
+    for (const auto& n : m_.hex_nodes)
+      for (const auto& e : hex_edges) edge(n[std::size_t(e[0])], n[std::size_t(e[1])]);
+    for (const auto& n : m_.shell_nodes)
+      for (std::size_t k = 0; k < 4; ++k) edge(n[k], n[(k + 1) % 4]);
+    for (const auto& n : m_.beam_nodes) edge(n[0], n[1]);
+    return std::isfinite(h2) ? std::sqrt(h2) : 0.0;
+  }
+
+  // *CONSTRAINED_GLOBAL: every node within TOL of the plane (TOL 0: 1e-3 of the shortest
+  // element edge) takes the plane's translational code; nodes with rotations (shells', beams')
+  // also its rotational one (solid nodes have no rotations: RC means nothing for them).
+  void resolve_constrained_global() {
+    if (ld_.globals.empty()) return;
+    const double h = shortest_edge();
+    for (const RGlobalConstraint& g : ld_.globals) {
+      if (g.dir < 1 || g.dir > 3) continue;  // (reported)
+      const double tol = g.tol > 0 ? g.tol : 1e-3 * h;
+      const std::vector<double>& c = g.dir == 1 ? m_.x : g.dir == 2 ? m_.y : m_.z;
+      const int bits = bc_bits(g.tc);
+      std::vector<int> rot_nodes;
+      for (int n = 0; n < m_.num_nodes(); ++n) {
+        if (!(std::fabs(c[std::size_t(n)] - g.at) <= tol)) continue;
+        m_.bc[std::size_t(n)] = bc_code(bc_bits(m_.bc[std::size_t(n)]) | bits);
+        if (g.rc != 0 && node_has_rotations(n)) rot_nodes.push_back(n);
       }
+      if (!rot_nodes.empty()) add_rotational_constraints(rot_nodes, bc_bits(g.rc), g.ref);
+    }
+  }
+
+  // *BOUNDARY_SPC_..._BIRTH_DEATH: each fixed direction of each node becomes a prescribed zero
+  // velocity (a rotational one for rotations of nodes that have them) from BIRTH to DEATH, on a
+  // zero curve added after the deck's curves (as LS-DYNA's manual writes the same constraint).
+  void resolve_timed_spc() {
+    int zero = -1, no_rotations = 0;
+    Ref no_rotations_ref;
+    for (const RSpc& s : spcs_) {
+      if (!s.birth_death) continue;
+      const std::vector<int> nodes = spc_nodes(s);
+      const int line = s.ref.line ? s.ref.line->number : 0;
+      for (int f = 0; f < 6; ++f) {
+        if (!((f < 3 ? s.bits : s.rbits) & (1 << (f % 3)))) continue;
+        std::array<double, 3> d{};
+        d[std::size_t(f % 3)] = 1;
+        if (s.cid != 0 && !coords_.to_global_direction(s.cid, d, d)) {
+          err(1310, s.cid_ref, s.keyword, "CID", "coordinate system " + std::to_string(s.cid) + " is not defined by *DEFINE_COORDINATE_SYSTEM, _NODES or _VECTOR");
+          return;
+        }
+        if (zero < 0) {
+          LoadCurve lc;
+          lc.number = int(m_.load_curves.size()) + 1;
+          lc.t = {0.0, 1.0};
+          lc.f = {0.0, 0.0};
+          m_.load_curves.push_back(std::move(lc));
+          m_.control.numlc = int(m_.load_curves.size());
+          zero = int(m_.load_curves.size()) - 1;
+        }
+        for (int n : nodes) {
+          if (f >= 3 && !node_has_rotations(n)) {
+            if (no_rotations++ == 0) no_rotations_ref = s.ref;
+            continue;
+          }
+          PrescribedMotion pm;
+          pm.node = n;
+          pm.dir = d;
+          pm.kind = MotionKind::velocity;
+          pm.rotation = f >= 3;
+          pm.curve = zero;
+          pm.scale = 1;
+          pm.birth = s.birth;
+          pm.death = s.death;
+          pm.line = line;
+          m_.prescribed_motions.push_back(pm);
+        }
+      }
+    }
+    if (no_rotations)
+      diag_.add(2005, loc_of(no_rotations_ref, "", nullptr, false), std::to_string(no_rotations) + " rotational constraint(s) (*BOUNDARY_SPC_..._BIRTH_DEATH DOFR*)");
+  }
+
+  void resolve_spc() {
+    resolve_constrained_global();
+    for (const RSpc& s : spcs_) {
+      if (s.birth_death) continue;  // resolve_timed_spc
+      std::vector<int> nodes = spc_nodes(s);
       const int bits = global_spc_bits(s);
       for (int n : nodes) m_.bc[std::size_t(n)] = bc_code(bc_bits(m_.bc[std::size_t(n)]) | bits);
       if (s.rbits) add_rotational_constraints(nodes, s.rbits, s.ref);
@@ -3125,6 +3229,11 @@ class KeywordReader {
 
   // Rotational constraints act on the nodes that shells use; on other nodes they are counted
   // for warning 2005 (solids have no rotations).
+  bool node_has_rotations(int n) {
+    add_rotational_constraints({}, 0, Ref{});  // marks shell_node_
+    return shell_node_[std::size_t(n)] != 0;
+  }
+
   void add_rotational_constraints(const std::vector<int>& nodes, int bits, const Ref& r) {
     if (shell_node_.empty()) {
       shell_node_.assign(std::size_t(m_.num_nodes()), 0);
@@ -3135,6 +3244,7 @@ class KeywordReader {
         if (n[0] >= 0)
           for (int j = 0; j < 2; ++j) shell_node_[std::size_t(n[std::size_t(j)])] = 1;
     }
+    if (nodes.empty()) return;
     if (m_.rot_bc.empty()) m_.rot_bc.assign(std::size_t(m_.num_nodes()), 0);
     for (int n : nodes) {
       if (shell_node_[std::size_t(n)]) m_.rot_bc[std::size_t(n)] |= std::uint8_t(bits);
