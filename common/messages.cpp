@@ -98,6 +98,8 @@ const std::vector<MessageDef> kCatalog = {
     {3004, S::error, "cannot write file"},
     {3005, S::error, "bad command-line value"},
     {3006, S::error, "input file is too large"},
+    {3007, S::error, "the deck uses what a distributed run (mpirun with more than one rank) does not carry yet: run it on one rank"},
+    {3008, S::error, "launched as several processes (mpirun) but this build has no MPI: build with IMPACT3D_MPI (docs/cluster.md)"},
     // 4000-4099: run-time errors (error termination)
     {4001, S::error, "negative volume"},
     {4002, S::error, "non-finite value"},

@@ -24,6 +24,7 @@
 #include "impact3d/input/deck_writer.h"
 #include "impact3d/output/printed_output.h"
 #include "impact3d/output/restart_dump.h"
+#include "impact3d/parallel/comm.h"
 #include "impact3d/solve/run.h"
 #include "impact3d/solve/thread_policy.h"
 #include "version.h"
@@ -241,6 +242,11 @@ int run_main(int argc, char** argv) {
     }
   }
   if (opt.deck.empty() && opt.restart.empty()) cmd.add(3002, Location{});
+  if (!parallel::built_with_mpi() && parallel::launcher_size() > 1) {
+    cmd.add(3008, Location{}, std::to_string(parallel::launcher_size()) + " processes");
+  } else if (parallel::size() > 1) {
+    cmd.add(3007, Location{}, "the distributed cycle is not in this build yet (issue 26)");
+  }
   if (cmd.error_count()) {
     for (const auto& d : cmd.all()) std::cerr << "impact3d: " << render(d) << "\n";
     std::cerr << kUsage;
@@ -358,10 +364,13 @@ int run_main(int argc, char** argv) {
 
 // Anything that escapes (a bug, or memory exhausted) ends the run with exit code 9 and a line
 // on stderr, never an abort.
+// Under mpirun an internal error on one rank stops them all (parallel::abort).
 int main(int argc, char** argv) {
   ensure_passive_openmp_wait(argv);
+  parallel::init(&argc, &argv);
+  int code = exit_code::internal_error;
   try {
-    return run_main(argc, argv);
+    code = run_main(argc, argv);
   } catch (const std::bad_alloc&) {
     std::cerr << "impact3d: internal error: out of memory\n";
   } catch (const std::exception& e) {
@@ -369,5 +378,7 @@ int main(int argc, char** argv) {
   } catch (...) {
     std::cerr << "impact3d: internal error\n";
   }
-  return exit_code::internal_error;
+  if (code == exit_code::internal_error && parallel::size() > 1) parallel::abort(code);
+  parallel::finalize();
+  return code;
 }

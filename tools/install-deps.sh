@@ -4,7 +4,8 @@ set -euo pipefail
 PKGS=(g++ cmake make pkg-config libeigen3-dev zlib1g-dev libgtest-dev libgmock-dev libbenchmark-dev
       libpng-dev libfreetype-dev fonts-dejavu-core libosmesa6-dev libgl-dev
       python3 python3-vtk9 python3-numpy
-      clang libclang-rt-14-dev libomp-dev)  # the fuzz targets (tools/fuzz.sh): clang, libFuzzer, OpenMP
+      clang libclang-rt-14-dev libomp-dev  # the fuzz targets (tools/fuzz.sh): clang, libFuzzer, OpenMP
+      libopenmpi-dev openmpi-bin libmetis-dev)  # distributed runs (docs/cluster.md): MPI, METIS
 missing=()
 for p in "${PKGS[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -1,0 +1,213 @@
+// The partition over MPI ranks and the ranks' domains (partition.h).
+#include "impact3d/parallel/partition.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <stdexcept>
+
+#if IMPACT3D_HAVE_MPI
+#include <metis.h>
+#endif
+
+namespace impact3d::parallel {
+
+namespace {
+
+constexpr std::size_t kBlockCorners = 8 * kLanes;  // cfx entries of one block
+
+std::size_t num_blocks(const State& s) { return s.slot_elem.size() / kLanes; }
+
+// The solids' corners around node n (its corner list without shell or beam corners).
+template <class F>
+void for_solid_corners(const State& s, std::size_t n, F&& f) {
+  const std::size_t solid_corners = kBlockCorners * num_blocks(s);
+  for (int c = s.corner_start[n]; c < s.corner_start[n + 1]; ++c) {
+    const std::size_t cc = std::size_t(s.corner_list[std::size_t(c)]);
+    if (cc < solid_corners) f(cc);
+  }
+}
+
+// Each node's blocks, increasing (CSR).
+void node_blocks(const State& s, std::vector<int>& start, std::vector<int>& list) {
+  start.assign(std::size_t(s.nn) + 1, 0);
+  list.clear();
+  std::vector<int> mine;
+  for (std::size_t n = 0; n < std::size_t(s.nn); ++n) {
+    mine.clear();
+    for_solid_corners(s, n, [&](std::size_t c) { mine.push_back(int(c / kBlockCorners)); });
+    std::sort(mine.begin(), mine.end());
+    mine.erase(std::unique(mine.begin(), mine.end()), mine.end());
+    list.insert(list.end(), mine.begin(), mine.end());
+    start[n + 1] = int(list.size());
+  }
+}
+
+}  // namespace
+
+int group_cost_per_solid(const ElementGroup& g) { return g.formulation == 2 ? 6 : 1; }
+
+BlockGraph block_graph(const State& s) {
+  const std::size_t nb = num_blocks(s);
+  std::vector<int> nstart, nlist;
+  node_blocks(s, nstart, nlist);
+  BlockGraph g;
+  g.xadj.assign(nb + 1, 0);
+  g.vwgt.assign(nb, 0);
+  for (const ElementGroup& grp : s.groups)
+    for (int b = grp.first_block; b < grp.first_block + grp.num_blocks; ++b)
+      for (int l = 0; l < kLanes; ++l)
+        if (s.slot_elem[std::size_t(b) * kLanes + std::size_t(l)] >= 0) g.vwgt[std::size_t(b)] += group_cost_per_solid(grp);
+  std::vector<int> shared(nb, 0), node_seen(std::size_t(s.nn), -1), touched;
+  for (std::size_t b = 0; b < nb; ++b) {
+    touched.clear();
+    for (int l = 0; l < kLanes; ++l) {
+      const int e = s.slot_elem[b * kLanes + std::size_t(l)];
+      if (e < 0) continue;
+      for (int n : s.conn[std::size_t(e)]) {
+        if (node_seen[std::size_t(n)] == int(b)) continue;  // each node once per block
+        node_seen[std::size_t(n)] = int(b);
+        for (int k = nstart[std::size_t(n)]; k < nstart[std::size_t(n) + 1]; ++k) {
+          const int b2 = nlist[std::size_t(k)];
+          if (b2 == int(b)) continue;
+          if (shared[std::size_t(b2)]++ == 0) touched.push_back(b2);
+        }
+      }
+    }
+    std::sort(touched.begin(), touched.end());
+    for (int b2 : touched) {
+      g.adjncy.push_back(b2);
+      g.adjwgt.push_back(shared[std::size_t(b2)]);
+      shared[std::size_t(b2)] = 0;
+    }
+    g.xadj[b + 1] = int(g.adjncy.size());
+  }
+  return g;
+}
+
+std::vector<int> partition_blocks(const BlockGraph& g, int nparts) {
+  const int nv = int(g.vwgt.size());
+  if (nparts < 1) throw std::runtime_error("partition: the number of parts must be at least 1");
+  if (nparts == 1) return std::vector<int>(std::size_t(nv), 0);
+  if (nv < nparts)
+    throw std::runtime_error("partition: " + std::to_string(nv) + " blocks of solids cannot fill " +
+                             std::to_string(nparts) + " ranks");
+#if IMPACT3D_HAVE_MPI
+  static_assert(sizeof(idx_t) == sizeof(int), "METIS built with 64-bit indices");
+  std::vector<int> part(std::size_t(nv), 0);
+  idx_t n = nv, ncon = 1, np = nparts, cut = 0;
+  idx_t options[METIS_NOPTIONS];
+  METIS_SetDefaultOptions(options);
+  options[METIS_OPTION_SEED] = 1;
+  options[METIS_OPTION_NUMBERING] = 0;
+  const int rc = METIS_PartGraphKway(&n, &ncon, const_cast<int*>(g.xadj.data()), const_cast<int*>(g.adjncy.data()),
+                                     const_cast<int*>(g.vwgt.data()), nullptr, const_cast<int*>(g.adjwgt.data()), &np,
+                                     nullptr, nullptr, options, &cut, part.data());
+  if (rc != METIS_OK) throw std::runtime_error("partition: METIS_PartGraphKway failed (" + std::to_string(rc) + ")");
+  return part;
+#else
+  throw std::runtime_error("partition: this build has no METIS (CMake option IMPACT3D_MPI)");
+#endif
+}
+
+Domain build_domain(const State& s, const std::vector<int>& block_rank, int nranks, int rank) {
+  const std::size_t nb = num_blocks(s);
+  if (block_rank.size() != nb) throw std::logic_error("build_domain: one rank per block expected");
+  Domain d;
+  d.rank = rank;
+  d.nranks = nranks;
+  d.block_rank = block_rank;
+  d.owns_block.assign(nb, 0);
+  for (std::size_t b = 0; b < nb; ++b)
+    if (block_rank[b] == rank) {
+      d.owns_block[b] = 1;
+      d.owned_blocks.push_back(int(b));
+      for (int l = 0; l < kLanes; ++l)
+        if (const int e = s.slot_elem[b * kLanes + std::size_t(l)]; e >= 0) d.owned_elems.push_back(e);
+    }
+  std::sort(d.owned_elems.begin(), d.owned_elems.end());
+  d.node_rank.assign(std::size_t(s.nn), 0);
+  std::vector<Peer> by_rank(static_cast<std::size_t>(nranks));
+  std::vector<int> ranks_here;
+  for (std::size_t n = 0; n < std::size_t(s.nn); ++n) {
+    ranks_here.clear();
+    for_solid_corners(s, n, [&](std::size_t c) { ranks_here.push_back(block_rank[c / kBlockCorners]); });
+    std::sort(ranks_here.begin(), ranks_here.end());
+    ranks_here.erase(std::unique(ranks_here.begin(), ranks_here.end()), ranks_here.end());
+    const int owner = ranks_here.empty() ? 0 : ranks_here.front();
+    d.node_rank[n] = owner;
+    const bool touched_here = std::binary_search(ranks_here.begin(), ranks_here.end(), rank);
+    if (owner == rank) {
+      d.owned_nodes.push_back(int(n));
+      for (int q : ranks_here)
+        if (q != rank) by_rank[std::size_t(q)].send_nodes.push_back(int(n));
+      for_solid_corners(s, n, [&](std::size_t c) {
+        const int q = block_rank[c / kBlockCorners];
+        if (q != rank) by_rank[std::size_t(q)].recv_corners.push_back(int(c));
+      });
+    } else if (touched_here) {
+      d.ghost_nodes.push_back(int(n));
+      by_rank[std::size_t(owner)].recv_nodes.push_back(int(n));
+      for_solid_corners(s, n, [&](std::size_t c) {
+        if (block_rank[c / kBlockCorners] == rank) by_rank[std::size_t(owner)].send_corners.push_back(int(c));
+      });
+    }
+  }
+  for (int q = 0; q < nranks; ++q) {
+    Peer& p = by_rank[std::size_t(q)];
+    if (p.send_corners.empty() && p.recv_corners.empty() && p.send_nodes.empty() && p.recv_nodes.empty()) continue;
+    p.rank = q;
+    std::sort(p.send_corners.begin(), p.send_corners.end());
+    std::sort(p.recv_corners.begin(), p.recv_corners.end());
+    d.peers.push_back(std::move(p));
+  }
+  return d;
+}
+
+PartitionSummary summarize_partition(const State& s, const BlockGraph& g, const std::vector<int>& block_rank,
+                                     int nranks) {
+  PartitionSummary p;
+  const std::size_t R = std::size_t(nranks);
+  p.solids.assign(R, 0);
+  p.blocks.assign(R, 0);
+  p.owned_nodes.assign(R, 0);
+  p.shared_nodes.assign(R, 0);
+  p.weight.assign(R, 0);
+  for (std::size_t b = 0; b < block_rank.size(); ++b) {
+    const std::size_t r = std::size_t(block_rank[b]);
+    ++p.blocks[r];
+    p.weight[r] += g.vwgt[b];
+    for (int l = 0; l < kLanes; ++l)
+      if (s.slot_elem[b * kLanes + std::size_t(l)] >= 0) ++p.solids[r];
+  }
+  std::vector<int> ranks_here;
+  for (std::size_t n = 0; n < std::size_t(s.nn); ++n) {
+    ranks_here.clear();
+    for_solid_corners(s, n, [&](std::size_t c) { ranks_here.push_back(block_rank[c / kBlockCorners]); });
+    std::sort(ranks_here.begin(), ranks_here.end());
+    ranks_here.erase(std::unique(ranks_here.begin(), ranks_here.end()), ranks_here.end());
+    ++p.owned_nodes[ranks_here.empty() ? 0 : std::size_t(ranks_here.front())];
+    if (ranks_here.size() > 1)
+      for (int q : ranks_here) ++p.shared_nodes[std::size_t(q)];
+  }
+  long total = 0, most = 0;
+  for (long w : p.weight) total += w, most = std::max(most, w);
+  p.imbalance = total > 0 ? double(most) * double(nranks) / double(total) : 1.0;
+  return p;
+}
+
+std::string partition_report(const PartitionSummary& p) {
+  const std::size_t R = p.solids.size();
+  std::string out = " distributed run: " + std::to_string(R) +
+                    " MPI ranks, the solids' blocks partitioned by METIS k-way (seed 1)\n"
+                    "   rank     solids     blocks   nodes owned   shared nodes\n";
+  char buf[160];
+  for (std::size_t r = 0; r < R; ++r) {
+    std::snprintf(buf, sizeof buf, " %6zu %10d %10d %13d %14d\n", r, p.solids[r], p.blocks[r], p.owned_nodes[r],
+                  p.shared_nodes[r]);
+    out += buf;
+  }
+  std::snprintf(buf, sizeof buf, "   imbalance (largest rank weight / mean) %.4f", p.imbalance);
+  return out + buf;
+}
+
+}  // namespace impact3d::parallel

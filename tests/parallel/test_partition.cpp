@@ -1,0 +1,183 @@
+// The partition over MPI ranks and the ranks' domains (impact3d/parallel/partition.h): every
+// solid and every node owned once, the exchange lists of two neighbours the same on both
+// sides, the same partition run after run.  These run in any build; the METIS partitions are
+// skipped (with the reason) in a build without MPI and METIS.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <map>
+#include <set>
+
+#include "common/messages.h"
+#include "impact3d/init/initialize.h"
+#include "impact3d/input/deck_reader.h"
+#include "impact3d/parallel/comm.h"
+#include "impact3d/parallel/partition.h"
+
+using namespace impact3d;
+using namespace impact3d::parallel;
+
+namespace {
+
+struct Loaded {
+  Model model;
+  State state;
+};
+
+const Loaded& deck(const std::string& name) {
+  static std::map<std::string, Loaded> cache;
+  auto it = cache.find(name);
+  if (it != cache.end()) return it->second;
+  Loaded& l = cache[name];
+  Diagnostics d;
+  EXPECT_TRUE(read_and_check_deck(std::string(IMPACT3D_SOURCE_DIR) + "/decks/" + name, l.model, d));
+  initialize_state(l.model, l.state);
+  return l;
+}
+
+// Blocks in runs of `run` blocks per rank, round robin: a partition without METIS that still
+// has many shared nodes.
+std::vector<int> striped(const State& s, int nranks, int run) {
+  std::vector<int> r(s.slot_elem.size() / kLanes);
+  for (std::size_t b = 0; b < r.size(); ++b) r[b] = int(b / std::size_t(run)) % nranks;
+  return r;
+}
+
+// The checks every partition passes.
+void check_domains(const State& s, const std::vector<int>& block_rank, int nranks) {
+  std::vector<Domain> d;
+  for (int r = 0; r < nranks; ++r) d.push_back(build_domain(s, block_rank, nranks, r));
+  // every solid owned once, by the rank of its block
+  std::vector<int> elem_owner(std::size_t(s.ne), -1);
+  for (const Domain& dr : d)
+    for (int e : dr.owned_elems) {
+      ASSERT_EQ(elem_owner[std::size_t(e)], -1) << "solid " << e << " owned twice";
+      elem_owner[std::size_t(e)] = dr.rank;
+      EXPECT_EQ(block_rank[std::size_t(s.elem_slot[std::size_t(e)]) / kLanes], dr.rank);
+    }
+  for (int e = 0; e < s.ne; ++e) EXPECT_GE(elem_owner[std::size_t(e)], 0) << "solid " << e << " owned by none";
+  // every node owned once, by the lowest rank of the solids around it
+  std::vector<int> node_owner(std::size_t(s.nn), -1);
+  for (const Domain& dr : d) {
+    EXPECT_TRUE(std::is_sorted(dr.owned_nodes.begin(), dr.owned_nodes.end()));
+    for (int n : dr.owned_nodes) {
+      ASSERT_EQ(node_owner[std::size_t(n)], -1) << "node " << n << " owned twice";
+      node_owner[std::size_t(n)] = dr.rank;
+    }
+  }
+  std::vector<int> lowest(std::size_t(s.nn), nranks);
+  for (int e = 0; e < s.ne; ++e)
+    for (int n : s.conn[std::size_t(e)])
+      lowest[std::size_t(n)] = std::min(lowest[std::size_t(n)], elem_owner[std::size_t(e)]);
+  for (int n = 0; n < s.nn; ++n)
+    EXPECT_EQ(node_owner[std::size_t(n)], lowest[std::size_t(n)] == nranks ? 0 : lowest[std::size_t(n)]);
+  for (const Domain& dr : d) {
+    // ghosts: the nodes of the rank's solids that another rank owns
+    std::set<int> ghosts;
+    for (int e : dr.owned_elems)
+      for (int n : s.conn[std::size_t(e)])
+        if (node_owner[std::size_t(n)] != dr.rank) ghosts.insert(n);
+    EXPECT_EQ(std::vector<int>(ghosts.begin(), ghosts.end()), dr.ghost_nodes);
+    std::set<int> received;
+    for (const Peer& p : dr.peers) {
+      ASSERT_NE(p.rank, dr.rank);
+      const Domain& dq = d[std::size_t(p.rank)];
+      auto other = std::find_if(dq.peers.begin(), dq.peers.end(), [&](const Peer& x) { return x.rank == dr.rank; });
+      ASSERT_NE(other, dq.peers.end()) << "rank " << p.rank << " does not list rank " << dr.rank;
+      // what one sends the other receives, in the same order
+      EXPECT_EQ(p.send_corners, other->recv_corners);
+      EXPECT_EQ(p.send_nodes, other->recv_nodes);
+      EXPECT_TRUE(std::is_sorted(p.recv_corners.begin(), p.recv_corners.end()));
+      for (int c : p.send_corners) {  // a corner of this rank's solid at a node the peer owns
+        const int e = s.corner_element(std::size_t(c));
+        ASSERT_GE(e, 0);
+        EXPECT_EQ(elem_owner[std::size_t(e)], dr.rank);
+        const int j = (c % (8 * kLanes)) / kLanes;
+        EXPECT_EQ(node_owner[std::size_t(s.conn[std::size_t(e)][std::size_t(j)])], p.rank);
+      }
+      for (int n : p.recv_nodes) {
+        EXPECT_EQ(node_owner[std::size_t(n)], p.rank);
+        received.insert(n);
+      }
+    }
+    EXPECT_EQ(std::vector<int>(received.begin(), received.end()), dr.ghost_nodes);
+    // every corner at an owned node is the rank's own or received
+    for (int n : dr.owned_nodes)
+      for (int c = s.corner_start[std::size_t(n)]; c < s.corner_start[std::size_t(n) + 1]; ++c) {
+        const int cc = s.corner_list[std::size_t(c)];
+        const int owner = elem_owner[std::size_t(s.corner_element(std::size_t(cc)))];
+        if (owner == dr.rank) continue;
+        const Peer* p = nullptr;
+        for (const Peer& x : dr.peers)
+          if (x.rank == owner) p = &x;
+        ASSERT_NE(p, nullptr);
+        EXPECT_TRUE(std::binary_search(p->recv_corners.begin(), p->recv_corners.end(), cc));
+      }
+  }
+}
+
+}  // namespace
+
+TEST(Partition, BlockGraphIsSymmetricWithSolidWeights) {
+  const State& s = deck("taylor_bar.dyn").state;
+  const BlockGraph g = block_graph(s);
+  const std::size_t nb = s.slot_elem.size() / kLanes;
+  ASSERT_EQ(g.vwgt.size(), nb);
+  long solids = 0;
+  for (int w : g.vwgt) solids += w;
+  EXPECT_EQ(solids, s.ne);  // one-point solids: weight 1 each
+  for (std::size_t b = 0; b < nb; ++b)
+    for (int k = g.xadj[b]; k < g.xadj[b + 1]; ++k) {
+      const int b2 = g.adjncy[std::size_t(k)];
+      EXPECT_NE(b2, int(b));
+      bool back = false;
+      for (int k2 = g.xadj[std::size_t(b2)]; k2 < g.xadj[std::size_t(b2) + 1]; ++k2)
+        if (g.adjncy[std::size_t(k2)] == int(b)) back = g.adjwgt[std::size_t(k2)] == g.adjwgt[std::size_t(k)];
+      EXPECT_TRUE(back) << "edge " << b << "-" << b2 << " not mirrored with its weight";
+    }
+}
+
+TEST(Partition, DomainsOfStripedBlocksAreConsistent) {
+  for (const char* name : {"taylor_bar.dyn", "two_bars.dyn"}) {
+    const State& s = deck(name).state;
+    for (int nranks : {1, 2, 3, 4}) {
+      SCOPED_TRACE(std::string(name) + " on " + std::to_string(nranks) + " ranks");
+      check_domains(s, striped(s, nranks, 3), nranks);
+    }
+  }
+}
+
+TEST(Partition, OneRankOwnsEverythingAndExchangesNothing) {
+  const State& s = deck("taylor_bar.dyn").state;
+  const Domain d = build_domain(s, std::vector<int>(s.slot_elem.size() / kLanes, 0), 1, 0);
+  EXPECT_EQ(int(d.owned_elems.size()), s.ne);
+  EXPECT_EQ(int(d.owned_nodes.size()), s.nn);
+  EXPECT_TRUE(d.ghost_nodes.empty());
+  EXPECT_TRUE(d.peers.empty());
+}
+
+TEST(Partition, MetisKwayIsConsistentBalancedAndRepeatable) {
+  if (!built_with_mpi()) GTEST_SKIP() << "this build has no MPI and METIS (CMake option IMPACT3D_MPI off)";
+  for (const char* name : {"taylor_bar.dyn", "two_bars.dyn"}) {
+    const State& s = deck(name).state;
+    const BlockGraph g = block_graph(s);
+    for (int nranks : {2, 3, 4}) {
+      SCOPED_TRACE(std::string(name) + " on " + std::to_string(nranks) + " ranks");
+      const std::vector<int> part = partition_blocks(g, nranks);
+      EXPECT_EQ(part, partition_blocks(block_graph(s), nranks)) << "not the same partition run after run";
+      for (int r = 0; r < nranks; ++r) EXPECT_NE(std::count(part.begin(), part.end(), r), 0) << "rank " << r << " empty";
+      check_domains(s, part, nranks);
+      const PartitionSummary p = summarize_partition(s, g, part, nranks);
+      EXPECT_LT(p.imbalance, 1.1);  // METIS's default tolerance is 1.03 on the weights
+      long solids = 0;
+      for (int n : p.solids) solids += n;
+      EXPECT_EQ(solids, s.ne);
+    }
+  }
+}
+
+TEST(Partition, MoreRanksThanBlocksIsRefused) {
+  const State& s = deck("taylor_bar.dyn").state;
+  const BlockGraph g = block_graph(s);
+  EXPECT_THROW(partition_blocks(g, int(g.vwgt.size()) + 1), std::runtime_error);
+}
