@@ -1064,169 +1064,195 @@ bool beam_axes(const double* x1, const double* x2, const double* g, double r[3],
 
 }  // namespace
 
-PlotState MiliReader::state(int i, int materials) const {
-    const std::vector<char> rec = read_record(i);
-    const PlotGeometry& g = geom_;
-    PlotState s;
-    s.time = smaps_[static_cast<std::size_t>(i)].time;
-    const double nan = std::numeric_limits<double>::quiet_NaN();
-    // value of a leaf into out[ordinal * stride + slot]; the mean over the points of an array
-    // when point == -2
-    auto get = [&](int cls, const std::string& leaf, const std::string& container, int point, std::vector<double>& out,
-                   int stride, int slot) {
-        if (point != -2) return fill(rec, matches(cls, leaf, container, point), out, stride, slot);
-        const int n = points(cls, leaf, container);
-        if (n <= 1) return fill(rec, matches(cls, leaf, container, -1), out, stride, slot);
-        const std::int64_t count = classes_[static_cast<std::size_t>(cls)].count;
-        std::vector<double> sum(static_cast<std::size_t>(count), 0.0), one(static_cast<std::size_t>(count), 0.0);
-        for (int p = 0; p < n; ++p) {
-            fill(rec, matches(cls, leaf, container, p), one, 1, 0);
-            for (std::int64_t e = 0; e < count; ++e) sum[static_cast<std::size_t>(e)] += one[static_cast<std::size_t>(e)] / n;
-        }
-        for (std::int64_t e = 0; e < count; ++e) {
-            const std::size_t o = static_cast<std::size_t>(e * stride + slot);
-            if (o < out.size()) out[o] = sum[static_cast<std::size_t>(e)];
-        }
-        return true;
-    };
+// The values of a leaf into out[ordinal * stride + slot]; the mean over the points of an array
+// when point == -2. False when the class does not write the leaf.
+bool MiliReader::read_leaf(const std::vector<char>& rec, int cls, const std::string& leaf, const std::string& container,
+                           int point, std::vector<double>& out, int stride, int slot) const {
+    if (point != -2) return fill(rec, matches(cls, leaf, container, point), out, stride, slot);
+    const int n = points(cls, leaf, container);
+    if (n <= 1) return fill(rec, matches(cls, leaf, container, -1), out, stride, slot);
+    const std::int64_t count = classes_[static_cast<std::size_t>(cls)].count;
+    std::vector<double> sum(static_cast<std::size_t>(count), 0.0), one(static_cast<std::size_t>(count), 0.0);
+    for (int p = 0; p < n; ++p) {
+        fill(rec, matches(cls, leaf, container, p), one, 1, 0);
+        for (std::int64_t e = 0; e < count; ++e) sum[static_cast<std::size_t>(e)] += one[static_cast<std::size_t>(e)] / n;
+    }
+    for (std::int64_t e = 0; e < count; ++e) {
+        const std::size_t o = static_cast<std::size_t>(e * stride + slot);
+        if (o < out.size()) out[o] = sum[static_cast<std::size_t>(e)];
+    }
+    return true;
+}
 
-    // ---- nodes
-    if (node_cls_ >= 0) {
-        s.coords = x0_;
-        const char* pos[3] = {"ux", "uy", "uz"};
-        for (int j = 0; j < 3; ++j) get(node_cls_, pos[j], "", -1, s.coords, 3, j);
-        const char* vel[3] = {"vx", "vy", "vz"};
-        const char* acc[3] = {"ax", "ay", "az"};
-        std::vector<double> v(x0_.size(), 0.0), a(x0_.size(), 0.0);
-        bool hv = false, ha = false;
-        for (int j = 0; j < 3; ++j) {
-            hv = get(node_cls_, vel[j], "", -1, v, 3, j) || hv;
-            ha = get(node_cls_, acc[j], "", -1, a, 3, j) || ha;
-        }
-        s.vel = std::move(v);
-        if (ha) s.acc = std::move(a);
+// Node positions (initial + displacement), velocities and, when written, accelerations.
+void MiliReader::read_node_state(const std::vector<char>& rec, PlotState& s) const {
+    if (node_cls_ < 0) return;
+    s.coords = x0_;
+    const char* pos[3] = {"ux", "uy", "uz"};
+    for (int j = 0; j < 3; ++j) read_leaf(rec, node_cls_, pos[j], "", -1, s.coords, 3, j);
+    const char* vel[3] = {"vx", "vy", "vz"};
+    const char* acc[3] = {"ax", "ay", "az"};
+    std::vector<double> v(x0_.size(), 0.0), a(x0_.size(), 0.0);
+    bool ha = false;
+    for (int j = 0; j < 3; ++j) {
+        read_leaf(rec, node_cls_, vel[j], "", -1, v, 3, j);
+        ha = read_leaf(rec, node_cls_, acc[j], "", -1, a, 3, j) || ha;
     }
-    // ---- element families: per class, then into the family arrays
-    auto status = [&](const std::vector<std::pair<int, int>>& cls, std::size_t n, std::vector<unsigned char>& alive) {
-        std::vector<double> sand(n, nan);
-        bool any = false;
-        for (const auto& [c, first] : cls) {
-            std::vector<double> v(static_cast<std::size_t>(classes_[static_cast<std::size_t>(c)].count), nan);
-            if (!get(c, "sand", "", -1, v, 1, 0)) continue;
-            any = true;
-            std::copy(v.begin(), v.end(), sand.begin() + first);
-        }
-        if (!any) return;
-        alive.assign(n, 1);
-        for (std::size_t e = 0; e < n; ++e) alive[e] = sand[e] == 0.0 ? 0 : 1;
-    };
-    const char* stress[6] = {"sx", "sy", "sz", "sxy", "syz", "szx"};
-    if (g.num_hexes() > 0) {
-        s.stress.assign(6 * static_cast<std::size_t>(g.num_hexes()), 0.0);
-        s.eps.assign(static_cast<std::size_t>(g.num_hexes()), 0.0);
-        for (const auto& [c, first] : hex_cls_) {
-            const std::size_t n = static_cast<std::size_t>(classes_[static_cast<std::size_t>(c)].count);
-            std::vector<double> st(6 * n, 0.0), ep(n, 0.0);
-            for (int j = 0; j < 6; ++j) get(c, stress[j], "", -2, st, 6, j);
-            get(c, "eps", "", -2, ep, 1, 0);
-            std::copy(st.begin(), st.end(), s.stress.begin() + 6 * static_cast<std::ptrdiff_t>(first));
-            std::copy(ep.begin(), ep.end(), s.eps.begin() + first);
-        }
-        status(hex_cls_, static_cast<std::size_t>(g.num_hexes()), s.alive);
+    s.vel = std::move(v);
+    if (ha) s.acc = std::move(a);
+}
+
+// The family's alive flags from the classes' "sand" words (0: deleted); left empty when none is written.
+void MiliReader::read_element_status(const std::vector<char>& rec, const std::vector<std::pair<int, int>>& cls,
+                                     std::size_t n, std::vector<unsigned char>& alive) const {
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    std::vector<double> sand(n, nan);
+    bool any = false;
+    for (const auto& [c, first] : cls) {
+        std::vector<double> v(static_cast<std::size_t>(classes_[static_cast<std::size_t>(c)].count), nan);
+        if (!read_leaf(rec, c, "sand", "", -1, v, 1, 0)) continue;
+        any = true;
+        std::copy(v.begin(), v.end(), sand.begin() + first);
     }
-    if (g.num_beams() > 0) {
-        const int words = kBeamWords + 5 * layout_.beam_points;
-        s.beam_vars.assign(static_cast<std::size_t>(words) * static_cast<std::size_t>(g.num_beams()), 0.0);
-        const char* res[kBeamWords] = {"axf", "sfs", "sft", "ms", "mt", "tor"};
-        for (const auto& [c, first] : beam_cls_) {
-            const std::size_t n = static_cast<std::size_t>(classes_[static_cast<std::size_t>(c)].count);
-            std::vector<double> b(static_cast<std::size_t>(words) * n, 0.0);
-            for (int j = 0; j < kBeamWords; ++j) get(c, res[j], "", -1, b, words, j);
-            // integration points (an element-set array such as DYNA3D's es_1a): DYNA3D writes
-            // their stresses in the global axes; each goes into the beam's axes (r from the
-            // state's node positions, s from the S vector svec when written) and into the d3plot
-            // point block, LS-DYNA's order: shear rs, shear tr, axial stress, plastic strain,
-            // axial strain (not written: 0)
-            const int np = std::min(layout_.beam_points, points(c, "sx"));
-            if (np > 0) {
-                const char* comp[6] = {"sx", "sy", "sz", "sxy", "syz", "szx"};
-                std::vector<double> st(6 * n * static_cast<std::size_t>(np), 0.0), ep(n * static_cast<std::size_t>(np), 0.0);
-                for (int p = 0; p < np; ++p) {
-                    for (int j = 0; j < 6; ++j) get(c, comp[j], "", p, st, 6 * np, 6 * p + j);
-                    get(c, "eps", "", p, ep, np, p);
-                }
-                std::vector<double> sv(3 * n, nan);
-                const char* svc[3] = {"svec_x", "svec_y", "svec_z"};
-                bool has_sv = true;
-                for (int j = 0; j < 3; ++j) has_sv = get(c, svc[j], "", -1, sv, 3, j) && has_sv;
-                for (std::size_t e = 0; e < n; ++e) {
-                    const std::size_t be = static_cast<std::size_t>(first) + e;
-                    const std::size_t n1 = static_cast<std::size_t>(g.beam_nodes[2 * be]), n2 = static_cast<std::size_t>(g.beam_nodes[2 * be + 1]);
-                    double r[3], sa[3], ta[3];
-                    if (3 * std::max(n1, n2) + 2 >= s.coords.size() ||
-                        !beam_axes(&s.coords[3 * n1], &s.coords[3 * n2], has_sv ? &sv[3 * e] : nullptr, r, sa, ta))
-                        continue;
-                    for (int p = 0; p < np; ++p) {
-                        const double* q = &st[6 * (e * static_cast<std::size_t>(np) + static_cast<std::size_t>(p))];
-                        const double m[3][3] = {{q[0], q[3], q[5]}, {q[3], q[1], q[4]}, {q[5], q[4], q[2]}};
-                        auto proj = [&](const double* u, const double* w) {
-                            double x = 0;
-                            for (int a = 0; a < 3; ++a)
-                                for (int k = 0; k < 3; ++k) x += u[a] * m[a][k] * w[k];
-                            return x;
-                        };
-                        double* o = &b[static_cast<std::size_t>(words) * e + kBeamWords + 5 * static_cast<std::size_t>(p)];
-                        o[0] = proj(r, sa);
-                        o[1] = proj(ta, r);
-                        o[2] = proj(r, r);
-                        o[3] = ep[e * static_cast<std::size_t>(np) + static_cast<std::size_t>(p)];
-                    }
-                }
-            }
-            std::copy(b.begin(), b.end(), s.beam_vars.begin() + words * static_cast<std::ptrdiff_t>(first));
-        }
-        status(beam_cls_, static_cast<std::size_t>(g.num_beams()), s.beam_alive);
+    if (!any) return;
+    alive.assign(n, 1);
+    for (std::size_t e = 0; e < n; ++e) alive[e] = sand[e] == 0.0 ? 0 : 1;
+}
+
+namespace {
+const char* const kStressLeaves[6] = {"sx", "sy", "sz", "sxy", "syz", "szx"};
+}  // namespace
+
+// Solids: the six stresses and the plastic strain, means over the points.
+void MiliReader::read_hex_state(const std::vector<char>& rec, PlotState& s) const {
+    const std::size_t nh = static_cast<std::size_t>(geom_.num_hexes());
+    if (nh == 0) return;
+    s.stress.assign(6 * nh, 0.0);
+    s.eps.assign(nh, 0.0);
+    for (const auto& [c, first] : hex_cls_) {
+        const std::size_t n = static_cast<std::size_t>(classes_[static_cast<std::size_t>(c)].count);
+        std::vector<double> st(6 * n, 0.0), ep(n, 0.0);
+        for (int j = 0; j < 6; ++j) read_leaf(rec, c, kStressLeaves[j], "", -2, st, 6, j);
+        read_leaf(rec, c, "eps", "", -2, ep, 1, 0);
+        std::copy(st.begin(), st.end(), s.stress.begin() + 6 * static_cast<std::ptrdiff_t>(first));
+        std::copy(ep.begin(), ep.end(), s.eps.begin() + first);
     }
-    if (g.num_shells() > 0) {
-        s.shell_vars.assign(kShellWords * static_cast<std::size_t>(g.num_shells()), 0.0);
-        for (const auto& [c, first] : shell_cls_) {
-            const std::size_t n = static_cast<std::size_t>(classes_[static_cast<std::size_t>(c)].count);
-            std::vector<double> r(kShellWords * n, 0.0);
-            // layers mid, inner, outer: named surfaces (stress_mid ...), else the points of an
-            // element-set array (inner the first, outer the last, mid the mean), else one stress
-            static const char* surf[3] = {"mid", "in", "out"};
-            const int np = points(c, "sx");
-            for (int L = 0; L < 3; ++L) {
-                const std::string sc = std::string("stress_") + surf[L], ec = std::string("eeff_") + surf[L];
-                const int pt = L == 0 ? -2 : (L == 1 ? 0 : std::max(0, np - 1));
-                for (int j = 0; j < 6; ++j)
-                    if (!get(c, stress[j], sc, -1, r, kShellWords, 7 * L + j))
-                        get(c, stress[j], "", np > 1 ? pt : -1, r, kShellWords, 7 * L + j);
-                if (!get(c, ec, "", -1, r, kShellWords, 7 * L + 6)) get(c, "eps", "", np > 1 ? pt : -1, r, kShellWords, 7 * L + 6);
-            }
-            const char* res[8] = {"mxx", "myy", "mxy", "qxx", "qyy", "nxx", "nyy", "nxy"};
-            for (int j = 0; j < 8; ++j) get(c, res[j], "", -1, r, kShellWords, 21 + j);
-            get(c, "thick", "", -1, r, kShellWords, 29);
-            get(c, "edv1", "", -1, r, kShellWords, 30);
-            get(c, "edv2", "", -1, r, kShellWords, 31);
-            get(c, "inteng", "", -1, r, kShellWords, 32);
-            const char* strain[6] = {"ex", "ey", "ez", "exy", "eyz", "ezx"};
-            const int ns = points(c, "ex");
-            for (int side = 0; side < 2; ++side)
-                for (int j = 0; j < 6; ++j)
-                    if (!get(c, strain[j], side == 0 ? "strain_in" : "strain_out", -1, r, kShellWords, 33 + 6 * side + j))
-                        get(c, strain[j], "", ns > 1 ? (side == 0 ? 0 : ns - 1) : -1, r, kShellWords, 33 + 6 * side + j);
-            std::copy(r.begin(), r.end(), s.shell_vars.begin() + kShellWords * static_cast<std::ptrdiff_t>(first));
-        }
-        status(shell_cls_, static_cast<std::size_t>(g.num_shells()), s.shell_alive);
+    read_element_status(rec, hex_cls_, nh, s.alive);
+}
+
+// A beam class's integration points (an element-set array such as DYNA3D's es_1a): DYNA3D writes
+// their stresses in the global axes; each goes into the beam's axes (r from the state's node
+// positions, s from the S vector svec when written) and into the d3plot point block, LS-DYNA's
+// order: shear rs, shear tr, axial stress, plastic strain, axial strain (not written: 0).
+void MiliReader::read_beam_points(const std::vector<char>& rec, int c, int first, int words, const PlotState& s,
+                                  std::vector<double>& b) const {
+    const std::size_t n = static_cast<std::size_t>(classes_[static_cast<std::size_t>(c)].count);
+    const int np = std::min(layout_.beam_points, points(c, "sx"));
+    if (np <= 0) return;
+    const std::size_t npz = static_cast<std::size_t>(np);
+    std::vector<double> st(6 * n * npz, 0.0), ep(n * npz, 0.0);
+    for (int p = 0; p < np; ++p) {
+        for (int j = 0; j < 6; ++j) read_leaf(rec, c, kStressLeaves[j], "", p, st, 6 * np, 6 * p + j);
+        read_leaf(rec, c, "eps", "", p, ep, np, p);
     }
-    // ---- globals and materials
+    std::vector<double> sv(3 * n, std::numeric_limits<double>::quiet_NaN());
+    const char* svc[3] = {"svec_x", "svec_y", "svec_z"};
+    bool has_sv = true;
+    for (int j = 0; j < 3; ++j) has_sv = read_leaf(rec, c, svc[j], "", -1, sv, 3, j) && has_sv;
+    for (std::size_t e = 0; e < n; ++e) {
+        const std::size_t be = static_cast<std::size_t>(first) + e;
+        const std::size_t n1 = static_cast<std::size_t>(geom_.beam_nodes[2 * be]), n2 = static_cast<std::size_t>(geom_.beam_nodes[2 * be + 1]);
+        double r[3], sa[3], ta[3];
+        if (3 * std::max(n1, n2) + 2 >= s.coords.size() ||
+            !beam_axes(&s.coords[3 * n1], &s.coords[3 * n2], has_sv ? &sv[3 * e] : nullptr, r, sa, ta))
+            continue;
+        for (std::size_t p = 0; p < npz; ++p) {
+            const double* q = &st[6 * (e * npz + p)];
+            const double m[3][3] = {{q[0], q[3], q[5]}, {q[3], q[1], q[4]}, {q[5], q[4], q[2]}};
+            auto proj = [&](const double* u, const double* w) {
+                double x = 0;
+                for (int a = 0; a < 3; ++a)
+                    for (int k = 0; k < 3; ++k) x += u[a] * m[a][k] * w[k];
+                return x;
+            };
+            double* o = &b[static_cast<std::size_t>(words) * e + kBeamWords + 5 * p];
+            o[0] = proj(r, sa);
+            o[1] = proj(ta, r);
+            o[2] = proj(r, r);
+            o[3] = ep[e * npz + p];
+        }
+    }
+}
+
+// Beams: the resultants and the integration points (read_beam_points).
+void MiliReader::read_beam_state(const std::vector<char>& rec, PlotState& s) const {
+    const std::size_t nb = static_cast<std::size_t>(geom_.num_beams());
+    if (nb == 0) return;
+    const int words = kBeamWords + 5 * layout_.beam_points;
+    s.beam_vars.assign(static_cast<std::size_t>(words) * nb, 0.0);
+    const char* res[kBeamWords] = {"axf", "sfs", "sft", "ms", "mt", "tor"};
+    for (const auto& [c, first] : beam_cls_) {
+        const std::size_t n = static_cast<std::size_t>(classes_[static_cast<std::size_t>(c)].count);
+        std::vector<double> b(static_cast<std::size_t>(words) * n, 0.0);
+        for (int j = 0; j < kBeamWords; ++j) read_leaf(rec, c, res[j], "", -1, b, words, j);
+        read_beam_points(rec, c, first, words, s, b);
+        std::copy(b.begin(), b.end(), s.beam_vars.begin() + words * static_cast<std::ptrdiff_t>(first));
+    }
+    read_element_status(rec, beam_cls_, nb, s.beam_alive);
+}
+
+// One shell class into its d3plot words: layers mid, inner, outer: named surfaces (stress_mid
+// ...), else the points of an element-set array (inner the first, outer the last, mid the mean),
+// else one stress; then resultants, thickness, extra words, internal energy and the strains.
+void MiliReader::read_shell_class(const std::vector<char>& rec, int c, std::vector<double>& r) const {
+    static const char* surf[3] = {"mid", "in", "out"};
+    const int np = points(c, "sx");
+    for (int L = 0; L < 3; ++L) {
+        const std::string sc = std::string("stress_") + surf[L], ec = std::string("eeff_") + surf[L];
+        const int pt = L == 0 ? -2 : (L == 1 ? 0 : std::max(0, np - 1));
+        for (int j = 0; j < 6; ++j)
+            if (!read_leaf(rec, c, kStressLeaves[j], sc, -1, r, kShellWords, 7 * L + j))
+                read_leaf(rec, c, kStressLeaves[j], "", np > 1 ? pt : -1, r, kShellWords, 7 * L + j);
+        if (!read_leaf(rec, c, ec, "", -1, r, kShellWords, 7 * L + 6))
+            read_leaf(rec, c, "eps", "", np > 1 ? pt : -1, r, kShellWords, 7 * L + 6);
+    }
+    const char* res[8] = {"mxx", "myy", "mxy", "qxx", "qyy", "nxx", "nyy", "nxy"};
+    for (int j = 0; j < 8; ++j) read_leaf(rec, c, res[j], "", -1, r, kShellWords, 21 + j);
+    read_leaf(rec, c, "thick", "", -1, r, kShellWords, 29);
+    read_leaf(rec, c, "edv1", "", -1, r, kShellWords, 30);
+    read_leaf(rec, c, "edv2", "", -1, r, kShellWords, 31);
+    read_leaf(rec, c, "inteng", "", -1, r, kShellWords, 32);
+    const char* strain[6] = {"ex", "ey", "ez", "exy", "eyz", "ezx"};
+    const int ns = points(c, "ex");
+    for (int side = 0; side < 2; ++side)
+        for (int j = 0; j < 6; ++j)
+            if (!read_leaf(rec, c, strain[j], side == 0 ? "strain_in" : "strain_out", -1, r, kShellWords, 33 + 6 * side + j))
+                read_leaf(rec, c, strain[j], "", ns > 1 ? (side == 0 ? 0 : ns - 1) : -1, r, kShellWords, 33 + 6 * side + j);
+}
+
+// Shells: each class's words (read_shell_class) and the alive flags.
+void MiliReader::read_shell_state(const std::vector<char>& rec, PlotState& s) const {
+    const std::size_t ns = static_cast<std::size_t>(geom_.num_shells());
+    if (ns == 0) return;
+    s.shell_vars.assign(kShellWords * ns, 0.0);
+    for (const auto& [c, first] : shell_cls_) {
+        const std::size_t n = static_cast<std::size_t>(classes_[static_cast<std::size_t>(c)].count);
+        std::vector<double> r(kShellWords * n, 0.0);
+        read_shell_class(rec, c, r);
+        std::copy(r.begin(), r.end(), s.shell_vars.begin() + kShellWords * static_cast<std::ptrdiff_t>(first));
+    }
+    read_element_status(rec, shell_cls_, ns, s.shell_alive);
+}
+
+// The mesh classes' global energies and rigid-body velocity (finite values only).
+void MiliReader::read_global_state(const std::vector<char>& rec, PlotState& s) const {
+    const double nan = std::numeric_limits<double>::quiet_NaN();
     for (std::size_t c = 0; c < classes_.size(); ++c) {
         if (classes_[c].superclass != kMiliMesh) continue;
         std::vector<double> v(1, nan);
         auto one = [&](const char* leaf, double& dst) {
             v[0] = nan;
-            if (get(static_cast<int>(c), leaf, "", -1, v, 1, 0) && std::isfinite(v[0])) dst = v[0];
+            if (read_leaf(rec, static_cast<int>(c), leaf, "", -1, v, 1, 0) && std::isfinite(v[0])) dst = v[0];
         };
         one("ke", s.kinetic_energy);
         one("pe", s.internal_energy);
@@ -1235,23 +1261,38 @@ PlotState MiliReader::state(int i, int materials) const {
         one("rbvy", s.velocity[1]);
         one("rbvz", s.velocity[2]);
     }
-    if (mat_cls_ >= 0 && materials > 0) {
-        const std::size_t nm = static_cast<std::size_t>(std::min(materials, 1 << 20));
-        const std::size_t cm = static_cast<std::size_t>(classes_[static_cast<std::size_t>(mat_cls_)].count);
-        auto per_mat = [&](const char* leaf, std::vector<double>& dst, int stride, int slot) {
-            std::vector<double> v(cm, 0.0);
-            get(mat_cls_, leaf, "", -1, v, 1, 0);
-            dst.resize(nm * static_cast<std::size_t>(stride), 0.0);
-            for (std::size_t m = 0; m < std::min(nm, cm); ++m) dst[m * static_cast<std::size_t>(stride) + static_cast<std::size_t>(slot)] = v[m];
-        };
-        per_mat("matpe", s.mat_internal_energy, 1, 0);
-        per_mat("matke", s.mat_kinetic_energy, 1, 0);
-        per_mat("matxv", s.mat_velocity, 3, 0);
-        per_mat("matyv", s.mat_velocity, 3, 1);
-        per_mat("matzv", s.mat_velocity, 3, 2);
-        per_mat("matmass", s.mat_mass, 1, 0);
-        per_mat("mathe", s.mat_hourglass_energy, 1, 0);
-    }
+}
+
+// The per-material energies, velocities and masses of the first `materials` materials.
+void MiliReader::read_material_state(const std::vector<char>& rec, int materials, PlotState& s) const {
+    if (mat_cls_ < 0 || materials <= 0) return;
+    const std::size_t nm = static_cast<std::size_t>(std::min(materials, 1 << 20));
+    const std::size_t cm = static_cast<std::size_t>(classes_[static_cast<std::size_t>(mat_cls_)].count);
+    auto per_mat = [&](const char* leaf, std::vector<double>& dst, int stride, int slot) {
+        std::vector<double> v(cm, 0.0);
+        read_leaf(rec, mat_cls_, leaf, "", -1, v, 1, 0);
+        dst.resize(nm * static_cast<std::size_t>(stride), 0.0);
+        for (std::size_t m = 0; m < std::min(nm, cm); ++m) dst[m * static_cast<std::size_t>(stride) + static_cast<std::size_t>(slot)] = v[m];
+    };
+    per_mat("matpe", s.mat_internal_energy, 1, 0);
+    per_mat("matke", s.mat_kinetic_energy, 1, 0);
+    per_mat("matxv", s.mat_velocity, 3, 0);
+    per_mat("matyv", s.mat_velocity, 3, 1);
+    per_mat("matzv", s.mat_velocity, 3, 2);
+    per_mat("matmass", s.mat_mass, 1, 0);
+    per_mat("mathe", s.mat_hourglass_energy, 1, 0);
+}
+
+PlotState MiliReader::state(int i, int materials) const {
+    const std::vector<char> rec = read_record(i);
+    PlotState s;
+    s.time = smaps_[static_cast<std::size_t>(i)].time;
+    read_node_state(rec, s);
+    read_hex_state(rec, s);
+    read_beam_state(rec, s);
+    read_shell_state(rec, s);
+    read_global_state(rec, s);
+    read_material_state(rec, materials, s);
     return s;
 }
 

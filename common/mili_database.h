@@ -162,6 +162,21 @@ private:
     double load(const std::vector<char>& rec, std::int64_t at, int type) const;
     void build_geometry();
 
+    // state()'s steps, in order (mili_database.cpp); rec is the state's record
+    bool read_leaf(const std::vector<char>& rec, int cls, const std::string& leaf, const std::string& container,
+                   int point, std::vector<double>& out, int stride, int slot) const;
+    void read_node_state(const std::vector<char>& rec, PlotState& s) const;
+    void read_element_status(const std::vector<char>& rec, const std::vector<std::pair<int, int>>& cls, std::size_t n,
+                             std::vector<unsigned char>& alive) const;
+    void read_hex_state(const std::vector<char>& rec, PlotState& s) const;
+    void read_beam_points(const std::vector<char>& rec, int c, int first, int words, const PlotState& s,
+                          std::vector<double>& b) const;
+    void read_beam_state(const std::vector<char>& rec, PlotState& s) const;
+    void read_shell_class(const std::vector<char>& rec, int c, std::vector<double>& r) const;
+    void read_shell_state(const std::vector<char>& rec, PlotState& s) const;
+    void read_global_state(const std::vector<char>& rec, PlotState& s) const;
+    void read_material_state(const std::vector<char>& rec, int materials, PlotState& s) const;
+
     // open()'s steps, in order (mili_database.cpp)
     struct Dir { std::int64_t type, m1, m2, nstr, offset, length; std::vector<std::string> s; };  // a directory entry
     struct Tokens;  // the integers and names of a variable dictionary or record format

@@ -16,6 +16,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <stdexcept>
@@ -506,151 +507,210 @@ std::string read_file(const fs::path& p) {
     return ss.str();
 }
 
-}  // namespace
+// How a deck's job ended: pass, fail, error or update, and the one-line message.
+struct Outcome {
+    std::string status, message;
+};
 
-int run_suite_deck(const SuiteOptions& opt, const SuiteDeck& d, std::ostream& log) {
-    const fs::path dir = fs::absolute(opt.outdir) / d.name;
-    const fs::path run = dir / "run";
-    fs::create_directories(dir);
-    for (const char* old : {"result.txt", "compare.txt", "ref.png", "new.png", "energies.png", "worst.png",
-                            "energies_diff.png", "worst_diff.png"})
-        fs::remove(dir / old);
-    fs::remove_all(run);
-    fs::create_directories(run);
-    std::map<std::string, std::string> kv{{"name", d.name}, {"deck", d.deck}};
+// One deck's job: its folders and what its result.txt records.
+struct DeckJob {
+    const SuiteDeck& d;
+    std::string mode;
+    fs::path dir, run;
+    std::map<std::string, std::string> kv;
     std::vector<std::string> findings;
     std::vector<Picture> pics;
-    const std::string mode = d.mode();
-    kv["mode"] = mode;
-    if (d.timeout > 0) kv["timeout"] = g6(d.timeout);
+
+    std::string new_db() const { return (run / "d3plot").string(); }
+};
+
+// The deck's folder emptied of an earlier job's results, and the deck's own record.
+DeckJob start_deck_job(const SuiteOptions& opt, const SuiteDeck& d) {
+    DeckJob job{d, d.mode(), fs::absolute(opt.outdir) / d.name, {}, {}, {}, {}};
+    job.run = job.dir / "run";
+    fs::create_directories(job.dir);
+    for (const char* old : {"result.txt", "compare.txt", "ref.png", "new.png", "energies.png", "worst.png",
+                            "energies_diff.png", "worst_diff.png"})
+        fs::remove(job.dir / old);
+    fs::remove_all(job.run);
+    fs::create_directories(job.run);
+    job.kv = {{"name", d.name}, {"deck", d.deck}, {"mode", job.mode}};
+    if (d.timeout > 0) job.kv["timeout"] = g6(d.timeout);
     if (!d.args.empty()) {
         std::string a;
         for (const auto& w : d.args) a += (a.empty() ? "" : " ") + w;
-        kv["args"] = a;
+        job.kv["args"] = a;
     }
-    auto finish = [&](const std::string& status, const std::string& message) {
-        kv["status"] = status;
-        kv["message"] = message;
-        write_result(dir, kv, findings, pics);
-        log << d.name << ": " << (status == "pass" ? "PASS" : status == "fail" ? "FAIL" : status == "update" ? "UPDATED" : "ERROR")
-            << (message.empty() ? "" : " (" + message + ")") << "\n";
-        if (status == "fail" || status == "error")
-            for (const auto& f : findings) log << "  " << f << "\n";
-        return status == "pass" || status == "update" ? 0 : status == "fail" ? 1 : 2;
-    };
-    if (!opt.update && mode == "summary" && !d.summary_reference())
-        return finish("error", "no reference: no " + d.summary + " (postimpact suite SUITE --update stores one)");
-    if (!opt.update && !d.plot_reference() && !d.summary_reference())
-        return finish("error", "no reference: neither " + d.ref_dir + "/d3plot nor " + d.summary +
-                                   " (postimpact suite SUITE --update stores one)");
-    Tolerances tol;
-    try {
-        if (!opt.update) tol = deck_tolerances(opt, d);
-    } catch (const std::exception& e) {
-        return finish("error", e.what());
-    }
-    // the run
+    return job;
+}
+
+// Writes result.txt, logs the verdict (and the findings of a failure); the job's exit code.
+int finish_deck_job(DeckJob& job, const Outcome& o, std::ostream& log) {
+    job.kv["status"] = o.status;
+    job.kv["message"] = o.message;
+    write_result(job.dir, job.kv, job.findings, job.pics);
+    const std::string& s = o.status;
+    log << job.d.name << ": " << (s == "pass" ? "PASS" : s == "fail" ? "FAIL" : s == "update" ? "UPDATED" : "ERROR")
+        << (o.message.empty() ? "" : " (" + o.message + ")") << "\n";
+    if (s == "fail" || s == "error")
+        for (const auto& f : job.findings) log << "  " << f << "\n";
+    return s == "pass" || s == "update" ? 0 : s == "fail" ? 1 : 2;
+}
+
+// An error when a comparing job has no reference to compare with.
+std::optional<Outcome> missing_reference(const SuiteOptions& opt, const SuiteDeck& d, const std::string& mode) {
+    if (opt.update) return std::nullopt;
+    if (mode == "summary" && !d.summary_reference())
+        return Outcome{"error", "no reference: no " + d.summary + " (postimpact suite SUITE --update stores one)"};
+    if (!d.plot_reference() && !d.summary_reference())
+        return Outcome{"error", "no reference: neither " + d.ref_dir + "/d3plot nor " + d.summary +
+                                    " (postimpact suite SUITE --update stores one)"};
+    return std::nullopt;
+}
+
+// Runs impact3d on the deck in the job's run folder; an outcome when the run did not end normally.
+std::optional<Outcome> run_deck_impact3d(const SuiteOptions& opt, DeckJob& job) {
     const double t0 = now_s();
     int rc = 0;
     bool timed_out = false;
+    const std::string run_log = (job.dir / "run.log").string();
     try {
-        std::vector<std::string> argv = d.impact3d_args();
+        std::vector<std::string> argv = job.d.impact3d_args();
         argv.insert(argv.begin(), find_impact3d(opt));
-        rc = wait_exit(spawn(argv, run.string(), (dir / "run.log").string()), d.timeout, timed_out);
+        rc = wait_exit(spawn(argv, job.run.string(), run_log), job.d.timeout, timed_out);
     } catch (const std::exception& e) {
-        return finish("error", e.what());
+        return Outcome{"error", e.what()};
     }
-    kv["run_seconds"] = g6(now_s() - t0);
-    kv["run_exit"] = std::to_string(rc);
+    job.kv["run_seconds"] = g6(now_s() - t0);
+    job.kv["run_exit"] = std::to_string(rc);
     if (timed_out) {
-        const std::string why = "timeout after " + g6(d.timeout) + " s";
-        findings.push_back(why + ": impact3d was killed; the end of run.log: " + tail_lines((dir / "run.log").string(), 3));
-        return finish("fail", why + " (impact3d killed)");
+        const std::string why = "timeout after " + g6(job.d.timeout) + " s";
+        job.findings.push_back(why + ": impact3d was killed; the end of run.log: " + tail_lines(run_log, 3));
+        return Outcome{"fail", why + " (impact3d killed)"};
     }
     if (rc != 0) {
-        findings.push_back("impact3d exited with " + std::to_string(rc) + "; the end of run.log: " +
-                           tail_lines((dir / "run.log").string(), 3));
-        return finish("error", "impact3d exited with " + std::to_string(rc) + " (run.log)");
+        job.findings.push_back("impact3d exited with " + std::to_string(rc) + "; the end of run.log: " + tail_lines(run_log, 3));
+        return Outcome{"error", "impact3d exited with " + std::to_string(rc) + " (run.log)"};
     }
-    const std::string new_db = (run / "d3plot").string();
-    if (opt.update) {
-        if (mode == "plot") {
-            fs::create_directories(d.ref_dir);
-            for (const auto& e : fs::directory_iterator(d.ref_dir))
-                if (e.path().filename().string().rfind("d3plot", 0) == 0) fs::remove(e.path());
-            for (const auto& e : fs::directory_iterator(run))
-                if (e.path().filename().string().rfind("d3plot", 0) == 0) fs::copy_file(e.path(), fs::path(d.ref_dir) / e.path().filename());
-            return finish("update", "stored " + d.ref_dir + "/d3plot*");
-        }
-        try {
-            const Summary sm = summarize(new_db, (run / "d3hsp").string());
-            fs::create_directories(fs::path(d.summary).parent_path());
-            std::ofstream f(d.summary);
-            write_summary(sm, f);
-            f.close();
-            if (!f) throw std::runtime_error("cannot write " + d.summary);
-        } catch (const std::exception& e) {
-            return finish("error", e.what());
-        }
-        return finish("update", "stored " + d.summary);
+    return std::nullopt;
+}
+
+// --update: the run's d3plot family (plot mode) or its summary becomes the reference.
+Outcome store_deck_reference(const DeckJob& job) {
+    const SuiteDeck& d = job.d;
+    if (job.mode == "plot") {
+        fs::create_directories(d.ref_dir);
+        for (const auto& e : fs::directory_iterator(d.ref_dir))
+            if (e.path().filename().string().rfind("d3plot", 0) == 0) fs::remove(e.path());
+        for (const auto& e : fs::directory_iterator(job.run))
+            if (e.path().filename().string().rfind("d3plot", 0) == 0) fs::copy_file(e.path(), fs::path(d.ref_dir) / e.path().filename());
+        return {"update", "stored " + d.ref_dir + "/d3plot*"};
     }
-    // the comparison
-    const double t1 = now_s();
-    std::ofstream cmp(dir / "compare.txt");
-    int crc = 0;
-    CompareResult res;
     try {
-        if (mode == "plot") {
+        const Summary sm = summarize(job.new_db(), (job.run / "d3hsp").string());
+        fs::create_directories(fs::path(d.summary).parent_path());
+        std::ofstream f(d.summary);
+        write_summary(sm, f);
+        f.close();
+        if (!f) throw std::runtime_error("cannot write " + d.summary);
+    } catch (const std::exception& e) {
+        return {"error", e.what()};
+    }
+    return {"update", "stored " + d.summary};
+}
+
+const char* compare_status(int crc) { return crc == 0 ? "pass" : crc == 1 ? "fail" : "error"; }
+
+// The one-line message of a plot comparison: the worst value and the counts outside tolerance.
+std::string plot_compare_message(const CompareResult& res, int crc) {
+    if (crc == 2) return "not comparable: " + res.problem;
+    if (crc != 1) return "";
+    std::string message, counts;
+    for (const auto& r : res.fields)
+        if (r.outside > 0) counts += (counts.empty() ? "" : ", ") + std::to_string(r.outside) + " " + r.field;
+    if (!res.worst.empty()) message = "worst: " + finding_text(res.worst.front()) + "; values outside tolerance: " + counts;
+    if (res.states_a != res.states_b)
+        message += std::string(message.empty() ? "" : "; ") + "the reference has " + std::to_string(res.states_a) +
+                   " states, the run " + std::to_string(res.states_b);
+    return message;
+}
+
+// Compares the run's d3plot family with the reference's (compare.txt), then makes the pictures.
+Outcome compare_deck_plot(const SuiteOptions& opt, const Tolerances& tol, DeckJob& job, std::ostream& log) {
+    const double t1 = now_s();
+    const std::string ref = (fs::path(job.d.ref_dir) / "d3plot").string();
+    CompareResult res;
+    int crc = 0;
+    {
+        std::ofstream cmp(job.dir / "compare.txt");
+        try {
             CompareOptions co;
             co.tol = tol;
             co.report = 10;
-            crc = compare_databases((fs::path(d.ref_dir) / "d3plot").string(), new_db, co, cmp, &res);
-        } else {
-            const Summary s = summarize(new_db, (run / "d3hsp").string());
-            std::ofstream sf(dir / "summary.txt");
+            crc = compare_databases(ref, job.new_db(), co, cmp, &res);
+        } catch (const std::exception& e) {
+            cmp << e.what() << "\n";
+            return {"error", std::string("cannot compare: ") + e.what()};
+        }
+    }
+    job.kv["compare_seconds"] = g6(now_s() - t1);
+    for (const auto& f : res.worst) job.findings.push_back(finding_text(f));
+    const std::string message = plot_compare_message(res, crc);
+    if (opt.pictures && crc != 2) {
+        try {
+            job.pics = make_pictures(ref, job.new_db(), job.dir, res.worst.empty() ? nullptr : &res.worst.front(), job.kv, log);
+        } catch (const std::exception& e) {
+            log << job.d.name << ": no pictures: " << e.what() << "\n";
+        }
+    }
+    return {compare_status(crc), message};
+}
+
+// Compares the run's summary (summary.txt) with the stored one (compare.txt); each line outside is a finding.
+Outcome compare_deck_summary(const Tolerances& tol, DeckJob& job) {
+    const double t1 = now_s();
+    int crc = 0;
+    {
+        std::ofstream cmp(job.dir / "compare.txt");
+        try {
+            const Summary s = summarize(job.new_db(), (job.run / "d3hsp").string());
+            std::ofstream sf(job.dir / "summary.txt");
             write_summary(s, sf);
             std::ostringstream text;
-            crc = compare_summaries(read_summary(d.summary), s, tol, text, d.summary, (dir / "summary.txt").string());
+            crc = compare_summaries(read_summary(job.d.summary), s, tol, text, job.d.summary, (job.dir / "summary.txt").string());
             cmp << text.str();
             std::istringstream lines(text.str());
             for (std::string l; std::getline(lines, l);)
                 if (l.find("OUTSIDE") != std::string::npos || l.find("MISSING") != std::string::npos ||
                     l.find("DIFFERENT (not") != std::string::npos) {
                     while (l.find("  ") != std::string::npos) l.replace(l.find("  "), 2, " ");
-                    findings.push_back("summary " + l);
+                    job.findings.push_back("summary " + l);
                 }
-        }
-    } catch (const std::exception& e) {
-        cmp << e.what() << "\n";
-        return finish("error", std::string("cannot compare: ") + e.what());
-    }
-    cmp.close();
-    kv["compare_seconds"] = g6(now_s() - t1);
-    std::string message;
-    if (mode == "plot") {
-        for (const auto& f : res.worst) findings.push_back(finding_text(f));
-        if (crc == 2) message = "not comparable: " + res.problem;
-        else if (crc == 1) {
-            std::string counts;
-            for (const auto& r : res.fields)
-                if (r.outside > 0) counts += (counts.empty() ? "" : ", ") + std::to_string(r.outside) + " " + r.field;
-            if (!res.worst.empty()) message = "worst: " + finding_text(res.worst.front()) + "; values outside tolerance: " + counts;
-            if (res.states_a != res.states_b)
-                message += std::string(message.empty() ? "" : "; ") + "the reference has " + std::to_string(res.states_a) +
-                           " states, the run " + std::to_string(res.states_b);
-        }
-    } else if (crc != 0) {
-        message = findings.empty() ? "summaries differ" : findings.front();
-    }
-    if (opt.pictures && mode == "plot" && crc != 2) {
-        try {
-            pics = make_pictures((fs::path(d.ref_dir) / "d3plot").string(), new_db, dir,
-                                 res.worst.empty() ? nullptr : &res.worst.front(), kv, log);
         } catch (const std::exception& e) {
-            log << d.name << ": no pictures: " << e.what() << "\n";
+            cmp << e.what() << "\n";
+            return {"error", std::string("cannot compare: ") + e.what()};
         }
     }
-    return finish(crc == 0 ? "pass" : crc == 1 ? "fail" : "error", message);
+    job.kv["compare_seconds"] = g6(now_s() - t1);
+    const std::string message = crc == 0 ? "" : job.findings.empty() ? "summaries differ" : job.findings.front();
+    return {compare_status(crc), message};
+}
+
+}  // namespace
+
+int run_suite_deck(const SuiteOptions& opt, const SuiteDeck& d, std::ostream& log) {
+    DeckJob job = start_deck_job(opt, d);
+    if (auto o = missing_reference(opt, d, job.mode)) return finish_deck_job(job, *o, log);
+    Tolerances tol;
+    try {
+        if (!opt.update) tol = deck_tolerances(opt, d);
+    } catch (const std::exception& e) {
+        return finish_deck_job(job, {"error", e.what()}, log);
+    }
+    if (auto o = run_deck_impact3d(opt, job)) return finish_deck_job(job, *o, log);
+    if (opt.update) return finish_deck_job(job, store_deck_reference(job), log);
+    const Outcome o = job.mode == "plot" ? compare_deck_plot(opt, tol, job, log) : compare_deck_summary(tol, job);
+    return finish_deck_job(job, o, log);
 }
 
 int run_suite(const SuiteOptions& opt, std::ostream& log) {
