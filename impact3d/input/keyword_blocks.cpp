@@ -11,7 +11,7 @@ KeywordValues::KeywordValues(const Block& b, std::size_t k, const KeywordCardLay
                              const ParamTable* params, const std::string* label)
     : layout_(layout),
       card_(b.data[k], b.keyword + (label ? " " + *label : layout.card[0] ? std::string(" ") + layout.card : std::string()),
-            std::vector<int>(std::size_t(layout.count), b.long_fmt ? 20 : layout.width), diag) {
+            layout.columns(b.long_fmt, b.i10), diag) {
   card_.set_params(params);
   const std::size_t n = layout.fields.size();
   values_.assign(n, 0.0);
@@ -28,11 +28,11 @@ double KeywordValues::value(std::size_t k) {
   if (f.zero_is_blank && v == 0) v = f.blank;
   values_[k] = v;
   for (std::size_t j = 0; j < layout_.fields.size(); ++j)
-    if (read_[j] && layout_.check_point(layout_.fields[j]) == f.index) check(j);
+    if (read_[j] && layout_.check_point(layout_.fields[j]) == f.index) check_field(j);
   const int point = layout_.check_point(f);  // read after its check point: checked now
   if (point != f.index)
     for (std::size_t j = 0; j < layout_.fields.size(); ++j)
-      if (layout_.fields[j].index == point && read_[j]) check(k);
+      if (layout_.fields[j].index == point && read_[j]) check_field(k);
   return v;
 }
 
@@ -41,7 +41,14 @@ KeywordValues& KeywordValues::rest() {
   return *this;
 }
 
-void KeywordValues::check(std::size_t k) {
+bool KeywordValues::check(std::string_view name) {
+  const std::size_t k = index(name);
+  value(k);
+  check_field(k);
+  return passed_[k] != 0;
+}
+
+void KeywordValues::check_field(std::size_t k) {
   const KeywordField& f = layout_.fields[k];
   for (const KeywordCheck& c : f.checks) {
     if (!c.fires(values_[k])) continue;

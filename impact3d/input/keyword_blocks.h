@@ -364,6 +364,9 @@ class KeywordValues {
   // Read; no check of the table held for the field (its value may be used as it is).
   bool passed(std::string_view name) { return value(index(name)), passed_[index(name)] != 0; }
   Ref ref(std::string_view name) const { return card_.ref(layout_.fields[index(name)].index); }
+  // The table's checks of a field checked where the reader says (kByReader): read, checked
+  // now; true if none held.
+  bool check(std::string_view name);
   void error(int id, std::string_view name, std::string detail = {});
   KeywordValues& rest();
   KCard& card() { return card_; }
@@ -371,7 +374,7 @@ class KeywordValues {
  private:
   std::size_t index(std::string_view name) const;
   double value(std::size_t k);
-  void check(std::size_t k);
+  void check_field(std::size_t k);
   const KeywordCardLayout& layout_;
   KCard card_;
   std::vector<double> values_;

@@ -68,6 +68,94 @@ KeywordField shear_factor(const char* detail) {
   return {"SHRF", 2, E, 1.0, true, {outside(0, 1, 1003, detail, true)}, "shear factor"};
 }
 
+// An id read by the family's reader and checked where it says (after the element's other
+// cards): below 1 is error 1201.
+KeywordField positive_id(const char* name, const char* detail, const char* meaning) {
+  return {name, 0, I, 0, false, {below(1, 1201, detail)}, meaning, kByReader};
+}
+// Fields of a card with no check but its numbers: node ids N<first>..N<last> at index0...
+std::vector<KeywordField> node_fields(int first, int last, int index0, std::vector<KeywordCheck> checks = {},
+                                      const char* meaning = "node") {
+  static const char* const names[] = {"N1", "N2", "N3", "N4", "N5", "N6", "N7", "N8", "N9", "N10"};
+  std::vector<KeywordField> f;
+  for (int n = first; n <= last; ++n) f.push_back({names[n - 1], index0 + n - first, I, 0, false, checks, meaning});
+  return f;
+}
+template <class... More>
+std::vector<KeywordField> fields_of(std::vector<KeywordField> a, const More&... more) {
+  (a.insert(a.end(), more.begin(), more.end()), ...);
+  return a;
+}
+
+// *NODE and *ELEMENT_...: the bulk of a deck.  Their ids are 8 columns (10 in I10 format, 20 in
+// long format); a card that is plain and passes every check is read by a fast path with the
+// same columns (keyword_nodes_elements.cpp).
+std::vector<KeywordSpec> nodes_elements_specs() {
+  const KeywordFamily F = KeywordFamily::nodes_elements;
+  const char* const eid = "element id (the card is then named \"element EID\" in messages); < 1: error 1201 once the element's cards are read";
+  std::vector<KeywordSpec> t;
+  t.push_back({{"NODE"}, F, false,
+               {{"", 6, 16, after_card, {
+                   {"NID", 0, I, 0, false, {below(1, 1201, "node ids must be positive")},
+                    "node id (the card is then named \"node NID\" in messages); < 1: error 1201 and the card's other checks are not made", kByReader},
+                   {"X", 1, E, 0, false, {}, "coordinates"},
+                   {"Y", 2, E, 0, false, {}, ""},
+                   {"Z", 3, E, 0, false, {}, ""},
+                   {"TC", 4, I, 0, false, {outside(0, 7, 1216)}, "translational constraint 0-7 (as a DYNA3D boundary code; out of range: none)", kByReader},
+                   {"RC", 5, I, 0, false, {outside(0, 7, 1216)}, "rotational constraint 0-7 (shell and beam nodes)", kByReader},
+               }, "one card a node; blank cards skipped", {8, 16, 16, 16, 8, 8}}},
+               "I10 format: NID, TC and RC have 10 columns"});
+  t.push_back({{"ELEMENT_SOLID"}, F, false,
+               {{"", 10, 8, per_field, fields_of(std::vector<KeywordField>{
+                   positive_id("EID", "element ids must be positive", eid),
+                   {"PID", 1, I, 0, false, {}, "part"}}, node_fields(1, 8, 2)),
+                 "one-line form"},
+                {"", 2, 8, per_field, {
+                   positive_id("EID", "element ids must be positive", eid),
+                   {"PID", 1, I, 0, false, {}, "part"},
+                 }, "two-line form"},
+                {"node card", 10, 8, per_field, fields_of(node_fields(1, 8, 0),
+                   node_fields(9, 10, 8, {}, "10-node tetrahedra: error 1102 once for all of them (the first named)")),
+                 "two-line form, named \"element EID node card\"; missing: error 1316"}},
+               "one card an element when the first card is longer than two ids (comma format: two commas or more), else "
+               "EID PID and the node card; N5-N8 blank after N4 (a tetrahedron written with 4 nodes): N4 repeated"});
+  t.push_back({{"ELEMENT_SHELL", "ELEMENT_SHELL_THICKNESS"}, F, false,
+               {{"", 10, 8, per_field, fields_of(std::vector<KeywordField>{
+                   positive_id("EID", "element ids must be positive", eid),
+                   {"PID", 1, I, 0, false, {}, "part"}}, node_fields(1, 4, 2, {}, "node (N4 0: N3, a triangle)"),
+                   node_fields(5, 8, 6, {nonzero(1102, "8-node shells")}, "8-node shells")),
+                 ""},
+                {"thickness card", 5, 16, per_field, {
+                   {"THIC1", 0, E, 0, false, {below(0, 1241)}, "thickness at node 1 (0: the section's)"},
+                   {"THIC2", 1, E, 0, false, {below(0, 1241)}, "at node 2"},
+                   {"THIC3", 2, E, 0, false, {below(0, 1241)}, "at node 3"},
+                   {"THIC4", 3, E, 0, false, {below(0, 1241)}, "at node 4"},
+                   {"BETA", 4, E, 0, false, {nonzero(1102, "material angles (orthotropic materials)")}, "material angle"},
+                 }, "_THICKNESS, named \"element EID thickness card\"; missing: error 1316"}},
+               "an element with a refused field is left out"});
+  t.push_back({{"ELEMENT_BEAM", "ELEMENT_BEAM_THICKNESS"}, F, false,
+               {{"", 10, 8, per_field, fields_of(std::vector<KeywordField>{
+                   positive_id("EID", "element ids must be positive", eid),
+                   {"PID", 1, I, 0, false, {}, "part"}}, node_fields(1, 2, 2),
+                   std::vector<KeywordField>{
+                   {"N3", 4, I, 0, false, {}, "orientation node (0: none)"},
+                   {"RT1", 5, I, 0, false, {nonzero(1102, "beam end releases")}, "end releases"},
+                   {"RR1", 6, I, 0, false, {nonzero(1102, "beam end releases")}, ""},
+                   {"RT2", 7, I, 0, false, {nonzero(1102, "beam end releases")}, ""},
+                   {"RR2", 8, I, 0, false, {nonzero(1102, "beam end releases")}, ""},
+                   {"LOCAL", 9, I, 0, false, {outside(0, 2, 1003, "1 global, 2 local (0: 2)")}, "release coordinates"}}),
+                 ""},
+                {"thickness card", 5, 16, per_field, {
+                   {"PARM1", 0, E, 0, false, {below(0, 1251)}, "TS1 of this element (0: the section's)"},
+                   {"PARM2", 1, E, 0, false, {below(0, 1251)}, "TS2"},
+                   {"PARM3", 2, E, 0, false, {below(0, 1251)}, "TT1"},
+                   {"PARM4", 3, E, 0, false, {below(0, 1251)}, "TT2"},
+                   plain("PARM5", 4, E),
+                 }, "_THICKNESS, named \"element EID thickness card\"; missing: error 1316"}},
+               "an element with a refused field is left out"});
+  return t;
+}
+
 std::vector<KeywordSpec> parts_sections_specs() {
   const KeywordFamily F = KeywordFamily::parts_sections;
   std::vector<KeywordSpec> t;
@@ -560,8 +648,14 @@ const KeywordField& KeywordCardLayout::field(std::string_view name) const {
   throw std::logic_error("keyword card table: no field " + std::string(name));
 }
 
+std::vector<int> KeywordCardLayout::columns(bool long_fmt, bool i10) const {
+  std::vector<int> w = widths.empty() ? std::vector<int>(std::size_t(count), width) : widths;
+  for (int& c : w) c = long_fmt ? 20 : i10 && c == 8 ? 10 : c;
+  return w;
+}
+
 int KeywordCardLayout::check_point(const KeywordField& f) const {
-  if (f.checked_after >= 0) return f.checked_after;
+  if (f.checked_after >= 0 || f.checked_after == kByReader) return f.checked_after;
   return order == CheckOrder::after_card && !fields.empty() ? fields.back().index : f.index;
 }
 
@@ -573,7 +667,8 @@ const KeywordCardLayout& KeywordSpec::card(std::string_view label, std::string_v
 
 const std::vector<KeywordSpec>& all_keyword_specs() {
   static const std::vector<KeywordSpec> t = [] {
-    std::vector<KeywordSpec> all = parts_sections_specs();
+    std::vector<KeywordSpec> all = nodes_elements_specs();
+    for (KeywordSpec& s : parts_sections_specs()) all.push_back(std::move(s));
     for (KeywordSpec& s : sets_boxes_specs()) all.push_back(std::move(s));
     for (KeywordSpec& s : loads_bcs_specs()) all.push_back(std::move(s));
     for (KeywordSpec& s : control_database_specs()) all.push_back(std::move(s));
@@ -599,13 +694,23 @@ std::string keyword_tables_markdown() {
     else if (s.note[0]) os << s.note << ".\n\n";
     if (s.once) os << "Given more than once: warning 2010, the last one is used.\n\n";
     for (const KeywordCardLayout& c : s.cards) {
-      os << "**" << (c.card[0] ? c.card : "card 1") << "**" << (c.when[0] ? std::string(" (") + c.when + ")" : std::string())
-         << ": " << c.count << " fields of " << c.width << " columns (20 in long format)";
+      const std::vector<int> w = c.columns(false, false);
+      os << "**" << (c.card[0] ? c.card : "card 1") << "**" << (c.when[0] ? std::string(" (") + c.when + ")" : std::string()) << ": ";
+      if (c.widths.empty()) {
+        os << c.count << " fields of " << c.width << " columns";
+      } else {
+        os << c.count << " fields of";
+        for (std::size_t k = 0; k < w.size(); ++k) os << (k ? ", " : " ") << w[k];
+        os << " columns";
+      }
+      os << (c.width == 8 || (!c.widths.empty() && c.columns(false, true) != w) ? " (8-column fields 10 in I10 format; 20 in long format)"
+                                                                                : " (20 in long format)");
       if (c.order == CheckOrder::after_card) os << "; checked once the card is read";
       os << "\n\n| field | columns | kind | blank | meaning | checks |\n|---|---|---|---|---|---|\n";
       for (const KeywordField& f : c.fields) {
-        const int c1 = 1 + f.index * c.width;
-        os << "| " << f.name << " | " << c1 << "-" << c1 + c.width - 1 << " | " << (f.kind == FieldKind::real ? "E" : "I")
+        int c1 = 1;
+        for (int k = 0; k < f.index; ++k) c1 += w[std::size_t(k)];
+        os << "| " << f.name << " | " << c1 << "-" << c1 + w[std::size_t(f.index)] - 1 << " | " << (f.kind == FieldKind::real ? "E" : "I")
            << " | " << number(f.blank) << (f.zero_is_blank ? " (also for 0)" : "") << " | " << f.meaning << " | ";
         for (std::size_t k = 0; k < f.checks.size(); ++k) {
           const KeywordCheck& ch = f.checks[k];

@@ -46,8 +46,12 @@ struct KeywordField {
   std::vector<KeywordCheck> checks;  // the first that holds gives its message
   const char* meaning;               // one line for the tables
   int checked_after = -1;            // the checks run once the field at this position is read
-                                     // (-1: this field; the card's CheckOrder)
+                                     // (-1: this field; the card's CheckOrder; kByReader: when
+                                     // the family's reader asks, KeywordValues::check)
 };
+// KeywordField::checked_after: the checks run where the family's reader says (e.g. an element
+// id once its node card is read too).
+constexpr int kByReader = -2;
 
 // When the checks of a card run: each right after its field is read, or all after every
 // field of the card is read (as the reader has always reported them: the message order).
@@ -60,13 +64,19 @@ struct KeywordCardLayout {
   CheckOrder order;
   std::vector<KeywordField> fields;
   const char* when;   // when the card is read ("" always; else e.g. "when given", "ELFORM 2")
+  std::vector<int> widths = {};  // columns of each field in standard format when they differ
+                                 // (*NODE: 8 16 16 16 8 8); empty: `count` fields of `width`
   const KeywordField& field(std::string_view name) const;  // every name a reader asks for exists
+  // The columns of each field: standard format, I10 format (a field of 8 columns has 10: the
+  // ids of *NODE and *ELEMENT_...) or long format (20 each).
+  std::vector<int> columns(bool long_fmt, bool i10) const;
   // The position after whose reading the checks of field f run.
   int check_point(const KeywordField& f) const;
 };
 
 // The families of keywords (one reader file each, keyword_<family>.cpp).
 enum class KeywordFamily {
+  nodes_elements,    // *NODE, *ELEMENT_SOLID / _SHELL / _BEAM (keyword_nodes_elements.cpp)
   parts_sections,    // *PART, *SECTION_..., *HOURGLASS (keyword_parts_sections.cpp)
   sets_boxes,        // *DEFINE_BOX (keyword_sets_boxes.cpp)
   loads_bcs,         // *LOAD_..., *BOUNDARY_..., *INITIAL_..., *DAMPING_GLOBAL (keyword_loads_bcs.cpp)

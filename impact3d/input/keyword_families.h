@@ -14,6 +14,76 @@
 
 namespace impact3d::kw {
 
+// ---------------------------------------------------------------- nodes and elements
+// (keyword_nodes_elements.cpp).  Nodes and solids are the bulk of a deck: they keep their card
+// (file and line) and the widths it was read with, and find the columns of a field again
+// (field_ref) only when a message needs them.
+
+// *NODE columns by format: 0 standard (I8 3E16 I8 I8), 1 long (6 x 20), 2 I10 (I10 3E16 I10 I10).
+const std::vector<int>& node_widths(int format);
+// *ELEMENT_... columns: n fields (2 or 10) of an id width (8, 10 or 20).
+const std::vector<int>& id_widths(int n, int idw);
+// Boundary code 0-7 -> fixed translational components (bit 0 x, bit 1 y, bit 2 z).
+int bc_bits(int code);
+
+struct RNode {
+  int id = 0;
+  std::int8_t tc = 0;
+  std::uint8_t format = 0;  // node_widths
+  double x = 0, y = 0, z = 0;
+  KLine card;
+  Ref ref() const { return field_ref(card, node_widths(format), 0); }  // id field
+};
+struct RElem {
+  int id = 0, pid = 0;
+  std::array<int, 8> n{};
+  KLine card;                        // EID PID (and N1-N8 in the one-line form)
+  const DeckLine* node_card = nullptr;  // N1-N10 of the two-line form (same file), else null
+  std::uint8_t idw = 8;
+  const std::vector<int>& widths1() const { return id_widths(node_card ? 2 : 10, idw); }
+  Ref ref() const { return field_ref(card, widths1(), 0); }      // id field
+  Ref pid_ref() const { return field_ref(card, widths1(), 1); }
+  Ref node_ref(int j) const {
+    return node_card ? field_ref({card.file, node_card}, id_widths(10, idw), j)
+                     : field_ref(card, widths1(), 2 + j);
+  }
+};
+// *ELEMENT_SHELL (and _THICKNESS) card
+struct RShell {
+  int id = 0, pid = 0;
+  std::array<int, 4> n{};
+  std::array<double, 4> t{};   // THIC1-THIC4 (0: the section's)
+  Ref ref, pid_ref;
+  std::array<Ref, 4> node_refs;
+  int line = 0;
+  const DeckFile* file = nullptr;
+};
+// *ELEMENT_BEAM (and _THICKNESS) card
+struct RBeam {
+  int id = 0, pid = 0;
+  std::array<int, 3> n{};      // N1 N2 N3 (N3 0: none)
+  std::array<double, 4> t{};   // _THICKNESS: TS1 TS2 TT1 TT2 (0: the section's)
+  Ref ref, pid_ref;
+  std::array<Ref, 3> node_refs;
+  int line = 0;
+  const DeckFile* file = nullptr;
+};
+
+struct KeywordMesh {
+  std::vector<RNode, HugePageAllocator<RNode>> nodes;  // in deck order
+  std::vector<RElem, HugePageAllocator<RElem>> elems;
+  std::vector<RShell> shells;
+  std::vector<RBeam> beams;
+  std::vector<std::pair<int, int>> node_rc;  // *NODE RC: node id, rotation bits
+  // *ELEMENT_SOLID cards of 10-node tetrahedra (N9 or N10 not 0): refused in one message
+  long long tet10_count = 0;
+  std::pair<Ref, int> tet10_first;
+};
+
+// Reads *NODE, *ELEMENT_SOLID, *ELEMENT_SHELL (_THICKNESS) and *ELEMENT_BEAM (_THICKNESS) into
+// m; false if the keyword is none of them.
+bool read_nodes_elements(const Block& b, KeywordContext& ctx, KeywordMesh& m);
+
 // ---------------------------------------------------------------- parts and sections
 // (keyword_parts_sections.cpp)
 // *SECTION_BEAM

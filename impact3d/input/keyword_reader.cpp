@@ -39,75 +39,13 @@ namespace {
 
 using namespace kw;
 
-// Boundary code 0-7 <-> fixed translational components (bit 0 x, bit 1 y, bit 2 z).
-int bc_bits(int code) {
-  return (bc_fixes_x(code) ? 1 : 0) | (bc_fixes_y(code) ? 2 : 0) | (bc_fixes_z(code) ? 4 : 0);
-}
+// Fixed translational components (bit 0 x, bit 1 y, bit 2 z) -> boundary code 0-7 (bc_bits).
 int bc_code(int bits) {
   static const int code[8] = {0, 1, 2, 4, 3, 6, 5, 7};  // index = bits: x=1, y=2, z=4
   return code[bits & 7];
 }
 
-// Raw records, before resolution.  Nodes and solids are the bulk of a deck: they keep their
-// card (file and line) and the widths it was read with, and find the columns of a field again
-// (field_ref) only when a message needs them.
-
-// *NODE field widths: 0 standard (I8 3E16 I8 I8), 1 long (6 x 20), 2 I10 (I10 3E16 I10 I10).
-const std::vector<int>& node_widths(int format) {
-  static const std::vector<int> w[3] = {{8, 16, 16, 16, 8, 8}, {20, 20, 20, 20, 20, 20}, {10, 16, 16, 16, 10, 10}};
-  return w[format];
-}
-// *ELEMENT_SOLID widths: n fields (2 or 10) of an id width (8, 10 or 20).
-const std::vector<int>& id_widths(int n, int idw) {
-  static const std::vector<int> w[2][3] = {
-      {std::vector<int>(2, 8), std::vector<int>(2, 10), std::vector<int>(2, 20)},
-      {std::vector<int>(10, 8), std::vector<int>(10, 10), std::vector<int>(10, 20)}};
-  return w[n == 2 ? 0 : 1][idw == 8 ? 0 : idw == 10 ? 1 : 2];
-}
-
-struct RNode {
-  int id = 0;
-  std::int8_t tc = 0;
-  std::uint8_t format = 0;  // node_widths
-  double x = 0, y = 0, z = 0;
-  KLine card;
-  Ref ref() const { return field_ref(card, node_widths(format), 0); }  // id field
-};
-struct RElem {
-  int id = 0, pid = 0;
-  std::array<int, 8> n{};
-  KLine card;                        // EID PID (and N1-N8 in the one-line form)
-  const DeckLine* node_card = nullptr;  // N1-N10 of the two-line form (same file), else null
-  std::uint8_t idw = 8;
-  const std::vector<int>& widths1() const { return id_widths(node_card ? 2 : 10, idw); }
-  Ref ref() const { return field_ref(card, widths1(), 0); }      // id field
-  Ref pid_ref() const { return field_ref(card, widths1(), 1); }
-  Ref node_ref(int j) const {
-    return node_card ? field_ref({card.file, node_card}, id_widths(10, idw), j)
-                     : field_ref(card, widths1(), 2 + j);
-  }
-};
-// *ELEMENT_SHELL (and _THICKNESS) card
-struct RShell {
-  int id = 0, pid = 0;
-  std::array<int, 4> n{};
-  std::array<double, 4> t{};   // THIC1-THIC4 (0: the section's)
-  Ref ref, pid_ref;
-  std::array<Ref, 4> node_refs;
-  int line = 0;
-  const DeckFile* file = nullptr;
-};
-// *ELEMENT_BEAM (and _THICKNESS) card
-struct RBeam {
-  int id = 0, pid = 0;
-  std::array<int, 3> n{};      // N1 N2 N3 (N3 0: none)
-  std::array<double, 4> t{};   // _THICKNESS: TS1 TS2 TT1 TT2 (0: the section's)
-  Ref ref, pid_ref;
-  std::array<Ref, 3> node_refs;
-  int line = 0;
-  const DeckFile* file = nullptr;
-};
-// *SECTION_BEAM
+// Raw records, before resolution (the families' records are in keyword_families.h).
 struct RMat {
   const MaterialType* type = nullptr;  // material_types.h
   MaterialData md;                     // type, rho and the type's parameters
@@ -237,18 +175,19 @@ class KeywordReader {
   // raw records
   KeywordSetsBoxes sb_;  // sets, boxes, coordinate systems (keyword_sets_boxes.cpp)
   KeywordLoads ld_;  // loads, prescribed motions, damping, initial conditions, constraints (keyword_loads_bcs.cpp)
-  std::vector<RNode, HugePageAllocator<RNode>> nodes_;
-  std::vector<RElem, HugePageAllocator<RElem>> elems_;
+  KeywordMesh me_;  // nodes and elements (keyword_nodes_elements.cpp)
+  std::vector<RNode, HugePageAllocator<RNode>>& nodes_ = me_.nodes;
+  std::vector<RElem, HugePageAllocator<RElem>>& elems_ = me_.elems;
   KeywordParts ps_;  // parts, sections, hourglass (keyword_parts_sections.cpp)
   std::vector<RPart>& parts_ = ps_.parts;
   std::map<int, RSection>& sections_ = ps_.sections;
   std::map<int, RShellSection>& shell_sections_ = ps_.shell_sections;
-  std::vector<RShell> shells_;
+  std::vector<RShell>& shells_ = me_.shells;
   std::vector<std::vector<int>> part_shells_;  // per part: its shells (indices into Model::shell_nodes)
   std::map<int, RBeamSection>& beam_sections_ = ps_.beam_sections;
-  std::vector<RBeam> beams_;
+  std::vector<RBeam>& beams_ = me_.beams;
   std::vector<std::vector<int>> part_beams_;  // per part: its beams (indices into Model::beam_nodes)
-  std::vector<std::pair<int, int>> node_rc_;  // *NODE RC: node id, rotation bits
+  std::vector<std::pair<int, int>>& node_rc_ = me_.node_rc;
   std::map<int, RMat> mats_;
   std::map<int, std::pair<ErosionData, Ref>> erosion_;  // *MAT_ADD_EROSION by MID
   std::map<int, RHourglass>& hourglasses_ = ps_.hourglasses;
@@ -274,9 +213,8 @@ class KeywordReader {
   std::map<int, RBox>& boxes_ = sb_.boxes;
   std::vector<RCoordSystem> coord_defs_;  // resolved into coords_ once the nodes are known
   CoordinateTable coords_;
-  // *ELEMENT_SOLID cards of 10-node tetrahedra (N9 or N10 not 0): refused in one message
-  long long tet10_count_ = 0;
-  std::pair<Ref, int> tet10_first_;
+  long long& tet10_count_ = me_.tet10_count;
+  std::pair<Ref, int>& tet10_first_ = me_.tet10_first;
   std::vector<LoadCurve>& curves_ = ld_.curves;
   std::vector<Ref>& curve_refs_ = ld_.curve_refs;
   std::map<int, int> curve_index_;       // LCID -> index in curves_ (= Model::load_curves)
@@ -877,21 +815,14 @@ class KeywordReader {
       if (read_control_database(b, ctx_, ctl_)) continue;  // keyword_control_database.cpp
       if (read_parts_sections(b, ctx_, ps_)) continue;      // keyword_parts_sections.cpp
       if (read_loads_bcs(b, ctx_, ld_)) continue;           // keyword_loads_bcs.cpp
+      if (read_nodes_elements(b, ctx_, me_)) continue;      // keyword_nodes_elements.cpp
       if (n == "TITLE") {
         for (const KLine& l : b.data) {
           m_.title = rtrim(l.line->text.substr(0, std::min<std::size_t>(80, l.line->text.size())));
           break;
         }
-      } else if (n == "NODE") {
-        parse_node(b);
-      } else if (n == "ELEMENT_SOLID") {
-        parse_element_solid(b);
       } else if (const MaterialType* mt = find_material_type_by_keyword(n)) {
         parse_mat(b, *mt);
-      } else if (n == "ELEMENT_SHELL" || n == "ELEMENT_SHELL_THICKNESS") {
-        parse_element_shell(b, n == "ELEMENT_SHELL_THICKNESS");
-      } else if (n == "ELEMENT_BEAM" || n == "ELEMENT_BEAM_THICKNESS") {
-        parse_element_beam(b, n == "ELEMENT_BEAM_THICKNESS");
       } else if (const EosForm* ef = find_eos_form_by_keyword(n)) {
         parse_eos(b, *ef);
       } else if (n == "MAT_ADD_EROSION") {
@@ -979,237 +910,6 @@ class KeywordReader {
       else if (num && tok.size() == 3 && tok[1] == "REACTION_PRINT_FLAG") reaction_flag_ = int(v);
       else if (num && tok.size() == 4 && tok[1] == "INITIALLY_ELASTIC" && tok[2] == "PART") initially_elastic_.insert(int(v));
       else diag_.add(1312, loc, "unknown IMPACT-3D line: " + rtrim(l.line->text));
-    }
-  }
-
-  void parse_node(const Block& b) {
-    const std::uint8_t format = b.long_fmt ? 1 : b.i10 ? 2 : 0;
-    const std::vector<int>& w = node_widths(format);
-    reserve_for(nodes_, b.data.size());
-    for (std::size_t k = 0; k < b.data.size(); ++k) {
-      if (is_blank(b.data[k].line->text)) continue;
-      if (plain_keyword_card(b.data[k].line->text)) {  // fast path (see plain_keyword_card)
-        const PlainFields f(b.data[k].line->text, w);
-        RNode n;
-        int tc = 0, rc = 0;
-        if (f.i(0, n.id) && f.r(1, n.x) && f.r(2, n.y) && f.r(3, n.z) && f.i(4, tc) && f.i(5, rc) &&
-            n.id >= 1 && tc >= 0 && tc <= 7 && rc == 0) {
-          n.tc = std::int8_t(tc);
-          n.format = format;
-          n.card = b.data[k];
-          nodes_.push_back(n);
-          continue;
-        }
-      }
-      KCard c = card(b, k, "", w);
-      RNode n;
-      n.id = int(c.i(0, "NID"));
-      c.set_card(b.keyword + " node " + std::to_string(n.id));
-      n.format = format;
-      n.card = b.data[k];
-      n.x = c.r(1, "X");
-      n.y = c.r(2, "Y");
-      n.z = c.r(3, "Z");
-      int tc = int(c.i(4, "TC"));
-      int rc = int(c.i(5, "RC"));
-      if (n.id < 1) { c.error(1201, 0, "NID", "node ids must be positive"); continue; }
-      if (tc < 0 || tc > 7) { c.error(1216, 4, "TC"); tc = 0; }
-      n.tc = std::int8_t(tc);
-      if (rc < 0 || rc > 7) c.error(1216, 5, "RC");
-      else if (rc != 0) node_rc_.push_back({n.id, bc_bits(rc)});
-      nodes_.push_back(n);
-    }
-  }
-
-  // Room for up to `more` records (one per data line at most), growing geometrically.
-  template <class V>
-  static void reserve_for(V& v, std::size_t more) {
-    if (v.capacity() - v.size() < more) v.reserve(std::max(v.size() + more, 2 * v.capacity()));
-  }
-
-  void note_rotational(const Ref& r) {
-    if (rotational_spc_++ == 0) rotational_ref_ = r;
-  }
-
-  // A 4-node tetrahedron written with N5-N8 blank (LS-PrePost): LS-DYNA's degenerate hexahedron
-  // N1 N2 N3 N4 N4 N4 N4 N4
-  static void complete_tetrahedron(std::array<int, 8>& n) {
-    if (n[3] != 0 && n[4] == 0 && n[5] == 0 && n[6] == 0 && n[7] == 0)
-      for (int j = 4; j < 8; ++j) n[std::size_t(j)] = n[3];
-  }
-
-  void parse_element_solid(const Block& b) {
-    const int idw = b.long_fmt ? 20 : b.i10 ? 10 : 8;
-    reserve_for(elems_, b.data.size());
-    std::size_t k = 0;
-    while (k < b.data.size()) {
-      if (is_blank(b.data[k].line->text)) { ++k; continue; }
-      const std::string_view t = b.data[k].line->text;
-      bool free = t.find(',') != std::string::npos;
-      bool legacy;
-      if (free) {
-        legacy = std::count(t.begin(), t.end(), ',') >= 2;
-      } else {
-        legacy = rtrim(t).size() > std::size_t(2 * idw);
-      }
-      if (!free && plain_keyword_card(t)) {  // fast path (see plain_keyword_card)
-        RElem e;
-        e.idw = std::uint8_t(idw);
-        e.card = b.data[k];
-        bool ok;
-        if (legacy) {
-          const PlainFields f(t, id_widths(10, idw));
-          ok = f.i(0, e.id) && f.i(1, e.pid);
-          for (int j = 0; j < 8 && ok; ++j) ok = f.i(2 + j, e.n[std::size_t(j)]);
-        } else {
-          ok = k + 1 < b.data.size() && !is_keyword_line(b.data[k + 1].line->text) &&
-               plain_keyword_card(b.data[k + 1].line->text);
-          if (ok) {
-            const PlainFields f1(t, id_widths(2, idw));
-            const PlainFields f2(b.data[k + 1].line->text, id_widths(10, idw));
-            int n9 = 0, n10 = 0;
-            ok = f1.i(0, e.id) && f1.i(1, e.pid) && f2.i(8, n9) && f2.i(9, n10) && n9 == 0 && n10 == 0;
-            for (int j = 0; j < 8 && ok; ++j) ok = f2.i(j, e.n[std::size_t(j)]);
-            e.node_card = b.data[k + 1].line;
-          }
-        }
-        if (ok && e.id >= 1) {
-          complete_tetrahedron(e.n);
-          elems_.push_back(e);
-          k += legacy ? 1 : 2;
-          continue;
-        }
-      }
-      RElem e;
-      e.idw = std::uint8_t(idw);
-      e.card = b.data[k];
-      std::vector<int> w1 = legacy ? std::vector<int>(10, idw) : std::vector<int>(2, idw);
-      KCard c = card(b, k, "", w1);
-      e.id = int(c.i(0, "EID"));
-      c.set_card(b.keyword + " element " + std::to_string(e.id));
-      e.pid = int(c.i(1, "PID"));
-      bool ok = true;
-      if (legacy) {
-        for (int j = 0; j < 8; ++j) {
-          std::string f = "N" + std::to_string(j + 1);
-          e.n[std::size_t(j)] = int(c.i(2 + j, f.c_str()));
-        }
-        ++k;
-      } else {
-        if (k + 1 >= b.data.size() || is_keyword_line(b.data[k + 1].line->text)) {
-          c.error(1316, -1, nullptr, "the node card (N1-N8) of the two-line form is missing");
-          break;
-        }
-        KCard c2 = card(b, k + 1, "element " + std::to_string(e.id) + " node card", std::vector<int>(10, idw));
-        e.node_card = b.data[k + 1].line;
-        for (int j = 0; j < 8; ++j) {
-          std::string f = "N" + std::to_string(j + 1);
-          e.n[std::size_t(j)] = int(c2.i(j, f.c_str()));
-        }
-        for (int j = 8; j < 10; ++j) {
-          std::string f = "N" + std::to_string(j + 1);
-          if (c2.i(j, f.c_str()) != 0 && ok) {  // a 10-node tetrahedron: counted, refused once
-            ok = false;
-            if (tet10_count_++ == 0) tet10_first_ = {c2.ref(j), e.id};
-          }
-        }
-        k += 2;
-      }
-      if (e.id < 1) { c.error(1201, 0, "EID", "element ids must be positive"); continue; }
-      complete_tetrahedron(e.n);
-      if (ok) elems_.push_back(e);
-    }
-  }
-
-  // ---- shells (Belytschko-Tsay): *ELEMENT_SHELL(_THICKNESS), *SECTION_SHELL, *CONTROL_SHELL
-
-  void parse_element_shell(const Block& b, bool thickness) {
-    const int idw = b.long_fmt ? 20 : b.i10 ? 10 : 8;
-    for (std::size_t k = 0; k < b.data.size(); ++k) {
-      if (is_blank(b.data[k].line->text)) continue;
-      KCard c = card(b, k, "", id_widths(10, idw));
-      RShell e;
-      e.id = int(c.i(0, "EID"));
-      c.set_card(b.keyword + " element " + std::to_string(e.id));
-      e.pid = int(c.i(1, "PID"));
-      e.ref = c.ref(0);
-      e.pid_ref = c.ref(1);
-      e.line = c.line();
-      e.file = b.data[k].file;
-      bool ok = true;
-      for (int j = 0; j < 4; ++j) {
-        const std::string f = "N" + std::to_string(j + 1);
-        e.n[std::size_t(j)] = int(c.i(2 + j, f.c_str()));
-        e.node_refs[std::size_t(j)] = c.ref(2 + j);
-      }
-      for (int j = 4; j < 8; ++j) {
-        const std::string f = "N" + std::to_string(j + 1);
-        if (c.i(2 + j, f.c_str()) != 0) { c.error(1102, 2 + j, f.c_str(), "8-node shells"); ok = false; }
-      }
-      if (e.n[3] == 0) e.n[3] = e.n[2];  // triangle given with three nodes
-      if (thickness) {
-        if (k + 1 >= b.data.size() || is_keyword_line(b.data[k + 1].line->text)) {
-          c.error(1316, -1, nullptr, "the thickness card (THIC1-THIC4 BETA) is missing");
-          break;
-        }
-        KCard c2 = card(b, k + 1, "element " + std::to_string(e.id) + " thickness card", W(b, 5, 16));
-        for (int j = 0; j < 4; ++j) {
-          const std::string f = "THIC" + std::to_string(j + 1);
-          e.t[std::size_t(j)] = c2.r(j, f.c_str());
-          if (e.t[std::size_t(j)] < 0) { c2.error(1241, j, f.c_str()); ok = false; }
-        }
-        if (c2.r(4, "BETA") != 0) c2.error(1102, 4, "BETA", "material angles (orthotropic materials)");
-        ++k;
-      }
-      if (e.id < 1) { c.error(1201, 0, "EID", "element ids must be positive"); continue; }
-      if (ok) shells_.push_back(e);
-    }
-  }
-
-  // ---- beams (Hughes-Liu, truss): *ELEMENT_BEAM(_THICKNESS), *SECTION_BEAM
-
-  // *ELEMENT_BEAM: EID PID N1 N2 N3 RT1 RR1 RT2 RR2 LOCAL; _THICKNESS: card 2 PARM1-PARM5 (the
-  // Hughes-Liu sizes TS1 TS2 TT1 TT2 of this element).
-  void parse_element_beam(const Block& b, bool thickness) {
-    const int idw = b.long_fmt ? 20 : b.i10 ? 10 : 8;
-    for (std::size_t k = 0; k < b.data.size(); ++k) {
-      if (is_blank(b.data[k].line->text)) continue;
-      KCard c = card(b, k, "", id_widths(10, idw));
-      RBeam e;
-      e.id = int(c.i(0, "EID"));
-      c.set_card(b.keyword + " element " + std::to_string(e.id));
-      e.pid = int(c.i(1, "PID"));
-      e.ref = c.ref(0);
-      e.pid_ref = c.ref(1);
-      e.line = c.line();
-      e.file = b.data[k].file;
-      bool ok = true;
-      for (int j = 0; j < 3; ++j) {
-        const std::string f = "N" + std::to_string(j + 1);
-        e.n[std::size_t(j)] = int(c.i(2 + j, f.c_str()));
-        e.node_refs[std::size_t(j)] = c.ref(2 + j);
-      }
-      static const char* kRelease[] = {"RT1", "RR1", "RT2", "RR2"};
-      for (int j = 0; j < 4; ++j)
-        if (c.i(5 + j, kRelease[j]) != 0) { c.error(1102, 5 + j, kRelease[j], "beam end releases"); ok = false; }
-      const long long local = c.i(9, "LOCAL");
-      if (local < 0 || local > 2) c.error(1003, 9, "LOCAL", "1 global, 2 local (0: 2)");
-      if (thickness) {
-        if (k + 1 >= b.data.size() || is_keyword_line(b.data[k + 1].line->text)) {
-          c.error(1316, -1, nullptr, "the thickness card (PARM1-PARM5) is missing");
-          break;
-        }
-        KCard c2 = card(b, k + 1, "element " + std::to_string(e.id) + " thickness card", W(b, 5, 16));
-        static const char* kParm[] = {"PARM1", "PARM2", "PARM3", "PARM4"};
-        for (int j = 0; j < 4; ++j) {
-          e.t[std::size_t(j)] = c2.r(j, kParm[j]);
-          if (e.t[std::size_t(j)] < 0) { c2.error(1251, j, kParm[j]); ok = false; }
-        }
-        c2.r(4, "PARM5");
-        ++k;
-      }
-      if (e.id < 1) { c.error(1201, 0, "EID", "element ids must be positive"); continue; }
-      if (ok) beams_.push_back(e);
     }
   }
 

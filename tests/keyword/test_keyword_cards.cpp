@@ -211,3 +211,45 @@ TEST(KeywordCards, CurvesAndInitialVelocitiesByTheirTables) {
   EXPECT_NE(vel.lines()[0].find("warning 2006: *INITIAL_VELOCITY card 3, field \"VXRE/VYRE/VZRE\" (cols 41-50)"), std::string::npos)
       << vel.lines()[0];
 }
+
+// Nodes and elements by their tables: *NODE's columns 8 16 16 16 8 8 (10 for the ids in I10
+// format, 20 in long format) in the reader and in messages; a bad element id is reported once
+// the element's node card is read (after the node card's own messages), and the element's
+// messages name it; the plain cards the fast path reads give the same model as the same cards
+// in comma format (read by the table).
+TEST(KeywordCards, NodesAndElementsByTheirTables) {
+  const std::string head = "*CONTROL_TERMINATION\n   1.0E-05\n";
+  const KeywordCardLayout& node = find_keyword_spec("NODE")->card("");
+  EXPECT_EQ(node.columns(false, false), (std::vector<int>{8, 16, 16, 16, 8, 8}));
+  EXPECT_EQ(node.columns(false, true), (std::vector<int>{10, 16, 16, 16, 10, 10}));
+  EXPECT_EQ(node.columns(true, true), std::vector<int>(6, 20));
+
+  // I10: a ten-digit node id, and its TC in columns 59-68
+  const Read i10 = read(deck(head + "*NODE %\n1234567890             0.0             0.0             0.0         9\n"));
+  ASSERT_EQ(i10.lines().size(), 1u) << i10.lines().front();
+  EXPECT_EQ(i10.lines()[0], "deck.k:5: error 1216: *NODE node 1234567890, field \"TC\" (cols 59-68): boundary-condition code must be 0-7 [found \"9\"]");
+
+  // two-line solid with a bad id: the node card's message first, then EID
+  const Read solid = read(deck(head + "*ELEMENT_SOLID\n" + card({"-4", "1"}, 8) + card({"1", "x", "3", "4", "5", "6", "7", "8"}, 8)));
+  ASSERT_GE(solid.lines().size(), 2u);
+  EXPECT_EQ(solid.lines()[0], "deck.k:6: error 1001: *ELEMENT_SOLID element -4 node card, field \"N2\" (cols 9-16): not an integer [found \"x\"]");
+  EXPECT_EQ(solid.lines()[1], "deck.k:5: error 1201: *ELEMENT_SOLID element -4, field \"EID\" (cols 1-8): number outside the allowed range: element ids must be positive [found \"-4\"]");
+
+  // shells: N5 refused, THIC2 negative on the thickness card (16 columns)
+  const std::string shell_part = "*PART\nshell\n         2         2         1\n*SECTION_SHELL\n         2         2\n       0.1\n";
+  const Read shell = read(deck(head + shell_part + "*ELEMENT_SHELL_THICKNESS\n" + card({"5", "2", "1", "2", "3", "4", "9"}, 8) +
+                               card({"0.1", "-0.1"}, 16)));
+  ASSERT_GE(shell.lines().size(), 2u);
+  EXPECT_EQ(shell.lines()[0], "deck.k:11: error 1102: *ELEMENT_SHELL_THICKNESS element 5, field \"N5\" (cols 49-56): feature not supported by IMPACT-3D: 8-node shells [found \"9\"]");
+  EXPECT_EQ(shell.lines()[1], "deck.k:12: error 1241: *ELEMENT_SHELL_THICKNESS element 5 thickness card, field \"THIC2\" (cols 17-32): shell thickness must be positive [found \"-0.1\"]");
+
+  // the fast path (plain cards) and the table (comma format) read the same model
+  const std::string fixed = head + shell_part + "*ELEMENT_SHELL\n" + card({"7", "2", "2", "3", "7", "6"}, 8) + card({"8", "2", "1", "2", "6"}, 8);
+  const std::string comma = head + shell_part + "*ELEMENT_SHELL\n7,2,2,3,7,6\n8,2,1,2,6\n";
+  const Read a = read(deck(fixed)), b = read(deck(comma));
+  ASSERT_TRUE(a.ok && b.ok) << (a.ok ? b.lines().front() : a.lines().front());
+  ASSERT_EQ(a.m.shell_nodes.size(), 2u);
+  EXPECT_EQ(a.m.shell_nodes, b.m.shell_nodes);
+  EXPECT_EQ(a.m.shell_nodes[1][3], a.m.shell_nodes[1][2]);  // a triangle: N4 is N3
+  EXPECT_EQ(a.m.x, b.m.x);
+}
