@@ -226,6 +226,131 @@ void elements_of_eroding_segment(const State& s, const std::array<int, 4>& sg, i
 // shell_mode: SlidingInterface::shell_thickness
 // free_nodes: the side's beam nodes (contact nodes without segments), appended after the
 // segments' nodes
+// Rim edges: those used by one segment only (a collapsed edge of a triangle is skipped); bit e
+// of boundary[j] marks edge e of segment j. (Eroding: the rim of the initial surface, the faces
+// without a second solid.)
+void mark_rim_edges(const std::vector<std::array<int, 4>>& segs, const std::vector<int>& other,
+                    std::vector<std::uint8_t>& boundary) {
+  std::map<std::pair<int, int>, int> edge_count;
+  for (std::size_t j = 0; j < segs.size(); ++j) {
+    if (other[j] >= 0) continue;
+    const auto& sg = segs[j];
+    for (int e = 0; e < 4; ++e) {
+      const int a = sg[std::size_t(e)], b = sg[std::size_t((e + 1) % 4)];
+      if (a != b) ++edge_count[{std::min(a, b), std::max(a, b)}];
+    }
+  }
+  for (std::size_t j = 0; j < segs.size(); ++j) {
+    const auto& sg = segs[j];
+    for (int e = 0; e < 4; ++e) {
+      const int a = sg[std::size_t(e)], b = sg[std::size_t((e + 1) % 4)];
+      if (a != b && edge_count[{std::min(a, b), std::max(a, b)}] == 1)
+        boundary[j] = std::uint8_t(boundary[j] | (1u << e));
+    }
+  }
+}
+
+// Segment j's element (solid, or shell k), penalty stiffness k0, contact offset and depth limit pmax.
+void set_segment_stiffness(const State& s, const ShellIndex& shx, double mu, int shell_mode, std::size_t j, Surface& sf) {
+  const auto& sg = sf.seg[j];
+  double X[4][3];
+  seg_coords(s, sg, X);
+  const double area = contact::segment_area(X);
+  int el = element_of_segment(s, sg);
+  if (sf.eroding) {
+    int ot;
+    elements_of_eroding_segment(s, sg, el, ot);
+  }
+  sf.elem[j] = el;
+  const auto it = el < 0 ? shx.by_key.find(segment_key(sg)) : shx.by_key.end();
+  if (it != shx.by_key.end()) {
+    // a shell: k = mu K A / (longest diagonal) (LS-DYNA's shell form).  With offsets: its
+    // mid-surface with the contact surfaces at +-t/2, both sides usable, a node in contact down
+    // to the mid-surface (past it, it is on the other side).  Without (DYNA3D): the
+    // mid-surface itself, one-sided along the segment's normal as written, a node in contact
+    // down to half the segment's width (as a solid face's depth limit)
+    const int k = it->second;
+    sf.shell[j] = k;
+    const double d1 = std::hypot(X[2][0] - X[0][0], X[2][1] - X[0][1], X[2][2] - X[0][2]);
+    const double d2 = std::hypot(X[3][0] - X[1][0], X[3][1] - X[1][1], X[3][2] - X[1][2]);
+    sf.k0[j] = contact::shell_stiffness(mu, s.mats[std::size_t(s.shells.mat[std::size_t(k)])].K, area, std::max(d1, d2));
+    if (shell_has_offsets(s, k, shell_mode)) {
+      const double half = 0.5 * s.shells.thick[std::size_t(k)];
+      sf.two_sided[j] = 1;
+      sf.offset[j] = half;
+      sf.pmax[j] = half;
+    } else {
+      sf.pmax[j] = kDepthFactor * std::sqrt(area);
+    }
+    return;
+  }
+  double vol = 0, K = 0;
+  if (el >= 0) {
+    vol = s.vol0[std::size_t(el)];
+    K = s.mats[std::size_t(s.mat[std::size_t(el)])].K;
+  }
+  sf.k0[j] = contact::dyna3d_stiffness(mu, K, area, vol);
+  // deeper than half the element or half the segment's width: not a contact of this segment
+  // (it keeps the grown boxes, and so the search, proportional to the segments)
+  const double thick = (el >= 0 && area > 0) ? vol / area : std::sqrt(area);
+  sf.pmax[j] = kDepthFactor * std::min(thick, std::sqrt(area));
+}
+
+// The surface's nodes: the segments' nodes sorted (seg_nodes of them, local indices per
+// segment), then the free nodes not among them.
+void index_surface_nodes(const std::vector<int>& free_nodes, Surface& sf) {
+  for (const auto& sg : sf.seg)
+    for (int n : sg) sf.nodes.push_back(n);
+  std::sort(sf.nodes.begin(), sf.nodes.end());
+  sf.nodes.erase(std::unique(sf.nodes.begin(), sf.nodes.end()), sf.nodes.end());
+  sf.local.resize(sf.seg.size());
+  for (std::size_t j = 0; j < sf.seg.size(); ++j)
+    for (int a = 0; a < 4; ++a)
+      sf.local[j][std::size_t(a)] =
+          int(std::lower_bound(sf.nodes.begin(), sf.nodes.end(), sf.seg[j][std::size_t(a)]) - sf.nodes.begin());
+  sf.seg_nodes = sf.nodes.size();
+  for (int n : free_nodes)
+    if (!std::binary_search(sf.nodes.begin(), sf.nodes.begin() + std::ptrdiff_t(sf.seg_nodes), n)) sf.nodes.push_back(n);
+}
+
+// Per node its segments (CSR, segment order; a repeated node of a segment once).
+void index_node_segments(Surface& sf) {
+  auto first_time = [](const std::array<int, 4>& lc, int a) {
+    return a == 0 || std::find(lc.begin(), lc.begin() + a, lc[std::size_t(a)]) == lc.begin() + a;
+  };
+  sf.node_seg_start.assign(sf.nodes.size() + 1, 0);
+  for (const auto& lc : sf.local)
+    for (int a = 0; a < 4; ++a)
+      if (first_time(lc, a)) ++sf.node_seg_start[std::size_t(lc[std::size_t(a)]) + 1];
+  for (std::size_t q = 0; q < sf.nodes.size(); ++q) sf.node_seg_start[q + 1] += sf.node_seg_start[q];
+  sf.node_seg.assign(std::size_t(sf.node_seg_start.back()), 0);
+  std::vector<int> cur(sf.node_seg_start.begin(), sf.node_seg_start.end() - 1);
+  for (std::size_t j = 0; j < sf.local.size(); ++j) {
+    const auto& lc = sf.local[j];
+    for (int a = 0; a < 4; ++a)
+      if (first_time(lc, a)) sf.node_seg[std::size_t(cur[std::size_t(lc[std::size_t(a)])]++)] = int(j);
+  }
+}
+
+// The nodes' own stiffness (PENOPT 1 and 3: the smallest of their segments') and shell offsets
+// (a shell node touches at half its shell's thickness; none at the mid-surface).
+void set_node_stiffness_and_offsets(const ShellIndex& shx, int shell_mode, Surface& sf) {
+  sf.node_k.assign(sf.nodes.size(), 0.0);
+  for (std::size_t j = 0; j < sf.seg.size(); ++j)
+    for (int a = 0; a < 4; ++a) {
+      double& kn = sf.node_k[std::size_t(sf.local[j][std::size_t(a)])];
+      if (sf.k0[j] > 0) kn = kn > 0 ? std::min(kn, sf.k0[j]) : sf.k0[j];
+    }
+  sf.node_off.assign(sf.nodes.size(), 0.0);
+  sf.node_off_max = 0;
+  if (shell_mode == 0) return;
+  const std::vector<double>& half = shell_mode == 2 ? shx.node_half : shx.node_half_deformable;
+  for (std::size_t q = 0; q < sf.nodes.size(); ++q) {
+    sf.node_off[q] = half[std::size_t(sf.nodes[q])];
+    sf.node_off_max = std::max(sf.node_off_max, sf.node_off[q]);
+  }
+}
+
 void build_surface(const State& s, const ShellIndex& shx, const std::vector<std::array<int, 4>>& segs,
                    const std::vector<int>& free_nodes, double mu, int shell_mode, Surface& sf, bool eroding = false) {
   sf.seg = segs;
@@ -245,111 +370,11 @@ void build_surface(const State& s, const ShellIndex& shx, const std::vector<std:
   sf.shell.assign(ns, -1);
   sf.two_sided.assign(ns, 0);
   sf.offset.assign(ns, 0.0);
-  // rim edges: used by one segment only (a collapsed edge of a triangle is skipped)
-  // (eroding: the rim of the initial surface, the faces without a second solid)
-  std::map<std::pair<int, int>, int> edge_count;
-  for (std::size_t j = 0; j < ns; ++j) {
-    if (sf.other[j] >= 0) continue;
-    const auto& sg = segs[j];
-    for (int e = 0; e < 4; ++e) {
-      const int a = sg[std::size_t(e)], b = sg[std::size_t((e + 1) % 4)];
-      if (a != b) ++edge_count[{std::min(a, b), std::max(a, b)}];
-    }
-  }
-  for (std::size_t j = 0; j < ns; ++j) {
-    const auto& sg = segs[j];
-    for (int e = 0; e < 4; ++e) {
-      const int a = sg[std::size_t(e)], b = sg[std::size_t((e + 1) % 4)];
-      if (a != b && edge_count[{std::min(a, b), std::max(a, b)}] == 1)
-        sf.boundary[j] = std::uint8_t(sf.boundary[j] | (1u << e));
-    }
-    double X[4][3];
-    seg_coords(s, sg, X);
-    const double area = contact::segment_area(X);
-    int el = element_of_segment(s, sg);
-    if (eroding) {
-      int ot;
-      elements_of_eroding_segment(s, sg, el, ot);
-    }
-    sf.elem[j] = el;
-    const auto it = el < 0 ? shx.by_key.find(segment_key(sg)) : shx.by_key.end();
-    if (it != shx.by_key.end()) {
-      // a shell: k = mu K A / (longest diagonal) (LS-DYNA's shell form).  With offsets: its
-      // mid-surface with the contact surfaces at +-t/2, both sides usable, a node in contact down
-      // to the mid-surface (past it, it is on the other side).  Without (DYNA3D): the
-      // mid-surface itself, one-sided along the segment's normal as written, a node in contact
-      // down to half the segment's width (as a solid face's depth limit)
-      const int k = it->second;
-      sf.shell[j] = k;
-      const double d1 = std::hypot(X[2][0] - X[0][0], X[2][1] - X[0][1], X[2][2] - X[0][2]);
-      const double d2 = std::hypot(X[3][0] - X[1][0], X[3][1] - X[1][1], X[3][2] - X[1][2]);
-      sf.k0[j] = contact::shell_stiffness(mu, s.mats[std::size_t(s.shells.mat[std::size_t(k)])].K, area,
-                                          std::max(d1, d2));
-      if (shell_has_offsets(s, k, shell_mode)) {
-        const double half = 0.5 * s.shells.thick[std::size_t(k)];
-        sf.two_sided[j] = 1;
-        sf.offset[j] = half;
-        sf.pmax[j] = half;
-      } else {
-        sf.pmax[j] = kDepthFactor * std::sqrt(area);
-      }
-    } else {
-      double vol = 0, K = 0;
-      if (el >= 0) {
-        vol = s.vol0[std::size_t(el)];
-        K = s.mats[std::size_t(s.mat[std::size_t(el)])].K;
-      }
-      sf.k0[j] = contact::dyna3d_stiffness(mu, K, area, vol);
-      // deeper than half the element or half the segment's width: not a contact of this segment
-      // (it keeps the grown boxes, and so the search, proportional to the segments)
-      const double thick = (el >= 0 && area > 0) ? vol / area : std::sqrt(area);
-      sf.pmax[j] = kDepthFactor * std::min(thick, std::sqrt(area));
-    }
-    for (int n : sg) sf.nodes.push_back(n);
-  }
-  std::sort(sf.nodes.begin(), sf.nodes.end());
-  sf.nodes.erase(std::unique(sf.nodes.begin(), sf.nodes.end()), sf.nodes.end());
-  sf.local.resize(ns);
-  for (std::size_t j = 0; j < ns; ++j)
-    for (int a = 0; a < 4; ++a)
-      sf.local[j][std::size_t(a)] =
-          int(std::lower_bound(sf.nodes.begin(), sf.nodes.end(), segs[j][std::size_t(a)]) - sf.nodes.begin());
-  sf.seg_nodes = sf.nodes.size();
-  for (int n : free_nodes)
-    if (!std::binary_search(sf.nodes.begin(), sf.nodes.begin() + std::ptrdiff_t(sf.seg_nodes), n)) sf.nodes.push_back(n);
-  if (eroding) {  // per node its segments (CSR, segment order)
-    sf.node_seg_start.assign(sf.nodes.size() + 1, 0);
-    for (const auto& lc : sf.local)
-      for (int a = 0; a < 4; ++a)
-        if (a == 0 || std::find(lc.begin(), lc.begin() + a, lc[std::size_t(a)]) == lc.begin() + a)
-          ++sf.node_seg_start[std::size_t(lc[std::size_t(a)]) + 1];
-    for (std::size_t q = 0; q < sf.nodes.size(); ++q) sf.node_seg_start[q + 1] += sf.node_seg_start[q];
-    sf.node_seg.assign(std::size_t(sf.node_seg_start.back()), 0);
-    std::vector<int> cur(sf.node_seg_start.begin(), sf.node_seg_start.end() - 1);
-    for (std::size_t j = 0; j < ns; ++j) {
-      const auto& lc = sf.local[j];
-      for (int a = 0; a < 4; ++a)
-        if (a == 0 || std::find(lc.begin(), lc.begin() + a, lc[std::size_t(a)]) == lc.begin() + a)
-          sf.node_seg[std::size_t(cur[std::size_t(lc[std::size_t(a)])]++)] = int(j);
-    }
-  }
-  // the nodes' own stiffness (PENOPT 1 and 3): the smallest of their segments'
-  sf.node_k.assign(sf.nodes.size(), 0.0);
-  for (std::size_t j = 0; j < ns; ++j)
-    for (int a = 0; a < 4; ++a) {
-      double& kn = sf.node_k[std::size_t(sf.local[j][std::size_t(a)])];
-      if (sf.k0[j] > 0) kn = kn > 0 ? std::min(kn, sf.k0[j]) : sf.k0[j];
-    }
-  // the nodes' own shell offsets: a shell node touches at half its shell's thickness (none at
-  // the mid-surface)
-  sf.node_off.assign(sf.nodes.size(), 0.0);
-  sf.node_off_max = 0;
-  if (shell_mode == 0) return;
-  const std::vector<double>& half = shell_mode == 2 ? shx.node_half : shx.node_half_deformable;
-  for (std::size_t q = 0; q < sf.nodes.size(); ++q) {
-    sf.node_off[q] = half[std::size_t(sf.nodes[q])];
-    sf.node_off_max = std::max(sf.node_off_max, sf.node_off[q]);
-  }
+  mark_rim_edges(segs, sf.other, sf.boundary);
+  for (std::size_t j = 0; j < ns; ++j) set_segment_stiffness(s, shx, mu, shell_mode, j, sf);
+  index_surface_nodes(free_nodes, sf);
+  if (eroding) index_node_segments(sf);
+  set_node_stiffness_and_offsets(shx, shell_mode, sf);
 }
 
 // The rings of a single surface: for each node the nodes of the segments that have it.
@@ -503,6 +528,123 @@ double elastic_step(const State& s, double tssf) {
   return tssf * dtmin;
 }
 
+// Whether node q of the pass's node side is in play: inside the grid's box and, on an eroding
+// surface, on a face still in the surface (its solids not all failed; a beam node always is).
+bool node_in_play(const State& s, const Surface& nodes_sf, const Grid& g, int q, const double* p) {
+  if (p[0] < g.lo[0] || p[0] > g.hi[0] || p[1] < g.lo[1] || p[1] > g.hi[1] || p[2] < g.lo[2] || p[2] > g.hi[2])
+    return false;
+  if (!nodes_sf.eroding || std::size_t(q) >= nodes_sf.seg_nodes) return true;
+  for (int c2 = nodes_sf.node_seg_start[std::size_t(q)]; c2 < nodes_sf.node_seg_start[std::size_t(q) + 1]; ++c2)
+    if (segment_active(s, nodes_sf, std::size_t(nodes_sf.node_seg[std::size_t(c2)]))) return true;
+  return false;
+}
+
+// The nearest segment of the node's grid cell, or -1: its hit bh and the sum of the offsets r.
+int find_nearest_segment(const State& s, const Interface& in, const Surface& nodes_sf, const Surface& segs, const Grid& g,
+                         int q, const double* p, Hit& hit, contact::SegmentHit& bh, double& best_r) {
+  const int node = nodes_sf.nodes[std::size_t(q)];
+  const int c = cell_coord(g, 0, p[0]) + g.dim[0] * (cell_coord(g, 1, p[1]) + g.dim[1] * cell_coord(g, 2, p[2]));
+  // the node's own offset: half its shell's thickness (0 for a solid's node)
+  const double r_node = nodes_sf.node_off[std::size_t(q)];
+  const int* ring = in.single ? nodes_sf.ring.data() + nodes_sf.ring_start[std::size_t(q)] : nullptr;
+  const int* ring_end = in.single ? nodes_sf.ring.data() + nodes_sf.ring_start[std::size_t(q) + 1] : nullptr;
+  int best = -1;
+  double best_key = 0;
+  for (int e = g.cell_start[std::size_t(c)]; e < g.cell_start[std::size_t(c) + 1]; ++e) {
+    const int j = g.entries[std::size_t(e)];
+    if (!in_box(&g.box[6 * std::size_t(j)], p)) continue;
+    const auto& sg = segs.seg[std::size_t(j)];
+    if (sg[0] == node || sg[1] == node || sg[2] == node || sg[3] == node) continue;
+    // single surface: not the segments around the node nor their neighbours
+    if (ring && std::any_of(sg.begin(), sg.end(), [&](int v) { return std::binary_search(ring, ring_end, v); }))
+      continue;
+    if (!segment_active(s, segs, std::size_t(j))) continue;
+    double X[4][3];
+    seg_coords(s, sg, X);
+    ++hit.evaluations;
+    contact::SegmentHit h = segs.two_sided[std::size_t(j)] ? contact::closest_point_on_shell_segment(X, p, kInteriorTol)
+                                     : contact::closest_point_on_segment(X, p, segs.boundary[std::size_t(j)], kInteriorTol);
+    if (!h.valid) continue;
+    // nearest contact surface (the mid-surface distance less the offsets); at equal distance
+    // a face point before an edge point, then the lower segment (the order of the candidates
+    // is the segment order)
+    const double r = segs.offset[std::size_t(j)] + r_node;
+    const double key = r == 0 ? h.dist * (h.on_edge ? 1 + 1e-9 : 1.0) : h.dist + (h.on_edge ? 1e-9 * h.dist : 0.0) - r;
+    if (best < 0 || key < best_key) {
+      best = j;
+      best_key = key;
+      best_r = r;
+      bh = h;
+    }
+  }
+  return best;
+}
+
+// The velocity of node k relative to the contact point of segment sg (shape values N).
+void relative_velocity(const State& s, std::size_t k, const std::array<int, 4>& sg, const double* N, double* vrel) {
+  vrel[0] = s.vx[k];
+  vrel[1] = s.vy[k];
+  vrel[2] = s.vz[k];
+  for (int a = 0; a < 4; ++a) {
+    const std::size_t ka = std::size_t(sg[std::size_t(a)]);
+    vrel[0] -= N[a] * s.vx[ka];
+    vrel[1] -= N[a] * s.vy[ka];
+    vrel[2] -= N[a] * s.vz[ka];
+  }
+}
+
+// 1/m* of node k against the contact point of segment sg: 1/m_k + sum N_a^2 / m_a (massless nodes left out).
+double inverse_contact_mass(const State& s, std::size_t k, const std::array<int, 4>& sg, const double* N) {
+  double lam = s.mass[k] > 0 ? 1.0 / s.mass[k] : 0.0;
+  for (int a = 0; a < 4; ++a) {
+    const double ma = s.mass[std::size_t(sg[std::size_t(a)])];
+    if (ma > 0) lam += N[a] * N[a] / ma;
+  }
+  return lam;
+}
+
+// The spring holds the penetration the node's approach explains.  Each cycle the geometric
+// penetration changes by its increment; the relative normal approach over the step that
+// brought the node here, -(v^{n-1/2} . n) dt^{n-1/2}, explains it up to the surface's
+// curvature (second order).  An increment beyond the approach by more than
+// kJumpFraction |v_rel| dt (plus round-off) is a jump of the geometry, not a motion: the
+// node started inside, a failed solid's face exposed it, it slid under an edge.  That
+// unexplained part goes to the node's offset, and the spring holds the penetration less the
+// offset: a spring of the whole depth would throw the node out with energy no motion gave
+// it.  The offset shrinks with the geometric depth (never above it) and ends with the
+// contact.  A node that came in from outside has no offset: the spring is the geometric
+// depth, as it was.  Returns the penetration the spring holds (adm: this cycle's depth and offset).
+double admitted_penetration(double pen, double pmax, const double* vrel, const double* n, double dt_half,
+                            double pen_before, double offset_before, Hit& hit, double* adm) {
+  const double approach = -(vrel[0] * n[0] + vrel[1] * n[1] + vrel[2] * n[2]);
+  const double vrel_mag = std::sqrt(vrel[0] * vrel[0] + vrel[1] * vrel[1] + vrel[2] * vrel[2]);
+  const double jump = (pen - pen_before) - approach * dt_half;
+  double offset = offset_before;
+  if (jump > kExplainedTol * pmax + kJumpFraction * vrel_mag * dt_half) {
+    offset += jump;
+    hit.refused = true;
+  }
+  offset = std::min(offset, pen);
+  const double pen_used = pen - offset;
+  adm[0] = pen;
+  adm[1] = offset;
+  // (an offset node whose approach is round-off, sliding along the face, is not in contact)
+  if (!(pen_used > 0) || (offset > 0 && pen_used <= kExplainedTol * pmax)) return 0.0;
+  return pen_used;
+}
+
+// The friction force of a contact of normal force fn added to hit.f.
+void add_friction_force(const State& s, const Interface& in, std::size_t k, const std::array<int, 4>& sg, const double* N,
+                        const double* n, const double* vrel, double fn, double dt, Hit& hit) {
+  const double inv_meff = inverse_contact_mass(s, k, sg, N);
+  const double vn = vrel[0] * n[0] + vrel[1] * n[1] + vrel[2] * n[2];
+  const double vt[3] = {vrel[0] - vn * n[0], vrel[1] - vn * n[1], vrel[2] - vn * n[2]};
+  const double mu = contact::friction_coefficient(in.fs, in.fd, in.decay, std::sqrt(vt[0] * vt[0] + vt[1] * vt[1] + vt[2] * vt[2]));
+  double ft[3];
+  contact::friction_force(mu, fn, n, vrel, inv_meff, dt, ft);
+  for (int i = 0; i < 3; ++i) hit.f[i] += ft[i];
+}
+
 }  // namespace
 
 struct SlidingInterfaces::Impl {
@@ -519,7 +661,31 @@ struct SlidingInterfaces::Impl {
 
   double dt_soft = 0;  // the soft constraint's step: the first, then the largest taken
   void node_pass(const Model& m, const State& s, Interface& in, Pass& ps, double dt, double dt_k);
+  double penalty_stiffness(const State& s, const Interface& in, const Surface& nodes_sf, const Surface& segs, int q,
+                           int best, const double* N, double dt_k) const;
 };
+
+// The penalty stiffness of node q against segment best: DYNA3D's (with PENOPT), LS-DYNA's soft
+// constraint, or the seed's largest stable stiffness at the segment's node nearest the contact point.
+double SlidingInterfaces::Impl::penalty_stiffness(const State& s, const Interface& in, const Surface& nodes_sf,
+                                                  const Surface& segs, int q, int best, const double* N,
+                                                  double dt_k) const {
+  const std::size_t k = std::size_t(nodes_sf.nodes[std::size_t(q)]);
+  if (in.method != 1) {  // DYNA3D (with PENOPT), or LS-DYNA's soft constraint
+    double kpen = contact::penopt_stiffness(in.penopt, segs.k0[std::size_t(best)], nodes_sf.node_k[std::size_t(q)]);
+    if (in.method == 2) {
+      double m_star = s.mass[k];
+      for (int a = 0; a < 4; ++a) m_star = std::min(m_star, s.mass[std::size_t(segs.seg[std::size_t(best)][std::size_t(a)])]);
+      kpen = contact::soft_constraint_stiffness(kpen, in.sofscl, m_star, dt_soft);
+    }
+    return kpen;
+  }
+  int a_near = 0;
+  for (int a = 1; a < 4; ++a)
+    if (N[a] > N[a_near]) a_near = a;
+  const int nm = segs.seg[std::size_t(best)][std::size_t(a_near)];
+  return contact::max_stable_stiffness(tssf, dt_k, s.mass[k], s.mass[std::size_t(nm)], in.symmetric);
+}
 
 // Step 2 of a pass: every node of the pass against the segments (parallel, per-node slots).
 void SlidingInterfaces::Impl::node_pass(const Model&, const State& s, Interface& in, Pass& ps,
@@ -528,7 +694,6 @@ void SlidingInterfaces::Impl::node_pass(const Model&, const State& s, Interface&
   const Surface& segs = in.surf[ps.seg_side];
   const Grid& g = ps.grid;
   const int nn = int(nodes_sf.nodes.size());
-  const double alpha_tssf = tssf;
   // (threads only on large surfaces: waking a sleeping thread costs more than a small search)
 #pragma omp parallel for schedule(static) if (nn >= 4096)
   for (int q = 0; q < nn; ++q) {
@@ -537,139 +702,33 @@ void SlidingInterfaces::Impl::node_pass(const Model&, const State& s, Interface&
     double* adm = &ps.admitted[2 * std::size_t(q)];
     const double pen_before = adm[0], offset_before = adm[1];
     adm[0] = adm[1] = 0.0;
-    const int node = nodes_sf.nodes[std::size_t(q)];
-    const std::size_t k = std::size_t(node);
+    const std::size_t k = std::size_t(nodes_sf.nodes[std::size_t(q)]);
     const double p[3] = {s.x[k], s.y[k], s.z[k]};
-    if (p[0] < g.lo[0] || p[0] > g.hi[0] || p[1] < g.lo[1] || p[1] > g.hi[1] || p[2] < g.lo[2] ||
-        p[2] > g.hi[2])
-      continue;
-    const int c = cell_coord(g, 0, p[0]) + g.dim[0] * (cell_coord(g, 1, p[1]) + g.dim[1] * cell_coord(g, 2, p[2]));
-    // eroding: a node none of whose faces is in the surface (its solids failed) is not
-    if (nodes_sf.eroding && std::size_t(q) < nodes_sf.seg_nodes) {  // (a beam node always is)
-      bool on = false;
-      for (int c2 = nodes_sf.node_seg_start[std::size_t(q)]; c2 < nodes_sf.node_seg_start[std::size_t(q) + 1] && !on; ++c2)
-        on = segment_active(s, nodes_sf, std::size_t(nodes_sf.node_seg[std::size_t(c2)]));
-      if (!on) continue;
-    }
-    // the node's own offset: half its shell's thickness (0 for a solid's node)
-    const double r_node = nodes_sf.node_off[std::size_t(q)];
-    const int* ring = in.single ? nodes_sf.ring.data() + nodes_sf.ring_start[std::size_t(q)] : nullptr;
-    const int* ring_end = in.single ? nodes_sf.ring.data() + nodes_sf.ring_start[std::size_t(q) + 1] : nullptr;
-    int best = -1;
-    double best_key = 0, best_r = 0;
+    if (!node_in_play(s, nodes_sf, g, q, p)) continue;
     contact::SegmentHit bh;
-    for (int e = g.cell_start[std::size_t(c)]; e < g.cell_start[std::size_t(c) + 1]; ++e) {
-      const int j = g.entries[std::size_t(e)];
-      if (!in_box(&g.box[6 * std::size_t(j)], p)) continue;
-      const auto& sg = segs.seg[std::size_t(j)];
-      if (sg[0] == node || sg[1] == node || sg[2] == node || sg[3] == node) continue;
-      // single surface: not the segments around the node nor their neighbours
-      if (ring && std::any_of(sg.begin(), sg.end(), [&](int v) { return std::binary_search(ring, ring_end, v); }))
-        continue;
-      if (!segment_active(s, segs, std::size_t(j))) continue;
-      double X[4][3];
-      seg_coords(s, sg, X);
-      ++hit.evaluations;
-      contact::SegmentHit h = segs.two_sided[std::size_t(j)] ? contact::closest_point_on_shell_segment(X, p, kInteriorTol)
-                                       : contact::closest_point_on_segment(X, p, segs.boundary[std::size_t(j)], kInteriorTol);
-      if (!h.valid) continue;
-      // nearest contact surface (the mid-surface distance less the offsets); at equal distance
-      // a face point before an edge point, then the lower segment (the order of the candidates
-      // is the segment order)
-      const double r = segs.offset[std::size_t(j)] + r_node;
-      const double key = r == 0 ? h.dist * (h.on_edge ? 1 + 1e-9 : 1.0) : h.dist + (h.on_edge ? 1e-9 * h.dist : 0.0) - r;
-      if (best < 0 || key < best_key) {
-        best = j;
-        best_key = key;
-        best_r = r;
-        bh = h;
-      }
-    }
+    double best_r = 0;
+    const int best = find_nearest_segment(s, in, nodes_sf, segs, g, q, p, hit, bh, best_r);
     if (best < 0) continue;
     // penetration of the contact surfaces: the offsets less the gap of the mid-surfaces
     const double pen = best_r - bh.gap;
-    const double pmax = segs.pmax[std::size_t(best)] + r_node;
+    const double pmax = segs.pmax[std::size_t(best)] + nodes_sf.node_off[std::size_t(q)];
     if (!(pen > 0) || pen > pmax) continue;
     double N[4];
     contact::shape4(bh.xi, bh.eta, N);
-    double kpen;
-    if (in.method != 1) {  // DYNA3D (with PENOPT), or LS-DYNA's soft constraint
-      kpen = contact::penopt_stiffness(in.penopt, segs.k0[std::size_t(best)], nodes_sf.node_k[std::size_t(q)]);
-      if (in.method == 2) {
-        double m_star = s.mass[k];
-        for (int a = 0; a < 4; ++a) m_star = std::min(m_star, s.mass[std::size_t(segs.seg[std::size_t(best)][std::size_t(a)])]);
-        kpen = contact::soft_constraint_stiffness(kpen, in.sofscl, m_star, dt_soft);
-      }
-    } else {
-      int a_near = 0;
-      for (int a = 1; a < 4; ++a)
-        if (N[a] > N[a_near]) a_near = a;
-      const int nm = segs.seg[std::size_t(best)][std::size_t(a_near)];
-      kpen = contact::max_stable_stiffness(alpha_tssf, dt_k, s.mass[k], s.mass[std::size_t(nm)],
-                                           in.symmetric);
-    }
-    // velocity of the node relative to the contact point
+    const double kpen = penalty_stiffness(s, in, nodes_sf, segs, q, best, N, dt_k);
     const auto& sg = segs.seg[std::size_t(best)];
-    double vrel[3] = {s.vx[k], s.vy[k], s.vz[k]};
-    for (int a = 0; a < 4; ++a) {
-      const std::size_t ka = std::size_t(sg[std::size_t(a)]);
-      vrel[0] -= N[a] * s.vx[ka];
-      vrel[1] -= N[a] * s.vy[ka];
-      vrel[2] -= N[a] * s.vz[ka];
-    }
-    // The spring holds the penetration the node's approach explains.  Each cycle the geometric
-    // penetration changes by its increment; the relative normal approach over the step that
-    // brought the node here, -(v^{n-1/2} . n) dt^{n-1/2}, explains it up to the surface's
-    // curvature (second order).  An increment beyond the approach by more than
-    // kJumpFraction |v_rel| dt (plus round-off) is a jump of the geometry, not a motion: the
-    // node started inside, a failed solid's face exposed it, it slid under an edge.  That
-    // unexplained part goes to the node's offset, and the spring holds the penetration less the
-    // offset: a spring of the whole depth would throw the node out with energy no motion gave
-    // it.  The offset shrinks with the geometric depth (never above it) and ends with the
-    // contact.  A node that came in from outside has no offset: the spring is the geometric
-    // depth, as it was.
-    const double approach = -(vrel[0] * bh.n[0] + vrel[1] * bh.n[1] + vrel[2] * bh.n[2]);
-    const double vrel_mag = std::sqrt(vrel[0] * vrel[0] + vrel[1] * vrel[1] + vrel[2] * vrel[2]);
-    const double jump = (pen - pen_before) - approach * s.dt_half;
-    double offset = offset_before;
-    if (jump > kExplainedTol * pmax + kJumpFraction * vrel_mag * s.dt_half) {
-      offset += jump;
-      hit.refused = true;
-    }
-    offset = std::min(offset, pen);
-    const double pen_used = pen - offset;
-    adm[0] = pen;
-    adm[1] = offset;
-    // (an offset node whose approach is round-off, sliding along the face, is not in contact)
-    if (!(pen_used > 0) || (offset > 0 && pen_used <= kExplainedTol * pmax)) continue;
-    {
-      double lam = s.mass[k] > 0 ? 1.0 / s.mass[k] : 0.0;
-      for (int a = 0; a < 4; ++a) {
-        const double ma = s.mass[std::size_t(sg[std::size_t(a)])];
-        if (ma > 0) lam += N[a] * N[a] / ma;
-      }
-      hit.omega_dt = dt * std::sqrt(kpen * lam);
-    }
+    double vrel[3];
+    relative_velocity(s, k, sg, N, vrel);
+    const double pen_used = admitted_penetration(pen, pmax, vrel, bh.n, s.dt_half, pen_before, offset_before, hit, adm);
+    if (!(pen_used > 0)) continue;
+    hit.omega_dt = dt * std::sqrt(kpen * inverse_contact_mass(s, k, sg, N));
     const double fn = kpen * pen_used;
     hit.seg = best;
     for (int a = 0; a < 4; ++a) hit.N[a] = N[a];
     hit.fn = fn;
     hit.pen = pen_used;
     for (int i = 0; i < 3; ++i) hit.f[i] = fn * bh.n[i];
-    if (in.fs > 0 || in.fd > 0) {
-      double inv_meff = s.mass[k] > 0 ? 1.0 / s.mass[k] : 0.0;
-      for (int a = 0; a < 4; ++a) {
-        const std::size_t ka = std::size_t(sg[std::size_t(a)]);
-        if (s.mass[ka] > 0) inv_meff += N[a] * N[a] / s.mass[ka];
-      }
-      const double vn = vrel[0] * bh.n[0] + vrel[1] * bh.n[1] + vrel[2] * bh.n[2];
-      const double vt[3] = {vrel[0] - vn * bh.n[0], vrel[1] - vn * bh.n[1], vrel[2] - vn * bh.n[2]};
-      const double mu = contact::friction_coefficient(in.fs, in.fd, in.decay,
-                                                      std::sqrt(vt[0] * vt[0] + vt[1] * vt[1] + vt[2] * vt[2]));
-      double ft[3];
-      contact::friction_force(mu, fn, bh.n, vrel, inv_meff, dt, ft);
-      for (int i = 0; i < 3; ++i) hit.f[i] += ft[i];
-    }
+    if (in.fs > 0 || in.fd > 0) add_friction_force(s, in, k, sg, N, bh.n, vrel, fn, dt, hit);
   }
 }
 
