@@ -195,50 +195,55 @@ void merge_beam_rotations(const Model& m, State& s, const std::vector<double>& b
       }
 }
 
-}  // namespace
+// What the beam groups need stored per point or per beam.
+struct BeamStorageNeeds {
+  bool plastic = false, kinematic = false, resultant = false;
+};
 
-void init_beams(const Model& m, State& s) {
-  BeamState& bm = s.beams;
-  bm = BeamState{};
-  const int nb = m.num_beams();
-  bm.nb = nb;
-  if (nb == 0) return;
-  bm.conn = m.beam_nodes;
-  bm.mat = m.beam_material;
-  // groups: one per material with beams, in material order
+// The group of one material's beams: its kernel (rigid, truss, resultant or Hughes-Liu) and
+// section rule.
+BeamGroup make_beam_group(const Model& m, const State& s, std::size_t k) {
+  const MaterialData& md = m.materials[k];
+  const BeamMaterial* bmat = find_beam_material(s.mats[k].type);
+  BeamGroup g;
+  g.material = int(k);
+  g.shrf = md.beam_section.shrf > 0 ? md.beam_section.shrf : 1.0;
+  g.material_kind = bmat ? bmat->kind : BeamMaterialKind::elastic;
+  g.spot_weld = s.mats[k].type == 100;
+  if (!bmat || bmat->rigid) {
+    g.kernel = BeamKernel::rigid;
+  } else if (md.beam_section.elform == 3) {
+    g.kernel = BeamKernel::truss;
+    g.rule.push_back({0, 0, 4});
+  } else if (md.beam_section.elform == 2) {
+    g.kernel = BeamKernel::resultant;  // no section points: 6 resultants per beam (BeamState::bs)
+  } else {
+    g.kernel = BeamKernel::hughes_liu;
+    beam_integration_rule(md.beam_section, g.rule);
+  }
+  return g;
+}
+
+// Groups: one per material with beams, in material order; the beams in group order (bm.order)
+// and their integration points (bm.ip_start).
+BeamStorageNeeds group_beams(const Model& m, const State& s, BeamState& bm) {
+  const int nb = bm.nb;
   std::vector<int> count(s.mats.size(), 0);
   for (int b = 0; b < nb; ++b) ++count[std::size_t(bm.mat[std::size_t(b)])];
   std::vector<int> first(s.mats.size(), 0), points_of_material(s.mats.size(), 0);
   int placed = 0;
-  bool plastic = false, kinematic = false, resultant = false;
+  BeamStorageNeeds need;
   for (std::size_t k = 0; k < s.mats.size(); ++k) {
     if (count[k] == 0) continue;
-    const MaterialData& md = m.materials[k];
-    const BeamMaterial* bmat = find_beam_material(s.mats[k].type);
-    BeamGroup g;
-    g.material = int(k);
-    g.shrf = md.beam_section.shrf > 0 ? md.beam_section.shrf : 1.0;
-    g.material_kind = bmat ? bmat->kind : BeamMaterialKind::elastic;
-    g.spot_weld = s.mats[k].type == 100;
-    if (!bmat || bmat->rigid) {
-      g.kernel = BeamKernel::rigid;
-    } else if (md.beam_section.elform == 3) {
-      g.kernel = BeamKernel::truss;
-      g.rule.push_back({0, 0, 4});
-    } else if (md.beam_section.elform == 2) {
-      g.kernel = BeamKernel::resultant;  // no section points: 6 resultants per beam (BeamState::bs)
-      resultant = true;
-    } else {
-      g.kernel = BeamKernel::hughes_liu;
-      beam_integration_rule(md.beam_section, g.rule);
-    }
+    BeamGroup g = make_beam_group(m, s, k);
     g.first = placed;
     g.count = count[k];
     first[k] = placed;
     placed += count[k];
     points_of_material[k] = int(g.rule.size());
-    plastic = plastic || (g.kernel != BeamKernel::rigid && g.material_kind != BeamMaterialKind::elastic);
-    kinematic = kinematic || (g.kernel != BeamKernel::rigid && g.material_kind == BeamMaterialKind::plastic_kinematic);
+    need.resultant = need.resultant || g.kernel == BeamKernel::resultant;
+    need.plastic = need.plastic || (g.kernel != BeamKernel::rigid && g.material_kind != BeamMaterialKind::elastic);
+    need.kinematic = need.kinematic || (g.kernel != BeamKernel::rigid && g.material_kind == BeamMaterialKind::plastic_kinematic);
     bm.groups.push_back(std::move(g));
   }
   bm.order.assign(std::size_t(nb), 0);
@@ -246,23 +251,12 @@ void init_beams(const Model& m, State& s) {
   bm.ip_start.assign(std::size_t(nb) + 1, 0);
   for (int b = 0; b < nb; ++b)
     bm.ip_start[std::size_t(b) + 1] = bm.ip_start[std::size_t(b)] + points_of_material[std::size_t(bm.mat[std::size_t(b)])];
-  const std::size_t npt = std::size_t(bm.ip_start[std::size_t(nb)]);
-  bm.sig.assign(3 * npt, 0.0);
-  bm.eps_rr.assign(npt, 0.0);
-  bm.back.assign(kinematic ? 6 * npt : 0, 0.0);
-  bm.eps_p.assign(plastic ? npt : 0, 0.0);
-  bm.yielded.assign(plastic ? npt : 0, 0);
-  bm.res.assign(6 * std::size_t(nb), 0.0);
-  bm.bs.assign(resultant ? 6 * std::size_t(nb) : 0, 0.0);
-  bm.rsec.assign(resultant ? std::size_t(nb) : 0, BeamResultantSection{});
-  bm.step_scale.assign(std::size_t(nb), 1.0);
-  for (auto* v : {&bm.dt_e, &bm.de_ie, &bm.energy, &bm.area, &bm.length0}) v->assign(std::size_t(nb), 0.0);
-  bm.e2.assign(3 * std::size_t(nb), 0.0);
-  bm.bad.assign(std::size_t(nb), 0);
-  bm.failed.assign(std::size_t(nb), 0);
-  bm.newly_failed.clear();
-  bm.newly_failed.reserve(std::size_t(nb));
-  // *MAT_SPOTWELD NF: room for each such beam's last NF resultant vectors
+  return need;
+}
+
+// *MAT_SPOTWELD NF: room for each such beam's last NF resultant vectors.
+void allocate_weld_filters(const State& s, BeamState& bm) {
+  const int nb = bm.nb;
   bool filtered = false;
   for (const BeamGroup& g : bm.groups) filtered = filtered || (g.spot_weld && s.mats[std::size_t(g.material)].k[kSpotWeldNF] > 0);
   bm.weld_res_start.assign(filtered ? std::size_t(nb) + 1 : 0, 0);
@@ -274,48 +268,87 @@ void init_beams(const Model& m, State& s) {
       bm.weld_res_start[std::size_t(b) + 1] = bm.weld_res_start[std::size_t(b)] + 6 * nf;
     }
   bm.weld_res.assign(filtered ? std::size_t(bm.weld_res_start[std::size_t(nb)]) : 0, 0.0);
-  bm.rigid_elem.assign(std::size_t(nb), 0);
-  bm.size.assign(std::size_t(nb), BeamSectionSize{});
+}
+
+// The per-point and per-beam arrays, allocated once.
+void allocate_beam_state(const State& s, const BeamStorageNeeds& need, BeamState& bm) {
+  const std::size_t nb = std::size_t(bm.nb);
+  const std::size_t npt = std::size_t(bm.ip_start[nb]);
+  bm.sig.assign(3 * npt, 0.0);
+  bm.eps_rr.assign(npt, 0.0);
+  bm.back.assign(need.kinematic ? 6 * npt : 0, 0.0);
+  bm.eps_p.assign(need.plastic ? npt : 0, 0.0);
+  bm.yielded.assign(need.plastic ? npt : 0, 0);
+  bm.res.assign(6 * nb, 0.0);
+  bm.bs.assign(need.resultant ? 6 * nb : 0, 0.0);
+  bm.rsec.assign(need.resultant ? nb : 0, BeamResultantSection{});
+  bm.step_scale.assign(nb, 1.0);
+  for (auto* v : {&bm.dt_e, &bm.de_ie, &bm.energy, &bm.area, &bm.length0}) v->assign(nb, 0.0);
+  bm.e2.assign(3 * nb, 0.0);
+  bm.bad.assign(nb, 0);
+  bm.failed.assign(nb, 0);
+  bm.newly_failed.clear();
+  bm.newly_failed.reserve(nb);
+  allocate_weld_filters(s, bm);
+  bm.rigid_elem.assign(nb, 0);
+  bm.size.assign(nb, BeamSectionSize{});
+}
+
+// Beam b's section, length and s axis; half its mass to each node; for a deformable beam (not a
+// truss) its rotary inertia J to each node's (beam_inertia, beam_uses) and, ELFORM 2, its step scale.
+void init_beam_geometry(const Model& m, State& s, int b, std::vector<double>& beam_inertia, std::vector<char>& beam_uses) {
+  BeamState& bm = s.beams;
+  const std::size_t B = std::size_t(b);
+  const int mat = bm.mat[B];
+  const BeamSectionData& sec = m.materials[std::size_t(mat)].beam_section;
+  const MaterialConstants& mc = s.mats[std::size_t(mat)];
+  const BeamMaterial* bmat = find_beam_material(mc.type);
+  const bool rigid = !bmat || bmat->rigid;
+  const bool truss = sec.elform == 3;
+  bm.rigid_elem[B] = rigid;
+  bm.size[B] = beam_section_size(m, b);
+  bm.area[B] = beam_area(m, b);
+  const auto& c = bm.conn[B];
+  const std::size_t n1 = std::size_t(c[0]), n2 = std::size_t(c[1]);
+  const double dx = s.x[n2] - s.x[n1], dy = s.y[n2] - s.y[n1], dz = s.z[n2] - s.z[n1];
+  bm.length0[B] = std::sqrt(dx * dx + dy * dy + dz * dz);
+  double e2[3] = {0, 0, 0};
+  beam_initial_s_axis(m, b, e2);  // the input checks refuse a beam without one
+  for (int a = 0; a < 3; ++a) bm.e2[3 * B + std::size_t(a)] = e2[a];
+  const double me = mc.rho * bm.area[B] * bm.length0[B];
+  s.mass[n1] += 0.5 * me;
+  s.mass[n2] += 0.5 * me;
+  bm.dt_e[B] = std::numeric_limits<double>::infinity();
+  if (rigid || truss) return;
+  BeamSectionProperties props = beam_section_properties(bm.size[B]);
+  if (sec.elform == 2) {
+    props = BeamSectionProperties{sec.area, sec.iss, sec.itt};
+    if (!bm.rsec.empty()) bm.rsec[B] = BeamResultantSection{sec.area, sec.iss, sec.itt, sec.jt > 0 ? sec.jt : sec.iss + sec.itt};
+  }
+  const double J = beam_rotary_inertia(me, bm.length0[B], props);
+  for (std::size_t n : {n1, n2}) {
+    beam_inertia[n] += J;
+    beam_uses[n] = 1;
+  }
+  if (sec.elform == 2) bm.step_scale[B] = resultant_beam_step_scale(mc, bm.rsec[B], bm.length0[B], me, J);
+}
+
+}  // namespace
+
+void init_beams(const Model& m, State& s) {
+  BeamState& bm = s.beams;
+  bm = BeamState{};
+  const int nb = m.num_beams();
+  bm.nb = nb;
+  if (nb == 0) return;
+  bm.conn = m.beam_nodes;
+  bm.mat = m.beam_material;
+  const BeamStorageNeeds need = group_beams(m, s, bm);
+  allocate_beam_state(s, need, bm);
   // geometry, masses, rotary inertias
   std::vector<double> beam_inertia(std::size_t(s.nn), 0.0);
   std::vector<char> beam_uses(std::size_t(s.nn), 0);
-  for (int b = 0; b < nb; ++b) {
-    const std::size_t B = std::size_t(b);
-    const int mat = bm.mat[B];
-    const MaterialData& md = m.materials[std::size_t(mat)];
-    const MaterialConstants& mc = s.mats[std::size_t(mat)];
-    const BeamMaterial* bmat = find_beam_material(mc.type);
-    const bool rigid = !bmat || bmat->rigid;
-    const BeamSectionData& sec = md.beam_section;
-    const bool truss = sec.elform == 3;
-    bm.rigid_elem[B] = rigid;
-    bm.size[B] = beam_section_size(m, b);
-    bm.area[B] = beam_area(m, b);
-    const auto& c = bm.conn[B];
-    const std::size_t n1 = std::size_t(c[0]), n2 = std::size_t(c[1]);
-    const double dx = s.x[n2] - s.x[n1], dy = s.y[n2] - s.y[n1], dz = s.z[n2] - s.z[n1];
-    bm.length0[B] = std::sqrt(dx * dx + dy * dy + dz * dz);
-    double e2[3] = {0, 0, 0};
-    beam_initial_s_axis(m, b, e2);  // the input checks refuse a beam without one
-    for (int a = 0; a < 3; ++a) bm.e2[3 * B + std::size_t(a)] = e2[a];
-    const double me = mc.rho * bm.area[B] * bm.length0[B];
-    s.mass[n1] += 0.5 * me;
-    s.mass[n2] += 0.5 * me;
-    bm.dt_e[B] = std::numeric_limits<double>::infinity();
-    if (!rigid && !truss) {
-      BeamSectionProperties props = beam_section_properties(bm.size[B]);
-      if (sec.elform == 2) {
-        props = BeamSectionProperties{sec.area, sec.iss, sec.itt};
-        if (!bm.rsec.empty()) bm.rsec[B] = BeamResultantSection{sec.area, sec.iss, sec.itt, sec.jt > 0 ? sec.jt : sec.iss + sec.itt};
-      }
-      const double J = beam_rotary_inertia(me, bm.length0[B], props);
-      for (std::size_t n : {n1, n2}) {
-        beam_inertia[n] += J;
-        beam_uses[n] = 1;
-      }
-      if (sec.elform == 2) bm.step_scale[B] = resultant_beam_step_scale(mc, bm.rsec[B], bm.length0[B], me, J);
-    }
-  }
+  for (int b = 0; b < nb; ++b) init_beam_geometry(m, s, b, beam_inertia, beam_uses);
   bm.length = bm.length0;
   // end forces and moments
   bm.corner_base = s.cfx.size();
