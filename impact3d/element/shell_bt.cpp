@@ -122,32 +122,37 @@ double calc_shell_step_length(const double x[4][3], double area, bool triangle) 
   return (triangle ? 2.0 : 1.0) * area / std::sqrt(lmax);
 }
 
-void calc_shell_bt_forces(const ShellGroupConstants& g, const MaterialConstants& mc,
-                          ShellMaterialKind kind, ShellKernelIO& io, const ShellPointState& st) {
-  for (int i = 0; i < 4; ++i)
-    for (int a = 0; a < 3; ++a) io.f[i][a] = io.m[i][a] = 0;
-  io.de_ie = io.de_hg = 0;
-  io.bad = false;
-  const double dt = io.dt;
-  const double h = io.h;
+namespace {
 
-  // --- kinematics at the midpoint geometry (exactly zero strain for a rigid motion)
-  double xm[4][3];
+// The mid-surface rates in the local frame: membrane d_xx, d_yy, 2 d_xy, curvature rates,
+// transverse shears 2 d_xz, 2 d_yz.
+struct ShellRates {
+  double dxx, dyy, gxy, kxx, kyy, kxy, gxz, gyz;
+};
+
+// Stress resultants (membrane N, moments M, shears Q, per unit length) and the stress power per
+// unit area.
+struct ShellResultants {
+  double Nxx = 0, Nyy = 0, Nxy = 0, Mxx = 0, Myy = 0, Mxy = 0, Qxz = 0, Qyz = 0;
+  double work = 0;
+};
+
+// x^{n-1/2} = x^n - dt/2 v: the geometry of the step's rates (zero strain for a rigid motion).
+void calc_shell_midpoint_coordinates(const ShellKernelIO& io, double xm[4][3]) {
   for (int i = 0; i < 4; ++i)
-    for (int a = 0; a < 3; ++a) xm[i][a] = io.x[i][a] - 0.5 * dt * io.v[i][a];
-  ShellFrame fm;
-  if (!calc_shell_frame(xm, fm)) {
-    io.bad = true;
-    io.area = fm.area;
-    io.dt_e = 0;
-    return;
-  }
-  double vl[4][3], wl[4][2];
+    for (int a = 0; a < 3; ++a) xm[i][a] = io.x[i][a] - 0.5 * io.dt * io.v[i][a];
+}
+
+// The corner velocities in the frame (v: x y z, omega: x y).
+void calc_shell_local_velocities(const ShellFrame& fr, const ShellKernelIO& io, double vl[4][3], double wl[4][2]) {
   for (int i = 0; i < 4; ++i) {
-    for (int a = 0; a < 3; ++a) vl[i][a] = dot(fm.e[a], io.v[i]);
-    wl[i][0] = dot(fm.e[0], io.w[i]);
-    wl[i][1] = dot(fm.e[1], io.w[i]);
+    for (int a = 0; a < 3; ++a) vl[i][a] = dot(fr.e[a], io.v[i]);
+    wl[i][0] = dot(fr.e[0], io.w[i]);
+    wl[i][1] = dot(fr.e[1], io.w[i]);
   }
+}
+
+ShellRates calc_shell_strain_rates(const ShellFrame& fm, const double vl[4][3], const double wl[4][2]) {
   double dxx = 0, dyy = 0, gxy = 0, kxx = 0, kyy = 0, kxy = 0, gxz = 0, gyz = 0, swx = 0, swy = 0;
   for (int i = 0; i < 4; ++i) {
     const double b1 = fm.b1[i], b2 = fm.b2[i];
@@ -162,168 +167,226 @@ void calc_shell_bt_forces(const ShellGroupConstants& g, const MaterialConstants&
     swx += wl[i][0];
     swy += wl[i][1];
   }
-  gxz += 0.25 * swy;   // 2 d_xz
-  gyz -= 0.25 * swx;   // 2 d_yz
-  // drilling: the corners' rotation rates about e3 less the in-plane spin
-  double drate[4] = {0, 0, 0, 0};
-  if (st.drill) {
-    double spin = 0;
-    for (int i = 0; i < 4; ++i) spin += fm.b1[i] * vl[i][1] - fm.b2[i] * vl[i][0];
-    spin *= 0.5;
-    for (int i = 0; i < 4; ++i) drate[i] = dot(fm.e[2], io.w[i]) - spin;
-  }
-  io.strain_rate_membrane[0] = dxx;
-  io.strain_rate_membrane[1] = dyy;
-  io.strain_rate_membrane[2] = 0.5 * gxy;
+  gxz += 0.25 * swy;  // 2 d_xz
+  gyz -= 0.25 * swx;  // 2 d_yz
+  return {dxx, dyy, gxy, kxx, kyy, kxy, gxz, gyz};
+}
 
-  // --- stresses at the Gauss points, resultants, stress work
-  double Nxx = 0, Nyy = 0, Nxy = 0, Mxx = 0, Myy = 0, Mxy = 0, Qxz = 0, Qyz = 0;
-  double work = 0;
+// The drilling rates: the corners' rotation rates about e3 less the in-plane spin.
+void calc_shell_drilling_rates(const ShellFrame& fm, const ShellKernelIO& io, const double vl[4][3],
+                               double drate[4]) {
+  double spin = 0;
+  for (int i = 0; i < 4; ++i) spin += fm.b1[i] * vl[i][1] - fm.b2[i] * vl[i][0];
+  spin *= 0.5;
+  for (int i = 0; i < 4; ++i) drate[i] = dot(fm.e[2], io.w[i]) - spin;
+}
+
+// The material's plane-stress update of point p (sigma at s, strain rates d).
+void update_shell_point_stress(const MaterialConstants& mc, ShellMaterialKind kind, const double d[5], double dt,
+                               double* s, const ShellPointState& st, int p) {
+  if (kind == ShellMaterialKind::elastic) {
+    update_plane_stress_elastic(mc, d, dt, s);
+  } else if (kind == ShellMaterialKind::power_law) {
+    PlaneStressPlastic hp{nullptr, st.eps_p + p, st.yielded + p};
+    update_plane_stress_power_law(mc, d, dt, s, hp);
+  } else if (kind == ShellMaterialKind::mooney_rivlin) {
+    update_plane_stress_mooney_rivlin(mc, d, dt, s, st.back + 6 * p);
+  } else if (kind == ShellMaterialKind::plastic_kinematic) {
+    PlaneStressPlastic hp{st.back + 6 * p, st.eps_p + p, st.yielded + p};
+    update_plane_stress_plastic_kinematic(mc, d, dt, s, hp);
+  } else {
+    PlaneStressPlastic hp{nullptr, st.eps_p + p, st.yielded + p};
+    update_plane_stress_piecewise_linear(mc, d, dt, s, hp);
+  }
+}
+
+// Stresses at the Gauss points through the thickness h (updated when dt > 0), their resultants
+// and the stress power.
+ShellResultants calc_shell_point_stresses(const ShellGroupConstants& g, const MaterialConstants& mc,
+                                          ShellMaterialKind kind, const ShellRates& r, double h, double dt,
+                                          const ShellPointState& st) {
+  ShellResultants n;
   const double hh = 0.5 * h;
   for (int p = 0; p < g.nip; ++p) {
     const double z = g.zeta[p] * hh;
     const double wz = g.weight[p] * hh;
     double* s = st.sig + 5 * p;
-    const double d[5] = {dxx + z * kxx, dyy + z * kyy, 0.5 * (gxy + z * kxy), 0.5 * g.shrf * gyz,
-                         0.5 * g.shrf * gxz};
+    const double d[5] = {r.dxx + z * r.kxx, r.dyy + z * r.kyy, 0.5 * (r.gxy + z * r.kxy), 0.5 * g.shrf * r.gyz,
+                         0.5 * g.shrf * r.gxz};
     const double old[5] = {s[0], s[1], s[2], s[3], s[4]};
     if (dt > 0) {
-      if (kind == ShellMaterialKind::elastic) {
-        update_plane_stress_elastic(mc, d, dt, s);
-      } else if (kind == ShellMaterialKind::power_law) {
-        PlaneStressPlastic hp{nullptr, st.eps_p + p, st.yielded + p};
-        update_plane_stress_power_law(mc, d, dt, s, hp);
-      } else if (kind == ShellMaterialKind::mooney_rivlin) {
-        update_plane_stress_mooney_rivlin(mc, d, dt, s, st.back + 6 * p);
-      } else if (kind == ShellMaterialKind::plastic_kinematic) {
-        PlaneStressPlastic hp{st.back + 6 * p, st.eps_p + p, st.yielded + p};
-        update_plane_stress_plastic_kinematic(mc, d, dt, s, hp);
-      } else {
-        PlaneStressPlastic hp{nullptr, st.eps_p + p, st.yielded + p};
-        update_plane_stress_piecewise_linear(mc, d, dt, s, hp);
-      }
+      update_shell_point_stress(mc, kind, d, dt, s, st, p);
       // work on the true rates (the shear stress is SHRF times the elastic one)
       const double pw = 0.5 * ((old[0] + s[0]) * d[0] + (old[1] + s[1]) * d[1]) +
-                        (old[2] + s[2]) * d[2] + 0.5 * (old[3] + s[3]) * gyz +
-                        0.5 * (old[4] + s[4]) * gxz;
-      work += pw * wz;
+                        (old[2] + s[2]) * d[2] + 0.5 * (old[3] + s[3]) * r.gyz +
+                        0.5 * (old[4] + s[4]) * r.gxz;
+      n.work += pw * wz;
     }
-    Nxx += wz * s[0];
-    Nyy += wz * s[1];
-    Nxy += wz * s[2];
-    Mxx += wz * z * s[0];
-    Myy += wz * z * s[1];
-    Mxy += wz * z * s[2];
-    Qyz += wz * s[3];
-    Qxz += wz * s[4];
+    n.Nxx += wz * s[0];
+    n.Nyy += wz * s[1];
+    n.Nxy += wz * s[2];
+    n.Mxx += wz * z * s[0];
+    n.Myy += wz * z * s[1];
+    n.Mxy += wz * z * s[2];
+    n.Qyz += wz * s[3];
+    n.Qxz += wz * s[4];
   }
-  io.de_ie = work * fm.area * dt;
+  return n;
+}
 
-  // --- forces and moments at x^n (local frame), the work conjugates of the rates above
-  ShellFrame fr;
-  if (!calc_shell_frame(io.x, fr)) {
-    io.bad = true;
-    io.area = fr.area;
-    io.dt_e = 0;
-    return;
-  }
-  io.area = fr.area;
+// Corner forces and moments in the frame at x^n: the work conjugates of the rates.
+void calc_shell_local_forces(const ShellFrame& fr, const ShellResultants& n, double fl[4][3], double ml[4][2]) {
   const double A = fr.area;
-  double fl[4][3], ml[4][2];
   for (int i = 0; i < 4; ++i) {
     const double b1 = fr.b1[i], b2 = fr.b2[i];
-    fl[i][0] = A * (b1 * Nxx + b2 * Nxy);
-    fl[i][1] = A * (b2 * Nyy + b1 * Nxy);
-    fl[i][2] = A * (b1 * Qxz + b2 * Qyz);
-    ml[i][0] = A * (-b2 * Myy - b1 * Mxy - 0.25 * Qyz);
-    ml[i][1] = A * (b1 * Mxx + b2 * Mxy + 0.25 * Qxz);
+    fl[i][0] = A * (b1 * n.Nxx + b2 * n.Nxy);
+    fl[i][1] = A * (b2 * n.Nyy + b1 * n.Nxy);
+    fl[i][2] = A * (b1 * n.Qxz + b2 * n.Qyz);
+    ml[i][0] = A * (-b2 * n.Myy - b1 * n.Mxy - 0.25 * n.Qyz);
+    ml[i][1] = A * (b1 * n.Mxx + b2 * n.Mxy + 0.25 * n.Qxz);
   }
+}
 
-  // --- hourglass control (Belytschko-Tsay): gamma = h - (h.x) B1 - (h.y) B2
-  if (g.hourglass_coef > 0) {
-    double hx = 0, hy = 0;
-    for (int i = 0; i < 4; ++i) {
-      hx += kHgVector[i] * fr.xl[i];
-      hy += kHgVector[i] * fr.yl[i];
+// Belytschko-Tsay hourglass control, gamma = h - (h.x) B1 - (h.y) B2: adds the hourglass
+// forces and moments to fl, ml; returns the hourglass energy of the step.
+double calc_shell_hourglass_forces(const ShellGroupConstants& g, const ShellFrame& fr, const ShellKernelIO& io,
+                                   const ShellPointState& st, double fl[4][3], double ml[4][2]) {
+  const double A = fr.area, h = io.h, dt = io.dt;
+  double hx = 0, hy = 0;
+  for (int i = 0; i < 4; ++i) {
+    hx += kHgVector[i] * fr.xl[i];
+    hy += kHgVector[i] * fr.yl[i];
+  }
+  double gam[4];
+  double bb = 0;
+  for (int i = 0; i < 4; ++i) {
+    gam[i] = kHgVector[i] - hx * fr.b1[i] - hy * fr.b2[i];
+    bb += fr.b1[i] * fr.b1[i] + fr.b2[i] * fr.b2[i];
+  }
+  // hourglass rates in the frame at x^n: membrane x, y, transverse, rotations x, y
+  double q[5] = {0, 0, 0, 0, 0};
+  for (int i = 0; i < 4; ++i) {
+    q[0] += gam[i] * dot(fr.e[0], io.v[i]);
+    q[1] += gam[i] * dot(fr.e[1], io.v[i]);
+    q[2] += gam[i] * dot(fr.e[2], io.v[i]);
+    q[3] += gam[i] * dot(fr.e[0], io.w[i]);
+    q[4] += gam[i] * dot(fr.e[1], io.w[i]);
+  }
+  double Q[5];
+  double de_hg = 0;
+  const double qm = g.hourglass_coef;
+  if (g.hourglass_type >= 4 && st.hgq) {
+    // stiffness form (Belytschko-Tsay): membrane QM E h A BB / 8, transverse
+    // QM SHRF G h^3 BB / 12, bending QM E h^3 A BB / 192, integrated over the step
+    const double km = qm * g.E * h * A * bb / 8.0;
+    const double kw = qm * g.shrf * g.G * h * h * h * bb / 12.0;
+    const double kb = qm * g.E * h * h * h * A * bb / 192.0;
+    const double k[5] = {km, km, kw, kb, kb};
+    for (int j = 0; j < 5; ++j) {
+      const double q0 = st.hgq[j];
+      const double q1 = q0 + k[j] * q[j] * dt;
+      st.hgq[j] = q1;
+      Q[j] = q1;
+      de_hg += 0.5 * (q0 + q1) * q[j] * dt;
     }
-    double gam[4];
-    double bb = 0;
-    for (int i = 0; i < 4; ++i) {
-      gam[i] = kHgVector[i] - hx * fr.b1[i] - hy * fr.b2[i];
-      bb += fr.b1[i] * fr.b1[i] + fr.b2[i] * fr.b2[i];
-    }
-    // hourglass rates in the frame at x^n: membrane x, y, transverse, rotations x, y
-    double q[5] = {0, 0, 0, 0, 0};
-    for (int i = 0; i < 4; ++i) {
-      q[0] += gam[i] * dot(fr.e[0], io.v[i]);
-      q[1] += gam[i] * dot(fr.e[1], io.v[i]);
-      q[2] += gam[i] * dot(fr.e[2], io.v[i]);
-      q[3] += gam[i] * dot(fr.e[0], io.w[i]);
-      q[4] += gam[i] * dot(fr.e[1], io.w[i]);
-    }
-    double Q[5];
-    const double qm = g.hourglass_coef;
-    if (g.hourglass_type >= 4 && st.hgq) {
-      // stiffness form (Belytschko-Tsay): membrane QM E h A BB / 8, transverse
-      // QM SHRF G h^3 BB / 12, bending QM E h^3 A BB / 192, integrated over the step
-      const double km = qm * g.E * h * A * bb / 8.0;
-      const double kw = qm * g.shrf * g.G * h * h * h * bb / 12.0;
-      const double kb = qm * g.E * h * h * h * A * bb / 192.0;
-      const double k[5] = {km, km, kw, kb, kb};
-      for (int j = 0; j < 5; ++j) {
-        const double q0 = st.hgq[j];
-        const double q1 = q0 + k[j] * q[j] * dt;
-        st.hgq[j] = q1;
-        Q[j] = q1;
-        io.de_hg += 0.5 * (q0 + q1) * q[j] * dt;
-      }
-    } else {
-      // viscous form (IMPACT-3D's scale, as the solids' QM rho c V^(2/3) / 4 with the edge
-      // face h sqrt(A) for V^(2/3); the rotations with h^3/12 for h)
-      const double cm = qm * g.rho * g.c_plate * h * std::sqrt(A) / 4.0;
-      const double cb = cm * h * h / 12.0;
-      const double c[5] = {cm, cm, cm, cb, cb};
-      for (int j = 0; j < 5; ++j) {
-        Q[j] = c[j] * q[j];
-        io.de_hg += Q[j] * q[j] * dt;
-      }
-    }
-    for (int i = 0; i < 4; ++i) {
-      fl[i][0] += gam[i] * Q[0];
-      fl[i][1] += gam[i] * Q[1];
-      fl[i][2] += gam[i] * Q[2];
-      ml[i][0] += gam[i] * Q[3];
-      ml[i][1] += gam[i] * Q[4];
+  } else {
+    // viscous form (IMPACT-3D's scale, as the solids' QM rho c V^(2/3) / 4 with the edge
+    // face h sqrt(A) for V^(2/3); the rotations with h^3/12 for h)
+    const double cm = qm * g.rho * g.c_plate * h * std::sqrt(A) / 4.0;
+    const double cb = cm * h * h / 12.0;
+    const double c[5] = {cm, cm, cm, cb, cb};
+    for (int j = 0; j < 5; ++j) {
+      Q[j] = c[j] * q[j];
+      de_hg += Q[j] * q[j] * dt;
     }
   }
-  // drilling constraint: corner moments about e3 (integrated over the step, kept in the
-  // co-rotational frame as the hourglass resultants) and their reaction on the in-plane spin
-  double mz[4] = {0, 0, 0, 0};
-  if (st.drill && g.drill_coef > 0) {
-    const double kd = g.drill_coef * g.G * h * A / 4.0;
-    double msum = 0, dwork = 0;
-    for (int i = 0; i < 4; ++i) {
-      const double m0 = st.drill[i];
-      const double m1 = m0 + kd * drate[i] * dt;
-      st.drill[i] = m1;
-      mz[i] = m1;
-      msum += m1;
-      dwork += 0.5 * (m0 + m1) * drate[i] * dt;
-    }
-    io.de_ie += dwork;
-    for (int i = 0; i < 4; ++i) {
-      fl[i][0] += 0.5 * msum * fr.b2[i];
-      fl[i][1] -= 0.5 * msum * fr.b1[i];
-    }
+  for (int i = 0; i < 4; ++i) {
+    fl[i][0] += gam[i] * Q[0];
+    fl[i][1] += gam[i] * Q[1];
+    fl[i][2] += gam[i] * Q[2];
+    ml[i][0] += gam[i] * Q[3];
+    ml[i][1] += gam[i] * Q[4];
   }
-  // to the global frame
+  return de_hg;
+}
+
+// The drilling constraint: corner moments about e3 mz (integrated over the step, kept in the
+// co-rotational frame as the hourglass resultants) and their reaction on the in-plane spin
+// (added to fl); returns their work of the step.
+double calc_shell_drilling_forces(const ShellGroupConstants& g, const ShellFrame& fr, double h, double dt,
+                                  const double drate[4], double* drill, double fl[4][3], double mz[4]) {
+  const double kd = g.drill_coef * g.G * h * fr.area / 4.0;
+  double msum = 0, dwork = 0;
+  for (int i = 0; i < 4; ++i) {
+    const double m0 = drill[i];
+    const double m1 = m0 + kd * drate[i] * dt;
+    drill[i] = m1;
+    mz[i] = m1;
+    msum += m1;
+    dwork += 0.5 * (m0 + m1) * drate[i] * dt;
+  }
+  for (int i = 0; i < 4; ++i) {
+    fl[i][0] += 0.5 * msum * fr.b2[i];
+    fl[i][1] -= 0.5 * msum * fr.b1[i];
+  }
+  return dwork;
+}
+
+void rotate_shell_forces_to_global(const ShellFrame& fr, const double fl[4][3], const double ml[4][2],
+                                   const double mz[4], ShellKernelIO& io) {
   for (int i = 0; i < 4; ++i)
     for (int a = 0; a < 3; ++a) {
       io.f[i][a] = fl[i][0] * fr.e[0][a] + fl[i][1] * fr.e[1][a] + fl[i][2] * fr.e[2][a];
       io.m[i][a] = ml[i][0] * fr.e[0][a] + ml[i][1] * fr.e[1][a] + mz[i] * fr.e[2][a];
     }
+}
+
+void mark_shell_bad(const ShellFrame& fr, ShellKernelIO& io) {
+  io.bad = true;
+  io.area = fr.area;
+  io.dt_e = 0;
+}
+
+}  // namespace
+
+void calc_shell_bt_forces(const ShellGroupConstants& g, const MaterialConstants& mc,
+                          ShellMaterialKind kind, ShellKernelIO& io, const ShellPointState& st) {
+  for (int i = 0; i < 4; ++i)
+    for (int a = 0; a < 3; ++a) io.f[i][a] = io.m[i][a] = 0;
+  io.de_ie = io.de_hg = 0;
+  io.bad = false;
+  const double dt = io.dt;
+
+  // kinematics at the midpoint geometry
+  double xm[4][3];
+  calc_shell_midpoint_coordinates(io, xm);
+  ShellFrame fm;
+  if (!calc_shell_frame(xm, fm)) return mark_shell_bad(fm, io);
+  double vl[4][3], wl[4][2];
+  calc_shell_local_velocities(fm, io, vl, wl);
+  const ShellRates r = calc_shell_strain_rates(fm, vl, wl);
+  double drate[4] = {0, 0, 0, 0};
+  if (st.drill) calc_shell_drilling_rates(fm, io, vl, drate);
+  io.strain_rate_membrane[0] = r.dxx;
+  io.strain_rate_membrane[1] = r.dyy;
+  io.strain_rate_membrane[2] = 0.5 * r.gxy;
+
+  // stresses at the Gauss points, resultants, stress work
+  const ShellResultants n = calc_shell_point_stresses(g, mc, kind, r, io.h, dt, st);
+  io.de_ie = n.work * fm.area * dt;
+
+  // forces and moments at x^n (local frame), hourglass, drilling, to the global frame
+  ShellFrame fr;
+  if (!calc_shell_frame(io.x, fr)) return mark_shell_bad(fr, io);
+  io.area = fr.area;
+  double fl[4][3], ml[4][2];
+  calc_shell_local_forces(fr, n, fl, ml);
+  if (g.hourglass_coef > 0) io.de_hg = calc_shell_hourglass_forces(g, fr, io, st, fl, ml);
+  double mz[4] = {0, 0, 0, 0};
+  if (st.drill && g.drill_coef > 0) io.de_ie += calc_shell_drilling_forces(g, fr, io.h, dt, drate, st.drill, fl, mz);
+  rotate_shell_forces_to_global(fr, fl, ml, mz, io);
   const bool tri = io.x[2][0] == io.x[3][0] && io.x[2][1] == io.x[3][1] && io.x[2][2] == io.x[3][2];
-  io.dt_e = calc_shell_step_length(io.x, A, tri) / g.c_plate;
+  io.dt_e = calc_shell_step_length(io.x, fr.area, tri) / g.c_plate;
 }
 
 }  // namespace impact3d

@@ -148,6 +148,8 @@ void init_shells(const Model& m, State& s) {
     g.kernel = shell_kernel_for_material_type(s.mats[k].type);
     g.material = int(k);
     g.constants = group_constants(m.materials[k], s.mats[k]);
+    g.blocks = g.kernel != ShellKernel::rigid && shell_block_covers(shell_material_kind(g.kernel), s.mats[k]);
+    g.update_block = material_type(s.mats[k].type).solid.update_block;
     g.first = placed;
     g.count = count[k];
     first[k] = placed;

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "impact3d/element/shell_block.h"
 #include "impact3d/element/shell_bt.h"
 
 namespace impact3d {
@@ -26,11 +27,24 @@ inline bool shell_kernel_is_plastic(ShellKernel k) {
   return k == ShellKernel::plastic_kinematic || k == ShellKernel::piecewise_linear || k == ShellKernel::power_law;
 }
 
+// The element kernel's material kind of a shell kernel.
+inline ShellMaterialKind shell_material_kind(ShellKernel k) {
+  return k == ShellKernel::plastic_kinematic ? ShellMaterialKind::plastic_kinematic
+         : k == ShellKernel::piecewise_linear ? ShellMaterialKind::piecewise_linear
+         : k == ShellKernel::mooney_rivlin    ? ShellMaterialKind::mooney_rivlin
+         : k == ShellKernel::power_law        ? ShellMaterialKind::power_law
+                                              : ShellMaterialKind::elastic;
+}
+
 struct ShellGroup {
   ShellKernel kernel = ShellKernel::rigid;
   int material = 0;                 // 0-based material index
   ShellGroupConstants constants;    // section and material constants of the kernel
   int first = 0, count = 0;         // its shells: order[first .. first + count)
+  // chosen at initialization: the group runs in blocks of kLanes shells (shell_block.h) when the
+  // block kernel covers its material, else shell by shell through the scalar kernel
+  bool blocks = false;
+  MaterialBlockUpdate update_block = nullptr;  // the material's 3-D block update (plastic kinds)
 };
 
 struct ShellState {

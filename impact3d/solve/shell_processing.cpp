@@ -9,14 +9,6 @@ namespace {
 
 constexpr int kMinShellsForThreads = 4096;
 
-ShellMaterialKind material_kind(ShellKernel k) {
-  return k == ShellKernel::plastic_kinematic ? ShellMaterialKind::plastic_kinematic
-         : k == ShellKernel::piecewise_linear ? ShellMaterialKind::piecewise_linear
-         : k == ShellKernel::mooney_rivlin    ? ShellMaterialKind::mooney_rivlin
-         : k == ShellKernel::power_law        ? ShellMaterialKind::power_law
-                                              : ShellMaterialKind::elastic;
-}
-
 void zero_shell_corners(State& s, int k) {
   ShellState& sh = s.shells;
   for (int j = 0; j < 4; ++j) {
@@ -64,7 +56,7 @@ void process_shell(State& s, const ShellGroup& g, int k, double dt) {
                      plastic ? &sh.eps_p[ip] : nullptr, plastic ? &sh.yielded[ip] : nullptr,
                      sh.hgq.empty() ? nullptr : &sh.hgq[5 * std::size_t(k)],
                      &sh.drill[4 * std::size_t(k)]};
-  calc_shell_bt_forces(g.constants, s.mats[std::size_t(g.material)], material_kind(g.kernel), io, st);
+  calc_shell_bt_forces(g.constants, s.mats[std::size_t(g.material)], shell_material_kind(g.kernel), io, st);
   sh.bad[std::size_t(k)] = io.bad;
   if (io.bad) {
     zero_shell_corners(s, k);
@@ -96,6 +88,129 @@ void process_shell(State& s, const ShellGroup& g, int k, double dt) {
   }
 }
 
+// A block of kLanes shells ord[0..kLanes) into b: nodal data (as gather_shell), thickness, the
+// points' state, the hourglass resultants and drilling moments.
+void gather_shell_block(const State& s, const ShellGroup& g, const ShellBlockMaterial& mat, const int* ord,
+                        ShellBlock& b) {
+  const ShellState& sh = s.shells;
+  const bool plastic = shell_kernel_is_plastic(g.kernel);
+  for (int l = 0; l < kLanes; ++l) {
+    const std::size_t k = std::size_t(ord[l]);
+    for (int j = 0; j < 4; ++j) {
+      const std::size_t n = std::size_t(sh.conn[k][std::size_t(j)]);
+      b.x[j][0][l] = s.x[n];
+      b.x[j][1][l] = s.y[n];
+      b.x[j][2][l] = s.z[n];
+      b.v[j][0][l] = s.vx[n];
+      b.v[j][1][l] = s.vy[n];
+      b.v[j][2][l] = s.vz[n];
+      const int r = sh.node_rot[n];
+      b.w[j][0][l] = r >= 0 ? sh.wx[std::size_t(r)] : 0.0;
+      b.w[j][1][l] = r >= 0 ? sh.wy[std::size_t(r)] : 0.0;
+      b.w[j][2][l] = r >= 0 ? sh.wz[std::size_t(r)] : 0.0;
+      b.drill[j][l] = sh.drill[4 * k + std::size_t(j)];
+    }
+    b.h[l] = sh.thick[k];
+    const std::size_t ip = std::size_t(sh.ip_start[k]);
+    for (int p = 0; p < g.constants.nip; ++p) {
+      const std::size_t P = ip + std::size_t(p);
+      for (int c = 0; c < 5; ++c) b.sig[p][c][l] = sh.sig[5 * P + std::size_t(c)];
+      if (mat.has_back)
+        for (int c = 0; c < 6; ++c) b.back[p][c][l] = sh.back[6 * P + std::size_t(c)];
+      if (plastic) {
+        b.eps_p[p][l] = sh.eps_p[P];
+        b.yielded[p][l] = sh.yielded[P];
+      }
+    }
+    if (mat.has_hgq)
+      for (int j = 0; j < 5; ++j) b.hgq[j][l] = sh.hgq[5 * k + std::size_t(j)];
+  }
+}
+
+// The block's results back, shell by shell (as process_shell stores them), and the failure check.
+void store_shell_block(State& s, const ShellGroup& g, const ShellBlockMaterial& mat, const int* ord, double dt,
+                       const ShellBlock& b) {
+  ShellState& sh = s.shells;
+  const bool plastic = shell_kernel_is_plastic(g.kernel);
+  const double fs = s.mats[std::size_t(g.material)].fail_strain;
+  for (int l = 0; l < kLanes; ++l) {
+    const std::size_t k = std::size_t(ord[l]);
+    sh.bad[k] = 0;
+    sh.area[k] = b.area[l];
+    sh.dt_e[k] = b.dt_e[l];
+    sh.de_ie[k] = b.de_ie[l];
+    sh.de_hg[k] = b.de_hg[l];
+    for (int j = 0; j < 4; ++j) {
+      const std::size_t c = sh.corner_base + 4 * k + std::size_t(j);
+      s.cfx[c] = b.f[j][0][l];
+      s.cfy[c] = b.f[j][1][l];
+      s.cfz[c] = b.f[j][2][l];
+      const std::size_t q = 4 * k + std::size_t(j);
+      sh.cmx[q] = b.m[j][0][l];
+      sh.cmy[q] = b.m[j][1][l];
+      sh.cmz[q] = b.m[j][2][l];
+      sh.drill[q] = b.drill[j][l];
+    }
+    const std::size_t ip = std::size_t(sh.ip_start[k]);
+    bool all_failed = plastic && fs > 0 && dt > 0;
+    for (int p = 0; p < g.constants.nip; ++p) {
+      const std::size_t P = ip + std::size_t(p);
+      for (int c = 0; c < 5; ++c) sh.sig[5 * P + std::size_t(c)] = b.sig[p][c][l];
+      if (mat.has_back)
+        for (int c = 0; c < 6; ++c) sh.back[6 * P + std::size_t(c)] = b.back[p][c][l];
+      if (plastic) {
+        sh.eps_p[P] = b.eps_p[p][l];
+        sh.yielded[P] = b.yielded[p][l] != 0.0;
+        all_failed = all_failed && sh.eps_p[P] >= fs;
+      }
+    }
+    if (mat.has_hgq)
+      for (int j = 0; j < 5; ++j) sh.hgq[5 * k + std::size_t(j)] = b.hgq[j][l];
+    // failure as process_shell: this pass's forces still act, from the next pass on none
+    if (all_failed) sh.failed[k] = 2;
+  }
+}
+
+// kLanes shells ord[0..kLanes) through the block kernel; a block with a deleted shell or a bad
+// one (non-positive area: the block's results are dropped before they are stored) goes through
+// process_shell shell by shell instead (the same bits; the scalar kernel's handling of both).
+void process_shell_block(State& s, const ShellGroup& g, const ShellBlockMaterial& mat, const int* ord, double dt,
+                         ShellBlock& b) {
+  bool scalar = false;
+  for (int l = 0; l < kLanes; ++l) scalar = scalar || s.shells.failed[std::size_t(ord[l])] != 0;
+  if (!scalar) {
+    gather_shell_block(s, g, mat, ord, b);
+    calc_shell_bt_forces_block(g.constants, mat, dt, b);
+    for (int l = 0; l < kLanes; ++l) scalar = scalar || b.bad[l] != 0.0;
+  }
+  if (!scalar) {
+    store_shell_block(s, g, mat, ord, dt, b);
+    return;
+  }
+  for (int l = 0; l < kLanes; ++l) process_shell(s, g, ord[l], dt);
+}
+
+// A group's shells: whole blocks through the block kernel (groups with g.blocks), the rest
+// (the last n mod kLanes, or every shell of the other groups) through process_shell.
+void process_shells_of_group(State& s, const ShellGroup& g, const int* ord, int n, double dt) {
+  int scalar_from = 0;
+  if (g.blocks) {
+    const ShellState& sh = s.shells;
+    const ShellBlockMaterial mat{&s.mats[std::size_t(g.material)], shell_material_kind(g.kernel), g.update_block,
+                                 shell_kernel_has_back(g.kernel), !sh.hgq.empty()};
+    const int nb = n / kLanes;
+#pragma omp parallel if (n >= kMinShellsForThreads)
+    {
+      ShellBlock b{};  // one per thread: about 40 KB on its stack, reused block after block
+#pragma omp for schedule(static)
+      for (int q = 0; q < nb; ++q) process_shell_block(s, g, mat, ord + q * kLanes, dt, b);
+    }
+    scalar_from = nb * kLanes;
+  }
+#pragma omp parallel for schedule(static) if (n - scalar_from >= kMinShellsForThreads)
+  for (int q = scalar_from; q < n; ++q) process_shell(s, g, ord[q], dt);
+}
+
 bool shell_forces_finite(const State& s, int k) {
   const ShellState& sh = s.shells;
   double c = 0;
@@ -122,8 +237,7 @@ ShellPassResult calc_forces_for_shells(const Model& m, State& s) {
       for (int q = 0; q < n; ++q) zero_shell_corners(s, ord[q]);
       continue;
     }
-#pragma omp parallel for schedule(static) if (n >= kMinShellsForThreads)
-    for (int q = 0; q < n; ++q) process_shell(s, g, ord[q], dt);
+    process_shells_of_group(s, g, ord, n, dt);
     // books in group order (the same bits for any thread count)
     double gie = 0, ghg = 0;
     for (int q = 0; q < n; ++q) {

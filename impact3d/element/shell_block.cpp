@@ -1,0 +1,432 @@
+// The Belytschko-Tsay shell in block form; see shell_block.h.  Each function is the lane form of
+// the scalar one of the same name in shell_bt.cpp (without _block), operation for operation.
+
+#include "impact3d/element/shell_block.h"
+
+#include <cmath>
+
+#include "impact3d/material/plane_stress.h"
+
+namespace impact3d {
+
+namespace {
+
+constexpr double kHgVector[4] = {1, -1, 1, -1};
+
+bool any_lane(const Lanes& a) {
+  bool any = false;
+  for (int l = 0; l < kLanes; ++l) any = any || a[l] != 0.0;
+  return any;
+}
+
+// calc_shell_frame of each lane (bad: 1 where the scalar one returns false).
+void calc_shell_frame_block(const Lanes x[4][3], ShellFrameLanes& fr) {
+  IMPACT3D_FOR_LANES {
+    const double r31x = x[2][0][l] - x[0][0][l], r31y = x[2][1][l] - x[0][1][l], r31z = x[2][2][l] - x[0][2][l];
+    const double r42x = x[3][0][l] - x[1][0][l], r42y = x[3][1][l] - x[1][1][l], r42z = x[3][2][l] - x[1][2][l];
+    const double r21x = x[1][0][l] - x[0][0][l], r21y = x[1][1][l] - x[0][1][l], r21z = x[1][2][l] - x[0][2][l];
+    const double s3x = r31y * r42z - r31z * r42y;
+    const double s3y = r31z * r42x - r31x * r42z;
+    const double s3z = r31x * r42y - r31y * r42x;
+    const double ls3 = std::sqrt(s3x * s3x + s3y * s3y + s3z * s3z);
+    const double r3 = 1.0 / ls3;
+    const double e3x = s3x * r3, e3y = s3y * r3, e3z = s3z * r3;
+    const double p = r21x * e3x + r21y * e3y + r21z * e3z;
+    double e1x = r21x - p * e3x, e1y = r21y - p * e3y, e1z = r21z - p * e3z;
+    const double l1 = std::sqrt(e1x * e1x + e1y * e1y + e1z * e1z);
+    const double r1 = 1.0 / l1;
+    e1x *= r1;
+    e1y *= r1;
+    e1z *= r1;
+    const double e2x = e3y * e1z - e3z * e1y;
+    const double e2y = e3z * e1x - e3x * e1z;
+    const double e2z = e3x * e1y - e3y * e1x;
+    fr.e[0][0][l] = e1x, fr.e[0][1][l] = e1y, fr.e[0][2][l] = e1z;
+    fr.e[1][0][l] = e2x, fr.e[1][1][l] = e2y, fr.e[1][2][l] = e2z;
+    fr.e[2][0][l] = e3x, fr.e[2][1][l] = e3y, fr.e[2][2][l] = e3z;
+    double X[4], Y[4];
+    X[0] = Y[0] = 0;
+    for (int i = 1; i < 4; ++i) {
+      const double rx = x[i][0][l] - x[0][0][l], ry = x[i][1][l] - x[0][1][l], rz = x[i][2][l] - x[0][2][l];
+      X[i] = rx * e1x + ry * e1y + rz * e1z;
+      Y[i] = rx * e2x + ry * e2y + rz * e2z;
+    }
+    for (int i = 0; i < 4; ++i) fr.xl[i][l] = X[i], fr.yl[i][l] = Y[i];
+    const double A = 0.5 * ((X[2] - X[0]) * (Y[3] - Y[1]) + (X[1] - X[3]) * (Y[2] - Y[0]));
+    fr.area[l] = A;
+    fr.bad[l] = !(ls3 > 0) || !(l1 > 0) || !(A > 0) ? 1.0 : 0.0;
+    const double r2a = 1.0 / (2.0 * A);
+    fr.b1[0][l] = (Y[1] - Y[3]) * r2a;
+    fr.b1[1][l] = (Y[2] - Y[0]) * r2a;
+    fr.b1[2][l] = (Y[3] - Y[1]) * r2a;
+    fr.b1[3][l] = (Y[0] - Y[2]) * r2a;
+    fr.b2[0][l] = (X[3] - X[1]) * r2a;
+    fr.b2[1][l] = (X[0] - X[2]) * r2a;
+    fr.b2[2][l] = (X[1] - X[3]) * r2a;
+    fr.b2[3][l] = (X[2] - X[0]) * r2a;
+  }
+}
+
+void calc_shell_midpoint_coordinates_block(double dt, ShellBlock& b) {
+  const double hdt = 0.5 * dt;
+  for (int i = 0; i < 4; ++i)
+    for (int a = 0; a < 3; ++a) IMPACT3D_FOR_LANES b.xm[i][a][l] = b.x[i][a][l] - hdt * b.v[i][a][l];
+}
+
+void calc_shell_local_velocities_block(ShellBlock& b) {
+  const ShellFrameLanes& f = b.fm;
+  for (int i = 0; i < 4; ++i) {
+    IMPACT3D_FOR_LANES {
+      const double vx = b.v[i][0][l], vy = b.v[i][1][l], vz = b.v[i][2][l];
+      const double wx = b.w[i][0][l], wy = b.w[i][1][l], wz = b.w[i][2][l];
+      for (int a = 0; a < 3; ++a) b.vl[i][a][l] = f.e[a][0][l] * vx + f.e[a][1][l] * vy + f.e[a][2][l] * vz;
+      b.wl[i][0][l] = f.e[0][0][l] * wx + f.e[0][1][l] * wy + f.e[0][2][l] * wz;
+      b.wl[i][1][l] = f.e[1][0][l] * wx + f.e[1][1][l] * wy + f.e[1][2][l] * wz;
+    }
+  }
+}
+
+void calc_shell_strain_rates_block(ShellBlock& b) {
+  IMPACT3D_FOR_LANES {
+    double dxx = 0, dyy = 0, gxy = 0, kxx = 0, kyy = 0, kxy = 0, gxz = 0, gyz = 0, swx = 0, swy = 0;
+    for (int i = 0; i < 4; ++i) {
+      const double b1 = b.fm.b1[i][l], b2 = b.fm.b2[i][l];
+      const double v0 = b.vl[i][0][l], v1 = b.vl[i][1][l], v2 = b.vl[i][2][l];
+      const double w0 = b.wl[i][0][l], w1 = b.wl[i][1][l];
+      dxx += b1 * v0;
+      dyy += b2 * v1;
+      gxy += b2 * v0 + b1 * v1;
+      kxx += b1 * w1;
+      kyy -= b2 * w0;
+      kxy += b2 * w1 - b1 * w0;
+      gxz += b1 * v2;
+      gyz += b2 * v2;
+      swx += w0;
+      swy += w1;
+    }
+    gxz += 0.25 * swy;
+    gyz -= 0.25 * swx;
+    b.dxx[l] = dxx, b.dyy[l] = dyy, b.gxy[l] = gxy, b.kxx[l] = kxx, b.kyy[l] = kyy, b.kxy[l] = kxy;
+    b.gxz[l] = gxz, b.gyz[l] = gyz;
+  }
+}
+
+void calc_shell_drilling_rates_block(ShellBlock& b) {
+  IMPACT3D_FOR_LANES {
+    double spin = 0;
+    for (int i = 0; i < 4; ++i) spin += b.fm.b1[i][l] * b.vl[i][1][l] - b.fm.b2[i][l] * b.vl[i][0][l];
+    spin *= 0.5;
+    for (int i = 0; i < 4; ++i)
+      b.drate[i][l] = b.fm.e[2][0][l] * b.w[i][0][l] + b.fm.e[2][1][l] * b.w[i][1][l] +
+                      b.fm.e[2][2][l] * b.w[i][2][l] - spin;
+  }
+}
+
+// update_plane_stress_elastic of point p.
+void update_plane_stress_elastic_block(const MaterialConstants& m, const Lanes d[5], double dt, Lanes s[5]) {
+  const double c = m.E / (1.0 - m.nu * m.nu) * dt;
+  const double g2 = 2.0 * m.G * dt;
+  const double nu = m.nu;
+  IMPACT3D_FOR_LANES {
+    s[0][l] += c * (d[0][l] + nu * d[1][l]);
+    s[1][l] += c * (d[1][l] + nu * d[0][l]);
+    s[2][l] += g2 * d[2][l];
+    s[3][l] += g2 * d[3][l];
+    s[4][l] += g2 * d[4][l];
+  }
+}
+
+// The last accepted 3-D trial of each lane (plane_stress.cpp's s3, back, eps_p, yielded).
+struct PlaneStressTrial {
+  Lanes sig[6], back[6], eps_p, yielded;
+};
+
+// One 3-D trial of the plane-stress iteration in every lane: point p's saved state (sigma_zz = 0)
+// with the thickness strain rate dzz, through the material's block update, into b.point.
+// Returns sigma_zz in szz.
+void run_plane_stress_trial_block(const ShellBlockMaterial& mat, const Lanes d[5], const Lanes& dzz, double dt,
+                                  ShellBlock& b, int p, Lanes& szz) {
+  HexBlock& k = b.point;
+  IMPACT3D_FOR_LANES {
+    k.d[0][l] = d[0][l], k.d[1][l] = d[1][l], k.d[2][l] = dzz[l];
+    k.d[3][l] = d[2][l], k.d[4][l] = d[3][l], k.d[5][l] = d[4][l];
+    k.sig[0][l] = b.sig[p][0][l], k.sig[1][l] = b.sig[p][1][l], k.sig[2][l] = 0.0;
+    k.sig[3][l] = b.sig[p][2][l], k.sig[4][l] = b.sig[p][3][l], k.sig[5][l] = b.sig[p][4][l];
+    k.eps_p[l] = b.eps_p[p][l];
+    k.yielded[l] = b.yielded[p][l];
+  }
+  if (mat.has_back)
+    for (int c = 0; c < 6; ++c) IMPACT3D_FOR_LANES k.back[c][l] = b.back[p][c][l];
+  mat.update_block(*mat.mc, k, dt);
+  IMPACT3D_FOR_LANES szz[l] = k.sig[2][l];
+}
+
+// Keeps b.point's trial in the lanes where take != 0.
+void keep_plane_stress_trial_block(const HexBlock& k, const Lanes& take, bool has_back, PlaneStressTrial& t) {
+  for (int c = 0; c < 6; ++c) IMPACT3D_FOR_LANES t.sig[c][l] = take[l] != 0.0 ? k.sig[c][l] : t.sig[c][l];
+  if (has_back)
+    for (int c = 0; c < 6; ++c) IMPACT3D_FOR_LANES t.back[c][l] = take[l] != 0.0 ? k.back[c][l] : t.back[c][l];
+  IMPACT3D_FOR_LANES {
+    t.eps_p[l] = take[l] != 0.0 ? k.eps_p[l] : t.eps_p[l];
+    t.yielded[l] = take[l] != 0.0 ? k.yielded[l] : t.yielded[l];
+  }
+}
+
+// update_plane_stress_plastic_kinematic / update_plane_stress_piecewise_linear of point p:
+// plane_stress.cpp's solve_thickness_rate in every lane, each lane stepping while its scalar
+// twin would (the elastic guess, the incompressible rate, secant steps to |sigma_zz| <= tol,
+// at most kPlaneStressIterations) and keeping its own last trial.
+void update_plane_stress_plastic_block(const ShellBlockMaterial& mat, const Lanes d[5], double dt, ShellBlock& b,
+                                       int p) {
+  const MaterialConstants& m = *mat.mc;
+  HexBlock& k = b.point;
+  alignas(64) Lanes z0, f0, z1, f1, z2, tol, active;
+  alignas(64) PlaneStressTrial t;
+  const double guess = -m.nu / (1.0 - m.nu);
+  IMPACT3D_FOR_LANES z0[l] = guess * (d[0][l] + d[1][l]);
+  run_plane_stress_trial_block(mat, d, z0, dt, b, p, f0);
+  IMPACT3D_FOR_LANES {
+    const double scale = m.sigma_y + std::fabs(k.sig[0][l]) + std::fabs(k.sig[1][l]) + std::fabs(k.sig[3][l]);
+    tol[l] = 1e-10 * scale;
+    active[l] = std::fabs(f0[l]) > tol[l] ? 1.0 : 0.0;
+  }
+  alignas(64) Lanes every;
+  IMPACT3D_FOR_LANES every[l] = 1.0;  // every lane takes the first trial
+  keep_plane_stress_trial_block(k, every, mat.has_back, t);
+  if (any_lane(active)) {
+    const double tiny = 1e-30 / (dt > 0 ? dt : 1.0);
+    IMPACT3D_FOR_LANES {
+      const double z = -(d[0][l] + d[1][l]);
+      z1[l] = z == z0[l] ? z0[l] + 1e-6 * (std::fabs(z0[l]) + tiny) : z;
+    }
+    run_plane_stress_trial_block(mat, d, z1, dt, b, p, f1);
+    keep_plane_stress_trial_block(k, active, mat.has_back, t);
+    IMPACT3D_FOR_LANES active[l] = active[l] != 0.0 && std::fabs(f1[l]) > tol[l] && f1[l] != f0[l] ? 1.0 : 0.0;
+    for (int it = 0; it < kPlaneStressIterations && any_lane(active); ++it) {
+      IMPACT3D_FOR_LANES {
+        const bool a = active[l] != 0.0;
+        const double zn = z1[l] - f1[l] * (z1[l] - z0[l]) / (f1[l] - f0[l]);
+        z0[l] = a ? z1[l] : z0[l];
+        f0[l] = a ? f1[l] : f0[l];
+        z1[l] = a ? zn : z1[l];
+      }
+      run_plane_stress_trial_block(mat, d, z1, dt, b, p, z2);
+      keep_plane_stress_trial_block(k, active, mat.has_back, t);
+      IMPACT3D_FOR_LANES {
+        const bool a = active[l] != 0.0;
+        f1[l] = a ? z2[l] : f1[l];
+        active[l] = a && std::fabs(f1[l]) > tol[l] && f1[l] != f0[l] ? 1.0 : 0.0;
+      }
+    }
+  }
+  IMPACT3D_FOR_LANES {
+    b.sig[p][0][l] = t.sig[0][l], b.sig[p][1][l] = t.sig[1][l], b.sig[p][2][l] = t.sig[3][l];
+    b.sig[p][3][l] = t.sig[4][l], b.sig[p][4][l] = t.sig[5][l];
+    b.eps_p[p][l] = t.eps_p[l];
+    b.yielded[p][l] = t.yielded[l] != 0.0 ? 1.0 : 0.0;
+  }
+  if (mat.has_back)
+    for (int c = 0; c < 6; ++c) IMPACT3D_FOR_LANES b.back[p][c][l] = t.back[c][l];
+}
+
+void calc_shell_point_stresses_block(const ShellGroupConstants& g, const ShellBlockMaterial& mat, double dt,
+                                     ShellBlock& b) {
+  IMPACT3D_FOR_LANES {
+    b.Nxx[l] = b.Nyy[l] = b.Nxy[l] = b.Mxx[l] = b.Myy[l] = b.Mxy[l] = b.Qxz[l] = b.Qyz[l] = 0;
+    b.work[l] = 0;
+  }
+  const double hs = 0.5 * g.shrf;
+  for (int p = 0; p < g.nip; ++p) {
+    alignas(64) Lanes z, wz, d[5], old[5];
+    IMPACT3D_FOR_LANES {
+      const double hh = 0.5 * b.h[l];
+      z[l] = g.zeta[p] * hh;
+      wz[l] = g.weight[p] * hh;
+      d[0][l] = b.dxx[l] + z[l] * b.kxx[l];
+      d[1][l] = b.dyy[l] + z[l] * b.kyy[l];
+      d[2][l] = 0.5 * (b.gxy[l] + z[l] * b.kxy[l]);
+      d[3][l] = hs * b.gyz[l];
+      d[4][l] = hs * b.gxz[l];
+      for (int c = 0; c < 5; ++c) old[c][l] = b.sig[p][c][l];
+    }
+    Lanes* s = b.sig[p];
+    if (dt > 0) {
+      if (mat.kind == ShellMaterialKind::elastic)
+        update_plane_stress_elastic_block(*mat.mc, d, dt, s);
+      else
+        update_plane_stress_plastic_block(mat, d, dt, b, p);
+      IMPACT3D_FOR_LANES {
+        const double pw = 0.5 * ((old[0][l] + s[0][l]) * d[0][l] + (old[1][l] + s[1][l]) * d[1][l]) +
+                          (old[2][l] + s[2][l]) * d[2][l] + 0.5 * (old[3][l] + s[3][l]) * b.gyz[l] +
+                          0.5 * (old[4][l] + s[4][l]) * b.gxz[l];
+        b.work[l] += pw * wz[l];
+      }
+    }
+    IMPACT3D_FOR_LANES {
+      b.Nxx[l] += wz[l] * s[0][l];
+      b.Nyy[l] += wz[l] * s[1][l];
+      b.Nxy[l] += wz[l] * s[2][l];
+      b.Mxx[l] += wz[l] * z[l] * s[0][l];
+      b.Myy[l] += wz[l] * z[l] * s[1][l];
+      b.Mxy[l] += wz[l] * z[l] * s[2][l];
+      b.Qyz[l] += wz[l] * s[3][l];
+      b.Qxz[l] += wz[l] * s[4][l];
+    }
+  }
+}
+
+void calc_shell_local_forces_block(ShellBlock& b) {
+  const ShellFrameLanes& fr = b.fr;
+  for (int i = 0; i < 4; ++i) {
+    IMPACT3D_FOR_LANES {
+      const double A = fr.area[l], b1 = fr.b1[i][l], b2 = fr.b2[i][l];
+      b.fl[i][0][l] = A * (b1 * b.Nxx[l] + b2 * b.Nxy[l]);
+      b.fl[i][1][l] = A * (b2 * b.Nyy[l] + b1 * b.Nxy[l]);
+      b.fl[i][2][l] = A * (b1 * b.Qxz[l] + b2 * b.Qyz[l]);
+      b.ml[i][0][l] = A * (-b2 * b.Myy[l] - b1 * b.Mxy[l] - 0.25 * b.Qyz[l]);
+      b.ml[i][1][l] = A * (b1 * b.Mxx[l] + b2 * b.Mxy[l] + 0.25 * b.Qxz[l]);
+    }
+  }
+}
+
+void calc_shell_hourglass_forces_block(const ShellGroupConstants& g, bool stiffness, double dt, ShellBlock& b) {
+  const ShellFrameLanes& fr = b.fr;
+  const double qm = g.hourglass_coef;
+  const double qE = qm * g.E, qsG = qm * g.shrf * g.G, qrc = qm * g.rho * g.c_plate;
+  IMPACT3D_FOR_LANES {
+    const double A = fr.area[l], h = b.h[l];
+    double hx = 0, hy = 0;
+    for (int i = 0; i < 4; ++i) {
+      hx += kHgVector[i] * fr.xl[i][l];
+      hy += kHgVector[i] * fr.yl[i][l];
+    }
+    double gam[4];
+    double bb = 0;
+    for (int i = 0; i < 4; ++i) {
+      gam[i] = kHgVector[i] - hx * fr.b1[i][l] - hy * fr.b2[i][l];
+      bb += fr.b1[i][l] * fr.b1[i][l] + fr.b2[i][l] * fr.b2[i][l];
+    }
+    double q[5] = {0, 0, 0, 0, 0};
+    for (int i = 0; i < 4; ++i) {
+      const double vx = b.v[i][0][l], vy = b.v[i][1][l], vz = b.v[i][2][l];
+      const double wx = b.w[i][0][l], wy = b.w[i][1][l], wz = b.w[i][2][l];
+      q[0] += gam[i] * (fr.e[0][0][l] * vx + fr.e[0][1][l] * vy + fr.e[0][2][l] * vz);
+      q[1] += gam[i] * (fr.e[1][0][l] * vx + fr.e[1][1][l] * vy + fr.e[1][2][l] * vz);
+      q[2] += gam[i] * (fr.e[2][0][l] * vx + fr.e[2][1][l] * vy + fr.e[2][2][l] * vz);
+      q[3] += gam[i] * (fr.e[0][0][l] * wx + fr.e[0][1][l] * wy + fr.e[0][2][l] * wz);
+      q[4] += gam[i] * (fr.e[1][0][l] * wx + fr.e[1][1][l] * wy + fr.e[1][2][l] * wz);
+    }
+    double Q[5];
+    double de_hg = 0;
+    if (stiffness) {
+      const double km = qE * h * A * bb / 8.0;
+      const double kw = qsG * h * h * h * bb / 12.0;
+      const double kb = qE * h * h * h * A * bb / 192.0;
+      const double k[5] = {km, km, kw, kb, kb};
+      for (int j = 0; j < 5; ++j) {
+        const double q0 = b.hgq[j][l];
+        const double q1 = q0 + k[j] * q[j] * dt;
+        b.hgq[j][l] = q1;
+        Q[j] = q1;
+        de_hg += 0.5 * (q0 + q1) * q[j] * dt;
+      }
+    } else {
+      const double cm = qrc * h * std::sqrt(A) / 4.0;
+      const double cb = cm * h * h / 12.0;
+      const double c[5] = {cm, cm, cm, cb, cb};
+      for (int j = 0; j < 5; ++j) {
+        Q[j] = c[j] * q[j];
+        de_hg += Q[j] * q[j] * dt;
+      }
+    }
+    b.de_hg[l] = de_hg;
+    for (int i = 0; i < 4; ++i) {
+      b.fl[i][0][l] += gam[i] * Q[0];
+      b.fl[i][1][l] += gam[i] * Q[1];
+      b.fl[i][2][l] += gam[i] * Q[2];
+      b.ml[i][0][l] += gam[i] * Q[3];
+      b.ml[i][1][l] += gam[i] * Q[4];
+    }
+  }
+}
+
+void calc_shell_drilling_forces_block(const ShellGroupConstants& g, double dt, ShellBlock& b) {
+  const ShellFrameLanes& fr = b.fr;
+  const double cG = g.drill_coef * g.G;
+  IMPACT3D_FOR_LANES {
+    const double kd = cG * b.h[l] * fr.area[l] / 4.0;
+    double msum = 0, dwork = 0;
+    for (int i = 0; i < 4; ++i) {
+      const double m0 = b.drill[i][l];
+      const double m1 = m0 + kd * b.drate[i][l] * dt;
+      b.drill[i][l] = m1;
+      b.mz[i][l] = m1;
+      msum += m1;
+      dwork += 0.5 * (m0 + m1) * b.drate[i][l] * dt;
+    }
+    b.de_ie[l] += dwork;
+    for (int i = 0; i < 4; ++i) {
+      b.fl[i][0][l] += 0.5 * msum * fr.b2[i][l];
+      b.fl[i][1][l] -= 0.5 * msum * fr.b1[i][l];
+    }
+  }
+}
+
+void rotate_shell_forces_to_global_block(ShellBlock& b) {
+  const ShellFrameLanes& fr = b.fr;
+  for (int i = 0; i < 4; ++i)
+    for (int a = 0; a < 3; ++a)
+      IMPACT3D_FOR_LANES {
+        b.f[i][a][l] = b.fl[i][0][l] * fr.e[0][a][l] + b.fl[i][1][l] * fr.e[1][a][l] + b.fl[i][2][l] * fr.e[2][a][l];
+        b.m[i][a][l] = b.ml[i][0][l] * fr.e[0][a][l] + b.ml[i][1][l] * fr.e[1][a][l] + b.mz[i][l] * fr.e[2][a][l];
+      }
+}
+
+// The element step (calc_shell_step_length / c): the longest edge, a triangle's factor 2.
+void calc_shell_step_block(const ShellGroupConstants& g, ShellBlock& b) {
+  IMPACT3D_FOR_LANES {
+    double lmax = 0;
+    for (int i = 0; i < 4; ++i) {
+      const int j = (i + 1) % 4;
+      const double dx = b.x[j][0][l] - b.x[i][0][l], dy = b.x[j][1][l] - b.x[i][1][l], dz = b.x[j][2][l] - b.x[i][2][l];
+      const double e = dx * dx + dy * dy + dz * dz;
+      lmax = e > lmax ? e : lmax;  // std::fmax for these (never NaN, never -0)
+    }
+    const bool tri = b.x[2][0][l] == b.x[3][0][l] && b.x[2][1][l] == b.x[3][1][l] && b.x[2][2][l] == b.x[3][2][l];
+    b.dt_e[l] = (tri ? 2.0 : 1.0) * b.fr.area[l] / std::sqrt(lmax) / g.c_plate;
+  }
+}
+
+}  // namespace
+
+bool shell_block_covers(ShellMaterialKind kind, const MaterialConstants& mc) {
+  // (type 3's block radial return with rate effects groups beta * E_p apart from the scalar one's
+  // rate_factor * beta * E_p: not the same bits, so rate-dependent type 3 stays scalar)
+  return kind == ShellMaterialKind::elastic || kind == ShellMaterialKind::piecewise_linear ||
+         (kind == ShellMaterialKind::plastic_kinematic && !(mc.rate_c > 0.0));
+}
+
+void calc_shell_bt_forces_block(const ShellGroupConstants& g, const ShellBlockMaterial& mat, double dt,
+                                ShellBlock& b) {
+  IMPACT3D_FOR_LANES b.de_ie[l] = b.de_hg[l] = 0;
+  calc_shell_midpoint_coordinates_block(dt, b);
+  calc_shell_frame_block(b.xm, b.fm);
+  calc_shell_local_velocities_block(b);
+  calc_shell_strain_rates_block(b);
+  calc_shell_drilling_rates_block(b);
+  calc_shell_point_stresses_block(g, mat, dt, b);
+  IMPACT3D_FOR_LANES b.de_ie[l] = b.work[l] * b.fm.area[l] * dt;
+  calc_shell_frame_block(b.x, b.fr);
+  IMPACT3D_FOR_LANES {
+    b.area[l] = b.fr.area[l];
+    b.bad[l] = b.fm.bad[l] != 0.0 || b.fr.bad[l] != 0.0 ? 1.0 : 0.0;
+  }
+  calc_shell_local_forces_block(b);
+  if (g.hourglass_coef > 0) calc_shell_hourglass_forces_block(g, g.hourglass_type >= 4 && mat.has_hgq, dt, b);
+  for (int i = 0; i < 4; ++i) IMPACT3D_FOR_LANES b.mz[i][l] = 0;
+  if (g.drill_coef > 0) calc_shell_drilling_forces_block(g, dt, b);
+  rotate_shell_forces_to_global_block(b);
+  calc_shell_step_block(g, b);
+}
+
+}  // namespace impact3d
