@@ -462,13 +462,11 @@ void check_solid_formulations(const Model& m, const Location& file_loc, Diagnost
   }
 }
 
-bool check_model(const Model& m, Diagnostics& diag) {
-  const int before = diag.error_count();
-  Location file_loc;
-  file_loc.file = m.deck_file;
+namespace {
 
-  // element volumes
-  int bad_volumes = 0;
+// Error 1206 for each solid whose initial volume is not positive (solids with an undefined node
+// are reported elsewhere).
+void check_solid_volumes(const Model& m, const Location& file_loc, Diagnostics& diag) {
   for (int e = 0; e < m.num_hexes(); ++e) {
     const auto& n = m.hex_nodes[std::size_t(e)];
     if (n[0] < 0) continue;  // already reported
@@ -481,62 +479,47 @@ bool check_model(const Model& m, Diagnostics& diag) {
       defined = defined && std::isfinite(x[j]) && std::isfinite(y[j]) && std::isfinite(z[j]);
     }
     if (!defined) continue;  // uses a node that was never defined (reported as 1204)
-    double v = calc_hex_volume(x, y, z);
-    if (!(v > 0)) {
-      Location loc = file_loc;
-      loc.file = m.file_of(m.hex_file, std::size_t(e));
-      if (std::size_t(e) < m.hex_line.size()) loc.line = m.hex_line[std::size_t(e)];
-      loc.card = "solid element " + std::to_string(m.hex_id(e));
-      char buf[64];
-      std::snprintf(buf, sizeof buf, "volume %.6g", v);
-      diag.add(1206, loc, buf);
-      ++bad_volumes;
-    }
+    const double v = calc_hex_volume(x, y, z);
+    if (v > 0) continue;
+    Location loc = file_loc;
+    loc.file = m.file_of(m.hex_file, std::size_t(e));
+    if (std::size_t(e) < m.hex_line.size()) loc.line = m.hex_line[std::size_t(e)];
+    loc.card = "solid element " + std::to_string(m.hex_id(e));
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "volume %.6g", v);
+    diag.add(1206, loc, buf);
   }
+}
 
-  // nodes and materials used
-  std::vector<char> node_used(std::size_t(m.num_nodes()), 0);
-  std::vector<char> mat_used(m.materials.size(), 0);
+// The nodes and materials the solids use.
+void mark_solids_use(const Model& m, std::vector<char>& node_used, std::vector<char>& mat_used) {
   for (int e = 0; e < m.num_hexes(); ++e) {
     const auto& n = m.hex_nodes[std::size_t(e)];
     if (n[0] < 0) continue;
     for (int j = 0; j < 8; ++j) node_used[std::size_t(n[std::size_t(j)])] = 1;
-    int mat = m.hex_material[std::size_t(e)];
+    const int mat = m.hex_material[std::size_t(e)];
     if (mat >= 0 && mat < int(mat_used.size())) mat_used[std::size_t(mat)] = 1;
   }
-  check_shells(m, file_loc, diag, node_used, mat_used);
-  check_beams(m, file_loc, diag, node_used, mat_used);
-  check_spot_welds(m, file_loc, diag, node_used);
-  check_solid_formulations(m, file_loc, diag, mat_used);
-  // *MAT_SPOTWELD on solids: TFAIL is a beam rule here
+}
+
+// *MAT_SPOTWELD on solids: TFAIL is a beam rule here.
+void check_spot_weld_solids(const Model& m, const Location& file_loc, Diagnostics& diag, const std::vector<char>& mat_used) {
   for (std::size_t k = 0; k < m.materials.size(); ++k) {
     const MaterialData& md = m.materials[k];
     if (md.type != 100 || md.beam || md.shell || !mat_used[k]) continue;
     const MaterialParam* p = find_param(material_type(100), "TFAIL");
-    if (p && param_value(md, *p) > 0) {
-      Location loc = file_loc;
-      loc.line = md.line;
-      loc.card = "material " + std::to_string(md.number);
-      diag.add(1102, loc, "TFAIL of *MAT_SPOTWELD solids (the failure time acts on spot-weld beams)");
-    }
+    if (!p || !(param_value(md, *p) > 0)) continue;
+    Location loc = file_loc;
+    loc.line = md.line;
+    loc.card = "material " + std::to_string(md.number);
+    diag.add(1102, loc, "TFAIL of *MAT_SPOTWELD solids (the failure time acts on spot-weld beams)");
   }
-  // element faces that are interface segments (only those keys are looked for)
-  std::unordered_map<std::array<int, 4>, bool, FaceKeyHash> faces;
-  if (has_interface_segments(m)) {
-    for (const auto& si : m.interfaces)
-      for (const auto* segs : {&si.slave, &si.master})
-        for (const auto& seg : *segs) faces.try_emplace(face_key(seg), false);
-    for_each_element_face(m, [&](const std::array<int, 4>& key, const std::array<int, 4>&) {
-      auto it = faces.find(key);
-      if (it != faces.end()) it->second = true;
-    });
-    // a shell is a segment too (both its sides)
-    for (const auto& sn : m.shell_nodes) {
-      if (sn[0] < 0) continue;
-      auto it = faces.find(face_key(sn));
-      if (it != faces.end()) it->second = true;
-    }
-  }
+}
+
+// Warnings 2002 (a material no element uses) and 2003 (nodes no solid, shell or beam uses; the
+// first ten named), the latter only for models with solids.
+void report_unused(const Model& m, const Location& file_loc, Diagnostics& diag, const std::vector<char>& node_used,
+                   const std::vector<char>& mat_used) {
   for (std::size_t k = 0; k < mat_used.size(); ++k) {
     if (!mat_used[k] && m.materials[k].number != 0) {
       Location loc = file_loc;
@@ -555,47 +538,89 @@ bool check_model(const Model& m, Diagnostics& diag) {
   }
   if (unused_nodes && m.num_hexes() > 0)
     diag.add(2003, file_loc, std::to_string(unused_nodes) + " node(s): " + first_unused + (unused_nodes > 10 ? ", ..." : ""));
+}
 
-  // stonewalls act on deformable nodes only (the rigid-body update would overwrite the
-  // impulse of a single node): say so when the two meet
+// The interface segments' keys, each true when it is a solid's face or a shell (either side).
+std::unordered_map<std::array<int, 4>, bool, FaceKeyHash> find_interface_faces(const Model& m) {
+  std::unordered_map<std::array<int, 4>, bool, FaceKeyHash> faces;
+  if (!has_interface_segments(m)) return faces;
+  for (const auto& si : m.interfaces)
+    for (const auto* segs : {&si.slave, &si.master})
+      for (const auto& seg : *segs) faces.try_emplace(face_key(seg), false);
+  for_each_element_face(m, [&](const std::array<int, 4>& key, const std::array<int, 4>&) {
+    auto it = faces.find(key);
+    if (it != faces.end()) it->second = true;
+  });
+  for (const auto& sn : m.shell_nodes) {
+    if (sn[0] < 0) continue;
+    auto it = faces.find(face_key(sn));
+    if (it != faces.end()) it->second = true;
+  }
+  return faces;
+}
+
+// Error 1218 for each interface segment that is no element face.
+void check_interface_segments_are_faces(const Model& m, const Location& file_loc, Diagnostics& diag) {
+  auto faces = find_interface_faces(m);
+  for (std::size_t i = 0; i < m.interfaces.size(); ++i) {
+    const auto& si = m.interfaces[i];
+    for (int side = 0; side < 2; ++side) {
+      const auto& segs = side == 0 ? si.slave : si.master;
+      const auto& lines = side == 0 ? si.slave_line : si.master_line;
+      for (std::size_t s = 0; s < segs.size(); ++s) {
+        if (faces[face_key(segs[s])]) continue;
+        Location loc = file_loc;
+        loc.file = m.file_of(side == 0 ? si.slave_file : si.master_file, s);
+        if (s < lines.size()) loc.line = lines[s];
+        loc.card = "sliding interface " + std::to_string(i + 1) + (side == 0 ? " slave" : " master") + " segment " +
+                   std::to_string(s + 1);
+        diag.add(1218, loc, "nodes " + std::to_string(m.node_id(segs[s][0])) + " " + std::to_string(m.node_id(segs[s][1])) + " " +
+                                std::to_string(m.node_id(segs[s][2])) + " " + std::to_string(m.node_id(segs[s][3])));
+      }
+    }
+  }
+}
+
+// Stonewalls act on deformable nodes only (the rigid-body update would overwrite the impulse of
+// a single node): warning 2012 when the two meet. Initial velocities on the nodes of a rigid
+// body: the run gives the body the momentum and angular momentum of the nodal velocities and
+// starts its nodes with that rigid motion (initialize.cpp); say so when the nodal velocities
+// were not already a rigid motion.
+void check_rigid_bodies(const Model& m, const Location& file_loc, Diagnostics& diag) {
   bool has_rigid = false;
   for (const auto& md : m.materials) {
     const MaterialType* t = find_material_type(md.type);
     has_rigid = has_rigid || (t && t->rigid);
   }
-  check_material_curves(m, diag, file_loc);
-  if (has_rigid && !m.walls.empty()) {
+  if (!has_rigid) return;
+  if (!m.walls.empty()) {
     Location loc = file_loc;
     loc.line = m.walls[0].line;
     loc.card = "stonewall 1";
     diag.add(2012, loc);
   }
+  if (!m.init_velocities.empty()) check_rigid_velocities(m, diag, file_loc);
+}
 
-  // initial velocities on the nodes of a rigid body: the run gives the body the momentum and
-  // angular momentum of the nodal velocities and starts its nodes with that rigid motion
-  // (initialize.cpp); say so when the nodal velocities were not already a rigid motion
-  if (has_rigid && !m.init_velocities.empty()) check_rigid_velocities(m, diag, file_loc);
+}  // namespace
 
-  // interface segments must be element faces
-  for (std::size_t i = 0; i < m.interfaces.size(); ++i) {
-    const auto& si = m.interfaces[i];
-    for (int side = 0; side < 2; ++side) {
-      const auto& segs = side == 0 ? si.slave : si.master;
-      for (std::size_t s = 0; s < segs.size(); ++s) {
-        if (!faces[face_key(segs[s])]) {
-          Location loc = file_loc;
-          const auto& lines = side == 0 ? si.slave_line : si.master_line;
-          loc.file = m.file_of(side == 0 ? si.slave_file : si.master_file, s);
-          if (s < lines.size()) loc.line = lines[s];
-          loc.card = "sliding interface " + std::to_string(i + 1) + (side == 0 ? " slave" : " master") +
-                     " segment " + std::to_string(s + 1);
-          diag.add(1218, loc, "nodes " + std::to_string(m.node_id(segs[s][0])) + " " + std::to_string(m.node_id(segs[s][1])) + " " +
-                                  std::to_string(m.node_id(segs[s][2])) + " " + std::to_string(m.node_id(segs[s][3])));
-        }
-      }
-    }
-  }
-  (void)bad_volumes;
+bool check_model(const Model& m, Diagnostics& diag) {
+  const int before = diag.error_count();
+  Location file_loc;
+  file_loc.file = m.deck_file;
+  check_solid_volumes(m, file_loc, diag);
+  std::vector<char> node_used(std::size_t(m.num_nodes()), 0);
+  std::vector<char> mat_used(m.materials.size(), 0);
+  mark_solids_use(m, node_used, mat_used);
+  check_shells(m, file_loc, diag, node_used, mat_used);
+  check_beams(m, file_loc, diag, node_used, mat_used);
+  check_spot_welds(m, file_loc, diag, node_used);
+  check_solid_formulations(m, file_loc, diag, mat_used);
+  check_spot_weld_solids(m, file_loc, diag, mat_used);
+  report_unused(m, file_loc, diag, node_used, mat_used);
+  check_material_curves(m, diag, file_loc);
+  check_rigid_bodies(m, file_loc, diag);
+  check_interface_segments_are_faces(m, file_loc, diag);
   return diag.error_count() == before;
 }
 
