@@ -4,6 +4,8 @@
 #include "impact3d/input/keyword_cards.h"
 
 #include <cmath>
+#include <deque>
+#include <iterator>
 #include <iomanip>
 #include <limits>
 #include <sstream>
@@ -11,6 +13,8 @@
 #include <stdexcept>
 
 #include "common/messages.h"
+#include "impact3d/material/eos.h"
+#include "impact3d/material/material_types.h"
 
 namespace impact3d {
 
@@ -153,6 +157,108 @@ std::vector<KeywordSpec> nodes_elements_specs() {
                    plain("PARM5", 4, E),
                  }, "_THICKNESS, named \"element EID thickness card\"; missing: error 1316"}},
                "an element with a refused field is left out"});
+  return t;
+}
+
+// The labels of a keyword's cards in messages and tables ("card 1", ...).
+const char* card_label(std::size_t k) {
+  static const char* const labels[] = {"card 1", "card 2", "card 3", "card 4", "card 5", "card 6", "card 7", "card 8",
+                                       "card 9", "card 10", "card 11", "card 12", "card 13", "card 14", "card 15", "card 16"};
+  if (k >= std::size(labels)) throw std::logic_error("keyword card table: more than 16 cards");
+  return labels[k];
+}
+
+// A material parameter's check (material_types.h ParamCheck) as the tables write it; it is
+// made by the material table once every card is read (check_material_params, the fixed
+// format's too), so the field is checked where its reader says.
+std::vector<KeywordCheck> param_checks(const MaterialParam& p) {
+  const char* d = p.detail && p.detail[0] ? p.detail : nullptr;
+  switch (p.check) {
+    case ParamCheck::none: return {};
+    case ParamCheck::positive: return {outside(0, kInf, p.msg, d, true)};
+    case ParamCheck::non_negative: return {below(0, p.msg, d)};
+    case ParamCheck::fraction: return {outside(0, 1, p.msg, d)};
+    case ParamCheck::poisson: return {outside(0, 0.5, p.msg, d, false, true)};
+    case ParamCheck::below_E: return {below(0, p.msg, d)};  // and below E (the meaning says)
+    case ParamCheck::flag01: return {neither(0, 1, p.msg, d)};
+    case ParamCheck::integer:
+    case ParamCheck::curve: return {not_whole(0, 999999999, p.msg, d)};
+    case ParamCheck::unsupported: return {nonzero(1102, d)};
+    case ParamCheck::ignored: return {nonzero(2006, d)};
+  }
+  return {};
+}
+
+// *MAT_...: the cards of each type of the material table (material_types.h): card 1 MID RO
+// and the type's parameters, by card in the table's order.
+KeywordSpec material_spec(const MaterialType& t) {
+  static std::deque<std::string> texts;  // meanings and notes built here (the tables keep pointers)
+  KeywordSpec s{t.keywords, KeywordFamily::materials, false, {}, ""};
+  for (int k = 0; k < t.keyword_cards; ++k) s.cards.push_back({card_label(std::size_t(k)), 8, 10, per_field, {}, k ? "when given" : ""});
+  s.cards[0].fields.push_back({"MID", 0, I, 0, false, {}, "material id (the cards are then named \"material MID\"; defined twice: error 1200)"});
+  s.cards[0].fields.push_back({"RO", 1, E, 0, false, {outside(0, kInf, 1207, nullptr, true)}, "mass density"});
+  for (const MaterialParam& p : t.params) {
+    if (p.kcard < 0 || p.kcard >= t.keyword_cards) continue;
+    const char* meaning = p.label ? p.label : p.field == &MaterialData::E ? "Young's modulus" : p.field == &MaterialData::nu ? "Poisson's ratio"
+                                            : p.fname ? p.fname : "";
+    if (p.check == ParamCheck::below_E) meaning = texts.emplace_back(std::string(meaning) + " (must be below E)").c_str();
+    if (p.check == ParamCheck::curve) meaning = texts.emplace_back(std::string(meaning[0] ? meaning : "load curve") + " (0: none)").c_str();
+    s.cards[std::size_t(p.kcard)].fields.push_back({p.key, p.kfield, E, p.def, false, param_checks(p), meaning, kByReader});
+  }
+  std::string note = std::string("type ") + std::to_string(t.number) + ", " + t.name +
+                     "; the parameters are checked once the cards are read (the material table's checks, those of the fixed format too)";
+  if (t.extra_card_feature) note += std::string("; a card after these: error 1102 (") + t.extra_card_feature + ")";
+  s.note = texts.emplace_back(note).c_str();
+  return s;
+}
+
+// *EOS_...: the cards of each form of the EOS table (material/eos.h).
+KeywordSpec eos_spec(const EosForm& f) {
+  static std::deque<std::string> texts;
+  KeywordSpec s{{f.keyword}, KeywordFamily::materials, false, {}, ""};
+  for (std::size_t k = 0; k < f.widths.size(); ++k)
+    s.cards.push_back({card_label(k), eos_card_fields(f, int(k)), f.widths[k], per_field, {}, k ? "when given" : ""});
+  s.cards[0].fields.push_back({"EOSID", 0, I, 0, false, {}, "equation of state id (the cards are then named by it; defined twice: error 1200)"});
+  for (const EosParam& p : f.params) {
+    if (std::size_t(p.kcard) >= s.cards.size()) continue;
+    if (p.slot < 0) s.cards[std::size_t(p.kcard)].fields.push_back({p.key, p.kfield, E, 0, false, {nonzero(1102, p.unsupported)}, "not supported"});
+    else s.cards[std::size_t(p.kcard)].fields.push_back({p.key, p.kfield, E, p.slot == kEosSlotV0 ? 1.0 : 0.0, false, {}, ""});
+  }
+  s.note = texts.emplace_back(std::string("form ") + std::to_string(f.form) + ", " + f.name +
+                              "; the constants are checked once the cards are read (material/eos.h)").c_str();
+  return s;
+}
+
+std::vector<KeywordSpec> materials_specs() {
+  std::vector<KeywordSpec> t;
+  for (const MaterialType* m : material_types()) t.push_back(material_spec(*m));
+  for (const EosForm* f : eos_forms()) t.push_back(eos_spec(*f));
+  t.push_back({{"MAT_ADD_EROSION"}, KeywordFamily::materials, false,
+               {{"card 1", 8, 10, per_field, {
+                   {"MID", 0, I, 0, false, {}, "the material (the cards are then named \"material MID\"; given twice: error 1200)"},
+                   {"EXCL", 1, E, 0, false, {}, "a criterion equal to it is not used"},
+                   {"MXPRES", 2, E, 0, false, {}, "maximum pressure"},
+                   {"MNEPS", 3, E, 0, false, {}, "minimum principal strain"},
+                   {"EFFEPS", 4, E, 0, false, {}, "maximum effective strain"},
+                   {"VOLEPS", 5, E, 0, false, {}, "volumetric strain"},
+                   plain("NUMFIP", 6, E, "read, no effect (one integration point per solid)"),
+                   {"NCS", 7, I, 1, false, {outside(0, 6, 1003, "the number of criteria that must hold at once, 1-6 (0: 1)")},
+                    "criteria that must hold at once (0: 1)"},
+               }, ""},
+                {"card 2", 8, 10, per_field, {
+                   {"MNPRES", 0, E, 0, false, {}, "minimum pressure"},
+                   {"SIGP1", 1, E, 0, false, {}, "maximum principal stress"},
+                   {"SIGVM", 2, E, 0, false, {}, "equivalent stress"},
+                   {"MXEPS", 3, E, 0, false, {}, "maximum principal strain"},
+                   {"EPSSH", 4, E, 0, false, {}, "shear strain"},
+                   {"SIGTH", 5, E, 0, false, {}, "Tuler-Butcher erosion: not blank, 0 or EXCL: error 1102"},
+                   {"IMPULSE", 6, E, 0, false, {}, "Tuler-Butcher erosion: not blank, 0 or EXCL: error 1102"},
+                   {"FAILTM", 7, E, 0, false, {}, "failure time"},
+               }, "when given"},
+                {"card 3", 8, 10, per_field, {
+                   {"IDAM", 0, E, 0, false, {}, "damage models: not blank, 0 or EXCL: error 1102"},
+               }, "when given"}},
+               "erosion criteria of a material (0: not used)"});
   return t;
 }
 
@@ -669,6 +775,7 @@ const std::vector<KeywordSpec>& all_keyword_specs() {
   static const std::vector<KeywordSpec> t = [] {
     std::vector<KeywordSpec> all = nodes_elements_specs();
     for (KeywordSpec& s : parts_sections_specs()) all.push_back(std::move(s));
+    for (KeywordSpec& s : materials_specs()) all.push_back(std::move(s));
     for (KeywordSpec& s : sets_boxes_specs()) all.push_back(std::move(s));
     for (KeywordSpec& s : loads_bcs_specs()) all.push_back(std::move(s));
     for (KeywordSpec& s : control_database_specs()) all.push_back(std::move(s));

@@ -77,6 +77,7 @@ struct KeywordCardLayout {
 // The families of keywords (one reader file each, keyword_<family>.cpp).
 enum class KeywordFamily {
   nodes_elements,    // *NODE, *ELEMENT_SOLID / _SHELL / _BEAM (keyword_nodes_elements.cpp)
+  materials,         // *MAT_..., *EOS_..., *MAT_ADD_EROSION (keyword_materials.cpp; the cards from the material and EOS tables)
   parts_sections,    // *PART, *SECTION_..., *HOURGLASS (keyword_parts_sections.cpp)
   sets_boxes,        // *DEFINE_BOX (keyword_sets_boxes.cpp)
   loads_bcs,         // *LOAD_..., *BOUNDARY_..., *INITIAL_..., *DAMPING_GLOBAL (keyword_loads_bcs.cpp)

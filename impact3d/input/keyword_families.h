@@ -10,6 +10,8 @@
 
 #include "impact3d/input/coordinate_systems.h"
 #include "impact3d/input/keyword_blocks.h"
+#include "impact3d/material/eos.h"
+#include "impact3d/material/material_types.h"
 #include "impact3d/model/model.h"
 
 namespace impact3d::kw {
@@ -83,6 +85,31 @@ struct KeywordMesh {
 // Reads *NODE, *ELEMENT_SOLID, *ELEMENT_SHELL (_THICKNESS) and *ELEMENT_BEAM (_THICKNESS) into
 // m; false if the keyword is none of them.
 bool read_nodes_elements(const Block& b, KeywordContext& ctx, KeywordMesh& m);
+
+// ---------------------------------------------------------------- materials and equations of state
+// (keyword_materials.cpp; the cards are those of the material and EOS tables)
+struct RMat {
+  const MaterialType* type = nullptr;  // material_types.h
+  MaterialData md;                     // type, rho and the type's parameters
+  std::vector<Ref> refs;               // where each of the type's parameters was read
+  std::string title;
+  Ref ref;
+};
+struct REos {  // *EOS_... (material/eos.h)
+  EosData eos;
+  Ref ref;
+  Ref lcid_ref;  // form 6: the LCID field
+};
+
+struct KeywordMaterials {
+  std::map<int, RMat> mats;                              // by MID
+  std::map<int, REos> eos;                               // by EOSID
+  std::map<int, std::pair<ErosionData, Ref>> erosion;    // *MAT_ADD_EROSION by MID
+};
+
+// Reads *MAT_... (the material table's types), *EOS_... (the EOS table's forms) and
+// *MAT_ADD_EROSION into m; false if the keyword is none of them.
+bool read_materials(const Block& b, KeywordContext& ctx, KeywordMaterials& m);
 
 // ---------------------------------------------------------------- parts and sections
 // (keyword_parts_sections.cpp)

@@ -46,18 +46,6 @@ int bc_code(int bits) {
 }
 
 // Raw records, before resolution (the families' records are in keyword_families.h).
-struct RMat {
-  const MaterialType* type = nullptr;  // material_types.h
-  MaterialData md;                     // type, rho and the type's parameters
-  std::vector<Ref> refs;               // where each of the type's parameters was read
-  std::string title;
-  Ref ref;
-};
-struct REos {  // *EOS_... (material/eos.h)
-  EosData eos;
-  Ref ref;
-  Ref lcid_ref;  // form 6: the LCID field
-};
 // One card of a *SET_..._GENERAL (OPTION E1-E7, continued by cards of 8 more ids), or the
 // member sets of a *SET_..._ADD (option "SET"): applied in deck order, a "D" option removes.
 struct RSetTerm {
@@ -188,10 +176,11 @@ class KeywordReader {
   std::vector<RBeam>& beams_ = me_.beams;
   std::vector<std::vector<int>> part_beams_;  // per part: its beams (indices into Model::beam_nodes)
   std::vector<std::pair<int, int>>& node_rc_ = me_.node_rc;
-  std::map<int, RMat> mats_;
-  std::map<int, std::pair<ErosionData, Ref>> erosion_;  // *MAT_ADD_EROSION by MID
+  KeywordMaterials mt_;  // materials, equations of state, erosion (keyword_materials.cpp)
+  std::map<int, RMat>& mats_ = mt_.mats;
+  std::map<int, std::pair<ErosionData, Ref>>& erosion_ = mt_.erosion;
   std::map<int, RHourglass>& hourglasses_ = ps_.hourglasses;
-  std::map<int, REos> eos_;                   // EOSID -> equation of state (material/eos.h)
+  std::map<int, REos>& eos_ = mt_.eos;
   std::map<int, std::string> unsupported_eosids_;  // EOSID -> the refused *EOS keyword, line
   std::map<int, RIdList> node_sets_, part_sets_;
   ParamTable params_;                    // *PARAMETER values
@@ -816,17 +805,12 @@ class KeywordReader {
       if (read_parts_sections(b, ctx_, ps_)) continue;      // keyword_parts_sections.cpp
       if (read_loads_bcs(b, ctx_, ld_)) continue;           // keyword_loads_bcs.cpp
       if (read_nodes_elements(b, ctx_, me_)) continue;      // keyword_nodes_elements.cpp
+      if (read_materials(b, ctx_, mt_)) continue;           // keyword_materials.cpp
       if (n == "TITLE") {
         for (const KLine& l : b.data) {
           m_.title = rtrim(l.line->text.substr(0, std::min<std::size_t>(80, l.line->text.size())));
           break;
         }
-      } else if (const MaterialType* mt = find_material_type_by_keyword(n)) {
-        parse_mat(b, *mt);
-      } else if (const EosForm* ef = find_eos_form_by_keyword(n)) {
-        parse_eos(b, *ef);
-      } else if (n == "MAT_ADD_EROSION") {
-        parse_mat_add_erosion(b);
       } else if (n == "CONSTRAINED_SPOTWELD") {
         parse_spotweld(b);
       } else if (n == "CONSTRAINED_GENERALIZED_WELD_SPOT") {
@@ -911,89 +895,6 @@ class KeywordReader {
       else if (num && tok.size() == 4 && tok[1] == "INITIALLY_ELASTIC" && tok[2] == "PART") initially_elastic_.insert(int(v));
       else diag_.add(1312, loc, "unknown IMPACT-3D line: " + rtrim(l.line->text));
     }
-  }
-
-  // *CONTROL_SHELL: card 1 WRPANG ESORT IRNXX ISTUPD THEORY BWC MITER PROJ; card 2 ROTASCL
-  // INTGRD LAMSHT CSTYP6 TSHELL.  THEORY must be Belytschko-Tsay (2); ROTASCL scales the rotary
-  // inertia; the options that change nothing for Belytschko-Tsay shells with constant
-  // thickness are listed as ignored (2006).
-  // *MAT_...: the cards and fields its type's table names (material_types.h), checked there.
-  void parse_mat(const Block& b, const MaterialType& t) {
-    std::size_t start = skip_option_card(b);
-    if (start >= b.data.size()) { ctx_.missing_card(b, "card 1"); return; }
-    KCard c = card(b, start, "card 1", W(b, 8));
-    int mid = xid(int(c.i(0, "MID")), b, &IncludeTransform::idmoff);
-    c.set_card(b.keyword + " material " + std::to_string(mid));
-    RMat m;
-    m.type = &t;
-    m.ref = c.ref(0);
-    m.md.type = t.number;
-    set_param_defaults(m.md, t);
-    m.md.rho = c.r(1, "RO");
-    if (!(m.md.rho > 0)) c.error(1207, 1, "RO");
-    std::vector<KCard> cards{c};
-    for (int k = 1; k < t.keyword_cards && start + std::size_t(k) < b.data.size(); ++k)
-      cards.push_back(card(b, start + std::size_t(k), "material " + std::to_string(mid) + " card " + std::to_string(k + 1), W(b, 8)));
-    m.refs.assign(t.params.size(), m.ref);
-    for (std::size_t i = 0; i < t.params.size(); ++i) {
-      const MaterialParam& p = t.params[i];
-      if (p.kcard < 0 || std::size_t(p.kcard) >= cards.size()) continue;
-      KCard& kc = cards[std::size_t(p.kcard)];
-      double v = kc.r(p.kfield, p.key, p.def);
-      if (kc.blank(p.kfield)) v = p.def;
-      param_value(m.md, p) = v;
-      m.refs[i] = kc.ref(p.kfield);
-    }
-    check_material_params(m.md, t, [&](const MaterialParam& p, int msg, const std::string& detail) {
-      KCard& kc = p.kcard >= 0 && std::size_t(p.kcard) < cards.size() ? cards[std::size_t(p.kcard)] : cards[0];
-      kc.error(msg, p.kcard >= 0 ? p.kfield : 0, p.key, detail);
-    });
-    if (t.extra_card_feature && start + std::size_t(t.keyword_cards) < b.data.size()) {
-      Location loc = loc_of(c.ref(-1), b.keyword);
-      loc.line = b.data[start + std::size_t(t.keyword_cards)].line->number;
-      diag_.add(1102, loc, t.extra_card_feature);
-    }
-    if (b.title_opt) m.title = rtrim(b.data[0].line->text);
-    if (mats_.count(mid)) c.error(1200, 0, "MID", "also defined at " + at(mats_[mid].ref));
-    mats_[mid] = m;
-  }
-
-  // *EOS_... (_TITLE), the forms of material/eos.h: the form's cards; a *PART's EOSID gives it to
-  // the part's material.
-  void parse_eos(const Block& b, const EosForm& f) {
-    const std::size_t start = skip_option_card(b);
-    if (start >= b.data.size()) { ctx_.missing_card(b, "card 1"); return; }
-    std::vector<KCard> cards;
-    for (std::size_t k = 0; k < f.widths.size() && start + k < b.data.size(); ++k)
-      cards.push_back(card(b, start + k, "card " + std::to_string(k + 1), W(b, eos_card_fields(f, int(k)), f.widths[k])));
-    const int id = xid(int(cards[0].i(0, "EOSID")), b, &IncludeTransform::idroff);
-    for (std::size_t k = 0; k < cards.size(); ++k) cards[k].set_card(b.keyword + " " + std::to_string(id) + (k ? " card " + std::to_string(k + 1) : ""));
-    REos r;
-    r.eos.form = f.form;
-    r.eos.id = id;
-    r.ref = cards[0].ref(0);
-    for (const EosParam& p : f.params) {
-      if (std::size_t(p.kcard) >= cards.size()) continue;
-      KCard& kc = cards[std::size_t(p.kcard)];
-      const double def = p.slot == kEosSlotV0 ? 1.0 : 0.0;
-      double v = kc.r(p.kfield, p.key, def);
-      if (kc.blank(p.kfield)) v = def;
-      if (p.slot < 0) {
-        if (v != 0) kc.error(1102, p.kfield, p.key, p.unsupported);
-        continue;
-      }
-      eos_value(r.eos, p) = v;
-      if (r.eos.form == 6 && p.slot == kEosLeakCurve) {
-        r.lcid_ref = kc.ref(p.kfield);
-        if (v > 0 && v == std::floor(v) && v < 1e9) eos_value(r.eos, p) = xid(int(v), b, &IncludeTransform::idfoff);
-      }
-    }
-    check_eos(r.eos, 1.0, [&](const EosParam& p, int msg, const std::string& detail) {
-      KCard& kc = cards[std::min(std::size_t(p.kcard), cards.size() - 1)];
-      kc.error(msg, p.kfield, p.key, detail);
-    });
-    if (eos_.count(id)) cards[0].error(1200, 0, "EOSID", "also defined at " + at(eos_[id].ref));
-    eos_[id] = r;
   }
 
   // A solid part's equation of state (*PART EOSID) into its material: refused for a material
@@ -1754,47 +1655,6 @@ class KeywordReader {
   // *MAT_ADD_EROSION: card 1 MID EXCL MXPRES MNEPS EFFEPS VOLEPS NUMFIP NCS, card 2 MNPRES SIGP1
   // SIGVM MXEPS EPSSH SIGTH IMPULSE FAILTM; Tuler-Butcher and the damage cards (3 on) are not
   // supported.  A value equal to EXCL switches its criterion off.
-  void parse_mat_add_erosion(const Block& b) {
-    std::size_t start = skip_option_card(b);
-    if (start >= b.data.size()) { ctx_.missing_card(b, "card 1"); return; }
-    KCard c = card(b, start, "card 1", W(b, 8));
-    const int mid = xid(int(c.i(0, "MID")), b, &IncludeTransform::idmoff);
-    c.set_card(b.keyword + " material " + std::to_string(mid));
-    ErosionData e;
-    e.active = true;
-    e.line = b.data[start].line->number;
-    e.excl = c.r(1, "EXCL");
-    auto unsupported = [&](KCard& k, int f, const char* name, const char* what) {
-      const double v = k.r(f, name);
-      if (!k.blank(f) && v != e.excl && v != 0) k.error(1102, f, name, what);
-    };
-    e.mxpres = c.r(2, "MXPRES");
-    e.mneps = c.r(3, "MNEPS");
-    e.effeps = c.r(4, "EFFEPS");
-    e.voleps = c.r(5, "VOLEPS");
-    c.r(6, "NUMFIP");  // one integration point per solid here
-    const long long ncs = c.blank(7) ? 1 : c.i(7, "NCS");
-    if (ncs < 0 || ncs > 6) c.error(1003, 7, "NCS", "the number of criteria that must hold at once, 1-6 (0: 1)");
-    e.ncs = ncs <= 0 ? 1 : int(ncs);
-    if (start + 1 < b.data.size()) {
-      KCard d = card(b, start + 1, "material " + std::to_string(mid) + " card 2", W(b, 8));
-      e.mnpres = d.r(0, "MNPRES");
-      e.sigp1 = d.r(1, "SIGP1");
-      e.sigvm = d.r(2, "SIGVM");
-      e.mxeps = d.r(3, "MXEPS");
-      e.epssh = d.r(4, "EPSSH");
-      unsupported(d, 5, "SIGTH", "Tuler-Butcher erosion");
-      unsupported(d, 6, "IMPULSE", "Tuler-Butcher erosion");
-      e.failtm = d.r(7, "FAILTM");
-    }
-    if (start + 2 < b.data.size()) {
-      KCard d = card(b, start + 2, "material " + std::to_string(mid) + " card 3", W(b, 8));
-      unsupported(d, 0, "IDAM", "damage models of *MAT_ADD_EROSION");
-    }
-    if (erosion_.count(mid)) c.error(1200, 0, "MID", "*MAT_ADD_EROSION of this material also given at " + at(erosion_[mid].second));
-    erosion_[mid] = {e, c.ref(0)};
-  }
-
   // Keywords whose absence changes what the rest of the deck means: --lenient-keywords cannot
   // ignore them (*CASE blocks select cards per case; ignoring them applied every case's cards
   // at once).

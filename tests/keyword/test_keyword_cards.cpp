@@ -15,6 +15,8 @@
 #include "impact3d/input/deck_reader.h"
 #include "impact3d/input/keyword_cards.h"
 #include "impact3d/input/keyword_reader.h"
+#include "impact3d/material/eos.h"
+#include "impact3d/material/material_types.h"
 
 using namespace impact3d;
 
@@ -252,4 +254,47 @@ TEST(KeywordCards, NodesAndElementsByTheirTables) {
   EXPECT_EQ(a.m.shell_nodes, b.m.shell_nodes);
   EXPECT_EQ(a.m.shell_nodes[1][3], a.m.shell_nodes[1][2]);  // a triangle: N4 is N3
   EXPECT_EQ(a.m.x, b.m.x);
+}
+
+// The *MAT_ and *EOS_ tables are made from the material and EOS tables (material_types.h,
+// material/eos.h): every type's keywords and every form's keyword have one, card 1 begins with
+// the id (and RO), and each parameter is a field at its card and column; a material's
+// parameter checks come once its cards are read, in the type's order.
+TEST(KeywordCards, MaterialCardsFromTheMaterialTable) {
+  for (const MaterialType* t : material_types()) {
+    for (const char* k : t->keywords) {
+      const KeywordSpec* s = find_keyword_spec(k);
+      ASSERT_NE(s, nullptr) << k;
+      EXPECT_EQ(s->family, KeywordFamily::materials) << k;
+      ASSERT_EQ(s->cards.size(), std::size_t(t->keyword_cards)) << k;
+      EXPECT_STREQ(s->cards[0].fields[0].name, "MID");
+      EXPECT_STREQ(s->cards[0].fields[1].name, "RO");
+      for (const MaterialParam& p : t->params) {
+        if (p.kcard < 0) continue;
+        bool found = false;
+        for (const KeywordField& f : s->cards[std::size_t(p.kcard)].fields) found = found || (f.index == p.kfield && std::string(f.name) == p.key);
+        EXPECT_TRUE(found) << k << " " << p.key;
+        EXPECT_FALSE(p.kcard == 0 && p.kfield < 2) << k << " " << p.key;
+      }
+    }
+  }
+  for (const EosForm* f : eos_forms()) {
+    const KeywordSpec* s = find_keyword_spec(f->keyword);
+    ASSERT_NE(s, nullptr) << f->keyword;
+    ASSERT_EQ(s->cards.size(), f->widths.size());
+    for (std::size_t c = 0; c < s->cards.size(); ++c) {  // no two fields on one column (checks run as read)
+      std::set<int> idx;
+      for (const KeywordField& x : s->cards[c].fields) EXPECT_TRUE(idx.insert(x.index).second) << f->keyword << " " << x.name;
+    }
+  }
+  const KeywordCardLayout& elastic = find_keyword_spec("MAT_ELASTIC")->card("card 1");
+  EXPECT_EQ(elastic.field("PR").index, 3);
+  EXPECT_EQ(elastic.field("PR").checked_after, kByReader);
+
+  // RO as read, the parameters' checks after the card (E before PR), in their columns
+  const Read r = read("*KEYWORD\n*CONTROL_TERMINATION\n   1.0E-05\n*MAT_ELASTIC\n" + card({"4", "-1.0", "-2.0", "0.7"}) + "*END\n");
+  ASSERT_GE(r.lines().size(), 3u);
+  EXPECT_EQ(r.lines()[0].find("deck.k:5: error 1207: *MAT_ELASTIC material 4, field \"RO\" (cols 11-20)"), 0u) << r.lines()[0];
+  EXPECT_EQ(r.lines()[1].find("deck.k:5: error 1208: *MAT_ELASTIC material 4, field \"E\" (cols 21-30)"), 0u) << r.lines()[1];
+  EXPECT_EQ(r.lines()[2].find("deck.k:5: error 1209: *MAT_ELASTIC material 4, field \"PR\" (cols 31-40)"), 0u) << r.lines()[2];
 }
