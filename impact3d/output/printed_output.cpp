@@ -294,15 +294,11 @@ void write_counts(std::ostream& os, const Model& m) {
                                   : "     beam time-history blocks ............. " + std::to_string(m.beam_th_blocks.size()) + "\n");
 }
 
-void write_model_summary(std::ostream& os, const Model& m) {
+namespace {
+
+// The control cards: counts, times, intervals, step controls.
+void write_control_information(std::ostream& os, const Model& m) {
   const ControlData& k = m.control;
-  os << "\n title: " << m.title << "\n"
-     << " deck:  " << m.deck_file
-     << (m.keyword_deck ? std::string(" (LS-DYNA keyword format)")
-                        : std::string(" (DYNA3D fixed format, ") + (m.large_format ? "large" : "small") + " fields)")
-     << "\n"
-     << " units: as the deck gives them (consistent set; SI: m, kg, s, Pa)\n\n"
-     << " c o n t r o l   i n f o r m a t i o n\n\n";
   write_counts(os, m);
   os << "     termination time ..................... " << fmt("%.6e", k.end_time) << " (time)\n";
   if (k.end_cycle > 0) os << "     termination cycle .................... " << k.end_cycle << "\n";
@@ -324,93 +320,102 @@ void write_model_summary(std::ostream& os, const Model& m) {
     os << "     added-mass limit ENDMAS .............. " << fmt("%.4g", k.end_mass_percent) << " %\n";
   os << "     sliding-interface penalty scale ...... " << fmt("%.4f", k.penalty_scale) << "\n"
      << "     run-log interval ..................... " << k.report_interval << " cycles\n"
-     << "     minimum step factor .................. " << fmt("%.4g", k.min_step_factor) << "\n\n"
-     << " m a t e r i a l s\n\n";
-  for (const auto& md : m.materials) {
-    // the moduli and wave speed the kernel uses (its type's derivation: e.g. type 15 takes G
-    // from its own card)
-    double G = md.E / (2 * (1 + md.nu));
-    double K = md.E / (3 * (1 - 2 * md.nu));
-    double c = std::sqrt((K + 4 * G / 3) / md.rho);
-    if (find_material_type(md.type)) {
-      const MaterialConstants mc = derive_constants(md, m);
-      G = mc.G, K = mc.K, c = mc.c;
-    }
-    os << "   material " << md.number << ": " << material_type_name(md.type) << " (type " << md.type << ")"
-       << (md.title.empty() ? "" : "  \"" + md.title + "\"") << "\n"
-       << "     density .............................. " << fmt("%.6e", md.rho) << " (mass/volume)\n"
-       << "     Young's modulus E .................... " << fmt("%.6e", md.E) << " (stress)\n"
-       << "     Poisson's ratio ...................... " << fmt("%.4f", md.nu) << "\n"
-       << "     bulk modulus K (derived) ............. " << fmt("%.6e", K) << " (stress)\n"
-       << "     shear modulus G (derived) ............ " << fmt("%.6e", G) << " (stress)\n"
-       << "     dilatational wave speed (derived) .... " << fmt("%.6e", c) << " (length/time)\n";
-    if (const MaterialType* mt = find_material_type(md.type)) echo_material_params(os, md, *mt);
-    if (md.shell)
-      os << "     shell section: Belytschko-Tsay, " << md.shell_section.nip << " Gauss point(s) through the thickness, shear factor "
-         << fmt("%.4f", md.shell_section.shrf) << ", T1-T4 " << fmt("%.4e", md.shell_section.t[0]) << " "
-         << fmt("%.4e", md.shell_section.t[1]) << " " << fmt("%.4e", md.shell_section.t[2]) << " "
-         << fmt("%.4e", md.shell_section.t[3]) << "\n"
-         << "     plate wave speed (derived) ........... " << fmt("%.6e", std::sqrt(md.E / (md.rho * (1 - md.nu * md.nu))))
-         << " (length/time)\n";
-    os << "     hourglass control .................... type " << md.hourglass_type << " ("
-       << hourglass_name(md.hourglass_type) << "), coefficient " << fmt("%.4g", md.hourglass_coef) << "\n"
-       << "     bulk viscosity Q1 (quadratic) ........ " << fmt("%.4g", md.q1) << "\n"
-       << "     bulk viscosity Q2 (linear) ........... " << fmt("%.4g", md.q2) << "\n";
-    if (md.packed) os << "     (parameters read packed, 8 per card, from card 3)\n";
+     << "     minimum step factor .................. " << fmt("%.4g", k.min_step_factor) << "\n\n";
+}
+
+// One material: its moduli and wave speed as the kernel uses them, its parameters, section,
+// hourglass control and bulk viscosity.
+void write_material(std::ostream& os, const Model& m, const MaterialData& md) {
+  // the moduli and wave speed the kernel uses (its type's derivation: e.g. type 15 takes G
+  // from its own card)
+  double G = md.E / (2 * (1 + md.nu));
+  double K = md.E / (3 * (1 - 2 * md.nu));
+  double c = std::sqrt((K + 4 * G / 3) / md.rho);
+  if (find_material_type(md.type)) {
+    const MaterialConstants mc = derive_constants(md, m);
+    G = mc.G, K = mc.K, c = mc.c;
+  }
+  os << "   material " << md.number << ": " << material_type_name(md.type) << " (type " << md.type << ")"
+     << (md.title.empty() ? "" : "  \"" + md.title + "\"") << "\n"
+     << "     density .............................. " << fmt("%.6e", md.rho) << " (mass/volume)\n"
+     << "     Young's modulus E .................... " << fmt("%.6e", md.E) << " (stress)\n"
+     << "     Poisson's ratio ...................... " << fmt("%.4f", md.nu) << "\n"
+     << "     bulk modulus K (derived) ............. " << fmt("%.6e", K) << " (stress)\n"
+     << "     shear modulus G (derived) ............ " << fmt("%.6e", G) << " (stress)\n"
+     << "     dilatational wave speed (derived) .... " << fmt("%.6e", c) << " (length/time)\n";
+  if (const MaterialType* mt = find_material_type(md.type)) echo_material_params(os, md, *mt);
+  if (md.shell)
+    os << "     shell section: Belytschko-Tsay, " << md.shell_section.nip << " Gauss point(s) through the thickness, shear factor "
+       << fmt("%.4f", md.shell_section.shrf) << ", T1-T4 " << fmt("%.4e", md.shell_section.t[0]) << " "
+       << fmt("%.4e", md.shell_section.t[1]) << " " << fmt("%.4e", md.shell_section.t[2]) << " "
+       << fmt("%.4e", md.shell_section.t[3]) << "\n"
+       << "     plate wave speed (derived) ........... " << fmt("%.6e", std::sqrt(md.E / (md.rho * (1 - md.nu * md.nu))))
+       << " (length/time)\n";
+  os << "     hourglass control .................... type " << md.hourglass_type << " ("
+     << hourglass_name(md.hourglass_type) << "), coefficient " << fmt("%.4g", md.hourglass_coef) << "\n"
+     << "     bulk viscosity Q1 (quadratic) ........ " << fmt("%.4g", md.q1) << "\n"
+     << "     bulk viscosity Q2 (linear) ........... " << fmt("%.4g", md.q2) << "\n";
+  if (md.packed) os << "     (parameters read packed, 8 per card, from card 3)\n";
+  os << "\n";
+}
+
+// Each rigid wall: point, normal, friction, nodes, motion.
+void write_rigid_walls(std::ostream& os, const Model& m) {
+  if (m.walls.empty()) return;
+  os << " r i g i d   w a l l s\n\n";
+  for (std::size_t w = 0; w < m.walls.size(); ++w) {
+    const auto& sw = m.walls[w];
+    double n[3] = {sw.head[0] - sw.tail[0], sw.head[1] - sw.tail[1], sw.head[2] - sw.tail[2]};
+    double l = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    char buf[256];
+    std::snprintf(buf, sizeof buf,
+                  "   wall %zu: point (%.6g, %.6g, %.6g), normal (%.6f, %.6f, %.6f), ", w + 1,
+                  sw.tail[0], sw.tail[1], sw.tail[2], n[0] / l, n[1] / l, n[2] / l);
+    os << buf
+       << (sw.friction == 0 ? std::string("frictionless")
+           : sw.friction == 1 ? std::string("stick")
+                              : "Coulomb friction " + fmt("%.4g", sw.friction))
+       << ", nodes: " << (sw.nodes.empty() ? std::string("all") : std::to_string(sw.nodes.size()));
+    if (sw.mass > 0) os << ", moving: mass " << fmt("%.6e", sw.mass) << ", initial velocity " << fmt("%.6e", sw.v0) << " along the normal";
     os << "\n";
   }
-  if (!m.walls.empty()) {
-    os << " r i g i d   w a l l s\n\n";
-    for (std::size_t w = 0; w < m.walls.size(); ++w) {
-      const auto& sw = m.walls[w];
-      double n[3] = {sw.head[0] - sw.tail[0], sw.head[1] - sw.tail[1], sw.head[2] - sw.tail[2]};
-      double l = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-      char buf[256];
-      std::snprintf(buf, sizeof buf,
-                    "   wall %zu: point (%.6g, %.6g, %.6g), normal (%.6f, %.6f, %.6f), ", w + 1,
-                    sw.tail[0], sw.tail[1], sw.tail[2], n[0] / l, n[1] / l, n[2] / l);
-      os << buf
-         << (sw.friction == 0 ? std::string("frictionless")
-             : sw.friction == 1 ? std::string("stick")
-                                : "Coulomb friction " + fmt("%.4g", sw.friction))
-         << ", nodes: " << (sw.nodes.empty() ? std::string("all") : std::to_string(sw.nodes.size()));
-      if (sw.mass > 0) os << ", moving: mass " << fmt("%.6e", sw.mass) << ", initial velocity " << fmt("%.6e", sw.v0) << " along the normal";
-      os << "\n";
-    }
-    os << "\n";
+  os << "\n";
+}
+
+// Each sliding interface: type, segments, friction, stiffness, treatment, intfor sides.
+void write_interfaces(std::ostream& os, const Model& m) {
+  if (m.interfaces.empty()) return;
+  os << " s l i d i n g   i n t e r f a c e s\n\n";
+  for (std::size_t i = 0; i < m.interfaces.size(); ++i) {
+    const auto& si = m.interfaces[i];
+    const bool single = si.type == 4;
+    os << "   interface " << i + 1 << ": type " << si.type
+       << (single ? " (single surface)" : " (sliding with impact and separation)") << (si.eroding ? ", eroding" : "") << ", "
+       << (single ? std::to_string(si.slave.size()) + " segments"
+                  : std::to_string(si.slave.size()) + " slave / " + std::to_string(si.master.size()) + " master segments")
+       << (si.slave_nodes.empty() && si.master_nodes.empty()
+               ? std::string()
+               : single ? ", " + std::to_string(si.slave_nodes.size()) + " beam nodes"
+                        : ", " + std::to_string(si.slave_nodes.size()) + " slave / " + std::to_string(si.master_nodes.size()) + " master beam nodes")
+       << "\n"
+       << "     friction static/dynamic/decay ........ " << fmt("%.4g", si.fs) << " / "
+       << fmt("%.4g", si.fd) << " / " << fmt("%.4g", si.decay) << "\n"
+       << "     penalty stiffness .................... "
+       << (si.stiffness_method == 0 ? "DYNA3D mu K A^2 / V (shells mu K A / diagonal), mu = " +
+                                          fmt("%.4g", si.penalty_scale > 0 ? si.penalty_scale : m.control.penalty_scale)
+                                    : std::string("IMPACT-3D maximum stable, alpha = 1 - TSSF^2"))
+       << "\n"
+       << "     treatment ............................ " << (single ? "one pass over the surface, each node against the segments not around it" : si.symmetric ? "symmetric (two passes)" : "one pass")
+       << "\n";
+    if (si.intfor_slave || si.intfor_master)
+      os << "     interface-force database (intfor) .... "
+         << (si.intfor_slave && si.intfor_master ? "both sides" : si.intfor_slave ? "slave side" : "master side") << "\n";
   }
-  write_card_echo(os, m);
-  write_constraints(os, m);
-  write_shells(os, m);
-  if (!m.interfaces.empty()) {
-    os << " s l i d i n g   i n t e r f a c e s\n\n";
-    for (std::size_t i = 0; i < m.interfaces.size(); ++i) {
-      const auto& si = m.interfaces[i];
-      const bool single = si.type == 4;
-      os << "   interface " << i + 1 << ": type " << si.type
-         << (single ? " (single surface)" : " (sliding with impact and separation)") << (si.eroding ? ", eroding" : "") << ", "
-         << (single ? std::to_string(si.slave.size()) + " segments"
-                    : std::to_string(si.slave.size()) + " slave / " + std::to_string(si.master.size()) + " master segments")
-         << (si.slave_nodes.empty() && si.master_nodes.empty()
-                 ? std::string()
-                 : single ? ", " + std::to_string(si.slave_nodes.size()) + " beam nodes"
-                          : ", " + std::to_string(si.slave_nodes.size()) + " slave / " + std::to_string(si.master_nodes.size()) + " master beam nodes")
-         << "\n"
-         << "     friction static/dynamic/decay ........ " << fmt("%.4g", si.fs) << " / "
-         << fmt("%.4g", si.fd) << " / " << fmt("%.4g", si.decay) << "\n"
-         << "     penalty stiffness .................... "
-         << (si.stiffness_method == 0 ? "DYNA3D mu K A^2 / V (shells mu K A / diagonal), mu = " +
-                                            fmt("%.4g", si.penalty_scale > 0 ? si.penalty_scale : m.control.penalty_scale)
-                                      : std::string("IMPACT-3D maximum stable, alpha = 1 - TSSF^2"))
-         << "\n"
-         << "     treatment ............................ " << (single ? "one pass over the surface, each node against the segments not around it" : si.symmetric ? "symmetric (two passes)" : "one pass")
-         << "\n";
-      if (si.intfor_slave || si.intfor_master)
-        os << "     interface-force database (intfor) .... "
-           << (si.intfor_slave && si.intfor_master ? "both sides" : si.intfor_slave ? "slave side" : "master side") << "\n";
-    }
-    os << "\n";
-  }
+  os << "\n";
+}
+
+// Each force transducer, and the interface-force database interval.
+void write_force_transducers(std::ostream& os, const Model& m) {
   if (!m.force_transducers.empty()) {
     os << " f o r c e   t r a n s d u c e r s\n\n";
     for (std::size_t t = 0; t < m.force_transducers.size(); ++t) {
@@ -424,46 +429,54 @@ void write_model_summary(std::ostream& os, const Model& m) {
   }
   if (m.control.intfor_interval >= 0)
     os << "     interface-force database interval .... " << fmt("%.4e", m.control.intfor_interval > 0 ? m.control.intfor_interval : m.control.plot_interval) << "\n\n";
-  if (!m.init_velocities.empty()) {
-    os << " i n i t i a l   v e l o c i t i e s\n\n";
-    // Consecutive definitions of one velocity are one line (an *INITIAL_VELOCITY_NODE list of
-    // many nodes is many ranges); a rotation sets node by node: at most 50 lines, then the count
-    // of the rest.
-    constexpr std::size_t kShown = 50, kRanges = 3;
-    const auto& ivs = m.init_velocities;
-    std::size_t lines = 0;
-    for (std::size_t k = 0; k < ivs.size();) {
-      std::size_t j = k;
-      while (j + 1 < ivs.size() && ivs[j + 1].first != 0 && ivs[k].first != 0 && ivs[j + 1].v == ivs[k].v) ++j;
-      if (lines++ == kShown) {
-        os << "   ... and " << (ivs.size() - k) << " more definition(s)\n";
-        break;
-      }
-      const auto& iv = ivs[k];
-      char buf[200];
-      std::snprintf(buf, sizeof buf, ": (%.6g, %.6g, %.6g) (length/time)\n", iv.v[0], iv.v[1], iv.v[2]);
-      if (iv.first == 0) {
-        os << "   all nodes" << buf;
-      } else if (j == k) {
-        os << "   nodes " << iv.first << " to " << iv.last << " step " << iv.increment << buf;
-      } else {
-        long long nodes = 0;
-        std::string ranges;
-        for (std::size_t q = k; q <= j; ++q) {
-          const auto& r = ivs[q];
-          nodes += r.increment > 0 && r.last >= r.first ? (r.last - r.first) / r.increment + 1 : 0;
-          if (q - k < kRanges)
-            ranges += (q > k ? ", " : "") + std::to_string(r.first) + " to " + std::to_string(r.last) + " step " +
-                      std::to_string(r.increment);
-        }
-        if (j - k + 1 > kRanges) ranges += ", ...";
-        os << "   " << nodes << " nodes in " << (j - k + 1) << " ranges (" << ranges << ")" << buf;
-      }
-      k = j + 1;
+}
+
+// The initial velocities.  Consecutive definitions of one velocity are one line (an
+// *INITIAL_VELOCITY_NODE list of many nodes is many ranges); a rotation sets node by node: at
+// most 50 lines, then the count of the rest.
+void write_initial_velocities(std::ostream& os, const Model& m) {
+  if (m.init_velocities.empty()) return;
+  os << " i n i t i a l   v e l o c i t i e s\n\n";
+  // Consecutive definitions of one velocity are one line (an *INITIAL_VELOCITY_NODE list of
+  // many nodes is many ranges); a rotation sets node by node: at most 50 lines, then the count
+  // of the rest.
+  constexpr std::size_t kShown = 50, kRanges = 3;
+  const auto& ivs = m.init_velocities;
+  std::size_t lines = 0;
+  for (std::size_t k = 0; k < ivs.size();) {
+    std::size_t j = k;
+    while (j + 1 < ivs.size() && ivs[j + 1].first != 0 && ivs[k].first != 0 && ivs[j + 1].v == ivs[k].v) ++j;
+    if (lines++ == kShown) {
+      os << "   ... and " << (ivs.size() - k) << " more definition(s)\n";
+      break;
     }
-    os << "\n";
+    const auto& iv = ivs[k];
+    char buf[200];
+    std::snprintf(buf, sizeof buf, ": (%.6g, %.6g, %.6g) (length/time)\n", iv.v[0], iv.v[1], iv.v[2]);
+    if (iv.first == 0) {
+      os << "   all nodes" << buf;
+    } else if (j == k) {
+      os << "   nodes " << iv.first << " to " << iv.last << " step " << iv.increment << buf;
+    } else {
+      long long nodes = 0;
+      std::string ranges;
+      for (std::size_t q = k; q <= j; ++q) {
+        const auto& r = ivs[q];
+        nodes += r.increment > 0 && r.last >= r.first ? (r.last - r.first) / r.increment + 1 : 0;
+        if (q - k < kRanges)
+          ranges += (q > k ? ", " : "") + std::to_string(r.first) + " to " + std::to_string(r.last) + " step " +
+                    std::to_string(r.increment);
+      }
+      if (j - k + 1 > kRanges) ranges += ", ...";
+      os << "   " << nodes << " nodes in " << (j - k + 1) << " ranges (" << ranges << ")" << buf;
+    }
+    k = j + 1;
   }
-  write_loads(os, m);
+  os << "\n";
+}
+
+// The time-history blocks of nodes, solids, shells and beams.
+void write_time_history_blocks(std::ostream& os, const Model& m) {
   if (!m.node_th_blocks.empty() || !m.solid_th_blocks.empty() || !m.shell_th_blocks.empty() || !m.beam_th_blocks.empty()) {
     os << " t i m e   h i s t o r i e s\n\n";
     for (const auto& b : m.node_th_blocks) os << "   nodes " << b[0] << " to " << b[1] << "\n";
@@ -474,6 +487,30 @@ void write_model_summary(std::ostream& os, const Model& m) {
       os << "   beams " << m.beam_id(b[0] - 1) << " to " << m.beam_id(b[1] - 1) << "\n";
     os << "\n";
   }
+}
+
+}  // namespace
+
+void write_model_summary(std::ostream& os, const Model& m) {
+  os << "\n title: " << m.title << "\n"
+     << " deck:  " << m.deck_file
+     << (m.keyword_deck ? std::string(" (LS-DYNA keyword format)")
+                        : std::string(" (DYNA3D fixed format, ") + (m.large_format ? "large" : "small") + " fields)")
+     << "\n"
+     << " units: as the deck gives them (consistent set; SI: m, kg, s, Pa)\n\n"
+     << " c o n t r o l   i n f o r m a t i o n\n\n";
+  write_control_information(os, m);
+  os << " m a t e r i a l s\n\n";
+  for (const auto& md : m.materials) write_material(os, m, md);
+  write_rigid_walls(os, m);
+  write_card_echo(os, m);
+  write_constraints(os, m);
+  write_shells(os, m);
+  write_interfaces(os, m);
+  write_force_transducers(os, m);
+  write_initial_velocities(os, m);
+  write_loads(os, m);
+  write_time_history_blocks(os, m);
 }
 
 void write_diagnostics(std::ostream& os, const Diagnostics& diag) { diag.print(os); }
