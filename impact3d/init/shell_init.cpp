@@ -23,7 +23,7 @@ constexpr ShellMaterial kShellMaterials[] = {
     {3, ShellKernel::plastic_kinematic, nullptr, nullptr},
     {18, ShellKernel::power_law, nullptr, nullptr},
     {20, ShellKernel::rigid, nullptr, nullptr},
-    {24, ShellKernel::piecewise_linear, "TDEL", "deletion of shells by their time step (TDEL)"},
+    {24, ShellKernel::piecewise_linear, nullptr, nullptr},
     {27, ShellKernel::mooney_rivlin, nullptr, nullptr},
 };
 

@@ -705,6 +705,15 @@ std::vector<KeywordSpec> control_database_specs() {
   t.push_back(ignored("CONTROL_MPP_*", "MPP decomposition controls have no effect on a shared-memory run"));
   t.push_back(ignored("CONTROL_CPU", "no CPU-time limit (CPUTIM): the run ends at its termination time or cycle"));
   t.push_back(ignored("CONTROL_UNITS", "the unit names label the model; IMPACT-3D converts nothing (the deck's numbers are used as they are)"));
+  // LS-DYNA's older name (versions 940-950) of *CONTROL_DYNAMIC_RELAXATION: the dynamic
+  // relaxation controls, which act only when a curve asks for dynamic relaxation (SIDR, itself
+  // warning 2006) or IDRFLG does
+  t.push_back(ignored("CONTROL_DAMPING", "the dynamic relaxation controls (LS-DYNA's older name of *CONTROL_DYNAMIC_RELAXATION): IMPACT-3D has no dynamic relaxation phase, and with IDRFLG 0 none is asked for",
+                      {{"card 1", 8, 10, per_field, {
+                          plain("NRCYCK", 0, I), plain("DRTOL", 1, E), plain("DRFCTR", 2, E), plain("DRTERM", 3, E),
+                          plain("TSSFDR", 4, E), plain("IRELAL", 5, I), plain("EDTTL", 6, E),
+                          {"IDRFLG", 7, I, 0, false, {nonzero(1102, "dynamic relaxation (IDRFLG): the run starts from the deck's state")}, "dynamic relaxation flag"},
+                      }, "when given"}}));
   t.push_back(ignored("DATABASE_NODAL_FORCE_GROUP", "the nodal force group output (nodfor) is not written"));
   return t;
 }

@@ -27,6 +27,8 @@ struct MaterialConstants {
   double fail_strain = 0;  // effective plastic strain at which a solid fails (0 = never)
   bool initially_elastic = false;  // the seed's fast path (type 3)
   double tdel = 0;         // a solid whose step falls below this is deleted (0 = never)
+  double shell_tdel = 0;   // a shell whose step falls below this is deleted (*MAT_024 TDEL; ERODE
+                           // leaves it: LS-DYNA's ERODE is for solids)
   int fail_history = -1;   // a solid whose history value of this index reaches 1 is deleted (damage)
   // *MAT_NULL TEROD / CEROD: a solid whose volume ratio V/V0 exceeds vol_erode_hi or falls
   // below vol_erode_lo is deleted (0: off)

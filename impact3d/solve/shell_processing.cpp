@@ -79,13 +79,16 @@ void process_shell(State& s, const ShellGroup& g, int k, double dt) {
     sh.cmz[q] = io.m[j][2];
   }
   // failure (type 3 FS, type 24 FAIL): when every point through the thickness has reached it, the shell is
-  // deleted; this pass's forces still act, from the next pass on it carries none
-  const double fs = s.mats[std::size_t(g.material)].fail_strain;
+  // deleted; this pass's forces still act, from the next pass on it carries none.  Type 24 TDEL:
+  // likewise when the shell's step falls below it.
+  const MaterialConstants& mc = s.mats[std::size_t(g.material)];
+  const double fs = mc.fail_strain;
   if (plastic && fs > 0 && dt > 0) {
     bool all = true;
     for (int i = 0; i < sh.nip[std::size_t(k)] && all; ++i) all = sh.eps_p[ip + std::size_t(i)] >= fs;
     if (all) sh.failed[std::size_t(k)] = 2;  // 2: in this pass (the books count it)
   }
+  if (mc.shell_tdel > 0 && dt > 0 && io.dt_e < mc.shell_tdel) sh.failed[std::size_t(k)] = 2;
 }
 
 // A block of kLanes shells ord[0..kLanes) into b: nodal data (as gather_shell), thickness, the
@@ -133,6 +136,7 @@ void store_shell_block(State& s, const ShellGroup& g, const ShellBlockMaterial& 
   ShellState& sh = s.shells;
   const bool plastic = shell_kernel_is_plastic(g.kernel);
   const double fs = s.mats[std::size_t(g.material)].fail_strain;
+  const double tdel = s.mats[std::size_t(g.material)].shell_tdel;
   for (int l = 0; l < kLanes; ++l) {
     const std::size_t k = std::size_t(ord[l]);
     sh.bad[k] = 0;
@@ -167,7 +171,7 @@ void store_shell_block(State& s, const ShellGroup& g, const ShellBlockMaterial& 
     if (mat.has_hgq)
       for (int j = 0; j < 5; ++j) sh.hgq[5 * k + std::size_t(j)] = b.hgq[j][l];
     // failure as process_shell: this pass's forces still act, from the next pass on none
-    if (all_failed) sh.failed[k] = 2;
+    if (all_failed || (tdel > 0 && dt > 0 && b.dt_e[l] < tdel)) sh.failed[k] = 2;
   }
 }
 

@@ -105,6 +105,7 @@ void derive(const MaterialData& d, const Model& m, MaterialConstants& c) {
   c.k[kViscoplastic] = par(d, kVP) == 1 && (c.rate_c > 0 || !c.rate_x.empty()) ? 1.0 : 0.0;
   if (d.fail_strain > 0) c.fail_strain = d.fail_strain;
   c.tdel = par(d, kTdel);
+  c.shell_tdel = c.tdel;
   const int lcss = int(par(d, kLcss));
   const int n = table_points(d);
   c.curve_eps.clear();
