@@ -135,171 +135,200 @@ void HistoryOutput::open(const Model& m, const std::string& dir, const std::stri
   }
 }
 
-void HistoryOutput::write(const Model& m, const State& s,
-                          const std::vector<std::array<double, 3>>& contact_forces,
-                          double cpu_per_zone_ns) {
-  const std::size_t nm = m.materials.size();
-  // the global block (energies, per-material books, wall and interface forces): the same
-  // numbers as the plot database's, for glstat, matsum and the d3thdt family
-  fill_plot_globals(m, s, contact_forces, ps_);
+// glstat: the energies, step and global velocity of the output time (LS-DYNA's layout).
+void HistoryOutput::write_glstat(FILE* f, const Model& m, const State& s) {
+  std::fprintf(f,
+               "\n dt of cycle %9d is controlled by solid %9d\n\n"
+               " time...........................  %12.5E\n"
+               " time step......................  %12.5E\n"
+               " kinetic energy.................  %12.5E\n"
+               " internal energy................  %12.5E\n"
+               " hourglass energy ..............  %12.5E\n"
+               " bulk viscosity energy..........  %12.5E\n"
+               " sliding interface energy.......  %12.5E\n"
+               " rigid wall energy..............  %12.5E\n"
+               " external work..................  %12.5E\n"
+               " total energy...................  %12.5E\n"
+               " total energy / initial energy..  %12.5E\n"
+               " global x velocity..............  %12.5E\n"
+               " global y velocity..............  %12.5E\n"
+               " global z velocity..............  %12.5E\n",
+               s.cycle, s.dt_elem >= 0 ? m.hex_id(s.dt_elem) : 0, s.time, s.dt_next, s.kinetic, s.internal, s.hourglass,
+               s.bulk_viscous, s.contact, s.wall_work, s.external_work, s.total_energy(),
+               s.energy_ratio(), ps_.velocity[0], ps_.velocity[1], ps_.velocity[2]);
+  if (m.control.mass_scaling_dt != 0)  // LS-DYNA's two mass-scaling lines
+    std::fprintf(f,
+                 " added mass.....................  %12.5E\n"
+                 " percentage increase............  %12.5E\n",
+                 s.added_mass, added_mass_percent(s));
+}
+
+// matsum: per material the energies, mass and momentum (mass x mean velocity).
+void HistoryOutput::write_matsum(FILE* f, const Model& m, const State& s) {
   const auto& ie = ps_.mat_internal_energy;
   const auto& ke = ps_.mat_kinetic_energy;
   const auto& hg = ps_.mat_hourglass_energy;
   const auto& mass = ps_.mat_mass;
-  const auto& vel = ps_.mat_velocity;  // matsum prints momentum: mass x mean velocity
-  if (FILE* f = files_[kGlstat]) {
+  const auto& vel = ps_.mat_velocity;
+  const std::size_t nm = m.materials.size();
+  std::fprintf(f, "\n time = %12.5E\n", s.time);
+  for (std::size_t k = 0; k < nm; ++k) {
     std::fprintf(f,
-                 "\n dt of cycle %9d is controlled by solid %9d\n\n"
-                 " time...........................  %12.5E\n"
-                 " time step......................  %12.5E\n"
-                 " kinetic energy.................  %12.5E\n"
-                 " internal energy................  %12.5E\n"
-                 " hourglass energy ..............  %12.5E\n"
-                 " bulk viscosity energy..........  %12.5E\n"
-                 " sliding interface energy.......  %12.5E\n"
-                 " rigid wall energy..............  %12.5E\n"
-                 " external work..................  %12.5E\n"
-                 " total energy...................  %12.5E\n"
-                 " total energy / initial energy..  %12.5E\n"
-                 " global x velocity..............  %12.5E\n"
-                 " global y velocity..............  %12.5E\n"
-                 " global z velocity..............  %12.5E\n",
-                 s.cycle, s.dt_elem >= 0 ? m.hex_id(s.dt_elem) : 0, s.time, s.dt_next, s.kinetic, s.internal, s.hourglass,
-                 s.bulk_viscous, s.contact, s.wall_work, s.external_work, s.total_energy(),
-                 s.energy_ratio(), ps_.velocity[0], ps_.velocity[1], ps_.velocity[2]);
-    if (m.control.mass_scaling_dt != 0)  // LS-DYNA's two mass-scaling lines
-      std::fprintf(f,
-                   " added mass.....................  %12.5E\n"
-                   " percentage increase............  %12.5E\n",
-                   s.added_mass, added_mass_percent(s));
-  (void)cpu_per_zone_ns;  // kept out of the file: the tables are bit-reproducible
+                 " mat.#=%5d   inten=  %12.4E  kinen=  %12.4E  hgeng=  %12.4E  mass=  %12.4E\n"
+                 "               x-mom=  %12.4E  y-mom=  %12.4E  z-mom=  %12.4E\n",
+                 m.materials[k].number, ie[k], ke[k], hg[k], mass[k], mass[k] * vel[3 * k], mass[k] * vel[3 * k + 1],
+                 mass[k] * vel[3 * k + 2]);
+    if (!s.mat_added_mass.empty()) std::fprintf(f, "               added mass=  %12.4E\n", s.mat_added_mass[k]);
   }
-  if (FILE* f = files_[kMatsum]) {
-    std::fprintf(f, "\n time = %12.5E\n", s.time);
-    for (std::size_t k = 0; k < nm; ++k) {
-      std::fprintf(f,
-                   " mat.#=%5d   inten=  %12.4E  kinen=  %12.4E  hgeng=  %12.4E  mass=  %12.4E\n"
-                   "               x-mom=  %12.4E  y-mom=  %12.4E  z-mom=  %12.4E\n",
-                   m.materials[k].number, ie[k], ke[k], hg[k], mass[k], mass[k] * vel[3 * k], mass[k] * vel[3 * k + 1],
-                   mass[k] * vel[3 * k + 2]);
-      if (!s.mat_added_mass.empty()) std::fprintf(f, "               added mass=  %12.4E\n", s.mat_added_mass[k]);
+}
+
+// rwforc: per rigid wall its normal force and force vector.
+void HistoryOutput::write_rwforc(FILE* f, const Model& m, const State& s) {
+  // normal force (the push of the body on the wall, positive in compression): the global word
+  for (std::size_t w = 0; w < m.walls.size(); ++w) {
+    const auto& F = s.wall_force[w];
+    // (+ 0.0 turns a negative zero into zero)
+    std::fprintf(f, " %12.5E %5zu %14.6E %14.6E %14.6E %14.6E\n", s.time, w + 1, ps_.rigid_wall_forces[w],
+                 F[0] + 0.0, F[1] + 0.0, F[2] + 0.0);
+  }
+}
+
+// rcforc: per interface (and transducer) its resultant force.
+void HistoryOutput::write_rcforc(FILE* f, const State& s, const std::vector<std::array<double, 3>>& contact_forces) {
+  for (std::size_t i = 0; i < contact_forces.size(); ++i)
+    std::fprintf(f, " %12.5E %11zu %14.6E %14.6E %14.6E\n", s.time, i + 1, contact_forces[i][0],
+                 contact_forces[i][1], contact_forces[i][2]);
+}
+
+// nodout: the listed nodes' displacements, velocities, accelerations and coordinates.
+void HistoryOutput::write_nodout(FILE* f, const Model& m, const State& s) {
+  std::fprintf(f,
+               "\n n o d a l   p r i n t   o u t   f o r   t i m e   s t e p %8d   ( at time %12.5E )\n"
+               " nodal point   x-disp       y-disp       z-disp       x-vel        y-vel        z-vel"
+               "        x-accl       y-accl       z-accl       x-coor       y-coor       z-coor\n",
+               s.cycle, s.time);
+  for (int n : th_nodes_) {
+    const std::size_t i = std::size_t(n);
+    std::fprintf(f, "%10d %12.4E %12.4E %12.4E %12.4E %12.4E %12.4E %12.4E %12.4E %12.4E %12.4E %12.4E %12.4E\n",
+                 m.node_id(n), s.x[i] - m.x[i], s.y[i] - m.y[i], s.z[i] - m.z[i], s.vx[i], s.vy[i], s.vz[i],
+                 s.ax[i], s.ay[i], s.az[i], s.x[i], s.y[i], s.z[i]);
+  }
+}
+
+// elout, solids: stresses, pressure, von Mises stress and plastic strain.
+void HistoryOutput::write_elout_solids(FILE* f, const Model& m, const State& s) {
+  std::fprintf(f,
+               "\n e l e m e n t   s t r e s s   c a l c u l a t i o n s   f o r   t i m e   s t e p %8d   ( at time %12.5E )\n"
+               "  element  materl     sig-xx       sig-yy       sig-zz       sig-xy       sig-yz       sig-zx"
+               "     pressure    von-mises   eff-plastic\n",
+               s.cycle, s.time);
+  for (int e : th_solids_) {
+    const double* sg = &s.sig[6 * std::size_t(e)];
+    std::fprintf(f, "%9d %7d %12.4E %12.4E %12.4E %12.4E %12.4E %12.4E %12.4E %12.4E %12.4E\n", m.hex_id(e),
+                 m.materials[std::size_t(s.mat[std::size_t(e)])].number, sg[0], sg[1], sg[2], sg[3], sg[4],
+                 sg[5], -(sg[0] + sg[1] + sg[2]) / 3 + 0.0, calc_von_mises(sg), s.eps_p[std::size_t(e)]);
+  }
+}
+
+// elout, shells: the mid-surface, inner and outer stresses (global axes, the plot database's
+// words) and the plastic strain of the middle, lowest and highest integration point.
+void HistoryOutput::write_elout_shells(FILE* f, const Model& m, const State& s) {
+  // shells: the mid-surface, inner and outer stresses (global axes, the plot database's words)
+  // and the plastic strain of the middle, lowest and highest integration point
+  std::fprintf(f,
+               "\n s h e l l   e l e m e n t   s t r e s s e s   f o r   t i m e   s t e p %8d   ( at time %12.5E )\n"
+               "  element  materl surface      sig-xx       sig-yy       sig-zz       sig-xy       sig-yz       sig-zx"
+               "    von-mises   eff-plastic\n",
+               s.cycle, s.time);
+  static const char* const kSurface[3] = {"mid", "inner", "outer"};
+  shell_words_.resize(kShellPlotVars);
+  for (int k : th_shells_) {
+    fill_shell_plot_vars(s, k, shell_words_.data());
+    const int mat = m.materials[std::size_t(m.shell_material[std::size_t(k)])].number;
+    for (int layer = 0; layer < 3; ++layer) {
+      const double* sg = &shell_words_[std::size_t(7 * layer)];
+      std::fprintf(f, "%9d %7d %7s %12.4E %12.4E %12.4E %12.4E %12.4E %12.4E %12.4E %12.4E%s\n", m.shell_id(k), mat,
+                   kSurface[layer], sg[0] + 0.0, sg[1] + 0.0, sg[2] + 0.0, sg[3] + 0.0, sg[4] + 0.0, sg[5] + 0.0,
+                   calc_von_mises(sg), sg[6], s.shells.failed.empty() || !s.shells.failed[std::size_t(k)] ? "" : "  deleted");
     }
   }
-  if (FILE* f = files_[kRwforc]) {
-    // normal force (the push of the body on the wall, positive in compression): the global word
-    for (std::size_t w = 0; w < m.walls.size(); ++w) {
-      const auto& F = s.wall_force[w];
-      // (+ 0.0 turns a negative zero into zero)
-      std::fprintf(f, " %12.5E %5zu %14.6E %14.6E %14.6E %14.6E\n", s.time, w + 1, ps_.rigid_wall_forces[w],
-                   F[0] + 0.0, F[1] + 0.0, F[2] + 0.0);
-    }
+}
+
+// elout, beams: the resultants in the beam's local axes (r axial, s and t of the section), as
+// LS-DYNA's elout lays out its beam block: axial force, shear forces, bending moments, torsion.
+void HistoryOutput::write_elout_beams(FILE* f, const Model& m, const State& s) {
+  // beams: the resultants in the beam's local axes (r axial, s and t of the section), as
+  // LS-DYNA's elout lays out its beam block: axial force, shear forces, bending moments, torsion
+  std::fprintf(f,
+               "\n r e s u l t a n t s   f o r   b e a m s   f o r   t i m e   s t e p %8d   ( at time %12.5E )\n"
+               "  element  materl       axial      shear-s      shear-t     moment-s     moment-t      torsion\n",
+               s.cycle, s.time);
+  for (int b : th_beams_) {
+    const double* r = &s.beams.res[6 * std::size_t(b)];  // N, Q_s, Q_t, T, M_s, M_t
+    std::fprintf(f, "%9d %7d %12.4E %12.4E %12.4E %12.4E %12.4E %12.4E%s\n", m.beam_id(b),
+                 m.materials[std::size_t(m.beam_material[std::size_t(b)])].number, r[0] + 0.0, r[1] + 0.0, r[2] + 0.0,
+                 r[4] + 0.0, r[5] + 0.0, r[3] + 0.0, s.beams.failed[std::size_t(b)] ? "  deleted" : "");
   }
-  if (FILE* f = files_[kRcforc]) {
-    for (std::size_t i = 0; i < contact_forces.size(); ++i)
-      std::fprintf(f, " %12.5E %11zu %14.6E %14.6E %14.6E\n", s.time, i + 1, contact_forces[i][0],
-                   contact_forces[i][1], contact_forces[i][2]);
+}
+
+// The d3thdt state: the subset's nodes, solids, shells and beams with the global block.
+void HistoryOutput::write_thdt_state(const State& s) {
+  const std::size_t ns = subset_nodes_.size(), nsol = th_solids_.size();
+  ps_.coords.resize(3 * ns);
+  ps_.vel.resize(3 * ns);
+  ps_.acc.resize(3 * ns);
+  for (std::size_t k = 0; k < ns; ++k) {
+    const std::size_t i = std::size_t(subset_nodes_[k]);
+    ps_.coords[3 * k] = s.x[i]; ps_.coords[3 * k + 1] = s.y[i]; ps_.coords[3 * k + 2] = s.z[i];
+    ps_.vel[3 * k] = s.vx[i]; ps_.vel[3 * k + 1] = s.vy[i]; ps_.vel[3 * k + 2] = s.vz[i];
+    ps_.acc[3 * k] = s.ax[i]; ps_.acc[3 * k + 1] = s.ay[i]; ps_.acc[3 * k + 2] = s.az[i];
   }
-  if (FILE* f = files_[kNodout]) {
-    std::fprintf(f,
-                 "\n n o d a l   p r i n t   o u t   f o r   t i m e   s t e p %8d   ( at time %12.5E )\n"
-                 " nodal point   x-disp       y-disp       z-disp       x-vel        y-vel        z-vel"
-                 "        x-accl       y-accl       z-accl       x-coor       y-coor       z-coor\n",
-                 s.cycle, s.time);
-    for (int n : th_nodes_) {
-      const std::size_t i = std::size_t(n);
-      std::fprintf(f, "%10d %12.4E %12.4E %12.4E %12.4E %12.4E %12.4E %12.4E %12.4E %12.4E %12.4E %12.4E %12.4E\n",
-                   m.node_id(n), s.x[i] - m.x[i], s.y[i] - m.y[i], s.z[i] - m.z[i], s.vx[i], s.vy[i], s.vz[i],
-                   s.ax[i], s.ay[i], s.az[i], s.x[i], s.y[i], s.z[i]);
-    }
+  ps_.stress.resize(6 * nsol);
+  ps_.eps.resize(nsol);
+  ps_.alive.resize(nsol);
+  for (std::size_t k = 0; k < nsol; ++k) {
+    const std::size_t e = std::size_t(th_solids_[k]);
+    ps_.alive[k] = s.failed[e] ? 0 : 1;
+    for (int c = 0; c < 6; ++c) ps_.stress[6 * k + std::size_t(c)] = s.sig[6 * e + std::size_t(c)];
+    ps_.eps[k] = s.eps_p[e];
   }
-  if (FILE* f = files_[kElout]; f && !th_solids_.empty()) {
-    std::fprintf(f,
-                 "\n e l e m e n t   s t r e s s   c a l c u l a t i o n s   f o r   t i m e   s t e p %8d   ( at time %12.5E )\n"
-                 "  element  materl     sig-xx       sig-yy       sig-zz       sig-xy       sig-yz       sig-zx"
-                 "     pressure    von-mises   eff-plastic\n",
-                 s.cycle, s.time);
-    for (int e : th_solids_) {
-      const double* sg = &s.sig[6 * std::size_t(e)];
-      std::fprintf(f, "%9d %7d %12.4E %12.4E %12.4E %12.4E %12.4E %12.4E %12.4E %12.4E %12.4E\n", m.hex_id(e),
-                   m.materials[std::size_t(s.mat[std::size_t(e)])].number, sg[0], sg[1], sg[2], sg[3], sg[4],
-                   sg[5], -(sg[0] + sg[1] + sg[2]) / 3 + 0.0, calc_von_mises(sg), s.eps_p[std::size_t(e)]);
-    }
+  const std::size_t nsh = th_shells_.size();
+  ps_.shell_vars.resize(std::size_t(kShellPlotVars) * nsh);
+  ps_.shell_alive.resize(nsh);
+  for (std::size_t k = 0; k < nsh; ++k) {
+    const int q = th_shells_[k];
+    fill_shell_plot_vars(s, q, &ps_.shell_vars[std::size_t(kShellPlotVars) * k]);
+    ps_.shell_alive[k] = !s.shells.failed.empty() && s.shells.failed[std::size_t(q)] ? 0 : 1;
   }
-  if (FILE* f = files_[kElout]; f && !th_shells_.empty()) {
-    // shells: the mid-surface, inner and outer stresses (global axes, the plot database's words)
-    // and the plastic strain of the middle, lowest and highest integration point
-    std::fprintf(f,
-                 "\n s h e l l   e l e m e n t   s t r e s s e s   f o r   t i m e   s t e p %8d   ( at time %12.5E )\n"
-                 "  element  materl surface      sig-xx       sig-yy       sig-zz       sig-xy       sig-yz       sig-zx"
-                 "    von-mises   eff-plastic\n",
-                 s.cycle, s.time);
-    static const char* const kSurface[3] = {"mid", "inner", "outer"};
-    shell_words_.resize(kShellPlotVars);
-    for (int k : th_shells_) {
-      fill_shell_plot_vars(s, k, shell_words_.data());
-      const int mat = m.materials[std::size_t(m.shell_material[std::size_t(k)])].number;
-      for (int layer = 0; layer < 3; ++layer) {
-        const double* sg = &shell_words_[std::size_t(7 * layer)];
-        std::fprintf(f, "%9d %7d %7s %12.4E %12.4E %12.4E %12.4E %12.4E %12.4E %12.4E %12.4E%s\n", m.shell_id(k), mat,
-                     kSurface[layer], sg[0] + 0.0, sg[1] + 0.0, sg[2] + 0.0, sg[3] + 0.0, sg[4] + 0.0, sg[5] + 0.0,
-                     calc_von_mises(sg), sg[6], s.shells.failed.empty() || !s.shells.failed[std::size_t(k)] ? "" : "  deleted");
-      }
-    }
+  const std::size_t nbh = th_beams_.size(), nv1d = std::size_t(6 + 5 * beam_points_);
+  ps_.beam_vars.resize(nv1d * nbh);
+  ps_.beam_alive.resize(nbh);
+  for (std::size_t k = 0; k < nbh; ++k) {
+    const int b = th_beams_[k];
+    fill_beam_plot_vars(s, b, beam_points_, &ps_.beam_vars[nv1d * k]);
+    ps_.beam_alive[k] = s.beams.failed[std::size_t(b)] ? 0 : 1;
   }
-  if (FILE* f = files_[kElout]; f && !th_beams_.empty()) {
-    // beams: the resultants in the beam's local axes (r axial, s and t of the section), as
-    // LS-DYNA's elout lays out its beam block: axial force, shear forces, bending moments, torsion
-    std::fprintf(f,
-                 "\n r e s u l t a n t s   f o r   b e a m s   f o r   t i m e   s t e p %8d   ( at time %12.5E )\n"
-                 "  element  materl       axial      shear-s      shear-t     moment-s     moment-t      torsion\n",
-                 s.cycle, s.time);
-    for (int b : th_beams_) {
-      const double* r = &s.beams.res[6 * std::size_t(b)];  // N, Q_s, Q_t, T, M_s, M_t
-      std::fprintf(f, "%9d %7d %12.4E %12.4E %12.4E %12.4E %12.4E %12.4E%s\n", m.beam_id(b),
-                   m.materials[std::size_t(m.beam_material[std::size_t(b)])].number, r[0] + 0.0, r[1] + 0.0, r[2] + 0.0,
-                   r[4] + 0.0, r[5] + 0.0, r[3] + 0.0, s.beams.failed[std::size_t(b)] ? "  deleted" : "");
-    }
-  }
+  thdt_->write_state(ps_);
+}
+
+void HistoryOutput::write(const Model& m, const State& s,
+                          const std::vector<std::array<double, 3>>& contact_forces,
+                          double cpu_per_zone_ns) {
+  // the global block (energies, per-material books, wall and interface forces): the same
+  // numbers as the plot database's, for glstat, matsum and the d3thdt family
+  fill_plot_globals(m, s, contact_forces, ps_);
+  (void)cpu_per_zone_ns;  // kept out of the files: the tables are bit-reproducible
+  if (FILE* f = files_[kGlstat]) write_glstat(f, m, s);
+  if (FILE* f = files_[kMatsum]) write_matsum(f, m, s);
+  if (FILE* f = files_[kRwforc]) write_rwforc(f, m, s);
+  if (FILE* f = files_[kRcforc]) write_rcforc(f, s, contact_forces);
+  if (FILE* f = files_[kNodout]) write_nodout(f, m, s);
+  if (FILE* f = files_[kElout]; f && !th_solids_.empty()) write_elout_solids(f, m, s);
+  if (FILE* f = files_[kElout]; f && !th_shells_.empty()) write_elout_shells(f, m, s);
+  if (FILE* f = files_[kElout]; f && !th_beams_.empty()) write_elout_beams(f, m, s);
   for (FILE* f : files_)
     if (f && std::ferror(f)) throw std::runtime_error("write error on a time-history file in " + dir_);
-  if (thdt_) {
-    const std::size_t ns = subset_nodes_.size(), nsol = th_solids_.size();
-    ps_.coords.resize(3 * ns);
-    ps_.vel.resize(3 * ns);
-    ps_.acc.resize(3 * ns);
-    for (std::size_t k = 0; k < ns; ++k) {
-      const std::size_t i = std::size_t(subset_nodes_[k]);
-      ps_.coords[3 * k] = s.x[i]; ps_.coords[3 * k + 1] = s.y[i]; ps_.coords[3 * k + 2] = s.z[i];
-      ps_.vel[3 * k] = s.vx[i]; ps_.vel[3 * k + 1] = s.vy[i]; ps_.vel[3 * k + 2] = s.vz[i];
-      ps_.acc[3 * k] = s.ax[i]; ps_.acc[3 * k + 1] = s.ay[i]; ps_.acc[3 * k + 2] = s.az[i];
-    }
-    ps_.stress.resize(6 * nsol);
-    ps_.eps.resize(nsol);
-    ps_.alive.resize(nsol);
-    for (std::size_t k = 0; k < nsol; ++k) {
-      const std::size_t e = std::size_t(th_solids_[k]);
-      ps_.alive[k] = s.failed[e] ? 0 : 1;
-      for (int c = 0; c < 6; ++c) ps_.stress[6 * k + std::size_t(c)] = s.sig[6 * e + std::size_t(c)];
-      ps_.eps[k] = s.eps_p[e];
-    }
-    const std::size_t nsh = th_shells_.size();
-    ps_.shell_vars.resize(std::size_t(kShellPlotVars) * nsh);
-    ps_.shell_alive.resize(nsh);
-    for (std::size_t k = 0; k < nsh; ++k) {
-      const int q = th_shells_[k];
-      fill_shell_plot_vars(s, q, &ps_.shell_vars[std::size_t(kShellPlotVars) * k]);
-      ps_.shell_alive[k] = !s.shells.failed.empty() && s.shells.failed[std::size_t(q)] ? 0 : 1;
-    }
-    const std::size_t nbh = th_beams_.size(), nv1d = std::size_t(6 + 5 * beam_points_);
-    ps_.beam_vars.resize(nv1d * nbh);
-    ps_.beam_alive.resize(nbh);
-    for (std::size_t k = 0; k < nbh; ++k) {
-      const int b = th_beams_[k];
-      fill_beam_plot_vars(s, b, beam_points_, &ps_.beam_vars[nv1d * k]);
-      ps_.beam_alive[k] = s.beams.failed[std::size_t(b)] ? 0 : 1;
-    }
-    thdt_->write_state(ps_);
-  }
+  if (thdt_) write_thdt_state(s);
 }
 
 void HistoryOutput::current_sizes(std::uint64_t out[kNumAscii]) const {

@@ -39,6 +39,17 @@ class HistoryOutput {
   void flush();
 
  private:
+  // write()'s files, in order (history_output.cpp)
+  void write_glstat(FILE* f, const Model& m, const State& s);
+  void write_matsum(FILE* f, const Model& m, const State& s);
+  void write_rwforc(FILE* f, const Model& m, const State& s);
+  void write_rcforc(FILE* f, const State& s, const std::vector<std::array<double, 3>>& contact_forces);
+  void write_nodout(FILE* f, const Model& m, const State& s);
+  void write_elout_solids(FILE* f, const Model& m, const State& s);
+  void write_elout_shells(FILE* f, const Model& m, const State& s);
+  void write_elout_beams(FILE* f, const Model& m, const State& s);
+  void write_thdt_state(const State& s);
+
   std::string dir_;
   FILE* files_[kNumAscii] = {};
   std::unique_ptr<PlotWriter> thdt_;
