@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "impact3d/material/material_types.h"
+#include "impact3d/init/corner_map.h"
 
 namespace impact3d {
 
@@ -111,27 +112,9 @@ namespace {
 
 // The node -> corner map with the beams' ends after the solids' and shells' corners at each node.
 void add_beam_corners(State& s) {
-  BeamState& bm = s.beams;
-  const std::vector<int> old_start = s.corner_start, old_list = s.corner_list;
-  std::vector<int> count(std::size_t(s.nn), 0);
-  for (int b = 0; b < bm.nb; ++b)
-    for (int j = 0; j < 2; ++j) ++count[std::size_t(bm.conn[std::size_t(b)][std::size_t(j)])];
-  s.corner_start.assign(std::size_t(s.nn) + 1, 0);
-  for (int i = 0; i < s.nn; ++i)
-    s.corner_start[std::size_t(i) + 1] = s.corner_start[std::size_t(i)] +
-        (old_start[std::size_t(i) + 1] - old_start[std::size_t(i)]) + count[std::size_t(i)];
-  s.corner_list.assign(std::size_t(s.corner_start[std::size_t(s.nn)]), 0);
-  std::vector<int> fill(std::size_t(s.nn));
-  for (int i = 0; i < s.nn; ++i) {
-    int f = s.corner_start[std::size_t(i)];
-    for (int c = old_start[std::size_t(i)]; c < old_start[std::size_t(i) + 1]; ++c)
-      s.corner_list[std::size_t(f++)] = old_list[std::size_t(c)];
-    fill[std::size_t(i)] = f;
-  }
-  for (int b = 0; b < bm.nb; ++b)
-    for (int j = 0; j < 2; ++j)
-      s.corner_list[std::size_t(fill[std::size_t(bm.conn[std::size_t(b)][std::size_t(j)])]++)] =
-          int(bm.corner_base + 2 * std::size_t(b) + std::size_t(j));
+  const BeamState& bm = s.beams;
+  append_corners(s.corner_start, s.corner_list, s.nn, bm.nb, 2, bm.corner_base,
+                 [&](int b, int j) { return bm.conn[std::size_t(b)][std::size_t(j)]; });
 }
 
 // Whether beam b acts on the rotations of its nodes: a deformable Hughes-Liu beam.

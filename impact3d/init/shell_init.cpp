@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "impact3d/init/corner_map.h"
+
 namespace impact3d {
 
 namespace {
@@ -101,27 +103,9 @@ void shell_coordinates(const State& s, int k, double x[4][3]) {
 
 // The node -> corner map with the shells' corners after the solids' ones at each node.
 void add_shell_corners(State& s) {
-  ShellState& sh = s.shells;
-  const std::vector<int> old_start = s.corner_start, old_list = s.corner_list;
-  std::vector<int> count(std::size_t(s.nn), 0);
-  for (int k = 0; k < sh.ns; ++k)
-    for (int n : sh.conn[std::size_t(k)]) ++count[std::size_t(n)];
-  s.corner_start.assign(std::size_t(s.nn) + 1, 0);
-  for (int i = 0; i < s.nn; ++i)
-    s.corner_start[std::size_t(i) + 1] = s.corner_start[std::size_t(i)] +
-        (old_start[std::size_t(i) + 1] - old_start[std::size_t(i)]) + count[std::size_t(i)];
-  s.corner_list.assign(std::size_t(s.corner_start[std::size_t(s.nn)]), 0);
-  std::vector<int> fill(std::size_t(s.nn));
-  for (int i = 0; i < s.nn; ++i) {
-    int f = s.corner_start[std::size_t(i)];
-    for (int c = old_start[std::size_t(i)]; c < old_start[std::size_t(i) + 1]; ++c)
-      s.corner_list[std::size_t(f++)] = old_list[std::size_t(c)];
-    fill[std::size_t(i)] = f;
-  }
-  for (int k = 0; k < sh.ns; ++k)
-    for (int j = 0; j < 4; ++j)
-      s.corner_list[std::size_t(fill[std::size_t(sh.conn[std::size_t(k)][std::size_t(j)])]++)] =
-          int(sh.corner_base + 4 * std::size_t(k) + std::size_t(j));
+  const ShellState& sh = s.shells;
+  append_corners(s.corner_start, s.corner_list, s.nn, sh.ns, 4, sh.corner_base,
+                 [&](int k, int j) { return sh.conn[std::size_t(k)][std::size_t(j)]; });
 }
 
 }  // namespace
