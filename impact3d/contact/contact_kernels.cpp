@@ -113,6 +113,31 @@ int project_to_patch(const SegX& X, const double p[3], double& xi, double& eta) 
   return it;
 }
 
+namespace {
+
+// The straight edge e (from corner e to corner e+1) nearest to p and the parameter t in [0, 1]
+// of its nearest point; the first edge at equal distance.
+void nearest_edge_point(const SegX& X, const double p[3], int& best_e, double& best_t) {
+  double best_d2 = 0;
+  for (int e = 0; e < 4; ++e) {
+    const double* A = X[e];
+    const double* B = X[(e + 1) % 4];
+    const double ab[3] = {B[0] - A[0], B[1] - A[1], B[2] - A[2]};
+    const double ap[3] = {p[0] - A[0], p[1] - A[1], p[2] - A[2]};
+    const double l2 = dot(ab, ab);
+    const double t = l2 > 0 ? std::clamp(dot(ap, ab) / l2, 0.0, 1.0) : 0.0;
+    const double d[3] = {ap[0] - t * ab[0], ap[1] - t * ab[1], ap[2] - t * ab[2]};
+    const double d2 = dot(d, d);
+    if (e == 0 || d2 < best_d2) {
+      best_e = e;
+      best_t = t;
+      best_d2 = d2;
+    }
+  }
+}
+
+}  // namespace
+
 SegmentHit closest_point_on_segment(const SegX& X, const double p[3], std::uint8_t boundary_edges,
                                     double tol) {
   SegmentHit h;
@@ -134,22 +159,8 @@ SegmentHit closest_point_on_segment(const SegX& X, const double p[3], std::uint8
   }
   // beyond the square: nearest point on the straight edges
   int best_e = 0;
-  double best_t = 0, best_d2 = 0;
-  for (int e = 0; e < 4; ++e) {
-    const double* A = X[e];
-    const double* B = X[(e + 1) % 4];
-    const double ab[3] = {B[0] - A[0], B[1] - A[1], B[2] - A[2]};
-    const double ap[3] = {p[0] - A[0], p[1] - A[1], p[2] - A[2]};
-    const double l2 = dot(ab, ab);
-    const double t = l2 > 0 ? std::clamp(dot(ap, ab) / l2, 0.0, 1.0) : 0.0;
-    const double d[3] = {ap[0] - t * ab[0], ap[1] - t * ab[1], ap[2] - t * ab[2]};
-    const double d2 = dot(d, d);
-    if (e == 0 || d2 < best_d2) {
-      best_e = e;
-      best_t = t;
-      best_d2 = d2;
-    }
-  }
+  double best_t = 0;
+  nearest_edge_point(X, p, best_e, best_t);
   const bool bnd = (boundary_edges >> best_e) & 1;
   const bool bnd_prev = (boundary_edges >> ((best_e + 3) % 4)) & 1;
   const bool bnd_next = (boundary_edges >> ((best_e + 1) % 4)) & 1;
@@ -214,22 +225,8 @@ SegmentHit closest_point_on_shell_segment(const SegX& X, const double p[3], doub
     return h;
   }
   int best_e = 0;
-  double best_t = 0, best_d2 = 0;
-  for (int e = 0; e < 4; ++e) {
-    const double* A = X[e];
-    const double* B = X[(e + 1) % 4];
-    const double ab[3] = {B[0] - A[0], B[1] - A[1], B[2] - A[2]};
-    const double ap[3] = {p[0] - A[0], p[1] - A[1], p[2] - A[2]};
-    const double l2 = dot(ab, ab);
-    const double t = l2 > 0 ? std::clamp(dot(ap, ab) / l2, 0.0, 1.0) : 0.0;
-    const double d[3] = {ap[0] - t * ab[0], ap[1] - t * ab[1], ap[2] - t * ab[2]};
-    const double d2 = dot(d, d);
-    if (e == 0 || d2 < best_d2) {
-      best_e = e;
-      best_t = t;
-      best_d2 = d2;
-    }
-  }
+  double best_t = 0;
+  nearest_edge_point(X, p, best_e, best_t);
   h.on_edge = true;
   edge_param(best_e, best_t, h.xi, h.eta);
   const double* A = X[best_e];
