@@ -191,6 +191,22 @@ std::array<double, 3> constrained_rigid_omega(const std::array<double, 9>& I, co
   return w;
 }
 
+// Node k's share of a rigid body: its inertia about the centre of mass (I, row-major), its
+// angular momentum relative to the centre's motion (L), and its initial arm (rb.r0).
+void add_node_to_rigid_body(const State& s, std::size_t k, RigidBody& rb, std::array<double, 9>& I,
+                            std::array<double, 3>& L) {
+  const double mn = s.mass[k];
+  const double r[3] = {s.x[k] - rb.com[0], s.y[k] - rb.com[1], s.z[k] - rb.com[2]};
+  const double v[3] = {s.vx[k] - rb.vcom[0], s.vy[k] - rb.vcom[1], s.vz[k] - rb.vcom[2]};
+  const double rr = r[0] * r[0] + r[1] * r[1] + r[2] * r[2];
+  for (int a = 0; a < 3; ++a)
+    for (int b = 0; b < 3; ++b) I[std::size_t(3 * a + b)] += mn * ((a == b ? rr : 0) - r[a] * r[b]);
+  L[0] += mn * (r[1] * v[2] - r[2] * v[1]);
+  L[1] += mn * (r[2] * v[0] - r[0] * v[2]);
+  L[2] += mn * (r[0] * v[1] - r[1] * v[0]);
+  rb.r0.insert(rb.r0.end(), {r[0], r[1], r[2]});
+}
+
 void init_rigid_bodies(const Model& m, State& s) {
   for (std::size_t k = 0; k < s.mats.size(); ++k) {
     if (!material_type(s.mats[k].type).rigid) continue;
@@ -226,18 +242,7 @@ void init_rigid_bodies(const Model& m, State& s) {
     rb.vcom = {px / rb.mass, py / rb.mass, pz / rb.mass};
     std::array<double, 9> I{};
     std::array<double, 3> L{};
-    for (int n : rb.nodes) {
-      double mn = s.mass[std::size_t(n)];
-      double r[3] = {s.x[std::size_t(n)] - rb.com[0], s.y[std::size_t(n)] - rb.com[1], s.z[std::size_t(n)] - rb.com[2]};
-      double v[3] = {s.vx[std::size_t(n)] - rb.vcom[0], s.vy[std::size_t(n)] - rb.vcom[1], s.vz[std::size_t(n)] - rb.vcom[2]};
-      double rr = r[0] * r[0] + r[1] * r[1] + r[2] * r[2];
-      for (int a = 0; a < 3; ++a)
-        for (int b = 0; b < 3; ++b) I[std::size_t(3 * a + b)] += mn * ((a == b ? rr : 0) - r[a] * r[b]);
-      L[0] += mn * (r[1] * v[2] - r[2] * v[1]);
-      L[1] += mn * (r[2] * v[0] - r[0] * v[2]);
-      L[2] += mn * (r[0] * v[1] - r[1] * v[0]);
-      rb.r0.insert(rb.r0.end(), {r[0], r[1], r[2]});
-    }
+    for (int n : rb.nodes) add_node_to_rigid_body(s, std::size_t(n), rb, I, L);
     rb.inertia0 = I;
     rb.ang_mom = L;
     // The nodes start with the rigid motion that has the momentum and angular momentum of the
@@ -305,16 +310,7 @@ void init_spot_welds(const Model& m, State& s) {
     for (int a = 0; a < 3; ++a) I[std::size_t(4 * a)] = jsum;
     for (int n : rb.nodes) {
       const std::size_t k = std::size_t(n);
-      const double mn = s.mass[k];
-      const double r[3] = {s.x[k] - rb.com[0], s.y[k] - rb.com[1], s.z[k] - rb.com[2]};
-      const double v[3] = {s.vx[k] - rb.vcom[0], s.vy[k] - rb.vcom[1], s.vz[k] - rb.vcom[2]};
-      const double rr = r[0] * r[0] + r[1] * r[1] + r[2] * r[2];
-      for (int a = 0; a < 3; ++a)
-        for (int b = 0; b < 3; ++b) I[std::size_t(3 * a + b)] += mn * ((a == b ? rr : 0) - r[a] * r[b]);
-      L[0] += mn * (r[1] * v[2] - r[2] * v[1]);
-      L[1] += mn * (r[2] * v[0] - r[0] * v[2]);
-      L[2] += mn * (r[0] * v[1] - r[1] * v[0]);
-      rb.r0.insert(rb.r0.end(), {r[0], r[1], r[2]});
+      add_node_to_rigid_body(s, k, rb, I, L);
       // the node's normal: towards the geometric centre, or (coincident nodes) CID's z axis
       double d[3] = {gx - s.x[k], gy - s.y[k], gz - s.z[k]};
       const double len = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
