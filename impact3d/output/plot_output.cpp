@@ -59,6 +59,18 @@ PlotGeometry make_plot_geometry(const Model& m) {
   return g;
 }
 
+namespace {
+
+// A corner's share (mass mc at node i) of material k's kinetic energy and momentum.
+void add_corner_motion(const State& s, std::size_t i, double mc, std::size_t k, PlotState& ps) {
+  ps.mat_kinetic_energy[k] += 0.5 * mc * (s.vx[i] * s.vx[i] + s.vy[i] * s.vy[i] + s.vz[i] * s.vz[i]);
+  ps.mat_velocity[3 * k] += mc * s.vx[i];
+  ps.mat_velocity[3 * k + 1] += mc * s.vy[i];
+  ps.mat_velocity[3 * k + 2] += mc * s.vz[i];
+}
+
+}  // namespace
+
 void fill_plot_globals(const Model& m, const State& s, const InterfaceForces& iface, PlotState& ps) {
   const std::size_t ne = std::size_t(s.ne), nm = m.materials.size();
   ps.time = s.time;
@@ -81,10 +93,7 @@ void fill_plot_globals(const Model& m, const State& s, const InterfaceForces& if
     const double mc = s.mass_e[e] / 8;
     for (int n : s.conn[e]) {
       const std::size_t i = std::size_t(n);
-      ps.mat_kinetic_energy[k] += 0.5 * mc * (s.vx[i] * s.vx[i] + s.vy[i] * s.vy[i] + s.vz[i] * s.vz[i]);
-      ps.mat_velocity[3 * k] += mc * s.vx[i];
-      ps.mat_velocity[3 * k + 1] += mc * s.vy[i];
-      ps.mat_velocity[3 * k + 2] += mc * s.vz[i];
+      add_corner_motion(s, i, mc, k, ps);
     }
   }
   // beams: rho A L0 each, half per end
@@ -96,10 +105,7 @@ void fill_plot_globals(const Model& m, const State& s, const InterfaceForces& if
     for (int j = 0; j < 2; ++j) {
       const std::size_t i = std::size_t(bm.conn[std::size_t(q)][std::size_t(j)]);
       const double mc = 0.5 * me;
-      ps.mat_kinetic_energy[k] += 0.5 * mc * (s.vx[i] * s.vx[i] + s.vy[i] * s.vy[i] + s.vz[i] * s.vz[i]);
-      ps.mat_velocity[3 * k] += mc * s.vx[i];
-      ps.mat_velocity[3 * k + 1] += mc * s.vy[i];
-      ps.mat_velocity[3 * k + 2] += mc * s.vz[i];
+      add_corner_motion(s, i, mc, k, ps);
     }
   }
   // shells: rho h A0 each, a quarter per corner
@@ -111,10 +117,7 @@ void fill_plot_globals(const Model& m, const State& s, const InterfaceForces& if
     for (int n : sh.conn[std::size_t(q)]) {
       const std::size_t i = std::size_t(n);
       const double mc = 0.25 * me;
-      ps.mat_kinetic_energy[k] += 0.5 * mc * (s.vx[i] * s.vx[i] + s.vy[i] * s.vy[i] + s.vz[i] * s.vz[i]);
-      ps.mat_velocity[3 * k] += mc * s.vx[i];
-      ps.mat_velocity[3 * k + 1] += mc * s.vy[i];
-      ps.mat_velocity[3 * k + 2] += mc * s.vz[i];
+      add_corner_motion(s, i, mc, k, ps);
     }
   }
   // whole-model velocity: total momentum over total mass
