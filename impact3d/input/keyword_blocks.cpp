@@ -23,6 +23,7 @@ double KeywordValues::value(std::size_t k) {
   if (read_[k]) return values_[k];
   read_[k] = 1;
   const KeywordField& f = layout_.fields[k];
+  if (f.kind == FieldKind::text) return values_[k] = 0;  // read as text (KeywordValues::text)
   double v = f.kind == FieldKind::real ? card_.r(f.index, f.name, f.blank)
                                        : double(card_.i(f.index, f.name, static_cast<long long>(f.blank)));
   if (f.zero_is_blank && v == 0) v = f.blank;

@@ -361,6 +361,8 @@ class KeywordValues {
   double nth(std::size_t k) { return value(k); }  // the table's k-th field (names that repeat)
   long long integer(std::string_view name) { return static_cast<long long>(value(index(name))); }
   bool blank(std::string_view name) const { return card_.blank(layout_.fields[index(name)].index); }
+  // A text field (FieldKind::text), upper case and trimmed.
+  std::string text(std::string_view name) const { return upper(card_.literal(layout_.fields[index(name)].index)); }
   // Read; no check of the table held for the field (its value may be used as it is).
   bool passed(std::string_view name) { return value(index(name)), passed_[index(name)] != 0; }
   Ref ref(std::string_view name) const { return card_.ref(layout_.fields[index(name)].index); }

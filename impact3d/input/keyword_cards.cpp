@@ -587,8 +587,68 @@ std::vector<KeywordSpec> loads_bcs_specs() {
   return t;
 }
 
+// A coordinate system's or vector's id: below 1 (after an *INCLUDE_TRANSFORM's offset): error
+// 1201; defined twice: error 1200.
+KeywordField system_id(const char* name) {
+  return {name, 0, I, 0, false, {}, "id (the card is then named by it; < 1 after the *INCLUDE_TRANSFORM offset: error 1201; defined twice: error 1200)"};
+}
+std::vector<KeywordField> reals(std::initializer_list<const char*> names, int index0, const char* meaning) {
+  std::vector<KeywordField> f;
+  for (const char* n : names) f.push_back({n, index0++, E, 0, false, {}, f.empty() ? meaning : ""});
+  return f;
+}
+
 std::vector<KeywordSpec> sets_boxes_specs() {
+  const KeywordFamily F = KeywordFamily::sets_boxes;
+  constexpr FieldKind A = FieldKind::text;
   std::vector<KeywordSpec> t;
+  t.push_back({{"DEFINE_COORDINATE_SYSTEM"}, F, false,
+               {{"card 1", 8, 10, per_field, fields_of(std::vector<KeywordField>{system_id("CID")},
+                   reals({"XO", "YO", "ZO"}, 1, "origin"), reals({"XL", "YL", "ZL"}, 4, "a point on the local x axis"),
+                   std::vector<KeywordField>{{"CIDL", 7, I, 0, false, {}, "the system the points are given in (0: global)"}}),
+                 "each system"},
+                {"card 2", 3, 10, per_field, reals({"XP", "YP", "ZP"}, 0, "a point in the local x-y plane"),
+                 "after card 1, named \"system CID card 2\"; missing: error 1316"}},
+               "several systems may follow the keyword"});
+  t.push_back({{"DEFINE_COORDINATE_NODES"}, F, false,
+               {{"card 1", 8, 10, per_field, {
+                   system_id("CID"),
+                   {"N1", 1, I, 0, false, {}, "origin node"},
+                   {"N2", 2, I, 0, false, {}, "a node on the local x axis"},
+                   {"N3", 3, I, 0, false, {}, "a node in the local x-y plane"},
+                   {"FLAG", 4, I, 0, false, {nonzero(2006, "the system is built once, from the initial node positions")}, "update with the nodes"},
+                   {"DIR", 5, A, 0, false, {}, "axis along N1-N2: X or 1 (blank: X); another: error 1102"},
+               }, "each system"}},
+               "several systems may follow the keyword"});
+  t.push_back({{"DEFINE_COORDINATE_VECTOR"}, F, false,
+               {{"card 1", 8, 10, per_field, fields_of(std::vector<KeywordField>{system_id("CID")},
+                   reals({"XX", "YX", "ZX"}, 1, "local x axis"), reals({"XV", "YV", "ZV"}, 4, "a vector in the local x-y plane"),
+                   std::vector<KeywordField>{{"NID", 7, I, 0, false, {nonzero(2006, "the system is fixed (it does not turn with a node)")}, "a node the system turns with"}}),
+                 "each system"}},
+               "several systems may follow the keyword"});
+  t.push_back({{"DEFINE_VECTOR"}, F, false,
+               {{"card 1", 8, 10, per_field, fields_of(std::vector<KeywordField>{system_id("VID")},
+                   reals({"XT", "YT", "ZT"}, 1, "tail"), reals({"XH", "YH", "ZH"}, 4, "head"),
+                   std::vector<KeywordField>{{"CID", 7, I, 0, false, {}, "the system the points are given in (0: global)"}}),
+                 "each vector"}},
+               "several vectors may follow the keyword"});
+  t.push_back({{"DEFINE_VECTOR_NODES"}, F, false,
+               {{"card 1", 8, 10, per_field, {
+                   system_id("VID"),
+                   {"NODET", 1, I, 0, false, {}, "tail node"},
+                   {"NODEH", 2, I, 0, false, {}, "head node"},
+               }, "each vector"}},
+               "several vectors may follow the keyword"});
+  t.push_back({{"DEFINE_TRANSFORMATION"}, F, false,
+               {{"card 1", 1, 10, per_field, {
+                   {"TRANID", 0, I, 0, false, {below(1, 1201, "ids must be positive")},
+                    "transformation id (the cards are then named by it; defined twice: error 1200)", kByReader},
+               }, "the first card that is not blank; missing: error 1316"},
+                {"option card", 8, 10, per_field, fields_of(std::vector<KeywordField>{
+                   {"OPTION", 0, A, 0, false, {}, "TRANSL (A1-A3), SCALE (A1-A3; 0: 1) or ROTATE (axis A1-A3, zero: error 1003, through A4-A6, angle A7 in degrees); MIRROR, POINT, POS6P, POS6N, ROTATE3NA, ROTATE3NB: error 1102; another: error 1006"}},
+                   reals({"A", "A", "A", "A", "A", "A", "A"}, 1, "A1-A7 (named A in messages)")),
+                 "each card after card 1, composed in order, named \"transformation TRANID\""}},
+               ""});
   t.push_back({{"DEFINE_BOX"}, KeywordFamily::sets_boxes, false,
                {{"", 7, 10, per_field, {
                    {"BOXID", 0, I, 0, false, {}, "box id (> 0, else error 1201; the card is then named by it; defined twice: error 1200)"},
@@ -826,7 +886,8 @@ std::string keyword_tables_markdown() {
       for (const KeywordField& f : c.fields) {
         int c1 = 1;
         for (int k = 0; k < f.index; ++k) c1 += w[std::size_t(k)];
-        os << "| " << f.name << " | " << c1 << "-" << c1 + w[std::size_t(f.index)] - 1 << " | " << (f.kind == FieldKind::real ? "E" : "I")
+        os << "| " << f.name << " | " << c1 << "-" << c1 + w[std::size_t(f.index)] - 1 << " | "
+           << (f.kind == FieldKind::real ? "E" : f.kind == FieldKind::text ? "A" : "I")
            << " | " << number(f.blank) << (f.zero_is_blank ? " (also for 0)" : "") << " | " << f.meaning << " | ";
         for (std::size_t k = 0; k < f.checks.size(); ++k) {
           const KeywordCheck& ch = f.checks[k];

@@ -240,17 +240,36 @@ struct KeywordLoads {
 bool read_loads_bcs(const Block& b, KeywordContext& ctx, KeywordLoads& l);
 
 // ---------------------------------------------------------------- sets, boxes and coordinate systems
-// (keyword_sets_boxes.cpp; the sets and systems are still read by keyword_reader.cpp)
+// (keyword_sets_boxes.cpp; the sets are still read by keyword_reader.cpp)
 struct RBox {  // *DEFINE_BOX
   Box box;
   Ref ref;
 };
 
-struct KeywordSetsBoxes {
-  std::map<int, RBox> boxes;  // by BOXID
+struct RCoordSystem {  // *DEFINE_COORDINATE_SYSTEM (_NODES, _VECTOR), *DEFINE_VECTOR (_NODES)
+  enum Kind { points, nodes, vectors, vector } kind = points;
+  int id = 0;
+  std::array<double, 9> v{};  // points: O, PX, PXY; vectors: X, XY; vector: tail, head
+  std::array<int, 3> n{};     // _NODES: N1 N2 N3; *DEFINE_VECTOR_NODES: tail, head
+  int cid = 0;                // CIDL / CID: the values are in this system
+  std::string keyword;
+  Ref ref, cid_ref;
+  std::array<Ref, 3> node_refs;
+};
+// *DEFINE_TRANSFORMATION: the cards' TRANSL, SCALE and ROTATE composed in order.
+struct RTransformation {
+  AffineMap map;
+  Ref ref;
 };
 
-// Reads *DEFINE_BOX into s; false if the keyword is none of the family's tables.
+struct KeywordSetsBoxes {
+  std::map<int, RBox> boxes;  // by BOXID
+  std::vector<RCoordSystem> systems;  // in deck order; resolved once the nodes are known
+  std::map<int, RTransformation> transformations;  // by TRANID
+};
+
+// Reads *DEFINE_BOX, *DEFINE_COORDINATE_SYSTEM / _NODES / _VECTOR, *DEFINE_VECTOR (_NODES) and
+// *DEFINE_TRANSFORMATION into s; false if the keyword is none of the family's tables.
 bool read_sets_boxes(const Block& b, KeywordContext& ctx, KeywordSetsBoxes& s);
 
 // ---------------------------------------------------------------- control and database cards

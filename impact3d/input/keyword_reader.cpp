@@ -65,16 +65,6 @@ struct RIdList {  // node, part, solid or shell set, or history list
   std::string keyword;          // as written (*SET_NODE_GENERAL, ...), upper case
   Ref ref;
 };
-struct RCoordSystem {  // *DEFINE_COORDINATE_SYSTEM (_NODES, _VECTOR), *DEFINE_VECTOR
-  enum Kind { points, nodes, vectors, vector } kind = points;
-  int id = 0;
-  std::array<double, 9> v{};  // points: O, PX, PXY; vectors: X, XY; vector: tail, head
-  std::array<int, 3> n{};     // _NODES: N1 N2 N3; *DEFINE_VECTOR_NODES: tail, head
-  int cid = 0;                // CIDL / CID: the values are in this system
-  std::string keyword;
-  Ref ref, cid_ref;
-  std::array<Ref, 3> node_refs;
-};
 struct RSegSet {
   std::vector<std::array<int, 4>> segs;
   std::vector<std::array<Ref, 4>> refs;
@@ -200,7 +190,7 @@ class KeywordReader {
   Ref& body_parts_ref_ = ld_.body_parts_ref;
   std::map<int, RIdList> solid_sets_, shell_sets_;  // shell sets: read, kept for shell elements
   std::map<int, RBox>& boxes_ = sb_.boxes;
-  std::vector<RCoordSystem> coord_defs_;  // resolved into coords_ once the nodes are known
+  std::vector<RCoordSystem>& coord_defs_ = sb_.systems;
   CoordinateTable coords_;
   long long& tet10_count_ = me_.tet10_count;
   std::pair<Ref, int>& tet10_first_ = me_.tet10_first;
@@ -1037,11 +1027,6 @@ class KeywordReader {
     }
     if (parse_set_keyword(b)) return true;
     if (read_sets_boxes(b, ctx_, sb_)) {  // keyword_sets_boxes.cpp
-    } else if (n == "DEFINE_TRANSFORMATION") {
-      parse_define_transformation(b);
-    } else if (n == "DEFINE_COORDINATE_SYSTEM" || n == "DEFINE_COORDINATE_NODES" || n == "DEFINE_COORDINATE_VECTOR" ||
-               n == "DEFINE_VECTOR" || n == "DEFINE_VECTOR_NODES") {
-      parse_coordinate_system(b);
     } else if (n == "DATABASE_HISTORY_NODE" || n == "DATABASE_HISTORY_SOLID" || n == "DATABASE_HISTORY_NODE_SET" ||
                n == "DATABASE_HISTORY_SOLID_SET" || n == "DATABASE_HISTORY_NODE_ID" || n == "DATABASE_HISTORY_SOLID_ID" ||
                n == "DATABASE_HISTORY_SHELL" || n == "DATABASE_HISTORY_SHELL_ID" || n == "DATABASE_HISTORY_BEAM" ||
@@ -1183,110 +1168,7 @@ class KeywordReader {
     }
   }
 
-  // *DEFINE_BOX: BOXID XMN XMX YMN YMX ZMN ZMX.
-  // *DEFINE_COORDINATE_SYSTEM: CID XO YO ZO XL YL ZL CIDL; XP YP ZP.
-  // *DEFINE_COORDINATE_NODES: CID N1 N2 N3 FLAG DIR (DIR X only).
-  // *DEFINE_COORDINATE_VECTOR: CID XX YX ZX XV YV ZV NID.
-  // *DEFINE_VECTOR: VID XT YT ZT XH YH ZH CID; *DEFINE_VECTOR_NODES: VID NODET NODEH.
-  // Several definitions may follow one keyword.
-  void parse_coordinate_system(const Block& b) {
-    const std::string& n = b.name;
-    const bool is_vector = n.rfind("DEFINE_VECTOR", 0) == 0;
-    const char* id_field = is_vector ? "VID" : "CID";
-    for (std::size_t k = skip_option_card(b); k < b.data.size(); ++k) {
-      if (is_blank(b.data[k].line->text)) continue;
-      KCard c = card(b, k, "card 1", W(b, 8));
-      RCoordSystem r;
-      r.keyword = b.keyword;
-      r.id = xid(int(c.i(0, id_field)), b, &IncludeTransform::iddoff);
-      c.set_card(b.keyword + " " + std::to_string(r.id));
-      r.ref = c.ref(0);
-      if (r.id < 1) c.error(1201, 0, id_field, "ids must be positive");
-      if (n == "DEFINE_COORDINATE_SYSTEM") {
-        r.kind = RCoordSystem::points;
-        const char* names[] = {"XO", "YO", "ZO", "XL", "YL", "ZL"};
-        for (int f = 0; f < 6; ++f) r.v[std::size_t(f)] = c.r(1 + f, names[f]);
-        r.cid = int(c.i(7, "CIDL"));
-        r.cid_ref = c.ref(7);
-        if (k + 1 >= b.data.size()) { ctx_.missing_card(b, "card 2 (XP YP ZP)"); return; }
-        KCard c2 = card(b, ++k, "system " + std::to_string(r.id) + " card 2", W(b, 3));
-        const char* names2[] = {"XP", "YP", "ZP"};
-        for (int f = 0; f < 3; ++f) r.v[std::size_t(6 + f)] = c2.r(f, names2[f]);
-      } else if (n == "DEFINE_COORDINATE_NODES" || n == "DEFINE_VECTOR_NODES") {
-        r.kind = is_vector ? RCoordSystem::vector : RCoordSystem::nodes;
-        const int count = is_vector ? 2 : 3;
-        const char* names[] = {"N1", "N2", "N3"};
-        const char* vnames[] = {"NODET", "NODEH"};
-        for (int f = 0; f < count; ++f) {
-          r.n[std::size_t(f)] = int(c.i(1 + f, is_vector ? vnames[f] : names[f]));
-          r.node_refs[std::size_t(f)] = c.ref(1 + f);
-        }
-        if (!is_vector) {
-          if (c.i(4, "FLAG") != 0) c.error(2006, 4, "FLAG", "the system is built once, from the initial node positions");
-          std::string dir = upper(c.literal(5));
-          if (!dir.empty() && dir != "X" && dir != "1") c.error(1102, 5, "DIR", "local axes along N1-N2 other than x");
-        }
-      } else if (n == "DEFINE_COORDINATE_VECTOR") {
-        r.kind = RCoordSystem::vectors;
-        const char* names[] = {"XX", "YX", "ZX", "XV", "YV", "ZV"};
-        for (int f = 0; f < 6; ++f) r.v[std::size_t(f)] = c.r(1 + f, names[f]);
-        if (c.i(7, "NID") != 0) c.error(2006, 7, "NID", "the system is fixed (it does not turn with a node)");
-      } else {  // DEFINE_VECTOR
-        r.kind = RCoordSystem::vector;
-        const char* names[] = {"XT", "YT", "ZT", "XH", "YH", "ZH"};
-        for (int f = 0; f < 6; ++f) r.v[std::size_t(f)] = c.r(1 + f, names[f]);
-        r.cid = int(c.i(7, "CID"));
-        r.cid_ref = c.ref(7);
-      }
-      for (const RCoordSystem& o : coord_defs_)
-        if (o.id == r.id && (o.kind == RCoordSystem::vector) == (r.kind == RCoordSystem::vector))
-          c.error(1200, 0, id_field, "also defined at " + at(o.ref));
-      coord_defs_.push_back(r);
-    }
-  }
-
-  // *DEFINE_TRANSFORMATION: TRANID; cards OPTION A1-A7, composed in order: TRANSL (A1-A3),
-  // SCALE (A1-A3; blank or 0 = 1), ROTATE (axis A1-A3 through the point A4-A6, angle A7 in
-  // degrees).  The other options are not supported.
-  struct RTransformation {
-    AffineMap map;
-    Ref ref;
-  };
-  std::map<int, RTransformation> transformations_;
-
-  void parse_define_transformation(const Block& b) {
-    std::size_t k = skip_option_card(b);
-    while (k < b.data.size() && is_blank(b.data[k].line->text)) ++k;
-    if (k >= b.data.size()) { ctx_.missing_card(b, "card 1 (TRANID)"); return; }
-    KCard c = card(b, k, "card 1", W(b, 1));
-    const int id = int(c.i(0, "TRANID"));
-    c.set_card(b.keyword + " " + std::to_string(id));
-    RTransformation t;
-    t.ref = c.ref(0);
-    if (id < 1) c.error(1201, 0, "TRANID", "ids must be positive");
-    for (++k; k < b.data.size(); ++k) {
-      if (is_blank(b.data[k].line->text)) continue;
-      KCard d = card(b, k, "transformation " + std::to_string(id), W(b, 8));
-      const std::string opt = upper(d.literal(0));
-      double a[7];
-      for (int f = 0; f < 7; ++f) a[f] = d.r(1 + f, "A");
-      if (opt == "TRANSL") {
-        t.map = t.map.then(AffineMap::translation({a[0], a[1], a[2]}));
-      } else if (opt == "SCALE") {
-        Vec3 sc = {a[0] == 0 ? 1 : a[0], a[1] == 0 ? 1 : a[1], a[2] == 0 ? 1 : a[2]};
-        t.map = t.map.then(AffineMap::scaling(sc));
-      } else if (opt == "ROTATE") {
-        if (a[0] == 0 && a[1] == 0 && a[2] == 0) d.error(1003, 1, "A1-A3", "the rotation axis must not be zero");
-        else t.map = t.map.then(AffineMap::rotation({a[0], a[1], a[2]}, {a[3], a[4], a[5]}, a[6]));
-      } else if (opt == "MIRROR" || opt == "POINT" || opt == "POS6P" || opt == "POS6N" || opt == "ROTATE3NA" || opt == "ROTATE3NB") {
-        d.error(1102, 0, "OPTION", opt + " transformations (IMPACT-3D has TRANSL, SCALE, ROTATE)");
-      } else {
-        d.error(1006, 0, "OPTION", "TRANSL, SCALE or ROTATE");
-      }
-    }
-    if (transformations_.count(id)) c.error(1200, 0, "TRANID", "also defined at " + at(transformations_[id].ref));
-    transformations_[id] = t;
-  }
+  std::map<int, RTransformation>& transformations_ = sb_.transformations;
 
   // The records read from a file of an *INCLUDE_TRANSFORM get the id offsets (an id 0, which
   // means "none" or "all", stays 0; the ids that keyed definitions define got theirs while

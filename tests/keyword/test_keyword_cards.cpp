@@ -298,3 +298,20 @@ TEST(KeywordCards, MaterialCardsFromTheMaterialTable) {
   EXPECT_EQ(r.lines()[1].find("deck.k:5: error 1208: *MAT_ELASTIC material 4, field \"E\" (cols 21-30)"), 0u) << r.lines()[1];
   EXPECT_EQ(r.lines()[2].find("deck.k:5: error 1209: *MAT_ELASTIC material 4, field \"PR\" (cols 31-40)"), 0u) << r.lines()[2];
 }
+
+// Coordinate systems and transformations by their tables: a text field (DIR, OPTION) is read
+// as text, the rest as numbers; TRANID is checked once the card is named by it; the option
+// card's numbers are all named A in messages (the zero rotation axis "A1-A3").
+TEST(KeywordCards, SystemsAndTransformationsByTheirTables) {
+  const std::string head = "*CONTROL_TERMINATION\n   1.0E-05\n";
+  EXPECT_EQ(find_keyword_spec("DEFINE_COORDINATE_NODES")->card("card 1").field("DIR").kind, FieldKind::text);
+  const Read r = read(deck(head + "*DEFINE_COORDINATE_NODES\n" + card({"4", "1", "2", "4", "0", "y"}) +
+                           "*DEFINE_TRANSFORMATION\n" + card({"-3"}) + card({"ROTATE", "0", "0", "0", "0", "0", "0", "x"}) +
+                           card({"translate"})));
+  ASSERT_EQ(r.lines().size(), 5u);
+  EXPECT_EQ(r.lines()[0].find("deck.k:5: error 1102: *DEFINE_COORDINATE_NODES 4, field \"DIR\" (cols 51-60)"), 0u) << r.lines()[0];
+  EXPECT_EQ(r.lines()[1].find("deck.k:7: error 1201: *DEFINE_TRANSFORMATION -3, field \"TRANID\" (cols 1-10)"), 0u) << r.lines()[1];
+  EXPECT_EQ(r.lines()[2].find("deck.k:8: error 1002: *DEFINE_TRANSFORMATION transformation -3, field \"A\" (cols 71-80)"), 0u) << r.lines()[2];
+  EXPECT_EQ(r.lines()[3].find("deck.k:8: error 1003: *DEFINE_TRANSFORMATION transformation -3, field \"A1-A3\" (cols 11-20)"), 0u) << r.lines()[3];
+  EXPECT_EQ(r.lines()[4].find("deck.k:9: error 1006: *DEFINE_TRANSFORMATION transformation -3, field \"OPTION\" (cols 1-10)"), 0u) << r.lines()[4];
+}
