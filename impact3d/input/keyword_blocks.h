@@ -359,6 +359,7 @@ class KeywordValues {
                 const std::string* label = nullptr);
   double operator[](std::string_view name) { return value(index(name)); }
   double nth(std::size_t k) { return value(k); }  // the table's k-th field (names that repeat)
+  long long integer_at(std::size_t k) { return static_cast<long long>(value(k)); }
   long long integer(std::string_view name) { return static_cast<long long>(value(index(name))); }
   bool blank(std::string_view name) const { return card_.blank(layout_.fields[index(name)].index); }
   // A text field (FieldKind::text), upper case and trimmed.

@@ -598,10 +598,78 @@ std::vector<KeywordField> reals(std::initializer_list<const char*> names, int in
   return f;
 }
 
+// n integer fields named `name` from index0 on (ids 8 a card, 0: none).
+std::vector<KeywordField> ids(const char* name, int n, int index0, const char* meaning) {
+  std::vector<KeywordField> f;
+  for (int k = 0; k < n; ++k) f.push_back({name, index0 + k, I, 0, false, {}, k ? "" : meaning});
+  return f;
+}
+
+// The sets: card 1 (SID), then cards of members by the form.
+KeywordCardLayout set_card1(bool named) {
+  return {"card 1", 6, 10, per_field, {{"SID", 0, I, 0, false, {},
+          named ? "set id (the cards are then named \"set SID\"; < 1 after the *INCLUDE_TRANSFORM offset: error 1201; defined twice: error 1200)"
+                : "set id (defined twice: error 1200)"}}, "after the _TITLE card; missing: error 1316"};
+}
+// *SET_..._GENERAL cards: OPTION and 7 ids, or (a number or blank first) 8 more ids for the
+// option before.
+std::vector<KeywordCardLayout> general_set_cards() {
+  return {{"option card", 8, 10, per_field, fields_of(std::vector<KeywordField>{
+              {"OPTION", 0, FieldKind::text, 0, false, {}, "ALL, NODE, ELEM, PART, BOX, SET_SOLID, SET_SHELL, SET_BEAM, SET_TSHELL, SET_DISCRETE, SET_NODE, SET_PART; "
+                                                           "a D before one removes (DNODE, ...); checked when the set is resolved"}},
+              ids("E", 7, 1, "ids of the option (0: none)")),
+           "a card whose first field is not a number or blank, named \"set SID\""},
+          {"continuation card", 8, 10, per_field, ids("E", 8, 0, "more ids of the option before (no option before: error 1006 naming OPTION)"),
+           "a card whose first field is a number or blank"}};
+}
+void add_sets(std::vector<KeywordSpec>& t, const char* kind, const char* member, bool general) {
+  static std::deque<std::string> names;
+  auto name = [&](const char* form, bool list) { return names.emplace_back(std::string(kind) + (list ? "_LIST" : "") + form).c_str(); };
+  const char* each = "each card after card 1, named \"set SID\"";
+  t.push_back({{name("", false), name("", true)}, KeywordFamily::sets_boxes, false,
+               {set_card1(true), {"id card", 8, 10, per_field, ids(member, 8, 0, "members (0: none)"), each}}, ""});
+  std::vector<KeywordField> pairs, triples;
+  for (int k = 0; k < 8; k += 2) {
+    pairs.push_back({"BBEG", k, I, 0, false, {}, k ? "" : "ranges BBEG..BEND (both 0: none; not 1 <= BBEG <= BEND <= 2147483647: error 1003 naming BEND)"});
+    pairs.push_back({"BEND", k + 1, I, 0, false, {}, ""});
+  }
+  for (int k = 0; k + 2 < 8; k += 3) {
+    triples.push_back({"BBEG", k, I, 0, false, {}, k ? "" : "ranges BBEG..BEND by INCR (as _GENERATE)"});
+    triples.push_back({"BEND", k + 1, I, 0, false, {}, ""});
+    triples.push_back({"INCR", k + 2, I, 1, false, {}, k ? "" : "increment (0: 1; < 0: error 1003)"});
+  }
+  t.push_back({{name("_GENERATE", false), name("_GENERATE", true)}, KeywordFamily::sets_boxes, false,
+               {set_card1(true), {"range card", 8, 10, per_field, pairs, each}}, "ids in a range that no definition has are skipped"});
+  t.push_back({{name("_GENERATE_INCREMENT", false), name("_GENERATE_INCREMENT", true)}, KeywordFamily::sets_boxes, false,
+               {set_card1(true), {"range card", 8, 10, per_field, triples, each}}, "ids in a range that no definition has are skipped"});
+  t.push_back({{name("_ADD", false), name("_ADD", true)}, KeywordFamily::sets_boxes, false,
+               {set_card1(true), {"set card", 8, 10, per_field, ids("SID", 8, 0, "member sets (0: none)"), each}}, ""});
+  if (!general) return;
+  std::vector<KeywordCardLayout> cards = {set_card1(true)};
+  for (KeywordCardLayout& c : general_set_cards()) cards.push_back(std::move(c));
+  t.push_back({{name("_GENERAL", false), name("_GENERAL", true)}, KeywordFamily::sets_boxes, false, std::move(cards), ""});
+}
+
 std::vector<KeywordSpec> sets_boxes_specs() {
   const KeywordFamily F = KeywordFamily::sets_boxes;
   constexpr FieldKind A = FieldKind::text;
   std::vector<KeywordSpec> t;
+  add_sets(t, "SET_NODE", "NID", true);
+  add_sets(t, "SET_PART", "PID", false);
+  add_sets(t, "SET_SOLID", "EID", true);
+  add_sets(t, "SET_SHELL", "EID", true);
+  t.push_back({{"SET_SEGMENT"}, F, false,
+               {set_card1(false), {"segment card", 8, 10, per_field, fields_of(ids("N1", 1, 0, "segment nodes (N4 0: N3, a triangle)"),
+                   ids("N2", 1, 1, ""), ids("N3", 1, 2, ""), ids("N4", 1, 3, "")), "each card after card 1, named \"set SID segment\""}},
+               ""});
+  t.push_back({{"SET_SEGMENT_ADD"}, F, false,
+               {set_card1(true), {"set card", 8, 10, per_field, ids("SSID", 8, 0, "member segment sets (0: none)"), "each card after card 1, named \"set SID\""}},
+               ""});
+  {
+    std::vector<KeywordCardLayout> cards = {set_card1(true)};
+    for (KeywordCardLayout& c : general_set_cards()) cards.push_back(std::move(c));
+    t.push_back({{"SET_SEGMENT_GENERAL"}, F, false, std::move(cards), "the options as for the other _GENERAL sets"});
+  }
   t.push_back({{"DEFINE_COORDINATE_SYSTEM"}, F, false,
                {{"card 1", 8, 10, per_field, fields_of(std::vector<KeywordField>{system_id("CID")},
                    reals({"XO", "YO", "ZO"}, 1, "origin"), reals({"XL", "YL", "ZL"}, 4, "a point on the local x axis"),

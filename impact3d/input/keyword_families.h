@@ -240,12 +240,37 @@ struct KeywordLoads {
 bool read_loads_bcs(const Block& b, KeywordContext& ctx, KeywordLoads& l);
 
 // ---------------------------------------------------------------- sets, boxes and coordinate systems
-// (keyword_sets_boxes.cpp; the sets are still read by keyword_reader.cpp)
+// (keyword_sets_boxes.cpp)
 struct RBox {  // *DEFINE_BOX
   Box box;
   Ref ref;
 };
 
+// One card of a *SET_..._GENERAL (OPTION E1-E7, continued by cards of 8 more ids), or the
+// member sets of a *SET_..._ADD (option "SET"): applied in deck order, a "D" option removes.
+struct RSetTerm {
+  std::string option;  // upper case, without the D of a removing option
+  bool remove = false;
+  std::vector<int> ids;
+  std::vector<Ref> refs;
+  Ref ref;  // the OPTION field
+};
+struct RIdList {  // node, part, solid or shell set, or history list
+  std::vector<int> ids;
+  std::vector<Ref> refs;
+  // _GENERATE (_INCREMENT): id ranges BBEG..BEND by INC, kept as ranges (a range may be huge;
+  // the entities it holds are found in the sorted ids when the set is resolved)
+  std::vector<std::array<long long, 3>> ranges;
+  std::vector<RSetTerm> terms;  // _GENERAL and _ADD
+  std::string keyword;          // as written (*SET_NODE_GENERAL, ...), upper case
+  Ref ref;
+};
+struct RSegSet {
+  std::vector<std::array<int, 4>> segs;
+  std::vector<std::array<Ref, 4>> refs;
+  std::vector<RSetTerm> terms;  // *SET_SEGMENT_ADD (SET) and _GENERAL (PART, SET_SOLID, ...)
+  Ref ref;
+};
 struct RCoordSystem {  // *DEFINE_COORDINATE_SYSTEM (_NODES, _VECTOR), *DEFINE_VECTOR (_NODES)
   enum Kind { points, nodes, vectors, vector } kind = points;
   int id = 0;
@@ -263,12 +288,15 @@ struct RTransformation {
 };
 
 struct KeywordSetsBoxes {
+  std::map<int, RIdList> node_sets, part_sets, solid_sets, shell_sets;  // by SID (shell sets: kept for shell elements)
+  std::map<int, RSegSet> seg_sets;
   std::map<int, RBox> boxes;  // by BOXID
   std::vector<RCoordSystem> systems;  // in deck order; resolved once the nodes are known
   std::map<int, RTransformation> transformations;  // by TRANID
 };
 
-// Reads *DEFINE_BOX, *DEFINE_COORDINATE_SYSTEM / _NODES / _VECTOR, *DEFINE_VECTOR (_NODES) and
+// Reads *SET_NODE / _PART / _SOLID / _SHELL (list, _GENERATE (_INCREMENT), _ADD, _GENERAL),
+// *SET_SEGMENT (_ADD, _GENERAL), *DEFINE_BOX, *DEFINE_COORDINATE_SYSTEM / _NODES / _VECTOR, *DEFINE_VECTOR (_NODES) and
 // *DEFINE_TRANSFORMATION into s; false if the keyword is none of the family's tables.
 bool read_sets_boxes(const Block& b, KeywordContext& ctx, KeywordSetsBoxes& s);
 

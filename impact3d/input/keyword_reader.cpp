@@ -46,31 +46,6 @@ int bc_code(int bits) {
 }
 
 // Raw records, before resolution (the families' records are in keyword_families.h).
-// One card of a *SET_..._GENERAL (OPTION E1-E7, continued by cards of 8 more ids), or the
-// member sets of a *SET_..._ADD (option "SET"): applied in deck order, a "D" option removes.
-struct RSetTerm {
-  std::string option;  // upper case, without the D of a removing option
-  bool remove = false;
-  std::vector<int> ids;
-  std::vector<Ref> refs;
-  Ref ref;  // the OPTION field
-};
-struct RIdList {  // node, part, solid or shell set, or history list
-  std::vector<int> ids;
-  std::vector<Ref> refs;
-  // _GENERATE (_INCREMENT): id ranges BBEG..BEND by INC, kept as ranges (a range may be huge;
-  // the entities it holds are found in the sorted ids when the set is resolved)
-  std::vector<std::array<long long, 3>> ranges;
-  std::vector<RSetTerm> terms;  // _GENERAL and _ADD
-  std::string keyword;          // as written (*SET_NODE_GENERAL, ...), upper case
-  Ref ref;
-};
-struct RSegSet {
-  std::vector<std::array<int, 4>> segs;
-  std::vector<std::array<Ref, 4>> refs;
-  std::vector<RSetTerm> terms;  // *SET_SEGMENT_ADD (SET) and _GENERAL (PART, SET_SOLID, ...)
-  Ref ref;
-};
 struct RSide {
   int id = 0, type = 0;
   Ref id_ref, type_ref;
@@ -172,9 +147,10 @@ class KeywordReader {
   std::map<int, RHourglass>& hourglasses_ = ps_.hourglasses;
   std::map<int, REos>& eos_ = mt_.eos;
   std::map<int, std::string> unsupported_eosids_;  // EOSID -> the refused *EOS keyword, line
-  std::map<int, RIdList> node_sets_, part_sets_;
+  std::map<int, RIdList>& node_sets_ = sb_.node_sets;
+  std::map<int, RIdList>& part_sets_ = sb_.part_sets;
   ParamTable params_;                    // *PARAMETER values
-  std::map<int, RSegSet> seg_sets_;
+  std::map<int, RSegSet>& seg_sets_ = sb_.seg_sets;
   std::vector<RContact> contacts_;
   std::vector<RWall> walls_;
   std::vector<RVelocity>& velocities_ = ld_.velocities;
@@ -188,7 +164,8 @@ class KeywordReader {
   bool& damping_rotations_ = ld_.damping_rotations;
   int& body_parts_psid_ = ld_.body_parts_psid;
   Ref& body_parts_ref_ = ld_.body_parts_ref;
-  std::map<int, RIdList> solid_sets_, shell_sets_;  // shell sets: read, kept for shell elements
+  std::map<int, RIdList>& solid_sets_ = sb_.solid_sets;
+  std::map<int, RIdList>& shell_sets_ = sb_.shell_sets;
   std::map<int, RBox>& boxes_ = sb_.boxes;
   std::vector<RCoordSystem>& coord_defs_ = sb_.systems;
   CoordinateTable coords_;
@@ -805,8 +782,6 @@ class KeywordReader {
         parse_spotweld(b);
       } else if (n == "CONSTRAINED_GENERALIZED_WELD_SPOT") {
         parse_generalized_weld_spot(b);
-      } else if (n == "SET_SEGMENT") {
-        parse_segment_set(b);
       } else if (n == "RIGIDWALL_PLANAR") {
         parse_rigidwall(b);
       } else if (n == "CONTACT_SURFACE_TO_SURFACE" || n == "CONTACT_AUTOMATIC_SURFACE_TO_SURFACE" ||
@@ -1021,11 +996,6 @@ class KeywordReader {
   // parse_blocks holds one line for all of them.  Returns false for any other keyword.
   bool parse_structure_keyword(Block& b) {
     const std::string& n = b.name;
-    if (n == "SET_SEGMENT_ADD" || n == "SET_SEGMENT_GENERAL") {
-      parse_segment_set_terms(b);
-      return true;
-    }
-    if (parse_set_keyword(b)) return true;
     if (read_sets_boxes(b, ctx_, sb_)) {  // keyword_sets_boxes.cpp
     } else if (n == "DATABASE_HISTORY_NODE" || n == "DATABASE_HISTORY_SOLID" || n == "DATABASE_HISTORY_NODE_SET" ||
                n == "DATABASE_HISTORY_SOLID_SET" || n == "DATABASE_HISTORY_NODE_ID" || n == "DATABASE_HISTORY_SOLID_ID" ||
@@ -1036,136 +1006,6 @@ class KeywordReader {
       return false;
     }
     return true;
-  }
-
-  // The set keywords: *SET_NODE, *SET_PART, *SET_SOLID and *SET_SHELL, each in the forms
-  // (_LIST), _GENERATE (_INCREMENT), _ADD and _GENERAL; _TITLE stripped before.
-  bool parse_set_keyword(const Block& b) {
-    static const std::pair<const char*, char> kinds[] = {{"SET_NODE", 'N'}, {"SET_PART", 'P'}, {"SET_SOLID", 'H'}, {"SET_SHELL", 'Q'}};
-    for (const auto& [prefix, kind] : kinds) {
-      const std::string p = prefix;
-      if (b.name.rfind(p, 0) != 0) continue;
-      std::string form = b.name.substr(p.size());
-      if (form.rfind("_LIST", 0) == 0) form = form.substr(5);
-      if (form != "" && form != "_GENERATE" && form != "_GENERATE_INCREMENT" && form != "_ADD" && form != "_GENERAL") return false;
-      if (kind == 'P' && form == "_GENERAL") return false;
-      std::map<int, RIdList>& sets = kind == 'N' ? node_sets_ : kind == 'P' ? part_sets_ : kind == 'H' ? solid_sets_ : shell_sets_;
-      const char* field = kind == 'N' ? "NID" : kind == 'P' ? "PID" : "EID";
-      parse_set(b, sets, field, form);
-      return true;
-    }
-    return false;
-  }
-
-  void parse_set(const Block& b, std::map<int, RIdList>& sets, const char* field, const std::string& form) {
-    std::size_t k = skip_option_card(b);
-    if (k >= b.data.size()) { ctx_.missing_card(b, "card 1 (SID)"); return; }
-    KCard c = card(b, k, "card 1", W(b, 6));
-    int sid = xid(int(c.i(0, "SID")), b, &IncludeTransform::idsoff);
-    c.set_card(b.keyword + " " + std::to_string(sid));
-    RIdList s;
-    s.ref = c.ref(0);
-    s.keyword = upper(b.keyword);
-    if (sid < 1) c.error(1201, 0, "SID", "set ids must be positive");
-    const bool generate = form == "_GENERATE", increment = form == "_GENERATE_INCREMENT";
-    for (++k; k < b.data.size(); ++k) {
-      if (is_blank(b.data[k].line->text)) continue;
-      KCard d = card(b, k, "set " + std::to_string(sid), W(b, 8));
-      if (generate || increment) {
-        const int step = increment ? 3 : 2;
-        for (int f = 0; f + step - 1 < 8; f += step) {
-          long long b1 = d.i(f, "BBEG"), b2 = d.i(f + 1, "BEND"), inc = increment ? d.i(f + 2, "INCR", 1) : 1;
-          if (b1 == 0 && b2 == 0) continue;
-          if (inc == 0) inc = 1;
-          if (b1 < 1 || b2 < b1 || b2 > 2147483647) { d.error(1003, f + 1, "BEND", "range must be 1 <= BBEG <= BEND <= 2147483647"); continue; }
-          if (inc < 0) { d.error(1003, f + 2, "INCR", "the increment must be positive"); continue; }
-          // ids in the range that are not defined are skipped at resolution
-          s.ranges.push_back({b1, b2, inc});
-        }
-      } else if (form == "_ADD") {
-        RSetTerm t;
-        t.option = "SET";
-        t.ref = d.ref(0);
-        for (int f = 0; f < 8; ++f) {
-          long long id = d.i(f, "SID");
-          if (id != 0) { t.ids.push_back(int(id)); t.refs.push_back(d.ref(f)); }
-        }
-        s.terms.push_back(std::move(t));
-      } else if (form == "_GENERAL") {
-        parse_general_set_card(d, s);
-      } else {
-        for (int f = 0; f < 8; ++f) {
-          long long id = d.i(f, field);
-          if (id != 0) { s.ids.push_back(int(id)); s.refs.push_back(d.ref(f)); }
-        }
-      }
-    }
-    if (sets.count(sid)) c.error(1200, 0, "SID", "also defined at " + at(sets[sid].ref));
-    sets[sid] = std::move(s);
-  }
-
-  // *SET_SEGMENT_ADD (SID; segment set ids 8 per card) and *SET_SEGMENT_GENERAL (SID; OPTION
-  // cards as for the other _GENERAL sets).
-  void parse_segment_set_terms(const Block& b) {
-    std::size_t k = skip_option_card(b);
-    if (k >= b.data.size()) { ctx_.missing_card(b, "card 1 (SID)"); return; }
-    KCard c = card(b, k, "card 1", W(b, 6));
-    const int sid = xid(int(c.i(0, "SID")), b, &IncludeTransform::idsoff);
-    c.set_card(b.keyword + " " + std::to_string(sid));
-    if (sid < 1) c.error(1201, 0, "SID", "set ids must be positive");
-    RSegSet s;
-    s.ref = c.ref(0);
-    RIdList general;
-    for (++k; k < b.data.size(); ++k) {
-      if (is_blank(b.data[k].line->text)) continue;
-      KCard d = card(b, k, "set " + std::to_string(sid), W(b, 8));
-      if (b.name == "SET_SEGMENT_GENERAL") {
-        parse_general_set_card(d, general);
-        continue;
-      }
-      RSetTerm t;
-      t.option = "SET";
-      t.ref = d.ref(0);
-      for (int f = 0; f < 8; ++f) {
-        long long id = d.i(f, "SSID");
-        if (id != 0) { t.ids.push_back(int(id)); t.refs.push_back(d.ref(f)); }
-      }
-      s.terms.push_back(std::move(t));
-    }
-    if (b.name == "SET_SEGMENT_GENERAL") s.terms = std::move(general.terms);
-    if (seg_sets_.count(sid)) c.error(1200, 0, "SID", "also defined at " + at(seg_sets_[sid].ref));
-    seg_sets_[sid] = std::move(s);
-  }
-
-  // A card of a *SET_..._GENERAL: OPTION (10 columns) and 7 ids; a card whose first field is
-  // a number or blank continues the option before it with 8 ids.  The options are checked when
-  // the set is resolved (they differ between node and element sets).
-  void parse_general_set_card(KCard& d, RIdList& s) {
-    std::string opt = upper(d.literal(0));
-    long long dummy = 0;
-    const bool continuation = opt.empty() || parse_fortran_int(opt, dummy) == FieldStatus::ok;
-    if (continuation && s.terms.empty()) {
-      d.error(1006, 0, "OPTION", "a *SET_..._GENERAL card starts with its option (ALL, NODE, ELEM, PART, BOX, SET_SOLID, ...)");
-      return;
-    }
-    if (!continuation) {
-      RSetTerm t;
-      t.ref = d.ref(0);
-      // the removing options are the adding ones with a D in front (DNODE, DPART, DBOX, ...)
-      static const std::set<std::string> adding = {"ALL", "NODE", "ELEM", "PART", "BOX", "SET_SOLID", "SET_SHELL",
-                                                    "SET_BEAM", "SET_TSHELL", "SET_DISCRETE", "SET_NODE", "SET_PART"};
-      if (opt.size() > 1 && opt[0] == 'D' && adding.count(opt.substr(1))) {
-        t.remove = true;
-        opt = opt.substr(1);
-      }
-      t.option = opt;
-      s.terms.push_back(std::move(t));
-    }
-    RSetTerm& t = s.terms.back();
-    for (int f = continuation ? 0 : 1; f < 8; ++f) {
-      long long id = d.i(f, "E");
-      if (id != 0) { t.ids.push_back(int(id)); t.refs.push_back(d.ref(f)); }
-    }
   }
 
   std::map<int, RTransformation>& transformations_ = sb_.transformations;
@@ -1336,31 +1176,6 @@ class KeywordReader {
       }
     }
     histories_.push_back(std::move(h));
-  }
-
-  void parse_segment_set(const Block& b) {
-    std::size_t k = skip_option_card(b);
-    if (k >= b.data.size()) { ctx_.missing_card(b, "card 1 (SID)"); return; }
-    KCard c = card(b, k, "card 1", W(b, 6));
-    int sid = xid(int(c.i(0, "SID")), b, &IncludeTransform::idsoff);
-    RSegSet s;
-    s.ref = c.ref(0);
-    for (++k; k < b.data.size(); ++k) {
-      if (is_blank(b.data[k].line->text)) continue;
-      KCard d = card(b, k, "set " + std::to_string(sid) + " segment", W(b, 8));
-      std::array<int, 4> seg{};
-      std::array<Ref, 4> refs;
-      const char* names[] = {"N1", "N2", "N3", "N4"};
-      for (int f = 0; f < 4; ++f) {
-        seg[std::size_t(f)] = int(d.i(f, names[f]));
-        refs[std::size_t(f)] = d.ref(f);
-      }
-      if (seg[3] == 0) { seg[3] = seg[2]; refs[3] = refs[2]; }  // triangle
-      s.segs.push_back(seg);
-      s.refs.push_back(refs);
-    }
-    if (seg_sets_.count(sid)) c.error(1200, 0, "SID", "also defined at " + at(seg_sets_[sid].ref));
-    seg_sets_[sid] = std::move(s);
   }
 
   void parse_rigidwall(const Block& b) {

@@ -315,3 +315,23 @@ TEST(KeywordCards, SystemsAndTransformationsByTheirTables) {
   EXPECT_EQ(r.lines()[3].find("deck.k:8: error 1003: *DEFINE_TRANSFORMATION transformation -3, field \"A1-A3\" (cols 11-20)"), 0u) << r.lines()[3];
   EXPECT_EQ(r.lines()[4].find("deck.k:9: error 1006: *DEFINE_TRANSFORMATION transformation -3, field \"OPTION\" (cols 1-10)"), 0u) << r.lines()[4];
 }
+
+// Sets by their tables: every form has its cards (the _LIST spelling too); a _GENERAL card
+// whose first field is a number continues the option before it (first in the set: error 1006
+// naming OPTION); a bad range names BEND, a negative increment INCR, on the card named by the
+// set; *SET_SEGMENT's card 1 keeps its name.
+TEST(KeywordCards, SetsByTheirTables) {
+  for (const char* n : {"SET_NODE", "SET_NODE_LIST", "SET_SOLID_GENERATE_INCREMENT", "SET_SHELL_LIST_ADD", "SET_PART_GENERATE",
+                        "SET_SEGMENT_GENERAL", "SET_NODE_GENERAL"})
+    EXPECT_NE(find_keyword_spec(n), nullptr) << n;
+  EXPECT_EQ(find_keyword_spec("SET_PART_GENERAL"), nullptr);  // refused (error 1102 by the reader)
+  const std::string head = "*CONTROL_TERMINATION\n   1.0E-05\n";
+  const Read r = read(deck(head + "*SET_NODE_GENERATE_INCREMENT\n" + card({"5"}) + card({"4", "2", "1", "1", "8", "-2"}) +
+                           "*SET_SOLID_GENERAL\n" + card({"6"}) + card({"1", "2"}) + "*SET_SEGMENT\n" + card({"7"}) +
+                           "*SET_SEGMENT\n" + card({"7"})));
+  ASSERT_EQ(r.lines().size(), 4u);
+  EXPECT_EQ(r.lines()[0].find("deck.k:6: error 1003: *SET_NODE_GENERATE_INCREMENT set 5, field \"BEND\" (cols 11-20)"), 0u) << r.lines()[0];
+  EXPECT_EQ(r.lines()[1].find("deck.k:6: error 1003: *SET_NODE_GENERATE_INCREMENT set 5, field \"INCR\" (cols 51-60)"), 0u) << r.lines()[1];
+  EXPECT_EQ(r.lines()[2].find("deck.k:9: error 1006: *SET_SOLID_GENERAL set 6, field \"OPTION\" (cols 1-10)"), 0u) << r.lines()[2];
+  EXPECT_EQ(r.lines()[3].find("deck.k:13: error 1200: *SET_SEGMENT card 1, field \"SID\" (cols 1-10)"), 0u) << r.lines()[3];
+}
