@@ -25,6 +25,7 @@
 #include "impact3d/output/printed_output.h"
 #include "impact3d/output/restart_dump.h"
 #include "impact3d/parallel/comm.h"
+#include "impact3d/parallel/distributed_cycle.h"
 #include "impact3d/solve/run.h"
 #include "impact3d/solve/thread_policy.h"
 #include "version.h"
@@ -242,11 +243,8 @@ int run_main(int argc, char** argv) {
     }
   }
   if (opt.deck.empty() && opt.restart.empty()) cmd.add(3002, Location{});
-  if (!parallel::built_with_mpi() && parallel::launcher_size() > 1) {
+  if (!parallel::built_with_mpi() && parallel::launcher_size() > 1)
     cmd.add(3008, Location{}, std::to_string(parallel::launcher_size()) + " processes");
-  } else if (parallel::size() > 1) {
-    cmd.add(3007, Location{}, "the distributed cycle is not in this build yet (issue 26)");
-  }
   if (cmd.error_count()) {
     for (const auto& d : cmd.all()) std::cerr << "impact3d: " << render(d) << "\n";
     std::cerr << kUsage;
@@ -317,6 +315,7 @@ int run_main(int argc, char** argv) {
     if (!intfor_given && !opt.intfor.empty()) opt.intfor = (dir / std::filesystem::path(opt.intfor).filename()).string();
   }
   std::ofstream printed;
+  if (parallel::rank() != 0) opt.printed = "/dev/null";  // rank 0 writes the printed file
   if (!check_only) {
     printed.open(opt.printed, opt.restart.empty() ? std::ios::out : std::ios::app);
     if (!printed) {
@@ -347,6 +346,17 @@ int run_main(int argc, char** argv) {
     std::cout << " input check: 0 errors, " << diag.warning_count() << " warning(s)\n";
     return exit_code::ok;
   }
+  if (parallel::size() > 1) {  // a distributed run: what it does not carry yet is refused
+    const std::string why = !opt.restart.empty() ? std::string("restarts (r=)")
+                                                 : parallel::distributed_refusal(model, parallel::size());
+    if (!why.empty()) {
+      const Diagnostic d{3007, Severity::error, Location{}, why + " (" + std::to_string(parallel::size()) + " ranks)"};
+      std::cerr << "impact3d: " << render(d) << "\n";
+      printed << render(d) << "\n\n E r r o r   t e r m i n a t i o n   (not for a distributed run)\n";
+      std::cout << "\n E r r o r   t e r m i n a t i o n   (not for a distributed run)\n";
+      return exit_code::usage_error;
+    }
+  }
   if (opt.restart.empty()) write_model_summary(printed, model);
   if (diag.warning_count()) diag.print(printed);
   // the starter's last step: the mesh in memory order (init/mesh_order.h); the summary above
@@ -365,18 +375,29 @@ int run_main(int argc, char** argv) {
 // Anything that escapes (a bug, or memory exhausted) ends the run with exit code 9 and a line
 // on stderr, never an abort.
 // Under mpirun an internal error on one rank stops them all (parallel::abort).
+// Ranks other than 0 of a distributed run print nothing (their internal errors aside).
 int main(int argc, char** argv) {
   ensure_passive_openmp_wait(argv);
   parallel::init(&argc, &argv);
+  std::ostream errors(std::cerr.rdbuf());
+  struct NullBuffer : std::streambuf {
+    int overflow(int c) override { return c; }
+  };
+  static NullBuffer null_buffer;  // (outlives the standard streams' final flush)
+  if (parallel::rank() != 0) {
+    std::cout.rdbuf(&null_buffer);
+    std::cerr.rdbuf(&null_buffer);
+  }
+  const std::string who = parallel::size() > 1 ? "impact3d (rank " + std::to_string(parallel::rank()) + "): " : "impact3d: ";
   int code = exit_code::internal_error;
   try {
     code = run_main(argc, argv);
   } catch (const std::bad_alloc&) {
-    std::cerr << "impact3d: internal error: out of memory\n";
+    errors << who << "internal error: out of memory\n";
   } catch (const std::exception& e) {
-    std::cerr << "impact3d: internal error: " << e.what() << "\n";
+    errors << who << "internal error: " << e.what() << "\n";
   } catch (...) {
-    std::cerr << "impact3d: internal error\n";
+    errors << who << "internal error\n";
   }
   if (code == exit_code::internal_error && parallel::size() > 1) parallel::abort(code);
   parallel::finalize();

@@ -13,15 +13,15 @@ namespace impact3d {
 
 // One node against one wall moving at vw along its normal n (0: fixed), p a point of the wall
 // at time n.  Adds the impulse the node received to imp and the kinetic energy change it
-// caused to dke (negative: taken out).
-inline void apply_wall_to_node(State& s, int i, const double p[3], const double n[3], double vw,
+// caused to dke (negative: taken out).  Returns whether the wall acted on the node.
+inline bool apply_wall_to_node(State& s, int i, const double p[3], const double n[3], double vw,
                                double fric, double dt, double imp[3], double& dke) {
   const std::size_t k = std::size_t(i);
   const double mass = s.mass[k];
-  if (mass <= 0 || s.rigid_of_node[k] >= 0) return;  // rigid bodies: warning 2012 at input
+  if (mass <= 0 || s.rigid_of_node[k] >= 0) return false;  // rigid bodies: warning 2012 at input
   const double d = (s.x[k] - p[0]) * n[0] + (s.y[k] - p[1]) * n[1] + (s.z[k] - p[2]) * n[2];
   const double vn = s.vx[k] * n[0] + s.vy[k] * n[1] + s.vz[k] * n[2];
-  if (d + dt * (vn - vw) >= 0) return;  // stays on the body's side
+  if (d + dt * (vn - vw) >= 0) return false;  // stays on the body's side
   const double vn_new = std::max(vn, vw - std::max(d, 0.0) / dt);
   const double dvn = vn_new - vn;  // >= 0
   double dv[3] = {dvn * n[0], dvn * n[1], dvn * n[2]};
@@ -43,6 +43,7 @@ inline void apply_wall_to_node(State& s, int i, const double p[3], const double 
                vmz = 0.5 * (s.vz_old[k] + s.vz[k]);
   dke -= mass * (dv[0] * vmx + dv[1] * vmy + dv[2] * vmz);
   for (int a = 0; a < 3; ++a) imp[a] += mass * dv[a];
+  return true;
 }
 
 // A fixed wall that acts on every node (no node list, no mass): the node pass applies it node

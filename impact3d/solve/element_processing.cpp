@@ -450,7 +450,7 @@ void merge_beam_results(const BeamPassResult& r, int first, double& die, double&
 
 }  // namespace
 
-ElementLoopResult calc_forces_for_elems(const Model& m, State& s) {
+ElementLoopResult calc_forces_for_elems(const Model& m, State& s, const ElementPassHooks& hooks) {
   ElementLoopResult out;
   for (const ElementGroup& g : s.groups) {
     if (g.kernel == HexKernel::rigid) {  // rigid solids: no internal forces, no step
@@ -476,9 +476,17 @@ ElementLoopResult calc_forces_for_elems(const Model& m, State& s) {
     gp.time = s.time;
     gp.model = &m;
     const int b0 = g.first_block, nb = g.num_blocks;
+    if (hooks.owns_block) {
+      const std::uint8_t* own = hooks.owns_block->data();
+#pragma omp parallel for schedule(dynamic, kBlocksPerChunk) if (nb >= kMinBlocksForThreads)
+      for (int b = b0; b < b0 + nb; ++b)
+        if (own[b]) process_hex_block(s, gp, b);
+      continue;
+    }
 #pragma omp parallel for schedule(dynamic, kBlocksPerChunk) if (nb >= kMinBlocksForThreads)
     for (int b = b0; b < b0 + nb; ++b) process_hex_block(s, gp, b);
   }
+  if (hooks.after_blocks) hooks.after_blocks(hooks.ctx, s);
   // Reductions group by group, blocks in order (same bits for any thread count and schedule).
   double die = 0, dhg = 0, dbv = 0, dsrc = 0;
   double dtmin = std::numeric_limits<double>::infinity();

@@ -19,6 +19,15 @@ struct ElementLoopResult {
 // and hourglass corner forces at x^n, element time steps, and the element energy books.
 // Blocks write only their own slots; the reductions combine per-block results in block order,
 // so the result has the same bits for any thread count.
-ElementLoopResult calc_forces_for_elems(const Model& m, State& s);
+//
+// A distributed run (impact3d/parallel) passes hooks: only the blocks marked in owns_block
+// are computed, then after_blocks runs (it brings every block's BlockResult and the corner
+// forces this rank's nodes need) before the reductions, which are then the same on every rank.
+struct ElementPassHooks {
+  const std::vector<std::uint8_t>* owns_block = nullptr;  // per block; null: all blocks
+  void (*after_blocks)(void* ctx, State& s) = nullptr;
+  void* ctx = nullptr;
+};
+ElementLoopResult calc_forces_for_elems(const Model& m, State& s, const ElementPassHooks& hooks = {});
 
 }  // namespace impact3d

@@ -7,6 +7,7 @@
 
 #include "impact3d/contact/stonewall.h"
 #include "impact3d/init/initialize.h"
+#include "impact3d/parallel/distributed_cycle.h"
 #include "impact3d/solve/element_processing.h"
 #include "impact3d/solve/loads.h"
 #include "impact3d/solve/mass_scaling.h"
@@ -45,8 +46,19 @@ double Engine::kinetic_energy_of_material(int mat) const {
   return ke;
 }
 
+void Engine::gather_for_output() {
+  if (!dist_) return;
+  if (dist_->leads()) dist_->announce(parallel::DistributedCycle::Op::gather);
+  dist_->gather_state(s_);
+}
+
+void Engine::release_followers(int code) {
+  if (dist_ && dist_->leads()) dist_->announce(parallel::DistributedCycle::Op::finish, -1, code);
+  dist_ = nullptr;
+}
+
 StepStatus Engine::process_elements() {
-  ElementLoopResult r = calc_forces_for_elems(m_, s_);
+  ElementLoopResult r = dist_ ? calc_forces_for_elems(m_, s_, dist_->element_hooks()) : calc_forces_for_elems(m_, s_);
   s_.newly_failed.clear();
   s_.newly_failed_cause.clear();
   if (r.failed_now > 0) {  // failed in this pass: listed in element order (any thread count)
@@ -81,7 +93,9 @@ StepStatus Engine::process_elements() {
 }
 
 StepStatus Engine::initialize() {
+  if (dist_ && dist_->leads()) dist_->announce(parallel::DistributedCycle::Op::initialize);
   initialize_state(m_, s_);
+  if (dist_) dist_->setup(s_);
   contact_.initialize(m_, s_);
   prepare_loads(m_, s_, loads_);
   fixed_walls_ = fixed_walls_for_node_pass(m_);
@@ -110,6 +124,7 @@ StepStatus Engine::initialize() {
 
 StepStatus Engine::step() {
   State& s = s_;
+  if (dist_ && dist_->leads()) dist_->announce(parallel::DistributedCycle::Op::step, land_time_);
   if (finished()) return StepStatus::finished;
   // last step lands on the termination time
   const double remaining = m_.control.end_time - s.time;
@@ -153,7 +168,8 @@ StepStatus Engine::step() {
   np.update_positions = s.rigid.empty() && !loads_.has_motions &&
                         (m_.walls.empty() || !fixed_walls_.empty());
   np.walls = &fixed_walls_;
-  update_velocities_for_nodes(s, np);
+  if (dist_) dist_->node_pass(s, np);  // this rank's nodes (distributed_cycle.h)
+  else update_velocities_for_nodes(s, np);
   if (!np.update_positions) {
     times_.nodes += seconds_since(t);
     t = Clock::now();

@@ -12,6 +12,10 @@
 
 namespace impact3d {
 
+namespace parallel {
+class DistributedCycle;
+}
+
 enum class StepStatus { ok, finished, negative_volume, non_finite, dt_too_small };
 
 // Wall-clock seconds spent in each phase of the cycle since initialize() (benchmarks and the
@@ -60,6 +64,15 @@ class Engine {
 
   const PhaseTimes& phase_times() const { return times_; }
 
+  // A distributed run (impact3d/parallel/distributed_cycle.h): set before initialize() on
+  // every rank.  Rank 0's initialize() and step() tell the other ranks to do the same.
+  void distribute(parallel::DistributedCycle* d) { dist_ = d; }
+  parallel::DistributedCycle* distribution() const { return dist_; }
+  // Before an output: rank 0 gathers every rank's part of the State (nothing in one process).
+  void gather_for_output();
+  // Rank 0 at the end of a distributed run: the other ranks stop with this exit code.
+  void release_followers(int code);
+
  private:
   double land_time_ = -1;
   StepStatus process_elements();
@@ -73,6 +86,7 @@ class Engine {
   PhaseTimes times_;
   LoadSet loads_;
   std::vector<FixedWall> fixed_walls_;  // walls the node pass applies itself (see NodePass)
+  parallel::DistributedCycle* dist_ = nullptr;
 };
 
 }  // namespace impact3d

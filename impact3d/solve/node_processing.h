@@ -31,6 +31,15 @@ struct NodePass {
 // x^{n+1} = x^n + dt^{n+1/2} v^{n+1/2} and s.kinetic.
 void update_velocities_for_nodes(State& s, const NodePass& p);
 
+// A distributed run (impact3d/parallel): the same pass on the listed nodes only (a rank's own),
+// each node's books kept apart in `records`, node_record_size(p) doubles per listed node: its
+// kinetic energy, then per fused wall whether it acted and its impulse x y z and energy
+// change.  book_node_records takes the records of every node (node order) and makes the
+// chunk sums, s.kinetic and the walls' books exactly as update_velocities_for_nodes does.
+int node_record_size(const NodePass& p);
+void update_velocities_for_listed_nodes(State& s, const NodePass& p, const std::vector<int>& nodes, double* records);
+void book_node_records(State& s, const NodePass& p, const double* records);
+
 // x^{n+1} = x^n + dt v^{n+1/2} and s.kinetic, after walls and rigid bodies set the velocities.
 void update_positions_for_nodes(State& s, double dt_next);
 

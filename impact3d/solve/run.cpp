@@ -11,7 +11,11 @@
 
 #include <omp.h>
 
+#include <memory>
+
 #include "common/messages.h"
+#include "impact3d/parallel/comm.h"
+#include "impact3d/parallel/distributed_cycle.h"
 #include "impact3d/solve/engine.h"
 #include "impact3d/solve/run_cycle.h"
 #include "impact3d/solve/run_end.h"
@@ -50,14 +54,26 @@ void stop_on_request(const State& s, RunOutputs& outputs, RunLog& log) {
 
 int run_simulation(const Model& model, const RunOptions& opt, std::ostream& printed) {
   if (opt.threads > 0) omp_set_num_threads(opt.threads);
+  Engine engine(model);
+  // under mpirun with several ranks (docs/cluster.md): rank 0 runs this driver, the other
+  // ranks follow its commands
+  std::unique_ptr<parallel::DistributedCycle> distributed;
+  if (parallel::size() > 1) {
+    distributed = std::make_unique<parallel::DistributedCycle>();
+    engine.distribute(distributed.get());
+    if (!distributed->leads()) return distributed->follow(engine);
+  }
+  auto finish = [&engine](int code) {
+    engine.release_followers(code);
+    return code;
+  };
   RunLog log(printed, opt.quiet);
   const RunClock clock;
-  Engine engine(model);
 
   const RunStart start = start_or_resume(engine, opt, log);
-  if (!start.ok) return exit_code::file_error;
+  if (!start.ok) return finish(exit_code::file_error);
   RunOutputs outputs(engine, opt, log, clock, start.cursor, start.restarting);
-  if (!outputs.open()) return exit_code::file_error;
+  if (!outputs.open()) return finish(exit_code::file_error);
   StepStatus st = start.status;
   if (!start.restarting && st == StepStatus::ok) outputs.write_first();
 
@@ -81,8 +97,9 @@ int run_simulation(const Model& model, const RunOptions& opt, std::ostream& prin
   if (!stopped) outputs.write_last(st);
   outputs.flush();
 
+  engine.gather_for_output();  // (the final report reads the whole State)
   write_final_report(engine, outputs, cycle, clock.elapsed(), opt, log);
-  return terminate_run(engine, st, stopped, outputs, cycle, opt, log);
+  return finish(terminate_run(engine, st, stopped, outputs, cycle, opt, log));
 }
 
 }  // namespace impact3d

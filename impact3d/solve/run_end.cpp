@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "common/messages.h"
+#include "impact3d/parallel/distributed_cycle.h"
 #include "impact3d/solve/run_report.h"
 
 namespace impact3d {
@@ -30,6 +31,14 @@ void log_timings(const Engine& engine, const State& s, double seconds, double ou
                 " phase times (s): elements %.3f  nodes %.3f  walls %.3f  contact %.3f  output %.3f",
                 pt.elements, pt.nodes, pt.walls, pt.contact, output_seconds);
   log.line(buf);
+  if (const parallel::DistributedCycle* d = engine.distribution()) {  // (in the phases above)
+    std::snprintf(buf, sizeof buf,
+                  " communication on rank 0 (%d ranks): %.3f s in the cycle's messages, %.1f us per cycle; "
+                  "output gathers %.3f s",
+                  d->domain().nranks, d->cycle_comm_seconds(), s.cycle ? 1e6 * d->cycle_comm_seconds() / s.cycle : 0.0,
+                  d->output_gather_seconds());
+    log.line(buf);
+  }
 }
 
 // Message 4001-4003's detail for an error termination `st`.

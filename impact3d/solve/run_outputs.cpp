@@ -124,6 +124,7 @@ void RunOutputs::write_last(StepStatus st) {
 void RunOutputs::write_plot(bool scheduled) {
   if (!scheduled && plot_.last_time() == s_.time) return;  // a state at this time exists
   const OutputTimer timer(seconds_);
+  engine_.gather_for_output();  // a distributed run: every rank's part to rank 0
   try {
     plot_.write(model_, s_, engine_.interface_forces());
   } catch (const std::exception& ex) {
@@ -140,6 +141,7 @@ void RunOutputs::write_plot(bool scheduled) {
 void RunOutputs::write_intfor() {
   if (!want_intfor_ || intfor_.last_time() == s_.time) return;
   const OutputTimer timer(seconds_);
+  engine_.gather_for_output();
   try {
     intfor_.write(model_, s_, engine_.contact(), engine_.interface_forces());
   } catch (const std::exception& ex) {
@@ -153,6 +155,7 @@ void RunOutputs::write_intfor() {
 void RunOutputs::write_history() {
   last_history_time_ = s_.time;
   const OutputTimer timer(seconds_);
+  engine_.gather_for_output();
   try {
     const double ns = s_.cycle > 0 ? 1e9 * clock_.elapsed() / (double(s_.cycle) * std::max(1, s_.ne)) : 0;
     history_.write(model_, s_, engine_.interface_forces(), ns);
@@ -187,6 +190,7 @@ DumpHeader RunOutputs::dump_header() {
 
 bool RunOutputs::write_dump(const std::string& path) {
   const DumpHeader h = dump_header();
+  engine_.gather_for_output();
   try {
     write_restart_dump(path, h, s_, engine_.contact().restart_data());
   } catch (const std::exception& ex) {

@@ -4,6 +4,7 @@
 
 #include <cstdio>
 
+#include "impact3d/parallel/distributed_cycle.h"
 #include "impact3d/solve/run_report.h"
 
 namespace impact3d {
@@ -25,7 +26,9 @@ bool resume(Engine& engine, const std::string& path, OutputCursor& cursor, RunLo
   return true;
 }
 
-void log_heading(const Model& model, const State& s, const RunOptions& opt, bool restarting, RunLog& log) {
+// (a distributed run: its partition, distributed_cycle.h)
+void log_heading(const Model& model, const State& s, const RunOptions& opt, bool restarting,
+                 const parallel::DistributedCycle* distributed, RunLog& log) {
   char buf[300];
   if (restarting)
     std::snprintf(buf, sizeof buf, "\n restart from %s at cycle %d, time %.6e\n threads: %d\n",
@@ -35,6 +38,7 @@ void log_heading(const Model& model, const State& s, const RunOptions& opt, bool
                   omp_get_max_threads(), s.dt_next, s.dt_elem >= 0 ? model.hex_id(s.dt_elem) : 0);
   log.line(buf);
   if (model.control.mass_scaling_dt != 0) log.line(mass_scaling_report(model.control, s));
+  if (distributed) log.line(distributed->report() + "\n");
   log.line(kCycleHeading);
 }
 
@@ -52,7 +56,7 @@ RunStart start_or_resume(Engine& engine, const RunOptions& opt, RunLog& log) {
     r.status = engine.finished() ? StepStatus::finished : StepStatus::ok;
   }
   r.time = engine.state().time;
-  log_heading(engine.model(), engine.state(), opt, r.restarting, log);
+  log_heading(engine.model(), engine.state(), opt, r.restarting, engine.distribution(), log);
   return r;
 }
 

@@ -1,0 +1,356 @@
+// The distributed cycle (distributed_cycle.h).
+#include "impact3d/parallel/distributed_cycle.h"
+
+#include <chrono>
+#include <cstring>
+#include <stdexcept>
+
+#include "impact3d/material/material_types.h"
+#include "impact3d/parallel/comm.h"
+#include "impact3d/solve/engine.h"
+
+namespace impact3d::parallel {
+
+namespace {
+
+constexpr int kTagCorners = 1, kTagKinematics = 2;
+constexpr std::size_t kBlockCorners = 8 * kLanes;
+
+// Every value of node k that the outputs or a restart dump read, in a fixed order.
+template <class F>
+void visit_node(State& s, std::size_t k, F&& f) {
+  for (std::vector<double>* v : {&s.x, &s.y, &s.z, &s.vx, &s.vy, &s.vz, &s.ax, &s.ay, &s.az, &s.vx_old, &s.vy_old,
+                                 &s.vz_old})
+    if (!v->empty()) f((*v)[k]);
+}
+
+// Every value of solid e that changes in the cycle (State::visit_dynamic_fields' solid part).
+template <class F>
+void visit_solid(State& s, std::size_t e, F&& f) {
+  f(s.vol[e]);
+  f(s.q[e]);
+  f(s.dt_e[e]);
+  f(s.failed[e]);
+  if (!s.eps_p.empty()) f(s.eps_p[e]);
+  if (!s.yielded.empty()) f(s.yielded[e]);
+  for (std::size_t c = 0; c < 6; ++c) f(s.sig[6 * e + c]);
+  if (!s.back.empty())
+    for (std::size_t c = 0; c < 6; ++c) f(s.back[6 * e + c]);
+  if (!s.hgs.empty())
+    for (std::size_t c = 0; c < 12; ++c) f(s.hgs[12 * e + c]);
+  const std::size_t hs = std::size_t(s.hist_stride);
+  if (!s.hist.empty())
+    for (std::size_t h = 0; h < hs; ++h) f(s.hist[hs * e + h]);
+  if (s.pt_first.empty() || s.pt_first[e] < 0) return;
+  for (std::size_t g = 0; g < 8; ++g) {  // a fully integrated solid's points
+    const std::size_t p = std::size_t(s.pt_first[e]) + g;
+    for (std::size_t c = 0; c < 6; ++c) f(s.pt_sig[6 * p + c]);
+    if (!s.pt_back.empty())
+      for (std::size_t c = 0; c < 6; ++c) f(s.pt_back[6 * p + c]);
+    f(s.pt_eps_p[p]);
+    f(s.pt_yielded[p]);
+    if (!s.pt_hist.empty())
+      for (std::size_t h = 0; h < hs; ++h) f(s.pt_hist[hs * p + h]);
+  }
+}
+
+// A block's corner forces and its solids.
+template <class F>
+void visit_block(State& s, std::size_t b, F&& f) {
+  for (std::vector<double>* v : {&s.cfx, &s.cfy, &s.cfz})
+    for (std::size_t c = 0; c < kBlockCorners; ++c) f((*v)[b * kBlockCorners + c]);
+  for (std::size_t l = 0; l < std::size_t(kLanes); ++l)
+    if (const int e = s.slot_elem[b * kLanes + l]; e >= 0) visit_solid(s, std::size_t(e), f);
+}
+
+// Values written to or read from a buffer of doubles (bytes as 0-255, exact).
+struct Packer {
+  double* out;
+  std::size_t n = 0;
+  void operator()(double& v) { out[n++] = v; }
+  void operator()(std::uint8_t& v) { out[n++] = v; }
+};
+struct Unpacker {
+  const double* in;
+  std::size_t n = 0;
+  void operator()(double& v) { v = in[n++]; }
+  void operator()(std::uint8_t& v) { v = std::uint8_t(in[n++]); }
+};
+struct Counter {
+  std::size_t n = 0;
+  void operator()(double&) { ++n; }
+  void operator()(std::uint8_t&) { ++n; }
+};
+
+// Adds the wall-clock time of a scope to a total.
+struct Timer {
+  double& total;
+  std::chrono::steady_clock::time_point t0 = std::chrono::steady_clock::now();
+  explicit Timer(double& t) : total(t) {}
+  ~Timer() { total += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); }
+};
+
+struct Command {
+  int op = 0, code = 0;
+  double land_time = -1;
+};
+
+std::vector<int> displacements(const std::vector<int>& counts) {
+  std::vector<int> d(counts.size(), 0);
+  for (std::size_t q = 1; q < counts.size(); ++q) d[q] = d[q - 1] + counts[q - 1];
+  return d;
+}
+
+}  // namespace
+
+std::string distributed_refusal(const Model& m, int nranks) {
+  std::vector<std::string> what;
+  if (!m.shell_nodes.empty()) what.push_back("shells");
+  if (!m.beam_nodes.empty()) what.push_back("beams");
+  if (!m.interfaces.empty()) what.push_back("sliding interfaces");
+  if (!m.force_transducers.empty()) what.push_back("force transducers");
+  bool rigid = !m.spot_welds.empty(), failure = m.control.erode_small_steps;
+  for (const MaterialData& md : m.materials) {
+    if (md.shell || md.beam) continue;
+    if (material_type(md.type).rigid) rigid = true;
+    const MaterialConstants mc = derive_constants(md, m);
+    if (mc.fail_strain > 0 || mc.tdel > 0 || mc.fail_history >= 0 || mc.vol_erode_hi > 0 || mc.vol_erode_lo > 0 ||
+        mc.erosion)
+      failure = true;
+  }
+  if (rigid) what.push_back("rigid bodies");
+  if (failure) what.push_back("solid failure or erosion");
+  if (m.has_loads() || !m.prescribed_motions.empty()) what.push_back("loads or prescribed motions");
+  if (m.control.mass_scaling_dt != 0) what.push_back("mass scaling");
+  const std::size_t fixed = fixed_walls_for_node_pass(m).size();
+  if (!m.walls.empty() && (fixed != m.walls.size() || fixed > kMaxFusedWalls))
+    what.push_back("moving stonewalls or stonewalls on node lists");
+  // one block of kLanes solids of one material at least per rank
+  std::vector<int> per_material(m.materials.size(), 0);
+  for (int mat : m.hex_material) ++per_material[std::size_t(mat)];
+  long blocks = 0;
+  for (int n : per_material) blocks += (n + kLanes - 1) / kLanes;
+  if (blocks < nranks)
+    what.push_back(std::to_string(blocks) + " blocks of solids for " + std::to_string(nranks) +
+                   " ranks (one block of 8 solids per rank at least)");
+  std::string out;
+  for (const std::string& w : what) out += (out.empty() ? "" : ", ") + w;
+  return out;
+}
+
+DistributedCycle::DistributedCycle() : rank_(rank()), nranks_(size()) {}
+
+void DistributedCycle::setup(const State& s) {
+  const std::size_t nb = s.slot_elem.size() / kLanes;
+  // the partition: rank 0 computes it, every rank gets it (one partition, whatever METIS does)
+  std::vector<int> block_rank(nb, 0);
+  int ok = 1;
+  BlockGraph g;
+  if (leads()) {
+    g = block_graph(s);
+    try {
+      block_rank = partition_blocks(g, nranks_);
+    } catch (const std::exception&) {
+      ok = 0;
+    }
+  }
+  broadcast(&ok, sizeof ok);
+  if (!ok) throw std::runtime_error("the partition failed (METIS)");
+  broadcast(block_rank.data(), nb * sizeof(int));
+  dom_ = build_domain(s, block_rank, nranks_, rank_);
+  if (leads()) report_ = partition_report(summarize_partition(s, g, block_rank, nranks_));
+
+  rank_blocks_.assign(std::size_t(nranks_), {});
+  for (std::size_t b = 0; b < nb; ++b) rank_blocks_[std::size_t(block_rank[b])].push_back(int(b));
+  block_bytes_.assign(std::size_t(nranks_), 0);
+  for (int q = 0; q < nranks_; ++q)
+    block_bytes_[std::size_t(q)] = int(rank_blocks_[std::size_t(q)].size() * sizeof(BlockResult));
+  block_displs_ = displacements(block_bytes_);
+  block_buf_.resize(nb);
+  rank_nodes_.assign(std::size_t(nranks_), {});
+  if (leads())
+    for (std::size_t n = 0; n < std::size_t(s.nn); ++n) rank_nodes_[std::size_t(dom_.node_rank[n])].push_back(int(n));
+
+  // the neighbour exchanges' buffers: per peer its corners (3 values each), then its nodes (6)
+  std::size_t ns = 0, nr = 0;
+  for (const Peer& p : dom_.peers) {
+    ns += 3 * p.send_corners.size() + 6 * p.send_nodes.size();
+    nr += 3 * p.recv_corners.size() + 6 * p.recv_nodes.size();
+  }
+  send_buf_.assign(ns, 0.0);
+  recv_buf_.assign(nr, 0.0);
+  corner_ex_.clear();
+  node_ex_.clear();
+  double* sp = send_buf_.data();
+  double* rp = recv_buf_.data();
+  for (const Peer& p : dom_.peers) {
+    Exchange c{p.rank, sp, int(3 * p.send_corners.size()), rp, int(3 * p.recv_corners.size())};
+    sp += c.send_count, rp += c.recv_count;
+    Exchange k{p.rank, sp, int(6 * p.send_nodes.size()), rp, int(6 * p.recv_nodes.size())};
+    sp += k.send_count, rp += k.recv_count;
+    corner_ex_.push_back(c);
+    node_ex_.push_back(k);
+  }
+
+  // the output gather's sizes: each rank's own nodes and blocks
+  State& sm = const_cast<State&>(s);  // (the counter only counts)
+  Counter cnt;
+  for (int n : dom_.owned_nodes) visit_node(sm, std::size_t(n), cnt);
+  for (int b : dom_.owned_blocks) visit_block(sm, std::size_t(b), cnt);
+  state_buf_.assign(cnt.n, 0.0);
+  const int mine = int(cnt.n * sizeof(double));
+  state_bytes_.assign(std::size_t(nranks_), 0);
+  std::vector<int> one(std::size_t(nranks_), int(sizeof(int)));
+  gather(&mine, int(sizeof(int)), state_bytes_.data(), one.data(), displacements(one).data());
+  state_displs_ = displacements(state_bytes_);
+  if (leads()) state_all_.assign(std::size_t(state_displs_.back() + state_bytes_.back()) / sizeof(double), 0.0);
+}
+
+ElementPassHooks DistributedCycle::element_hooks() {
+  ElementPassHooks h;
+  h.owns_block = &dom_.owns_block;
+  h.after_blocks = &DistributedCycle::after_blocks;
+  h.ctx = this;
+  return h;
+}
+
+void DistributedCycle::after_blocks(void* self, State& s) {
+  auto* d = static_cast<DistributedCycle*>(self);
+  const Timer t(d->comm_s_);
+  d->share_block_results(s);
+  d->send_corner_forces(s);
+}
+
+void DistributedCycle::share_block_results(State& s) {
+  const std::vector<int>& mine = rank_blocks_[std::size_t(rank_)];
+  BlockResult* own = block_buf_.data() + block_displs_[std::size_t(rank_)] / int(sizeof(BlockResult));
+  for (std::size_t i = 0; i < mine.size(); ++i) own[i] = s.block_results[std::size_t(mine[i])];
+  allgather(own, block_bytes_[std::size_t(rank_)], block_buf_.data(), block_bytes_.data(), block_displs_.data());
+  for (int q = 0; q < nranks_; ++q) {
+    const BlockResult* from = block_buf_.data() + block_displs_[std::size_t(q)] / int(sizeof(BlockResult));
+    const std::vector<int>& theirs = rank_blocks_[std::size_t(q)];
+    for (std::size_t i = 0; i < theirs.size(); ++i) s.block_results[std::size_t(theirs[i])] = from[i];
+  }
+}
+
+void DistributedCycle::send_corner_forces(State& s) {
+  for (std::size_t i = 0; i < dom_.peers.size(); ++i) {
+    double* out = const_cast<double*>(corner_ex_[i].send);
+    for (int c : dom_.peers[i].send_corners) {
+      *out++ = s.cfx[std::size_t(c)];
+      *out++ = s.cfy[std::size_t(c)];
+      *out++ = s.cfz[std::size_t(c)];
+    }
+  }
+  exchange(corner_ex_, kTagCorners);
+  for (std::size_t i = 0; i < dom_.peers.size(); ++i) {
+    const double* in = corner_ex_[i].recv;
+    for (int c : dom_.peers[i].recv_corners) {
+      s.cfx[std::size_t(c)] = *in++;
+      s.cfy[std::size_t(c)] = *in++;
+      s.cfz[std::size_t(c)] = *in++;
+    }
+  }
+}
+
+void DistributedCycle::send_ghost_kinematics(State& s) {
+  for (std::size_t i = 0; i < dom_.peers.size(); ++i) {
+    double* out = const_cast<double*>(node_ex_[i].send);
+    for (int n : dom_.peers[i].send_nodes) {
+      const std::size_t k = std::size_t(n);
+      *out++ = s.x[k], *out++ = s.y[k], *out++ = s.z[k];
+      *out++ = s.vx[k], *out++ = s.vy[k], *out++ = s.vz[k];
+    }
+  }
+  exchange(node_ex_, kTagKinematics);
+  for (std::size_t i = 0; i < dom_.peers.size(); ++i) {
+    const double* in = node_ex_[i].recv;
+    for (int n : dom_.peers[i].recv_nodes) {
+      const std::size_t k = std::size_t(n);
+      s.x[k] = *in++, s.y[k] = *in++, s.z[k] = *in++;
+      s.vx[k] = *in++, s.vy[k] = *in++, s.vz[k] = *in++;
+    }
+  }
+}
+
+void DistributedCycle::node_pass(State& s, const NodePass& p) {
+  if (!p.update_positions) throw std::logic_error("distributed node pass: positions must move in the pass");
+  const std::size_t stride = std::size_t(node_record_size(p));
+  if (records_.size() != stride * dom_.owned_nodes.size()) {  // the first cycle: sized once
+    records_.assign(stride * dom_.owned_nodes.size(), 0.0);
+    record_counts_.assign(std::size_t(nranks_), 0);
+    for (int q = 0; q < nranks_; ++q)
+      record_counts_[std::size_t(q)] = int(stride * (leads() ? rank_nodes_[std::size_t(q)].size() : 0) * sizeof(double));
+    record_displs_ = displacements(record_counts_);
+    if (leads()) {
+      gathered_records_.assign(stride * std::size_t(s.nn), 0.0);
+      all_records_.assign(stride * std::size_t(s.nn), 0.0);
+    }
+  }
+  update_velocities_for_listed_nodes(s, p, dom_.owned_nodes, records_.data());
+  const Timer t(comm_s_);
+  gather(records_.data(), int(records_.size() * sizeof(double)), gathered_records_.data(), record_counts_.data(),
+         record_displs_.data());
+  if (leads()) {  // into node order, then the one-process sums
+    const double* in = gathered_records_.data();
+    for (const std::vector<int>& nodes : rank_nodes_)
+      for (int n : nodes) {
+        std::memcpy(&all_records_[stride * std::size_t(n)], in, stride * sizeof(double));
+        in += stride;
+      }
+    book_node_records(s, p, all_records_.data());
+  }
+  send_ghost_kinematics(s);
+}
+
+void DistributedCycle::gather_state(State& s) {
+  const Timer t(gather_s_);
+  Packer pk{state_buf_.data()};
+  for (int n : dom_.owned_nodes) visit_node(s, std::size_t(n), pk);
+  for (int b : dom_.owned_blocks) visit_block(s, std::size_t(b), pk);
+  gather(state_buf_.data(), int(state_buf_.size() * sizeof(double)), state_all_.data(), state_bytes_.data(),
+         state_displs_.data());
+  if (!leads()) return;
+  for (int q = 1; q < nranks_; ++q)
+    unpack_rank_state(s, q, state_all_.data() + state_displs_[std::size_t(q)] / int(sizeof(double)));
+}
+
+void DistributedCycle::unpack_rank_state(State& s, int q, const double* from) {
+  Unpacker up{from};
+  for (int n : rank_nodes_[std::size_t(q)]) visit_node(s, std::size_t(n), up);
+  for (int b : rank_blocks_[std::size_t(q)]) visit_block(s, std::size_t(b), up);
+}
+
+void DistributedCycle::announce(Op op, double land_time, int code) {
+  Command c;
+  c.op = int(op);
+  c.code = code;
+  c.land_time = land_time;
+  const Timer t(comm_s_);
+  broadcast(&c, sizeof c);
+}
+
+int DistributedCycle::follow(Engine& engine) {
+  for (;;) {
+    Command c;
+    broadcast(&c, sizeof c);
+    switch (Op(c.op)) {
+      case Op::initialize:
+        engine.initialize();
+        break;
+      case Op::step:
+        engine.land_on(c.land_time);
+        engine.step();
+        break;
+      case Op::gather:
+        engine.gather_for_output();
+        break;
+      case Op::finish:
+        return c.code;
+      default:
+        throw std::logic_error("distributed run: unknown command from rank 0");
+    }
+  }
+}
+
+}  // namespace impact3d::parallel

@@ -1,0 +1,93 @@
+#pragma once
+// The distributed cycle (docs/cluster.md): the Engine's cycle on a rank's domain (partition.h),
+// with the same bits as one process for any rank count.
+//
+// Every rank reads the deck and builds the whole State (memory is not yet divided: a first
+// step); each computes only its own blocks of solids and its own nodes:
+//  - element pass: this rank's blocks; then every block's BlockResult to every rank
+//    (allgather), so the reductions over blocks in block order are the same numbers on every
+//    rank (the step, its element, the energies), and the corner forces of this rank's solids
+//    at other ranks' nodes to their owners (neighbour exchange);
+//  - node pass: this rank's nodes, each summing its corner list in the one-process order (the
+//    corners of other ranks' solids are the received values, the same numbers), so each
+//    node's force has the same bits; each node's kinetic energy and wall books to rank 0
+//    (gather), which sums them in the one-process chunk order; the new positions and
+//    velocities of this rank's nodes to the ranks that have them as ghosts.
+// Rank 0 leads: it runs the run driver (outputs, schedule, run checks, messages) and tells the
+// other ranks what to do next (initialize, step, gather for output, finish); before an output
+// it gathers every rank's nodes, solids and corner forces, so that it writes the same files
+// as one process.
+
+#include <string>
+#include <vector>
+
+#include "impact3d/model/model.h"
+#include "impact3d/model/state.h"
+#include "impact3d/parallel/comm.h"
+#include "impact3d/parallel/partition.h"
+#include "impact3d/solve/element_processing.h"
+#include "impact3d/solve/node_processing.h"
+
+namespace impact3d {
+class Engine;
+}
+
+namespace impact3d::parallel {
+
+// What the distributed cycle cannot carry yet in this model, on nranks ranks, as a list for
+// message 3007 (empty: it can run distributed).
+std::string distributed_refusal(const Model& m, int nranks);
+
+class DistributedCycle {
+ public:
+  DistributedCycle();
+  bool leads() const { return rank_ == 0; }
+
+  // After initialize_state: the partition (rank 0, sent to all), this rank's domain, buffers.
+  void setup(const State& s);
+  const Domain& domain() const { return dom_; }
+  // d3hsp's lines on the partition (rank 0).
+  const std::string& report() const { return report_; }
+
+  ElementPassHooks element_hooks();
+  // The node pass on this rank's nodes, the books to rank 0, the ghosts' kinematics.
+  void node_pass(State& s, const NodePass& p);
+  // Rank 0 receives every rank's nodes, solids and corner forces (collective).
+  void gather_state(State& s);
+
+  // The leader's commands (rank 0), and the other ranks' loop that follows them until finish;
+  // follow returns the exit code rank 0 finished with.
+  // Wall-clock seconds this rank spent in the cycle's messages (exchanges, block results, node
+  // books, commands) and in the output gathers; each includes the wait for the other ranks.
+  double cycle_comm_seconds() const { return comm_s_; }
+  double output_gather_seconds() const { return gather_s_; }
+
+  enum class Op : int { initialize = 1, step, gather, finish };
+  void announce(Op op, double land_time = -1, int code = 0);
+  int follow(Engine& engine);
+
+ private:
+  static void after_blocks(void* self, State& s);
+  void share_block_results(State& s);
+  void send_corner_forces(State& s);
+  void send_ghost_kinematics(State& s);
+  void unpack_rank_state(State& s, int q, const double* from);
+
+  int rank_ = 0, nranks_ = 1;
+  Domain dom_;
+  std::string report_;
+  std::vector<std::vector<int>> rank_blocks_;  // every rank's blocks, increasing
+  std::vector<std::vector<int>> rank_nodes_;   // every rank's nodes, increasing (rank 0 only)
+  // buffers, sized once
+  std::vector<BlockResult> block_buf_;
+  std::vector<int> block_bytes_, block_displs_;
+  std::vector<double> send_buf_, recv_buf_;    // neighbour exchanges: per peer, one after another
+  std::vector<Exchange> corner_ex_, node_ex_;
+  std::vector<double> records_, all_records_, gathered_records_;
+  std::vector<int> record_counts_, record_displs_;
+  std::vector<double> state_buf_, state_all_;
+  std::vector<int> state_bytes_, state_displs_;
+  double comm_s_ = 0, gather_s_ = 0;
+};
+
+}  // namespace impact3d::parallel

@@ -1,0 +1,39 @@
+#!/usr/bin/env bash
+# A distributed run against one process (docs/cluster.md):
+#   mpi_same_bits.sh same IMPACT3D DECK NP WORKDIR
+#     runs DECK with one process and with mpirun -np NP (one thread each) and compares the plot
+#     database d3plot*, the time histories d3thdt* and the ASCII files (glstat, matsum, nodout,
+#     elout, rwforc) byte for byte; d3hsp must state the partition over NP ranks.
+#   mpi_same_bits.sh refused IMPACT3D DECK NP WORKDIR
+#     the deck must be refused under mpirun -np NP: exit code 3 and message 3007.
+set -uo pipefail
+mode=$1 impact3d=$2 deck=$3 np=$4 work=$5
+flags=(--oversubscribe)
+[ "$(id -u)" = 0 ] && flags+=(--allow-run-as-root)
+# ranks that wait yield the core (this machine runs more ranks than it has cores)
+export SOURCE_DATE_EPOCH=0 OMPI_MCA_mpi_yield_when_idle=1
+rm -rf "$work"
+mkdir -p "$work/one" "$work/np$np"
+if [ "$mode" = refused ]; then
+  (cd "$work/np$np" && mpirun "${flags[@]}" -np "$np" "$impact3d" i="$deck" ncpu=1 > log 2>&1)
+  rc=$?
+  cat "$work/np$np/log"
+  [ $rc = 3 ] || { echo "exit code $rc, not 3"; exit 1; }
+  grep -q "error 3007" "$work/np$np/log" || { echo "no message 3007"; exit 1; }
+  echo "refused as expected on $np ranks"
+  exit 0
+fi
+(cd "$work/one" && "$impact3d" i="$deck" ncpu=1 > log 2>&1) || { cat "$work/one/log"; echo "one process failed"; exit 1; }
+(cd "$work/np$np" && mpirun "${flags[@]}" -np "$np" "$impact3d" i="$deck" ncpu=1 > log 2>&1) ||
+  { cat "$work/np$np/log"; echo "mpirun -np $np failed"; exit 1; }
+n=0
+for f in "$work/one"/d3plot* "$work/one"/d3thdt* "$work/one"/{glstat,matsum,nodout,elout,rwforc}; do
+  [ -e "$f" ] || continue
+  n=$((n + 1))
+  cmp "$f" "$work/np$np/$(basename "$f")" || { echo "differs: $(basename "$f")"; exit 1; }
+done
+count() { ls "$1" | grep -c -E '^(d3plot|d3thdt)'; }
+[ "$(count "$work/one")" = "$(count "$work/np$np")" ] || { echo "not the same number of database files"; exit 1; }
+grep -A $((np + 2)) "distributed run: $np MPI ranks" "$work/np$np/d3hsp" || { echo "d3hsp does not state the partition"; exit 1; }
+grep "elapsed" "$work/one/log" "$work/np$np/log"
+echo "same bits: $n files, one process and $np ranks"
