@@ -71,8 +71,8 @@ void gather(const void* send, int send_bytes, void* recv, const int* recv_bytes,
 
 void exchange(const std::vector<Exchange>& with, int tag) {
   if (with.empty()) return;
-  // (allocated per call: a handful of requests, under the cost of one message)
-  std::vector<MPI_Request> req(2 * with.size(), MPI_REQUEST_NULL);
+  static std::vector<MPI_Request> req;  // (sized at the first exchange; main thread only)
+  req.assign(2 * with.size(), MPI_REQUEST_NULL);
   for (std::size_t i = 0; i < with.size(); ++i)
     if (with[i].recv_count > 0)
       MPI_Irecv(with[i].recv, with[i].recv_count, MPI_DOUBLE, with[i].peer, tag, MPI_COMM_WORLD, &req[2 * i]);
