@@ -18,7 +18,7 @@ inline bool held_along(const State& s, std::size_t k, const double n[3]) {
 std::vector<FixedWall> fixed_walls_for_node_pass(const Model& m) {
   std::vector<FixedWall> out;
   for (const StoneWall& sw : m.walls) {
-    if (sw.mass > 0 || !sw.nodes.empty()) return {};
+    if (sw.mass > 0 || !sw.nodes.empty() || sw.cylinder()) return {};
     FixedWall w;
     double n[3] = {sw.head[0] - sw.tail[0], sw.head[1] - sw.tail[1], sw.head[2] - sw.tail[2]};
     const double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
@@ -32,9 +32,42 @@ std::vector<FixedWall> fixed_walls_for_node_pass(const Model& m) {
   return out;
 }
 
+// A fixed cylinder (StoneWall::cylinder): each node against the plane tangent to the cylinder at
+// the point nearest to it (normal: radial, outward), so the node ends on the surface; nodes on
+// the axis, and past an end of a finite cylinder, are left.
+static void apply_cylinder_to_nodes(const StoneWall& sw, State& s, double dt, double imp[3], double& dke) {
+  double a[3] = {sw.head[0] - sw.tail[0], sw.head[1] - sw.tail[1], sw.head[2] - sw.tail[2]};
+  const double len = std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
+  for (double& c : a) c /= len;
+  auto one = [&](int i) {
+    const std::size_t k = std::size_t(i);
+    const double r[3] = {s.x[k] - sw.tail[0], s.y[k] - sw.tail[1], s.z[k] - sw.tail[2]};
+    const double axial = r[0] * a[0] + r[1] * a[1] + r[2] * a[2];
+    if (sw.length > 0 && (axial < 0 || axial > sw.length)) return;
+    double n[3] = {r[0] - axial * a[0], r[1] - axial * a[1], r[2] - axial * a[2]};
+    const double rho = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    if (!(rho > 0)) return;
+    for (double& c : n) c /= rho;
+    const double p[3] = {sw.tail[0] + axial * a[0] + sw.radius * n[0], sw.tail[1] + axial * a[1] + sw.radius * n[1],
+                         sw.tail[2] + axial * a[2] + sw.radius * n[2]};
+    apply_wall_to_node(s, i, p, n, 0.0, sw.friction, dt, imp, dke);
+  };
+  if (sw.nodes.empty())
+    for (int i = 0; i < s.nn; ++i) one(i);
+  else
+    for (int i : sw.nodes) one(i);
+}
+
 void apply_stonewalls_to_nodes(const Model& m, State& s, double dt, double dt_n) {
   for (std::size_t w = 0; w < m.walls.size(); ++w) {
     const StoneWall& sw = m.walls[w];
+    if (sw.cylinder()) {
+      double imp[3] = {0, 0, 0}, dke = 0;
+      apply_cylinder_to_nodes(sw, s, dt, imp, dke);
+      s.wall_work += dke;  // the energy the fixed cylinder takes out
+      for (int a = 0; a < 3; ++a) s.wall_force[w][std::size_t(a)] = -imp[a] / dt_n;
+      continue;
+    }
     double n[3] = {sw.head[0] - sw.tail[0], sw.head[1] - sw.tail[1], sw.head[2] - sw.tail[2]};
     const double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
     for (double& c : n) c /= len;

@@ -1,7 +1,8 @@
 #pragma once
-// Rigid walls (DYNA3D stonewalls): infinite planes; a node that would cross its wall in this
-// step has its normal velocity reduced so it ends on the wall (no rebound: the momentum goes
-// into the wall), with optional stick or Coulomb friction.
+// Rigid walls (DYNA3D stonewalls): infinite planes, and fixed cylinders
+// (*RIGIDWALL_GEOMETRIC_CYLINDER: the plane tangent at the point nearest to each node); a node
+// that would cross its wall in this step has its normal velocity reduced so it ends on the wall
+// (no rebound: the momentum goes into the wall), with optional stick or Coulomb friction.
 
 #include "impact3d/model/model.h"
 #include "impact3d/model/state.h"

@@ -439,6 +439,13 @@ class KeywordWriter {
   void walls() {
     for (const StoneWall& w : m_.walls) {
       int sid = w.nodes.empty() ? 0 : node_set(w.nodes);
+      if (w.cylinder()) {
+        os_ << "*RIGIDWALL_GEOMETRIC_CYLINDER\n$#    nsid\n" << kcard({I(sid)}) << "\n"
+            << "$#      xt        yt        zt        xh        yh        zh      fric\n"
+            << kcard({R(w.tail[0]), R(w.tail[1]), R(w.tail[2]), R(w.head[0]), R(w.head[1]), R(w.head[2]), R(w.friction)}) << "\n"
+            << "$#  radcyl    lencyl\n" << kcard({R(w.radius), R(w.length)}) << "\n";
+        continue;
+      }
       os_ << (w.mass > 0 ? "*RIGIDWALL_PLANAR_MOVING\n" : "*RIGIDWALL_PLANAR\n") << "$#    nsid\n" << kcard({I(sid)}) << "\n"
           << "$#      xt        yt        zt        xh        yh        zh      fric\n"
           << kcard({R(w.tail[0]), R(w.tail[1]), R(w.tail[2]), R(w.head[0]), R(w.head[1]), R(w.head[2]), R(w.friction)}) << "\n";
@@ -1184,6 +1191,13 @@ int write_converted_decks(const Model& m, const std::string& keyword_path, const
               << j + 1 << " is an eroding contact (*CONTACT_ERODING_*: no fixed-format card; write a keyword deck)\n";
           return exit_code::input_error;
         }
+    if (k == 1)  // a cylinder wall has no fixed-format card
+      for (std::size_t j = 0; j < m.walls.size(); ++j)
+        if (m.walls[j].cylinder()) {
+          log << " error: the fixed-format deck " << path << " cannot hold this model (not written): rigid wall " << j + 1
+              << " is a cylinder (*RIGIDWALL_GEOMETRIC_CYLINDER: no fixed-format card; write a keyword deck)\n";
+          return exit_code::input_error;
+        }
     if (k == 1) {  // *MAT_ADD_EROSION has no fixed-format card
       for (std::size_t j = 0; j < m.materials.size(); ++j)
         if (m.materials[j].erosion.active) {
@@ -1411,6 +1425,8 @@ void section_and_output_differences(const Model& a, const Model& b, Differences&
     d.D(s + "friction", x.friction, y.friction);
     d.D(s + "mass", x.mass, y.mass);
     d.D(s + "V0", x.v0, y.v0);
+    d.D(s + "cylinder radius", x.radius, y.radius);
+    d.D(s + "cylinder length", x.length, y.length);
     if (x.nodes != y.nodes) d.diff(s + "nodes", std::to_string(x.nodes.size()), std::to_string(y.nodes.size()));
   }
   d.N("initial velocities", long(a.init_velocities.size()), long(b.init_velocities.size()));

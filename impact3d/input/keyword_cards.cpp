@@ -502,6 +502,31 @@ std::vector<KeywordSpec> loads_bcs_specs() {
                   }, "after each card 1 (missing: error 1316)"}},
                  "pairs of cards; LS-DYNA's *BOUNDARY_SPC_..._ID_BIRTH_DEATH and _BIRTH_DEATH_ID both read"});
   }
+  t.push_back({{"RIGIDWALL_GEOMETRIC_CYLINDER", "RIGIDWALL_GEOMETRIC_CYLINDER_DISPLAY", "RIGIDWALL_GEOMETRIC_CYLINDER_MOTION",
+                "RIGIDWALL_GEOMETRIC_CYLINDER_MOTION_DISPLAY"}, F, false,
+               {{"card 1", 5, 10, per_field, {
+                   {"NSID", 0, I, 0, false, {}, "node set the wall acts on (0: all nodes)"},
+                   {"NSIDEX", 1, I, 0, false, {}, "node set exempted"},
+                   {"BOXID", 2, I, 0, false, {}, "only the nodes in this box"},
+                   {"BIRTH", 3, E, 0, false, {nonzero(1102, "wall birth time")}, "birth time"},
+                   {"DEATH", 4, E, 0, false, {}, "death time (0 or >= 1e20: none; other: error 1102)"},
+               }, "each wall (after its ID card with _ID)"},
+                {"card 2", 7, 10, per_field, {
+                   {"XT", 0, E, 0, false, {}, "tail of the axis (a point on it)"}, {"YT", 1, E, 0, false, {}, ""}, {"ZT", 2, E, 0, false, {}, ""},
+                   {"XH", 3, E, 0, false, {}, "head: the axis runs from the tail toward it (tail = head: error 1213)"}, {"YH", 4, E, 0, false, {}, ""},
+                   {"ZH", 5, E, 0, false, {}, ""},
+                   {"FRIC", 6, E, 0, false, {outside(0, 1, 1219)}, "0 frictionless, 1 stick, between Coulomb"},
+               }, "required (missing: error 1316)"},
+                {"card 3", 3, 10, per_field, {
+                   {"RADCYL", 0, E, 0, false, {outside(0, kInf, 1003, "the cylinder's radius must be positive", true)}, "radius"},
+                   {"LENCYL", 1, E, 0, false, {below(0, 1003, "the cylinder's length must not be negative")}, "length from the tail along the axis (0: infinite; a node past an end is free)"},
+                   {"NSEGS", 2, I, 0, false, {nonzero(1102, "cylinders of varying radius (NSEGS)")}, "subsections of varying radius"},
+               }, "required (missing: error 1316)"},
+                {"card 4", 4, 10, per_field, {
+                   plain("PID", 0, I, "display part: read, no effect (no display shells are written)"),
+                   plain("RO", 1, E), plain("E", 2, E), plain("PR", 3, E),
+               }, "with _DISPLAY"}},
+               "a fixed rigid cylinder: the nodes are kept outside it (no rebound, friction as *RIGIDWALL_PLANAR); _MOTION: error 1312"});
   t.push_back({{"CONSTRAINED_GLOBAL"}, F, false,
                {{"", 7, 10, per_field, {
                    {"TC", 0, I, 0, false, {outside(0, 7, 1006, "0 none, 1 x, 2 y, 3 z, 4 x and y, 5 y and z, 6 z and x, 7 all")},

@@ -217,6 +217,13 @@ struct RGlobalConstraint {  // *CONSTRAINED_GLOBAL: one plane
   Ref ref;                   // TC
 };
 
+struct RGeomWall {  // *RIGIDWALL_GEOMETRIC_CYLINDER (_DISPLAY), resolved with the planar walls
+  std::string keyword;  // as written
+  int nsid = 0, nsidex = 0, boxid = 0;  // NSID 0: all nodes
+  Ref nsid_ref, nsidex_ref, boxid_ref;
+  StoneWall w;  // tail, head, friction, radius, length
+};
+
 struct KeywordLoads {
   std::vector<LoadCurve> curves;  // *DEFINE_CURVE, in deck order
   std::vector<Ref> curve_refs;    // their LCID fields
@@ -225,6 +232,7 @@ struct KeywordLoads {
   std::vector<RTemperature> temperatures;
   std::vector<RSpc> spcs;
   std::vector<RGlobalConstraint> globals;  // *CONSTRAINED_GLOBAL, in deck order
+  std::vector<RGeomWall> geometric_walls;  // *RIGIDWALL_GEOMETRIC_CYLINDER, in deck order
   std::vector<Ref> rot_refs;  // first rotational field of each *BOUNDARY_SPC card that has one
   Ref w_ref;                  // last rotational initial velocity (message when no shell node takes it)
   RLoad damping;             // *DAMPING_GLOBAL (lcid, sf = VALDMP, dir = STX STY STZ)
@@ -235,7 +243,7 @@ struct KeywordLoads {
 
 // Reads *LOAD_NODE_POINT / _SET, *LOAD_RIGID_BODY, *LOAD_SEGMENT (_SET), *LOAD_BODY_X / _Y / _Z
 // / _VECTOR / _PARTS, *DEFINE_CURVE, *DAMPING_GLOBAL, *BOUNDARY_PRESCRIBED_MOTION_NODE / _SET / _RIGID,
-// *BOUNDARY_SPC_NODE / _SET (_BIRTH_DEATH), *CONSTRAINED_GLOBAL, *INITIAL_VELOCITY (_NODE, _GENERATION) and *INITIAL_TEMPERATURE_NODE
+// *BOUNDARY_SPC_NODE / _SET (_BIRTH_DEATH), *CONSTRAINED_GLOBAL, *RIGIDWALL_GEOMETRIC_CYLINDER, *INITIAL_VELOCITY (_NODE, _GENERATION) and *INITIAL_TEMPERATURE_NODE
 // / _SET into l; false if the keyword is none of them.
 bool read_loads_bcs(const Block& b, KeywordContext& ctx, KeywordLoads& l);
 

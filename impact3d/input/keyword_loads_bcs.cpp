@@ -6,6 +6,7 @@
 
 #include "impact3d/input/keyword_families.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace impact3d::kw {
@@ -242,6 +243,60 @@ void read_constrained_global(const Block& b, KeywordContext& ctx, const KeywordS
   }
 }
 
+// *RIGIDWALL_GEOMETRIC_CYLINDER (_DISPLAY), with _ID an ID card before each wall: card 1 NSID
+// NSIDEX BOXID BIRTH DEATH, card 2 XT YT ZT XH YH ZH FRIC, card 3 RADCYL LENCYL NSEGS, and with
+// _DISPLAY card 4 PID RO E PR (the display part: read, no effect).
+void read_geometric_walls(const Block& b, KeywordContext& ctx, const KeywordSpec& s, bool display, KeywordLoads& out) {
+  std::size_t k = 0;
+  while (k < b.data.size()) {
+    if (is_blank(b.data[k].line->text)) {
+      ++k;
+      continue;
+    }
+    if (b.id_opt) ++k;  // RWID, heading
+    if (k + 2 >= b.data.size()) {
+      ctx.missing_card(b, "cards 1-3 (NSID ...; XT ... FRIC; RADCYL LENCYL)");
+      return;
+    }
+    KeywordValues v = ctx.values(b, k, s.card("card 1"));
+    RGeomWall g;
+    g.keyword = upper(b.keyword);
+    g.nsid = ctx.xid(int(v.integer("NSID")), b, 's');
+    g.nsid_ref = v.ref("NSID");
+    g.nsidex = ctx.xid(int(v.integer("NSIDEX")), b, 's');
+    g.nsidex_ref = v.ref("NSIDEX");
+    g.boxid = ctx.xid(int(v.integer("BOXID")), b, 'd');
+    g.boxid_ref = v.ref("BOXID");
+    const double death = v["DEATH"];
+    if (death != 0 && death < 1e20) v.error(1102, "DEATH", "wall death time");
+    KeywordValues v2 = ctx.values(b, k + 1, s.card("card 2"));
+    static const char* const names[] = {"XT", "YT", "ZT", "XH", "YH", "ZH"};
+    for (std::size_t f = 0; f < 3; ++f) g.w.tail[f] = v2[names[f]];
+    for (std::size_t f = 0; f < 3; ++f) g.w.head[f] = v2[names[3 + f]];
+    g.w.friction = v2["FRIC"];
+    double len2 = 0, scale = 0;
+    for (std::size_t f = 0; f < 3; ++f) {
+      len2 += (g.w.head[f] - g.w.tail[f]) * (g.w.head[f] - g.w.tail[f]);
+      scale = std::max({scale, std::fabs(g.w.head[f]), std::fabs(g.w.tail[f])});
+    }
+    if (!(std::sqrt(len2) > 1e-12 * scale) || len2 == 0) v2.error(1213, "XT", "the cylinder's axis (tail to head) has no length");
+    KeywordValues v3 = ctx.values(b, k + 2, s.card("card 3"));
+    g.w.radius = v3["RADCYL"];
+    g.w.length = v3["LENCYL"];
+    g.w.line = b.data[k].line->number;
+    k += 3;
+    if (display) {
+      if (k >= b.data.size()) {
+        ctx.missing_card(b, "card 4 (PID RO E PR), read with _DISPLAY");
+        return;
+      }
+      ctx.values(b, k, s.card("card 4"));
+      ++k;
+    }
+    out.geometric_walls.push_back(g);
+  }
+}
+
 // *INITIAL_TEMPERATURE_NODE (NID TEMP LOC per card) and _SET (NSID TEMP LOC; NSID 0: every
 // node): the nodes' initial temperatures, in deck order (a later card wins); LOC (a shell
 // surface) is warning 2006: the temperature holds through the thickness.
@@ -411,6 +466,16 @@ bool read_loads_bcs(const Block& b, KeywordContext& ctx, KeywordLoads& l) {
     read_curve(b, ctx, *s, l);
   } else if (n.rfind("BOUNDARY_SPC_", 0) == 0) {
     read_spc(b, ctx, *s, n.rfind("BOUNDARY_SPC_SET", 0) == 0, n.find("_BIRTH_DEATH") != std::string::npos, l);
+  } else if (n.rfind("RIGIDWALL_GEOMETRIC_CYLINDER", 0) == 0) {
+    if (n.find("_MOTION") != std::string::npos) {
+      Location loc;
+      loc.file = b.kw.file->name();
+      loc.line = b.kw.line->number;
+      loc.card = b.keyword;
+      ctx.diag.add(1312, loc, "_MOTION: moving geometric walls (IMPACT-3D's cylinders are fixed)");
+    } else {
+      read_geometric_walls(b, ctx, *s, n.find("_DISPLAY") != std::string::npos, l);
+    }
   } else if (n == "CONSTRAINED_GLOBAL") {
     read_constrained_global(b, ctx, *s, l);
   } else if (n == "INITIAL_TEMPERATURE_NODE" || n == "INITIAL_TEMPERATURE_SET") {

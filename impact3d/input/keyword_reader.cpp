@@ -734,7 +734,8 @@ class KeywordReader {
         "CONTACT_NODES_TO_SURFACE", "CONTACT_FORCE_TRANSDUCER_PENALTY", "CONTACT_AUTOMATIC_SINGLE_SURFACE",
         "CONTACT_AUTOMATIC_NODES_TO_SURFACE", "CONTACT_ERODING_SURFACE_TO_SURFACE", "CONTACT_ERODING_NODES_TO_SURFACE",
         "CONTACT_ERODING_SINGLE_SURFACE", "BOUNDARY_SPC_NODE", "BOUNDARY_SPC_SET", "BOUNDARY_SPC_NODE_BIRTH_DEATH",
-        "BOUNDARY_SPC_SET_BIRTH_DEATH", "BOUNDARY_PRESCRIBED_MOTION_NODE", "BOUNDARY_PRESCRIBED_MOTION_SET", "BOUNDARY_PRESCRIBED_MOTION_RIGID",
+        "BOUNDARY_SPC_SET_BIRTH_DEATH", "RIGIDWALL_GEOMETRIC_CYLINDER", "RIGIDWALL_GEOMETRIC_CYLINDER_DISPLAY",
+        "RIGIDWALL_GEOMETRIC_CYLINDER_MOTION", "RIGIDWALL_GEOMETRIC_CYLINDER_MOTION_DISPLAY", "BOUNDARY_PRESCRIBED_MOTION_NODE", "BOUNDARY_PRESCRIBED_MOTION_SET", "BOUNDARY_PRESCRIBED_MOTION_RIGID",
         "LOAD_SEGMENT", "LOAD_SEGMENT_SET", "CONSTRAINED_SPOTWELD", "CONSTRAINED_GENERALIZED_WELD_SPOT"};
     if (ends("_TITLE") && (titled.count(n.substr(0, n.size() - 6)) || find_material_type_by_keyword(n.substr(0, n.size() - 6)) ||
                            find_eos_form_by_keyword(n.substr(0, n.size() - 6)))) {
@@ -2807,6 +2808,14 @@ class KeywordReader {
   }
 
   void resolve_walls() {
+    for (const RGeomWall& g : ld_.geometric_walls) {  // after the planar walls
+      RWall w;
+      w.keyword = g.keyword;
+      w.nsid = g.nsid, w.nsidex = g.nsidex, w.boxid = g.boxid;
+      w.nsid_ref = g.nsid_ref, w.nsidex_ref = g.nsidex_ref, w.boxid_ref = g.boxid_ref;
+      w.w = g.w;
+      walls_.push_back(std::move(w));
+    }
     for (RWall& w : walls_) {
       if (w.nsidex != 0 || w.boxid != 0) {  // the nodes of NSID (0: all) in the box, less NSIDEX
         std::vector<int> nodes;

@@ -167,6 +167,11 @@ struct StoneWall {
   double mass = 0, v0 = 0;
   std::vector<int> nodes;  // 0-based; empty = all nodes
   int line = 0;
+  // *RIGIDWALL_GEOMETRIC_CYLINDER (radius > 0): a fixed rigid cylinder whose axis runs from tail
+  // toward head, of this radius and, when length > 0, this length from the tail (0: infinite);
+  // nodes are kept outside it (a node past an end of a finite one is free)
+  double radius = 0, length = 0;
+  bool cylinder() const { return radius > 0; }
 };
 
 struct InitialVelocity {

@@ -139,7 +139,9 @@ void fill_plot_globals(const Model& m, const State& s, const InterfaceForces& if
     const double n[3] = {sw.head[0] - sw.tail[0], sw.head[1] - sw.tail[1], sw.head[2] - sw.tail[2]};
     const double l = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
     const auto& F = s.wall_force[w];
-    ps.rigid_wall_forces[w] = -(F[0] * n[0] + F[1] * n[1] + F[2] * n[2]) / l + 0.0;
+    // a cylinder: the force's magnitude (its normal turns from node to node)
+    ps.rigid_wall_forces[w] = sw.cylinder() ? std::sqrt(F[0] * F[0] + F[1] * F[1] + F[2] * F[2])
+                                            : -(F[0] * n[0] + F[1] * n[1] + F[2] * n[2]) / l + 0.0;
   }
   // sliding interfaces: resultant force on the slave side, x y z (as rcforc); zero before the
   // first contact pass

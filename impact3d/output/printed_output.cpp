@@ -377,6 +377,9 @@ void write_rigid_walls(std::ostream& os, const Model& m) {
                               : "Coulomb friction " + fmt("%.4g", sw.friction))
        << ", nodes: " << (sw.nodes.empty() ? std::string("all") : std::to_string(sw.nodes.size()));
     if (sw.mass > 0) os << ", moving: mass " << fmt("%.6e", sw.mass) << ", initial velocity " << fmt("%.6e", sw.v0) << " along the normal";
+    if (sw.cylinder())
+      os << ", cylinder: radius " << fmt("%.6g", sw.radius) << " about the axis through the point along the normal, length "
+         << (sw.length > 0 ? fmt("%.6g", sw.length) : std::string("infinite"));
     os << "\n";
   }
   os << "\n";
