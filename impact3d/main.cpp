@@ -150,223 +150,271 @@ void print_banner(std::ostream& os) {
 
 namespace {
 
-int run_main(int argc, char** argv) {
+// What the command line asks for.
+struct CommandLine {
   RunOptions opt;
   bool check_only = false;
   InputOptions input_opt;
   std::string write_keyword, write_fixed;
-  bool printed_given = false, plot_given = false, dump_given = false, words_given = false,
-       x_given = false, intfor_given = false, reorder_given = false;
+  bool printed_given = false, plot_given = false, dump_given = false, words_given = false, x_given = false,
+       intfor_given = false, reorder_given = false;
   MeshOrderMode mesh_order = MeshOrderMode::automatic;
+};
+
+// --help, --version, --messages, --card-tables, --keyword-tables: printed on stdout; false for
+// any other word.
+bool print_information(const std::string& arg) {
+  if (arg == "--help" || arg == "-h") {
+    std::cout << kUsage;
+  } else if (arg == "--version") {
+    std::cout << "impact3d " << IMPACT3D_VERSION << "\n";
+  } else if (arg == "--messages") {
+    for (const auto& m : message_catalog())
+      std::cout << m.id << " "
+                << (m.severity == Severity::error ? "error" : m.severity == Severity::warning ? "warning" : "info")
+                << " " << m.text << "\n";
+  } else if (arg == "--card-tables") {
+    std::cout << fixed_card_tables_markdown();
+  } else if (arg == "--keyword-tables") {
+    std::cout << keyword_tables_markdown();
+  } else {
+    return false;
+  }
+  return true;
+}
+
+// A flag word (--check, --strict, ...) into cl; false for any other word.
+bool read_flag(const std::string& arg, CommandLine& cl) {
+  if (arg == "--check") cl.check_only = true;
+  else if (arg == "--strict") cl.opt.strict = true;
+  else if (arg == "--lenient-keywords") cl.input_opt.lenient_keywords = true;
+  else return false;
+  return true;
+}
+
+// A file-name word (i=, o=, g=, s=, d=, r=, --write-keyword=, --write-fixed=) into cl; false
+// for any other word.
+bool read_file_name(const std::string& arg, CommandLine& cl) {
+  const auto eq = arg.find('=');
+  if (eq == std::string::npos) return false;
+  const std::string key = arg.substr(0, eq + 1), v = arg.substr(eq + 1);
+  RunOptions& opt = cl.opt;
+  if (key == "--write-keyword=") cl.write_keyword = v, cl.check_only = true;
+  else if (key == "--write-fixed=") cl.write_fixed = v, cl.check_only = true;
+  else if (key == "i=") opt.deck = v;
+  else if (key == "o=") opt.printed = v, cl.printed_given = true;
+  else if (key == "g=") opt.plot = v, cl.plot_given = true;
+  else if (key == "s=") opt.intfor = v, cl.intfor_given = true;
+  else if (key == "d=") opt.dump = v, cl.dump_given = true;
+  else if (key == "r=") opt.restart = v;
+  else return false;
+  return true;
+}
+
+// A numeric or mode word (plotwords=, x=, case=, reorder=, ncpu=) into cl, a bad value as error
+// 3005 into cmd; false for any other word.
+bool read_setting(const std::string& arg, CommandLine& cl, Diagnostics& cmd) {
+  const auto eq = arg.find('=');
+  if (eq == std::string::npos) return false;
+  const std::string key = arg.substr(0, eq + 1);
+  const char* v = arg.c_str() + eq + 1;
+  auto bad_value = [&](const char* why) {
+    Location loc;
+    loc.found = arg;
+    loc.show_found = true;
+    cmd.add(3005, loc, why);
+  };
+  RunOptions& opt = cl.opt;
+  if (key == "plotwords=") {
+    int n = 0;
+    if (parse_count(v, 4, 8, n) && (n == 4 || n == 8)) {
+      opt.plot_word_size = n;
+      cl.words_given = true;
+    } else {
+      bad_value("plotwords must be 4 or 8");
+    }
+  } else if (key == "x=") {
+    if (parse_count(v, 1, 1024, opt.member_size_factor)) cl.x_given = true;
+    else bad_value("x must be an integer 1-1024 (member size in units of 512 x 512 words)");
+  } else if (key == "case=") {
+    if (!parse_count(v, 1, 2147483647, cl.input_opt.case_id)) bad_value("case must be a positive case id (*CASE)");
+  } else if (key == "reorder=") {
+    if (parse_mesh_order_mode(v, cl.mesh_order)) cl.reorder_given = true;
+    else bad_value("reorder must be auto, on or off");
+  } else if (key == "ncpu=") {
+    if (!parse_count(v, 1, 1024, opt.threads)) bad_value("ncpu must be an integer 1-1024");
+  } else {
+    return false;
+  }
+  return true;
+}
+
+// The command line into cl: an exit code when the run ends here (information printed, or
+// usage errors reported with the usage), else -1.
+int parse_command_line(int argc, char** argv, CommandLine& cl) {
   Diagnostics cmd;
   for (int a = 1; a < argc; ++a) {
-    std::string arg = argv[a];
-    auto bad_value = [&](const char* why) {
-      Location loc;
-      loc.found = arg;
-      loc.show_found = true;
-      cmd.add(3005, loc, why);
-    };
-    auto value = [&](const char* prefix) -> const char* {
-      std::size_t n = std::strlen(prefix);
-      return arg.compare(0, n, prefix) == 0 ? argv[a] + n : nullptr;
-    };
-    if (arg == "--help" || arg == "-h") {
-      std::cout << kUsage;
-      return exit_code::ok;
-    } else if (arg == "--version") {
-      std::cout << "impact3d " << IMPACT3D_VERSION << "\n";
-      return exit_code::ok;
-    } else if (arg == "--messages") {
-      for (const auto& m : message_catalog())
-        std::cout << m.id << " "
-                  << (m.severity == Severity::error ? "error" : m.severity == Severity::warning ? "warning" : "info")
-                  << " " << m.text << "\n";
-      return exit_code::ok;
-    } else if (arg == "--card-tables") {
-      std::cout << fixed_card_tables_markdown();
-      return exit_code::ok;
-    } else if (arg == "--keyword-tables") {
-      std::cout << keyword_tables_markdown();
-      return exit_code::ok;
-    } else if (arg == "--check") {
-      check_only = true;
-    } else if (arg == "--strict") {
-      opt.strict = true;
-    } else if (arg == "--lenient-keywords") {
-      input_opt.lenient_keywords = true;
-    } else if (const char* v = value("--write-keyword=")) {
-      write_keyword = v;
-      check_only = true;
-    } else if (const char* v = value("--write-fixed=")) {
-      write_fixed = v;
-      check_only = true;
-    } else if (const char* v = value("i=")) {
-      opt.deck = v;
-    } else if (const char* v = value("o=")) {
-      opt.printed = v;
-      printed_given = true;
-    } else if (const char* v = value("g=")) {
-      opt.plot = v;
-      plot_given = true;
-    } else if (const char* v = value("s=")) {
-      opt.intfor = v;
-      intfor_given = true;
-    } else if (const char* v = value("d=")) {
-      opt.dump = v;
-      dump_given = true;
-    } else if (const char* v = value("r=")) {
-      opt.restart = v;
-    } else if (const char* v = value("plotwords=")) {
-      int n = 0;
-      if (parse_count(v, 4, 8, n) && (n == 4 || n == 8)) {
-        opt.plot_word_size = n;
-        words_given = true;
-      } else {
-        bad_value("plotwords must be 4 or 8");
-      }
-    } else if (const char* v = value("x=")) {
-      if (parse_count(v, 1, 1024, opt.member_size_factor)) x_given = true;
-      else bad_value("x must be an integer 1-1024 (member size in units of 512 x 512 words)");
-    } else if (const char* v = value("case=")) {
-      if (!parse_count(v, 1, 2147483647, input_opt.case_id)) bad_value("case must be a positive case id (*CASE)");
-    } else if (const char* v = value("reorder=")) {
-      if (parse_mesh_order_mode(v, mesh_order)) reorder_given = true;
-      else bad_value("reorder must be auto, on or off");
-    } else if (const char* v = value("ncpu=")) {
-      if (!parse_count(v, 1, 1024, opt.threads)) bad_value("ncpu must be an integer 1-1024");
-    } else {
-      Location loc;
-      loc.found = arg;
-      loc.show_found = true;
-      cmd.add(3001, loc);
-    }
+    const std::string arg = argv[a];
+    if (print_information(arg)) return exit_code::ok;
+    if (read_flag(arg, cl) || read_file_name(arg, cl) || read_setting(arg, cl, cmd)) continue;
+    Location loc;
+    loc.found = arg;
+    loc.show_found = true;
+    cmd.add(3001, loc);
   }
-  if (opt.deck.empty() && opt.restart.empty()) cmd.add(3002, Location{});
+  if (cl.opt.deck.empty() && cl.opt.restart.empty()) cmd.add(3002, Location{});
   if (!parallel::built_with_mpi() && parallel::launcher_size() > 1)
     cmd.add(3008, Location{}, std::to_string(parallel::launcher_size()) + " processes");
-  if (cmd.error_count()) {
-    for (const auto& d : cmd.all()) std::cerr << "impact3d: " << render(d) << "\n";
-    std::cerr << kUsage;
+  if (!cmd.error_count()) return -1;
+  for (const auto& d : cmd.all()) std::cerr << "impact3d: " << render(d) << "\n";
+  std::cerr << kUsage;
+  return exit_code::usage_error;
+}
+
+// A restart: the dump's header gives the output names, word size, member size and numbering of
+// the run that wrote it (plotwords=, x= and reorder= cannot change them), and the deck text,
+// read and checked as the first run did.  An exit code when the dump cannot be used, else -1.
+int read_restart_deck(CommandLine& cl, Model& model, Diagnostics& diag, bool& ok) {
+  RunOptions& opt = cl.opt;
+  DumpHeader h;
+  try {
+    h = read_restart_dump_header(opt.restart);
+  } catch (const std::exception& ex) {
+    Location loc;
+    loc.file = opt.restart;
+    Diagnostic d{4005, Severity::error, loc, ex.what()};
+    std::cerr << "impact3d: " << render(d) << "\n";
+    std::cout << "\n E r r o r   t e r m i n a t i o n   (restart dump is invalid)\n";
+    return exit_code::file_error;
+  }
+  if (cl.words_given || cl.x_given || cl.reorder_given) {
+    Location loc;
+    loc.found = cl.words_given ? "plotwords=" : cl.x_given ? "x=" : "reorder=";
+    loc.show_found = true;
+    Diagnostic d{3005, Severity::error, loc,
+                 "plotwords=, x= and reorder= cannot change on a restart: the plot database and the dump's "
+                 "numbering continue"};
+    std::cerr << "impact3d: " << render(d) << "\n";
     return exit_code::usage_error;
   }
+  if (!cl.printed_given) opt.printed = h.printed;
+  if (!cl.plot_given) opt.plot = h.plot_root;
+  if (!cl.dump_given && !h.dump_root.empty()) opt.dump = h.dump_root;
+  if (!cl.intfor_given && !h.intfor_root.empty()) opt.intfor = h.intfor_root;
+  opt.plot_word_size = h.plot_word_size;
+  opt.member_size_factor = h.member_size_factor;
+  cl.mesh_order = h.mesh_renumbered ? MeshOrderMode::on : MeshOrderMode::off;  // as the dump's run
+  opt.deck = h.deck_name;
+  opt.deck_text = h.deck_text;
+  DeckFile deck;
+  deck.load_from_string(h.deck_name, h.deck_text);
+  ok = read_deck(deck, model, diag, cl.input_opt);  // fixed format or keyword, by content
+  if (ok) {
+    orient_interface_segments(model, diag);  // as read_and_check_deck does
+    ok = check_model(model, diag) && !diag.has(1225);
+  }
+  return -1;
+}
 
+// The deck's say in the outputs: *KEYWORD NCPU=, DYNA3D's free-format "basename NAME" (the plot
+// database's root unless g= is given), *CASE (a case's outputs go to a folder named by its
+// JOBID, or caseN, unless given).
+void apply_deck_output_names(CommandLine& cl, const Model& model) {
+  RunOptions& opt = cl.opt;
+  if (opt.threads == 0 && model.deck_threads > 0) opt.threads = model.deck_threads;  // *KEYWORD NCPU=
+  if (!opt.restart.empty() || cl.check_only) return;
+  if (!model.basename.empty() && !cl.plot_given)
+    opt.plot = (std::filesystem::path(opt.plot).parent_path() / model.basename).string();
+  if (model.case_job.empty()) return;
+  const std::filesystem::path dir = std::filesystem::path(opt.printed).parent_path() / model.case_job;
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (!cl.printed_given) opt.printed = (dir / std::filesystem::path(opt.printed).filename()).string();
+  if (!cl.plot_given) opt.plot = (dir / std::filesystem::path(opt.plot).filename()).string();
+  if (!cl.dump_given) opt.dump = (dir / std::filesystem::path(opt.dump).filename()).string();
+  if (!cl.intfor_given && !opt.intfor.empty()) opt.intfor = (dir / std::filesystem::path(opt.intfor).filename()).string();
+}
+
+// The printed file (rank 0's; appended to on a restart), with the banner: false (error 3004
+// reported) when it cannot be opened.
+bool open_printed_file(RunOptions& opt, std::ofstream& printed) {
+  if (parallel::rank() != 0) opt.printed = "/dev/null";  // rank 0 writes the printed file
+  printed.open(opt.printed, opt.restart.empty() ? std::ios::out : std::ios::app);
+  if (!printed) {
+    Location loc;
+    loc.file = opt.printed;
+    Diagnostic d{3004, Severity::error, loc, std::strerror(errno)};
+    std::cerr << "impact3d: " << render(d) << "\n";
+    return false;
+  }
+  print_banner(printed);
+  return true;
+}
+
+// A deck with input errors: the counts and "Error termination" on the terminal and in the
+// printed file; exit code 4 when the deck could not be opened, else 2.
+int end_with_input_errors(const Diagnostics& diag, const std::string& deck, std::ofstream& printed) {
+  if (printed) diag.print(printed);
+  std::cout << "\n " << diag.error_count() << " input error(s), " << diag.warning_count() << " warning(s) in " << deck
+            << "\n";
+  std::cout << "\n E r r o r   t e r m i n a t i o n   (input errors)\n";
+  if (printed)
+    printed << "\n " << diag.error_count() << " input error(s)\n\n E r r o r   t e r m i n a t i o n   (input errors)\n";
+  // Also report 3003 (cannot open) as a file error rather than an input error.
+  if (diag.has(3003) || diag.has(3006)) return exit_code::file_error;
+  return exit_code::input_error;
+}
+
+// Under mpirun with more than one rank: what the distributed cycle does not carry yet is
+// refused (3007) with its exit code; -1 when the run may go on.
+int refuse_if_not_distributable(const RunOptions& opt, const Model& model, std::ofstream& printed) {
+  if (parallel::size() <= 1) return -1;
+  const std::string why = !opt.restart.empty() ? std::string("restarts (r=)")
+                                               : parallel::distributed_refusal(model, parallel::size());
+  if (why.empty()) return -1;
+  const Diagnostic d{3007, Severity::error, Location{}, why + " (" + std::to_string(parallel::size()) + " ranks)"};
+  std::cerr << "impact3d: " << render(d) << "\n";
+  printed << render(d) << "\n\n E r r o r   t e r m i n a t i o n   (not for a distributed run)\n";
+  std::cout << "\n E r r o r   t e r m i n a t i o n   (not for a distributed run)\n";
+  return exit_code::usage_error;
+}
+
+int run_main(int argc, char** argv) {
+  CommandLine cl;
+  if (const int rc = parse_command_line(argc, argv, cl); rc >= 0) return rc;
+  RunOptions& opt = cl.opt;
   print_banner(std::cout);
   Model model;
   Diagnostics diag;
   bool ok = false;
-  if (!opt.restart.empty()) {
-    // restart: the deck text travels inside the dump
-    DumpHeader h;
-    try {
-      h = read_restart_dump_header(opt.restart);
-    } catch (const std::exception& ex) {
-      Location loc;
-      loc.file = opt.restart;
-      Diagnostic d{4005, Severity::error, loc, ex.what()};
-      std::cerr << "impact3d: " << render(d) << "\n";
-      std::cout << "\n E r r o r   t e r m i n a t i o n   (restart dump is invalid)\n";
-      return exit_code::file_error;
-    }
-    if (words_given || x_given || reorder_given) {
-      Location loc;
-      loc.found = words_given ? "plotwords=" : x_given ? "x=" : "reorder=";
-      loc.show_found = true;
-      Diagnostic d{3005, Severity::error, loc,
-                   "plotwords=, x= and reorder= cannot change on a restart: the plot database and the dump's "
-                   "numbering continue"};
-      std::cerr << "impact3d: " << render(d) << "\n";
-      return exit_code::usage_error;
-    }
-    if (!printed_given) opt.printed = h.printed;
-    if (!plot_given) opt.plot = h.plot_root;
-    if (!dump_given && !h.dump_root.empty()) opt.dump = h.dump_root;
-    if (!intfor_given && !h.intfor_root.empty()) opt.intfor = h.intfor_root;
-    opt.plot_word_size = h.plot_word_size;
-    opt.member_size_factor = h.member_size_factor;
-    mesh_order = h.mesh_renumbered ? MeshOrderMode::on : MeshOrderMode::off;  // as the dump's run
-    opt.deck = h.deck_name;
-    opt.deck_text = h.deck_text;
-    DeckFile deck;
-    deck.load_from_string(h.deck_name, h.deck_text);
-    ok = read_deck(deck, model, diag, input_opt);  // fixed format or keyword, by content
-    if (ok) {
-      orient_interface_segments(model, diag);  // as read_and_check_deck does
-      ok = check_model(model, diag) && !diag.has(1225);
-    }
+  if (!opt.restart.empty()) {  // the deck text travels inside the dump
+    if (const int rc = read_restart_deck(cl, model, diag, ok); rc >= 0) return rc;
   } else {
-    ok = read_and_check_deck(opt.deck, model, diag, input_opt);
-    if (ok && !check_only) opt.deck_text_source = self_contained_deck_text_source(opt.deck, model);
+    ok = read_and_check_deck(opt.deck, model, diag, cl.input_opt);
+    if (ok && !cl.check_only) opt.deck_text_source = self_contained_deck_text_source(opt.deck, model);
   }
-
   // The printed output file gets the echo and all messages; the terminal gets the messages.
-  if (opt.threads == 0 && model.deck_threads > 0) opt.threads = model.deck_threads;  // *KEYWORD NCPU=
-  // DYNA3D free format "basename NAME": the plot database's root, unless g= is given
-  if (!model.basename.empty() && !plot_given && opt.restart.empty() && !check_only)
-    opt.plot = (std::filesystem::path(opt.plot).parent_path() / model.basename).string();
-  // *CASE: a case's outputs go to a folder named by its JOBID (or caseN), unless given
-  if (!model.case_job.empty() && opt.restart.empty() && !check_only) {
-    const std::filesystem::path dir = std::filesystem::path(opt.printed).parent_path() / model.case_job;
-    std::error_code ec;
-    std::filesystem::create_directories(dir, ec);
-    if (!printed_given) opt.printed = (dir / std::filesystem::path(opt.printed).filename()).string();
-    if (!plot_given) opt.plot = (dir / std::filesystem::path(opt.plot).filename()).string();
-    if (!dump_given) opt.dump = (dir / std::filesystem::path(opt.dump).filename()).string();
-    if (!intfor_given && !opt.intfor.empty()) opt.intfor = (dir / std::filesystem::path(opt.intfor).filename()).string();
-  }
+  apply_deck_output_names(cl, model);
   std::ofstream printed;
-  if (parallel::rank() != 0) opt.printed = "/dev/null";  // rank 0 writes the printed file
-  if (!check_only) {
-    printed.open(opt.printed, opt.restart.empty() ? std::ios::out : std::ios::app);
-    if (!printed) {
-      Location loc;
-      loc.file = opt.printed;
-      Diagnostic d{3004, Severity::error, loc, std::strerror(errno)};
-      std::cerr << "impact3d: " << render(d) << "\n";
-      return exit_code::file_error;
-    }
-    print_banner(printed);
-  }
+  if (!cl.check_only && !open_printed_file(opt, printed)) return exit_code::file_error;
   diag.print(std::cerr);
-  if (!ok) {
-    if (printed) diag.print(printed);
-    std::cout << "\n " << diag.error_count() << " input error(s), " << diag.warning_count()
-              << " warning(s) in " << opt.deck << "\n";
-    std::cout << "\n E r r o r   t e r m i n a t i o n   (input errors)\n";
-    if (printed)
-      printed << "\n " << diag.error_count() << " input error(s)\n\n E r r o r   t e r m i n a t i o n   (input errors)\n";
-    // Also report 3003 (cannot open) as a file error rather than an input error.
-    if (diag.has(3003) || diag.has(3006)) return exit_code::file_error;
-    return exit_code::input_error;
-  }
-  if (!write_keyword.empty() || !write_fixed.empty())
-    return write_converted_decks(model, write_keyword, write_fixed, std::cout);
-  if (check_only) {
+  if (!ok) return end_with_input_errors(diag, opt.deck, printed);
+  if (!cl.write_keyword.empty() || !cl.write_fixed.empty())
+    return write_converted_decks(model, cl.write_keyword, cl.write_fixed, std::cout);
+  if (cl.check_only) {
     write_model_summary(std::cout, model);
     std::cout << " input check: 0 errors, " << diag.warning_count() << " warning(s)\n";
     return exit_code::ok;
   }
-  if (parallel::size() > 1) {  // a distributed run: what it does not carry yet is refused
-    const std::string why = !opt.restart.empty() ? std::string("restarts (r=)")
-                                                 : parallel::distributed_refusal(model, parallel::size());
-    if (!why.empty()) {
-      const Diagnostic d{3007, Severity::error, Location{}, why + " (" + std::to_string(parallel::size()) + " ranks)"};
-      std::cerr << "impact3d: " << render(d) << "\n";
-      printed << render(d) << "\n\n E r r o r   t e r m i n a t i o n   (not for a distributed run)\n";
-      std::cout << "\n E r r o r   t e r m i n a t i o n   (not for a distributed run)\n";
-      return exit_code::usage_error;
-    }
-  }
+  if (const int rc = refuse_if_not_distributable(opt, model, printed); rc >= 0) return rc;
   if (opt.restart.empty()) write_model_summary(printed, model);
   if (diag.warning_count()) diag.print(printed);
   // the starter's last step: the mesh in memory order (init/mesh_order.h); the summary above
   // and every output show the deck's ids
-  {
-    const MeshOrderReport r = order_mesh_for_locality(model, mesh_order);
-    const std::string line = mesh_order_line(r) + (opt.restart.empty() ? "" : " (as the run that wrote the dump)");
-    std::cout << line << "\n";
-    printed << line << "\n";
-  }
+  const MeshOrderReport r = order_mesh_for_locality(model, cl.mesh_order);
+  const std::string line = mesh_order_line(r) + (opt.restart.empty() ? "" : " (as the run that wrote the dump)");
+  std::cout << line << "\n";
+  printed << line << "\n";
   return run_simulation(model, opt, printed);
 }
 
