@@ -419,9 +419,9 @@ KeywordSpec prescribed_motion(const char* name, const char* id, bool rigid) {
           ""};
 }
 
-std::vector<KeywordSpec> loads_bcs_specs() {
+// *LOAD_NODE, *LOAD_SEGMENT, *LOAD_BODY: the loads.
+void add_load_specs(std::vector<KeywordSpec>& t) {
   const KeywordFamily F = KeywordFamily::loads_bcs;
-  std::vector<KeywordSpec> t;
   t.push_back(load_node("LOAD_NODE_POINT", "NID", "node"));
   t.push_back(load_node("LOAD_NODE_SET", "NSID", "node set"));
   t.push_back(load_node("LOAD_RIGID_BODY", "PID", "part (a *MAT_RIGID part)"));
@@ -467,6 +467,11 @@ std::vector<KeywordSpec> loads_bcs_specs() {
                    {"PSID", 0, I, 0, false, {}, "part set the body loads act on"},
                }, "when given"}},
                ""});
+}
+
+// *DAMPING_GLOBAL and *BOUNDARY_SPC (with _BIRTH_DEATH).
+void add_damping_and_spc_specs(std::vector<KeywordSpec>& t) {
+  const KeywordFamily F = KeywordFamily::loads_bcs;
   t.push_back({{"DAMPING_GLOBAL"}, F, true,
                {{"card 1", 8, 10, per_field, {
                    {"LCID", 0, I, 0, false, {}, "curve of the damping constant (0: VALDMP)"},
@@ -502,6 +507,11 @@ std::vector<KeywordSpec> loads_bcs_specs() {
                   }, "after each card 1 (missing: error 1316)"}},
                  "pairs of cards; LS-DYNA's *BOUNDARY_SPC_..._ID_BIRTH_DEATH and _BIRTH_DEATH_ID both read"});
   }
+}
+
+// *RIGIDWALL_GEOMETRIC_CYLINDER and *CONSTRAINED_GLOBAL.
+void add_wall_and_constraint_specs(std::vector<KeywordSpec>& t) {
+  const KeywordFamily F = KeywordFamily::loads_bcs;
   t.push_back({{"RIGIDWALL_GEOMETRIC_CYLINDER", "RIGIDWALL_GEOMETRIC_CYLINDER_DISPLAY", "RIGIDWALL_GEOMETRIC_CYLINDER_MOTION",
                 "RIGIDWALL_GEOMETRIC_CYLINDER_MOTION_DISPLAY"}, F, false,
                {{"card 1", 5, 10, per_field, {
@@ -541,6 +551,11 @@ std::vector<KeywordSpec> loads_bcs_specs() {
                     "nodes within TOL of the plane are held (0: 1e-3 of the model's shortest element edge)"},
                }, "each card (one plane)"}},
                "every node (of any element, or of none) within TOL of the plane"});
+}
+
+// *INITIAL_TEMPERATURE and *INITIAL_VELOCITY: the initial conditions.
+void add_initial_condition_specs(std::vector<KeywordSpec>& t) {
+  const KeywordFamily F = KeywordFamily::loads_bcs;
   for (const auto& [name, id] : {std::pair{"INITIAL_TEMPERATURE_NODE", "NID"}, std::pair{"INITIAL_TEMPERATURE_SET", "NSID"}})
     t.push_back({{name}, F, false,
                  {{"", 3, 10, per_field, {
@@ -609,6 +624,15 @@ std::vector<KeywordSpec> loads_bcs_specs() {
   t.push_back(prescribed_motion("BOUNDARY_PRESCRIBED_MOTION_NODE", "NID", false));
   t.push_back(prescribed_motion("BOUNDARY_PRESCRIBED_MOTION_SET", "NSID", false));
   t.push_back(prescribed_motion("BOUNDARY_PRESCRIBED_MOTION_RIGID", "PID", true));
+}
+
+// The loads and boundary conditions family: loads, damping and constraints, walls, initial conditions.
+std::vector<KeywordSpec> loads_bcs_specs() {
+  std::vector<KeywordSpec> t;
+  add_load_specs(t);
+  add_damping_and_spc_specs(t);
+  add_wall_and_constraint_specs(t);
+  add_initial_condition_specs(t);
   return t;
 }
 
