@@ -289,63 +289,90 @@ void calc_shell_local_forces_block(ShellBlock& b) {
   }
 }
 
+// The hourglass resultants' update over the step, one mode j (stiffness form): Q_j = q0 + k q dt,
+// and its energy.
+inline double update_hourglass_resultant(double k, double q, double dt, double& Q, double& de_hg) {
+  const double q0 = Q;
+  const double q1 = q0 + k * q * dt;
+  Q = q1;
+  de_hg += 0.5 * (q0 + q1) * q * dt;
+  return q1;
+}
+
 void calc_shell_hourglass_forces_block(const ShellGroupConstants& g, bool stiffness, double dt, ShellBlock& b) {
   const ShellFrameLanes& fr = b.fr;
   const double qm = g.hourglass_coef;
   const double qE = qm * g.E, qsG = qm * g.shrf * g.G, qrc = qm * g.rho * g.c_plate;
+  alignas(64) Lanes gam[4], bb, q[5], Q[5];
   IMPACT3D_FOR_LANES {
-    const double A = fr.area[l], h = b.h[l];
     double hx = 0, hy = 0;
     for (int i = 0; i < 4; ++i) {
       hx += kHgVector[i] * fr.xl[i][l];
       hy += kHgVector[i] * fr.yl[i][l];
     }
-    double gam[4];
-    double bb = 0;
+    double s = 0;
     for (int i = 0; i < 4; ++i) {
-      gam[i] = kHgVector[i] - hx * fr.b1[i][l] - hy * fr.b2[i][l];
-      bb += fr.b1[i][l] * fr.b1[i][l] + fr.b2[i][l] * fr.b2[i][l];
+      gam[i][l] = kHgVector[i] - hx * fr.b1[i][l] - hy * fr.b2[i][l];
+      s += fr.b1[i][l] * fr.b1[i][l] + fr.b2[i][l] * fr.b2[i][l];
     }
-    double q[5] = {0, 0, 0, 0, 0};
+    bb[l] = s;
+  }
+  // hourglass rates in the frame at x^n: membrane x, y, transverse, rotations x, y
+  IMPACT3D_FOR_LANES {
+    double q0 = 0, q1 = 0, q2 = 0, q3 = 0, q4 = 0;
     for (int i = 0; i < 4; ++i) {
       const double vx = b.v[i][0][l], vy = b.v[i][1][l], vz = b.v[i][2][l];
       const double wx = b.w[i][0][l], wy = b.w[i][1][l], wz = b.w[i][2][l];
-      q[0] += gam[i] * (fr.e[0][0][l] * vx + fr.e[0][1][l] * vy + fr.e[0][2][l] * vz);
-      q[1] += gam[i] * (fr.e[1][0][l] * vx + fr.e[1][1][l] * vy + fr.e[1][2][l] * vz);
-      q[2] += gam[i] * (fr.e[2][0][l] * vx + fr.e[2][1][l] * vy + fr.e[2][2][l] * vz);
-      q[3] += gam[i] * (fr.e[0][0][l] * wx + fr.e[0][1][l] * wy + fr.e[0][2][l] * wz);
-      q[4] += gam[i] * (fr.e[1][0][l] * wx + fr.e[1][1][l] * wy + fr.e[1][2][l] * wz);
+      const double gi = gam[i][l];
+      q0 += gi * (fr.e[0][0][l] * vx + fr.e[0][1][l] * vy + fr.e[0][2][l] * vz);
+      q1 += gi * (fr.e[1][0][l] * vx + fr.e[1][1][l] * vy + fr.e[1][2][l] * vz);
+      q2 += gi * (fr.e[2][0][l] * vx + fr.e[2][1][l] * vy + fr.e[2][2][l] * vz);
+      q3 += gi * (fr.e[0][0][l] * wx + fr.e[0][1][l] * wy + fr.e[0][2][l] * wz);
+      q4 += gi * (fr.e[1][0][l] * wx + fr.e[1][1][l] * wy + fr.e[1][2][l] * wz);
     }
-    double Q[5];
-    double de_hg = 0;
-    if (stiffness) {
-      const double km = qE * h * A * bb / 8.0;
-      const double kw = qsG * h * h * h * bb / 12.0;
-      const double kb = qE * h * h * h * A * bb / 192.0;
-      const double k[5] = {km, km, kw, kb, kb};
-      for (int j = 0; j < 5; ++j) {
-        const double q0 = b.hgq[j][l];
-        const double q1 = q0 + k[j] * q[j] * dt;
-        b.hgq[j][l] = q1;
-        Q[j] = q1;
-        de_hg += 0.5 * (q0 + q1) * q[j] * dt;
-      }
-    } else {
-      const double cm = qrc * h * std::sqrt(A) / 4.0;
+    q[0][l] = q0, q[1][l] = q1, q[2][l] = q2, q[3][l] = q3, q[4][l] = q4;
+  }
+  if (stiffness) {
+    IMPACT3D_FOR_LANES {
+      const double A = fr.area[l], h = b.h[l];
+      const double km = qE * h * A * bb[l] / 8.0;
+      const double kw = qsG * h * h * h * bb[l] / 12.0;
+      const double kb = qE * h * h * h * A * bb[l] / 192.0;
+      double de_hg = 0;
+      Q[0][l] = update_hourglass_resultant(km, q[0][l], dt, b.hgq[0][l], de_hg);
+      Q[1][l] = update_hourglass_resultant(km, q[1][l], dt, b.hgq[1][l], de_hg);
+      Q[2][l] = update_hourglass_resultant(kw, q[2][l], dt, b.hgq[2][l], de_hg);
+      Q[3][l] = update_hourglass_resultant(kb, q[3][l], dt, b.hgq[3][l], de_hg);
+      Q[4][l] = update_hourglass_resultant(kb, q[4][l], dt, b.hgq[4][l], de_hg);
+      b.de_hg[l] = de_hg;
+    }
+  } else {
+    IMPACT3D_FOR_LANES {
+      const double h = b.h[l];
+      const double cm = qrc * h * std::sqrt(fr.area[l]) / 4.0;
       const double cb = cm * h * h / 12.0;
-      const double c[5] = {cm, cm, cm, cb, cb};
-      for (int j = 0; j < 5; ++j) {
-        Q[j] = c[j] * q[j];
-        de_hg += Q[j] * q[j] * dt;
-      }
+      double de_hg = 0;
+      Q[0][l] = cm * q[0][l];
+      de_hg += Q[0][l] * q[0][l] * dt;
+      Q[1][l] = cm * q[1][l];
+      de_hg += Q[1][l] * q[1][l] * dt;
+      Q[2][l] = cm * q[2][l];
+      de_hg += Q[2][l] * q[2][l] * dt;
+      Q[3][l] = cb * q[3][l];
+      de_hg += Q[3][l] * q[3][l] * dt;
+      Q[4][l] = cb * q[4][l];
+      de_hg += Q[4][l] * q[4][l] * dt;
+      b.de_hg[l] = de_hg;
     }
-    b.de_hg[l] = de_hg;
-    for (int i = 0; i < 4; ++i) {
-      b.fl[i][0][l] += gam[i] * Q[0];
-      b.fl[i][1][l] += gam[i] * Q[1];
-      b.fl[i][2][l] += gam[i] * Q[2];
-      b.ml[i][0][l] += gam[i] * Q[3];
-      b.ml[i][1][l] += gam[i] * Q[4];
+  }
+  for (int i = 0; i < 4; ++i) {
+    IMPACT3D_FOR_LANES {
+      const double gi = gam[i][l];
+      b.fl[i][0][l] += gi * Q[0][l];
+      b.fl[i][1][l] += gi * Q[1][l];
+      b.fl[i][2][l] += gi * Q[2][l];
+      b.ml[i][0][l] += gi * Q[3][l];
+      b.ml[i][1][l] += gi * Q[4][l];
     }
   }
 }

@@ -91,104 +91,152 @@ void process_shell(State& s, const ShellGroup& g, int k, double dt) {
   if (mc.shell_tdel > 0 && dt > 0 && io.dt_e < mc.shell_tdel) sh.failed[std::size_t(k)] = 2;
 }
 
+// Raw views of the arrays a block reads and writes, and what the group carries, taken once per
+// group pass (so that the compiler need not reload the vectors' data pointers after every store
+// into the block).
+struct ShellBlockArrays {
+  const double *x, *y, *z, *vx, *vy, *vz, *wx, *wy, *wz, *thick;
+  const std::array<int, 4>* conn;
+  const int *node_rot, *ip_start;
+  double *sig, *back, *eps_p, *hgq, *drill;
+  std::uint8_t* yielded;
+  double *cfx, *cfy, *cfz, *cmx, *cmy, *cmz, *area, *dt_e, *de_ie, *de_hg;
+  std::uint8_t *bad, *failed;
+  std::size_t corner_base;
+  int nip;
+  bool plastic, back_stress, hourglass_state, drilling;  // which point and shell state the group has
+  double fail_strain, shell_tdel;
+};
+
+ShellBlockArrays shell_block_arrays(State& s, const ShellGroup& g, const ShellBlockMaterial& mat) {
+  ShellState& sh = s.shells;
+  ShellBlockArrays a;
+  a.x = s.x.data(), a.y = s.y.data(), a.z = s.z.data();
+  a.vx = s.vx.data(), a.vy = s.vy.data(), a.vz = s.vz.data();
+  a.wx = sh.wx.data(), a.wy = sh.wy.data(), a.wz = sh.wz.data();
+  a.thick = sh.thick.data();
+  a.conn = sh.conn.data();
+  a.node_rot = sh.node_rot.data(), a.ip_start = sh.ip_start.data();
+  a.sig = sh.sig.data(), a.back = sh.back.data(), a.eps_p = sh.eps_p.data(), a.hgq = sh.hgq.data();
+  a.drill = sh.drill.data(), a.yielded = sh.yielded.data();
+  a.cfx = s.cfx.data(), a.cfy = s.cfy.data(), a.cfz = s.cfz.data();
+  a.cmx = sh.cmx.data(), a.cmy = sh.cmy.data(), a.cmz = sh.cmz.data();
+  a.area = sh.area.data(), a.dt_e = sh.dt_e.data(), a.de_ie = sh.de_ie.data(), a.de_hg = sh.de_hg.data();
+  a.bad = sh.bad.data(), a.failed = sh.failed.data();
+  a.corner_base = sh.corner_base;
+  a.nip = g.constants.nip;
+  a.plastic = shell_kernel_is_plastic(g.kernel);
+  a.back_stress = mat.has_back;
+  a.hourglass_state = mat.has_hgq && g.constants.hourglass_type >= 4 && g.constants.hourglass_coef > 0;
+  a.drilling = g.constants.drill_coef > 0;
+  a.fail_strain = s.mats[std::size_t(g.material)].fail_strain;
+  a.shell_tdel = s.mats[std::size_t(g.material)].shell_tdel;
+  return a;
+}
+
 // A block of kLanes shells ord[0..kLanes) into b: nodal data (as gather_shell), thickness, the
-// points' state, the hourglass resultants and drilling moments.
-void gather_shell_block(const State& s, const ShellGroup& g, const ShellBlockMaterial& mat, const int* ord,
-                        ShellBlock& b) {
-  const ShellState& sh = s.shells;
-  const bool plastic = shell_kernel_is_plastic(g.kernel);
+// points' state, the hourglass resultants and drilling moments (where the kernel reads them).
+void gather_shell_block(const ShellBlockArrays& a, const int* ord, ShellBlock& b) {
   for (int l = 0; l < kLanes; ++l) {
     const std::size_t k = std::size_t(ord[l]);
     for (int j = 0; j < 4; ++j) {
-      const std::size_t n = std::size_t(sh.conn[k][std::size_t(j)]);
-      b.x[j][0][l] = s.x[n];
-      b.x[j][1][l] = s.y[n];
-      b.x[j][2][l] = s.z[n];
-      b.v[j][0][l] = s.vx[n];
-      b.v[j][1][l] = s.vy[n];
-      b.v[j][2][l] = s.vz[n];
-      const int r = sh.node_rot[n];
-      b.w[j][0][l] = r >= 0 ? sh.wx[std::size_t(r)] : 0.0;
-      b.w[j][1][l] = r >= 0 ? sh.wy[std::size_t(r)] : 0.0;
-      b.w[j][2][l] = r >= 0 ? sh.wz[std::size_t(r)] : 0.0;
-      b.drill[j][l] = sh.drill[4 * k + std::size_t(j)];
+      const std::size_t n = std::size_t(a.conn[k][std::size_t(j)]);
+      b.x[j][0][l] = a.x[n];
+      b.x[j][1][l] = a.y[n];
+      b.x[j][2][l] = a.z[n];
+      b.v[j][0][l] = a.vx[n];
+      b.v[j][1][l] = a.vy[n];
+      b.v[j][2][l] = a.vz[n];
+      const int r = a.node_rot[n];
+      b.w[j][0][l] = r >= 0 ? a.wx[r] : 0.0;
+      b.w[j][1][l] = r >= 0 ? a.wy[r] : 0.0;
+      b.w[j][2][l] = r >= 0 ? a.wz[r] : 0.0;
     }
-    b.h[l] = sh.thick[k];
-    const std::size_t ip = std::size_t(sh.ip_start[k]);
-    for (int p = 0; p < g.constants.nip; ++p) {
-      const std::size_t P = ip + std::size_t(p);
-      for (int c = 0; c < 5; ++c) b.sig[p][c][l] = sh.sig[5 * P + std::size_t(c)];
-      if (mat.has_back)
-        for (int c = 0; c < 6; ++c) b.back[p][c][l] = sh.back[6 * P + std::size_t(c)];
-      if (plastic) {
-        b.eps_p[p][l] = sh.eps_p[P];
-        b.yielded[p][l] = sh.yielded[P];
+    if (a.drilling)
+      for (int j = 0; j < 4; ++j) b.drill[j][l] = a.drill[4 * k + std::size_t(j)];
+    b.h[l] = a.thick[k];
+    const double* sig = a.sig + 5 * std::size_t(a.ip_start[k]);
+    for (int p = 0; p < a.nip; ++p)
+      for (int c = 0; c < 5; ++c) b.sig[p][c][l] = sig[5 * p + c];
+    if (a.back_stress) {
+      const double* back = a.back + 6 * std::size_t(a.ip_start[k]);
+      for (int p = 0; p < a.nip; ++p)
+        for (int c = 0; c < 6; ++c) b.back[p][c][l] = back[6 * p + c];
+    }
+    if (a.plastic) {
+      const std::size_t ip = std::size_t(a.ip_start[k]);
+      for (int p = 0; p < a.nip; ++p) {
+        b.eps_p[p][l] = a.eps_p[ip + std::size_t(p)];
+        b.yielded[p][l] = a.yielded[ip + std::size_t(p)];
       }
     }
-    if (mat.has_hgq)
-      for (int j = 0; j < 5; ++j) b.hgq[j][l] = sh.hgq[5 * k + std::size_t(j)];
+    if (a.hourglass_state)
+      for (int j = 0; j < 5; ++j) b.hgq[j][l] = a.hgq[5 * k + std::size_t(j)];
   }
 }
 
-// The block's results back, shell by shell (as process_shell stores them), and the failure check.
-void store_shell_block(State& s, const ShellGroup& g, const ShellBlockMaterial& mat, const int* ord, double dt,
-                       const ShellBlock& b) {
-  ShellState& sh = s.shells;
-  const bool plastic = shell_kernel_is_plastic(g.kernel);
-  const double fs = s.mats[std::size_t(g.material)].fail_strain;
-  const double tdel = s.mats[std::size_t(g.material)].shell_tdel;
+// The block's results back, shell by shell (as process_shell stores them), and the failure and
+// TDEL checks.
+void store_shell_block(const ShellBlockArrays& a, const int* ord, double dt, const ShellBlock& b) {
   for (int l = 0; l < kLanes; ++l) {
     const std::size_t k = std::size_t(ord[l]);
-    sh.bad[k] = 0;
-    sh.area[k] = b.area[l];
-    sh.dt_e[k] = b.dt_e[l];
-    sh.de_ie[k] = b.de_ie[l];
-    sh.de_hg[k] = b.de_hg[l];
+    a.bad[k] = 0;
+    a.area[k] = b.area[l];
+    a.dt_e[k] = b.dt_e[l];
+    a.de_ie[k] = b.de_ie[l];
+    a.de_hg[k] = b.de_hg[l];
     for (int j = 0; j < 4; ++j) {
-      const std::size_t c = sh.corner_base + 4 * k + std::size_t(j);
-      s.cfx[c] = b.f[j][0][l];
-      s.cfy[c] = b.f[j][1][l];
-      s.cfz[c] = b.f[j][2][l];
+      const std::size_t c = a.corner_base + 4 * k + std::size_t(j);
+      a.cfx[c] = b.f[j][0][l];
+      a.cfy[c] = b.f[j][1][l];
+      a.cfz[c] = b.f[j][2][l];
       const std::size_t q = 4 * k + std::size_t(j);
-      sh.cmx[q] = b.m[j][0][l];
-      sh.cmy[q] = b.m[j][1][l];
-      sh.cmz[q] = b.m[j][2][l];
-      sh.drill[q] = b.drill[j][l];
+      a.cmx[q] = b.m[j][0][l];
+      a.cmy[q] = b.m[j][1][l];
+      a.cmz[q] = b.m[j][2][l];
     }
-    const std::size_t ip = std::size_t(sh.ip_start[k]);
-    bool all_failed = plastic && fs > 0 && dt > 0;
-    for (int p = 0; p < g.constants.nip; ++p) {
-      const std::size_t P = ip + std::size_t(p);
-      for (int c = 0; c < 5; ++c) sh.sig[5 * P + std::size_t(c)] = b.sig[p][c][l];
-      if (mat.has_back)
-        for (int c = 0; c < 6; ++c) sh.back[6 * P + std::size_t(c)] = b.back[p][c][l];
-      if (plastic) {
-        sh.eps_p[P] = b.eps_p[p][l];
-        sh.yielded[P] = b.yielded[p][l] != 0.0;
-        all_failed = all_failed && sh.eps_p[P] >= fs;
+    if (a.drilling)
+      for (int j = 0; j < 4; ++j) a.drill[4 * k + std::size_t(j)] = b.drill[j][l];
+    double* sig = a.sig + 5 * std::size_t(a.ip_start[k]);
+    for (int p = 0; p < a.nip; ++p)
+      for (int c = 0; c < 5; ++c) sig[5 * p + c] = b.sig[p][c][l];
+    if (a.back_stress) {
+      double* back = a.back + 6 * std::size_t(a.ip_start[k]);
+      for (int p = 0; p < a.nip; ++p)
+        for (int c = 0; c < 6; ++c) back[6 * p + c] = b.back[p][c][l];
+    }
+    if (a.plastic) {
+      const std::size_t ip = std::size_t(a.ip_start[k]);
+      bool all_failed = a.fail_strain > 0 && dt > 0;
+      for (int p = 0; p < a.nip; ++p) {
+        a.eps_p[ip + std::size_t(p)] = b.eps_p[p][l];
+        a.yielded[ip + std::size_t(p)] = b.yielded[p][l] != 0.0;
+        all_failed = all_failed && b.eps_p[p][l] >= a.fail_strain;
       }
+      // failure as process_shell: this pass's forces still act, from the next pass on none
+      if (all_failed) a.failed[k] = 2;
     }
-    if (mat.has_hgq)
-      for (int j = 0; j < 5; ++j) sh.hgq[5 * k + std::size_t(j)] = b.hgq[j][l];
-    // failure as process_shell: this pass's forces still act, from the next pass on none
-    if (all_failed || (tdel > 0 && dt > 0 && b.dt_e[l] < tdel)) sh.failed[k] = 2;
+    if (a.hourglass_state)
+      for (int j = 0; j < 5; ++j) a.hgq[5 * k + std::size_t(j)] = b.hgq[j][l];
+    // type 24 TDEL as process_shell: deleted when the shell's step falls below it
+    if (a.shell_tdel > 0 && dt > 0 && b.dt_e[l] < a.shell_tdel) a.failed[k] = 2;
   }
 }
 
 // kLanes shells ord[0..kLanes) through the block kernel; a block with a deleted shell or a bad
 // one (non-positive area: the block's results are dropped before they are stored) goes through
 // process_shell shell by shell instead (the same bits; the scalar kernel's handling of both).
-void process_shell_block(State& s, const ShellGroup& g, const ShellBlockMaterial& mat, const int* ord, double dt,
-                         ShellBlock& b) {
+void process_shell_block(State& s, const ShellGroup& g, const ShellBlockMaterial& mat, const ShellBlockArrays& a,
+                         const int* ord, double dt, ShellBlock& b) {
   bool scalar = false;
-  for (int l = 0; l < kLanes; ++l) scalar = scalar || s.shells.failed[std::size_t(ord[l])] != 0;
+  for (int l = 0; l < kLanes; ++l) scalar = scalar || a.failed[ord[l]] != 0;
   if (!scalar) {
-    gather_shell_block(s, g, mat, ord, b);
+    gather_shell_block(a, ord, b);
     calc_shell_bt_forces_block(g.constants, mat, dt, b);
     for (int l = 0; l < kLanes; ++l) scalar = scalar || b.bad[l] != 0.0;
   }
   if (!scalar) {
-    store_shell_block(s, g, mat, ord, dt, b);
+    store_shell_block(a, ord, dt, b);
     return;
   }
   for (int l = 0; l < kLanes; ++l) process_shell(s, g, ord[l], dt);
@@ -199,15 +247,15 @@ void process_shell_block(State& s, const ShellGroup& g, const ShellBlockMaterial
 void process_shells_of_group(State& s, const ShellGroup& g, const int* ord, int n, double dt) {
   int scalar_from = 0;
   if (g.blocks) {
-    const ShellState& sh = s.shells;
     const ShellBlockMaterial mat{&s.mats[std::size_t(g.material)], shell_material_kind(g.kernel), g.update_block,
-                                 shell_kernel_has_back(g.kernel), !sh.hgq.empty()};
+                                 shell_kernel_has_back(g.kernel), !s.shells.hgq.empty()};
+    const ShellBlockArrays a = shell_block_arrays(s, g, mat);
     const int nb = n / kLanes;
 #pragma omp parallel if (n >= kMinShellsForThreads)
     {
       ShellBlock b{};  // one per thread: about 40 KB on its stack, reused block after block
 #pragma omp for schedule(static)
-      for (int q = 0; q < nb; ++q) process_shell_block(s, g, mat, ord + q * kLanes, dt, b);
+      for (int q = 0; q < nb; ++q) process_shell_block(s, g, mat, a, ord + q * kLanes, dt, b);
     }
     scalar_from = nb * kLanes;
   }
