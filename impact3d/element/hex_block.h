@@ -14,32 +14,21 @@
 #include <cmath>
 
 #include "impact3d/element/cbrt_positive.h"
+#include "impact3d/material/material_point_block.h"
 
 namespace impact3d {
 
-// Elements per block.  Fixed at 8 for every instruction set: the slot layout of the element
-// groups (and with it every sum) does not depend on the machine.
-constexpr int kLanes = 8;
-using Lanes = double[kLanes];
-// Per-element history values a material may carry beyond stress, back stress and plastic
-// strain (material_types.h); a group gathers only as many as its material has (at most:
-// Mooney-Rivlin's six, the left Cauchy-Green tensor; Johnson-Cook's three and a two-value
-// equation of state).
-constexpr int kMaxHistory = 6;
-
-#define IMPACT3D_FOR_LANES _Pragma("omp simd") for (int l = 0; l < kLanes; ++l)
-
-// A block's working set: gathered nodal data and everything derived from it.  About 20 KB,
-// one per thread, reused block after block (stays in L1).
-struct alignas(64) HexBlock {
+// A block's working set: gathered nodal data and everything derived from it, around the material
+// points (MaterialPointBlock: strain rate d, spin w, sig, back, eps_p, yielded, hist; the material
+// kernels take that part).  About 20 KB, one per thread, reused block after block (stays in L1).
+struct alignas(64) HexBlock : MaterialPointBlock {
   Lanes x[8], y[8], z[8], vx[8], vy[8], vz[8];  // x^n, v^{n-1/2}
   Lanes bx[8], by[8], bz[8];                    // b = dV/dx / V at the midpoint x^{n-1/2}
   Lanes dvdx[8], dvdy[8], dvdz[8];              // dV/dx at x^n
   Lanes fx[8], fy[8], fz[8];                    // corner forces
   Lanes v, vm, amax, rho, v0;                   // volume at x^n and midpoint, largest face, density, initial volume
-  Lanes d[6], w[3], trd;                        // strain rate, spin, trace of d
-  Lanes sig[6], old[6], back[6], eps_p, yielded;  // stress (old: at the start of the step)
-  Lanes hist[kMaxHistory];                      // the material's history values
+  Lanes trd;                                    // trace of d
+  Lanes old[6];                                 // stress at the start of the step
   Lanes hgs[12];                                // hourglass resultants (the previous pass's, then this one's)
   Lanes q, q_old;                               // bulk viscosity
   Lanes de_ie, de_hg, de_bv, dt;                // energy increments, element step

@@ -146,7 +146,7 @@ struct PlaneStressTrial {
 // Returns sigma_zz in szz.
 void run_plane_stress_trial_block(const ShellBlockMaterial& mat, const Lanes d[5], const Lanes& dzz, double dt,
                                   ShellBlock& b, int p, Lanes& szz) {
-  HexBlock& k = b.point;
+  MaterialPointBlock& k = b.point;
   IMPACT3D_FOR_LANES {
     k.d[0][l] = d[0][l], k.d[1][l] = d[1][l], k.d[2][l] = dzz[l];
     k.d[3][l] = d[2][l], k.d[4][l] = d[3][l], k.d[5][l] = d[4][l];
@@ -162,7 +162,7 @@ void run_plane_stress_trial_block(const ShellBlockMaterial& mat, const Lanes d[5
 }
 
 // Keeps b.point's trial in the lanes where take != 0.
-void keep_plane_stress_trial_block(const HexBlock& k, const Lanes& take, bool has_back, PlaneStressTrial& t) {
+void keep_plane_stress_trial_block(const MaterialPointBlock& k, const Lanes& take, bool has_back, PlaneStressTrial& t) {
   for (int c = 0; c < 6; ++c) IMPACT3D_FOR_LANES t.sig[c][l] = take[l] != 0.0 ? k.sig[c][l] : t.sig[c][l];
   if (has_back)
     for (int c = 0; c < 6; ++c) IMPACT3D_FOR_LANES t.back[c][l] = take[l] != 0.0 ? k.back[c][l] : t.back[c][l];
@@ -179,7 +179,7 @@ void keep_plane_stress_trial_block(const HexBlock& k, const Lanes& take, bool ha
 void update_plane_stress_plastic_block(const ShellBlockMaterial& mat, const Lanes d[5], double dt, ShellBlock& b,
                                        int p) {
   const MaterialConstants& m = *mat.mc;
-  HexBlock& k = b.point;
+  MaterialPointBlock& k = b.point;
   alignas(64) Lanes z0, f0, z1, f1, z2, tol, active;
   alignas(64) PlaneStressTrial t;
   const double guess = -m.nu / (1.0 - m.nu);

@@ -7,21 +7,21 @@
 // (-ffp-contract=off, set in CMakeLists.txt).
 //
 // Materials: elastic (type 1) in lanes; the plastic ones through the material's solid block
-// kernel (MaterialType::solid.update_block on a HexBlock of 3-D points): LS-DYNA's iterative
-// plane stress (plane_stress.h: secant iterations on the thickness strain rate until
-// sigma_zz = 0) runs lane by lane in step, each lane iterating as long as its scalar twin would
-// and keeping its own last trial.  The element pass (solve/shell_processing.cpp) gathers a
+// kernel (MaterialType::solid.update_block on a MaterialPointBlock of 3-D points, the code the
+// solids run): LS-DYNA's iterative plane stress (plane_stress.h: secant iterations on the
+// thickness strain rate until sigma_zz = 0) runs lane by lane in step, each lane iterating as
+// long as its scalar twin would and keeping its own last trial.  The element pass (solve/shell_processing.cpp) gathers a
 // block, calls calc_shell_bt_forces_block, and stores the results unless a lane is bad (a
 // non-positive area): such a block, a block with a deleted shell, and a group's last shells
 // short of a block go through the scalar kernel shell by shell (the same bits either way).
 
-#include "impact3d/element/hex_block.h"
 #include "impact3d/element/shell_bt.h"
+#include "impact3d/material/material_point_block.h"
 
 namespace impact3d {
 
 // The material's 3-D block update (MaterialType::solid.update_block).
-using MaterialBlockUpdate = void (*)(const MaterialConstants&, HexBlock&, double dt);
+using MaterialBlockUpdate = void (*)(const MaterialConstants&, MaterialPointBlock&, double dt);
 
 // The frame of ShellFrame in lanes, and a lane's failure (1: zero or negative area).
 struct alignas(64) ShellFrameLanes {
@@ -54,7 +54,7 @@ struct alignas(64) ShellBlock {
   Lanes dxx, dyy, gxy, kxx, kyy, kxy, gxz, gyz;      // mid-surface rates (ShellRates)
   Lanes Nxx, Nyy, Nxy, Mxx, Myy, Mxy, Qxz, Qyz, work;  // resultants (ShellResultants)
   Lanes fl[4][3], ml[4][2], mz[4];
-  HexBlock point;            // the plastic materials' 3-D trial points
+  MaterialPointBlock point;  // the plastic materials' 3-D trial points
 };
 
 // What a group's block kernel needs besides ShellGroupConstants: the material, its kind (elastic,

@@ -1,10 +1,11 @@
 #pragma once
-// The constitutive updates of material.h in block form: one SIMD lane per element of a
-// HexBlock, each lane doing the scalar function's operations in the same order (same bits).
+// The constitutive updates of material.h in block form: one SIMD lane per material point of a
+// MaterialPointBlock (a solid of a HexBlock, a shell's trial point), each lane doing the scalar
+// function's operations in the same order (same bits).
 
 #include <cmath>
 
-#include "impact3d/element/hex_block.h"
+#include "impact3d/material/material_point_block.h"
 #include "impact3d/material/material.h"
 
 namespace impact3d {
@@ -52,7 +53,7 @@ inline void update_stress_elastic_block(const MaterialConstants& m, const Lanes*
 // hardening, or no hardening): it is then neither read nor written (s - p - 0 = s - p).
 // yielded is set to 1 in the lanes that yield.
 template <bool WithBack>
-inline void update_stress_elastic_plastic_block(const MaterialConstants& m, HexBlock& k, double dt) {
+inline void update_stress_elastic_plastic_block(const MaterialConstants& m, MaterialPointBlock& k, double dt) {
   update_stress_elastic_block(m, k.d, dt, k.sig);  // elastic trial
   alignas(64) Lanes rate_factor;
   const bool rate = m.rate_c > 0.0;

@@ -16,7 +16,7 @@
 #include <string_view>
 #include <vector>
 
-#include "impact3d/element/hex_block.h"
+#include "impact3d/material/material_point_block.h"
 #include "impact3d/material/material.h"
 #include "impact3d/model/model.h"
 
@@ -29,7 +29,7 @@ enum class HexKernel : uint8_t {
 };
 
 // The per-element state a solid material works on at one point (the scalar kernels' argument;
-// the block kernels have the same fields as lanes of HexBlock).
+// the block kernels have the same fields as lanes of a MaterialPointBlock).
 struct SolidPointState {
   double sig[6] = {0, 0, 0, 0, 0, 0};
   double back[6] = {0, 0, 0, 0, 0, 0};
@@ -43,7 +43,7 @@ struct SolidPointState {
 // each lane's stress, plastic strain, yield flag and first nh history values copied to a
 // SolidPointState, update_point(m, d, dt, state), copied back: the scalar kernel's bits.
 template <class PointUpdate>
-inline void update_block_lane_by_lane(const MaterialConstants& m, HexBlock& k, double dt, int nh, PointUpdate update_point) {
+inline void update_block_lane_by_lane(const MaterialConstants& m, MaterialPointBlock& k, double dt, int nh, PointUpdate update_point) {
   for (int l = 0; l < kLanes; ++l) {
     SolidPointState st;
     double d[6];
@@ -66,7 +66,7 @@ inline void update_block_lane_by_lane(const MaterialConstants& m, HexBlock& k, d
 struct SolidKernel {
   HexKernel kind = HexKernel::rigid;
   void (*update_point)(const MaterialConstants&, const double d[6], double dt, SolidPointState&) = nullptr;
-  void (*update_block)(const MaterialConstants&, HexBlock&, double dt) = nullptr;
+  void (*update_block)(const MaterialConstants&, MaterialPointBlock&, double dt) = nullptr;
   bool plastic_strain = false;  // reads and writes eps_p / yielded
 };
 

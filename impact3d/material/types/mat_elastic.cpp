@@ -11,7 +11,7 @@ void update_point(const MaterialConstants& m, const double d[6], double dt, Soli
   update_stress_elastic(m, d, dt, s.sig);
 }
 
-void update_block(const MaterialConstants& m, HexBlock& k, double dt) { update_stress_elastic_block(m, k.d, dt, k.sig); }
+void update_block(const MaterialConstants& m, MaterialPointBlock& k, double dt) { update_stress_elastic_block(m, k.d, dt, k.sig); }
 
 }  // namespace
 

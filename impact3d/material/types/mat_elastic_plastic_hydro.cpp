@@ -153,7 +153,7 @@ void update_point(const MaterialConstants& m, const double d[6], double dt, Soli
   s.yielded = 1.0;
 }
 
-void update_block(const MaterialConstants& m, HexBlock& k, double dt) {
+void update_block(const MaterialConstants& m, MaterialPointBlock& k, double dt) {
   update_stress_elastic_block(m, k.d, dt, k.sig);  // elastic trial
   alignas(64) Lanes q, de, found;
   IMPACT3D_FOR_LANES {

@@ -188,7 +188,7 @@ void update_point(const MaterialConstants& m, const double d[6], double dt, Soli
   }
 }
 
-void update_block(const MaterialConstants& m, HexBlock& k, double dt) {
+void update_block(const MaterialConstants& m, MaterialPointBlock& k, double dt) {
   update_block_lane_by_lane(m, k, dt, int(m.k[kHistory]), update_point);
 }
 

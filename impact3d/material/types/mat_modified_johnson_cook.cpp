@@ -94,7 +94,7 @@ void update_point(const MaterialConstants& m, const double d[6], double dt, Soli
   if (st.hist[hTemperature] >= m.k[kTc] || max_shear_stress(sig) >= m.k[kTauc]) st.hist[hEroded] = 1.0;
 }
 
-void update_block(const MaterialConstants& m, HexBlock& k, double dt) {
+void update_block(const MaterialConstants& m, MaterialPointBlock& k, double dt) {
   update_block_lane_by_lane(m, k, dt, 2, update_point);
 }
 

@@ -38,7 +38,7 @@ void update_point(const MaterialConstants& m, const double d[6], double, SolidPo
   sig[5] = g2 * d[5];
 }
 
-void update_block(const MaterialConstants& m, HexBlock& k, double) {
+void update_block(const MaterialConstants& m, MaterialPointBlock& k, double) {
   const double g2 = 2.0 * m.k[kMu];
   IMPACT3D_FOR_LANES {
     const double p = (k.sig[0][l] + k.sig[1][l] + k.sig[2][l]) * (1.0 / 3.0);

@@ -276,7 +276,7 @@ void update_point(const MaterialConstants& m, const double d[6], double dt, Soli
   s.yielded = 1.0;
 }
 
-void update_block(const MaterialConstants& m, HexBlock& k, double dt) {
+void update_block(const MaterialConstants& m, MaterialPointBlock& k, double dt) {
   if (m.k[kViscoplastic] != 0.0) {  // Newton per lane: the scalar kernel lane by lane
     update_block_lane_by_lane(m, k, dt, 0, update_point);
     return;

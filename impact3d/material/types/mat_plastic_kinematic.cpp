@@ -20,7 +20,7 @@ void update_point(const MaterialConstants& m, const double d[6], double dt, Soli
   s.yielded = y;
 }
 
-void update_block(const MaterialConstants& m, HexBlock& k, double dt) {
+void update_block(const MaterialConstants& m, MaterialPointBlock& k, double dt) {
   // the back stress is carried only with a kinematic part (group_carries_back_stress)
   if ((1.0 - m.beta) * m.E_p != 0.0)
     update_stress_elastic_plastic_block<true>(m, k, dt);

@@ -77,7 +77,7 @@ void update_stress_power_law(const MaterialConstants& m, const double d[6], doub
 
 namespace {
 
-void update_block(const MaterialConstants& m, HexBlock& k, double dt) {
+void update_block(const MaterialConstants& m, MaterialPointBlock& k, double dt) {
   update_block_lane_by_lane(m, k, dt, 0, update_stress_power_law);
 }
 

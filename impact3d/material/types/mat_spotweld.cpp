@@ -27,7 +27,7 @@ void update_point(const MaterialConstants& m, const double d[6], double dt, Soli
   s.yielded = y;
 }
 
-void update_block(const MaterialConstants& m, HexBlock& k, double dt) {
+void update_block(const MaterialConstants& m, MaterialPointBlock& k, double dt) {
   update_stress_elastic_plastic_block<false>(m, k, dt);  // isotropic: no back stress
 }
 
