@@ -427,6 +427,14 @@ struct KeywordContext {
   void once(const Block& b);
   // Error 1316: the block ends before a required card.
   void missing_card(const Block& b, const char* what);
+  // k: the block's first card after its option cards (_ID / _TITLE); false (error 1316 naming
+  // `what`) if there is none.
+  bool first_card(const Block& b, std::size_t& k, const char* what = "card 1") {
+    k = option_cards(b);
+    if (k < b.data.size()) return true;
+    missing_card(b, what);
+    return false;
+  }
 };
 
 }  // namespace impact3d::kw

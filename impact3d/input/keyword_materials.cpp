@@ -25,11 +25,8 @@ std::vector<std::size_t> positions(const std::vector<Param>& params, std::vector
 
 // *MAT_...: card 1 MID RO and the type's parameters on the cards given (up to the type's).
 void read_material(const Block& b, KeywordContext& ctx, const KeywordSpec& s, const MaterialType& t, KeywordMaterials& out) {
-  const std::size_t start = option_cards(b);
-  if (start >= b.data.size()) {
-    ctx.missing_card(b, "card 1");
-    return;
-  }
+  std::size_t start = 0;
+  if (!ctx.first_card(b, start)) return;
   std::vector<KeywordValues> cards;
   cards.reserve(s.cards.size());
   cards.push_back(ctx.fields(b, start, s.card("card 1")));
@@ -73,11 +70,8 @@ void read_material(const Block& b, KeywordContext& ctx, const KeywordSpec& s, co
 
 // *EOS_... (_TITLE): the form's cards; a *PART's EOSID gives it to the part's material.
 void read_eos(const Block& b, KeywordContext& ctx, const KeywordSpec& s, const EosForm& f, KeywordMaterials& out) {
-  const std::size_t start = option_cards(b);
-  if (start >= b.data.size()) {
-    ctx.missing_card(b, "card 1");
-    return;
-  }
+  std::size_t start = 0;
+  if (!ctx.first_card(b, start)) return;
   std::vector<KeywordValues> cards;
   cards.reserve(s.cards.size());
   for (std::size_t k = 0; k < s.cards.size() && start + k < b.data.size(); ++k) cards.push_back(ctx.fields(b, start + k, s.cards[k]));
@@ -113,11 +107,8 @@ void read_eos(const Block& b, KeywordContext& ctx, const KeywordSpec& s, const E
 // *MAT_ADD_EROSION: the criteria of a material (MID); SIGTH, IMPULSE and IDAM refused unless
 // blank, 0 or EXCL.
 void read_erosion(const Block& b, KeywordContext& ctx, const KeywordSpec& s, KeywordMaterials& out) {
-  const std::size_t start = option_cards(b);
-  if (start >= b.data.size()) {
-    ctx.missing_card(b, "card 1");
-    return;
-  }
+  std::size_t start = 0;
+  if (!ctx.first_card(b, start)) return;
   KeywordValues c = ctx.fields(b, start, s.card("card 1"));
   const int mid = ctx.xid(int(c.integer("MID")), b, 'm');
   c.card().set_card(b.keyword + " material " + std::to_string(mid));

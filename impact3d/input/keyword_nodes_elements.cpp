@@ -181,6 +181,35 @@ bool plain_shell(const KLine& l, int idw, RShell& e) {
   return true;
 }
 
+// The first card of a shell or beam: EID (the card then named by it), PID and the element's
+// nodes N1... with their places.
+template <class R>
+KeywordValues element_card(const Block& b, std::size_t k, KeywordContext& ctx, const KeywordSpec& s, R& e) {
+  KeywordValues v = ctx.fields(b, k, s.card(""));
+  e.id = int(v.integer("EID"));
+  v.card().set_card(b.keyword + " element " + std::to_string(e.id));
+  e.pid = int(v.integer("PID"));
+  e.ref = v.ref("EID");
+  e.pid_ref = v.ref("PID");
+  e.line = v.card().line();
+  e.file = b.data[k].file;
+  for (std::size_t j = 0; j < e.n.size(); ++j) {
+    e.n[j] = int(v.nth(2 + j));
+    e.node_refs[j] = v.card().ref(int(2 + j));
+  }
+  return v;
+}
+
+// The four sizes of a thickness card (each checked as read; ok false if one is refused), then
+// the rest of the card.
+void read_sizes(KeywordValues& v2, const char* const (&names)[4], std::array<double, 4>& t, bool& ok) {
+  for (std::size_t j = 0; j < 4; ++j) {
+    t[j] = v2[names[j]];
+    ok = v2.passed(names[j]) && ok;
+  }
+  v2.rest();
+}
+
 // *ELEMENT_SHELL (_THICKNESS): EID PID N1-N8 (N5-N8 refused); _THICKNESS: THIC1-THIC4 BETA.
 void read_shells(const Block& b, KeywordContext& ctx, const KeywordSpec& s, KeywordMesh& m, bool thickness) {
   if (!thickness) reserve_for(m.shells, b.data.size());
@@ -193,30 +222,15 @@ void read_shells(const Block& b, KeywordContext& ctx, const KeywordSpec& s, Keyw
         continue;
       }
     }
-    KeywordValues v = ctx.fields(b, k, s.card(""));
     RShell e;
-    e.id = int(v.integer("EID"));
-    v.card().set_card(b.keyword + " element " + std::to_string(e.id));
-    e.pid = int(v.integer("PID"));
-    e.ref = v.ref("EID");
-    e.pid_ref = v.ref("PID");
-    e.line = v.card().line();
-    e.file = b.data[k].file;
-    for (std::size_t j = 0; j < 4; ++j) {
-      e.n[j] = int(v.nth(2 + j));
-      e.node_refs[j] = v.card().ref(int(2 + j));
-    }
+    KeywordValues v = element_card(b, k, ctx, s, e);
     bool ok = true;
     for (const char* n : {"N5", "N6", "N7", "N8"}) ok = v.passed(n) && ok;
     if (e.n[3] == 0) e.n[3] = e.n[2];  // triangle given with three nodes
     if (thickness) {
       if (!thickness_card(b, k, ctx, s, v, e.id, "the thickness card (THIC1-THIC4 BETA) is missing", [&](KeywordValues& v2) {
             static const char* const kT[4] = {"THIC1", "THIC2", "THIC3", "THIC4"};
-            for (std::size_t j = 0; j < 4; ++j) {
-              e.t[j] = v2[kT[j]];
-              ok = v2.passed(kT[j]) && ok;
-            }
-            v2.rest();
+            read_sizes(v2, kT, e.t, ok);
           }))
         break;
       ++k;
@@ -231,30 +245,15 @@ void read_shells(const Block& b, KeywordContext& ctx, const KeywordSpec& s, Keyw
 void read_beams(const Block& b, KeywordContext& ctx, const KeywordSpec& s, KeywordMesh& m, bool thickness) {
   for (std::size_t k = 0; k < b.data.size(); ++k) {
     if (is_blank(b.data[k].line->text)) continue;
-    KeywordValues v = ctx.fields(b, k, s.card(""));
     RBeam e;
-    e.id = int(v.integer("EID"));
-    v.card().set_card(b.keyword + " element " + std::to_string(e.id));
-    e.pid = int(v.integer("PID"));
-    e.ref = v.ref("EID");
-    e.pid_ref = v.ref("PID");
-    e.line = v.card().line();
-    e.file = b.data[k].file;
-    for (std::size_t j = 0; j < 3; ++j) {
-      e.n[j] = int(v.nth(2 + j));
-      e.node_refs[j] = v.card().ref(int(2 + j));
-    }
+    KeywordValues v = element_card(b, k, ctx, s, e);
     bool ok = true;
     for (const char* r : {"RT1", "RR1", "RT2", "RR2"}) ok = v.passed(r) && ok;
     v.rest();  // LOCAL
     if (thickness) {
       if (!thickness_card(b, k, ctx, s, v, e.id, "the thickness card (PARM1-PARM5) is missing", [&](KeywordValues& v2) {
             static const char* const kParm[4] = {"PARM1", "PARM2", "PARM3", "PARM4"};
-            for (std::size_t j = 0; j < 4; ++j) {
-              e.t[j] = v2[kParm[j]];
-              ok = v2.passed(kParm[j]) && ok;
-            }
-            v2.rest();
+            read_sizes(v2, kParm, e.t, ok);
           }))
         break;
       ++k;

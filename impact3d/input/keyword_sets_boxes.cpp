@@ -35,14 +35,11 @@ void read_box(const Block& b, KeywordContext& ctx, const KeywordSpec& s, Keyword
   }
 }
 
-// Card 1 of a set (SID, with its *INCLUDE_TRANSFORM offset), named by it where `named`; false
-// (error 1316) if the block has no card.
-bool set_card1(const Block& b, KeywordContext& ctx, const KeywordSpec& s, std::size_t k, bool named,
+// Card 1 of a set (SID, with its *INCLUDE_TRANSFORM offset; k: its index once found), named by
+// it where `named`; false (error 1316) if the block has no card.
+bool set_card1(const Block& b, KeywordContext& ctx, const KeywordSpec& s, std::size_t& k, bool named,
                const std::function<void(KeywordValues& c, int sid)>& read) {
-  if (k >= b.data.size()) {
-    ctx.missing_card(b, "card 1 (SID)");
-    return false;
-  }
+  if (!ctx.first_card(b, k, "card 1 (SID)")) return false;
   KeywordValues c = ctx.fields(b, k, s.card("card 1"));
   const int sid = ctx.xid(int(c.integer("SID")), b, 's');
   if (named) {
@@ -122,7 +119,7 @@ void read_id_set(const Block& b, KeywordContext& ctx, const KeywordSpec& s, std:
   const bool increment = ends("_GENERATE_INCREMENT"), generate = !increment && ends("_GENERATE");
   const bool add = ends("_ADD"), general = ends("_GENERAL");
   const char* data_card = increment || generate ? "range card" : add ? "set card" : "id card";
-  std::size_t k = option_cards(b);
+  std::size_t k = 0;
   set_card1(b, ctx, s, k, true, [&](KeywordValues& c, int sid) {
     RIdList set;
     set.ref = c.ref("SID");
@@ -156,7 +153,7 @@ void read_id_set(const Block& b, KeywordContext& ctx, const KeywordSpec& s, std:
 // _GENERAL (OPTION cards as for the other _GENERAL sets).
 void read_segment_set(const Block& b, KeywordContext& ctx, const KeywordSpec& s, KeywordSetsBoxes& out) {
   const bool plain = b.name == "SET_SEGMENT", general = b.name == "SET_SEGMENT_GENERAL";
-  std::size_t k = option_cards(b);
+  std::size_t k = 0;
   set_card1(b, ctx, s, k, !plain, [&](KeywordValues& c, int sid) {
     RSegSet set;
     set.ref = c.ref("SID");
