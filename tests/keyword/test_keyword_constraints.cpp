@@ -23,19 +23,10 @@
 using namespace impact3d;
 using test_support::read_deck_text;
 using test_support::ReadDeck;
+using test_support::F;
+using test_support::I;
 
 namespace {
-
-std::string I(long v, int w = 10) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%*ld", w, v);
-  return b;
-}
-std::string F(double v, int w = 10) {
-  char b[64];
-  std::snprintf(b, sizeof b, "%*.*g", w, w > 10 ? 12 : 6, v);
-  return b;
-}
 
 // A block of nx x ny x nz hexahedra, x in [0, 0.06], y in [y0, y1], z in [0, 0.02] (SI, steel
 // type 3), node ids 1 + i + (nx+1) (j + (ny+1) k); `body` goes after the mesh.

@@ -24,21 +24,12 @@
 using namespace impact3d;
 using test_support::read_deck_text;
 using test_support::ReadDeck;
+using test_support::F;
+using test_support::I;
 
 namespace {
 
 constexpr double kR = 0.05, kV = 50;
-
-std::string I(long v, int w = 10) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%*ld", w, v);
-  return b;
-}
-std::string F(double v, int w = 10) {
-  char b[64];
-  std::snprintf(b, sizeof b, "%*.*g", w, w > 10 ? 12 : 6, v);
-  return b;
-}
 
 // A 4 x 4 x 2 block of elastic steel solids, 40 x 40 x 20 mm, centred at (0, y0), its bottom 1 mm
 // above the cylinder's top, falling at kV; the wall keyword `kw` with its cards `wall`.

@@ -19,21 +19,12 @@
 using namespace impact3d;
 using test_support::read_deck_text;
 using test_support::ReadDeck;
+using test_support::F;
+using test_support::I;
 
 namespace {
 
 constexpr double kA = 0.01, kE = 210e9, kRho = 7850, kNu = 0.3, kV = 100;
-
-std::string I(long v, int w = 10) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%*ld", w, v);
-  return b;
-}
-std::string F(double v, int w = 10) {
-  char b[64];
-  std::snprintf(b, sizeof b, "%*.*g", w, w > 10 ? 12 : 6, v);
-  return b;
-}
 
 // A column of n square shells (side a) at y = j a: nodes 2j+1 (0, ja) and 2j+2 (a, ja); y, z and
 // the rotations held; the nodes at x = 0 held in x, those at x = a moved at -v in x (eight or

@@ -3,6 +3,7 @@
 // of a copy per file.
 #pragma once
 
+#include <cstdio>
 #include <filesystem>
 #include <sstream>
 #include <string>
@@ -68,6 +69,21 @@ inline impact3d::RunOptions run_options_in(const std::filesystem::path& dir) {
   o.quiet = true;
   o.threads = 1;
   return o;
+}
+
+// A keyword deck's integer field, right-aligned in w columns.
+inline std::string I(long v, int w = 10) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%*ld", w, v);
+  return b;
+}
+
+// A keyword deck's real field in w columns: 6 significant digits in a 10-column field, 12 in a
+// wider one.
+inline std::string F(double v, int w = 10) {
+  char b[64];
+  std::snprintf(b, sizeof b, "%*.*g", w, w > 10 ? 12 : 6, v);
+  return b;
 }
 
 }  // namespace test_support
