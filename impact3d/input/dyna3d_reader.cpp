@@ -448,9 +448,10 @@ class Dyna3dReader {
     if (sec.shrf == 0) sec.shrf = 1.0;
     if (!(sec.shrf > 0 && sec.shrf <= 1)) v.error(1003, "shear factor SHRF", "shear factor in (0, 1] (5/6 for isotropic shells)");
     const double nip = v["NIP"];
-    sec.nip = nip == 0 ? 2 : int(nip);
-    if (nip != std::floor(nip) || nip < 0 || nip > 1e9) { v.error(1003, "NIP", "integration points 1-10"); sec.nip = 2; }
-    else if (nip > 10) { v.error(1102, "NIP", "more than 10 Gauss points (user-defined integration rules)"); sec.nip = 2; }
+    sec.nip = 2;
+    if (nip != std::floor(nip) || nip < 0 || nip > 1e9) v.error(1003, "NIP", "integration points 1-10");
+    else if (nip > 10) v.error(1102, "NIP", "more than 10 Gauss points (user-defined integration rules)");
+    else if (nip != 0) sec.nip = int(nip);
     if (v["quadrature rule QR"] != 0) v.error(1102, "quadrature rule QR", "user-defined and trapezoidal integration rules (Gauss only)");
     static const char* const tn[4] = {"T1", "T2", "T3", "T4"};
     for (int j = 0; j < 4; ++j) sec.t[std::size_t(j)] = v[tn[j]];
@@ -471,8 +472,9 @@ class Dyna3dReader {
     if (sec.shrf == 0) sec.shrf = 1.0;
     if (!(sec.shrf > 0 && sec.shrf <= 1)) va.error(1003, "shear factor SHRF", "shear factor in (0, 1] (5/6 for isotropic shells)");
     const double nip = va["NIP"];
-    sec.nip = nip == 0 ? 2 : int(nip);
-    if (nip != std::floor(nip) || nip < 0 || nip > 10) { va.error(1003, "NIP", "integration points 1-10"); sec.nip = 2; }
+    sec.nip = 2;
+    if (nip != std::floor(nip) || nip < 0 || nip > 10) va.error(1003, "NIP", "integration points 1-10");
+    else if (nip != 0) sec.nip = int(nip);
     if (va["quadrature rule QR"] != 0) va.error(1102, "quadrature rule QR", "user-defined and trapezoidal integration rules (Gauss only)");
     Card b = next(name + " shell section card 2");
     FixedValues vb(b, fixed_card_layout("shell section card 2", vintage_));
@@ -1801,9 +1803,10 @@ class Dyna3dReader {
     if (!(sec.shrf > 0 && sec.shrf <= 1)) va.error(1003, "shear factor", "shear factor in (0, 1]");
     const double qr = va["quadrature rule"];
     const double cst = va["cross-section type"];
-    if (qr != std::floor(qr) || qr > 5 || qr < -1e6) va.error(1006, "quadrature rule", "1-5 built-in rules, -n a user rule (0: 2)");
+    const bool qr_ok = qr == std::floor(qr) && qr <= 5 && qr >= -1e6;
+    if (!qr_ok) va.error(1006, "quadrature rule", "1-5 built-in rules, -n a user rule (0: 2)");
     else if (qr < 0 && -qr > beam_rules_) va.error(1201, "quadrature rule", "user rule " + std::to_string(int(-qr)) + " (control card 8 has " + std::to_string(beam_rules_) + ")");
-    sec.qr = qr == 0 ? 2 : int(qr);
+    sec.qr = qr == 0 || !qr_ok ? 2 : int(qr);
     if (cst != 0 && cst != 1 && cst != 2) va.error(1006, "cross-section type", "0 rectangular, 1 tubular, 2 user rule");
     if (cst == 2 && qr >= 0) va.error(1006, "cross-section type", "2 (a user rule) needs a negative quadrature rule -n");
     if (cst == 1 && qr < 0) va.error(1102, "quadrature rule", "a user integration rule on a tubular section");

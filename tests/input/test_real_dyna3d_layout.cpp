@@ -292,6 +292,8 @@ TEST(RealDyna3dLayout, MalformedCardsOfTheRealLayoutsNameTheirColumns) {
       {edit(dl, "mdamp 1", "mdamp x"), 1001, "free format mdamp"},
       // a shell section with a user integration rule
       {edit(dl, reals({0.8333, 3, 0, 0}), reals({0.8333, 3, -1, 0})), 1102, "field \"quadrature rule QR\" (cols 21-30)"},
+      // NIP far beyond an int (a fuzz finding: it was converted before it was checked)
+      {edit(dl, reals({0.8333, 3, 0, 0}), reals({0.8333, 5.8193e9, 0, 0})), 1003, "field \"NIP\" (cols 11-20)"},
       // a real-valued node code that is not integral
       {edit(d88, node88(3, 0, 1e-3, 1e-3, 0).substr(8, 5), "  7.5"), 1001, "field \"boundary code\" (cols 9-13)"},
   };
@@ -408,6 +410,19 @@ TEST(RealDyna3dLayout, FixedFormatCantileverSettlesOnTheClosedForm) {
   const double E = 2e11, G = E / 2.6, h = 0.05, I = h * h * h * h / 12, P = 100, L = 1;
   const double expected = P * L * L * L / (3 * E * I) + P * L / (0.8333 * G * h * h);
   EXPECT_NEAR(s.z[10] - m.z[10], expected, 0.01 * expected);
+}
+
+// A beam quadrature rule far beyond an int is refused naming its field (a fuzz finding: the
+// rule was converted to an int before it was checked).
+TEST(RealDyna3dLayout, BeamQuadratureRuleBeyondAnIntIsRefused) {
+  std::string s = cantilever();
+  const std::string card = reals({0.8333, 2, 0});
+  s.replace(s.find(card), card.size(), reals({0.8333, 5.8193e9, 0}));
+  Model m;
+  Diagnostics d;
+  EXPECT_FALSE(read_string(s, m, d));
+  EXPECT_EQ(d.count(1006), 1) << all_messages(d);
+  EXPECT_NE(all_messages(d).find("field \"quadrature rule\""), std::string::npos) << all_messages(d);
 }
 
 // A user integration rule (QR -1, cross-section type 2) holding 2 x 2 Gauss (points written to

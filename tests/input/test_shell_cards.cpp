@@ -202,6 +202,8 @@ TEST(ShellCards, MalformedShellCardsNameLineCardAndColumns) {
   expect_message(with(28, E(0.005) + "   abc    "), 1002, 28, "cols 11-20", "thickness not a number");
   // section card: NIP 12, SHRF 1.5, QR 1, negative T1
   expect_message(with(18, E(5.0 / 6) + I(12, 10) + I(0, 10) + E(0.004)), 1102, 18, "cols 11-20", "NIP");
+  // NIP far beyond an int (a fuzz finding: it was converted before it was checked)
+  expect_message(with(18, E(5.0 / 6) + E(5.8193e9) + I(0, 10) + E(0.004)), 1003, 18, "cols 11-20", "NIP 5.8e9");
   expect_message(with(18, E(1.5) + I(3, 10) + I(0, 10) + E(0.004)), 1003, 18, "cols 1-10", "SHRF");
   expect_message(with(18, E(0.8) + I(3, 10) + I(1, 10) + E(0.004)), 1102, 18, "cols 21-30", "QR");
   expect_message(with(18, E(0.8) + I(3, 10) + I(0, 10) + E(-0.004)), 1241, 18, "cols 31-40", "T1");
