@@ -77,7 +77,8 @@ void read_shell_section(const Block& b, KeywordContext& ctx, const KeywordSpec& 
   sec.ref = v.ref("SECID");
   v.rest();  // ELFORM 2 (Belytschko-Tsay, LS-DYNA's default: blank or 0 reads as 2) only
   sec.shrf = v["SHRF"];
-  sec.nip = int(v["NIP"]);
+  const double nip = v["NIP"];
+  sec.nip = v.passed("NIP") ? int(nip) : 2;  // (refused: 1003/1102; not converted, it may not fit an int)
   if (k + 1 >= b.data.size()) {
     ctx.missing_card(b, "card 2 (T1 T2 T3 T4 NLOC MAREA IDOF EDGSET)");
   } else {
@@ -126,7 +127,8 @@ void read_beam_section(const Block& b, KeywordContext& ctx, const KeywordSpec& s
   sec.elform = int(v.integer("ELFORM"));
   const bool spot_weld_beam = sec.elform == 9;  // LS-DYNA's spot-weld beam: card 2 as ELFORM 1, and ITOFF
   sec.shrf = v["SHRF"];
-  sec.qr = int(v["QR/IRID"]);
+  const double qr = v["QR/IRID"];
+  sec.qr = v.passed("QR/IRID") ? int(qr) : 2;  // (refused: 1102/1003; not converted, it may not fit an int)
   if (v.passed("CST")) sec.cst = v.integer("CST") == 0 ? BeamCrossSection::rectangular : BeamCrossSection::tubular;
   if (k + 1 >= b.data.size() || is_keyword_line(b.data[k + 1].line->text)) {
     ctx.missing_card(b, sec.elform == 3   ? "card 2 (A RAMPT STRESS)"
