@@ -780,6 +780,84 @@ std::vector<KeywordSpec> sets_boxes_specs() {
   return t;
 }
 
+// The contacts: *CONTACT_... card 1 (the sides), card 2 (friction, birth and death), card 3
+// (penalty scales), the _ERODING_ card, optional cards A and B.  The sides' types depend on the
+// keyword: checked by the family's reader (keyword_contacts.cpp).
+std::vector<KeywordCardLayout> contact_cards(bool eroding) {
+  std::vector<KeywordCardLayout> c = {
+      {"ID card", 1, 10, per_field, {{"CID", 0, I, 0, false, {}, "contact id (the heading after it is not read)"}}, "with _ID"},
+      {"card 1", 8, 10, per_field, {
+          {"SURFA", 0, I, 0, false, {}, "side A: segment set, part set, part or node set by SURFATYP (single surface: 0 all parts)"},
+          {"SURFB", 1, I, 0, false, {}, "side B (single surface: not 0 warning 2006, ignored)"},
+          {"SURFATYP", 2, I, 0, false, {}, "0 segment set, 2 part set, 3 part; 4 node set (nodes to surface, force transducer); "
+                                           "5 all parts (single surface); others: error 1104"},
+          {"SURFBTYP", 3, I, 0, false, {}, "0 segment set, 2 part set, 3 part (force transducer: 4 node set too); others: error 1104"},
+          {"SABOXID", 4, I, 0, false, {}, "only side A's segments whose centroid is in this box"},
+          {"SBBOXID", 5, I, 0, false, {}, "only side B's segments in this box"},
+          {"SAPR", 6, I, 0, false, {}, "1: side A in the interface-force database (force transducer: not 0 warning 2006)"},
+          {"SBPR", 7, I, 0, false, {}, "1: side B in the interface-force database"},
+      }, "after the ID or heading card; missing: error 1316"},
+      {"card 2", 8, 10, per_field, {
+          checked_after({"FS", 0, E, 0, false, {below(0, 1219)}, "static friction coefficient"}, 2),
+          checked_after({"FD", 1, E, 0, false, {below(0, 1219)}, "dynamic friction coefficient"}, 2),
+          {"DC", 2, E, 0, false, {below(0, 1003, "must not be negative")}, "exponential decay coefficient"},
+          {"VC", 3, E, 0, false, {nonzero(2006, "viscous friction limit")}, "viscous friction limit"},
+          {"VDC", 4, E, 0, false, {nonzero(2006, "viscous contact damping")}, "viscous contact damping"},
+          plain("PENCHK", 5, I),
+          {"BT", 6, E, 0, false, {nonzero(1102, "contact birth time")}, "birth time"},
+          {"DT", 7, E, 0, false, {inside(0, 0, 0, nullptr), below(1e20, 1102, "contact death time")}, "death time (0 or >= 1e20: none)"},
+      }, "when given"},
+      {"card 3", 8, 10, per_field, {
+          checked_after({"SFSA", 0, E, 1.0, true, {below(0, 1003, "must be positive")}, "penalty scale factor of both sides"}, 1),
+          {"SFSB", 1, E, 1.0, true, {}, "other than SFSA: warning 2006 (one penalty scale per interface: SFSA is used for both sides)"},
+      }, "when given"},
+      {"optional card A", 8, 10, per_field, {
+          {"SOFT", 0, I, 0, false, {}, "0 penalty, 1 soft constraint, -1 maximum stable stiffness (IMPACT-3D); 2, 4, 6: error 1102; others: error 1006"},
+          {"SOFSCL", 1, E, 0.1, true, {below(0, 1003, "must be positive")}, "scale factor of the soft constraint"},
+          {"LCIDAB", 2, I, 0, false, {nonzero(1102, "airbag fabric thickness curve of the soft constraint")}, "airbag thickness curve"},
+          {"MAXPAR", 3, E, 0, false, {neither(0, 1.025, 1102, "a parametric search extension other than the default 1.025 (IMPACT-3D extends a segment by 1 %)")},
+           "parametric search extension"},
+          plain("SBOPT", 4, I, "read, no effect here (SOFT 2 only)"),
+          plain("DEPTH", 5, I, "read, no effect here (SOFT 2 only)"),
+          plain("BSORT", 6, I, "read, no effect here (IMPACT-3D sorts every cycle)"),
+          {"FRCFRQ", 7, I, 0, false, {neither(0, 1, 1102, "contact forces updated every FRCFRQ cycles (IMPACT-3D updates them every cycle)")},
+           "cycles between contact force updates"},
+      }, eroding ? "after the _ERODING_ card, when given" : "after card 3, when given"},
+      {"optional card B", 8, 10, per_field, {
+          {"PENMAX", 0, E, 0, false, {nonzero(1102, "a maximum penetration (IMPACT-3D: half the segment's element, README \"Contact\")")}, "maximum penetration"},
+          {"THKOPT", 1, I, 0, false, {}, "0 *CONTROL_CONTACT's SHLTHK, 1 SHLTHK of this card, 2 no shell thickness; others: error 1006"},
+          {"SHLTHK", 2, I, 0, false, {}, "0 shells at their mid-surface, 1 at +-t/2 except rigid shells, 2 at +-t/2; others: error 1006"},
+          {"SNLOG", 3, I, 0, false, {neither(0, 1, 1006, "0 or 1")}, "shooting-node logic (none here: 0 and 1 alike)"},
+          {"ISYM", 4, I, 0, false, {nonzero(1102, "symmetry-plane option of the contact")}, "symmetry-plane option"},
+          {"I2D3D", 5, I, 0, false, {nonzero(1102, "segment search order of shells and solids")}, "search order of shells and solids"},
+          {"SLDTHK", 6, E, 0, false, {nonzero(1102, "a contact thickness of solids")}, "contact thickness of solids"},
+          {"SLDSTF", 7, E, 0, false, {nonzero(1102, "a contact stiffness of solids")}, "contact stiffness of solids"},
+      }, "after optional card A, when given"},
+  };
+  // card 3's fields 3-8 are read as numbers under one name (as messages have always named them)
+  for (int k = 2; k < 8; ++k) c[3].fields.push_back(plain("SAST/SBST/SFSAT/SFSBT/FSF/VSF", k, E, k == 2 ? "SAST, SBST, SFSAT, SFSBT, FSF, VSF: read, no effect here" : ""));
+  if (eroding)
+    c.insert(c.begin() + 4, {"eroding card", 8, 10, per_field, {
+        {"ISYM", 0, I, 0, false, {nonzero(1102, "symmetry-plane options of eroding contact")}, "symmetry-plane options"},
+        {"EROSOP", 1, I, 0, false, {neither(0, 1, 1006, "0 exterior faces only, 1 faces exposed by failed solids join")},
+         "0 exterior faces only, 1 faces exposed by failed solids join the surface"},
+        {"IADJ", 2, I, 0, false, {nonzero(2006, "shell edges do not join an eroding surface")}, "adjacent shell edges"},
+    }, "after card 3 (missing: error 1316, the contact is dropped)"});
+  return c;
+}
+
+std::vector<KeywordSpec> contact_specs() {
+  const KeywordFamily F = KeywordFamily::contacts;
+  return {{{"CONTACT_SURFACE_TO_SURFACE", "CONTACT_AUTOMATIC_SURFACE_TO_SURFACE", "CONTACT_NODES_TO_SURFACE",
+            "CONTACT_AUTOMATIC_NODES_TO_SURFACE", "CONTACT_AUTOMATIC_SINGLE_SURFACE", "CONTACT_FORCE_TRANSDUCER_PENALTY"},
+           F, false, contact_cards(false),
+           "one contact a keyword; _ID: the ID card first, _TITLE: a heading card first (not read); automatic and single-surface "
+           "contacts take the shells' thickness always (docs/contact.md)"},
+          {{"CONTACT_ERODING_SURFACE_TO_SURFACE", "CONTACT_ERODING_NODES_TO_SURFACE", "CONTACT_ERODING_SINGLE_SURFACE"},
+           F, false, contact_cards(true),
+           "one contact a keyword, as the others with the _ERODING_ card after card 3"}};
+}
+
 std::vector<KeywordSpec> control_database_specs() {
   std::vector<KeywordSpec> t;
   t.push_back({{"CONTROL_TERMINATION"}, KeywordFamily::control_database, true,
@@ -964,6 +1042,7 @@ const std::vector<KeywordSpec>& all_keyword_specs() {
     for (KeywordSpec& s : materials_specs()) all.push_back(std::move(s));
     for (KeywordSpec& s : sets_boxes_specs()) all.push_back(std::move(s));
     for (KeywordSpec& s : loads_bcs_specs()) all.push_back(std::move(s));
+    for (KeywordSpec& s : contact_specs()) all.push_back(std::move(s));
     for (KeywordSpec& s : control_database_specs()) all.push_back(std::move(s));
     return all;
   }();

@@ -81,6 +81,7 @@ enum class KeywordFamily {
   parts_sections,    // *PART, *SECTION_..., *HOURGLASS (keyword_parts_sections.cpp)
   sets_boxes,        // *DEFINE_BOX (keyword_sets_boxes.cpp)
   loads_bcs,         // *LOAD_..., *BOUNDARY_..., *INITIAL_..., *DAMPING_GLOBAL (keyword_loads_bcs.cpp)
+  contacts,          // *CONTACT_... (keyword_contacts.cpp)
   control_database,  // *CONTROL_..., *DATABASE_... (keyword_control_database.cpp)
   ignored,           // read and ignored, warning 2008 with the note (keyword_control_database.cpp)
 };

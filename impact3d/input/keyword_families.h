@@ -308,6 +308,36 @@ struct KeywordSetsBoxes {
 // *DEFINE_TRANSFORMATION into s; false if the keyword is none of the family's tables.
 bool read_sets_boxes(const Block& b, KeywordContext& ctx, KeywordSetsBoxes& s);
 
+// ---------------------------------------------------------------- contacts
+// (keyword_contacts.cpp)
+struct RSide {
+  int id = 0, type = 0;
+  Ref id_ref, type_ref;
+  int boxid = 0;  // SABOXID / SBBOXID: only the segments whose centroid is in the box
+  Ref box_ref;
+};
+struct RContact {
+  RSide a, b;
+  bool symmetric = true;
+  double fs = 0, fd = 0, dc = 0;
+  double sfsa = 1;
+  int soft = 0;
+  double sofscl = 0.1;              // optional card A SOFSCL (SOFT 1)
+  bool sapr = false, sbpr = false;  // SAPR / SBPR = 1: the side goes to the intfor database
+  bool transducer = false;          // *CONTACT_FORCE_TRANSDUCER_PENALTY
+  bool single = false;              // *CONTACT_AUTOMATIC_SINGLE_SURFACE (SURFA only)
+  bool eroding = false;             // *CONTACT_ERODING_* with EROSOP 1: interior faces join
+  bool automatic = false;           // _AUTOMATIC_, single surface, eroding: shells always at +-t/2
+  int thkopt = 0, shlthk = 0;       // optional card B (THKOPT 1: SHLTHK of the card; 2: none)
+  int cid = 0;                      // _ID: the contact id
+  Ref ref;
+  std::string keyword;
+};
+
+// Reads a *CONTACT_... keyword (one contact a block) into out; false if the keyword is none of
+// the family's.
+bool read_contacts(const Block& b, KeywordContext& ctx, std::vector<RContact>& out);
+
 // ---------------------------------------------------------------- control and database cards
 // (keyword_control_database.cpp)
 struct KeywordControls {

@@ -46,29 +46,6 @@ int bc_code(int bits) {
 }
 
 // Raw records, before resolution (the families' records are in keyword_families.h).
-struct RSide {
-  int id = 0, type = 0;
-  Ref id_ref, type_ref;
-  int boxid = 0;  // SABOXID / SBBOXID: only the segments whose centroid is in the box
-  Ref box_ref;
-};
-struct RContact {
-  RSide a, b;
-  bool symmetric = true;
-  double fs = 0, fd = 0, dc = 0;
-  double sfsa = 1;
-  int soft = 0;
-  double sofscl = 0.1;              // optional card A SOFSCL (SOFT 1)
-  bool sapr = false, sbpr = false;  // SAPR / SBPR = 1: the side goes to the intfor database
-  bool transducer = false;          // *CONTACT_FORCE_TRANSDUCER_PENALTY
-  bool single = false;              // *CONTACT_AUTOMATIC_SINGLE_SURFACE (SURFA only)
-  bool eroding = false;             // *CONTACT_ERODING_* with EROSOP 1: interior faces join
-  bool automatic = false;           // _AUTOMATIC_, single surface, eroding: shells always at +-t/2
-  int thkopt = 0, shlthk = 0;       // optional card B (THKOPT 1: SHLTHK of the card; 2: none)
-  int cid = 0;                      // _ID: the contact id
-  Ref ref;
-  std::string keyword;
-};
 struct RWall {
   std::string keyword;  // as written (*RIGIDWALL_PLANAR_ID, ...)
   int nsid = 0;
@@ -706,9 +683,6 @@ class KeywordReader {
     }
   }
 
-  // Option cards (_ID / _TITLE) at the start of a block: returns the number of lines used.
-  static std::size_t skip_option_card(const Block& b) { return option_cards(b); }
-
   // Strips the _TITLE / _ID options the supported keywords know.
   static std::string base_name(const std::string& n, bool& title, bool& id) {
     auto ends = [&](const char* s) {
@@ -774,6 +748,7 @@ class KeywordReader {
       if (read_loads_bcs(b, ctx_, ld_)) continue;           // keyword_loads_bcs.cpp
       if (read_nodes_elements(b, ctx_, me_)) continue;      // keyword_nodes_elements.cpp
       if (read_materials(b, ctx_, mt_)) continue;           // keyword_materials.cpp
+      if (read_contacts(b, ctx_, contacts_)) continue;      // keyword_contacts.cpp
       if (n == "TITLE") {
         for (const KLine& l : b.data) {
           m_.title = rtrim(l.line->text.substr(0, std::min<std::size_t>(80, l.line->text.size())));
@@ -785,16 +760,6 @@ class KeywordReader {
         parse_generalized_weld_spot(b);
       } else if (n == "RIGIDWALL_PLANAR") {
         parse_rigidwall(b);
-      } else if (n == "CONTACT_SURFACE_TO_SURFACE" || n == "CONTACT_AUTOMATIC_SURFACE_TO_SURFACE" ||
-                 n == "CONTACT_NODES_TO_SURFACE" || n == "CONTACT_AUTOMATIC_NODES_TO_SURFACE") {
-        parse_contact(b, n != "CONTACT_NODES_TO_SURFACE" && n != "CONTACT_AUTOMATIC_NODES_TO_SURFACE");
-      } else if (n == "CONTACT_AUTOMATIC_SINGLE_SURFACE") {
-        parse_contact(b, false, false, true);
-      } else if (n == "CONTACT_ERODING_SURFACE_TO_SURFACE" || n == "CONTACT_ERODING_NODES_TO_SURFACE" ||
-                 n == "CONTACT_ERODING_SINGLE_SURFACE") {
-        parse_contact(b, n == "CONTACT_ERODING_SURFACE_TO_SURFACE", false, n == "CONTACT_ERODING_SINGLE_SURFACE", true);
-      } else if (n == "CONTACT_FORCE_TRANSDUCER_PENALTY") {
-        parse_contact(b, false, true);
       } else {
         unsupported_.push_back(&b);
         // remember the ids that unsupported material and section keywords define, so that a
@@ -1224,135 +1189,6 @@ class KeywordReader {
     }
   }
 
-  void parse_contact(const Block& b, bool symmetric, bool transducer = false, bool single = false, bool eroding = false) {
-    std::size_t k = skip_option_card(b);
-    if (k >= b.data.size()) { ctx_.missing_card(b, "card 1"); return; }
-    RContact ct;
-    ct.symmetric = symmetric;
-    ct.transducer = transducer;
-    ct.single = single;
-    ct.keyword = b.keyword;
-    ct.automatic = single || eroding || b.keyword.find("AUTOMATIC") != std::string::npos;
-    if (b.id_opt && k == 1) {
-      KCard ci = card(b, 0, "ID card", W(b, 1));
-      ct.cid = int(ci.i(0, "CID"));
-    }
-    KCard c = card(b, k, "card 1", W(b, 8));
-    ct.ref = c.ref(0);
-    ct.a.id = int(c.i(0, "SURFA"));
-    ct.b.id = int(c.i(1, "SURFB"));
-    ct.a.type = int(c.i(2, "SURFATYP"));
-    ct.b.type = int(c.i(3, "SURFBTYP"));
-    ct.a.id_ref = c.ref(0);
-    ct.b.id_ref = c.ref(1);
-    ct.a.type_ref = c.ref(2);
-    ct.b.type_ref = c.ref(3);
-    ct.a.boxid = int(c.i(4, "SABOXID"));
-    ct.b.boxid = int(c.i(5, "SBBOXID"));
-    ct.a.box_ref = c.ref(4);
-    ct.b.box_ref = c.ref(5);
-    ct.sapr = c.i(6, "SAPR") == 1;
-    ct.sbpr = c.i(7, "SBPR") == 1;
-    bool ok_a = ct.a.type == 0 || ct.a.type == 2 || ct.a.type == 3 || (ct.a.type == 4 && !symmetric && !single) ||
-                (ct.a.type == 5 && single);
-    bool ok_b = ct.b.type == 0 || ct.b.type == 2 || ct.b.type == 3;
-    if (single) {
-      // one surface against itself: SURFA = 0 (or SURFATYP 5) is every part; side B unused
-      if (ok_a && ct.a.id == 0) ct.a.type = 5;
-      if (ct.b.id != 0 || ct.b.type != 0) c.error(2006, ct.b.id != 0 ? 1 : 3, ct.b.id != 0 ? "SURFB" : "SURFBTYP", "a single-surface contact has only side A");
-      if (ct.sbpr) c.error(2006, 7, "SBPR", "a single-surface contact has only side A");
-      ct.sbpr = false;
-      ct.b = RSide{};
-      ok_b = true;
-    }
-    if (!ok_a) c.error(1104, 2, "SURFATYP", single ? "0 segment set, 2 part set, 3 part, 5 all parts (single surface)"
-                                            : symmetric ? "0 segment set, 2 part set, 3 part" : "0 segment set, 2 part set, 3 part, 4 node set");
-    if (!ok_b && !(transducer && ct.b.type == 4)) c.error(1104, 3, "SURFBTYP", transducer ? "0 segment set, 2 part set, 3 part, 4 node set" : "0 segment set, 2 part set, 3 part");
-    if (transducer && (ct.sapr || ct.sbpr)) c.error(2006, ct.sapr ? 6 : 7, ct.sapr ? "SAPR" : "SBPR", "a force transducer has no contact segments in the interface-force database");
-    if (k + 1 < b.data.size()) {
-      KCard c2 = card(b, k + 1, "card 2", W(b, 8));
-      ct.fs = c2.r(0, "FS");
-      ct.fd = c2.r(1, "FD");
-      ct.dc = c2.r(2, "DC");
-      if (ct.fs < 0) c2.error(1219, 0, "FS");
-      if (ct.fd < 0) c2.error(1219, 1, "FD");
-      if (ct.dc < 0) c2.error(1003, 2, "DC", "must not be negative");
-      if (c2.r(3, "VC") != 0) c2.error(2006, 3, "VC", "viscous friction limit");
-      if (c2.r(4, "VDC") != 0) c2.error(2006, 4, "VDC", "viscous contact damping");
-      c2.i(5, "PENCHK");
-      if (c2.r(6, "BT") != 0) c2.error(1102, 6, "BT", "contact birth time");
-      double dt = c2.r(7, "DT");
-      if (dt != 0 && dt < 1e20) c2.error(1102, 7, "DT", "contact death time");
-    }
-    if (k + 2 < b.data.size()) {
-      KCard c3 = card(b, k + 2, "card 3", W(b, 8));
-      ct.sfsa = c3.r(0, "SFSA", 1.0);
-      double sfsb = c3.r(1, "SFSB", 1.0);
-      if (ct.sfsa == 0) ct.sfsa = 1;
-      if (sfsb == 0) sfsb = 1;
-      if (ct.sfsa < 0) c3.error(1003, 0, "SFSA", "must be positive");
-      if (sfsb != ct.sfsa) c3.error(2006, 1, "SFSB", "one penalty scale per interface: SFSA is used for both sides");
-      for (int f = 2; f < 8; ++f) c3.r(f, "SAST/SBST/SFSAT/SFSBT/FSF/VSF");
-    }
-    std::size_t ka = k + 3;  // optional card A
-    if (eroding) {
-      // the _ERODING_ card: ISYM EROSOP IADJ (LS-DYNA: EROSOP 0 keeps the exterior only)
-      if (k + 3 >= b.data.size()) { ctx_.missing_card(b, "the _ERODING_ card (ISYM EROSOP IADJ)"); return; }
-      KCard ce = card(b, k + 3, "eroding card", W(b, 8));
-      if (ce.i(0, "ISYM") != 0) ce.error(1102, 0, "ISYM", "symmetry-plane options of eroding contact");
-      const long erosop = ce.i(1, "EROSOP");
-      if (erosop != 0 && erosop != 1) ce.error(1006, 1, "EROSOP", "0 exterior faces only, 1 faces exposed by failed solids join");
-      ct.eroding = erosop == 1;
-      if (ce.i(2, "IADJ") != 0) ce.error(2006, 2, "IADJ", "shell edges do not join an eroding surface");
-      ka = k + 4;
-    }
-    if (ka < b.data.size()) parse_contact_optional_cards(b, ka, ct);
-    contacts_.push_back(ct);
-  }
-
-  // *CONTACT optional cards A (SOFT SOFSCL LCIDAB MAXPAR SBOPT DEPTH BSORT FRCFRQ) and B (PENMAX
-  // THKOPT SHLTHK SNLOG ISYM I2D3D SLDTHK SLDSTF), as LS-DYNA reads them (docs/contact.md "Contact"):
-  // what IMPACT-3D implements is honoured, the rest refused by field.
-  void parse_contact_optional_cards(const Block& b, std::size_t ka, RContact& ct) {
-    KCard ca = card(b, ka, "optional card A", W(b, 8));
-    ct.soft = int(ca.i(0, "SOFT"));
-    if (ct.soft == 2 || ct.soft == 4 || ct.soft == 6)
-      ca.error(1102, 0, "SOFT", "contact formulation SOFT = " + std::to_string(ct.soft) + " (IMPACT-3D has 0 penalty, 1 soft constraint, -1 maximum stable stiffness)");
-    else if (ct.soft != 0 && ct.soft != 1 && ct.soft != -1)
-      ca.error(1006, 0, "SOFT", "0 penalty, 1 soft constraint (LS-DYNA), -1 IMPACT-3D maximum stable stiffness");
-    ct.sofscl = ca.r(1, "SOFSCL", 0.1);
-    if (ct.sofscl == 0) ct.sofscl = 0.1;
-    if (ct.sofscl < 0) ca.error(1003, 1, "SOFSCL", "must be positive");
-    if (ca.i(2, "LCIDAB") != 0) ca.error(1102, 2, "LCIDAB", "airbag fabric thickness curve of the soft constraint");
-    const double maxpar = ca.r(3, "MAXPAR");
-    if (maxpar != 0 && maxpar != 1.025) ca.error(1102, 3, "MAXPAR", "a parametric search extension other than the default 1.025 (IMPACT-3D extends a segment by 1 %)");
-    ca.i(4, "SBOPT");  // SOFT = 2 only (LS-DYNA ignores them otherwise)
-    ca.i(5, "DEPTH");
-    ca.i(6, "BSORT");  // IMPACT-3D sorts every cycle
-    const long frcfrq = ca.i(7, "FRCFRQ");
-    if (frcfrq != 0 && frcfrq != 1) ca.error(1102, 7, "FRCFRQ", "contact forces updated every FRCFRQ cycles (IMPACT-3D updates them every cycle)");
-    if (ka + 1 >= b.data.size()) return;
-    KCard cb = card(b, ka + 1, "optional card B", W(b, 8));
-    if (cb.r(0, "PENMAX") != 0) cb.error(1102, 0, "PENMAX", "a maximum penetration (IMPACT-3D: half the segment's element, README \"Contact\")");
-    // THKOPT 0: *CONTROL_CONTACT's SHLTHK, 1: SHLTHK of this card, 2: no thickness (the old
-    // way); automatic contacts always take the thickness (docs/contact.md "Contact")
-    ct.thkopt = int(cb.i(1, "THKOPT"));
-    if (ct.thkopt < 0 || ct.thkopt > 2) cb.error(1006, 1, "THKOPT", "0 *CONTROL_CONTACT's SHLTHK, 1 SHLTHK of this card, 2 no shell thickness");
-    ct.shlthk = int(cb.i(2, "SHLTHK"));
-    if (ct.shlthk < 0 || ct.shlthk > 2) cb.error(1006, 2, "SHLTHK", "0 shells at their mid-surface, 1 at +-t/2 except rigid shells, 2 at +-t/2");
-    const long snlog = cb.i(3, "SNLOG");  // IMPACT-3D has no shooting-node logic: 0 and 1 alike
-    if (snlog != 0 && snlog != 1) cb.error(1006, 3, "SNLOG", "0 or 1");
-    if (cb.i(4, "ISYM") != 0) cb.error(1102, 4, "ISYM", "symmetry-plane option of the contact");
-    if (cb.i(5, "I2D3D") != 0) cb.error(1102, 5, "I2D3D", "segment search order of shells and solids");
-    if (cb.r(6, "SLDTHK") != 0) cb.error(1102, 6, "SLDTHK", "a contact thickness of solids");
-    if (cb.r(7, "SLDSTF") != 0) cb.error(1102, 7, "SLDSTF", "a contact stiffness of solids");
-  }
-
-  // Data cards of a load keyword: with the _ID option each definition is an ID card followed
-  // by its data card (several pairs may follow one keyword).
-  // *MAT_ADD_EROSION: card 1 MID EXCL MXPRES MNEPS EFFEPS VOLEPS NUMFIP NCS, card 2 MNPRES SIGP1
-  // SIGVM MXEPS EPSSH SIGTH IMPULSE FAILTM; Tuler-Butcher and the damage cards (3 on) are not
-  // supported.  A value equal to EXCL switches its criterion off.
   // Keywords whose absence changes what the rest of the deck means: --lenient-keywords cannot
   // ignore them (*CASE blocks select cards per case; ignoring them applied every case's cards
   // at once).

@@ -335,3 +335,26 @@ TEST(KeywordCards, SetsByTheirTables) {
   EXPECT_EQ(r.lines()[2].find("deck.k:9: error 1006: *SET_SOLID_GENERAL set 6, field \"OPTION\" (cols 1-10)"), 0u) << r.lines()[2];
   EXPECT_EQ(r.lines()[3].find("deck.k:13: error 1200: *SET_SEGMENT card 1, field \"SID\" (cols 1-10)"), 0u) << r.lines()[3];
 }
+
+// The contacts: card 2's friction checks after DC is read (a bad FD first, as the reader has
+// always reported them), card 3's SFSB against SFSA before its later fields, the _ERODING_ card
+// required (the contact is dropped without it), and the keyword's side types.
+TEST(KeywordCards, ContactCardsByTheirTables) {
+  for (const char* n : {"CONTACT_SURFACE_TO_SURFACE", "CONTACT_AUTOMATIC_SINGLE_SURFACE", "CONTACT_ERODING_NODES_TO_SURFACE",
+                        "CONTACT_FORCE_TRANSDUCER_PENALTY"})
+    EXPECT_NE(find_keyword_spec(n), nullptr) << n;
+  EXPECT_EQ(find_keyword_spec("CONTACT_TIED_SURFACE_TO_SURFACE"), nullptr);
+  const std::string head = "*CONTROL_TERMINATION\n   1.0E-05\n";
+  const Read r = read(deck(head + "*CONTACT_SURFACE_TO_SURFACE\n" + card({"1", "1", "3", "4"}) + card({"-1.0", "x", "-2.0"}) +
+                           card({"0.0", "2.0", "y"}) + "*CONTACT_ERODING_SINGLE_SURFACE\n" + card({"1", "", "3"}) + card({""}) +
+                           card({""})));
+  const std::vector<std::string> l = r.lines();
+  ASSERT_GE(l.size(), 7u);
+  EXPECT_EQ(l[0].find("deck.k:5: error 1104: *CONTACT_SURFACE_TO_SURFACE card 1, field \"SURFBTYP\" (cols 31-40)"), 0u) << l[0];
+  EXPECT_EQ(l[1].find("deck.k:6: error 1002: *CONTACT_SURFACE_TO_SURFACE card 2, field \"FD\" (cols 11-20)"), 0u) << l[1];
+  EXPECT_EQ(l[2].find("deck.k:6: error 1219: *CONTACT_SURFACE_TO_SURFACE card 2, field \"FS\" (cols 1-10)"), 0u) << l[2];
+  EXPECT_EQ(l[3].find("deck.k:6: error 1003: *CONTACT_SURFACE_TO_SURFACE card 2, field \"DC\" (cols 21-30)"), 0u) << l[3];
+  EXPECT_EQ(l[4].find("deck.k:7: warning 2006: *CONTACT_SURFACE_TO_SURFACE card 3, field \"SFSB\" (cols 11-20)"), 0u) << l[4];
+  EXPECT_EQ(l[5].find("deck.k:7: error 1002: *CONTACT_SURFACE_TO_SURFACE card 3, field \"SAST/SBST/SFSAT/SFSBT/FSF/VSF\" (cols 21-30)"), 0u) << l[5];
+  EXPECT_EQ(l[6].find("deck.k:8: error 1316: *CONTACT_ERODING_SINGLE_SURFACE"), 0u) << l[6];
+}
