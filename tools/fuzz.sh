@@ -2,27 +2,31 @@
 # Builds the libFuzzer targets (fuzz/) with clang in build-fuzz/ and runs each of them
 # (docs/fuzzing.md, "Fuzzing and sanitizers").
 #
-#   tools/fuzz.sh                 short run: every target for 20 s, two at a time (CTest, label fuzz)
-#   tools/fuzz.sh --seconds N     every target for N s (short-run style, two at a time)
+#   tools/fuzz.sh                 replay (what CI runs): every target over its seeds, whole, and
+#                                 the inputs of tests/fuzz/TARGET, under ASan + UBSan, no
+#                                 mutation: the same inputs every run (CTest label fuzz)
+#   tools/fuzz.sh --seconds N     short mutation run: every target N s from a fresh random seed,
+#                                 two at a time (CTest label fuzz_mutate; not deterministic)
 #   tools/fuzz.sh --campaign N [TARGET...]
 #                                 long run: one target after the other, N s each, one process,
 #                                 nice 19, keeping the grown corpus in build-fuzz/fuzz-campaign/TARGET/
 #                                 and crash inputs as build-fuzz/fuzz-campaign/TARGET-crash-*
 #   tools/fuzz.sh --build-only    build and make the seed corpora only
 #
-# Crash inputs go to build-fuzz/fuzz-short/TARGET-crash-* (short run); replay one with
-# build-fuzz/fuzz/fuzz_TARGET FILE.  Keep each as a regression input in tests/fuzz/TARGET/.
+# Crash inputs go to build-fuzz/fuzz-short/TARGET-crash-* (mutation run) or fuzz-replay/ (replay);
+# replay one with build-fuzz/fuzz/fuzz_TARGET FILE.  Keep each as a regression input in
+# tests/fuzz/TARGET/ once it is fixed.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-mode=short
+mode=replay
 seconds=20
 targets=()
 while [ $# -gt 0 ]; do
   case "$1" in
-    --seconds) seconds="$2"; shift 2 ;;
+    --seconds) mode=mutate; seconds="$2"; shift 2 ;;
     --campaign) mode=campaign; seconds="$2"; shift 2 ;;
     --build-only) mode=build; shift ;;
-    -h|--help) sed -n '2,15p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,19p' "$0"; exit 0 ;;
     *) targets+=("$1"); shift ;;
   esac
 done
@@ -41,16 +45,20 @@ ASAN_OPTIONS=detect_leaks=0 python3 fuzz/make_corpus.py "$PWD" "$B/fuzz-corpus" 
   { cat "$B/corpus.log"; exit 1; }
 [ "$mode" = build ] && { cat "$B/corpus.log"; exit 0; }
 
-if [ "$mode" = short ]; then
+if [ "$mode" = replay ] || [ "$mode" = mutate ]; then
+  label='^fuzz$'
+  [ "$mode" = mutate ] && label='^fuzz_mutate$'
   regex=""
-  [ ${#targets[@]} -gt 0 ] && regex="-R ^fuzz_($(IFS='|'; echo "${targets[*]}"))\$"
+  prefix=fuzz_
+  [ "$mode" = mutate ] && prefix=fuzz_mutate_
+  [ ${#targets[@]} -gt 0 ] && regex="-R ^${prefix}($(IFS='|'; echo "${targets[*]}"))\$"
   # shellcheck disable=SC2086
-  ctest --test-dir "$B/fuzz" -L fuzz -j 2 --output-on-failure $regex
+  ctest --test-dir "$B/fuzz" -L "$label" -j 2 --output-on-failure $regex
   exit
 fi
 
 # campaign: one fuzzer process at a time, nice 19
-[ ${#targets[@]} -eq 0 ] && targets=(fixed_deck keyword_deck plot_database postimpact_database restart_dump command_file tolerances)
+[ ${#targets[@]} -eq 0 ] && targets=(fixed_deck keyword_deck plot_database postimpact_database restart_dump command_file tolerances mili_database)
 C="$B/fuzz-campaign"
 mkdir -p "$C"
 for t in "${targets[@]}"; do

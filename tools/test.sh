@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Installs what is missing, builds, and runs every test (CTest), then the short fuzz run
-# (every fuzz target for 20 s, tools/fuzz.sh; docs/fuzzing.md "Fuzzing and sanitizers").
+# (every fuzz target on its fixed sequence of inputs, tools/fuzz.sh; docs/fuzzing.md "Fuzzing and sanitizers").
 #
 #   tools/test.sh              the tests (build/) and the short fuzz run (build-fuzz/)
 #   tools/test.sh --no-fuzz    the tests only
