@@ -104,4 +104,92 @@ inline void update_stress_elastic_plastic_block(const MaterialConstants& m, Mate
   }
 }
 
+// The von Mises stress of each lane's trial stress, no back stress (calc_trial_deviator's q).
+inline void calc_von_mises_block(const MaterialPointBlock& k, Lanes q) {
+  IMPACT3D_FOR_LANES {
+    const double p = (k.sig[0][l] + k.sig[1][l] + k.sig[2][l]) * (1.0 / 3.0);
+    const double s0 = k.sig[0][l] - p, s1 = k.sig[1][l] - p, s2 = k.sig[2][l] - p;
+    q[l] = std::sqrt(1.5 * (s0 * s0 + s1 * s1 + s2 * s2 +
+                            2.0 * (k.sig[3][l] * k.sig[3][l] + k.sig[4][l] * k.sig[4][l] + k.sig[5][l] * k.sig[5][l])));
+  }
+}
+
+// The plastic strain increment for trial von Mises stress q at plastic strain e0 of the
+// piecewise-linear flow stress R x (curve_sig + curve_slope (e - curve_eps)) (types 10 and 24;
+// 0 when the root is not positive: elastic; R = 1 is the rate-free form exactly).  The block
+// form below repeats these operations lane by lane.
+inline double calc_piecewise_linear_increment(const MaterialConstants& m, double q, double e0, double R) {
+  const double* ce = m.curve_eps.data();
+  const double* cs = m.curve_sig.data();
+  const double* ch = m.curve_slope.data();
+  const int ns = int(m.curve_slope.size());
+  const double G3 = 3.0 * m.G;
+  double de = 0.0;
+  bool found = false;
+  for (int i = 0; i < ns; ++i) {
+    const double h = cs[i] + ch[i] * (e0 - ce[i]);
+    const double cand = (q - R * h) / (G3 + R * ch[i]);
+    const double e = e0 + cand;
+    const double lo = i == 0 ? -HUGE_VAL : ce[i];
+    const double hi = i == ns - 1 ? HUGE_VAL : ce[i + 1];
+    if (!found && e >= lo && e <= hi) {
+      de = cand;
+      found = true;
+    }
+  }
+  return de > 0.0 ? de : 0.0;
+}
+
+// The plastic strain increment de of each lane for the piecewise-linear flow stress R x
+// (curve_sig + curve_slope (e - curve_eps)) of the material's segments: on each segment i the
+// candidate (q - R h_i(e0)) / (3G + R slope_i), taken where e0 + candidate lies on segment i
+// (the first such segment; de <= 0: elastic).  R = 1 gives the rate-free form exactly.
+inline void calc_piecewise_linear_increment_block(const MaterialConstants& m, const MaterialPointBlock& k, const Lanes q,
+                                                  const Lanes R, Lanes de) {
+  alignas(64) Lanes found;
+  IMPACT3D_FOR_LANES {
+    de[l] = 0.0;
+    found[l] = 0.0;
+  }
+  const double* ce = m.curve_eps.data();
+  const double* cs = m.curve_sig.data();
+  const double* ch = m.curve_slope.data();
+  const int ns = int(m.curve_slope.size());
+  const double G3 = 3.0 * m.G;
+  for (int i = 0; i < ns; ++i) {
+    const double cei = ce[i], csi = cs[i], chi = ch[i];
+    const double lo = i == 0 ? -HUGE_VAL : cei;
+    const double hi = i == ns - 1 ? HUGE_VAL : ce[i + 1];
+    IMPACT3D_FOR_LANES {
+      const double e0 = k.eps_p[l];
+      const double h = csi + chi * (e0 - cei);
+      const double cand = (q[l] - R[l] * h) / (G3 + R[l] * chi);
+      const double e = e0 + cand;
+      const bool take = found[l] == 0.0 && e >= lo && e <= hi;
+      de[l] = take ? cand : de[l];
+      found[l] = take ? 1.0 : found[l];
+    }
+  }
+}
+
+// apply_radial_return in the lanes with de > 0 (q: the trial von Mises stress), and their
+// plastic strain and yield flag.
+inline void apply_radial_return_block(double G3, const Lanes q, const Lanes de, MaterialPointBlock& k) {
+  IMPACT3D_FOR_LANES {
+    const double dl = de[l] > 0.0 ? de[l] : 0.0;
+    const bool yields = dl > 0.0;
+    const double p = (k.sig[0][l] + k.sig[1][l] + k.sig[2][l]) * (1.0 / 3.0);
+    const double rs = G3 * dl / q[l];
+    const double s0 = k.sig[0][l] - p, s1 = k.sig[1][l] - p, s2 = k.sig[2][l] - p;
+    k.sig[0][l] = yields ? k.sig[0][l] - rs * s0 : k.sig[0][l];
+    k.sig[1][l] = yields ? k.sig[1][l] - rs * s1 : k.sig[1][l];
+    k.sig[2][l] = yields ? k.sig[2][l] - rs * s2 : k.sig[2][l];
+    k.sig[3][l] = yields ? k.sig[3][l] - rs * k.sig[3][l] : k.sig[3][l];
+    k.sig[4][l] = yields ? k.sig[4][l] - rs * k.sig[4][l] : k.sig[4][l];
+    k.sig[5][l] = yields ? k.sig[5][l] - rs * k.sig[5][l] : k.sig[5][l];
+    k.eps_p[l] = yields ? k.eps_p[l] + dl : k.eps_p[l];
+    k.yielded[l] = yields ? 1.0 : k.yielded[l];
+  }
+}
+
 }  // namespace impact3d

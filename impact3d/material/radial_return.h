@@ -10,6 +10,34 @@
 
 namespace impact3d {
 
+// The trial stress's mean p, deviator (s0, s1, s2; the shears are sig[3..5]) and von Mises
+// stress q (no back stress), in the one order of operations every kernel uses (same bits).
+struct TrialDeviator {
+  double p, s0, s1, s2, q;
+};
+
+inline TrialDeviator calc_trial_deviator(const double sig[6]) {
+  TrialDeviator t;
+  t.p = (sig[0] + sig[1] + sig[2]) * (1.0 / 3.0);
+  t.s0 = sig[0] - t.p;
+  t.s1 = sig[1] - t.p;
+  t.s2 = sig[2] - t.p;
+  t.q = std::sqrt(1.5 * (t.s0 * t.s0 + t.s1 * t.s1 + t.s2 * t.s2 + 2.0 * (sig[3] * sig[3] + sig[4] * sig[4] + sig[5] * sig[5])));
+  return t;
+}
+
+// The radial return of the trial stress by the plastic strain increment de > 0:
+// sigma <- sigma - (3 G de / q) s, written as sig - rs s.
+inline void apply_radial_return(double G3, double de, const TrialDeviator& t, double sig[6]) {
+  const double rs = G3 * de / t.q;
+  sig[0] -= rs * t.s0;
+  sig[1] -= rs * t.s1;
+  sig[2] -= rs * t.s2;
+  sig[3] -= rs * sig[3];
+  sig[4] -= rs * sig[4];
+  sig[5] -= rs * sig[5];
+}
+
 template <class Flow>
 double solve_radial_return(double q, double G3, double e0, Flow&& flow) {
   double s, ds;

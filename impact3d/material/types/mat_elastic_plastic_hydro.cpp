@@ -23,6 +23,7 @@
 
 #include "impact3d/material/material_block.h"
 #include "impact3d/material/material_types.h"
+#include "impact3d/material/radial_return.h"
 
 namespace impact3d {
 
@@ -109,96 +110,23 @@ void echo(std::ostream& os, const MaterialData& md) {
   if (md.fail_strain > 0) echo_line(os, "failure plastic strain (deletion)", f6(md.fail_strain));
 }
 
-// The plastic strain increment for trial von Mises stress q at plastic strain e0 (0: elastic).
-double calc_plastic_strain_increment(const MaterialConstants& m, double q, double e0) {
-  const double* ce = m.curve_eps.data();
-  const double* cs = m.curve_sig.data();
-  const double* ch = m.curve_slope.data();
-  const int ns = int(m.curve_slope.size());
-  const double G3 = 3.0 * m.G;
-  double de = 0.0;
-  bool found = false;
-  for (int i = 0; i < ns; ++i) {
-    const double h = cs[i] + ch[i] * (e0 - ce[i]);
-    const double cand = (q - h) / (G3 + ch[i]);
-    const double e = e0 + cand;
-    const double lo = i == 0 ? -HUGE_VAL : ce[i];
-    const double hi = i == ns - 1 ? HUGE_VAL : ce[i + 1];
-    const bool valid = e >= lo && e <= hi;
-    if (!found && valid) {
-      de = cand;
-      found = true;
-    }
-  }
-  return de > 0.0 ? de : 0.0;
-}
-
 void update_point(const MaterialConstants& m, const double d[6], double dt, SolidPointState& s) {
   update_stress_elastic(m, d, dt, s.sig);  // elastic trial (the mean stress: the EOS's, after)
-  double* sig = s.sig;
-  const double p = (sig[0] + sig[1] + sig[2]) * (1.0 / 3.0);
-  const double s0 = sig[0] - p, s1 = sig[1] - p, s2 = sig[2] - p;
-  const double xx = s0 * s0 + s1 * s1 + s2 * s2 + 2.0 * (sig[3] * sig[3] + sig[4] * sig[4] + sig[5] * sig[5]);
-  const double q = std::sqrt(1.5 * xx);
-  const double de = calc_plastic_strain_increment(m, q, s.eps_p);
+  const TrialDeviator t = calc_trial_deviator(s.sig);
+  const double de = calc_piecewise_linear_increment(m, t.q, s.eps_p, 1.0);
   if (!(de > 0.0)) return;
-  const double rs = 3.0 * m.G * de / q;
-  sig[0] -= rs * s0;
-  sig[1] -= rs * s1;
-  sig[2] -= rs * s2;
-  sig[3] -= rs * sig[3];
-  sig[4] -= rs * sig[4];
-  sig[5] -= rs * sig[5];
+  apply_radial_return(3.0 * m.G, de, t, s.sig);
   s.eps_p += de;
   s.yielded = 1.0;
 }
 
 void update_block(const MaterialConstants& m, MaterialPointBlock& k, double dt) {
   update_stress_elastic_block(m, k.d, dt, k.sig);  // elastic trial
-  alignas(64) Lanes q, de, found;
-  IMPACT3D_FOR_LANES {
-    const double p = (k.sig[0][l] + k.sig[1][l] + k.sig[2][l]) * (1.0 / 3.0);
-    const double s0 = k.sig[0][l] - p, s1 = k.sig[1][l] - p, s2 = k.sig[2][l] - p;
-    const double xx = s0 * s0 + s1 * s1 + s2 * s2 +
-                      2.0 * (k.sig[3][l] * k.sig[3][l] + k.sig[4][l] * k.sig[4][l] + k.sig[5][l] * k.sig[5][l]);
-    q[l] = std::sqrt(1.5 * xx);
-    de[l] = 0.0;
-    found[l] = 0.0;
-  }
-  const double* ce = m.curve_eps.data();
-  const double* cs = m.curve_sig.data();
-  const double* ch = m.curve_slope.data();
-  const int ns = int(m.curve_slope.size());
-  const double G3 = 3.0 * m.G;
-  for (int i = 0; i < ns; ++i) {
-    const double cei = ce[i], csi = cs[i], chi = ch[i];
-    const double lo = i == 0 ? -HUGE_VAL : cei;
-    const double hi = i == ns - 1 ? HUGE_VAL : ce[i + 1];
-    IMPACT3D_FOR_LANES {
-      const double e0 = k.eps_p[l];
-      const double h = csi + chi * (e0 - cei);
-      const double cand = (q[l] - h) / (G3 + chi);
-      const double e = e0 + cand;
-      const bool take = found[l] == 0.0 && e >= lo && e <= hi;
-      de[l] = take ? cand : de[l];
-      found[l] = take ? 1.0 : found[l];
-    }
-  }
-  IMPACT3D_FOR_LANES {
-    const double dl = de[l] > 0.0 ? de[l] : 0.0;
-    const bool yields = dl > 0.0;
-    const double p = (k.sig[0][l] + k.sig[1][l] + k.sig[2][l]) * (1.0 / 3.0);
-    const double rs = G3 * dl / q[l];
-    const double s0 = k.sig[0][l] - p, s1 = k.sig[1][l] - p, s2 = k.sig[2][l] - p;
-    k.sig[0][l] = yields ? k.sig[0][l] - rs * s0 : k.sig[0][l];
-    k.sig[1][l] = yields ? k.sig[1][l] - rs * s1 : k.sig[1][l];
-    k.sig[2][l] = yields ? k.sig[2][l] - rs * s2 : k.sig[2][l];
-    k.sig[3][l] = yields ? k.sig[3][l] - rs * k.sig[3][l] : k.sig[3][l];
-    k.sig[4][l] = yields ? k.sig[4][l] - rs * k.sig[4][l] : k.sig[4][l];
-    k.sig[5][l] = yields ? k.sig[5][l] - rs * k.sig[5][l] : k.sig[5][l];
-    k.eps_p[l] = yields ? k.eps_p[l] + dl : k.eps_p[l];
-    k.yielded[l] = yields ? 1.0 : k.yielded[l];
-  }
+  alignas(64) Lanes q, de, R;
+  calc_von_mises_block(k, q);
+  IMPACT3D_FOR_LANES R[l] = 1.0;
+  calc_piecewise_linear_increment_block(m, k, q, R, de);
+  apply_radial_return_block(3.0 * m.G, q, de, k);
 }
 
 // EPSi / ESi: keyword cards 2-5 (EPS1-8, EPS9-16, ES1-8, ES9-16), fixed cards 4-7.

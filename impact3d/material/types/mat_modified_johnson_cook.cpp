@@ -63,9 +63,8 @@ double max_shear_stress(const double sig[6]) {
 void update_point(const MaterialConstants& m, const double d[6], double dt, SolidPointState& st) {
   update_stress_elastic(m, d, dt, st.sig);  // elastic trial
   double* sig = st.sig;
-  const double p = (sig[0] + sig[1] + sig[2]) * (1.0 / 3.0);
-  const double s0 = sig[0] - p, s1 = sig[1] - p, s2 = sig[2] - p;
-  const double q = std::sqrt(1.5 * (s0 * s0 + s1 * s1 + s2 * s2 + 2.0 * (sig[3] * sig[3] + sig[4] * sig[4] + sig[5] * sig[5])));
+  const TrialDeviator t = calc_trial_deviator(sig);
+  const double p = t.p, s0 = t.s0, s1 = t.s1, s2 = t.s2, q = t.q;
   const double theta = thermal_factor(m, st.hist[hTemperature]);
   const double e0 = st.eps_p, A = m.k[kA], B = m.k[kB], N = m.k[kN], C = m.k[kC];
   const double rate_scale = dt > 0.0 ? 1.0 / (dt * m.k[kE0dot]) : 0.0;

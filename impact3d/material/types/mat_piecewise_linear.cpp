@@ -212,31 +212,6 @@ void calc_curve_flow(const MaterialConstants& m, double e, double& s, double& ds
   s = m.curve_sig[std::size_t(i)] + ds * (e - m.curve_eps[std::size_t(i)]);
 }
 
-// The plastic strain increment for trial von Mises stress q, plastic strain e0, rate factor R
-// (0 when the root is not positive: elastic).  The block form repeats these operations.
-double calc_plastic_strain_increment(const MaterialConstants& m, double q, double e0, double R) {
-  const double* ce = m.curve_eps.data();
-  const double* cs = m.curve_sig.data();
-  const double* ch = m.curve_slope.data();
-  const int ns = int(m.curve_slope.size());
-  const double G3 = 3.0 * m.G;
-  double de = 0.0;
-  bool found = false;
-  for (int i = 0; i < ns; ++i) {
-    const double h = cs[i] + ch[i] * (e0 - ce[i]);
-    const double cand = (q - R * h) / (G3 + R * ch[i]);
-    const double e = e0 + cand;
-    const double lo = i == 0 ? -HUGE_VAL : ce[i];
-    const double hi = i == ns - 1 ? HUGE_VAL : ce[i + 1];
-    const bool valid = e >= lo && e <= hi;
-    if (!found && valid) {
-      de = cand;
-      found = true;
-    }
-  }
-  return de > 0.0 ? de : 0.0;
-}
-
 // VP = 1: the plastic strain increment of q - 3 G de = R(de/dt) sigma_y(e0 + de).
 double calc_viscoplastic_strain_increment(const MaterialConstants& m, double q, double e0, double dt) {
   const double inv_dt = dt > 0.0 ? 1.0 / dt : 0.0;
@@ -251,27 +226,17 @@ double calc_viscoplastic_strain_increment(const MaterialConstants& m, double q, 
 
 void update_point(const MaterialConstants& m, const double d[6], double dt, SolidPointState& s) {
   update_stress_elastic(m, d, dt, s.sig);  // elastic trial
-  double* sig = s.sig;
-  const double p = (sig[0] + sig[1] + sig[2]) * (1.0 / 3.0);
-  const double s0 = sig[0] - p, s1 = sig[1] - p, s2 = sig[2] - p;
-  const double xx = s0 * s0 + s1 * s1 + s2 * s2 + 2.0 * (sig[3] * sig[3] + sig[4] * sig[4] + sig[5] * sig[5]);
-  const double q = std::sqrt(1.5 * xx);
+  const TrialDeviator t = calc_trial_deviator(s.sig);
   double de;
   if (m.k[kViscoplastic] != 0.0) {
-    de = calc_viscoplastic_strain_increment(m, q, s.eps_p, dt);
+    de = calc_viscoplastic_strain_increment(m, t.q, s.eps_p, dt);
   } else {
     double R = 1.0, dR;
     if (m.rate_c > 0.0 || !m.rate_x.empty()) calc_rate_factor(m, rate_norm(d), R, dR);
-    de = calc_plastic_strain_increment(m, q, s.eps_p, R);
+    de = calc_piecewise_linear_increment(m, t.q, s.eps_p, R);
   }
   if (!(de > 0.0)) return;
-  const double rs = 3.0 * m.G * de / q;
-  sig[0] -= rs * s0;
-  sig[1] -= rs * s1;
-  sig[2] -= rs * s2;
-  sig[3] -= rs * sig[3];
-  sig[4] -= rs * sig[4];
-  sig[5] -= rs * sig[5];
+  apply_radial_return(3.0 * m.G, de, t, s.sig);
   s.eps_p += de;
   s.yielded = 1.0;
 }
@@ -282,7 +247,7 @@ void update_block(const MaterialConstants& m, MaterialPointBlock& k, double dt) 
     return;
   }
   update_stress_elastic_block(m, k.d, dt, k.sig);  // elastic trial
-  alignas(64) Lanes R, q, de, found;
+  alignas(64) Lanes R, q, de;
   if (m.rate_c > 0.0 || !m.rate_x.empty()) {
     IMPACT3D_FOR_LANES {
       R[l] = std::sqrt(k.d[0][l] * k.d[0][l] + k.d[1][l] * k.d[1][l] + k.d[2][l] * k.d[2][l] +
@@ -295,49 +260,9 @@ void update_block(const MaterialConstants& m, MaterialPointBlock& k, double dt) 
   } else {
     IMPACT3D_FOR_LANES R[l] = 1.0;
   }
-  IMPACT3D_FOR_LANES {
-    const double p = (k.sig[0][l] + k.sig[1][l] + k.sig[2][l]) * (1.0 / 3.0);
-    const double s0 = k.sig[0][l] - p, s1 = k.sig[1][l] - p, s2 = k.sig[2][l] - p;
-    const double xx = s0 * s0 + s1 * s1 + s2 * s2 +
-                      2.0 * (k.sig[3][l] * k.sig[3][l] + k.sig[4][l] * k.sig[4][l] + k.sig[5][l] * k.sig[5][l]);
-    q[l] = std::sqrt(1.5 * xx);
-    de[l] = 0.0;
-    found[l] = 0.0;
-  }
-  const double* ce = m.curve_eps.data();
-  const double* cs = m.curve_sig.data();
-  const double* ch = m.curve_slope.data();
-  const int ns = int(m.curve_slope.size());
-  const double G3 = 3.0 * m.G;
-  for (int i = 0; i < ns; ++i) {
-    const double cei = ce[i], csi = cs[i], chi = ch[i];
-    const double lo = i == 0 ? -HUGE_VAL : cei;
-    const double hi = i == ns - 1 ? HUGE_VAL : ce[i + 1];
-    IMPACT3D_FOR_LANES {
-      const double e0 = k.eps_p[l];
-      const double h = csi + chi * (e0 - cei);
-      const double cand = (q[l] - R[l] * h) / (G3 + R[l] * chi);
-      const double e = e0 + cand;
-      const bool take = found[l] == 0.0 && e >= lo && e <= hi;
-      de[l] = take ? cand : de[l];
-      found[l] = take ? 1.0 : found[l];
-    }
-  }
-  IMPACT3D_FOR_LANES {
-    const double dl = de[l] > 0.0 ? de[l] : 0.0;
-    const bool yields = dl > 0.0;
-    const double p = (k.sig[0][l] + k.sig[1][l] + k.sig[2][l]) * (1.0 / 3.0);
-    const double rs = G3 * dl / q[l];
-    const double s0 = k.sig[0][l] - p, s1 = k.sig[1][l] - p, s2 = k.sig[2][l] - p;
-    k.sig[0][l] = yields ? k.sig[0][l] - rs * s0 : k.sig[0][l];
-    k.sig[1][l] = yields ? k.sig[1][l] - rs * s1 : k.sig[1][l];
-    k.sig[2][l] = yields ? k.sig[2][l] - rs * s2 : k.sig[2][l];
-    k.sig[3][l] = yields ? k.sig[3][l] - rs * k.sig[3][l] : k.sig[3][l];
-    k.sig[4][l] = yields ? k.sig[4][l] - rs * k.sig[4][l] : k.sig[4][l];
-    k.sig[5][l] = yields ? k.sig[5][l] - rs * k.sig[5][l] : k.sig[5][l];
-    k.eps_p[l] = yields ? k.eps_p[l] + dl : k.eps_p[l];
-    k.yielded[l] = yields ? 1.0 : k.yielded[l];
-  }
+  calc_von_mises_block(k, q);
+  calc_piecewise_linear_increment_block(m, k, q, R, de);
+  apply_radial_return_block(3.0 * m.G, q, de, k);
 }
 
 MaterialParam table_param(const char* key, int card, int field, int index) {

@@ -44,9 +44,8 @@ void update_stress_power_law(const MaterialConstants& m, const double d[6], doub
                                                   2.0 * (d[3] * d[3] + d[4] * d[4] + d[5] * d[5])) / m.rate_c,
                                         m.rate_inv_p)
                        : 1.0;
-  const double p = (sig[0] + sig[1] + sig[2]) * (1.0 / 3.0);
-  const double s0 = sig[0] - p, s1 = sig[1] - p, s2 = sig[2] - p;
-  const double q = std::sqrt(1.5 * (s0 * s0 + s1 * s1 + s2 * s2 + 2.0 * (sig[3] * sig[3] + sig[4] * sig[4] + sig[5] * sig[5])));
+  const TrialDeviator t = calc_trial_deviator(sig);
+  const double q = t.q;
   const double k = m.k[kK], n = m.k[kN], eyp = m.k[kEyp];
   const double e0 = st.eps_p, rate_scale = vp ? 1.0 / (dt * m.rate_c) : 0.0;
   const double de = solve_radial_return(q, 3.0 * m.G, e0, [&](double e, double& s, double& ds) {
@@ -64,13 +63,7 @@ void update_stress_power_law(const MaterialConstants& m, const double d[6], doub
     ds = dh == HUGE_VAL || dRv == HUGE_VAL ? HUGE_VAL : Rv * dh + h * dRv;
   });
   if (!(de > 0.0)) return;
-  const double rs = 3.0 * m.G * de / q;
-  sig[0] -= rs * s0;
-  sig[1] -= rs * s1;
-  sig[2] -= rs * s2;
-  sig[3] -= rs * sig[3];
-  sig[4] -= rs * sig[4];
-  sig[5] -= rs * sig[5];
+  apply_radial_return(3.0 * m.G, de, t, sig);
   st.eps_p += de;
   st.yielded = 1.0;
 }
