@@ -553,6 +553,80 @@ void add_wall_and_constraint_specs(std::vector<KeywordSpec>& t) {
                "every node (of any element, or of none) within TOL of the plane"});
 }
 
+// *RIGIDWALL_PLANAR (_MOVING) (_ID): card 1 the nodes and the refused options, card 2 the
+// plane, card 3 the moving wall's mass and velocity.
+void add_planar_wall_specs(std::vector<KeywordSpec>& t) {
+  t.push_back({{"RIGIDWALL_PLANAR"}, KeywordFamily::loads_bcs, false,
+               {{"ID card", 1, 10, per_field, {{"RWID", 0, I, 0, false, {}, "wall id and heading: not read"}}, "with _ID, before each wall"},
+                {"card 1", 7, 10, per_field, {
+                   {"NSID", 0, I, 0, false, {}, "node set the wall acts on (0: all nodes)"},
+                   {"NSIDEX", 1, I, 0, false, {}, "node set exempted"},
+                   {"BOXID", 2, I, 0, false, {}, "only the nodes in this box"},
+                   {"OFFSET", 3, E, 0, false, {nonzero(1102, "wall offset")}, "offset of the wall"},
+                   {"BIRTH", 4, E, 0, false, {nonzero(1102, "wall birth time")}, "birth time"},
+                   {"DEATH", 5, E, 0, false, {inside(0, 0, 0, nullptr), below(1e20, 1102, "wall death time")}, "death time (0 or >= 1e20: none)"},
+                   plain("RWKSF", 6, E),
+               }, "each wall; it and card 2 missing: error 1316"},
+                {"card 2", 8, 10, per_field, {
+                   {"XT", 0, E, 0, false, {}, "tail of the normal (a point of the wall)"}, {"YT", 1, E, 0, false, {}, ""}, {"ZT", 2, E, 0, false, {}, ""},
+                   {"XH", 3, E, 0, false, {}, "head: the normal points from the tail toward it, into the model (tail = head: error 1213, named XT-ZH)"},
+                   {"YH", 4, E, 0, false, {}, ""}, {"ZH", 5, E, 0, false, {}, ""},
+                   {"FRIC", 6, E, 0, false, {outside(0, 1, 1219)}, "0 frictionless, 1 stick, between Coulomb (checked after the normal)", kByReader},
+                   {"WVEL", 7, E, 0, false, {nonzero(2006, "critical velocity for stick (IMPACT-3D sticks for FRIC = 1)")}, "critical velocity for stick"},
+               }, "after card 1"},
+                {"card 3", 2, 10, per_field, {
+                   checked_after({"MASS", 0, E, 0, false, {outside(0, kInf, 1003, "a moving wall needs a positive mass", true)}, "mass of the wall"}, 1),
+                   {"V0", 1, E, 0, false, {}, "initial velocity along the normal"},
+               }, "with _MOVING (missing: error 1316)"}},
+               "one wall a pair of cards (three with _MOVING), several walls a keyword; *RIGIDWALL_PLANAR_MOVING (_ID) is this "
+               "entry with card 3"});
+}
+
+// The spot welds' failure fields SN SS N M (the same columns in both keywords); N and M are
+// checked against SN and SS by the family's reader.
+std::vector<KeywordField> weld_failure_fields() {
+  return {checked_after({"SN", 2, E, 0, false, {below(0, 1003, "must not be negative (0: no failure by the normal force)")},
+                         "normal force at failure (0: none)"}, 5),
+          checked_after({"SS", 3, E, 0, false, {below(0, 1003, "must not be negative (0: no failure by the shear force)")},
+                         "shear force at failure (0: none)"}, 5),
+          {"N", 4, E, 0, false, {}, "exponent of the normal force (SN given: not positive error 1003)"},
+          {"M", 5, E, 0, false, {}, "exponent of the shear force (SS given: not positive error 1003)"}};
+}
+KeywordField ductile_failure(const char* name, int index) {
+  return {name, index, E, 1e20, false,
+          {inside(0, 0, 0, nullptr), below(1e19, 1102, "ductile failure of spot welds (the effective plastic strain at their nodes)")},
+          "plastic strain at failure (0 or >= 1e19: none)"};
+}
+
+// *CONSTRAINED_SPOTWELD and *CONSTRAINED_GENERALIZED_WELD_SPOT (_ID: an ID card before a weld).
+void add_spot_weld_specs(std::vector<KeywordSpec>& t) {
+  const KeywordCardLayout id{"ID card", 1, 10, per_field, {{"WID", 0, I, 0, false, {}, "weld id (the weld is then named \"WID n\")"}},
+                             "with _ID: the first card and any card of an id and a heading (or blank) before a weld"};
+  t.push_back({{"CONSTRAINED_SPOTWELD"}, KeywordFamily::loads_bcs, false,
+               {id,
+                {"", 8, 10, per_field, fields_of(std::vector<KeywordField>{
+                   {"N1", 0, I, 0, false, {}, "first node"},
+                   {"N2", 1, I, 0, false, {}, "second node"}}, weld_failure_fields(), std::vector<KeywordField>{
+                   {"TF", 6, E, 1e20, false, {}, "failure time"},
+                   ductile_failure("EP", 7)}),
+                 "each weld (blank cards skipped)"}},
+               "a rigid link between two shell nodes, failing by force or time"});
+  t.push_back({{"CONSTRAINED_GENERALIZED_WELD_SPOT"}, KeywordFamily::loads_bcs, false,
+               {id,
+                {"card 1", 5, 10, per_field, {
+                   {"NSID", 0, I, 0, false, {}, "node set of the weld"},
+                   {"CID", 1, I, 0, false, {}, "coordinate system of the forces"},
+                   {"FILTER", 2, I, 0, false, {inside(2, kInf, 1102, "filtering of the weld forces")}, "force filter"},
+                   {"WINDOW", 3, E, 0, false, {nonzero(1102, "filtering of the weld forces")}, "filter window"},
+                   {"NPRT", 4, I, 0, false, {inside(1, 1, 2006, "the weld forces are not printed (no rbdout)")}, "print flag"},
+               }, "each weld (blank cards skipped)"},
+                {"card 2", 6, 10, per_field, fields_of(std::vector<KeywordField>{
+                   {"TFAIL", 0, E, 1e20, false, {}, "failure time"},
+                   ductile_failure("EPSF", 1)}, weld_failure_fields()),
+                 "after card 1 (missing: error 1316)"}},
+               "a rigid link among the nodes of a set, failing by force or time"});
+}
+
 // *INITIAL_TEMPERATURE and *INITIAL_VELOCITY: the initial conditions.
 void add_initial_condition_specs(std::vector<KeywordSpec>& t) {
   const KeywordFamily F = KeywordFamily::loads_bcs;
@@ -632,6 +706,8 @@ std::vector<KeywordSpec> loads_bcs_specs() {
   add_load_specs(t);
   add_damping_and_spc_specs(t);
   add_wall_and_constraint_specs(t);
+  add_planar_wall_specs(t);
+  add_spot_weld_specs(t);
   add_initial_condition_specs(t);
   return t;
 }

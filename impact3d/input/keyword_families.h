@@ -217,11 +217,22 @@ struct RGlobalConstraint {  // *CONSTRAINED_GLOBAL: one plane
   Ref ref;                   // TC
 };
 
-struct RGeomWall {  // *RIGIDWALL_GEOMETRIC_CYLINDER (_DISPLAY), resolved with the planar walls
-  std::string keyword;  // as written
-  int nsid = 0, nsidex = 0, boxid = 0;  // NSID 0: all nodes
-  Ref nsid_ref, nsidex_ref, boxid_ref;
-  StoneWall w;  // tail, head, friction, radius, length
+// *RIGIDWALL_PLANAR (_MOVING) and *RIGIDWALL_GEOMETRIC_CYLINDER (_DISPLAY) (the cylinders are
+// resolved after the planar walls)
+struct RWall {
+  std::string keyword;  // as written (*RIGIDWALL_PLANAR_ID, ...)
+  int nsid = 0;         // 0: all nodes
+  Ref nsid_ref;
+  int nsidex = 0, boxid = 0;  // exempted node set, box (only the nodes inside)
+  Ref nsidex_ref, boxid_ref;
+  StoneWall w;
+};
+struct RWeld {            // *CONSTRAINED_SPOTWELD or *CONSTRAINED_GENERALIZED_WELD_SPOT, resolved after nodes and sets
+  std::string keyword;
+  bool generalized = false;  // a node set (NSID) instead of two nodes
+  int n1 = 0, n2 = 0, nsid = 0, cid = 0, wid = 0;
+  double sn = 0, ss = 0, n = 0, m = 0, tfail = 0;
+  Ref ref, ref2, cid_ref;    // N1 (NSID), N2, CID
 };
 
 struct KeywordLoads {
@@ -232,7 +243,9 @@ struct KeywordLoads {
   std::vector<RTemperature> temperatures;
   std::vector<RSpc> spcs;
   std::vector<RGlobalConstraint> globals;  // *CONSTRAINED_GLOBAL, in deck order
-  std::vector<RGeomWall> geometric_walls;  // *RIGIDWALL_GEOMETRIC_CYLINDER, in deck order
+  std::vector<RWall> walls;            // *RIGIDWALL_PLANAR (_MOVING), in deck order
+  std::vector<RWall> geometric_walls;  // *RIGIDWALL_GEOMETRIC_CYLINDER, in deck order
+  std::vector<RWeld> welds;            // spot welds, in deck order
   std::vector<Ref> rot_refs;  // first rotational field of each *BOUNDARY_SPC card that has one
   Ref w_ref;                  // last rotational initial velocity (message when no shell node takes it)
   RLoad damping;             // *DAMPING_GLOBAL (lcid, sf = VALDMP, dir = STX STY STZ)
@@ -243,7 +256,8 @@ struct KeywordLoads {
 
 // Reads *LOAD_NODE_POINT / _SET, *LOAD_RIGID_BODY, *LOAD_SEGMENT (_SET), *LOAD_BODY_X / _Y / _Z
 // / _VECTOR / _PARTS, *DEFINE_CURVE, *DAMPING_GLOBAL, *BOUNDARY_PRESCRIBED_MOTION_NODE / _SET / _RIGID,
-// *BOUNDARY_SPC_NODE / _SET (_BIRTH_DEATH), *CONSTRAINED_GLOBAL, *RIGIDWALL_GEOMETRIC_CYLINDER, *INITIAL_VELOCITY (_NODE, _GENERATION) and *INITIAL_TEMPERATURE_NODE
+// *BOUNDARY_SPC_NODE / _SET (_BIRTH_DEATH), *CONSTRAINED_GLOBAL, *CONSTRAINED_SPOTWELD,
+// *CONSTRAINED_GENERALIZED_WELD_SPOT, *RIGIDWALL_PLANAR (_MOVING), *RIGIDWALL_GEOMETRIC_CYLINDER, *INITIAL_VELOCITY (_NODE, _GENERATION) and *INITIAL_TEMPERATURE_NODE
 // / _SET into l; false if the keyword is none of them.
 bool read_loads_bcs(const Block& b, KeywordContext& ctx, KeywordLoads& l);
 

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 namespace impact3d::kw {
 
@@ -243,6 +244,35 @@ void read_constrained_global(const Block& b, KeywordContext& ctx, const KeywordS
   }
 }
 
+// A wall's keyword and card 1 NSID NSIDEX BOXID; `id` gives an id its *INCLUDE_TRANSFORM
+// offset (kind 's' sets, 'd' boxes) where the family gives it.
+template <class Id>
+RWall wall_nodes(const Block& b, KeywordValues& v, Id id) {
+  RWall w;
+  w.keyword = upper(b.keyword);
+  w.nsid = id(int(v.integer("NSID")), 's');
+  w.nsid_ref = v.ref("NSID");
+  w.nsidex = id(int(v.integer("NSIDEX")), 's');
+  w.nsidex_ref = v.ref("NSIDEX");
+  w.boxid = id(int(v.integer("BOXID")), 'd');
+  w.boxid_ref = v.ref("BOXID");
+  return w;
+}
+
+// A wall's card 2 XT YT ZT XH YH ZH into its tail and head; false if they coincide (to 1e-12
+// of the coordinates).
+bool read_wall_axis(KeywordValues& v2, StoneWall& w) {
+  static const char* const names[] = {"XT", "YT", "ZT", "XH", "YH", "ZH"};
+  double len2 = 0, scale = 0;
+  for (std::size_t f = 0; f < 3; ++f) {
+    w.tail[f] = v2[names[f]];
+    w.head[f] = v2[names[3 + f]];
+    len2 += (w.head[f] - w.tail[f]) * (w.head[f] - w.tail[f]);
+    scale = std::max({scale, std::fabs(w.head[f]), std::fabs(w.tail[f])});
+  }
+  return std::sqrt(len2) > 1e-12 * scale && len2 != 0;
+}
+
 // *RIGIDWALL_GEOMETRIC_CYLINDER (_DISPLAY), with _ID an ID card before each wall: card 1 NSID
 // NSIDEX BOXID BIRTH DEATH, card 2 XT YT ZT XH YH ZH FRIC, card 3 RADCYL LENCYL NSEGS, and with
 // _DISPLAY card 4 PID RO E PR (the display part: read, no effect).
@@ -259,27 +289,13 @@ void read_geometric_walls(const Block& b, KeywordContext& ctx, const KeywordSpec
       return;
     }
     KeywordValues v = ctx.values(b, k, s.card("card 1"));
-    RGeomWall g;
-    g.keyword = upper(b.keyword);
-    g.nsid = ctx.xid(int(v.integer("NSID")), b, 's');
-    g.nsid_ref = v.ref("NSID");
-    g.nsidex = ctx.xid(int(v.integer("NSIDEX")), b, 's');
-    g.nsidex_ref = v.ref("NSIDEX");
-    g.boxid = ctx.xid(int(v.integer("BOXID")), b, 'd');
-    g.boxid_ref = v.ref("BOXID");
+    RWall g = wall_nodes(b, v, [&](int id, char kind) { return ctx.xid(id, b, kind); });
     const double death = v["DEATH"];
     if (death != 0 && death < 1e20) v.error(1102, "DEATH", "wall death time");
     KeywordValues v2 = ctx.values(b, k + 1, s.card("card 2"));
-    static const char* const names[] = {"XT", "YT", "ZT", "XH", "YH", "ZH"};
-    for (std::size_t f = 0; f < 3; ++f) g.w.tail[f] = v2[names[f]];
-    for (std::size_t f = 0; f < 3; ++f) g.w.head[f] = v2[names[3 + f]];
+    const bool axis = read_wall_axis(v2, g.w);
     g.w.friction = v2["FRIC"];
-    double len2 = 0, scale = 0;
-    for (std::size_t f = 0; f < 3; ++f) {
-      len2 += (g.w.head[f] - g.w.tail[f]) * (g.w.head[f] - g.w.tail[f]);
-      scale = std::max({scale, std::fabs(g.w.head[f]), std::fabs(g.w.tail[f])});
-    }
-    if (!(std::sqrt(len2) > 1e-12 * scale) || len2 == 0) v2.error(1213, "XT", "the cylinder's axis (tail to head) has no length");
+    if (!axis) v2.error(1213, "XT", "the cylinder's axis (tail to head) has no length");
     KeywordValues v3 = ctx.values(b, k + 2, s.card("card 3"));
     g.w.radius = v3["RADCYL"];
     g.w.length = v3["LENCYL"];
@@ -295,6 +311,108 @@ void read_geometric_walls(const Block& b, KeywordContext& ctx, const KeywordSpec
     }
     out.geometric_walls.push_back(g);
   }
+}
+
+// *RIGIDWALL_PLANAR (_MOVING) (_ID): per wall [ID card, not read], card 1 NSID NSIDEX BOXID
+// OFFSET BIRTH DEATH RWKSF, card 2 XT YT ZT XH YH ZH FRIC WVEL, with _MOVING card 3 MASS V0.
+// The ids get their *INCLUDE_TRANSFORM offsets once the deck is read (the reader's).
+void read_planar_walls(const Block& b, KeywordContext& ctx, const KeywordSpec& s, KeywordLoads& out) {
+  std::size_t k = 0;
+  while (k < b.data.size()) {
+    if (b.id_opt) ++k;  // RWID, heading
+    if (k + 1 >= b.data.size()) {
+      ctx.missing_card(b, "cards 1 and 2");
+      return;
+    }
+    KeywordValues v = ctx.values(b, k, s.card("card 1"));
+    RWall w = wall_nodes(b, v, [](int id, char) { return id; });
+    KeywordValues v2 = ctx.values(b, k + 1, s.card("card 2"));
+    w.w.friction = v2["FRIC"];
+    if (!read_wall_axis(v2, w.w)) v2.card().error(1213, 0, "XT-ZH");
+    v2.check("FRIC");
+    w.w.line = v.card().line();
+    k += 2;
+    if (b.moving_opt) {
+      if (k >= b.data.size()) {
+        ctx.missing_card(b, "card 3 (MASS, V0)");
+        return;
+      }
+      KeywordValues v3 = ctx.values(b, k, s.card("card 3"));
+      w.w.mass = v3["MASS"];
+      w.w.v0 = v3["V0"];
+      ++k;
+    }
+    out.walls.push_back(std::move(w));
+  }
+}
+
+// The failure fields SN SS N M of a spot weld's card: the exponents must be positive where
+// their force is given.
+void read_weld_failure(KeywordValues& v, RWeld& w) {
+  w.sn = v["SN"];
+  w.ss = v["SS"];
+  w.n = v["N"];
+  w.m = v["M"];
+  if (w.sn > 0 && !(w.n > 0)) v.error(1003, "N", "the exponent of the normal force must be positive when SN is given");
+  if (w.ss > 0 && !(w.m > 0)) v.error(1003, "M", "the exponent of the shear force must be positive when SS is given");
+}
+
+// *CONSTRAINED_SPOTWELD(_ID): per weld ([WID]) N1 N2 SN SS N M TF EP.
+void read_spot_welds(const Block& b, KeywordContext& ctx, const KeywordSpec& s, KeywordLoads& out) {
+  int wid = 0;
+  for (std::size_t k = 0; k < b.data.size(); ++k) {
+    if (is_blank(b.data[k].line->text)) continue;
+    if (is_id_card(b, k)) {
+      wid = int(ctx.values(b, k, s.card("ID card")).integer("WID"));
+      continue;
+    }
+    KeywordValues v = ctx.fields(b, k, s.card(""));
+    RWeld w;
+    w.keyword = upper(b.keyword);
+    w.wid = wid;
+    wid = 0;
+    w.n1 = int(v.integer("N1"));
+    w.n2 = int(v.integer("N2"));
+    w.ref = v.ref("N1");
+    w.ref2 = v.ref("N2");
+    read_weld_failure(v, w);
+    w.tfail = v["TF"];
+    v.rest();
+    out.welds.push_back(w);
+  }
+}
+
+// *CONSTRAINED_GENERALIZED_WELD_SPOT(_ID): per weld ([WID]) card 1 NSID CID FILTER WINDOW NPRT,
+// card 2 TFAIL EPSF SN SS N M.
+void read_generalized_welds(const Block& b, KeywordContext& ctx, const KeywordSpec& s, KeywordLoads& out) {
+  int wid = 0;
+  std::vector<std::size_t> cards;
+  for (std::size_t k = 0; k < b.data.size(); ++k) {
+    if (is_blank(b.data[k].line->text)) continue;
+    if (is_id_card(b, k) && cards.size() % 2 == 0) {
+      wid = int(ctx.values(b, k, s.card("ID card")).integer("WID"));
+      continue;
+    }
+    cards.push_back(k);
+    if (cards.size() % 2 == 1) continue;
+    KeywordValues v1 = ctx.fields(b, cards[cards.size() - 2], s.card("card 1"));
+    KeywordValues v2 = ctx.fields(b, k, s.card("card 2"));
+    RWeld w;
+    w.keyword = upper(b.keyword);
+    w.generalized = true;
+    w.wid = wid;
+    wid = 0;
+    w.nsid = int(v1.integer("NSID"));
+    w.ref = v1.ref("NSID");
+    w.cid = int(v1.integer("CID"));
+    w.cid_ref = v1.ref("CID");
+    v1.rest();
+    w.tfail = v2["TFAIL"];
+    v2["EPSF"];
+    read_weld_failure(v2, w);
+    out.welds.push_back(w);
+  }
+  if (cards.size() % 2 == 1) ctx.missing_card(b, "card 2 (TFAIL EPSF SN SS N M)");
 }
 
 // *INITIAL_TEMPERATURE_NODE (NID TEMP LOC per card) and _SET (NSID TEMP LOC; NSID 0: every
@@ -441,6 +559,23 @@ void read_curve(const Block& b, KeywordContext& ctx, const KeywordSpec& s, Keywo
   out.curve_refs.push_back(v.ref("LCID"));
 }
 
+// The keywords of the family read by one function of the same arguments.
+using FamilyReader = void (*)(const Block&, KeywordContext&, const KeywordSpec&, KeywordLoads&);
+const std::map<std::string, FamilyReader, std::less<>>& plain_readers() {
+  static const std::map<std::string, FamilyReader, std::less<>> r = {
+      {"DAMPING_GLOBAL", read_damping},
+      {"DEFINE_CURVE", read_curve},
+      {"CONSTRAINED_GLOBAL", read_constrained_global},
+      {"CONSTRAINED_SPOTWELD", read_spot_welds},
+      {"CONSTRAINED_GENERALIZED_WELD_SPOT", read_generalized_welds},
+      {"RIGIDWALL_PLANAR", read_planar_walls},
+      {"INITIAL_VELOCITY_NODE", read_velocity_nodes},
+      {"INITIAL_VELOCITY", read_initial_velocity},
+      {"INITIAL_VELOCITY_GENERATION", read_velocity_generation},
+  };
+  return r;
+}
+
 }  // namespace
 
 bool read_loads_bcs(const Block& b, KeywordContext& ctx, KeywordLoads& l) {
@@ -448,7 +583,9 @@ bool read_loads_bcs(const Block& b, KeywordContext& ctx, KeywordLoads& l) {
   if (!s || s->family != KeywordFamily::loads_bcs) return false;
   if (s->once) ctx.once(b);
   const std::string& n = b.name;
-  if (n == "LOAD_NODE_POINT" || n == "LOAD_NODE_SET" || n == "LOAD_RIGID_BODY") {
+  if (auto r = plain_readers().find(n); r != plain_readers().end()) {
+    r->second(b, ctx, *s, l);
+  } else if (n == "LOAD_NODE_POINT" || n == "LOAD_NODE_SET" || n == "LOAD_RIGID_BODY") {
     read_load_node(b, ctx, *s, n == "LOAD_NODE_SET" ? RLoad::node_set : n == "LOAD_RIGID_BODY" ? RLoad::rigid_body : RLoad::node, l);
   } else if (n == "LOAD_SEGMENT" || n == "LOAD_SEGMENT_SET") {
     read_load_segment(b, ctx, *s, n == "LOAD_SEGMENT_SET", l);
@@ -460,10 +597,6 @@ bool read_loads_bcs(const Block& b, KeywordContext& ctx, KeywordLoads& l) {
     }
   } else if (n.rfind("LOAD_BODY_", 0) == 0) {
     read_load_body(b, ctx, *s, n.back() == 'X' ? 0 : n.back() == 'Y' ? 1 : n.back() == 'Z' ? 2 : 3, l);
-  } else if (n == "DAMPING_GLOBAL") {
-    read_damping(b, ctx, *s, l);
-  } else if (n == "DEFINE_CURVE") {
-    read_curve(b, ctx, *s, l);
   } else if (n.rfind("BOUNDARY_SPC_", 0) == 0) {
     read_spc(b, ctx, *s, n.rfind("BOUNDARY_SPC_SET", 0) == 0, n.find("_BIRTH_DEATH") != std::string::npos, l);
   } else if (n.rfind("RIGIDWALL_GEOMETRIC_CYLINDER", 0) == 0) {
@@ -476,16 +609,8 @@ bool read_loads_bcs(const Block& b, KeywordContext& ctx, KeywordLoads& l) {
     } else {
       read_geometric_walls(b, ctx, *s, n.find("_DISPLAY") != std::string::npos, l);
     }
-  } else if (n == "CONSTRAINED_GLOBAL") {
-    read_constrained_global(b, ctx, *s, l);
   } else if (n == "INITIAL_TEMPERATURE_NODE" || n == "INITIAL_TEMPERATURE_SET") {
     read_temperatures(b, ctx, *s, n == "INITIAL_TEMPERATURE_SET", l);
-  } else if (n == "INITIAL_VELOCITY_NODE") {
-    read_velocity_nodes(b, ctx, *s, l);
-  } else if (n == "INITIAL_VELOCITY") {
-    read_initial_velocity(b, ctx, *s, l);
-  } else if (n == "INITIAL_VELOCITY_GENERATION") {
-    read_velocity_generation(b, ctx, *s, l);
   } else {
     read_motions(b, ctx, *s, n == "BOUNDARY_PRESCRIBED_MOTION_NODE" ? RLoad::motion_node
                             : n == "BOUNDARY_PRESCRIBED_MOTION_SET" ? RLoad::motion_set : RLoad::motion_rigid, l);

@@ -46,21 +46,6 @@ int bc_code(int bits) {
 }
 
 // Raw records, before resolution (the families' records are in keyword_families.h).
-struct RWall {
-  std::string keyword;  // as written (*RIGIDWALL_PLANAR_ID, ...)
-  int nsid = 0;
-  Ref nsid_ref;
-  int nsidex = 0, boxid = 0;  // exempted node set, box (only the nodes inside)
-  Ref nsidex_ref, boxid_ref;
-  StoneWall w;
-};
-struct RWeld {            // *CONSTRAINED_SPOTWELD or *CONSTRAINED_GENERALIZED_WELD_SPOT, resolved after nodes and sets
-  std::string keyword;
-  bool generalized = false;  // a node set (NSID) instead of two nodes
-  int n1 = 0, n2 = 0, nsid = 0, cid = 0, wid = 0;
-  double sn = 0, ss = 0, n = 0, m = 0, tfail = 0;
-  Ref ref, ref2, cid_ref;    // N1 (NSID), N2, CID
-};
 struct RHistory {
   bool solid = false;
   bool shell = false;  // *DATABASE_HISTORY_SHELL (_ID): shell ids
@@ -129,11 +114,11 @@ class KeywordReader {
   ParamTable params_;                    // *PARAMETER values
   std::map<int, RSegSet>& seg_sets_ = sb_.seg_sets;
   std::vector<RContact> contacts_;
-  std::vector<RWall> walls_;
+  std::vector<RWall>& walls_ = ld_.walls;
   std::vector<RVelocity>& velocities_ = ld_.velocities;
   std::vector<RTemperature>& temperatures_ = ld_.temperatures;
   std::vector<RSpc>& spcs_ = ld_.spcs;
-  std::vector<RWeld> welds_;
+  std::vector<RWeld>& welds_ = ld_.welds;
   std::vector<RHistory> histories_;
   std::vector<RLoad>& loads_ = ld_.loads;
   RLoad& damping_ = ld_.damping;
@@ -754,12 +739,6 @@ class KeywordReader {
           m_.title = rtrim(l.line->text.substr(0, std::min<std::size_t>(80, l.line->text.size())));
           break;
         }
-      } else if (n == "CONSTRAINED_SPOTWELD") {
-        parse_spotweld(b);
-      } else if (n == "CONSTRAINED_GENERALIZED_WELD_SPOT") {
-        parse_generalized_weld_spot(b);
-      } else if (n == "RIGIDWALL_PLANAR") {
-        parse_rigidwall(b);
       } else {
         unsupported_.push_back(&b);
         // remember the ids that unsupported material and section keywords define, so that a
@@ -879,82 +858,6 @@ class KeywordReader {
       }
       for (int n : nodes) m_.node_temperature[std::size_t(n)] = t.temp;
     }
-  }
-
-  // The failure fields common to both spot-weld keywords: SN SS N M (fields k .. k + 3).
-  static void read_weld_failure(KCard& c, int k, RWeld& w) {
-    w.sn = c.r(k, "SN");
-    w.ss = c.r(k + 1, "SS");
-    w.n = c.r(k + 2, "N");
-    w.m = c.r(k + 3, "M");
-    if (w.sn < 0) c.error(1003, k, "SN", "must not be negative (0: no failure by the normal force)");
-    if (w.ss < 0) c.error(1003, k + 1, "SS", "must not be negative (0: no failure by the shear force)");
-    if (w.sn > 0 && !(w.n > 0)) c.error(1003, k + 2, "N", "the exponent of the normal force must be positive when SN is given");
-    if (w.ss > 0 && !(w.m > 0)) c.error(1003, k + 3, "M", "the exponent of the shear force must be positive when SS is given");
-  }
-
-  // *CONSTRAINED_SPOTWELD(_ID): per weld ([WID]) N1 N2 SN SS N M TF EP.
-  void parse_spotweld(const Block& b) {
-    int wid = 0;
-    for (std::size_t k = 0; k < b.data.size(); ++k) {
-      if (is_blank(b.data[k].line->text)) continue;
-      if (is_id_card(b, k)) {
-        KCard c = card(b, k, "ID card", W(b, 1));
-        wid = int(c.i(0, "WID"));
-        continue;
-      }
-      KCard c = card(b, k, "", W(b, 8));
-      RWeld w;
-      w.keyword = upper(b.keyword);
-      w.wid = wid;
-      wid = 0;
-      w.n1 = int(c.i(0, "N1"));
-      w.n2 = int(c.i(1, "N2"));
-      w.ref = c.ref(0);
-      w.ref2 = c.ref(1);
-      read_weld_failure(c, 2, w);
-      w.tfail = c.r(6, "TF", 1e20);
-      const double ep = c.r(7, "EP", 1e20);
-      if (ep != 0 && ep < 1e19) c.error(1102, 7, "EP", "ductile failure of spot welds (the effective plastic strain at their nodes)");
-      welds_.push_back(w);
-    }
-  }
-
-  // *CONSTRAINED_GENERALIZED_WELD_SPOT(_ID): per weld ([WID]) NSID CID FILTER WINDOW NPRT, then
-  // TFAIL EPSF SN SS N M.
-  void parse_generalized_weld_spot(const Block& b) {
-    int wid = 0;
-    std::vector<std::size_t> cards;
-    for (std::size_t k = 0; k < b.data.size(); ++k) {
-      if (is_blank(b.data[k].line->text)) continue;
-      if (is_id_card(b, k) && cards.size() % 2 == 0) {
-        KCard c = card(b, k, "ID card", W(b, 1));
-        wid = int(c.i(0, "WID"));
-        continue;
-      }
-      cards.push_back(k);
-      if (cards.size() % 2 == 1) continue;
-      KCard c1 = card(b, cards[cards.size() - 2], "card 1", W(b, 5));
-      KCard c2 = card(b, k, "card 2", W(b, 6));
-      RWeld w;
-      w.keyword = upper(b.keyword);
-      w.generalized = true;
-      w.wid = wid;
-      wid = 0;
-      w.nsid = int(c1.i(0, "NSID"));
-      w.ref = c1.ref(0);
-      w.cid = int(c1.i(1, "CID"));
-      w.cid_ref = c1.ref(1);
-      if (c1.i(2, "FILTER") > 1) c1.error(1102, 2, "FILTER", "filtering of the weld forces");
-      if (c1.r(3, "WINDOW") != 0) c1.error(1102, 3, "WINDOW", "filtering of the weld forces");
-      if (c1.i(4, "NPRT") == 1) c1.error(2006, 4, "NPRT", "the weld forces are not printed (no rbdout)");
-      w.tfail = c2.r(0, "TFAIL", 1e20);
-      const double epsf = c2.r(1, "EPSF");
-      if (epsf != 0 && epsf < 1e19) c2.error(1102, 1, "EPSF", "ductile failure of spot welds (the effective plastic strain at their nodes)");
-      read_weld_failure(c2, 2, w);
-      welds_.push_back(w);
-    }
-    if (cards.size() % 2 == 1) ctx_.missing_card(b, "card 2 (TFAIL EPSF SN SS N M)");
   }
 
   // ---------------------------------------------------------------- sets, boxes, systems
@@ -1142,51 +1045,6 @@ class KeywordReader {
       }
     }
     histories_.push_back(std::move(h));
-  }
-
-  void parse_rigidwall(const Block& b) {
-    std::size_t k = 0;
-    while (k < b.data.size()) {
-      if (b.id_opt) ++k;  // RWID, heading
-      if (k + 1 >= b.data.size()) { ctx_.missing_card(b, "cards 1 and 2"); return; }
-      KCard c = card(b, k, "card 1", W(b, 7));
-      RWall w;
-      w.keyword = upper(b.keyword);
-      w.nsid = int(c.i(0, "NSID"));
-      w.nsid_ref = c.ref(0);
-      w.nsidex = int(c.i(1, "NSIDEX"));
-      w.nsidex_ref = c.ref(1);
-      w.boxid = int(c.i(2, "BOXID"));
-      w.boxid_ref = c.ref(2);
-      if (c.r(3, "OFFSET") != 0) c.error(1102, 3, "OFFSET", "wall offset");
-      if (c.r(4, "BIRTH") != 0) c.error(1102, 4, "BIRTH", "wall birth time");
-      double death = c.r(5, "DEATH");
-      if (death != 0 && death < 1e20) c.error(1102, 5, "DEATH", "wall death time");
-      c.r(6, "RWKSF");
-      KCard c2 = card(b, k + 1, "card 2", W(b, 8));
-      const char* names[] = {"XT", "YT", "ZT", "XH", "YH", "ZH"};
-      for (int f = 0; f < 3; ++f) w.w.tail[std::size_t(f)] = c2.r(f, names[f]);
-      for (int f = 0; f < 3; ++f) w.w.head[std::size_t(f)] = c2.r(3 + f, names[3 + f]);
-      w.w.friction = c2.r(6, "FRIC");
-      if (c2.r(7, "WVEL") != 0) c2.error(2006, 7, "WVEL", "critical velocity for stick (IMPACT-3D sticks for FRIC = 1)");
-      double dx = w.w.head[0] - w.w.tail[0], dy = w.w.head[1] - w.w.tail[1], dz = w.w.head[2] - w.w.tail[2];
-      double scale = 0;
-      for (int f = 0; f < 3; ++f) scale = std::max({scale, std::fabs(w.w.head[std::size_t(f)]), std::fabs(w.w.tail[std::size_t(f)])});
-      double len = std::sqrt(dx * dx + dy * dy + dz * dz);
-      if (!(len > 1e-12 * scale) || len == 0) c2.error(1213, 0, "XT-ZH");
-      if (!(w.w.friction >= 0 && w.w.friction <= 1)) c2.error(1219, 6, "FRIC");
-      w.w.line = c.line();
-      k += 2;
-      if (b.moving_opt) {
-        if (k >= b.data.size()) { ctx_.missing_card(b, "card 3 (MASS, V0)"); return; }
-        KCard c3 = card(b, k, "card 3", W(b, 2));
-        w.w.mass = c3.r(0, "MASS");
-        w.w.v0 = c3.r(1, "V0");
-        if (!(w.w.mass > 0)) c3.error(1003, 0, "MASS", "a moving wall needs a positive mass");
-        ++k;
-      }
-      walls_.push_back(std::move(w));
-    }
   }
 
   // Keywords whose absence changes what the rest of the deck means: --lenient-keywords cannot
@@ -2644,14 +2502,7 @@ class KeywordReader {
   }
 
   void resolve_walls() {
-    for (const RGeomWall& g : ld_.geometric_walls) {  // after the planar walls
-      RWall w;
-      w.keyword = g.keyword;
-      w.nsid = g.nsid, w.nsidex = g.nsidex, w.boxid = g.boxid;
-      w.nsid_ref = g.nsid_ref, w.nsidex_ref = g.nsidex_ref, w.boxid_ref = g.boxid_ref;
-      w.w = g.w;
-      walls_.push_back(std::move(w));
-    }
+    walls_.insert(walls_.end(), ld_.geometric_walls.begin(), ld_.geometric_walls.end());  // after the planar walls
     for (RWall& w : walls_) {
       if (w.nsidex != 0 || w.boxid != 0) {  // the nodes of NSID (0: all) in the box, less NSIDEX
         std::vector<int> nodes;

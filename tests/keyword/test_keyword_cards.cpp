@@ -358,3 +358,23 @@ TEST(KeywordCards, ContactCardsByTheirTables) {
   EXPECT_EQ(l[5].find("deck.k:7: error 1002: *CONTACT_SURFACE_TO_SURFACE card 3, field \"SAST/SBST/SFSAT/SFSBT/FSF/VSF\" (cols 21-30)"), 0u) << l[5];
   EXPECT_EQ(l[6].find("deck.k:8: error 1316: *CONTACT_ERODING_SINGLE_SURFACE"), 0u) << l[6];
 }
+
+// Planar walls and spot welds: card 2's WVEL (as read) before the normal's length (named
+// XT-ZH) and FRIC; a moving wall's MASS once V0 is read; a weld's SN and SS before N and M.
+TEST(KeywordCards, WallAndWeldCardsByTheirTables) {
+  for (const char* n : {"RIGIDWALL_PLANAR", "CONSTRAINED_SPOTWELD", "CONSTRAINED_GENERALIZED_WELD_SPOT"})
+    EXPECT_NE(find_keyword_spec(n), nullptr) << n;
+  const std::string head = "*CONTROL_TERMINATION\n   1.0E-05\n";
+  const Read r = read(deck(head + "*RIGIDWALL_PLANAR_MOVING\n" + card({"0"}) + card({"1.0", "", "", "1.0", "", "", "2.0", "3.0"}) +
+                           card({"-1.0", "x"}) + "*CONSTRAINED_SPOTWELD\n" + card({"1", "2", "5.0", "-1.0", "", "", "y"})));
+  const std::vector<std::string> l = r.lines();
+  ASSERT_GE(l.size(), 8u);
+  EXPECT_EQ(l[0].find("deck.k:6: warning 2006: *RIGIDWALL_PLANAR_MOVING card 2, field \"WVEL\" (cols 71-80)"), 0u) << l[0];
+  EXPECT_EQ(l[1].find("deck.k:6: error 1213: *RIGIDWALL_PLANAR_MOVING card 2, field \"XT-ZH\" (cols 1-10)"), 0u) << l[1];
+  EXPECT_EQ(l[2].find("deck.k:6: error 1219: *RIGIDWALL_PLANAR_MOVING card 2, field \"FRIC\" (cols 61-70)"), 0u) << l[2];
+  EXPECT_EQ(l[3].find("deck.k:7: error 1002: *RIGIDWALL_PLANAR_MOVING card 3, field \"V0\" (cols 11-20)"), 0u) << l[3];
+  EXPECT_EQ(l[4].find("deck.k:7: error 1003: *RIGIDWALL_PLANAR_MOVING card 3, field \"MASS\" (cols 1-10)"), 0u) << l[4];
+  EXPECT_EQ(l[5].find("deck.k:9: error 1003: *CONSTRAINED_SPOTWELD, field \"SS\" (cols 31-40)"), 0u) << l[5];
+  EXPECT_EQ(l[6].find("deck.k:9: error 1003: *CONSTRAINED_SPOTWELD, field \"N\" (cols 41-50)"), 0u) << l[6];
+  EXPECT_EQ(l[7].find("deck.k:9: error 1002: *CONSTRAINED_SPOTWELD, field \"TF\" (cols 61-70)"), 0u) << l[7];
+}
