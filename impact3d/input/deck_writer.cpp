@@ -409,8 +409,8 @@ class KeywordWriter {
     for (const SpotWeld& w : m_.spot_welds) {
       if (!w.generalized && !w.has_axis && w.nodes.size() == 2) {
         os_ << (w.id ? "*CONSTRAINED_SPOTWELD_ID\n" + kcard({I(w.id)}) + "\n" : std::string("*CONSTRAINED_SPOTWELD\n"))
-            << "$#      n1        n2        sn        ss         n         m        tf\n"
-            << kcard({I(nid(w.nodes[0])), I(nid(w.nodes[1])), R(w.sn), R(w.ss), R(w.n), R(w.m), R(w.tfail)}) << "\n";
+            << "$#      n1        n2        sn        ss         n         m        tf        ep\n"
+            << kcard({I(nid(w.nodes[0])), I(nid(w.nodes[1])), R(w.sn), R(w.ss), R(w.n), R(w.m), R(w.tfail), R(w.epsf > 0 ? w.epsf : 1e20)}) << "\n";
         continue;
       }
       int c = 0;
@@ -432,7 +432,7 @@ class KeywordWriter {
       os_ << (w.id ? "*CONSTRAINED_GENERALIZED_WELD_SPOT_ID\n" + kcard({I(w.id)}) + "\n" : std::string("*CONSTRAINED_GENERALIZED_WELD_SPOT\n"))
           << "$#    nsid       cid\n" << kcard({I(sid), I(c)}) << "\n"
           << "$#   tfail      epsf        sn        ss         n         m\n"
-          << kcard({R(w.tfail), B(), R(w.sn), R(w.ss), R(w.n), R(w.m)}) << "\n";
+          << kcard({R(w.tfail), R(w.epsf), R(w.sn), R(w.ss), R(w.n), R(w.m)}) << "\n";
     }
   }
 

@@ -594,8 +594,8 @@ std::vector<KeywordField> weld_failure_fields() {
 }
 KeywordField ductile_failure(const char* name, int index) {
   return {name, index, E, 1e20, false,
-          {inside(0, 0, 0, nullptr), below(1e19, 1102, "ductile failure of spot welds (the effective plastic strain at their nodes)")},
-          "plastic strain at failure (0 or >= 1e19: none)"};
+          {below(0, 1003, "must not be negative (0 or >= 1e19: no ductile failure)")},
+          "effective plastic strain at a weld node at which the weld fails (0 or >= 1e19: none)"};
 }
 
 // *CONSTRAINED_SPOTWELD and *CONSTRAINED_GENERALIZED_WELD_SPOT (_ID: an ID card before a weld).

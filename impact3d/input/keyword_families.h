@@ -232,6 +232,7 @@ struct RWeld {            // *CONSTRAINED_SPOTWELD or *CONSTRAINED_GENERALIZED_W
   bool generalized = false;  // a node set (NSID) instead of two nodes
   int n1 = 0, n2 = 0, nsid = 0, cid = 0, wid = 0;
   double sn = 0, ss = 0, n = 0, m = 0, tfail = 0;
+  double epsf = 0;           // EP / EPSF: ductile failure strain (0: none)
   Ref ref, ref2, cid_ref;    // N1 (NSID), N2, CID
 };
 

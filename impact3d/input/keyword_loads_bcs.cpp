@@ -357,6 +357,9 @@ void read_weld_failure(KeywordValues& v, RWeld& w) {
   if (w.ss > 0 && !(w.m > 0)) v.error(1003, "M", "the exponent of the shear force must be positive when SS is given");
 }
 
+// EP / EPSF as the weld keeps it: 0 or >= 1e19 (blank: 1e20) is no ductile failure.
+double ductile_failure_strain(double e) { return e > 0 && e < 1e19 ? e : 0.0; }
+
 // *CONSTRAINED_SPOTWELD(_ID): per weld ([WID]) N1 N2 SN SS N M TF EP.
 void read_spot_welds(const Block& b, KeywordContext& ctx, const KeywordSpec& s, KeywordLoads& out) {
   int wid = 0;
@@ -377,6 +380,7 @@ void read_spot_welds(const Block& b, KeywordContext& ctx, const KeywordSpec& s, 
     w.ref2 = v.ref("N2");
     read_weld_failure(v, w);
     w.tfail = v["TF"];
+    w.epsf = ductile_failure_strain(v["EP"]);
     v.rest();
     out.welds.push_back(w);
   }
@@ -408,7 +412,7 @@ void read_generalized_welds(const Block& b, KeywordContext& ctx, const KeywordSp
     w.cid_ref = v1.ref("CID");
     v1.rest();
     w.tfail = v2["TFAIL"];
-    v2["EPSF"];
+    w.epsf = ductile_failure_strain(v2["EPSF"]);
     read_weld_failure(v2, w);
     out.welds.push_back(w);
   }

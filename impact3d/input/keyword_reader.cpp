@@ -2171,6 +2171,7 @@ class KeywordReader {
       w.n = r.n;
       w.m = r.m;
       w.tfail = r.tfail > 0 ? r.tfail : 1e20;
+      w.epsf = r.epsf;
       w.id = r.wid;
       w.generalized = r.generalized;
       w.line = r.ref.line ? r.ref.line->number : 0;

@@ -238,6 +238,7 @@ struct SpotWeld {
   double sn = 0, ss = 0;             // failure forces (0: not used)
   double n = 0, m = 0;               // exponents of the normal and shear terms
   double tfail = 1e20;               // failure time
+  double epsf = 0;                   // ductile failure: the plastic strain at a weld node (EP, EPSF; 0: not used)
   bool has_axis = false;             // coincident nodes: the normal from CID
   std::array<double, 3> axis{};      // ... its local z axis (global, unit)
   int id = 0;                        // the _ID card's WID (0: none)

@@ -7,6 +7,7 @@
 #include <cstdio>
 
 #include "impact3d/solve/mass_scaling.h"
+#include "impact3d/solve/spot_weld.h"
 
 namespace impact3d {
 
@@ -89,11 +90,23 @@ std::string describe_beam_failure(const Model& m, const State& s, int b) {
 std::string describe_weld_release(const Model& m, const State& s, int r) {
   const RigidBody& rb = s.rigid[std::size_t(r)];
   const SpotWeld& w = m.spot_welds[std::size_t(rb.weld)];
-  char buf[320];
+  // what released it: the time, else the plastic strain at a node (EP, EPSF), else the forces
+  std::string why = s.time >= w.tfail ? "its failure time" : "its failure forces";
+  if (s.time < w.tfail && w.epsf > 0) {
+    for (int n : w.nodes) {
+      const double e = spot_weld_node_plastic_strain(s, n);
+      if (e < w.epsf) continue;
+      char b[160];
+      std::snprintf(b, sizeof b, "the plastic strain %.6e at node %d reached its failure strain %.6e", e, m.node_id(n), w.epsf);
+      why = b;
+      break;
+    }
+  }
+  char buf[480];
   std::snprintf(buf, sizeof buf, "%s weld %d%s (nodes %d, %d%s) at cycle %d, time %.6e: %s",
                 w.generalized ? "*CONSTRAINED_GENERALIZED_WELD_SPOT" : "*CONSTRAINED_SPOTWELD", rb.weld + 1,
                 w.id ? (" WID " + std::to_string(w.id)).c_str() : "", m.node_id(w.nodes[0]), m.node_id(w.nodes[1]),
-                w.nodes.size() > 2 ? ", ..." : "", s.cycle, s.time, s.time >= w.tfail ? "its failure time" : "its failure forces");
+                w.nodes.size() > 2 ? ", ..." : "", s.cycle, s.time, why.c_str());
   return buf;
 }
 

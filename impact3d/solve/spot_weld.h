@@ -17,8 +17,14 @@ std::array<double, 3> spot_weld_constraint_force(const State& s, const RigidBody
 // the node's normal, or with CID's axis its magnitude along it; f_s the rest).
 double spot_weld_failure_measure(const SpotWeld& w, const State& s, const RigidBody& rb, double dt_n);
 
+// The effective plastic strain at node n for the ductile rule (EP, EPSF): the elements' plastic
+// strains projected to the node by a lumped least-squares fit, i.e. the mean over the live
+// deformable solids and shells on the node weighted by their volume or area, a shell's strain
+// integrated through its thickness (its rule's weights); 0 where none is plastic.
+double spot_weld_node_plastic_strain(const State& s, int n);
+
 // After update_rigid_body_velocities at t^n: each unreleased weld whose measure reaches 1, or
-// whose TFAIL has come, is released (s.newly_released lists them, in weld order).
+// whose TFAIL has come, or (EPSF > 0) at one of whose nodes the plastic strain reached EPSF, is released (s.newly_released lists them, in weld order).
 void check_spot_weld_failure(const Model& m, State& s, double dt_n);
 
 }  // namespace impact3d

@@ -324,7 +324,10 @@ TEST(SpotWeldInput, BadFieldsGetNumberedMessages) {
   };
   expect("*CONSTRAINED_SPOTWELD\n         2         9   -1.0e+4\n", 1003, "SN");
   expect("*CONSTRAINED_SPOTWELD\n         2         9    1.0e+4       0.0       0.0\n", 1003, "N");
-  expect("*CONSTRAINED_SPOTWELD\n         2         9       0.0       0.0       0.0       0.0       0.0       0.2\n", 1102, "EP");
+  expect("*CONSTRAINED_SPOTWELD\n         2         9       0.0       0.0       0.0       0.0       0.0      -0.2\n", 1003, "EP");
+  expect("*SET_NODE_LIST\n        55\n         2         9\n*CONSTRAINED_GENERALIZED_WELD_SPOT\n        55\n"
+         "       0.0      -0.1\n",
+         1003, "EPSF");
   expect("*CONSTRAINED_SPOTWELD\n         2        99\n", 1202, "N2");
   expect("*CONSTRAINED_SPOTWELD\n         2         9\n         9         3\n", 1253, nullptr);
   expect("*CONSTRAINED_GENERALIZED_WELD_SPOT\n        55\n       0.0       0.0       0.0       0.0\n", 1309, "NSID");
@@ -358,14 +361,14 @@ TEST(SpotWeldInput, BadFieldsGetNumberedMessages) {
   }
 }
 
-// The converter writes the welds back (keyword decks): the same nodes, forces, exponents, times
-// and axes after a round trip.
+// The converter writes the welds back (keyword decks): the same nodes, forces, exponents, times,
+// ductile failure strains (EPSF, EP) and axes after a round trip.
 TEST(SpotWeldInput, ConverterRoundTrip) {
   std::ostringstream w;
   w << "*DEFINE_COORDINATE_SYSTEM\n         7       0.0       0.0       0.0       0.0       1.0       0.0\n       0.0       0.0       1.0\n";
   w << "*SET_NODE_LIST\n        10\n         3        12\n";
-  w << "*CONSTRAINED_GENERALIZED_WELD_SPOT_ID\n        44\n        10         7\n      0.03       0.0    1.0e+4    2.0e+4       2.0       3.0\n";
-  w << "*CONSTRAINED_SPOTWELD\n         2         9    5.0e+3    6.0e+3       1.5       2.5      0.04\n";
+  w << "*CONSTRAINED_GENERALIZED_WELD_SPOT_ID\n        44\n        10         7\n      0.03      0.15    1.0e+4    2.0e+4       2.0       3.0\n";
+  w << "*CONSTRAINED_SPOTWELD\n         2         9    5.0e+3    6.0e+3       1.5       2.5      0.04      0.25\n";
   Read a = read_text(two_cubes(1.1, 1, w.str()));
   ASSERT_TRUE(a.ok) << a.messages();
   std::ostringstream out;
@@ -381,12 +384,15 @@ TEST(SpotWeldInput, ConverterRoundTrip) {
     EXPECT_EQ(x.n, y.n);
     EXPECT_EQ(x.m, y.m);
     EXPECT_EQ(x.tfail, y.tfail);
+    EXPECT_EQ(x.epsf, y.epsf);
     EXPECT_EQ(x.id, y.id);
     EXPECT_EQ(x.has_axis, y.has_axis);
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(x.axis[std::size_t(c)], y.axis[std::size_t(c)], 1e-12);
   };
   same(a.m.spot_welds[0], b.m.spot_welds[0]);
   same(a.m.spot_welds[1], b.m.spot_welds[1]);
+  EXPECT_EQ(a.m.spot_welds[0].epsf, 0.15);
+  EXPECT_EQ(a.m.spot_welds[1].epsf, 0.25);
 }
 
 // The same bits for 1 and 2 threads (the welds are checked in weld order, the bodies updated
