@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "impact3d/element/shell_parts.h"
 #include "impact3d/material/plane_stress.h"
 
 namespace impact3d {
@@ -122,20 +123,7 @@ double calc_shell_step_length(const double x[4][3], double area, bool triangle) 
   return (triangle ? 2.0 : 1.0) * area / std::sqrt(lmax);
 }
 
-namespace {
-
-// The mid-surface rates in the local frame: membrane d_xx, d_yy, 2 d_xy, curvature rates,
-// transverse shears 2 d_xz, 2 d_yz.
-struct ShellRates {
-  double dxx, dyy, gxy, kxx, kyy, kxy, gxz, gyz;
-};
-
-// Stress resultants (membrane N, moments M, shears Q, per unit length) and the stress power per
-// unit area.
-struct ShellResultants {
-  double Nxx = 0, Nyy = 0, Nxy = 0, Mxx = 0, Myy = 0, Mxy = 0, Qxz = 0, Qyz = 0;
-  double work = 0;
-};
+namespace shell_parts {
 
 // x^{n-1/2} = x^n - dt/2 v: the geometry of the step's rates (zero strain for a rigid motion).
 void calc_shell_midpoint_coordinates(const ShellKernelIO& io, double xm[4][3]) {
@@ -234,6 +222,43 @@ ShellResultants calc_shell_point_stresses(const ShellGroupConstants& g, const Ma
   return n;
 }
 
+// The drilling constraint: corner moments about e3 mz (integrated over the step, kept in the
+// co-rotational frame as the hourglass resultants) and their reaction on the in-plane spin
+// (added to fl); returns their work of the step.
+double calc_shell_drilling_forces(const ShellGroupConstants& g, const ShellFrame& fr, double h, double dt,
+                                  const double drate[4], double* drill, double fl[4][3], double mz[4]) {
+  const double kd = g.drill_coef * g.G * h * fr.area / 4.0;
+  double msum = 0, dwork = 0;
+  for (int i = 0; i < 4; ++i) {
+    const double m0 = drill[i];
+    const double m1 = m0 + kd * drate[i] * dt;
+    drill[i] = m1;
+    mz[i] = m1;
+    msum += m1;
+    dwork += 0.5 * (m0 + m1) * drate[i] * dt;
+  }
+  for (int i = 0; i < 4; ++i) {
+    fl[i][0] += 0.5 * msum * fr.b2[i];
+    fl[i][1] -= 0.5 * msum * fr.b1[i];
+  }
+  return dwork;
+}
+
+void rotate_shell_forces_to_global(const ShellFrame& fr, const double fl[4][3], const double ml[4][2],
+                                   const double mz[4], ShellKernelIO& io) {
+  for (int i = 0; i < 4; ++i)
+    for (int a = 0; a < 3; ++a) {
+      io.f[i][a] = fl[i][0] * fr.e[0][a] + fl[i][1] * fr.e[1][a] + fl[i][2] * fr.e[2][a];
+      io.m[i][a] = ml[i][0] * fr.e[0][a] + ml[i][1] * fr.e[1][a] + mz[i] * fr.e[2][a];
+    }
+}
+
+}  // namespace shell_parts
+
+namespace {
+
+using namespace shell_parts;
+
 // Corner forces and moments in the frame at x^n: the work conjugates of the rates.
 void calc_shell_local_forces(const ShellFrame& fr, const ShellResultants& n, double fl[4][3], double ml[4][2]) {
   const double A = fr.area;
@@ -308,37 +333,6 @@ double calc_shell_hourglass_forces(const ShellGroupConstants& g, const ShellFram
     ml[i][1] += gam[i] * Q[4];
   }
   return de_hg;
-}
-
-// The drilling constraint: corner moments about e3 mz (integrated over the step, kept in the
-// co-rotational frame as the hourglass resultants) and their reaction on the in-plane spin
-// (added to fl); returns their work of the step.
-double calc_shell_drilling_forces(const ShellGroupConstants& g, const ShellFrame& fr, double h, double dt,
-                                  const double drate[4], double* drill, double fl[4][3], double mz[4]) {
-  const double kd = g.drill_coef * g.G * h * fr.area / 4.0;
-  double msum = 0, dwork = 0;
-  for (int i = 0; i < 4; ++i) {
-    const double m0 = drill[i];
-    const double m1 = m0 + kd * drate[i] * dt;
-    drill[i] = m1;
-    mz[i] = m1;
-    msum += m1;
-    dwork += 0.5 * (m0 + m1) * drate[i] * dt;
-  }
-  for (int i = 0; i < 4; ++i) {
-    fl[i][0] += 0.5 * msum * fr.b2[i];
-    fl[i][1] -= 0.5 * msum * fr.b1[i];
-  }
-  return dwork;
-}
-
-void rotate_shell_forces_to_global(const ShellFrame& fr, const double fl[4][3], const double ml[4][2],
-                                   const double mz[4], ShellKernelIO& io) {
-  for (int i = 0; i < 4; ++i)
-    for (int a = 0; a < 3; ++a) {
-      io.f[i][a] = fl[i][0] * fr.e[0][a] + fl[i][1] * fr.e[1][a] + fl[i][2] * fr.e[2][a];
-      io.m[i][a] = ml[i][0] * fr.e[0][a] + ml[i][1] * fr.e[1][a] + mz[i] * fr.e[2][a];
-    }
 }
 
 void mark_shell_bad(const ShellFrame& fr, ShellKernelIO& io) {

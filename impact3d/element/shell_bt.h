@@ -52,6 +52,7 @@ struct ShellGroupConstants {
   double rho = 0, E = 0, nu = 0, G = 0;
   double c_plate = 0;       // sqrt(E / (rho (1 - nu^2))): membrane wave speed, the step's
   double drill_coef = 0;    // drilling constraint: corner stiffness drill_coef G h A / 4 (0: none)
+  int elform = 2;           // LS-DYNA ELFORM: 2 this kernel, 16 the fully integrated one (shell_fi.h)
 };
 
 // One shell's data for the kernel.  x at t^n, v and w (angular velocities) at t^{n-1/2}.

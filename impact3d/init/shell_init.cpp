@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "impact3d/element/shell_fi.h"
 #include "impact3d/init/corner_map.h"
 
 namespace impact3d {
@@ -88,6 +89,8 @@ ShellGroupConstants group_constants(const MaterialData& md, const MaterialConsta
   g.G = mc.G;
   g.c_plate = mc.rho > 0 ? std::sqrt(mc.E / (mc.rho * (1 - mc.nu * mc.nu))) : 0.0;
   g.drill_coef = kShellDrillingCoef;
+  g.elform = md.shell_section.elform;
+  if (g.elform == 16) g.hourglass_coef = 0;  // no hourglass modes: the part's settings are ignored
   return g;
 }
 
@@ -132,7 +135,8 @@ void init_shells(const Model& m, State& s) {
     g.kernel = shell_kernel_for_material_type(s.mats[k].type);
     g.material = int(k);
     g.constants = group_constants(m.materials[k], s.mats[k]);
-    g.blocks = g.kernel != ShellKernel::rigid && shell_block_covers(shell_material_kind(g.kernel), s.mats[k]);
+    g.blocks = g.kernel != ShellKernel::rigid && g.constants.elform == 2 &&
+               shell_block_covers(shell_material_kind(g.kernel), s.mats[k]);
     g.update_block = material_type(s.mats[k].type).solid.update_block;
     g.first = placed;
     g.count = count[k];
@@ -150,8 +154,9 @@ void init_shells(const Model& m, State& s) {
   sh.nip.assign(std::size_t(ns), 0);
   sh.ip_start.assign(std::size_t(ns) + 1, 0);
   for (int k = 0; k < ns; ++k) {
-    sh.nip[std::size_t(k)] = m.materials[std::size_t(sh.mat[std::size_t(k)])].shell_section.nip;
-    sh.ip_start[std::size_t(k) + 1] = sh.ip_start[std::size_t(k)] + sh.nip[std::size_t(k)];
+    const ShellSectionData& sec = m.materials[std::size_t(sh.mat[std::size_t(k)])].shell_section;
+    sh.nip[std::size_t(k)] = sec.nip;  // through the thickness (ELFORM 16: times 5 sets, shell_fi.h)
+    sh.ip_start[std::size_t(k) + 1] = sh.ip_start[std::size_t(k)] + shell_points_per_shell(sec.elform, sec.nip);
   }
   const std::size_t nip_total = std::size_t(sh.ip_start[std::size_t(ns)]);
   sh.sig.assign(5 * nip_total, 0.0);

@@ -51,8 +51,9 @@ struct ControlData {
   double min_step_factor = 0;  // error termination when dt < factor * dt0 (0 = no check)
 };
 
-// *SECTION_SHELL of a shell part (Belytschko-Tsay, LS-DYNA ELFORM 2).
+// *SECTION_SHELL of a shell part (LS-DYNA ELFORM 2 Belytschko-Tsay, 16 fully integrated).
 struct ShellSectionData {
+  int elform = 2;                    // 2 (element/shell_bt.h) or 16 (element/shell_fi.h)
   int nip = 2;                       // Gauss points through the thickness, 1-10
   double shrf = 1.0;                 // transverse shear factor (LS-DYNA: blank/0 -> 1; 5/6 advised)
   std::array<double, 4> t{};         // default nodal thicknesses T1-T4

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <limits>
 
+#include "impact3d/element/shell_fi.h"
+
 namespace impact3d {
 
 namespace {
@@ -56,7 +58,10 @@ void process_shell(State& s, const ShellGroup& g, int k, double dt) {
                      plastic ? &sh.eps_p[ip] : nullptr, plastic ? &sh.yielded[ip] : nullptr,
                      sh.hgq.empty() ? nullptr : &sh.hgq[5 * std::size_t(k)],
                      &sh.drill[4 * std::size_t(k)]};
-  calc_shell_bt_forces(g.constants, s.mats[std::size_t(g.material)], shell_material_kind(g.kernel), io, st);
+  if (g.constants.elform == 16)
+    calc_shell_fi_forces(g.constants, s.mats[std::size_t(g.material)], shell_material_kind(g.kernel), io, st);
+  else
+    calc_shell_bt_forces(g.constants, s.mats[std::size_t(g.material)], shell_material_kind(g.kernel), io, st);
   sh.bad[std::size_t(k)] = io.bad;
   if (io.bad) {
     zero_shell_corners(s, k);
