@@ -3,7 +3,7 @@
 //
 //   build/bench/impact3d_bench_scaling [--hex N[,N...]] [--threads T[,T...]] [--contact]
 //                                      [--seconds S] [--no-input] [--shuffle]
-//                                      [--reorder auto|on|off]
+//                                      [--reorder auto|on|off] [--ranks R[,R...]]
 //
 // Model: a copper bar (the Taylor bar's material: elastic-plastic, isotropic hardening,
 // hourglass type 1, q1 1.2) of n x n x 4n hexahedra, 1 mm cells, at 227 m/s onto a stonewall;
@@ -19,6 +19,11 @@
 //   mem: resident memory per hexahedron after initialization (model + state), bytes
 //   input: reading and checking the same model written as a keyword and as a fixed-format deck
 //          (impact3d's input phase), seconds and MB/s
+//   ranks (--ranks, a build with MPI, the bar only): the same model as a keyword deck run whole
+//          by impact3d (beside this program) for the 1-thread row's cycles, as one process and
+//          under `mpirun -np R` (one thread a rank): the run's elapsed time per hexahedron-cycle
+//          (input, initialization and the two plot states included) and rank 0's time in the
+//          cycle's messages (docs/cluster.md)
 // Numbers go in README.md ("Performance") with the machine and the command.
 
 #include <omp.h>
@@ -42,6 +47,7 @@
 #include "impact3d/input/deck_reader.h"
 #include "impact3d/input/deck_writer.h"
 #include "impact3d/output/plot_output.h"
+#include "impact3d/parallel/comm.h"
 #include "impact3d/solve/engine.h"
 #include "impact3d/solve/thread_policy.h"
 #include "tests/support/box_mesh.h"
@@ -211,6 +217,51 @@ void time_input(const Model& m) {
   }
 }
 
+// The first line of `path` that contains `key`, or "".
+std::string line_with(const std::filesystem::path& path, const std::string& key) {
+  std::ifstream is(path);
+  std::string line;
+  while (std::getline(is, line))
+    if (line.find(key) != std::string::npos) return line;
+  return "";
+}
+
+// The model as a keyword deck run whole by impact3d, as one process and on R ranks.
+void time_ranks(const Model& m, int cycles, const std::vector<int>& ranks) {
+  namespace fs = std::filesystem;
+  const fs::path impact3d = fs::canonical("/proc/self/exe").parent_path().parent_path() / "impact3d";
+  const fs::path dir = fs::temp_directory_path() / "impact3d_bench_ranks";
+  fs::create_directories(dir);
+  Model run = m;
+  run.control.end_cycle = cycles;
+  run.control.plot_interval = run.control.end_time;  // the first and the last state only
+  {
+    std::ofstream os(dir / "bar.k");
+    write_keyword_deck(os, run);
+  }
+  std::vector<int> all = {1};
+  for (int r : ranks)
+    if (r > 1) all.push_back(r);
+  const std::string root = getuid() == 0 ? " --allow-run-as-root" : "";
+  for (int r : all) {
+    const fs::path wd = dir / ("np" + std::to_string(r));
+    fs::create_directories(wd);
+    const std::string launch = r == 1 ? "" : "OMPI_MCA_mpi_yield_when_idle=1 mpirun --oversubscribe" + root + " -np " + std::to_string(r) + " ";
+    const std::string cmd = "cd '" + wd.string() + "' && SOURCE_DATE_EPOCH=0 " + launch + "'" + impact3d.string() +
+                            "' i=../bar.k ncpu=1 > log 2>&1";
+    const int rc = std::system(cmd.c_str());
+    const std::string elapsed = line_with(wd / "log", "us per element-cycle");
+    const std::string comm = line_with(wd / "d3hsp", "communication on rank 0");
+    double us = 0;
+    const std::size_t at = elapsed.find('(');
+    if (at != std::string::npos) us = std::atof(elapsed.c_str() + at + 1);
+    std::printf("    ranks %2d: %s%8.1f ns per hex-cycle, whole run%s%s\n", r, rc == 0 ? "" : "[FAILED] ", 1e3 * us,
+                comm.empty() ? "" : ";", comm.c_str());
+    std::fflush(stdout);
+  }
+  fs::remove_all(dir);
+}
+
 std::vector<int> parse_list(const char* s) {
   std::vector<int> v;
   std::stringstream ss(s);
@@ -228,6 +279,7 @@ int main(int argc, char** argv) {
   bool contact = false, input = true, shuffle = false;
   MeshOrderMode reorder = MeshOrderMode::automatic;
   double seconds = 2.0;
+  std::vector<int> ranks;
   for (int a = 1; a < argc; ++a) {
     const std::string arg = argv[a];
     if (arg == "--hex" && a + 1 < argc) sizes = parse_list(argv[++a]);
@@ -237,10 +289,16 @@ int main(int argc, char** argv) {
     else if (arg == "--no-input") input = false;
     else if (arg == "--shuffle") shuffle = true;
     else if (arg == "--reorder" && a + 1 < argc && parse_mesh_order_mode(argv[a + 1], reorder)) ++a;
+    else if (arg == "--ranks" && a + 1 < argc) ranks = parse_list(argv[++a]);
     else {
-      std::fprintf(stderr, "usage: %s [--hex N,...] [--threads T,...] [--contact] [--seconds S] [--no-input] [--shuffle] [--reorder auto|on|off]\n", argv[0]);
+      std::fprintf(stderr, "usage: %s [--hex N,...] [--threads T,...] [--contact] [--seconds S] [--no-input] [--shuffle] [--reorder auto|on|off] [--ranks R,...]\n", argv[0]);
       return 3;
     }
+  }
+  if (!ranks.empty() && (contact || !parallel::built_with_mpi())) {
+    std::fprintf(stderr, "--ranks: %s\n", contact ? "the two bars' sliding interface does not run distributed yet (docs/cluster.md)"
+                                                   : "this build has no MPI (CMake option IMPACT3D_MPI)");
+    return 3;
   }
   std::printf("IMPACT-3D scaling benchmark: %s, ns per hexahedron-cycle by phase\n",
               contact ? "two bars head on (sliding interface)" : "bar on a stonewall");
@@ -256,10 +314,14 @@ int main(int argc, char** argv) {
       std::printf("   %s%s  (%.3f s)\n", shuffle ? "shuffled;" : "", mesh_order_line(r).c_str(), since(t));
     }
     bool first = true;
+    int cycles = 0;
     for (int t : threads) {
-      print_row(run_cycles(m, t, seconds, first, rss0));
+      const Row r = run_cycles(m, t, seconds, first, rss0);
+      print_row(r);
+      if (first) cycles = r.cycles + 5;  // (its warm-up cycles too)
       first = false;
     }
+    if (!ranks.empty()) time_ranks(m.renumbered() ? model_in_deck_order(m) : m, cycles, ranks);
     if (input) time_input(m.renumbered() ? model_in_deck_order(m) : m);
   }
   std::printf("peak resident memory of this process: %.0f MB\n", proc_status_bytes("VmHWM:") / 1e6);
