@@ -517,6 +517,17 @@ class KeywordWriter {
       if (d[std::size_t(a)] == 1 && d[std::size_t((a + 1) % 3)] == 0 && d[std::size_t((a + 2) % 3)] == 0) return a + 1;
     return 0;
   }
+  // A *DEFINE_VECTOR head (tail at the origin) that the reader's normalisation turns back into
+  // the unit d bit for bit: d times the first whole number 1-32 that does (else d, noted).
+  std::array<double, 3> vector_head(const std::array<double, 3>& d) {
+    for (int k = 1; k <= 32; ++k) {
+      const std::array<double, 3> h = {d[0] * k, d[1] * k, d[2] * k};
+      const double len = std::sqrt(h[0] * h[0] + h[1] * h[1] + h[2] * h[2]);
+      if (h[0] / len == d[0] && h[1] / len == d[1] && h[2] / len == d[2]) return h;
+    }
+    note("a motion's vector (" + shortest(d[0]) + ", " + shortest(d[1]) + ", " + shortest(d[2]) + ") is read back rounded");
+    return d;
+  }
   int dof_of(const std::array<double, 3>& d, const std::string& what) {
     const int a = axis_of(d);
     if (a == 0) note(what + ": direction not along an axis, written as x");
@@ -571,16 +582,27 @@ class KeywordWriter {
       if (!f.empty()) os_ << kcard(f) << "\n";
       os_ << "*LOAD_BODY_PARTS\n$#    psid\n" << kcard({I(sid)}) << "\n";
     }
+    int next_vector = 1;
     for (const PrescribedMotion& pm : m_.prescribed_motions) {
-      if (pm.rotation) {
-        note("a prescribed rotational velocity (node " + std::to_string(nid(pm.node)) + ") is not written: keyword decks refuse DOF 5-7 today");
+      if (pm.rotation && pm.node >= 0) {
+        note("a prescribed rotational velocity (node " + std::to_string(nid(pm.node)) + ") is not written: keyword decks refuse DOF 5-7 of nodes today");
         continue;
       }
       const bool rigid = pm.node < 0;
+      int dof = axis_of(pm.dir), vid = 0;
+      if (dof == 0 || pm.hold_normal) {  // DOF 4 / 8 (-4 / -8) along or about a *DEFINE_VECTOR
+        vid = next_vector++;
+        const std::array<double, 3> h = vector_head(pm.dir);
+        os_ << "*DEFINE_VECTOR\n$#     vid        xt        yt        zt        xh        yh        zh\n"
+            << kcard({I(vid), R(0), R(0), R(0), R(h[0]), R(h[1]), R(h[2])}) << "\n";
+        dof = (pm.hold_normal ? -1 : 1) * (pm.rotation ? 8 : 4);
+      } else if (pm.rotation) {
+        dof += 4;  // 5-7: about x y z
+      }
       os_ << (rigid ? "*BOUNDARY_PRESCRIBED_MOTION_RIGID\n$#     pid" : "*BOUNDARY_PRESCRIBED_MOTION_NODE\n$#     nid")
           << "       dof       vad      lcid        sf       vid     death     birth\n"
-          << kcard({I(rigid ? pm.rigid_material + 1 : nid(pm.node)), I(dof_of(pm.dir, "prescribed motion")), I(int(pm.kind)),
-                    I(lcid(pm.curve)), R(pm.scale), I(0), pm.death < 1e28 ? R(pm.death) : R(0), R(pm.birth)})
+          << kcard({I(rigid ? pm.rigid_material + 1 : nid(pm.node)), I(dof), I(int(pm.kind)),
+                    I(lcid(pm.curve)), R(pm.scale), I(vid), pm.death < 1e28 ? R(pm.death) : R(0), R(pm.birth)})
           << "\n";
     }
   }
@@ -1059,8 +1081,10 @@ class FixedWriter {
     if (node_motions_ > 0) os_ << "*----- VELOCITY/ACCELERATION BOUNDARY CONDITIONS: node, curve, DOF, scale, vector, type, birth\n";
     for (const PrescribedMotion& pm : m_.prescribed_motions) {
       if (pm.node < 0) continue;
+      if (pm.hold_normal)
+        note("node " + std::to_string(pm.node + 1) + ": a motion along a vector with its normal plane held (LS-DYNA DOF -4) has no fixed-format field: written as DOF 4, the normal plane free");
       int d = 4;
-      for (int q = 0; q < 3; ++q) if (pm.dir[std::size_t(q)] == 1) d = (pm.rotation ? 5 : 1) + q;
+      for (int q = 0; q < 3; ++q) if (pm.dir[std::size_t(q)] == 1 && !pm.hold_normal) d = (pm.rotation ? 5 : 1) + q;
       TableLine c = T("velocity/acceleration boundary card");
       c("node", pm.node + 1)("load curve", pm.curve + 1)("DOF", d)("scale factor", pm.scale);
       if (d == 4) c("vx", pm.dir[0])("vy", pm.dir[1])("vz", pm.dir[2]);
@@ -1530,6 +1554,7 @@ void load_differences(const Model& a, const Model& b, Differences& d) {
     dir_differs(w, x.dir, y.dir);
     d.N(w + "kind", int(x.kind), int(y.kind));
     d.N(w + "rotation", x.rotation ? 1 : 0, y.rotation ? 1 : 0);
+    d.N(w + "normal held", x.hold_normal ? 1 : 0, y.hold_normal ? 1 : 0);
     curve_differs(w, x.curve, y.curve);
     d.D(w + "scale", x.scale, y.scale);
     d.D(w + "birth", x.birth, y.birth);

@@ -388,31 +388,36 @@ KeywordSpec load_node(const char* name, const char* id, const char* id_meaning) 
 }
 
 // *BOUNDARY_PRESCRIBED_MOTION_NODE / _SET / _RIGID: ID DOF VAD LCID SF VID DEATH BIRTH.  DOF
-// 9-11 (and VAD 4) take LS-DYNA's card 2 (OFFSET1 OFFSET2 LRB NODE1 NODE2), skipped.
+// 9-11 (and VAD 4) take LS-DYNA's card 2 (OFFSET1 OFFSET2 LRB NODE1 NODE2), skipped.  Rigid
+// bodies take DOF 1-3, 4 / -4 (along VID), 5-7 (rotations about x y z) and 8 / -8 (about VID).
 KeywordSpec prescribed_motion(const char* name, const char* id, bool rigid) {
+  static const char* const about_axis =
+      "motion of nodes rotating about an axis through (OFFSET1, OFFSET2) (DOF 9-11; its card 2 is skipped)";
   std::vector<KeywordCheck> dof;
-  dof.push_back(inside(-4, -4, 1102, "motion along a vector with the normal plane held (DOF -4)"));
   if (rigid) {
-    dof.push_back(inside(4, 4, 1102, "rigid-body motion along a vector"));
-    dof.push_back(inside(5, 8, 1102, "prescribed rotations of rigid bodies"));
-    dof.push_back(outside(1, 3, 1006, "1 x, 2 y, 3 z"));
+    dof.push_back(inside(9, 11, 1102, "DOF 9-11 (nodes rotating about an axis; LS-DYNA: not for rigid bodies; its card 2 is skipped)"));
+    dof.push_back(inside(-11, -9, 1102, "DOF -11 to -9 (nodes rotating about an axis; LS-DYNA: not for rigid bodies; its card 2 is skipped)"));
+    dof.push_back(inside(-8, -8, 0, nullptr));  // about VID, the other rotations held
+    dof.push_back(inside(-4, -4, 0, nullptr));  // along VID, the normal plane held
+    dof.push_back(outside(1, 8, 1006, "1-3 x y z, 4 / -4 along VID, 5-7 rotations about x y z, 8 / -8 about VID"));
   } else {
-    dof.push_back(inside(4, 4, 0, nullptr));  // along the vector VID
+    dof.push_back(inside(-4, -4, 0, nullptr));  // along VID, the normal plane held
+    dof.push_back(inside(4, 4, 0, nullptr));    // along the vector VID
     dof.push_back(inside(5, 8, 1102, "rotations (solid nodes have no rotations)"));
-    dof.push_back(inside(9, 11, 1102, "motion of nodes rotating about an axis through (OFFSET1, OFFSET2) (DOF 9-11; its card 2 is skipped)"));
-    dof.push_back(inside(-11, -9, 1102, "motion of nodes rotating about an axis through (OFFSET1, OFFSET2) (DOF 9-11; its card 2 is skipped)"));
+    dof.push_back(inside(9, 11, 1102, about_axis));
+    dof.push_back(inside(-11, -9, 1102, about_axis));
     dof.push_back(outside(-4, 11, 1006, "1 x, 2 y, 3 z"));
     dof.push_back(outside(1, 3, 1102, "1 x, 2 y, 3 z"));
   }
   return {{name}, KeywordFamily::loads_bcs, false,
           {{"", 8, 10, per_field, {
               {id, 0, I, 0, false, {}, rigid ? "part (a *MAT_RIGID part)" : "node or node set"},
-              {"DOF", 1, I, 0, false, std::move(dof), rigid ? "1 x, 2 y, 3 z" : "1 x, 2 y, 3 z, 4 along VID"},
+              {"DOF", 1, I, 0, false, std::move(dof), rigid ? "1-3 x y z, 4 along VID (-4: normal plane held), 5-7 rotation about x y z, 8 about VID (-8: other rotations held)" : "1 x, 2 y, 3 z, 4 along VID (-4: normal plane held)"},
               {"VAD", 2, I, 0, false, {inside(3, 3, 1102, "velocity as a function of displacement"), inside(4, 4, 1102, "relative displacement"),
                                        outside(0, 2, 1006, "0 velocity, 1 acceleration, 2 displacement")}, "0 velocity, 1 acceleration, 2 displacement"},
               load_curve(3),
               scale_factor(4),
-              {"VID", 5, I, 0, false, {}, "*DEFINE_VECTOR of DOF 4 (required with it: error 1003)"},
+              {"VID", 5, I, 0, false, {}, "*DEFINE_VECTOR of DOF 4, 8 (required with them: error 1003)"},
               {"DEATH", 6, E, 0, false, {}, "death time (0: none; before BIRTH: error 1003)"},
               {"BIRTH", 7, E, 0, false, {}, "birth time"},
           }, "each motion ([ID card] with _ID; card 2 after it with |DOF| 9-11 or VAD 4, missing: error 1316)"}},

@@ -161,7 +161,7 @@ struct RLoad {            // one load or prescribed-motion card, resolved after 
   std::string keyword;    // as written
   int id = 0;             // node, set or part id
   Ref ref;
-  int dof = 0;            // 1-3: x y z
+  int dof = 0;            // 1-3: x y z (motions: 4 / -4, 5-8 / -8 as LS-DYNA's DOF)
   MotionKind vad = MotionKind::velocity;
   int lcid = 0;
   Ref lc_ref;
@@ -172,6 +172,11 @@ struct RLoad {            // one load or prescribed-motion card, resolved after 
   int cid = 0, vid = 0;           // local system of DOF (loads), vector of DOF 4 (motions)
   Ref cid_ref, vid_ref;
 };
+
+// *BOUNDARY_PRESCRIBED_MOTION DOF 4, -4 (along VID) and 8, -8 (about VID): the direction is a
+// *DEFINE_VECTOR; DOF 5-8 and -8 are rotations (rigid bodies)
+inline bool motion_along_vector(int dof) { return dof == 4 || dof == -4 || dof == 8 || dof == -8; }
+inline bool motion_is_rotation(int dof) { return (dof >= 5 && dof <= 8) || dof == -8; }
 
 struct RTemperature {    // one *INITIAL_TEMPERATURE_NODE / _SET card, in deck order
   bool set = false;       // NSID (0: all nodes), else NID

@@ -164,9 +164,10 @@ bool read_motion(const Block& b, KeywordContext& ctx, const KeywordSpec& s, std:
   else if (vad == 2) l.vad = MotionKind::displacement;
   read_load_curve(b, ctx, v, l);
   l.sf = v["SF"];
-  l.vid = ctx.xid(int(v.integer("VID")), b, 'd');  // the direction of DOF 4 (*DEFINE_VECTOR)
+  l.vid = ctx.xid(int(v.integer("VID")), b, 'd');  // the direction of DOF 4 and 8 (*DEFINE_VECTOR)
   l.vid_ref = v.ref("VID");
-  if (l.dof == 4 && l.vid == 0) v.error(1003, "VID", "DOF 4 moves along a vector: VID (*DEFINE_VECTOR) is required");
+  if (motion_along_vector(l.dof) && l.vid == 0)
+    v.error(1003, "VID", "DOF " + std::to_string(l.dof) + " moves along or about a vector: VID (*DEFINE_VECTOR) is required");
   const double death = v["DEATH"];
   l.death = death > 0 ? death : 1e28;
   l.birth = v["BIRTH"];

@@ -2329,14 +2329,16 @@ class KeywordReader {
   }
 
   // The global unit direction of a load or motion: DOF 1-3 along the axes of its system CID
-  // (global when 0), DOF 4 along its *DEFINE_VECTOR VID, a body load's direction in its CID.
+  // (global when 0), DOF 4 along its *DEFINE_VECTOR VID, a body load's direction in its CID; a
+  // motion's DOF 5-7 about the axes, 8 (and -4, -8) along or about VID.
   // False (error reported) when the system or vector is undefined.
   bool load_direction(const RLoad& l, std::array<double, 3>& d) {
     if (l.kind == RLoad::body) {
       d = l.dir;
       return global_direction(l.cid, l.cid_ref, l.keyword, "CID", d);
     }
-    if (l.dof == 4) {
+    const bool motion = l.kind == RLoad::motion_node || l.kind == RLoad::motion_set || l.kind == RLoad::motion_rigid;
+    if (motion ? motion_along_vector(l.dof) : l.dof == 4) {
       if (l.vid == 0) return false;  // (VID required: reported when read)
       if (!coords_.vector(l.vid, d)) {
         err(1310, l.vid_ref, l.keyword, "VID", "vector " + std::to_string(l.vid) + " is not defined by *DEFINE_VECTOR");
@@ -2344,7 +2346,7 @@ class KeywordReader {
       }
       return true;
     }
-    d = axis_direction(l.dof);
+    d = axis_direction(motion && motion_is_rotation(l.dof) ? l.dof - 4 : l.dof);  // DOF 5-7: about x y z
     return global_direction(l.cid, l.cid_ref, l.keyword, "CID", d);
   }
 
@@ -2460,6 +2462,7 @@ class KeywordReader {
             PrescribedMotion pm;
             pm.node = n;
             pm.dir = dir;
+            pm.hold_normal = l.dof < 0;  // DOF -4
             pm.kind = l.vad;
             pm.curve = curve;
             pm.scale = l.sf;
@@ -2480,6 +2483,8 @@ class KeywordReader {
           PrescribedMotion pm;
           pm.rigid_material = mt;
           pm.dir = dir;
+          pm.rotation = motion_is_rotation(l.dof);  // about the axis dir through the centre of mass
+          pm.hold_normal = l.dof < 0;                // DOF -4, -8
           pm.kind = l.vad;
           pm.curve = curve;
           pm.scale = l.sf;

@@ -311,8 +311,11 @@ struct PrescribedMotion {      // *BOUNDARY_PRESCRIBED_MOTION_NODE / _SET / _RIG
   std::array<double, 3> dir{};
   MotionKind kind = MotionKind::velocity;
   // a prescribed rotational velocity about dir (DYNA3D DOF 5-7) of a node with rotations
-  // (a shell's or a beam's): the velocity form only
+  // (a shell's or a beam's): the velocity form only; of a rigid body (LS-DYNA DOF 5-8): its
+  // angular velocity, acceleration or angle about the axis dir through its centre of mass
   bool rotation = false;
+  // LS-DYNA DOF -4 / -8: the components normal to dir (velocity, or angular velocity) held at 0
+  bool hold_normal = false;
   int curve = 0;
   double scale = 1;
   double birth = 0, death = 1e28;

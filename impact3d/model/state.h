@@ -23,6 +23,7 @@ struct RigidBody {
   std::array<double, 9> inertia0{};         // inertia about the COM in the initial configuration
   std::array<double, 9> rot{1, 0, 0, 0, 1, 0, 0, 0, 1};  // rotation from initial configuration
   std::array<double, 3> omega{};            // angular velocity
+  std::array<double, 3> omega_old{};        // omega^{n-1/2} (prescribed rotations: loads.cpp)
   std::array<double, 3> ang_mom{};          // angular momentum
   std::vector<double> r0;                   // 3 per node: initial position relative to the COM
   // *MAT_RIGID CMO/CON1/CON2: constrained translations and rotations of the body (bits x=1,
@@ -173,6 +174,9 @@ struct State {
   std::vector<double> mat_internal, mat_hourglass;
   std::vector<std::array<double, 3>> wall_force;  // force on each wall this cycle
   std::vector<double> wall_disp, wall_vel;        // moving walls: displacement and velocity along the normal
+  // per prescribed motion: the angle a rigid rotation's body has turned about its axis since
+  // the start (the displacement form's u; 0 for the other motions)
+  std::vector<double> motion_angle;
 
   // Every field that changes during the run, for restart dumps: a dump restores these on top
   // of a State built by initialize_state from the same Model, and the run goes on bit for bit.
@@ -187,7 +191,7 @@ struct State {
     v(mass); v(shells.inertia); v(ms_factor); v(shells.ms_factor); v(added_mass); v(mat_added_mass);
     v(time); v(cycle); v(dt_half); v(dt_next); v(dt_vel); v(dt_elem); v(dt0);
     v(kinetic); v(internal); v(hourglass); v(bulk_viscous); v(wall_work); v(contact);
-    v(external_work); v(initial_total); v(wall_force); v(wall_disp); v(wall_vel);
+    v(external_work); v(initial_total); v(wall_force); v(wall_disp); v(wall_vel); v(motion_angle);
     v(shells.area); v(shells.sig); v(shells.back); v(shells.eps_p); v(shells.yielded);
     v(shells.hgq); v(shells.drill); v(shells.dt_e); v(shells.energy); v(shells.failed); v(shells.cmx); v(shells.cmy); v(shells.cmz);
     v(shells.wx); v(shells.wy); v(shells.wz); v(shells.rot_kinetic);
@@ -196,7 +200,7 @@ struct State {
     v(beams.weld_res); v(beams.weld_res_count);
     v(rigid_of_node);
     for (RigidBody& rb : rigid) {
-      v(rb.com); v(rb.vcom); v(rb.rot); v(rb.omega); v(rb.ang_mom); v(rb.released);
+      v(rb.com); v(rb.vcom); v(rb.rot); v(rb.omega); v(rb.omega_old); v(rb.ang_mom); v(rb.released);
     }
   }
 

@@ -48,7 +48,7 @@ struct DumpHeader {
 // node-to-body map); 16: the viscous hourglass forms' resultants (State::hgs) and their pending
 // power (State::hg_pending, State::dt_vel); 17: the spot-weld beams' stored resultants (NF,
 // BeamState::weld_res, weld_res_count); 18: the fully integrated solids' points (State::pt_*).
-constexpr std::uint32_t kDumpVersion = 18;
+constexpr std::uint32_t kDumpVersion = 19;
 
 // Writes the dump atomically (temporary file, fsync, rename).  Throws std::runtime_error.
 // The contact state (energy books of the sliding interfaces) travels with the State.

@@ -105,7 +105,7 @@ double power_of_global_damping(const Model& m, const State& s, const LoadSet& lo
 
 }  // namespace
 
-void prepare_loads(const Model& m, const State& s, LoadSet& loads) {
+void prepare_loads(const Model& m, State& s, LoadSet& loads) {
   loads.nodal_force.assign(3 * m.nodal_loads.size(), 0.0);
   loads.pressure_force.assign(12 * m.pressure_loads.size(), 0.0);
   loads.rigid_force.assign(3 * m.rigid_body_loads.size(), 0.0);
@@ -124,11 +124,17 @@ void prepare_loads(const Model& m, const State& s, LoadSet& loads) {
   }
   loads.free_velocity.assign(m.prescribed_motions.size(), 0.0);
   loads.active.assign(m.prescribed_motions.size(), 0);
+  loads.delta.assign(3 * m.prescribed_motions.size(), 0.0);
+  loads.motion_body.clear();
+  for (const PrescribedMotion& pm : m.prescribed_motions)
+    loads.motion_body.push_back(pm.node >= 0 ? -1 : rigid_body_of_material(s, pm.rigid_material));
   loads.rot_old.assign(m.prescribed_motions.size(), 0.0);
   loads.has_rotations = false;
   for (const PrescribedMotion& pm : m.prescribed_motions) loads.has_rotations = loads.has_rotations || pm.rotation;
   loads.has_loads = m.has_loads();
   loads.has_motions = !m.prescribed_motions.empty();
+  s.motion_angle.assign(m.prescribed_motions.size(), 0.0);  // (a restart dump restores them)
+  for (RigidBody& rb : s.rigid) rb.omega_old = rb.omega;
 }
 
 void apply_loads_to_nodes(const Model& m, State& s, LoadSet& loads, double t) {
@@ -189,39 +195,102 @@ void apply_loads_to_nodes(const Model& m, State& s, LoadSet& loads, double t) {
   }
 }
 
+namespace {
+
+double dot3(const double* a, const std::array<double, 3>& d) { return a[0] * d[0] + a[1] * d[1] + a[2] * d[2]; }
+
+// DOF -4 / -8: removes the components of v normal to d, the change into delta (3).
+void hold_normal_plane(const std::array<double, 3>& d, double* v, double* delta) {
+  const double along = dot3(v, d);
+  for (std::size_t a = 0; a < 3; ++a) {
+    const double normal = v[a] - along * d[a];
+    delta[a] = -normal;
+    v[a] -= normal;
+  }
+}
+
+// A node's prescribed component of v^{n+1/2} (and with DOF -4 its normal plane held).
+void prescribe_node(const Model& m, State& s, LoadSet& loads, std::size_t j, double t, double dt_n, double dt_next) {
+  const PrescribedMotion& pm = m.prescribed_motions[j];
+  const auto& d = pm.dir;
+  const std::size_t k = std::size_t(pm.node);
+  const double v_along = s.vx[k] * d[0] + s.vy[k] * d[1] + s.vz[k] * d[2];
+  const double v_old_along = s.vx_old[k] * d[0] + s.vy_old[k] * d[1] + s.vz_old[k] * d[2];
+  const double disp = (s.x[k] - m.x[k]) * d[0] + (s.y[k] - m.y[k]) * d[1] + (s.z[k] - m.z[k]) * d[2];
+  const double vp = prescribed_velocity(m, pm, t, dt_n, dt_next, v_old_along, disp);
+  loads.free_velocity[j] = v_along;
+  loads.active[j] = 1;
+  s.vx[k] += (vp - v_along) * d[0];
+  s.vy[k] += (vp - v_along) * d[1];
+  s.vz[k] += (vp - v_along) * d[2];
+  if (!pm.hold_normal) return;
+  double v[3] = {s.vx[k], s.vy[k], s.vz[k]};
+  hold_normal_plane(d, v, &loads.delta[3 * j]);
+  s.vx[k] = v[0], s.vy[k] = v[1], s.vz[k] = v[2];
+}
+
+// A rigid body's prescribed component of its centre's velocity (DOF 1-4, -4).
+void prescribe_rigid_translation(const Model& m, State& s, LoadSet& loads, std::size_t j, RigidBody& rb, double t,
+                                 double dt_n, double dt_next) {
+  const PrescribedMotion& pm = m.prescribed_motions[j];
+  const auto& d = pm.dir;
+  const double v_along = rb.vcom[0] * d[0] + rb.vcom[1] * d[1] + rb.vcom[2] * d[2];
+  const std::array<double, 3> vc_old = rigid_body_old_velocity(s, rb);
+  const double v_old_along = vc_old[0] * d[0] + vc_old[1] * d[1] + vc_old[2] * d[2];
+  double disp = 0;
+  for (int a = 0; a < 3; ++a) disp += (rb.com[std::size_t(a)] - rb.com0[std::size_t(a)]) * d[std::size_t(a)];
+  const double vp = prescribed_velocity(m, pm, t, dt_n, dt_next, v_old_along, disp);
+  loads.free_velocity[j] = v_along;
+  loads.active[j] = 1;
+  for (int a = 0; a < 3; ++a) rb.vcom[std::size_t(a)] += (vp - v_along) * d[std::size_t(a)];
+  if (pm.hold_normal) hold_normal_plane(d, rb.vcom.data(), &loads.delta[3 * j]);
+  set_rigid_body_node_velocities(s, rb);
+}
+
+// A rigid body's prescribed angular velocity about the axis dir through its centre (DOF 5-8,
+// -8): omega^{n+1/2} along dir from the curve (velocity), from omega^{n-1/2} (acceleration) or
+// from the angle turned so far (displacement); the whole change of omega into delta.
+void prescribe_rigid_rotation(const Model& m, State& s, LoadSet& loads, std::size_t j, RigidBody& rb, double t,
+                              double dt_n, double dt_next) {
+  const PrescribedMotion& pm = m.prescribed_motions[j];
+  const auto& d = pm.dir;
+  const double w_along = dot3(rb.omega.data(), d);
+  const double w_old_along = dot3(rb.omega_old.data(), d);
+  const double wp = prescribed_velocity(m, pm, t, dt_n, dt_next, w_old_along, s.motion_angle[j]);
+  std::array<double, 3> w = rb.omega;
+  for (std::size_t a = 0; a < 3; ++a) w[a] += (wp - w_along) * d[a];
+  double held[3];
+  if (pm.hold_normal) hold_normal_plane(d, w.data(), held);
+  for (std::size_t a = 0; a < 3; ++a) loads.delta[3 * j + a] = w[a] - rb.omega[a];
+  loads.free_velocity[j] = w_along;
+  loads.active[j] = 1;
+  set_rigid_body_angular_velocity(s, rb, w);
+}
+
+}  // namespace
+
 void apply_prescribed_motions(const Model& m, State& s, LoadSet& loads, double t, double dt_n,
                               double dt_next) {
   for (std::size_t j = 0; j < m.prescribed_motions.size(); ++j) {
     const PrescribedMotion& pm = m.prescribed_motions[j];
     loads.active[j] = 0;
-    if (pm.rotation || !motion_is_active(pm, t)) continue;
-    const auto& d = pm.dir;
+    const bool node_rotation = pm.rotation && pm.node >= 0;  // (apply_prescribed_rotations)
+    if (node_rotation || !motion_is_active(pm, t)) continue;
     if (pm.node >= 0) {
-      const std::size_t k = std::size_t(pm.node);
-      const double v_along = s.vx[k] * d[0] + s.vy[k] * d[1] + s.vz[k] * d[2];
-      const double v_old_along = s.vx_old[k] * d[0] + s.vy_old[k] * d[1] + s.vz_old[k] * d[2];
-      const double disp = (s.x[k] - m.x[k]) * d[0] + (s.y[k] - m.y[k]) * d[1] + (s.z[k] - m.z[k]) * d[2];
-      const double vp = prescribed_velocity(m, pm, t, dt_n, dt_next, v_old_along, disp);
-      loads.free_velocity[j] = v_along;
-      loads.active[j] = 1;
-      s.vx[k] += (vp - v_along) * d[0];
-      s.vy[k] += (vp - v_along) * d[1];
-      s.vz[k] += (vp - v_along) * d[2];
+      prescribe_node(m, s, loads, j, t, dt_n, dt_next);
       continue;
     }
-    const int r = rigid_body_of_material(s, pm.rigid_material);
+    const int r = loads.motion_body[j];
     if (r < 0) continue;
     RigidBody& rb = s.rigid[std::size_t(r)];
-    const double v_along = rb.vcom[0] * d[0] + rb.vcom[1] * d[1] + rb.vcom[2] * d[2];
-    const std::array<double, 3> vc_old = rigid_body_old_velocity(s, rb);
-    const double v_old_along = vc_old[0] * d[0] + vc_old[1] * d[1] + vc_old[2] * d[2];
-    double disp = 0;
-    for (int a = 0; a < 3; ++a) disp += (rb.com[std::size_t(a)] - rb.com0[std::size_t(a)]) * d[std::size_t(a)];
-    const double vp = prescribed_velocity(m, pm, t, dt_n, dt_next, v_old_along, disp);
-    loads.free_velocity[j] = v_along;
-    loads.active[j] = 1;
-    for (int a = 0; a < 3; ++a) rb.vcom[std::size_t(a)] += (vp - v_along) * d[std::size_t(a)];
-    set_rigid_body_node_velocities(s, rb);
+    if (pm.rotation) prescribe_rigid_rotation(m, s, loads, j, rb, t, dt_n, dt_next);
+    else prescribe_rigid_translation(m, s, loads, j, rb, t, dt_n, dt_next);
+  }
+  // the angle each rigid rotation's body turns about its axis this cycle (free or prescribed)
+  for (std::size_t j = 0; j < m.prescribed_motions.size(); ++j) {
+    const PrescribedMotion& pm = m.prescribed_motions[j];
+    if (pm.rotation && pm.node < 0 && loads.motion_body[j] >= 0)
+      s.motion_angle[j] += dt_next * dot3(s.rigid[std::size_t(loads.motion_body[j])].omega.data(), pm.dir);
   }
 }
 
@@ -263,7 +332,49 @@ void apply_prescribed_rotations(const Model& m, State& s, LoadSet& loads, double
   s.external_work += work;
 }
 
-void book_external_work(const Model& m, State& s, const LoadSet& loads, double dt_n) {
+namespace {
+
+// The power of the reactions that hold the prescribed motions this cycle: m (v_prescribed -
+// v_free) / dt_n along dir on the mean velocity (a held normal plane: m delta / dt_n on it); a
+// rigid rotation's reaction moment I delta / dt_n on the mean angular velocity.
+double power_of_motion_reactions(const Model& m, const State& s, const LoadSet& loads, double dt_n) {
+  double w = 0;
+  for (std::size_t j = 0; j < m.prescribed_motions.size(); ++j) {
+    if (!loads.active[j]) continue;
+    const PrescribedMotion& pm = m.prescribed_motions[j];
+    const auto& d = pm.dir;
+    const double* delta = &loads.delta[3 * j];
+    if (pm.node >= 0) {
+      const std::size_t k = std::size_t(pm.node);
+      const double v_new = s.vx[k] * d[0] + s.vy[k] * d[1] + s.vz[k] * d[2];
+      const double v_old = s.vx_old[k] * d[0] + s.vy_old[k] * d[1] + s.vz_old[k] * d[2];
+      w += s.mass[k] * (v_new - loads.free_velocity[j]) / dt_n * 0.5 * (v_old + v_new);
+      if (pm.hold_normal)
+        w += s.mass[k] / dt_n * 0.5 * (delta[0] * (s.vx_old[k] + s.vx[k]) + delta[1] * (s.vy_old[k] + s.vy[k]) + delta[2] * (s.vz_old[k] + s.vz[k]));
+      continue;
+    }
+    const int r = loads.motion_body[j];
+    if (r < 0) continue;
+    const RigidBody& rb = s.rigid[std::size_t(r)];
+    if (pm.rotation) {
+      const std::array<double, 3> L = rigid_body_inertia_times(rb, {delta[0], delta[1], delta[2]});
+      const auto& wo = rb.omega_old;
+      for (std::size_t a = 0; a < 3; ++a) w += L[a] / dt_n * 0.5 * (wo[a] + rb.omega[a]);
+      continue;
+    }
+    const std::array<double, 3> vc_old = rigid_body_old_velocity(s, rb);
+    const double v_new = rb.vcom[0] * d[0] + rb.vcom[1] * d[1] + rb.vcom[2] * d[2];
+    const double v_old = vc_old[0] * d[0] + vc_old[1] * d[1] + vc_old[2] * d[2];
+    w += rb.mass * (v_new - loads.free_velocity[j]) / dt_n * 0.5 * (v_old + v_new);
+    if (pm.hold_normal)
+      for (std::size_t a = 0; a < 3; ++a) w += rb.mass * delta[a] / dt_n * 0.5 * (vc_old[a] + rb.vcom[a]);
+  }
+  return w;
+}
+
+}  // namespace
+
+void book_external_work(const Model& m, State& s, LoadSet& loads, double dt_n) {
   double w = 0;
   for (std::size_t j = 0; j < m.nodal_loads.size(); ++j)
     w += power_on_node(s, m.nodal_loads[j].node, &loads.nodal_force[3 * j]);
@@ -292,28 +403,10 @@ void book_external_work(const Model& m, State& s, const LoadSet& loads, double d
     }
     w += 0.5 * (loads.body_acc[0] * px + loads.body_acc[1] * py + loads.body_acc[2] * pz);
   }
-  // reactions of prescribed motions: m (v_prescribed - v_free) / dt_n along dir, on the mean velocity
-  for (std::size_t j = 0; j < m.prescribed_motions.size(); ++j) {
-    if (!loads.active[j]) continue;
-    const PrescribedMotion& pm = m.prescribed_motions[j];
-    const auto& d = pm.dir;
-    if (pm.node >= 0) {
-      const std::size_t k = std::size_t(pm.node);
-      const double v_new = s.vx[k] * d[0] + s.vy[k] * d[1] + s.vz[k] * d[2];
-      const double v_old = s.vx_old[k] * d[0] + s.vy_old[k] * d[1] + s.vz_old[k] * d[2];
-      w += s.mass[k] * (v_new - loads.free_velocity[j]) / dt_n * 0.5 * (v_old + v_new);
-    } else {
-      const int r = rigid_body_of_material(s, pm.rigid_material);
-      if (r < 0) continue;
-      const RigidBody& rb = s.rigid[std::size_t(r)];
-      const std::array<double, 3> vc_old = rigid_body_old_velocity(s, rb);
-      const double v_new = rb.vcom[0] * d[0] + rb.vcom[1] * d[1] + rb.vcom[2] * d[2];
-      const double v_old = vc_old[0] * d[0] + vc_old[1] * d[1] + vc_old[2] * d[2];
-      w += rb.mass * (v_new - loads.free_velocity[j]) / dt_n * 0.5 * (v_old + v_new);
-    }
-  }
+  w += power_of_motion_reactions(m, s, loads, dt_n);
   if (m.damping.active) w += power_of_global_damping(m, s, loads);
   s.external_work += dt_n * w;
+  for (RigidBody& rb : s.rigid) rb.omega_old = rb.omega;  // omega^{n+1/2}: the next cycle's old one
 }
 
 }  // namespace impact3d

@@ -35,11 +35,15 @@ struct LoadSet {
   // prescribed motions: v^{n+1/2} before the prescription (for the reaction's work)
   std::vector<double> free_velocity;   // 1 per Model::prescribed_motions entry
   std::vector<uint8_t> active;         // 1 when the motion acted this cycle
+  // the vector change a motion made this cycle beyond its own component (3 per motion): a held
+  // normal plane's (DOF -4 / -8) velocity change, or a rigid rotation's whole change of omega
+  std::vector<double> delta;
+  std::vector<int> motion_body;        // per motion: its rigid body (index in State::rigid), -1
   double damping_d = 0;                // this cycle's global damping constant D
   bool has_loads = false, has_motions = false;
 };
 
-void prepare_loads(const Model& m, const State& s, LoadSet& loads);
+void prepare_loads(const Model& m, State& s, LoadSet& loads);
 
 // Adds this cycle's load forces at time t (= t^n, positions x^n) to s.fext_x/y/z.
 void apply_loads_to_nodes(const Model& m, State& s, LoadSet& loads, double t);
@@ -58,6 +62,6 @@ void apply_prescribed_rotations(const Model& m, State& s, LoadSet& loads, double
 
 // Books the work of the loads and of the prescribed motions' reactions over this cycle in
 // s.external_work (call after the velocities are final).
-void book_external_work(const Model& m, State& s, const LoadSet& loads, double dt_n);
+void book_external_work(const Model& m, State& s, LoadSet& loads, double dt_n);
 
 }  // namespace impact3d

@@ -130,6 +130,18 @@ std::array<double, 3> rigid_body_old_velocity(const State& s, const RigidBody& r
   return {p[0] / rb.mass, p[1] / rb.mass, p[2] / rb.mass};
 }
 
+std::array<double, 3> rigid_body_inertia_times(const RigidBody& rb, const std::array<double, 3>& w) {
+  const Mat3 R = to_mat(rb.rot);
+  const Vec3 L = R * (to_mat(rb.inertia0) * (R.transpose() * Vec3(w[0], w[1], w[2])));
+  return {L(0), L(1), L(2)};
+}
+
+void set_rigid_body_angular_velocity(State& s, RigidBody& rb, const std::array<double, 3>& w) {
+  rb.omega = w;
+  rb.ang_mom = rigid_body_inertia_times(rb, w);
+  set_rigid_body_node_velocities(s, rb);
+}
+
 void update_rigid_body_positions(State& s, double dt_next) {
   for (RigidBody& rb : s.rigid) {
     if (rb.released) continue;  // a failed spot weld: its nodes moved with their velocities

@@ -15,5 +15,10 @@ void set_rigid_body_node_velocities(State& s, const RigidBody& rb);
 std::array<double, 3> rigid_body_old_velocity(const State& s, const RigidBody& rb);
 // After the position update: place the body's nodes from its centre and rotation (no drift).
 void update_rigid_body_positions(State& s, double dt_next);
+// I w with the body's current inertia R I0 R^T about its centre of mass.
+std::array<double, 3> rigid_body_inertia_times(const RigidBody& rb, const std::array<double, 3>& w);
+// Sets the body's angular velocity to w (a prescribed rotation): its angular momentum becomes
+// I w, and its nodes' velocities the rigid field.
+void set_rigid_body_angular_velocity(State& s, RigidBody& rb, const std::array<double, 3>& w);
 
 }  // namespace impact3d
