@@ -939,8 +939,45 @@ std::vector<KeywordSpec> contact_specs() {
            "one contact a keyword, as the others with the _ERODING_ card after card 3"}};
 }
 
+// A card of one id and a heading in fixed columns (10 and 70, also in long format).
+KeywordCardLayout id_and_heading(const char* name, const char* meaning, const char* when) {
+  KeywordCardLayout c{"", 2, 10, per_field, {{name, 0, I, 0, false, {}, meaning},
+                                            {"HEADING", 1, FieldKind::text, 0, false, {}, "not read"}}, when, {10, 70}};
+  c.fixed = true;
+  return c;
+}
+
+// *DATABASE_HISTORY_...: the nodes, elements or sets of the time-history databases.
+void add_history_specs(std::vector<KeywordSpec>& t) {
+  const KeywordFamily F = KeywordFamily::control_database;
+  const char* const every = "one or more cards (blank cards skipped)";
+  t.push_back({{"DATABASE_HISTORY_NODE"}, F, false, {{"", 8, 10, per_field, ids("NID", 8, 0, "node ids (0: none)"), every}}, ""});
+  t.push_back({{"DATABASE_HISTORY_SOLID", "DATABASE_HISTORY_SHELL", "DATABASE_HISTORY_BEAM"}, F, false,
+               {{"", 8, 10, per_field, ids("EID", 8, 0, "element ids of the keyword's kind (0: none)"), every}}, ""});
+  t.push_back({{"DATABASE_HISTORY_NODE_SET", "DATABASE_HISTORY_SOLID_SET"}, F, false,
+               {{"", 8, 10, per_field, ids("ID", 8, 0, "node or solid set ids (0: none)"), every}}, ""});
+  t.push_back({{"DATABASE_HISTORY_NODE_ID"}, F, false, {id_and_heading("NID", "node id (0: none)", "one node a card (blank cards skipped)")}, ""});
+  t.push_back({{"DATABASE_HISTORY_SOLID_ID", "DATABASE_HISTORY_SHELL_ID", "DATABASE_HISTORY_BEAM_ID"}, F, false,
+               {id_and_heading("EID", "element id (0: none)", "one element a card (blank cards skipped)")}, ""});
+}
+
+// *TITLE and *COMMENT: read as text, never as fields (no message about their characters).
+void add_title_specs(std::vector<KeywordSpec>& t) {
+  const KeywordFamily F = KeywordFamily::control_database;
+  KeywordCardLayout title{"", 1, 80, per_field, {{"TITLE", 0, FieldKind::text, 0, false, {}, "the problem's title, as written (right blanks dropped)"}},
+                          "the first card; the cards after it are not read"};
+  title.fixed = true;
+  t.push_back({{"TITLE"}, F, false, {title}, "given again: the last one is used"});
+  t.push_back({{"COMMENT"}, F, false, {},
+               "ignored, as by LS-DYNA, except the lines the converter writes for fields LS-DYNA has no keyword for (upper or lower "
+               "case, words between blanks): IMPACT-3D INTERFACE_SEGMENTS n, IMPACT-3D VISCOSITY_FLAG n, IMPACT-3D REACTION_PRINT_FLAG n, "
+               "IMPACT-3D INITIALLY_ELASTIC PART pid; any other line that starts with IMPACT-3D: error 1312"});
+}
+
 std::vector<KeywordSpec> control_database_specs() {
   std::vector<KeywordSpec> t;
+  add_history_specs(t);
+  add_title_specs(t);
   t.push_back({{"CONTROL_TERMINATION"}, KeywordFamily::control_database, true,
                {{"", 6, 10, per_field, {
                    {"ENDTIM", 0, E, 0, false, {outside(0, kInf, 1214, nullptr, true)}, "termination time (required)"},
@@ -1101,6 +1138,7 @@ const KeywordField& KeywordCardLayout::field(std::string_view name) const {
 
 std::vector<int> KeywordCardLayout::columns(bool long_fmt, bool i10) const {
   std::vector<int> w = widths.empty() ? std::vector<int>(std::size_t(count), width) : widths;
+  if (fixed) return w;
   for (int& c : w) c = long_fmt ? 20 : i10 && c == 8 ? 10 : c;
   return w;
 }
@@ -1156,8 +1194,9 @@ std::string keyword_tables_markdown() {
         for (std::size_t k = 0; k < w.size(); ++k) os << (k ? ", " : " ") << w[k];
         os << " columns";
       }
-      os << (c.width == 8 || (!c.widths.empty() && c.columns(false, true) != w) ? " (8-column fields 10 in I10 format; 20 in long format)"
-                                                                                : " (20 in long format)");
+      os << (c.fixed ? " (the same in long format)"
+             : c.width == 8 || (!c.widths.empty() && c.columns(false, true) != w) ? " (8-column fields 10 in I10 format; 20 in long format)"
+                                                                                   : " (20 in long format)");
       if (c.order == CheckOrder::after_card) os << "; checked once the card is read";
       os << "\n\n| field | columns | kind | blank | meaning | checks |\n|---|---|---|---|---|---|\n";
       for (const KeywordField& f : c.fields) {

@@ -66,6 +66,8 @@ struct KeywordCardLayout {
   const char* when;   // when the card is read ("" always; else e.g. "when given", "ELFORM 2")
   std::vector<int> widths = {};  // columns of each field in standard format when they differ
                                  // (*NODE: 8 16 16 16 8 8); empty: `count` fields of `width`
+  bool fixed = false;  // the same columns in long and I10 format (a heading card: *TITLE, the
+                       // _ID cards of *DATABASE_HISTORY_...)
   const KeywordField& field(std::string_view name) const;  // every name a reader asks for exists
   // The columns of each field: standard format, I10 format (a field of 8 columns has 10: the
   // ids of *NODE and *ELEMENT_...) or long format (20 each).
@@ -82,7 +84,7 @@ enum class KeywordFamily {
   sets_boxes,        // *DEFINE_BOX (keyword_sets_boxes.cpp)
   loads_bcs,         // *LOAD_..., *BOUNDARY_..., *INITIAL_..., *DAMPING_GLOBAL (keyword_loads_bcs.cpp)
   contacts,          // *CONTACT_... (keyword_contacts.cpp)
-  control_database,  // *CONTROL_..., *DATABASE_... (keyword_control_database.cpp)
+  control_database,  // *CONTROL_..., *DATABASE_..., *TITLE, *COMMENT (keyword_control_database.cpp)
   ignored,           // read and ignored, warning 2008 with the note (keyword_control_database.cpp)
 };
 

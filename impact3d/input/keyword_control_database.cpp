@@ -3,6 +3,7 @@
 
 #include "impact3d/input/keyword_families.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace impact3d::kw {
@@ -76,12 +77,85 @@ void read_cards(const Block& b, KeywordContext& ctx, const KeywordSpec& s, Keywo
   }
 }
 
+// *DATABASE_HISTORY_NODE / _SOLID / _SHELL / _BEAM: ids 8 a card; _NODE_SET / _SOLID_SET: set
+// ids 8 a card; _ID: one id and a heading a card.
+void read_history(const Block& b, KeywordContext& ctx, const KeywordSpec& s, KeywordControls& c) {
+  RHistory h;
+  h.solid = b.name.rfind("DATABASE_HISTORY_SOLID", 0) == 0;
+  h.shell = b.name.rfind("DATABASE_HISTORY_SHELL", 0) == 0;
+  h.beam = b.name.rfind("DATABASE_HISTORY_BEAM", 0) == 0;
+  h.sets = b.name.size() > 4 && b.name.compare(b.name.size() - 4, 4, "_SET") == 0;
+  const KeywordCardLayout& layout = s.card("");
+  const std::size_t n = layout.fixed ? 1 : layout.fields.size();  // _ID: the id, not the heading
+  for (std::size_t k = 0; k < b.data.size(); ++k) {
+    if (is_blank(b.data[k].line->text)) continue;
+    KeywordValues v = ctx.fields(b, k, layout);
+    for (std::size_t f = 0; f < n; ++f) {
+      const long long id = v.integer_at(f);
+      if (id != 0) {
+        h.ids.push_back(int(id));
+        h.refs.push_back(v.card().ref(layout.fields[f].index));
+      }
+    }
+  }
+  c.histories.push_back(std::move(h));
+}
+
+// *COMMENT is ignored (as by LS-DYNA), except the IMPACT-3D lines the converter writes there
+// for fields LS-DYNA has no keyword for (any other: error 1312).
+void read_comment(const Block& b, KeywordContext& ctx, KeywordControls& c) {
+  for (const KLine& l : b.data) {
+    const std::string t = upper(rtrim(l.line->text));
+    if (t.rfind("IMPACT-3D ", 0) != 0) continue;
+    std::vector<std::string> tok;
+    for (std::size_t p = 0; p < t.size();) {
+      const std::size_t s = t.find_first_not_of(' ', p);
+      if (s == std::string::npos) break;
+      const std::size_t e = t.find(' ', s);
+      tok.push_back(t.substr(s, e == std::string::npos ? std::string::npos : e - s));
+      p = e == std::string::npos ? t.size() : e;
+    }
+    long long v = 0;
+    const bool num = parse_fortran_int(tok.back(), v) == FieldStatus::ok;
+    if (num && tok.size() == 3 && tok[1] == "INTERFACE_SEGMENTS") {
+      c.interface_segments = int(v);
+    } else if (num && tok.size() == 3 && tok[1] == "VISCOSITY_FLAG") {
+      c.viscosity_flag = int(v);
+    } else if (num && tok.size() == 3 && tok[1] == "REACTION_PRINT_FLAG") {
+      c.reaction_flag = int(v);
+    } else if (num && tok.size() == 4 && tok[1] == "INITIALLY_ELASTIC" && tok[2] == "PART") {
+      c.initially_elastic.insert(int(v));
+    } else {
+      Location loc;
+      loc.file = l.file->name();
+      loc.line = l.line->number;
+      loc.card = "*COMMENT";
+      ctx.diag.add(1312, loc, "unknown IMPACT-3D line: " + rtrim(l.line->text));
+    }
+  }
+}
+
 }  // namespace
 
 bool read_control_database(const Block& b, KeywordContext& ctx, KeywordControls& c) {
   const KeywordSpec* s = find_keyword_spec(b.name);
   if (!s || (s->family != KeywordFamily::control_database && s->family != KeywordFamily::ignored)) return false;
   if (s->once) ctx.once(b);
+  if (b.name.rfind("DATABASE_HISTORY_", 0) == 0) {
+    read_history(b, ctx, *s, c);
+    return true;
+  }
+  if (b.name == "TITLE") {
+    if (!b.data.empty()) {
+      const std::string_view t = b.data[0].line->text;
+      c.title = rtrim(t.substr(0, std::min<std::size_t>(80, t.size())));
+    }
+    return true;
+  }
+  if (b.name == "COMMENT") {
+    read_comment(b, ctx, c);
+    return true;
+  }
   if (b.name == "DATABASE_BINARY_INTFOR") {
     // the interface-force database (written with s=, default intfor beside g=)
     c.intfor_given = true;
@@ -104,9 +178,11 @@ bool read_control_database(const Block& b, KeywordContext& ctx, KeywordControls&
   return true;
 }
 
-void build_controls(const KeywordControls& c, const std::string& main_deck, int reaction_flag, Model& m,
-                    Diagnostics& diag) {
+void build_controls(const KeywordControls& c, const std::string& main_deck, Model& m, Diagnostics& diag) {
+  if (c.title) m.title = *c.title;
   ControlData& k = m.control;
+  if (c.interface_segments) k.interface_segments_out = *c.interface_segments;
+  if (c.viscosity_flag) k.viscosity_flag = *c.viscosity_flag;
   k.nmmat = int(m.materials.size());
   k.numnp = m.num_nodes();
   k.numelh = m.num_hexes();
@@ -130,7 +206,7 @@ void build_controls(const KeywordControls& c, const std::string& main_deck, int 
   const double th = c.d3thdt_dt > 0 ? c.d3thdt_dt : c.nodout_dt > 0 ? c.nodout_dt : c.elout_dt > 0 ? c.elout_dt : c.glstat_dt > 0 ? c.glstat_dt : 0;
   k.th_interval = th > 0 ? th : c.end_time / 1000;
   k.interface_out_interval = c.ncforc_dt;
-  k.reaction_print_flag = reaction_flag >= 0 ? reaction_flag : c.spcforc;
+  k.reaction_print_flag = c.reaction_flag >= 0 ? c.reaction_flag : c.spcforc;
   k.restart_dump_cycles = c.d3dump;
   k.running_restart_cycles = c.runrsf;
   if (c.intfor_given) k.intfor_interval = c.intfor_dt;

@@ -5,6 +5,8 @@
 
 #include <array>
 #include <map>
+#include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -360,6 +362,15 @@ bool read_contacts(const Block& b, KeywordContext& ctx, std::vector<RContact>& o
 
 // ---------------------------------------------------------------- control and database cards
 // (keyword_control_database.cpp)
+struct RHistory {  // one *DATABASE_HISTORY_... block
+  bool solid = false;
+  bool shell = false;  // *DATABASE_HISTORY_SHELL (_ID): shell ids
+  bool beam = false;   // *DATABASE_HISTORY_BEAM (_ID): beam ids
+  bool sets = false;   // *DATABASE_HISTORY_NODE_SET / _SOLID_SET: the ids are set ids
+  std::vector<int> ids;
+  std::vector<Ref> refs;
+};
+
 struct KeywordControls {
   bool have_termination = false;
   double end_time = 0, dtmin = 0;
@@ -381,14 +392,19 @@ struct KeywordControls {
   double q1 = 1.5, q2 = 0.06;  // *CONTROL_BULK_VISCOSITY
   int btype = 1;
   double rotascl = 1.0;  // *CONTROL_SHELL ROTASCL
+  std::vector<RHistory> histories;  // *DATABASE_HISTORY_..., in deck order
+  std::optional<std::string> title;  // the last *TITLE's
+  // *COMMENT's IMPACT-3D lines (the converter's, for fields LS-DYNA has no keyword for)
+  std::optional<int> interface_segments, viscosity_flag;
+  int reaction_flag = -1;  // REACTION_PRINT_FLAG (-1 none)
+  std::set<int> initially_elastic;  // INITIALLY_ELASTIC PART pid
 };
 
-// Reads a control or database keyword (or one read and ignored, warning 2008) into c; false if
-// the keyword (upper case, options stripped) is none of them.
+// Reads a control or database keyword (or one read and ignored, warning 2008), *TITLE or
+// *COMMENT into c; false if the keyword (upper case, options stripped) is none of them.
 bool read_control_database(const Block& b, KeywordContext& ctx, KeywordControls& c);
-// The run controls of the Model (model.control) from the cards; error 1311 without
-// *CONTROL_TERMINATION.  reaction_flag: the *COMMENT IMPACT-3D REACTION_PRINT_FLAG (-1 none).
-void build_controls(const KeywordControls& c, const std::string& main_deck, int reaction_flag, Model& m,
-                    Diagnostics& diag);
+// The run controls of the Model (model.control) and its title from the cards; error 1311
+// without *CONTROL_TERMINATION.
+void build_controls(const KeywordControls& c, const std::string& main_deck, Model& m, Diagnostics& diag);
 
 }  // namespace impact3d::kw

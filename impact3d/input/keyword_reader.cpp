@@ -46,14 +46,6 @@ int bc_code(int bits) {
 }
 
 // Raw records, before resolution (the families' records are in keyword_families.h).
-struct RHistory {
-  bool solid = false;
-  bool shell = false;  // *DATABASE_HISTORY_SHELL (_ID): shell ids
-  bool beam = false;   // *DATABASE_HISTORY_BEAM (_ID): beam ids
-  bool sets = false;  // *DATABASE_HISTORY_NODE_SET / _SOLID_SET: the ids are set ids
-  std::vector<int> ids;
-  std::vector<Ref> refs;
-};
 
 
 // Faces of the hexahedron (0-based local nodes), counter-clockwise seen from outside.
@@ -119,7 +111,6 @@ class KeywordReader {
   std::vector<RTemperature>& temperatures_ = ld_.temperatures;
   std::vector<RSpc>& spcs_ = ld_.spcs;
   std::vector<RWeld>& welds_ = ld_.welds;
-  std::vector<RHistory> histories_;
   std::vector<RLoad>& loads_ = ld_.loads;
   RLoad& damping_ = ld_.damping;
   bool& damping_given_ = ld_.damping_given;
@@ -154,8 +145,6 @@ class KeywordReader {
   std::vector<Ref>& rot_refs_ = ld_.rot_refs;
   Ref& w_ref_ = ld_.w_ref;
   std::vector<char> shell_node_;  // per node: used by a shell
-  int reaction_flag_ = -1;
-  std::set<int> initially_elastic_;  // part ids
   Ref rotational_ref_;
 
   // the families' shared state; ids they define get their file's *INCLUDE_TRANSFORM offset by
@@ -167,7 +156,9 @@ class KeywordReader {
                                             : kind == 's' ? &IncludeTransform::idsoff : kind == 'f' ? &IncludeTransform::idfoff
                                             : kind == 'd' ? &IncludeTransform::iddoff : &IncludeTransform::idroff);
                       }};
-  KeywordControls ctl_;  // control and database cards
+  KeywordControls ctl_;  // control and database cards, histories, *TITLE, *COMMENT
+  std::vector<RHistory>& histories_ = ctl_.histories;
+  std::set<int>& initially_elastic_ = ctl_.initially_elastic;  // part ids
 
   // ---------------------------------------------------------------- pass 1: blocks
   void check_first_line() {
@@ -723,87 +714,54 @@ class KeywordReader {
       }
       b.name = n;
       if (n == "KEYWORD" || n == "INCLUDE" || n == "INCLUDE_PATH" || n == "INCLUDE_PATH_RELATIVE" || n == "INCLUDE_TRANSFORM" || n == "CASE") continue;
-      if (n == "COMMENT") {
-        parse_comment(b);
-        continue;
-      }
-      if (parse_structure_keyword(b)) continue;  // sets, boxes, coordinate systems, histories
+      if (read_sets_boxes(b, ctx_, sb_)) continue;          // keyword_sets_boxes.cpp
       if (read_control_database(b, ctx_, ctl_)) continue;  // keyword_control_database.cpp
       if (read_parts_sections(b, ctx_, ps_)) continue;      // keyword_parts_sections.cpp
       if (read_loads_bcs(b, ctx_, ld_)) continue;           // keyword_loads_bcs.cpp
       if (read_nodes_elements(b, ctx_, me_)) continue;      // keyword_nodes_elements.cpp
       if (read_materials(b, ctx_, mt_)) continue;           // keyword_materials.cpp
       if (read_contacts(b, ctx_, contacts_)) continue;      // keyword_contacts.cpp
-      if (n == "TITLE") {
-        for (const KLine& l : b.data) {
-          m_.title = rtrim(l.line->text.substr(0, std::min<std::size_t>(80, l.line->text.size())));
-          break;
-        }
-      } else {
-        unsupported_.push_back(&b);
-        // remember the ids that unsupported material and section keywords define, so that a
-        // part using one gets a clear message
-        if ((n.rfind("MAT_", 0) == 0 || n.rfind("SECTION_", 0) == 0 || n.rfind("EOS_", 0) == 0) && !b.data.empty()) {
-          std::size_t k = 0;
-          if (n.size() > 6 && n.compare(n.size() - 6, 6, "_TITLE") == 0) k = 1;
-          if (k < b.data.size()) {
-            Diagnostics quiet;
-            KCard c(b.data[k], b.keyword, W(b, 1), quiet);
-            long long id = c.i(0, "id", 0);
-            (n[0] == 'M' ? unsupported_mids_ : n[0] == 'E' ? unsupported_eosids_ : unsupported_secids_)[int(id)] =
-                b.keyword + " at " + b.kw.file->name() + ":" + std::to_string(b.kw.line->number);
-          }
-        }
-        // and the sets and parts they define, so that a reference to one names the keyword
-        char kind = n.rfind("SET_NODE", 0) == 0      ? 'N'
-                    : n.rfind("SET_PART", 0) == 0    ? 'P'
-                    : n.rfind("SET_SEGMENT", 0) == 0 ? 'S'
-                    : n.rfind("SET_SOLID", 0) == 0   ? 'H'
-                    : n.rfind("DEFINE_BOX", 0) == 0  ? 'B'
-                    : n.rfind("PART", 0) == 0        ? 'p'
-                                                     : 0;
-        if (kind) {
-          const bool titled = n.size() > 6 && n.compare(n.size() - 6, 6, "_TITLE") == 0;
-          std::size_t k = kind == 'p' ? 1 : titled ? 1 : 0;  // *PART_...: heading card first
-          if (k < b.data.size()) {
-            Diagnostics quiet;
-            KCard c(b.data[k], b.keyword, W(b, 1), quiet);
-            long long id = c.i(0, "id", 0);
-            if (quiet.error_count() == 0 && id != 0)
-              refused_defs_.emplace(std::make_pair(kind, int(id)),
-                                    upper(b.keyword) + " at " + b.kw.file->name() + ":" + std::to_string(b.kw.line->number));
-          }
-        }
-      }
+      note_unsupported(b);  // read by no family
     }
   }
 
-  // *COMMENT is ignored (as by LS-DYNA), except the IMPACT-3D lines the deck writer puts there
-  // for fields LS-DYNA has no keyword for.
-  void parse_comment(const Block& b) {
-    for (const KLine& l : b.data) {
-      std::string t = upper(rtrim(l.line->text));
-      if (t.rfind("IMPACT-3D ", 0) != 0) continue;
-      std::vector<std::string> tok;
-      for (std::size_t p = 0; p < t.size();) {
-        std::size_t s = t.find_first_not_of(' ', p);
-        if (s == std::string::npos) break;
-        std::size_t e = t.find(' ', s);
-        tok.push_back(t.substr(s, e == std::string::npos ? std::string::npos : e - s));
-        p = e == std::string::npos ? t.size() : e;
+  // A keyword no family reads: refused (or ignored with --lenient-keywords) once the deck is
+  // read; the ids it defines are remembered, so that a reference to one names the keyword.
+  void note_unsupported(const Block& b) {
+    const std::string& n = b.name;
+    unsupported_.push_back(&b);
+    // remember the ids that unsupported material and section keywords define, so that a
+    // part using one gets a clear message
+    if ((n.rfind("MAT_", 0) == 0 || n.rfind("SECTION_", 0) == 0 || n.rfind("EOS_", 0) == 0) && !b.data.empty()) {
+      std::size_t k = 0;
+      if (n.size() > 6 && n.compare(n.size() - 6, 6, "_TITLE") == 0) k = 1;
+      if (k < b.data.size()) {
+        Diagnostics quiet;
+        KCard c(b.data[k], b.keyword, W(b, 1), quiet);
+        long long id = c.i(0, "id", 0);
+        (n[0] == 'M' ? unsupported_mids_ : n[0] == 'E' ? unsupported_eosids_ : unsupported_secids_)[int(id)] =
+            b.keyword + " at " + b.kw.file->name() + ":" + std::to_string(b.kw.line->number);
       }
-      long long v = 0;
-      const std::string& last = tok.back();
-      bool num = parse_fortran_int(last, v) == FieldStatus::ok;
-      Location loc;
-      loc.file = l.file->name();
-      loc.line = l.line->number;
-      loc.card = "*COMMENT";
-      if (num && tok.size() == 3 && tok[1] == "INTERFACE_SEGMENTS") m_.control.interface_segments_out = int(v);
-      else if (num && tok.size() == 3 && tok[1] == "VISCOSITY_FLAG") m_.control.viscosity_flag = int(v);
-      else if (num && tok.size() == 3 && tok[1] == "REACTION_PRINT_FLAG") reaction_flag_ = int(v);
-      else if (num && tok.size() == 4 && tok[1] == "INITIALLY_ELASTIC" && tok[2] == "PART") initially_elastic_.insert(int(v));
-      else diag_.add(1312, loc, "unknown IMPACT-3D line: " + rtrim(l.line->text));
+    }
+    // and the sets and parts they define, so that a reference to one names the keyword
+    char kind = n.rfind("SET_NODE", 0) == 0      ? 'N'
+                : n.rfind("SET_PART", 0) == 0    ? 'P'
+                : n.rfind("SET_SEGMENT", 0) == 0 ? 'S'
+                : n.rfind("SET_SOLID", 0) == 0   ? 'H'
+                : n.rfind("DEFINE_BOX", 0) == 0  ? 'B'
+                : n.rfind("PART", 0) == 0        ? 'p'
+                                                 : 0;
+    if (kind) {
+      const bool titled = n.size() > 6 && n.compare(n.size() - 6, 6, "_TITLE") == 0;
+      std::size_t k = kind == 'p' ? 1 : titled ? 1 : 0;  // *PART_...: heading card first
+      if (k < b.data.size()) {
+        Diagnostics quiet;
+        KCard c(b.data[k], b.keyword, W(b, 1), quiet);
+        long long id = c.i(0, "id", 0);
+        if (quiet.error_count() == 0 && id != 0)
+          refused_defs_.emplace(std::make_pair(kind, int(id)),
+                                upper(b.keyword) + " at " + b.kw.file->name() + ":" + std::to_string(b.kw.line->number));
+      }
     }
   }
 
@@ -858,23 +816,6 @@ class KeywordReader {
       }
       for (int n : nodes) m_.node_temperature[std::size_t(n)] = t.temp;
     }
-  }
-
-  // ---------------------------------------------------------------- sets, boxes, systems
-  // (issue 16) The keywords of this section are read here, so that the dispatch in
-  // parse_blocks holds one line for all of them.  Returns false for any other keyword.
-  bool parse_structure_keyword(Block& b) {
-    const std::string& n = b.name;
-    if (read_sets_boxes(b, ctx_, sb_)) {  // keyword_sets_boxes.cpp
-    } else if (n == "DATABASE_HISTORY_NODE" || n == "DATABASE_HISTORY_SOLID" || n == "DATABASE_HISTORY_NODE_SET" ||
-               n == "DATABASE_HISTORY_SOLID_SET" || n == "DATABASE_HISTORY_NODE_ID" || n == "DATABASE_HISTORY_SOLID_ID" ||
-               n == "DATABASE_HISTORY_SHELL" || n == "DATABASE_HISTORY_SHELL_ID" || n == "DATABASE_HISTORY_BEAM" ||
-               n == "DATABASE_HISTORY_BEAM_ID") {
-      parse_history(b);
-    } else {
-      return false;
-    }
-    return true;
   }
 
   std::map<int, RTransformation>& transformations_ = sb_.transformations;
@@ -1026,27 +967,6 @@ class KeywordReader {
       }
   }
 
-  // *DATABASE_HISTORY_NODE / _SOLID: ids 8 per card; _SET: set ids 8 per card; _ID: one id and
-  // a heading per card.
-  void parse_history(const Block& b) {
-    RHistory h;
-    h.solid = b.name.rfind("DATABASE_HISTORY_SOLID", 0) == 0;
-    h.shell = b.name.rfind("DATABASE_HISTORY_SHELL", 0) == 0;
-    h.beam = b.name.rfind("DATABASE_HISTORY_BEAM", 0) == 0;
-    h.sets = b.name.size() > 4 && b.name.compare(b.name.size() - 4, 4, "_SET") == 0;
-    const bool with_heading = b.name.size() > 3 && b.name.compare(b.name.size() - 3, 3, "_ID") == 0;
-    const char* field = h.sets ? "ID" : (h.solid || h.shell || h.beam) ? "EID" : "NID";
-    for (std::size_t k = 0; k < b.data.size(); ++k) {
-      if (is_blank(b.data[k].line->text)) continue;
-      KCard c = card(b, k, "", with_heading ? std::vector<int>{10, 70} : W(b, 8));
-      for (int f = 0; f < (with_heading ? 1 : 8); ++f) {
-        long long id = c.i(f, field);
-        if (id != 0) { h.ids.push_back(int(id)); h.refs.push_back(c.ref(f)); }
-      }
-    }
-    histories_.push_back(std::move(h));
-  }
-
   // Keywords whose absence changes what the rest of the deck means: --lenient-keywords cannot
   // ignore them (*CASE blocks select cards per case; ignoring them applied every case's cards
   // at once).
@@ -1115,7 +1035,7 @@ class KeywordReader {
     resolve_materials();
     resolve_shell_materials();
     resolve_beam_materials();
-    build_controls(ctl_, main_.name(), reaction_flag_, m_, diag_);
+    build_controls(ctl_, main_.name(), m_, diag_);
     resolve_spc();
     resolve_spot_welds();
     resolve_history();

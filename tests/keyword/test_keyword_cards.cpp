@@ -378,3 +378,21 @@ TEST(KeywordCards, WallAndWeldCardsByTheirTables) {
   EXPECT_EQ(l[6].find("deck.k:9: error 1003: *CONSTRAINED_SPOTWELD, field \"N\" (cols 41-50)"), 0u) << l[6];
   EXPECT_EQ(l[7].find("deck.k:9: error 1002: *CONSTRAINED_SPOTWELD, field \"TF\" (cols 61-70)"), 0u) << l[7];
 }
+
+// Histories, *TITLE and *COMMENT: a history _ID card keeps its columns (10, then the heading)
+// in long format; the title is the first card as written (a tab in it is no error); *COMMENT's
+// IMPACT-3D lines set what the converter wrote there, any other is error 1312.
+TEST(KeywordCards, HistoriesTitleAndCommentByTheirTables) {
+  for (const char* n : {"DATABASE_HISTORY_NODE", "DATABASE_HISTORY_SHELL_ID", "DATABASE_HISTORY_SOLID_SET", "TITLE", "COMMENT"})
+    EXPECT_NE(find_keyword_spec(n), nullptr) << n;
+  EXPECT_TRUE(find_keyword_spec("DATABASE_HISTORY_NODE_ID")->cards.front().fixed);
+  const std::string head = "*CONTROL_TERMINATION\n   1.0E-05\n";
+  const Read r = read(deck(head + "*TITLE\n  a\ttitle  \n*COMMENT\nimpact-3d viscosity_flag 1\nIMPACT-3D BOGUS 2\n"
+                           "*DATABASE_HISTORY_NODE_ID+\n       abc the heading\n"));
+  const std::vector<std::string> l = r.lines();
+  ASSERT_EQ(l.size(), 2u);
+  EXPECT_EQ(l[0].find("deck.k:8: error 1312: *COMMENT"), 0u) << l[0];
+  EXPECT_EQ(l[1].find("deck.k:10: error 1001: *DATABASE_HISTORY_NODE_ID+, field \"NID\" (cols 1-10)"), 0u) << l[1];
+  EXPECT_EQ(r.m.title, "  a\ttitle");
+  EXPECT_EQ(r.m.control.viscosity_flag, 1);
+}
