@@ -73,6 +73,7 @@ const std::vector<MessageDef> kCatalog = {
     {1312, S::error, "keyword option not supported"},
     {1314, S::error, "set or contact surface is empty"},
     {1316, S::error, "the keyword ends before a required card"},
+    {1317, S::error, "expression cannot be evaluated"},
     // 2000-2099: input warnings
     {2001, S::warning, "material parameters read as packed (8 per card) from card 3"},
     {2002, S::warning, "material not used by any element"},

@@ -175,6 +175,10 @@ struct RLoad {            // one load or prescribed-motion card, resolved after 
   Ref cid_ref, vid_ref;
 };
 
+// *PARAMETER_EXPRESSION (keyword_parameters.cpp): the blocks' parameters evaluated into
+// `params` (after the plain *PARAMETER values are in it), errors into `diag`.
+void read_parameter_expressions(const std::vector<Block>& blocks, ParamTable& params, Diagnostics& diag);
+
 // *BOUNDARY_PRESCRIBED_MOTION DOF 4, -4 (along VID) and 8, -8 (about VID): the direction is a
 // *DEFINE_VECTOR; DOF 5-8 and -8 are rotations (rigid bodies)
 inline bool motion_along_vector(int dof) { return dof == 4 || dof == -4 || dof == 8 || dof == -8; }

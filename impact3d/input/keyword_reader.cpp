@@ -624,8 +624,8 @@ class KeywordReader {
   }
 
   // *PARAMETER: cards of four pairs PRMR (10 columns: type R, I or C, then the name) and VAL
-  // (10 columns).  Read before every other keyword, so a reference may come before or after
-  // its definition; a name defined twice is error 1200.
+  // (10 columns), then *PARAMETER_EXPRESSION.  Read before every other keyword, so a reference
+  // may come before or after its definition; a name defined twice is error 1200.
   void collect_parameters() {
     for (Block& b : blocks_) {
       if (b.name != "PARAMETER") continue;
@@ -657,6 +657,7 @@ class KeywordReader {
         }
       }
     }
+    read_parameter_expressions(blocks_, params_, diag_);  // (keyword_parameters.cpp)
   }
 
   // Strips the _TITLE / _ID options the supported keywords know.
@@ -706,7 +707,7 @@ class KeywordReader {
 
   void parse_blocks() {
     for (Block& b : blocks_) {
-      if (b.name == "PARAMETER") continue;  // read first (collect_parameters)
+      if (b.name == "PARAMETER" || b.name == "PARAMETER_EXPRESSION") continue;  // read first (collect_parameters)
       std::string n = base_name(b.name, b.title_opt, b.id_opt);
       if (n == "RIGIDWALL_PLANAR_MOVING") {
         n = "RIGIDWALL_PLANAR";
