@@ -142,9 +142,13 @@ class Parser {
     return true;
   }
 
-  // (every nesting passes here: the depth is bounded, so a hostile line cannot exhaust the stack)
+  // (every nesting passes here: the depth is bounded, so a hostile line cannot exhaust the stack;
+  // the depth is the thread's, shared by the expressions a lookup evaluates inside this one, so a
+  // chain of expressions that name one another counts too)
   bool unary(double& v) {
-    if (depth_ >= kMaxDepth) return fail(p_, "nested more than " + std::to_string(kMaxDepth) + " deep");
+    if (depth_ >= kMaxDepth)
+      return fail(p_, "nested more than " + std::to_string(kMaxDepth) +
+                          " deep (signs and parentheses, and the expressions of the parameters it names, together)");
     ++depth_;
     bool ok = true;
     if (at('+') || at('-')) {
@@ -259,8 +263,10 @@ class Parser {
   const ParameterLookup& lookup_;
   ExpressionError& err_;
   std::size_t p_ = 0;
-  int depth_ = 0;
+  static thread_local int depth_;
 };
+
+thread_local int Parser::depth_ = 0;
 
 }  // namespace
 

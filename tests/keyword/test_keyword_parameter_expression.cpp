@@ -231,3 +231,25 @@ TEST(KeywordParameterExpression, ConverterWritesTheValues) {
   for (const auto& x : model_differences(r.m, k2.m, 50)) diffs += x + "\n";
   EXPECT_EQ(diffs, "") << kw.str();
 }
+
+// A chain of expressions that name one another shares the nesting bound (a deck of 100,000
+// chained parameters overflowed the stack before, 2026-11-27): 150 links evaluate, 100,000 are
+// refused with 1317 at the link where the depth runs out, and the reader returns.
+TEST(KeywordParameterExpression, ChainsOfExpressionsShareTheNestingBound) {
+  auto chain = [](int n) {
+    std::string s = "*PARAMETER_EXPRESSION\n";
+    char b[64];
+    for (int i = 0; i < n; ++i) {
+      if (i + 1 < n) std::snprintf(b, sizeof b, "R P%-7d P%d + 1\n", i, i + 1);
+      else std::snprintf(b, sizeof b, "R P%-7d 1\n", i);
+      s += b;
+    }
+    return s + "*PARAMETER\nR RHO     7850.0    R E       2.1E11    R NU      0.3\n";
+  };
+  ReadDeck ok = read_deck_text(bar_deck(chain(150)), "chain.k");
+  EXPECT_EQ(ok.count(1317), 0) << ok.messages();
+  ReadDeck deep = read_deck_text(bar_deck(chain(100000)), "chain.k");
+  EXPECT_FALSE(deep.ok);
+  EXPECT_GE(deep.count(1317), 1);
+  EXPECT_NE(deep.messages().find("nested more than 200 deep"), std::string::npos);
+}
