@@ -61,6 +61,7 @@ const std::vector<MessageDef> kCatalog = {
     {1253, S::error, "spot weld node is already constrained (another spot weld or a rigid body)"},
     {1254, S::error, "spot weld has no mass (its nodes belong to no element)"},
     {1255, S::error, "beam-to-beam contact is not supported: beams take part in contact as slave nodes only, against solid faces or shells"},
+    {1256, S::error, "tied-contact node is already constrained (tied twice, a master node of a tie, on a rigid body or spot weld, or with SPC or a prescribed motion)"},
     // 1300-1399: LS-DYNA keyword decks
     {1301, S::error, "keyword not supported by IMPACT-3D (impact3d --lenient-keywords turns this into a warning)"},
     {1305, S::error, "data line before the first keyword"},
@@ -89,6 +90,7 @@ const std::vector<MessageDef> kCatalog = {
     {2012, S::warning, "stonewalls do not act on rigid-body nodes (use a sliding interface for a rigid body)"},
     {2013, S::warning, "segment node order reversed so that its normal points out of its solid element"},
     {2014, S::warning, "initial velocities on the nodes of a rigid body are not a rigid motion: the body keeps their momentum and angular momentum, and its nodes start with that rigid motion"},
+    {2015, S::warning, "tied-contact slave nodes within reach of no master segment are not tied"},
     {2020, S::warning, "columns that are not read hold something: ignored"},
     {2040, S::warning, "DYNA3D fields and free-format options read but without effect in IMPACT-3D"},
     {2041, S::warning, "card in IMPACT-3D's old fixed layout: read as such (DYNA3D's own layout differs)"},

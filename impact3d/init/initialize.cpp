@@ -11,6 +11,7 @@
 #include "impact3d/material/eos.h"
 #include "impact3d/material/material_types.h"
 #include "impact3d/solve/element_groups.h"
+#include "impact3d/solve/node_ties.h"
 
 namespace impact3d {
 
@@ -356,8 +357,9 @@ void initialize_state(const Model& m, State& s) {
   init_shell_rotational_velocities(m, s);
   init_rigid_bodies(m, s);
   init_spot_welds(m, s);
-  // net nodal forces: kept only for rigid bodies (their momentum update reads them)
-  for (auto* v : {&s.fx, &s.fy, &s.fz}) v->assign(s.rigid.empty() ? 0 : std::size_t(s.nn), 0.0);
+  init_node_ties(m, s);
+  // net nodal forces: kept only for rigid bodies and tied contacts (their updates read them)
+  for (auto* v : {&s.fx, &s.fy, &s.fz}) v->assign(s.rigid.empty() && s.ties.empty() ? 0 : std::size_t(s.nn), 0.0);
   s.wall_force.assign(m.walls.size(), {0, 0, 0});
   s.wall_disp.assign(m.walls.size(), 0.0);
   s.wall_vel.assign(m.walls.size(), 0.0);

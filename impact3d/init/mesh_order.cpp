@@ -270,6 +270,16 @@ void permute_model(Model& m, const std::vector<int>& node_new_of_old, const std:
   for (auto& pm : m.prescribed_motions) pm.node = node(pm.node);
   for (auto& w : m.spot_welds)
     for (int& n : w.nodes) n = node(n);
+  for (auto& tc : m.tied_contacts) {
+    for (int& n : tc.slave_nodes) n = node(n);
+    std::sort(tc.slave_nodes.begin(), tc.slave_nodes.end());  // kept sorted (TiedContact)
+    for (auto& sg : tc.master)
+      for (int& n : sg) n = node(n);
+  }
+  for (auto& t : m.node_ties) {
+    t.node = node(t.node);
+    for (int& n : t.seg) n = node(n);
+  }
   compose_order(m.node_order, node_new_of_old);
   compose_order(m.hex_order, hex_new_of_old);
 }

@@ -160,6 +160,7 @@ class KeywordWriter {
     interfaces();
     loads();
     spot_welds();
+    tied_contacts();
     os_ << "*END\n";
   }
 
@@ -433,6 +434,19 @@ class KeywordWriter {
           << "$#    nsid       cid\n" << kcard({I(sid), I(c)}) << "\n"
           << "$#   tfail      epsf        sn        ss         n         m\n"
           << kcard({R(w.tfail), R(w.epsf), R(w.sn), R(w.ss), R(w.n), R(w.m)}) << "\n";
+    }
+  }
+
+  // Tied contacts: the slave nodes as a node set, the master segments as a segment set (the tied
+  // nodes were moved onto their segments when read: they tie again where they are).
+  void tied_contacts() {
+    for (const TiedContact& tc : m_.tied_contacts) {
+      const int a = node_set(tc.slave_nodes), b = segment_set(tc.master);
+      const std::string kw = tc.spotweld ? "*CONTACT_SPOTWELD" : "*CONTACT_TIED_NODES_TO_SURFACE";
+      os_ << (tc.id ? kw + "_ID\n" + kcard({I(tc.id)}) + "\n" : kw + "\n");
+      os_ << "$#   surfa     surfb  surfatyp  surfbtyp\n" << kcard({I(a), I(b), I(4), I(0)}) << "\n";
+      os_ << "$#      fs        fd        dc\n" << kcard({R(0), R(0), R(0)}) << "\n";
+      os_ << "$#    sfsa      sfsb      sast\n" << kcard({R(1), R(1), R(tc.tolerance > 0 ? -tc.tolerance : 0.0)}) << "\n";
     }
   }
 
@@ -847,6 +861,8 @@ class FixedWriter {
     damping_card_ = m_.damping.active && m_.damping.curve < 0 && m_.damping.factor == std::array<double, 3>{1, 1, 1};
     if (m_.damping.active && !damping_card_)
       note("global mass damping with a curve or per-axis factors (*DAMPING_GLOBAL) has no fixed-format card: not written");
+    if (!m_.tied_contacts.empty())
+      note("tied contacts (*CONTACT_SPOTWELD, *CONTACT_TIED_NODES_TO_SURFACE) have no fixed-format card: not written");
     if (!m_.force_transducers.empty()) note("force transducers (*CONTACT_FORCE_TRANSDUCER_PENALTY) have no fixed-format card: not written");
     if (m_.control.intfor_interval >= 0)
       note("the interface-force database (*DATABASE_BINARY_INTFOR, SAPR/SBPR) has no fixed-format card: not written");

@@ -927,6 +927,15 @@ std::vector<KeywordCardLayout> contact_cards(bool eroding) {
   return c;
 }
 
+// A tied contact's cards: as the others', card 3 field 3 SAST its own (negative: the reach of
+// the ties); friction, penalty and thickness have no effect on a tie.
+std::vector<KeywordCardLayout> tied_contact_cards() {
+  std::vector<KeywordCardLayout> c = contact_cards(false);
+  c[3].fields[2] = {"SAST", 2, E, 0, false, {outside(-kInf, 0, 2006, "a positive contact thickness does not change a tie's reach (a negative SAST sets it)")},
+                    "negative: its magnitude is how far from a master segment a slave node is tied (0: 5 % of the segment's shorter diagonal)"};
+  return c;
+}
+
 std::vector<KeywordSpec> contact_specs() {
   const KeywordFamily F = KeywordFamily::contacts;
   return {{{"CONTACT_SURFACE_TO_SURFACE", "CONTACT_AUTOMATIC_SURFACE_TO_SURFACE", "CONTACT_NODES_TO_SURFACE",
@@ -936,7 +945,10 @@ std::vector<KeywordSpec> contact_specs() {
            "contacts take the shells' thickness always (docs/contact.md)"},
           {{"CONTACT_ERODING_SURFACE_TO_SURFACE", "CONTACT_ERODING_NODES_TO_SURFACE", "CONTACT_ERODING_SINGLE_SURFACE"},
            F, false, contact_cards(true),
-           "one contact a keyword, as the others with the _ERODING_ card after card 3"}};
+           "one contact a keyword, as the others with the _ERODING_ card after card 3"},
+          {{"CONTACT_SPOTWELD", "CONTACT_TIED_NODES_TO_SURFACE"}, F, false, tied_contact_cards(),
+           "constraint-based ties: each slave node (SURFA: node set, or the nodes of a segment set or parts, beams' too) "
+           "projected onto a master segment (SURFB) when read and moved with it (docs/contact.md \"Tied contacts\")"}};
 }
 
 // A card of one id and a heading in fixed columns (10 and 70, also in long format).

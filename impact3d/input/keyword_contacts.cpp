@@ -13,6 +13,7 @@ struct ContactKind {
   bool transducer = false;  // *CONTACT_FORCE_TRANSDUCER_PENALTY
   bool single = false;      // one surface against itself
   bool eroding = false;     // the _ERODING_ card follows card 3
+  int tied = 0;             // 1 *CONTACT_TIED_NODES_TO_SURFACE, 2 *CONTACT_SPOTWELD
 };
 
 ContactKind contact_kind(const std::string& n) {
@@ -20,6 +21,7 @@ ContactKind contact_kind(const std::string& n) {
   k.eroding = n.rfind("CONTACT_ERODING_", 0) == 0;
   k.single = n == "CONTACT_AUTOMATIC_SINGLE_SURFACE" || n == "CONTACT_ERODING_SINGLE_SURFACE";
   k.transducer = n == "CONTACT_FORCE_TRANSDUCER_PENALTY";
+  k.tied = n == "CONTACT_SPOTWELD" ? 2 : n == "CONTACT_TIED_NODES_TO_SURFACE" ? 1 : 0;
   k.symmetric = n == "CONTACT_SURFACE_TO_SURFACE" || n == "CONTACT_AUTOMATIC_SURFACE_TO_SURFACE" ||
                 n == "CONTACT_ERODING_SURFACE_TO_SURFACE";
   return k;
@@ -61,14 +63,17 @@ void read_sides(KeywordValues& c, const ContactKind& kind, RContact& ct) {
                                                : "0 segment set, 2 part set, 3 part, 4 node set");
   if (!ok_b && !(kind.transducer && ct.b.type == 4))
     c.error(1104, "SURFBTYP", kind.transducer ? "0 segment set, 2 part set, 3 part, 4 node set" : "0 segment set, 2 part set, 3 part");
+  if (kind.tied && (ct.sapr || ct.sbpr))
+    c.error(2006, ct.sapr ? "SAPR" : "SBPR", "a tied contact's forces are not in the interface-force database");
   if (kind.transducer && (ct.sapr || ct.sbpr))
     c.error(2006, ct.sapr ? "SAPR" : "SBPR", "a force transducer has no contact segments in the interface-force database");
 }
 
-// Card 3: SFSA is used for both sides (SFSB other than it: warning 2006).
+// Card 3: SFSA is used for both sides (SFSB other than it: warning 2006); a tied contact's SAST.
 void read_penalty_scales(KeywordValues& c, RContact& ct) {
   ct.sfsa = c["SFSA"];
   if (c["SFSB"] != ct.sfsa) c.error(2006, "SFSB", "one penalty scale per interface: SFSA is used for both sides");
+  if (ct.tied) ct.sast = c["SAST"];
   c.rest();
 }
 
@@ -105,6 +110,7 @@ void read_contact(const Block& b, KeywordContext& ctx, const KeywordSpec& s, std
   ct.symmetric = kind.symmetric;
   ct.transducer = kind.transducer;
   ct.single = kind.single;
+  ct.tied = kind.tied;
   ct.keyword = b.keyword;
   ct.automatic = kind.single || kind.eroding || b.keyword.find("AUTOMATIC") != std::string::npos;
   if (b.id_opt && k == 1) ct.cid = int(ctx.values(b, 0, s.card("ID card")).integer("CID"));

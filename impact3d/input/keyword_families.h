@@ -356,6 +356,8 @@ struct RContact {
   bool automatic = false;           // _AUTOMATIC_, single surface, eroding: shells always at +-t/2
   int thkopt = 0, shlthk = 0;       // optional card B (THKOPT 1: SHLTHK of the card; 2: none)
   int cid = 0;                      // _ID: the contact id
+  int tied = 0;                     // 1 *CONTACT_TIED_NODES_TO_SURFACE, 2 *CONTACT_SPOTWELD (constraint ties)
+  double sast = 0;                  // card 3 SAST of a tied contact (negative: its magnitude is the reach)
   Ref ref;
   std::string keyword;
 };

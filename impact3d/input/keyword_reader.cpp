@@ -16,6 +16,7 @@
 #include "impact3d/input/deck_reader.h"
 #include "impact3d/input/coordinate_systems.h"
 #include "impact3d/input/element_shapes.h"
+#include "impact3d/contact/tied_nodes.h"
 
 #include <algorithm>
 #include <array>
@@ -671,7 +672,7 @@ class KeywordReader {
         "SET_PART", "SET_SEGMENT", "SET_NODE_LIST_GENERATE", "CONTACT_SURFACE_TO_SURFACE",
         "CONTACT_AUTOMATIC_SURFACE_TO_SURFACE", "CONTACT_NODES_TO_SURFACE", "CONTACT_FORCE_TRANSDUCER_PENALTY",
         "CONTACT_AUTOMATIC_SINGLE_SURFACE", "CONTACT_AUTOMATIC_NODES_TO_SURFACE", "CONTACT_ERODING_SURFACE_TO_SURFACE",
-        "CONTACT_ERODING_NODES_TO_SURFACE", "CONTACT_ERODING_SINGLE_SURFACE",
+        "CONTACT_ERODING_NODES_TO_SURFACE", "CONTACT_ERODING_SINGLE_SURFACE", "CONTACT_SPOTWELD", "CONTACT_TIED_NODES_TO_SURFACE",
         // issue 16: sets, boxes, coordinate systems
         "SET_NODE_ADD", "SET_NODE_GENERAL", "SET_NODE_LIST_GENERATE_INCREMENT", "SET_PART_ADD",
         "SET_PART_LIST_GENERATE", "SET_PART_LIST_GENERATE_INCREMENT", "SET_SOLID", "SET_SOLID_LIST",
@@ -684,7 +685,7 @@ class KeywordReader {
         "RIGIDWALL_PLANAR", "RIGIDWALL_PLANAR_MOVING", "CONTACT_SURFACE_TO_SURFACE", "CONTACT_AUTOMATIC_SURFACE_TO_SURFACE",
         "CONTACT_NODES_TO_SURFACE", "CONTACT_FORCE_TRANSDUCER_PENALTY", "CONTACT_AUTOMATIC_SINGLE_SURFACE",
         "CONTACT_AUTOMATIC_NODES_TO_SURFACE", "CONTACT_ERODING_SURFACE_TO_SURFACE", "CONTACT_ERODING_NODES_TO_SURFACE",
-        "CONTACT_ERODING_SINGLE_SURFACE", "BOUNDARY_SPC_NODE", "BOUNDARY_SPC_SET", "BOUNDARY_SPC_NODE_BIRTH_DEATH",
+        "CONTACT_ERODING_SINGLE_SURFACE", "CONTACT_SPOTWELD", "CONTACT_TIED_NODES_TO_SURFACE", "BOUNDARY_SPC_NODE", "BOUNDARY_SPC_SET", "BOUNDARY_SPC_NODE_BIRTH_DEATH",
         "BOUNDARY_SPC_SET_BIRTH_DEATH", "RIGIDWALL_GEOMETRIC_CYLINDER", "RIGIDWALL_GEOMETRIC_CYLINDER_DISPLAY",
         "RIGIDWALL_GEOMETRIC_CYLINDER_MOTION", "RIGIDWALL_GEOMETRIC_CYLINDER_MOTION_DISPLAY", "BOUNDARY_PRESCRIBED_MOTION_NODE", "BOUNDARY_PRESCRIBED_MOTION_SET", "BOUNDARY_PRESCRIBED_MOTION_RIGID",
         "LOAD_SEGMENT", "LOAD_SEGMENT_SET", "CONSTRAINED_SPOTWELD", "CONSTRAINED_GENERALIZED_WELD_SPOT"};
@@ -2830,8 +2831,47 @@ class KeywordReader {
     files.resize(kept);
   }
 
+  // A tied contact (*CONTACT_SPOTWELD, *CONTACT_TIED_NODES_TO_SURFACE): its slave nodes (a node
+  // set's nodes; a segment set's or parts' segment and beam nodes) and master segments, then
+  // the ties (contact/tied_nodes.h); slave nodes out of every segment's reach warning 2015.
+  void resolve_tied_contact(const RContact& c) {
+    TiedContact tc;
+    tc.spotweld = c.tied == 2;
+    tc.id = c.cid;
+    tc.line = c.ref.line ? c.ref.line->number : 0;
+    tc.tolerance = c.sast < 0 ? -c.sast : 0.0;
+    std::vector<int> lines, files, beam_nodes;
+    if (c.a.type == 4 && c.a.boxid == 0) {
+      if (const RIdList* s = find_node_set(c.a.id, c.a.id_ref, c.keyword, "SURFA"))
+        tc.slave_nodes = set_nodes(*s, "*SET_NODE_LIST " + std::to_string(c.a.id));
+    } else {
+      std::vector<std::array<int, 4>> segs;
+      resolve_side(c.a, true, c.keyword, segs, lines, files, beam_nodes, true);
+      for (const auto& sg : segs) tc.slave_nodes.insert(tc.slave_nodes.end(), sg.begin(), sg.end());
+      tc.slave_nodes.insert(tc.slave_nodes.end(), beam_nodes.begin(), beam_nodes.end());
+    }
+    std::sort(tc.slave_nodes.begin(), tc.slave_nodes.end());
+    tc.slave_nodes.erase(std::unique(tc.slave_nodes.begin(), tc.slave_nodes.end()), tc.slave_nodes.end());
+    lines.clear(), files.clear();
+    resolve_side(c.b, false, c.keyword, tc.master, lines, files, beam_nodes, false);
+    if (tc.slave_nodes.empty() || tc.master.empty()) return;  // (1309 / 1314 / 1255 above)
+    m_.tied_contacts.push_back(std::move(tc));
+    const std::vector<int> untied = tie_slave_nodes(m_, int(m_.tied_contacts.size()) - 1);
+    if (untied.empty()) return;
+    std::string ids;
+    for (std::size_t k = 0; k < untied.size() && k < 10; ++k) ids += (k ? ", " : "") + std::to_string(m_.node_id(untied[k]));
+    if (untied.size() > 10) ids += ", ...";
+    diag_.add(2015, loc_of(c.ref, c.keyword, "SURFA"),
+              std::to_string(untied.size()) + " slave node(s) lie within reach of no master segment (inside its normal "
+              "projection, at most 5 % of its shorter diagonal from it, or |SAST| of a negative SAST) and are not tied: " + ids);
+  }
+
   void resolve_contacts() {
     for (const RContact& c : contacts_) {
+      if (c.tied) {
+        resolve_tied_contact(c);
+        continue;
+      }
       if (c.transducer) {
         // side A (and B): the nodes of the segments, or of the node set
         ForceTransducer ft;

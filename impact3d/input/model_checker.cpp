@@ -230,10 +230,9 @@ void check_beams(const Model& m, const Location& file_loc, Diagnostics& diag,
 // Spot welds: each node in one weld at most and on no rigid body (1253), some mass (1254), a
 // normal direction at each node (1252: coincident nodes need CID).  node_used: nodes that
 // elements use.
-void check_spot_welds(const Model& m, const Location& file_loc, Diagnostics& diag, const std::vector<char>& node_used) {
-  if (m.spot_welds.empty()) return;
+// Per node the rigid material whose elements use it (-1: none).
+std::vector<int> rigid_material_of_nodes(const Model& m) {
   const std::size_t nn = std::size_t(m.num_nodes());
-  // nodes of rigid bodies (their material's elements)
   std::vector<int> rigid_mat(nn, -1);
   auto is_rigid = [&](int mat) {
     if (mat < 0 || std::size_t(mat) >= m.materials.size()) return false;
@@ -249,6 +248,13 @@ void check_spot_welds(const Model& m, const Location& file_loc, Diagnostics& dia
   for (int b = 0; b < m.num_beams(); ++b)
     if (m.beam_nodes[std::size_t(b)][0] >= 0 && is_rigid(m.beam_material[std::size_t(b)]))
       for (int j = 0; j < 2; ++j) rigid_mat[std::size_t(m.beam_nodes[std::size_t(b)][std::size_t(j)])] = m.beam_material[std::size_t(b)];
+  return rigid_mat;
+}
+
+void check_spot_welds(const Model& m, const Location& file_loc, Diagnostics& diag, const std::vector<char>& node_used) {
+  if (m.spot_welds.empty()) return;
+  const std::size_t nn = std::size_t(m.num_nodes());
+  const std::vector<int> rigid_mat = rigid_material_of_nodes(m);  // nodes of rigid bodies
   // the model's size: coincidence is within 1e-9 of it
   double lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
   for (std::size_t i = 0; i < nn; ++i) {
@@ -301,6 +307,49 @@ void check_spot_welds(const Model& m, const Location& file_loc, Diagnostics& dia
       diag.add(1226, loc, "node " + std::to_string(m.node_id(pm.node)) + " is in the spot weld at line " +
                               std::to_string(m.spot_welds[std::size_t(weld_of[std::size_t(pm.node)])].line));
     }
+}
+
+// Tied contacts (Model::node_ties): a slave node tied once, not itself a master node of a tie,
+// without SPC or prescribed motion; no tied node (slave or master) on a rigid body or in a spot
+// weld (error 1256).
+void check_node_ties(const Model& m, const Location& file_loc, Diagnostics& diag) {
+  if (m.node_ties.empty()) return;
+  const std::size_t nn = std::size_t(m.num_nodes());
+  const std::vector<int> rigid_mat = rigid_material_of_nodes(m);
+  std::vector<char> welded(nn, 0), master(nn, 0), motion(nn, 0);
+  std::vector<int> tie_of(nn, -1);
+  for (const SpotWeld& w : m.spot_welds)
+    for (int n : w.nodes) welded[std::size_t(n)] = 1;
+  for (const NodeTie& t : m.node_ties)
+    for (int n : t.seg) master[std::size_t(n)] = 1;
+  for (const PrescribedMotion& pm : m.prescribed_motions)
+    if (pm.node >= 0) motion[std::size_t(pm.node)] = 1;
+  for (std::size_t i = 0; i < m.node_ties.size(); ++i) {
+    const NodeTie& t = m.node_ties[i];
+    const TiedContact& tc = m.tied_contacts[std::size_t(t.contact)];
+    Location loc = file_loc;
+    loc.line = tc.line;
+    loc.card = std::string(tc.spotweld ? "*CONTACT_SPOTWELD" : "*CONTACT_TIED_NODES_TO_SURFACE") + (tc.id ? " " + std::to_string(tc.id) : "");
+    const std::size_t k = std::size_t(t.node);
+    const std::string node = "slave node " + std::to_string(m.node_id(t.node));
+    if (tie_of[k] >= 0)
+      diag.add(1256, loc, node + " is tied twice (also by the tied contact at line " +
+                              std::to_string(m.tied_contacts[std::size_t(m.node_ties[std::size_t(tie_of[k])].contact)].line) + ")");
+    else if (master[k])
+      diag.add(1256, loc, node + " is also a node of a master segment of a tie");
+    else if (m.bc[k] != 0 || motion[k])
+      diag.add(1256, loc, node + " has a " + std::string(motion[k] ? "prescribed motion" : "displacement constraint (SPC)") +
+                              ": it moves with its master segment");
+    tie_of[k] = int(i);
+    for (int n : {t.node, t.seg[0], t.seg[1], t.seg[2], t.seg[3]}) {
+      const std::size_t q = std::size_t(n);
+      if (rigid_mat[q] < 0 && !welded[q]) continue;
+      diag.add(1256, loc, "node " + std::to_string(m.node_id(n)) + (n == t.node ? " (slave)" : " (of the master segment)") +
+                              (welded[q] ? " is in a spot weld" : " is on the rigid body of material " +
+                                                                    std::to_string(m.materials[std::size_t(rigid_mat[q])].number)));
+      break;
+    }
+  }
 }
 
 namespace {
@@ -615,6 +664,7 @@ bool check_model(const Model& m, Diagnostics& diag) {
   check_shells(m, file_loc, diag, node_used, mat_used);
   check_beams(m, file_loc, diag, node_used, mat_used);
   check_spot_welds(m, file_loc, diag, node_used);
+  check_node_ties(m, file_loc, diag);
   check_solid_formulations(m, file_loc, diag, mat_used);
   check_spot_weld_solids(m, file_loc, diag, mat_used);
   report_unused(m, file_loc, diag, node_used, mat_used);

@@ -248,6 +248,26 @@ struct SpotWeld {
   int file = -1;                     // Model::source_files index of that line (-1: the deck)
 };
 
+// *CONTACT_SPOTWELD and *CONTACT_TIED_NODES_TO_SURFACE (solve/node_ties.h): constraint-based
+// tied contacts.  Each slave node within reach of a master segment is projected onto it once
+// (when the deck is read: the node is moved onto the segment) and then moves with the segment:
+// a NodeTie per tied node.
+struct TiedContact {
+  bool spotweld = false;                      // *CONTACT_SPOTWELD (else _TIED_NODES_TO_SURFACE)
+  int id = 0;                                 // the _ID card's CID (0: none)
+  std::vector<int> slave_nodes;               // 0-based, sorted, unique
+  std::vector<std::array<int, 4>> master;     // master segments (0-based nodes)
+  double tolerance = 0;                       // |SST| of a negative SST (0: the default reach)
+  int tied = 0;                               // slave nodes tied (the rest out of reach: warning)
+  int line = 0;                               // deck line of card 1 (messages)
+};
+struct NodeTie {
+  int node = -1;                              // the slave node (0-based)
+  int contact = 0;                            // Model::tied_contacts index
+  std::array<int, 4> seg{};                   // the master segment's nodes (a triangle repeats n3)
+  std::array<double, 4> w{};                  // the shape functions at the projection (sum 1)
+};
+
 struct LoadCurve {
   int number = 0;
   std::vector<double> t, f;
@@ -410,6 +430,8 @@ struct Model {
   std::vector<int> body_load_materials;   // 0-based materials the body loads act on; empty = all
   std::vector<PrescribedMotion> prescribed_motions;
   std::vector<SpotWeld> spot_welds;
+  std::vector<TiedContact> tied_contacts;
+  std::vector<NodeTie> node_ties;          // in contact order, each contact's slaves in node order
   GlobalDamping damping;
   bool has_loads() const {
     return !nodal_loads.empty() || !rigid_body_loads.empty() || !pressure_loads.empty() || !body_loads.empty() ||

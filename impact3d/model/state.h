@@ -39,6 +39,24 @@ struct RigidBody {
   bool released = false;
 };
 
+// Tied contacts (Model::node_ties; solve/node_ties.h): per tie its slave node, the indices of its
+// segment's nodes among the ties' master nodes (sorted, unique), its weights and whether it ties
+// rotations too; per master this cycle's sums (its net force and mass plus its slaves' shares;
+// with rotational degrees of freedom the moments and rotary inertias likewise) and its angular
+// velocity before the cycle's rotational update.  Allocated once (initialize_state); empty
+// without tied contacts.
+struct TieState {
+  std::vector<int> masters;
+  std::vector<int> slave;
+  std::vector<std::array<int, 4>> tie_master;
+  std::vector<std::array<double, 4>> w;
+  std::vector<std::uint8_t> turns;
+  std::vector<double> fx, fy, fz, m;
+  std::vector<double> mx, my, mz, j;
+  std::vector<double> wx0, wy0, wz0;
+  bool empty() const { return masters.empty(); }
+};
+
 struct ElementGroup {
   HexKernel kernel = HexKernel::rigid;
   const SolidKernel* solid = nullptr;  // the material type's kernel (material_types.h)
@@ -153,6 +171,7 @@ struct State {
   std::vector<MaterialConstants> mats;
   std::vector<RigidBody> rigid;
   std::vector<int> newly_released;     // spot welds (rigid-body indices) released in the last cycle
+  TieState ties;                       // tied contacts (node_ties.h)
   ShellState shells;                   // the Belytschko-Tsay shells (shell_state.h)
   BeamState beams;                     // the beams (beam_state.h)
 

@@ -109,6 +109,7 @@ std::string distributed_refusal(const Model& m, int nranks) {
   if (!m.beam_nodes.empty()) what.push_back("beams");
   if (!m.interfaces.empty()) what.push_back("sliding interfaces");
   if (!m.force_transducers.empty()) what.push_back("force transducers");
+  if (!m.tied_contacts.empty()) what.push_back("tied contacts");
   bool rigid = !m.spot_welds.empty(), failure = m.control.erode_small_steps;
   for (const MaterialData& md : m.materials) {
     if (md.shell || md.beam) continue;

@@ -12,6 +12,7 @@
 #include "impact3d/solve/loads.h"
 #include "impact3d/solve/mass_scaling.h"
 #include "impact3d/solve/node_processing.h"
+#include "impact3d/solve/node_ties.h"
 #include "impact3d/solve/rigid_body.h"
 #include "impact3d/solve/shell_processing.h"
 #include "impact3d/solve/spot_weld.h"
@@ -164,8 +165,8 @@ StepStatus Engine::step() {
   np.dt_n = dt_n;
   np.dt_next = dt_next;
   np.has_fext = has_fext;
-  np.store_force = !s.rigid.empty();
-  np.update_positions = s.rigid.empty() && !loads_.has_motions &&
+  np.store_force = !s.rigid.empty() || !s.ties.empty();
+  np.update_positions = s.rigid.empty() && s.ties.empty() && !loads_.has_motions &&
                         (m_.walls.empty() || !fixed_walls_.empty());
   np.walls = &fixed_walls_;
   if (dist_) dist_->node_pass(s, np);  // this rank's nodes (distributed_cycle.h)
@@ -175,11 +176,13 @@ StepStatus Engine::step() {
     t = Clock::now();
     if (!s.rigid.empty()) update_rigid_body_velocities(s, dt_n, dt_next);
     if (!m_.spot_welds.empty()) check_spot_weld_failure(m_, s, dt_n);
+    if (!s.ties.empty()) tie_translations(s, dt_n);
     if (!m_.walls.empty()) apply_stonewalls_to_nodes(m_, s, dt_next, dt_n);
     times_.walls += seconds_since(t);
     t = Clock::now();
     if (loads_.has_motions) {
       apply_prescribed_motions(m_, s, loads_, s.time, dt_n, dt_next);
+      if (!s.ties.empty()) tie_slave_velocities(s);  // (masters moved by a prescribed motion)
       times_.loads += seconds_since(t);
       t = Clock::now();
     }
@@ -202,7 +205,9 @@ StepStatus Engine::step() {
   times_.walls += seconds_since(t);
   t = Clock::now();
   if (loads_.has_rotations) capture_rotations(m_, s, loads_);
+  if (!s.ties.empty()) save_tied_rotations(s);
   update_rotational_velocities_for_nodes(s, dt_n);  // shells' and beams' rotations (none: no-op)
+  if (!s.ties.empty()) tie_rotations(s, dt_n);
   if (loads_.has_rotations) apply_prescribed_rotations(m_, s, loads_, s.time, dt_next);
   times_.nodes += seconds_since(t);
   s.time += dt_next;

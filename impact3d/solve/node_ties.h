@@ -1,0 +1,34 @@
+#pragma once
+// Tied contacts in the cycle (*CONTACT_SPOTWELD, *CONTACT_TIED_NODES_TO_SURFACE; Model::node_ties,
+// State::ties): a tied slave node moves with the point of its master segment where it was
+// projected, x_s = sum_a w_a x_a.  Its mass and net force go to the segment's nodes by the
+// weights (m_a + w_a m_s, f_a + w_a f_s), the masters' velocities follow from those sums, and the
+// slave's velocity is the weights' mix of theirs: momentum is kept exactly (sum_a w_a = 1).  Where
+// the slave and all four master nodes have rotational degrees of freedom (a weld beam's end on
+// shells), the rotations are tied the same way (rotary inertias and moments shared by the
+// weights, omega_s = sum_a w_a omega_a).
+
+#include "impact3d/model/model.h"
+#include "impact3d/model/state.h"
+
+namespace impact3d {
+
+// State::ties from Model::node_ties (after the masses, rotary inertias and initial velocities
+// are set): each slave starts with the weights' mix of its masters' velocities.
+void init_node_ties(const Model& m, State& s);
+
+// After the node pass (net forces in s.fx...; v_old kept) at t^n: the masters' velocities from
+// their and their slaves' forces and masses (constrained components left as the pass set
+// them), then the slaves' velocities.
+void tie_translations(State& s, double dt_n);
+
+// The slaves' velocities from their masters' (after prescribed motions set some masters').
+void tie_slave_velocities(State& s);
+
+// Around the rotational update (update_rotational_velocities_for_nodes): keep the masters'
+// angular velocities before it; after it, the masters' from their and their slaves' moments and
+// rotary inertias, the slaves' the weights' mix, and the rotational kinetic energy again.
+void save_tied_rotations(State& s);
+void tie_rotations(State& s, double dt_n);
+
+}  // namespace impact3d
