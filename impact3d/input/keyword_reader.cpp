@@ -613,16 +613,6 @@ class KeywordReader {
   // ---------------------------------------------------------------- pass 2: parse blocks
   // Field widths for a card of n fields of width w (standard), 20 in long format.
   static std::vector<int> W(const Block& b, int n, int w = 10) { return std::vector<int>(std::size_t(n), b.long_fmt ? 20 : w); }
-  static std::vector<int> cat(std::vector<int> a, const std::vector<int>& b) {
-    a.insert(a.end(), b.begin(), b.end());
-    return a;
-  }
-
-  KCard card(const Block& b, std::size_t k, const std::string& what, const std::vector<int>& widths) {
-    KCard c(b.data[k], b.keyword + (what.empty() ? "" : " " + what), widths, diag_);
-    c.set_params(&params_);
-    return c;
-  }
 
   // *PARAMETER: cards of four pairs PRMR (10 columns: type R, I or C, then the name) and VAL
   // (10 columns), then *PARAMETER_EXPRESSION.  Read before every other keyword, so a reference
