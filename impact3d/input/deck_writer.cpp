@@ -276,7 +276,7 @@ class KeywordWriter {
       }
       if (md.shell) {
         const ShellSectionData& sec = md.shell_section;
-        os_ << "*SECTION_SHELL\n$#   secid    elform      shrf       nip\n" << kcard({I(1 + id), I(2), R(sec.shrf), I(sec.nip)}) << "\n"
+        os_ << "*SECTION_SHELL\n$#   secid    elform      shrf       nip\n" << kcard({I(1 + id), I(sec.elform), R(sec.shrf), I(sec.nip)}) << "\n"
             << "$#      t1        t2        t3        t4\n" << kcard({R(sec.t[0]), R(sec.t[1]), R(sec.t[2]), R(sec.t[3])}) << "\n";
       }
       if (const MaterialType* t = find_material_type(md.type)) {
@@ -922,6 +922,8 @@ class FixedWriter {
       const std::string what = "material " + std::to_string(j + 1);
       if (!md.shell && !md.beam && md.solid_elform == 2)
         note(what + ": a fully integrated solid (*SECTION_SOLID ELFORM 2) has no DYNA3D element formulation: written as the one-point hexahedron (with hourglass type 1, coefficient 0.1)");
+      if (md.shell && md.shell_section.elform == 16)
+        note(what + ": a fully integrated shell (*SECTION_SHELL ELFORM 16) has no DYNA3D element formulation: written as a Belytschko-Tsay shell (with hourglass type 1, coefficient 0.1)");
       os_ << T("material card 1", what + " card 1")("material number", int(j) + 1)("material type", md.type)("density", md.rho)
                  ("EOS type", md.eos.form)("hourglass type", md.hourglass_type)("hourglass coefficient", md.hourglass_coef)
                  ("bulk viscosity type", md.bulk_type)("quadratic bulk viscosity Q1", md.q1)("linear bulk viscosity Q2", md.q2)
@@ -1414,6 +1416,7 @@ void section_and_output_differences(const Model& a, const Model& b, Differences&
     const auto &x = a.materials[k], &y = b.materials[k];
     std::string w = "material " + std::to_string(k + 1) + " ";
     d.N(w + "shell", x.shell, y.shell);
+    d.N(w + "shell ELFORM", x.shell_section.elform, y.shell_section.elform);
     d.N(w + "NIP", x.shell_section.nip, y.shell_section.nip);
     d.D(w + "SHRF", x.shell_section.shrf, y.shell_section.shrf);
     for (int j = 0; j < 4; ++j) d.D(w + "section T" + std::to_string(j + 1), x.shell_section.t[std::size_t(j)], y.shell_section.t[std::size_t(j)]);

@@ -287,7 +287,7 @@ std::vector<KeywordSpec> parts_sections_specs() {
   t.push_back({{"SECTION_SHELL"}, F, false,
                {{"card 1", 8, 10, per_field, {
                    {"SECID", 0, I, 0, false, {}, "section id (the cards are then named by it in messages; defined twice: error 1200)"},
-                   {"ELFORM", 1, I, 2, false, {neither(0, 2, 1102, "shell formulation %v; only ELFORM 2 (Belytschko-Tsay)")}, "shell formulation"},
+                   {"ELFORM", 1, I, 2, false, {inside(16, 16, 0, nullptr), neither(0, 2, 1102, "shell formulation %v; only ELFORM 2 (Belytschko-Tsay) and 16 (fully integrated)")}, "shell formulation (0/2 Belytschko-Tsay, 16 fully integrated)"},
                    shear_factor("shear factor in (0, 1] (5/6 for isotropic shells)"),
                    {"NIP", 3, E, 2, true, {not_whole(0, kInf, 1003, "integration points 1-10"),
                                            outside(-kInf, 10, 1102, "more than 10 Gauss points (user-defined integration rules)")}, "through-thickness Gauss points"},

@@ -122,6 +122,7 @@ struct RBeamSection {
 };
 // *SECTION_SHELL
 struct RShellSection {
+  int elform = 2;  // 2 (0 and blank read as 2) or 16
   int nip = 2;
   double shrf = 1.0;
   std::array<double, 4> t{};

@@ -75,7 +75,8 @@ void read_shell_section(const Block& b, KeywordContext& ctx, const KeywordSpec& 
                         int id, std::size_t k) {
   RShellSection sec;
   sec.ref = v.ref("SECID");
-  v.rest();  // ELFORM 2 (Belytschko-Tsay, LS-DYNA's default: blank or 0 reads as 2) only
+  v.rest();  // ELFORM 2 (Belytschko-Tsay, LS-DYNA's default: blank or 0 reads as 2) or 16
+  sec.elform = v.integer("ELFORM") == 16 ? 16 : 2;
   sec.shrf = v["SHRF"];
   const double nip = v["NIP"];
   sec.nip = v.passed("NIP") ? int(nip) : 2;  // (refused: 1003/1102; not converted, it may not fit an int)

@@ -1484,6 +1484,7 @@ class KeywordReader {
       if (auto eit = erosion_.find(p.mid); eit != erosion_.end())
         err(1102, eit->second.second, "*MAT_ADD_EROSION material " + std::to_string(p.mid), "MID", "erosion (element deletion) of shells");
       md.shell = true;
+      md.shell_section.elform = sit->second.elform;
       md.shell_section.nip = sit->second.nip;
       md.shell_section.shrf = sit->second.shrf;
       md.shell_section.t = sit->second.t;
@@ -1499,8 +1500,13 @@ class KeywordReader {
         }
       }
       md.hourglass_type = ihq == 0 ? 1 : ihq;
-      if (md.hourglass_type > 5) err(1102, p.hg_ref.line ? p.hg_ref : p.ref, card, "HGID", "shell hourglass type " + std::to_string(md.hourglass_type) + " (IHQ 1-3 viscous, 4-5 stiffness)");
       md.hourglass_coef = qm > 0 ? qm : 0.10;
+      if (md.shell_section.elform == 16) {  // no hourglass modes: LS-DYNA ignores the part's settings
+        md.hourglass_type = 1;
+        md.hourglass_coef = 0;
+      } else if (md.hourglass_type > 5) {
+        err(1102, p.hg_ref.line ? p.hg_ref : p.ref, card, "HGID", "shell hourglass type " + std::to_string(md.hourglass_type) + " (IHQ 1-3 viscous, 4-5 stiffness)");
+      }
       md.bulk_type = ctl_.btype;
       const int mat = int(m_.materials.size());
       m_.materials.push_back(md);

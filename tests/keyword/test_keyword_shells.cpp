@@ -127,11 +127,11 @@ TEST(KeywordShells, ElementThicknessCardsAndRotationalVelocities) {
 }
 
 TEST(KeywordShells, RefusedSectionFieldsAndMissingThickness) {
-  const std::string bad = "*SECTION_SHELL\n" + ifield(1, 10) + ifield(16, 10) + field(1.0, 10) + ifield(12, 10) +
+  const std::string bad = "*SECTION_SHELL\n" + ifield(1, 10) + ifield(5, 10) + field(1.0, 10) + ifield(12, 10) +
                           std::string(10, ' ') + field(1.0, 10) + ifield(1, 10) + "\n" + field(0.0, 10) + "\n";
   ShellRead r = read_shell_text(strip_deck(2, bad, "*CONTROL_SHELL\n         0         0         0         0         4\n"));
   EXPECT_FALSE(r.ok);
-  // ELFORM 16, NIP 12, QR 1.0, ICOMP 1, THEORY 4: each 1102; the missing thickness 1241
+  // ELFORM 5 (16 is the fully integrated shell), NIP 12, QR 1.0, ICOMP 1, THEORY 4: each 1102; the missing thickness 1241
   EXPECT_EQ(r.d.count(1102), 5) << r.messages();
   EXPECT_GE(r.d.count(1241), 1) << r.messages();
   EXPECT_NE(r.messages().find("ELFORM"), std::string::npos);

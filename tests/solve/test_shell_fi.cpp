@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "impact3d/element/shell_fi.h"
+#include "impact3d/material/material_types.h"
 #include "impact3d/solve/engine.h"
 #include "impact3d/solve/shell_processing.h"
 #include "tests/solve/shell_models.h"
@@ -364,4 +365,86 @@ TEST(ShellFi, SameBitsForAnyThreadCount) {
   EXPECT_EQ(a.shells.eps_p, b.shells.eps_p);
   EXPECT_EQ(a.internal, b.internal);
   EXPECT_GT(*std::max_element(a.shells.eps_p.begin(), a.shells.eps_p.end()), 0.0);
+}
+
+namespace {
+
+// The shell materials, each set for a stretch to about 1 % (steel-like except the rubber).
+MaterialData material_of_type(int type) {
+  MaterialData md = steel_shell(type, 3);
+  const MaterialType& t = material_type(type);
+  set_param_defaults(md, t);
+  md.rho = 7850, md.E = 210e9, md.nu = 0.3;
+  if (type == 3 || type == 24) md.sigma_y = 250e6, md.E_tan = 2e9, md.beta = 0.5;
+  if (type == 18) {
+    param_value(md, *find_param(t, "K")) = 500e6;
+    param_value(md, *find_param(t, "N")) = 0.2;
+  }
+  if (type == 27) {
+    md.rho = 1100, md.nu = 0.49;
+    param_value(md, *find_param(t, "A")) = 0.5e6;
+    param_value(md, *find_param(t, "B")) = 0.1e6;
+  }
+  return md;
+}
+
+// One parallelogram shell whose corners move at v = D X (prescribed velocities, X the initial
+// positions: a uniform stretch with shear to about 1 %), 50 us, z held.
+State stretched_parallelogram(MaterialData md, int elform) {
+  md.shell_section.elform = elform;
+  md.hourglass_coef = 0;
+  Model m = make_plate(1, 1, 0.01, 0.01, 0.002, md, 5e-5);
+  m.x[2] += 0.003, m.x[3] += 0.003;
+  const int curve = add_constant_curve(m);
+  for (int i = 0; i < 4; ++i) {
+    const double x = m.x[std::size_t(i)], y = m.y[std::size_t(i)];
+    m.bc[std::size_t(i)] = 3;  // z
+    for (int a = 0; a < 2; ++a) {
+      PrescribedMotion pm;
+      pm.node = i;
+      pm.dir = {a == 0 ? 1.0 : 0.0, a == 1 ? 1.0 : 0.0, 0};
+      pm.curve = curve;
+      pm.scale = a == 0 ? 200 * x + 40 * y : 40 * x - 60 * y;
+      m.prescribed_motions.push_back(pm);
+    }
+  }
+  Engine eng(m);
+  EXPECT_EQ(eng.initialize(), StepStatus::ok);
+  EXPECT_EQ(run_to_end(eng), StepStatus::finished);
+  return eng.state();
+}
+
+}  // namespace
+
+// ELFORM 16 takes every material ELFORM 2 takes through the same point update: under a uniform
+// stretch (a parallelogram, so that the four Gauss points and the one-point rule see the same
+// rates and a constant stress gives both the same corner forces) each of its four Gauss points,
+// and their mean, carries ELFORM 2's stress and plastic strain, to 1e-9 of the largest stress:
+// elastic (1), plastic-kinematic (3, beta 0.5), power law (18), piecewise-linear (24), Mooney-
+// Rivlin (27).
+TEST(ShellFi, EveryShellMaterialGivesTheOnePointStressUnderUniformStretch) {
+  for (int type : {1, 3, 18, 24, 27}) {
+    const MaterialData md = material_of_type(type);
+    const State fi = stretched_parallelogram(md, 16), bt = stretched_parallelogram(md, 2);
+    const int nip = 3;
+    double smax = 0, worst = 0, eps_worst = 0, eps_max = 0;
+    for (double v : bt.shells.sig) smax = std::max(smax, std::fabs(v));
+    for (int set = 0; set < kShellFiPointSets; ++set)
+      for (int p = 0; p < nip; ++p) {
+        for (int c = 0; c < 5; ++c)
+          worst = std::max(worst, std::fabs(fi.shells.sig[std::size_t(5 * (nip * set + p) + c)] - bt.shells.sig[std::size_t(5 * p + c)]));
+        if (!bt.shells.eps_p.empty()) {
+          eps_max = std::max(eps_max, bt.shells.eps_p[std::size_t(p)]);
+          eps_worst = std::max(eps_worst, std::fabs(fi.shells.eps_p[std::size_t(nip * set + p)] - bt.shells.eps_p[std::size_t(p)]));
+        }
+      }
+    std::printf("type %d: largest stress %.4e, ELFORM 16 points vs ELFORM 2 %.2e of it; plastic strain %.4e, difference %.2e\n",
+                type, smax, worst / smax, eps_max, eps_worst);
+    EXPECT_GT(smax, 0.0);
+    EXPECT_LT(worst, 1e-9 * smax) << "type " << type;
+    EXPECT_LT(eps_worst, 1e-9) << "type " << type;
+    if (type == 3 || type == 18 || type == 24) {
+      EXPECT_GT(eps_max, 1e-3) << "type " << type;
+    }
+  }
 }
