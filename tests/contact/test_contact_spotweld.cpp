@@ -24,6 +24,7 @@
 #include "impact3d/solve/engine.h"
 #include "../support/box_mesh.h"
 #include "../support/deck_text.h"
+#include "tests/support/threaded_run.h"
 
 using namespace impact3d;
 
@@ -276,15 +277,7 @@ TEST(ContactSpotweld, RigidTranslationWithoutStrain) {
 TEST(ContactSpotweld, SameBitsForOneAndTwoThreads) {
   Read r = read_text(sheets_deck(Load::lap_shear, 1e-3));
   ASSERT_TRUE(r.ok) << r.messages();
-  auto run = [&](int threads) {
-    test_support::ScopedThreads t(threads);
-    Engine e(r.m);
-    EXPECT_EQ(e.initialize(), StepStatus::ok);
-    while (e.step() == StepStatus::ok) {
-    }
-    return e.state();
-  };
-  const State a = run(1), b = run(2);
+  const State a = test_support::run_to_end_on_threads(r.m, 1), b = test_support::run_to_end_on_threads(r.m, 2);
   EXPECT_EQ(a.x, b.x);
   EXPECT_EQ(a.vx, b.vx);
   EXPECT_EQ(a.shells.wx, b.shells.wx);

@@ -26,25 +26,14 @@
 #include "common/cards.h"
 #include "impact3d/input/deck_reader.h"
 #include "impact3d/solve/engine.h"
+#include "shipped_shell_deck.h"
 
 using namespace impact3d;
 
 namespace {
 
 // The shipped deck, its *SECTION_SHELL ELFORM 2 replaced by `elform`.
-bool read_roof(int elform, Model& m, Diagnostics& d) {
-  std::ifstream in(std::string(IMPACT3D_SOURCE_DIR) + "/decks/keyword/scordelis_lo_roof.k");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  std::string text = ss.str();
-  const std::string card = "         1         2 0.8333333         2\n";
-  const std::size_t at = text.find(card);
-  if (at == std::string::npos) return false;
-  text.replace(at, card.size(), "         1" + std::string(elform < 10 ? 9 : 8, ' ') + std::to_string(elform) + " 0.8333333         2\n");
-  DeckFile deck;
-  deck.load_from_string("scordelis_lo_roof.k", text);
-  return read_deck(deck, m, d, InputOptions{}) && check_model(m, d);
-}
+bool read_roof(int elform, Model& m, Diagnostics& d) { return test_support::read_shipped_shell_deck("scordelis_lo_roof.k", elform, m, d); }
 
 // The roof with shell formulation elform, run to its static state; returns w / load (and checks
 // the static state, the energy balance and Clapeyron as the file's head says).

@@ -6,7 +6,6 @@
 
 #include <gtest/gtest.h>
 
-#include <omp.h>
 
 #include <algorithm>
 #include <array>
@@ -19,6 +18,7 @@
 #include "impact3d/solve/engine.h"
 #include "impact3d/solve/shell_processing.h"
 #include "tests/solve/shell_models.h"
+#include "tests/support/threaded_run.h"
 
 using namespace impact3d;
 using namespace shell_test;
@@ -351,15 +351,7 @@ TEST(ShellFi, SameBitsForAnyThreadCount) {
     const double x = m.x[std::size_t(i)], y = m.y[std::size_t(i)];
     add_velocity(m, i, {5.0 * x, 0, 5.0 * x * (1 + y)});
   }
-  auto run = [&](int threads) {
-    omp_set_num_threads(threads);
-    Engine eng(m);
-    EXPECT_EQ(eng.initialize(), StepStatus::ok);
-    for (int c = 0; c < 60; ++c) EXPECT_EQ(eng.step(), StepStatus::ok);
-    return eng.state();
-  };
-  const State a = run(1), b = run(2);
-  omp_set_num_threads(1);
+  const State a = test_support::run_cycles_on_threads(m, 1, 60), b = test_support::run_cycles_on_threads(m, 2, 60);
   EXPECT_EQ(a.z, b.z);
   EXPECT_EQ(a.shells.sig, b.shells.sig);
   EXPECT_EQ(a.shells.eps_p, b.shells.eps_p);

@@ -8,7 +8,6 @@
 #include <cmath>
 #include <vector>
 
-#include <omp.h>
 #include <algorithm>
 
 #include "impact3d/element/shell_bt.h"
@@ -16,6 +15,7 @@
 #include "impact3d/solve/engine.h"
 #include "impact3d/solve/shell_processing.h"
 #include "tests/solve/shell_models.h"
+#include "tests/support/threaded_run.h"
 
 using namespace impact3d;
 using namespace shell_test;
@@ -295,15 +295,7 @@ TEST(ShellThreads, SameBitsForAnyThreadCount) {
     iv.v = {5.0 * m.x[std::size_t(i)], 0, 5.0 * m.x[std::size_t(i)] * (1 + m.y[std::size_t(i)])};
     m.init_velocities.push_back(iv);
   }
-  auto run = [&](int threads) {
-    omp_set_num_threads(threads);
-    Engine eng(m);
-    EXPECT_EQ(eng.initialize(), StepStatus::ok);
-    for (int c = 0; c < 60; ++c) EXPECT_EQ(eng.step(), StepStatus::ok);
-    return eng.state();
-  };
-  const State a = run(1), b = run(2);
-  omp_set_num_threads(1);
+  const State a = test_support::run_cycles_on_threads(m, 1, 60), b = test_support::run_cycles_on_threads(m, 2, 60);
   EXPECT_EQ(a.z, b.z);
   EXPECT_EQ(a.shells.sig, b.shells.sig);
   EXPECT_EQ(a.shells.wy, b.shells.wy);

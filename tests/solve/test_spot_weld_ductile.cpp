@@ -27,6 +27,7 @@
 #include "impact3d/solve/spot_weld.h"
 #include "../support/deck_text.h"
 #include "../support/box_mesh.h"
+#include "tests/support/threaded_run.h"
 
 using namespace impact3d;
 
@@ -223,15 +224,7 @@ TEST(SpotWeldDuctile, SameBitsForOneAndTwoThreads) {
   const double tf = failure_time(kEp);
   Read r = read_text(strips_deck("generalized", kEp, 1.1 * tf));
   ASSERT_TRUE(r.ok) << r.messages();
-  auto run = [&](int threads) {
-    test_support::ScopedThreads t(threads);
-    Engine e(r.m);
-    EXPECT_EQ(e.initialize(), StepStatus::ok);
-    while (e.step() == StepStatus::ok) {
-    }
-    return e.state();
-  };
-  const State a = run(1), b = run(2);
+  const State a = test_support::run_to_end_on_threads(r.m, 1), b = test_support::run_to_end_on_threads(r.m, 2);
   EXPECT_EQ(a.x, b.x);
   EXPECT_EQ(a.vx, b.vx);
   EXPECT_EQ(a.shells.eps_p, b.shells.eps_p);

@@ -28,6 +28,7 @@
 #include "impact3d/solve/spot_weld.h"
 #include "tests/support/box_mesh.h"
 #include "../support/deck_text.h"
+#include "tests/support/threaded_run.h"
 
 using namespace impact3d;
 
@@ -400,15 +401,7 @@ TEST(SpotWeldInput, ConverterRoundTrip) {
 TEST(SpotWeld, SameBitsForOneAndTwoThreads) {
   Read r = read_text(two_cubes(1.1, 1, spotwelds(1e4, 0, 2, 2)));
   ASSERT_TRUE(r.ok) << r.messages();
-  auto run = [&](int threads) {
-    test_support::ScopedThreads t(threads);
-    Engine e(r.m);
-    EXPECT_EQ(e.initialize(), StepStatus::ok);
-    while (e.step() == StepStatus::ok) {
-    }
-    return e.state();
-  };
-  const State a = run(1), b = run(2);
+  const State a = test_support::run_to_end_on_threads(r.m, 1), b = test_support::run_to_end_on_threads(r.m, 2);
   EXPECT_EQ(a.x, b.x);
   EXPECT_EQ(a.vx, b.vx);
   EXPECT_EQ(a.internal, b.internal);
