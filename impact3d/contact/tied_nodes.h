@@ -21,7 +21,11 @@ double tie_default_reach(const Model& m, const std::array<int, 4>& seg);
 // Ties the slave nodes of Model::tied_contacts[c]: each to its nearest segment within reach (on
 // equal distances the first in the contact's order), the node moved onto the segment, a NodeTie
 // appended to m.node_ties; sets the contact's `tied` count.  Returns the slave nodes left untied
-// (out of every segment's reach).
-std::vector<int> tie_slave_nodes(Model& m, int c);
+// (out of every segment's reach).  The search looks at the segments a uniform grid of their boxes
+// lists for the node (grid), or at every segment (every_segment: the reference the grid is tested
+// against, and what a contact whose slave nodes are also master nodes uses); both tie every node
+// to the same segment at the same point.
+enum class TieSearch { grid, every_segment };
+std::vector<int> tie_slave_nodes(Model& m, int c, TieSearch search = TieSearch::grid);
 
 }  // namespace impact3d
