@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <bit>
 #include <cerrno>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -350,6 +351,11 @@ std::string parent_dir(const std::string& path) {
     return parent.empty() ? std::string(".") : parent.string();
 }
 
+std::int64_t steady_ns() {
+    return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now().time_since_epoch())
+        .count();
+}
+
 void fsync_dir_best_effort(const std::string& dir) {
     const int dfd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
     if (dfd < 0) return;
@@ -434,9 +440,20 @@ void PlotWriter::resume_members(int keep) {
     fd_ = fd;
 }
 
+void PlotWriter::sync() {
+    if (fd_ >= 0 && unsynced_) {
+        fsync_or_throw(fd_, member_name(root_, members_));
+        ++syncs_;
+    }
+    unsynced_ = false;
+    last_sync_ns_ = steady_ns();
+}
+
 void PlotWriter::close() noexcept {
+    if (fd_ >= 0 && unsynced_) (void)::fsync(fd_);
     if (fd_ >= 0) ::close(fd_);
     fd_ = -1;
+    unsynced_ = false;
     root_written_ = false;
 }
 
@@ -609,6 +626,7 @@ void PlotWriter::open_impl(const std::string& root_path, const PlotGeometry& g, 
     states_in_member_ = 0;
     states_written_ = 0;
     marker_pos_ = 0;
+    last_sync_ns_ = steady_ns();
 
     const std::string dir = parent_dir(root_path);
     const std::vector<char> b = root_file(g);
@@ -834,6 +852,7 @@ void PlotWriter::write_state(const PlotState& s) {
 // New member: written completely under a temporary name, fsync'ed, then renamed into place, so
 // that a reader never sees a partly written member.
 void PlotWriter::start_member(const std::vector<char>& buf) {
+    sync();  // the member before it durable first: a machine crash leaves no gap
     const int m = members_ + 1;
     const std::string name = member_name(root_, m);
     const std::string tmp = name + ".tmp";
@@ -844,6 +863,7 @@ void PlotWriter::start_member(const std::vector<char>& buf) {
         put_real(all, ws_, kEndMarker);
         pwrite_all(fd, all.data(), all.size(), 0, tmp);
         fsync_or_throw(fd, tmp);
+        ++syncs_;
         if (::rename(tmp.c_str(), name.c_str()) != 0) io_fail("rename to " + name + " of", tmp, errno);
     } catch (...) {
         ::close(fd);
@@ -855,6 +875,8 @@ void PlotWriter::start_member(const std::vector<char>& buf) {
     fd_ = fd;
     members_ = m;
     states_in_member_ = 1;
+    unsynced_ = false;
+    last_sync_ns_ = steady_ns();
     marker_pos_ = static_cast<std::int64_t>(buf.size());
 }
 
@@ -865,16 +887,17 @@ void PlotWriter::append_to_member(const std::vector<char>& buf) {
     const std::int64_t off = marker_pos_;
     std::vector<char> tail(buf.begin() + ws_, buf.end());
     put_real(tail, ws_, kEndMarker);
+    const bool durable = sync_interval_ <= 0 || double(steady_ns() - last_sync_ns_) >= 1e9 * sync_interval_;
     try {
         pwrite_all(fd_, tail.data(), tail.size(), off + ws_, name);
-        fsync_or_throw(fd_, name);
+        if (durable) fsync_or_throw(fd_, name);
     } catch (...) {
         if (::ftruncate(fd_, static_cast<off_t>(off + ws_)) == 0) (void)::fsync(fd_);
         throw;
     }
     try {
         pwrite_all(fd_, buf.data(), static_cast<std::size_t>(ws_), off, name);
-        fsync_or_throw(fd_, name);
+        if (durable) fsync_or_throw(fd_, name);
     } catch (...) {
         std::vector<char> mk;
         put_real(mk, ws_, kEndMarker);
@@ -884,6 +907,11 @@ void PlotWriter::append_to_member(const std::vector<char>& buf) {
     }
     marker_pos_ += static_cast<std::int64_t>(buf.size());
     ++states_in_member_;
+    if (durable) {
+        syncs_ += 2;
+        last_sync_ns_ = steady_ns();
+    }
+    unsynced_ = !durable;
 }
 
 // =============================================================================================

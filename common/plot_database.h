@@ -11,15 +11,20 @@
 //   d3plot02 .. members; a new member is started before member_size_limit_words would be crossed.
 // Words are 4 bytes (int32/float32) or 8 bytes (int64/float64), little-endian.
 //
-// Crash safety: every write_state() is durable (fsync) when it returns, and at every moment of a
-// run the family on disk reads as "all committed states, then a marker":
+// Crash safety: at every moment of a run the family reads as "all committed states, then a
+// marker":
 //   * appending to a member: the new state's body (all words but its time word) and a new end
-//     marker are written after the old end marker and fsync'ed; then the time word is written over
-//     the old marker and fsync'ed (a single aligned word is the commit point);
-//   * a new member is written to "<name>.tmp", fsync'ed and renamed into place.
-// A run killed at any moment therefore leaves every completed state readable by this reader and
-// by VTK.  PlotReader additionally ignores an incomplete trailing state at the end of the last
-// member.
+//     marker are written after the old end marker; then the time word is written over the old
+//     marker (a single aligned word is the commit point);
+//   * a new member is written to "<name>.tmp" and renamed into place.
+// The writes reach the operating system in that order before write_state() returns, so a run
+// killed at any moment leaves every completed state readable by this reader and by VTK.
+// Against the machine going down (power loss, kernel crash), the writes are also made durable
+// (fsync) between the body and the commit word and after the commit: for every state when the
+// sync interval is 0 (the default), else for the first state written at least that many seconds
+// (wall clock) after the last durable one, and always for a new member (before its rename), in
+// sync() and in close(); states written in between are durable at the next of these.
+// PlotReader additionally ignores an incomplete trailing state at the end of the last member.
 #pragma once
 
 #include <array>
@@ -194,11 +199,20 @@ public:
     void resume(const std::string& root_path, const PlotGeometry& geometry, int word_size,
                 std::int64_t member_size_limit_words, int keep_states);
 
-    // Appends one state to d3plot01, d3plot02, ... and fsyncs.  Throws std::invalid_argument for
-    // wrong vector sizes, std::logic_error if not open, std::runtime_error for I/O errors
-    // (states written before stay intact and readable; the writer stays usable).
+    // Appends one state to d3plot01, d3plot02, ... (and fsyncs as the sync interval says).
+    // Throws std::invalid_argument for wrong vector sizes, std::logic_error if not open,
+    // std::runtime_error for I/O errors (states written before stay intact and readable; the
+    // writer stays usable).
     void write_state(const PlotState& state);
 
+    // Seconds of wall clock between durable states (see "Crash safety" above); 0: every state.
+    void set_sync_interval(double seconds) { sync_interval_ = seconds; }
+    // Makes every state written so far durable (fsync); throws std::runtime_error on failure.
+    void sync();
+    int num_syncs() const { return syncs_; }  // fsync calls of write_state() and sync()
+
+    // Closes the current member, fsync'ed first when states were written since the last sync
+    // (an error there is ignored: call sync() to see it).
     void close() noexcept;
     bool is_open() const { return root_written_; }
 
@@ -232,6 +246,10 @@ private:
     int states_in_member_ = 0;
     std::int64_t marker_pos_ = 0; // byte offset of the end marker in the current member
     int states_written_ = 0;
+    double sync_interval_ = 0;    // seconds; 0 = every state
+    bool unsynced_ = false;       // states written to fd_ since its last fsync
+    std::int64_t last_sync_ns_ = 0;  // steady clock of the last fsync
+    int syncs_ = 0;
 };
 
 class PlotReader {

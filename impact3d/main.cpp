@@ -36,8 +36,8 @@ namespace {
 
 const char* kUsage =
     "usage: impact3d i=DECK [o=PRINTED] [g=PLOTDB] [d=DUMP] [s=INTFOR] [ncpu=N] [plotwords=4|8] [x=N]\n"
-    "                [reorder=auto|on|off] [--check]\n"
-    "       impact3d r=DUMP [o=PRINTED] [g=PLOTDB] [d=DUMP] [s=INTFOR] [ncpu=N]\n"
+    "                [reorder=auto|on|off] [sync=SECONDS] [--check]\n"
+    "       impact3d r=DUMP [o=PRINTED] [g=PLOTDB] [d=DUMP] [s=INTFOR] [ncpu=N] [sync=SECONDS]\n"
     "       impact3d --help | --version | --messages | --card-tables | --keyword-tables\n"
     "\n"
     "  i=DECK     input deck: DYNA3D fixed format or LS-DYNA keyword (chosen by content)\n"
@@ -57,6 +57,9 @@ const char* kUsage =
     "  reorder=M  renumber nodes and solids internally for memory locality: auto (default:\n"
     "             when the model is large and the deck's numbering scattered), on, off; ids in\n"
     "             every input and output stay the deck's\n"
+    "  sync=S     make the plot and time-history databases durable (fsync) at most every S\n"
+    "             seconds, before each restart dump and at the end (default 1; 0: after every\n"
+    "             state); a killed run keeps every state written either way\n"
     "  --check    read and check the deck only; print the summary; write nothing else\n"
     "  --lenient-keywords  unsupported LS-DYNA keywords are warnings, not errors\n"
     "  --strict   a run that ends normally but that the run checks find suspect (hourglass,\n"
@@ -130,6 +133,15 @@ std::function<std::string()> self_contained_deck_text_source(const std::string& 
     std::string kw = model_as_keyword_text(path, model);
     return kw.empty() ? original() : kw;
   };
+}
+
+// A whole-word real in [lo, hi] (command-line values); false if it is not one.
+bool parse_real_in(const char* text, double lo, double hi, double& out) {
+  char* end = nullptr;
+  const double x = std::strtod(text, &end);
+  if (!*text || *end || !(x >= lo && x <= hi)) return false;
+  out = x;
+  return true;
 }
 
 // A whole-word integer in [lo, hi] (command-line values); false if it is not one.
@@ -211,7 +223,7 @@ bool read_file_name(const std::string& arg, CommandLine& cl) {
   return true;
 }
 
-// A numeric or mode word (plotwords=, x=, case=, reorder=, ncpu=) into cl, a bad value as error
+// A numeric or mode word (plotwords=, x=, case=, reorder=, sync=, ncpu=) into cl, a bad value as error
 // 3005 into cmd; false for any other word.
 bool read_setting(const std::string& arg, CommandLine& cl, Diagnostics& cmd) {
   const auto eq = arg.find('=');
@@ -241,6 +253,8 @@ bool read_setting(const std::string& arg, CommandLine& cl, Diagnostics& cmd) {
   } else if (key == "reorder=") {
     if (parse_mesh_order_mode(v, cl.mesh_order)) cl.reorder_given = true;
     else bad_value("reorder must be auto, on or off");
+  } else if (key == "sync=") {
+    if (!parse_real_in(v, 0, 1e9, opt.sync_seconds)) bad_value("sync must be a number of seconds >= 0");
   } else if (key == "ncpu=") {
     if (!parse_count(v, 1, 1024, opt.threads)) bad_value("ncpu must be an integer 1-1024");
   } else {

@@ -37,6 +37,15 @@ class HistoryOutput {
   void current_sizes(std::uint64_t out[kNumAscii]) const;
   int thdt_states() const { return thdt_ ? thdt_->num_states_written() : 0; }
   void flush();
+  // d3thdt's durability against a machine crash (PlotWriter::set_sync_interval, sync); the
+  // ASCII files are flushed after each write (flush), not fsync'ed.
+  void set_sync_interval(double seconds) {
+    if (thdt_) thdt_->set_sync_interval(seconds);
+  }
+  void sync() {
+    if (thdt_) thdt_->sync();
+  }
+  int syncs() const { return thdt_ ? thdt_->num_syncs() : 0; }
 
  private:
   // write()'s files, in order (history_output.cpp)

@@ -49,6 +49,10 @@ class PlotOutput {
   void write(const Model& m, const State& s, const InterfaceForces& iface);
   int states_written() const { return writer_.num_states_written(); }
   double last_time() const { return last_time_; }
+  // Durability against a machine crash (PlotWriter::set_sync_interval, sync).
+  void set_sync_interval(double seconds) { writer_.set_sync_interval(seconds); }
+  void sync() { writer_.sync(); }
+  int syncs() const { return writer_.num_syncs(); }
 
  private:
   PlotWriter writer_;
@@ -78,6 +82,9 @@ class IntforOutput {
   void write(const Model& m, const State& s, const SlidingInterfaces& contact, const InterfaceForces& iface);
   int states_written() const { return writer_.num_states_written(); }
   double last_time() const { return last_time_; }
+  void set_sync_interval(double seconds) { writer_.set_sync_interval(seconds); }
+  void sync() { writer_.sync(); }
+  int syncs() const { return writer_.num_syncs(); }
   // The geometry written (nodes: the sides' nodes; shells: their segments, numbered 1..n side
   // after side in interface order, slave side first).
   static PlotGeometry make_geometry(const Model& m);

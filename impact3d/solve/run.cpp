@@ -96,6 +96,7 @@ int run_simulation(const Model& model, const RunOptions& opt, std::ostream& prin
   // the final state (normal end) or the last state reached (error termination)
   if (!stopped) outputs.write_last(st);
   outputs.flush();
+  outputs.sync();
 
   engine.gather_for_output();  // (the final report reads the whole State)
   write_final_report(engine, outputs, cycle, clock.elapsed(), opt, log);

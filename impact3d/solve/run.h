@@ -19,6 +19,10 @@ struct RunOptions {
   int threads = 0;          // 0 = OpenMP default
   int plot_word_size = 4;   // 4 or 8 byte words in the plot and time-history databases
   int member_size_factor = 7;  // x=: family member size limit, in units of 512 x 512 words
+  // sync=: seconds of wall clock between fsyncs of the plot, time-history and interface-force
+  // databases (PlotWriter::set_sync_interval; also before each restart dump and at the end);
+  // 0: after every state
+  double sync_seconds = 1;
   std::string deck_text;    // the deck's content, kept in restart dumps
   // When deck_text is empty: makes it, once, when the first restart dump is written (a run
   // that writes no dump never holds a second copy of a large deck)

@@ -67,9 +67,29 @@ bool RunOutputs::open() {
   // on a restart the family must be there to continue: a missing or short one is a restart
   // problem (4006), not a write failure
   const char* plot_why = restarting_ ? "the plot database does not match the restart dump" : kCannotWrite;
-  return open_one(&RunOutputs::open_plot, opt_.plot, plot_why) &&
-         (!want_intfor_ || open_one(&RunOutputs::open_intfor, intfor_root_, kCannotWrite)) &&
-         open_one(&RunOutputs::open_history, out_dir_, kCannotWrite);
+  const bool opened = open_one(&RunOutputs::open_plot, opt_.plot, plot_why) &&
+                      (!want_intfor_ || open_one(&RunOutputs::open_intfor, intfor_root_, kCannotWrite)) &&
+                      open_one(&RunOutputs::open_history, out_dir_, kCannotWrite);
+  plot_.set_sync_interval(opt_.sync_seconds);
+  intfor_.set_sync_interval(opt_.sync_seconds);
+  history_.set_sync_interval(opt_.sync_seconds);
+  return opened;
+}
+
+bool RunOutputs::sync() {
+  const OutputTimer timer(seconds_);
+  const std::string* file = &opt_.plot;
+  try {
+    plot_.sync();
+    file = &intfor_root_;
+    intfor_.sync();
+    file = &out_dir_;
+    history_.sync();
+  } catch (const std::exception& ex) {
+    log_.file_error(4004, *file, ex.what());
+    ok_ = false;
+  }
+  return ok_;
 }
 
 void RunOutputs::open_plot() {
@@ -189,6 +209,8 @@ DumpHeader RunOutputs::dump_header() {
 }
 
 bool RunOutputs::write_dump(const std::string& path) {
+  // the states the dump counts durable before it (a restart after a machine crash finds them)
+  if (!sync()) return false;
   const DumpHeader h = dump_header();
   engine_.gather_for_output();
   try {

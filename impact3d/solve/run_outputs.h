@@ -41,6 +41,9 @@ class RunOutputs {
   // normal end the final history and intfor states.
   void write_last(StepStatus st);
   void flush() { history_.flush(); }
+  // Makes every state written so far durable (fsync of the binary databases; before a restart
+  // dump and at the end): false, and message 4004 logged, when that fails.
+  bool sync();
 
   bool ok() const { return ok_; }
   OutputSchedule& schedule() { return schedule_; }
