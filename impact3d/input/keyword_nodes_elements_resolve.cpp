@@ -1,0 +1,253 @@
+// Keyword decks, the nodes' and elements' resolve steps: *NODE, *ELEMENT_SOLID, *ELEMENT_SHELL
+// and *ELEMENT_BEAM records into the Model, renumbered 1..N in increasing id order (a repeated
+// id error 1200), their nodes and parts looked up (1202, 1308), each part's elements listed for
+// the part steps (keyword_parts_resolve.cpp).  The records are read by
+// keyword_nodes_elements.cpp; KeywordReader::resolve (keyword_reader.cpp) runs the steps first
+// (ResolveContext, keyword_resolve.h).
+
+#include "impact3d/input/keyword_resolve.h"
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+
+#include "impact3d/input/element_shapes.h"
+
+namespace impact3d::kw {
+
+void resolve_nodes(ResolveContext& rc) {
+  std::vector<std::uint32_t> order(rc.me.nodes.size());
+  for (std::size_t k = 0; k < order.size(); ++k) order[k] = std::uint32_t(k);
+  const auto by_id = [&](std::uint32_t a, std::uint32_t b) { return rc.me.nodes[a].id < rc.me.nodes[b].id; };
+  if (!std::is_sorted(order.begin(), order.end(), by_id)) std::stable_sort(order.begin(), order.end(), by_id);
+  // the first of each id is kept (order is filtered in place)
+  std::size_t nn = 0;
+  for (std::size_t q = 0; q < order.size(); ++q) {
+    const RNode& n = rc.me.nodes[order[q]];
+    if (nn > 0 && rc.me.nodes[order[nn - 1]].id == n.id) {
+      rc.err(1200, n.ref(), "*NODE node " + std::to_string(n.id), "NID", "node " + std::to_string(n.id) + " also defined at " + at(rc.me.nodes[order[nn - 1]].ref()));
+      continue;
+    }
+    order[nn++] = order[q];
+  }
+  const auto kept = [&](std::size_t k) { return &rc.me.nodes[order[k]]; };
+  assign_huge(rc.m.x, nn, 0.0);
+  assign_huge(rc.m.y, nn, 0.0);
+  assign_huge(rc.m.z, nn, 0.0);
+  assign_huge(rc.m.bc, nn, 0);
+  rc.node_ids.resize(nn);
+  bool identity = true;
+  for (std::size_t k = 0; k < nn; ++k) {
+    const RNode& n = *kept(k);
+    rc.node_ids[k] = n.id;
+    rc.m.x[k] = n.x;
+    rc.m.y[k] = n.y;
+    rc.m.z[k] = n.z;
+    rc.m.bc[k] = n.tc;
+    identity = identity && n.id == int(k) + 1;
+  }
+  rc.m.node_user_id.clear();
+  if (!identity) rc.m.node_user_id = rc.node_ids;
+  rc.node_ids_identity = identity;
+  release(order);
+  release(rc.me.nodes);  // the raw nodes are not needed any more
+  if (nn == 0) {
+    Location loc;
+    loc.file = rc.main_file;
+    rc.diag.add(1311, loc, "*NODE: the deck defines no nodes");
+  }
+}
+
+void resolve_parts_and_elements(ResolveContext& rc) {
+  for (std::size_t k = 0; k < rc.ps.parts.size(); ++k) {
+    auto [it, fresh] = rc.part_index.emplace(rc.ps.parts[k].pid, int(k));
+    if (!fresh) rc.err(1200, rc.ps.parts[k].ref, "*PART " + std::to_string(rc.ps.parts[k].pid), "PID", "also defined at " + at(rc.ps.parts[it->second].ref));
+  }
+  rc.part_elems.assign(rc.ps.parts.size(), {});
+  std::vector<std::uint32_t> order(rc.me.elems.size());
+  for (std::size_t k = 0; k < order.size(); ++k) order[k] = std::uint32_t(k);
+  const auto by_id = [&](std::uint32_t a, std::uint32_t b) { return rc.me.elems[a].id < rc.me.elems[b].id; };
+  if (!std::is_sorted(order.begin(), order.end(), by_id)) std::stable_sort(order.begin(), order.end(), by_id);
+  // the first of each id is kept (order is filtered in place)
+  std::size_t ne = 0;
+  for (std::size_t q = 0; q < order.size(); ++q) {
+    const RElem& e = rc.me.elems[order[q]];
+    if (ne > 0 && rc.me.elems[order[ne - 1]].id == e.id) {
+      rc.err(1200, e.ref(), "*ELEMENT_SOLID element " + std::to_string(e.id), "EID", "element " + std::to_string(e.id) + " also defined at " + at(rc.me.elems[order[ne - 1]].ref()));
+      continue;
+    }
+    order[ne++] = order[q];
+  }
+  std::array<int, 8> undefined;
+  undefined.fill(-1);
+  assign_huge(rc.m.hex_nodes, ne, undefined);
+  assign_huge(rc.m.hex_material, ne, -1);
+  assign_huge(rc.m.hex_line, ne, 0);
+  assign_huge(rc.m.hex_file, ne, -1);
+  rc.elem_ids.resize(ne);
+  bool identity = true;
+  const DeckFile* last_file = nullptr;
+  int last_file_index = -1;
+  int last_pid = 0;
+  auto last_part = rc.part_index.end();
+  for (std::size_t k = 0; k < ne; ++k) {
+    const RElem& e = rc.me.elems[order[k]];
+    rc.elem_ids[k] = e.id;
+    identity = identity && e.id == int(k) + 1;
+    rc.m.hex_line[k] = e.card.line ? e.card.line->number : 0;
+    if (e.card.file != last_file || !last_file) {
+      last_file = e.card.file;
+      last_file_index = rc.file_index(e.card.file);
+    }
+    rc.m.hex_file[k] = last_file_index;
+    const auto card = [&] { return "*ELEMENT_SOLID element " + std::to_string(e.id); };
+    bool ok = true;
+    std::array<int, 8> n{};
+    for (int j = 0; j < 8; ++j) {
+      int idx = rc.node_index(e.n[std::size_t(j)]);
+      if (idx < 0) {
+        std::string f = "N" + std::to_string(j + 1);
+        rc.err(1202, e.node_ref(j), card(), f.c_str(), "node " + std::to_string(e.n[std::size_t(j)]) + " is not defined by *NODE");
+        ok = false;
+      }
+      n[std::size_t(j)] = idx;
+    }
+    if (last_part == rc.part_index.end() || e.pid != last_pid) {
+      last_part = rc.part_index.find(e.pid);
+      last_pid = e.pid;
+    }
+    auto pit = last_part;
+    if (pit == rc.part_index.end()) {
+      rc.err(1308, e.pid_ref(), card(), "PID", "part " + std::to_string(e.pid) + " is not defined by *PART" + rc.refused_note('p', e.pid));
+      ok = false;
+    } else {
+      rc.part_elems[std::size_t(pit->second)].push_back(int(k));
+    }
+    if (ok && !is_valid_solid_node_pattern(n)) {
+      Ref r = e.node_ref(0);
+      r.c2 = e.node_ref(7).c2;
+      rc.err(1222, r, card(), "N1-N8");
+      ok = false;
+    }
+    if (ok) {
+      make_canonical_solid_node_pattern(n);
+      rc.m.hex_nodes[k] = n;
+      rc.m.hex_material[k] = -2 - pit->second;  // part index, replaced by the material index
+    }
+  }
+  release(order);
+  release(rc.me.elems);  // the raw elements are not needed any more
+  rc.m.hex_user_id.clear();
+  if (!identity) rc.m.hex_user_id = rc.elem_ids;
+  if (ne == 0 && rc.me.shells.empty() && rc.me.beams.empty()) {
+    Location loc;
+    loc.file = rc.main_file;
+    rc.diag.add(1311, loc, "*ELEMENT_SOLID, *ELEMENT_SHELL, *ELEMENT_BEAM: the deck defines no elements");
+  }
+}
+
+// *ELEMENT_SHELL cards -> Model::shell_* in increasing id order (material: -2 - part index
+// until resolve_shell_materials).
+void resolve_shells(ResolveContext& rc) {
+  rc.part_shells.assign(rc.ps.parts.size(), {});
+  std::stable_sort(rc.me.shells.begin(), rc.me.shells.end(), [](const RShell& a, const RShell& b) { return a.id < b.id; });
+  std::vector<int> ids;
+  bool identity = true;
+  for (std::size_t q = 0; q < rc.me.shells.size(); ++q) {
+    const RShell& e = rc.me.shells[q];
+    const std::string card = "*ELEMENT_SHELL element " + std::to_string(e.id);
+    if (q > 0 && rc.me.shells[q - 1].id == e.id) {
+      rc.err(1200, e.ref, card, "EID", "element " + std::to_string(e.id) + " also defined at " + at(rc.me.shells[q - 1].ref));
+      continue;
+    }
+    std::array<int, 4> n{};
+    bool ok = true;
+    for (int j = 0; j < 4; ++j) {
+      n[std::size_t(j)] = rc.node_index(e.n[std::size_t(j)]);
+      if (n[std::size_t(j)] < 0) {
+        const std::string f = "N" + std::to_string(j + 1);
+        rc.err(1202, e.node_refs[std::size_t(j)], card, f.c_str(), "node " + std::to_string(e.n[std::size_t(j)]) + " is not defined by *NODE");
+        ok = false;
+      }
+    }
+    if (ok && (n[0] == n[1] || n[0] == n[2] || n[1] == n[2] || n[0] == n[3] || n[1] == n[3])) {
+      Ref r = e.node_refs[0];
+      r.c2 = e.node_refs[3].c2;
+      rc.err(1222, r, card, "N1-N4", "a shell is a quadrilateral or a triangle with N3 = N4");
+      ok = false;
+    }
+    auto pit = rc.part_index.find(e.pid);
+    if (pit == rc.part_index.end()) {
+      rc.err(1308, e.pid_ref, card, "PID", "part " + std::to_string(e.pid) + " is not defined by *PART" + rc.refused_note('p', e.pid));
+      ok = false;
+    }
+    const int k = rc.m.num_shells();
+    if (!ok) n.fill(-1);
+    rc.m.shell_nodes.push_back(n);
+    rc.m.shell_material.push_back(ok ? -2 - pit->second : -1);
+    rc.m.shell_thickness.push_back(e.t);
+    rc.m.shell_line.push_back(e.line);
+    rc.m.shell_file.push_back(rc.file_index(e.file));
+    ids.push_back(e.id);
+    identity = identity && e.id == k + 1;
+    if (ok) rc.part_shells[std::size_t(pit->second)].push_back(k);
+  }
+  rc.m.shell_user_id.clear();
+  if (!identity) rc.m.shell_user_id = ids;
+  release(rc.me.shells);
+  rc.m.shell_rotary_scale = rc.ctl.rotascl;
+}
+
+// *ELEMENT_BEAM cards -> Model::beam_* in increasing id order (material: -2 - part index
+// until resolve_beam_materials).
+void resolve_beams(ResolveContext& rc) {
+  rc.part_beams.assign(rc.ps.parts.size(), {});
+  std::stable_sort(rc.me.beams.begin(), rc.me.beams.end(), [](const RBeam& a, const RBeam& b) { return a.id < b.id; });
+  std::vector<int> ids;
+  bool identity = true;
+  for (std::size_t q = 0; q < rc.me.beams.size(); ++q) {
+    const RBeam& e = rc.me.beams[q];
+    const std::string card = "*ELEMENT_BEAM element " + std::to_string(e.id);
+    if (q > 0 && rc.me.beams[q - 1].id == e.id) {
+      rc.err(1200, e.ref, card, "EID", "element " + std::to_string(e.id) + " also defined at " + at(rc.me.beams[q - 1].ref));
+      continue;
+    }
+    std::array<int, 3> n{-1, -1, -1};
+    bool ok = true;
+    for (int j = 0; j < 3; ++j) {
+      if (j == 2 && e.n[2] == 0) break;  // no orientation node
+      n[std::size_t(j)] = rc.node_index(e.n[std::size_t(j)]);
+      if (n[std::size_t(j)] < 0) {
+        const std::string f = "N" + std::to_string(j + 1);
+        rc.err(1202, e.node_refs[std::size_t(j)], card, f.c_str(), "node " + std::to_string(e.n[std::size_t(j)]) + " is not defined by *NODE");
+        ok = false;
+      }
+    }
+    if (ok && n[0] == n[1]) {
+      Ref r = e.node_refs[0];
+      r.c2 = e.node_refs[1].c2;
+      rc.err(1250, r, card, "N1-N2", "N1 = N2");
+      ok = false;
+    }
+    auto pit = rc.part_index.find(e.pid);
+    if (pit == rc.part_index.end()) {
+      rc.err(1308, e.pid_ref, card, "PID", "part " + std::to_string(e.pid) + " is not defined by *PART" + rc.refused_note('p', e.pid));
+      ok = false;
+    }
+    const int k = rc.m.num_beams();
+    if (!ok) n.fill(-1);
+    rc.m.beam_nodes.push_back(n);
+    rc.m.beam_material.push_back(ok ? -2 - pit->second : -1);
+    rc.m.beam_thickness.push_back(e.t);
+    rc.m.beam_line.push_back(e.line);
+    rc.m.beam_file.push_back(rc.file_index(e.file));
+    ids.push_back(e.id);
+    identity = identity && e.id == k + 1;
+    if (ok) rc.part_beams[std::size_t(pit->second)].push_back(k);
+  }
+  rc.m.beam_user_id.clear();
+  if (!identity) rc.m.beam_user_id = ids;
+  release(rc.me.beams);
+}
+
+}  // namespace impact3d::kw
