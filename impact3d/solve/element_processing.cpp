@@ -16,10 +16,12 @@ namespace impact3d {
 
 namespace {
 
-// Below this many blocks (8192 solids) the element pass runs on one thread: waking a sleeping
-// thread (passive wait, thread_policy.h) costs more than it gains on a pass this short (the
-// oblique rod, 3480 solids: 26.5 s on one thread, 32.4 s on two with a 256-block threshold).
-constexpr int kMinBlocksForThreads = 1024;
+// Below this many blocks (512 solids) the element pass runs on one thread: waking the sleeping
+// thread (passive wait, thread_policy.h) and the barrier at the end of the pass cost about
+// 10-15 us a cycle, more than half of a pass this short saves. Measured on Taylor bars of 64 to
+// 8000 solids with ncpu=2 (docs/performance.md, "Threads on small models"): 64 and 128 solids
+// (one and two chunks) lose, 256 even, from 504 solids two threads win.
+constexpr int kMinBlocksForThreads = 64;
 // Blocks handed to a thread at a time (dynamic schedule: a thread slowed by another process
 // simply takes fewer; every block writes only its own slots, so the bits do not change).
 constexpr int kBlocksPerChunk = 8;

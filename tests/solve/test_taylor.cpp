@@ -127,7 +127,7 @@ TEST(Determinism, BitIdenticalAcrossThreadCounts) {
 
 namespace {
 
-// A bar of 40 x 40 x 10 solids (16000 solids, 18491 nodes: above the element pass's 8192 and the
+// A bar of 40 x 40 x 10 solids (16000 solids, 18491 nodes: above the element pass's 512 and the
 // node pass's 16384 thresholds for threads) of copper with mixed hardening (back stress) and
 // stiffness hourglass control (resultants), at 200 m/s onto a fixed wall, 40 cycles.
 Snapshot run_threaded_bar(int threads) {
