@@ -262,6 +262,17 @@ double soft_constraint_stiffness(double k0, double sofscl, double m_star, double
   return std::max(k0, sofscl * 0.5 * m_star / (dt_c * dt_c));
 }
 
+double segment_pair_stiffness(double mu, double m1, double m2, double dt_c) {
+  if (!(m1 > 0) || !(m2 > 0) || !(dt_c > 0)) return 0.0;
+  return 0.5 * mu * (m1 * m2 / (m1 + m2)) / (dt_c * dt_c);
+}
+
+void segment_point_coordinates(int i, double& xi, double& eta) {
+  constexpr double g = 0.57735026918962576451;  // 1/sqrt(3)
+  xi = (i == 1 || i == 2) ? g : -g;
+  eta = i >= 2 ? g : -g;
+}
+
 double max_stable_alpha(double tssf) { return std::max(1.0 - tssf * tssf, 0.01); }
 
 double max_stable_stiffness(double tssf, double dt, double m1, double m2, bool symmetric) {

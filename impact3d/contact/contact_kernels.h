@@ -88,6 +88,17 @@ double penopt_stiffness(int penopt, double k_segment, double k_node);
 // nodes' masses, dt_c the step (the first, and later the largest taken).
 double soft_constraint_stiffness(double k0, double sofscl, double m_star, double dt_c);
 
+// LS-DYNA's segment-based contact (SOFT = 2): the stiffness of a segment pair,
+// k = 0.5 mu m1 m2 / (m1 + m2) / dt_c^2 (mu = SLSFAC x SFS, m1, m2 the two segments' masses,
+// dt_c the step).  0 when a mass or dt_c is not positive.
+double segment_pair_stiffness(double mu, double m1, double m2, double dt_c);
+
+// The points of a segment that segment-based contact checks: its 2 x 2 Gauss points
+// (xi, eta) = (+-1/sqrt(3), +-1/sqrt(3)), counter-clockwise from (-, -); each carries a quarter
+// of the segment pair's stiffness.
+constexpr int kSegmentPoints = 4;
+void segment_point_coordinates(int i, double& xi, double& eta);
+
 // Penalty stiffness, choice 1 (IMPACT-3D maximum stable; seed eqs. 10-17):
 // alpha = 1 - F^2 (F the time-step scale factor), k = c alpha / (dt^2 (1/m1 + 1/m2)) with c = 2
 // for the symmetric (two-pass) treatment, where each spring only gets half the mass alpha m

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <tuple>
 #include <utility>
 
 #include "impact3d/contact/contact_kernels.h"
@@ -55,6 +56,10 @@ struct Surface {
   std::vector<int> node_seg_start, node_seg;  // per node: its segments (eroding only)
   bool eroding = false;
   std::vector<double> offset;          // per segment: half the shell's thickness (0 for a solid face)
+  double seg_off_max = 0;              // the largest of them
+  // per segment, segment-based contact's segment mass: half its solid's mass, a shell's mass
+  // (a segment of neither: the sum of its nodes' masses)
+  std::vector<double> seg_mass;
   std::vector<double> node_off;        // per node: half the thickest shell on it (0: no shell)
   double node_off_max = 0;
   // single-surface contact: per node, its ring (the sorted nodes of the segments that have it);
@@ -88,10 +93,23 @@ struct Hit {
   bool refused = false;  // its penetration jumped beyond its approach (the jump went to its offset)
 };
 
+// Result of one point of a segment in a segment-based pass (SOFT 2).
+struct PointHit {
+  int seg = -1;                 // the other side's segment hit (-1: none)
+  double Nm[4] = {0, 0, 0, 0};  // its shape functions at the contact point
+  double f[3] = {0, 0, 0};      // force on the point (normal + friction)
+  double pen = 0, omega_dt = 0;
+  int evaluations = 0;
+  bool refused = false;
+};
+
 struct Pass {
   int node_side = 0, seg_side = 1;
   Grid grid;
   std::vector<Hit> hits;  // one per node of surface node_side
+  // segment-based contact: contact::kSegmentPoints per segment of surface node_side (the
+  // admitted depths below are then 2 per point)
+  std::vector<PointHit> points;
   // 2 per node of surface node_side: last cycle's geometric penetration and the part of it
   // the node's approach did not explain (the spring's offset); both 0: not in contact
   std::vector<double> admitted;
@@ -107,6 +125,7 @@ struct Interface {
   double mu = 0.1, fs = 0, fd = 0, decay = 0;
   bool symmetric = true;
   bool single = false;  // single surface (DYNA3D type 4): surface 0 against itself, one pass
+  bool segment_based = false;  // LS-DYNA's SOFT 2 (method 3): points of segments against segments
 };
 
 void seg_coords(const State& s, const std::array<int, 4>& sg, double X[4][3]) {
@@ -273,7 +292,9 @@ void set_segment_stiffness(const State& s, const ShellIndex& shx, double mu, int
     sf.shell[j] = k;
     const double d1 = std::hypot(X[2][0] - X[0][0], X[2][1] - X[0][1], X[2][2] - X[0][2]);
     const double d2 = std::hypot(X[3][0] - X[1][0], X[3][1] - X[1][1], X[3][2] - X[1][2]);
-    sf.k0[j] = contact::shell_stiffness(mu, s.mats[std::size_t(s.shells.mat[std::size_t(k)])].K, area, std::max(d1, d2));
+    const MaterialConstants& mk = s.mats[std::size_t(s.shells.mat[std::size_t(k)])];
+    sf.k0[j] = contact::shell_stiffness(mu, mk.K, area, std::max(d1, d2));
+    sf.seg_mass[j] = mk.rho * s.shells.area0[std::size_t(k)] * s.shells.thick[std::size_t(k)];
     if (shell_has_offsets(s, k, shell_mode)) {
       const double half = 0.5 * s.shells.thick[std::size_t(k)];
       sf.two_sided[j] = 1;
@@ -290,6 +311,12 @@ void set_segment_stiffness(const State& s, const ShellIndex& shx, double mu, int
     K = s.mats[std::size_t(s.mat[std::size_t(el)])].K;
   }
   sf.k0[j] = contact::dyna3d_stiffness(mu, K, area, vol);
+  if (el >= 0) {
+    sf.seg_mass[j] = 0.5 * s.mats[std::size_t(s.mat[std::size_t(el)])].rho * vol;
+  } else {
+    for (int a = 0; a < 4; ++a)
+      if (a == 0 || sg[std::size_t(a)] != sg[std::size_t(a) - 1]) sf.seg_mass[j] += s.mass[std::size_t(sg[std::size_t(a)])];
+  }
   // deeper than half the element or half the segment's width: not a contact of this segment
   // (it keeps the grown boxes, and so the search, proportional to the segments)
   const double thick = (el >= 0 && area > 0) ? vol / area : std::sqrt(area);
@@ -370,8 +397,10 @@ void build_surface(const State& s, const ShellIndex& shx, const std::vector<std:
   sf.shell.assign(ns, -1);
   sf.two_sided.assign(ns, 0);
   sf.offset.assign(ns, 0.0);
+  sf.seg_mass.assign(ns, 0.0);
   mark_rim_edges(segs, sf.other, sf.boundary);
   for (std::size_t j = 0; j < ns; ++j) set_segment_stiffness(s, shx, mu, shell_mode, j, sf);
+  sf.seg_off_max = ns ? *std::max_element(sf.offset.begin(), sf.offset.end()) : 0.0;
   index_surface_nodes(free_nodes, sf);
   if (eroding) index_node_segments(sf);
   set_node_stiffness_and_offsets(shx, shell_mode, sf);
@@ -615,14 +644,14 @@ double inverse_contact_mass(const State& s, std::size_t k, const std::array<int,
 // contact.  A node that came in from outside has no offset: the spring is the geometric
 // depth, as it was.  Returns the penetration the spring holds (adm: this cycle's depth and offset).
 double admitted_penetration(double pen, double pmax, const double* vrel, const double* n, double dt_half,
-                            double pen_before, double offset_before, Hit& hit, double* adm) {
+                            double pen_before, double offset_before, bool& refused, double* adm) {
   const double approach = -(vrel[0] * n[0] + vrel[1] * n[1] + vrel[2] * n[2]);
   const double vrel_mag = std::sqrt(vrel[0] * vrel[0] + vrel[1] * vrel[1] + vrel[2] * vrel[2]);
   const double jump = (pen - pen_before) - approach * dt_half;
   double offset = offset_before;
   if (jump > kExplainedTol * pmax + kJumpFraction * vrel_mag * dt_half) {
     offset += jump;
-    hit.refused = true;
+    refused = true;
   }
   offset = std::min(offset, pen);
   const double pen_used = pen - offset;
@@ -645,6 +674,84 @@ void add_friction_force(const State& s, const Interface& in, std::size_t k, cons
   for (int i = 0; i < 3; ++i) hit.f[i] += ft[i];
 }
 
+// ---- segment-based contact (LS-DYNA SOFT = 2)
+
+// Whether segment j of `segs` may meet point-carrying segment jo of `own` (same interface): not
+// one that shares a node with it, and on a single surface not one with a node of the rings of
+// its nodes (the segments around it and their neighbours touch it by construction).
+bool segment_pair_allowed(const Interface& in, const Surface& own, std::size_t jo, const std::array<int, 4>& sg) {
+  const auto& so = own.seg[jo];
+  for (int a = 0; a < 4; ++a)
+    for (int b = 0; b < 4; ++b)
+      if (so[std::size_t(a)] == sg[std::size_t(b)]) return false;
+  if (!in.single) return true;
+  for (int a = 0; a < 4; ++a) {
+    const std::size_t q = std::size_t(own.local[jo][std::size_t(a)]);
+    const int* ring = own.ring.data() + own.ring_start[q];
+    const int* ring_end = own.ring.data() + own.ring_start[q + 1];
+    if (std::any_of(sg.begin(), sg.end(), [&](int v) { return std::binary_search(ring, ring_end, v); })) return false;
+  }
+  return true;
+}
+
+// The nearest segment of `segs` to point p of segment jo of `own` (its outward normal n_own, its
+// offset r_own), or -1: its hit bh and the sum of the offsets r.  Two one-sided faces meet only
+// facing each other (n_own . n < 0).
+int find_segment_for_point(const State& s, const Interface& in, const Surface& own, std::size_t jo, const Surface& segs,
+                           const Grid& g, const double* p, const double* n_own, PointHit& hit, contact::SegmentHit& bh,
+                           double& best_r) {
+  const int c = cell_coord(g, 0, p[0]) + g.dim[0] * (cell_coord(g, 1, p[1]) + g.dim[1] * cell_coord(g, 2, p[2]));
+  const double r_own = own.offset[jo];
+  const bool own_one_sided = !own.two_sided[jo];
+  int best = -1;
+  double best_key = 0;
+  for (int e = g.cell_start[std::size_t(c)]; e < g.cell_start[std::size_t(c) + 1]; ++e) {
+    const int j = g.entries[std::size_t(e)];
+    if (!in_box(&g.box[6 * std::size_t(j)], p)) continue;
+    const auto& sg = segs.seg[std::size_t(j)];
+    if (!segment_pair_allowed(in, own, jo, sg)) continue;
+    if (!segment_active(s, segs, std::size_t(j))) continue;
+    double X[4][3];
+    seg_coords(s, sg, X);
+    ++hit.evaluations;
+    const bool two = segs.two_sided[std::size_t(j)];
+    contact::SegmentHit h = two ? contact::closest_point_on_shell_segment(X, p, kInteriorTol)
+                                : contact::closest_point_on_segment(X, p, segs.boundary[std::size_t(j)], kInteriorTol);
+    if (!h.valid) continue;
+    if (own_one_sided && !two && !(n_own[0] * h.n[0] + n_own[1] * h.n[1] + n_own[2] * h.n[2] < 0)) continue;
+    const double r = segs.offset[std::size_t(j)] + r_own;
+    const double key = r == 0 ? h.dist * (h.on_edge ? 1 + 1e-9 : 1.0) : h.dist + (h.on_edge ? 1e-9 * h.dist : 0.0) - r;
+    if (best < 0 || key < best_key) {
+      best = j;
+      best_key = key;
+      best_r = r;
+      bh = h;
+    }
+  }
+  return best;
+}
+
+// sum_a N_a v_a over a segment's nodes (the velocity of its point of shape values N).
+void point_velocity(const State& s, const std::array<int, 4>& sg, const double* N, double* v) {
+  v[0] = v[1] = v[2] = 0;
+  for (int a = 0; a < 4; ++a) {
+    const std::size_t ka = std::size_t(sg[std::size_t(a)]);
+    v[0] += N[a] * s.vx[ka];
+    v[1] += N[a] * s.vy[ka];
+    v[2] += N[a] * s.vz[ka];
+  }
+}
+
+// sum_a N_a^2 / m_a over a segment's nodes (massless nodes left out).
+double inverse_point_mass(const State& s, const std::array<int, 4>& sg, const double* N) {
+  double lam = 0;
+  for (int a = 0; a < 4; ++a) {
+    const double ma = s.mass[std::size_t(sg[std::size_t(a)])];
+    if (ma > 0) lam += N[a] * N[a] / ma;
+  }
+  return lam;
+}
+
 }  // namespace
 
 struct SlidingInterfaces::Impl {
@@ -661,6 +768,8 @@ struct SlidingInterfaces::Impl {
 
   double dt_soft = 0;  // the soft constraint's step: the first, then the largest taken
   void node_pass(const Model& m, const State& s, Interface& in, Pass& ps, double dt, double dt_k);
+  void segment_pass(const State& s, Interface& in, Pass& ps, double dt);
+  void scatter_segment_pass(Interface& in, Pass& ps, std::array<double, 3>& fres);
   double penalty_stiffness(const State& s, const Interface& in, const Surface& nodes_sf, const Surface& segs, int q,
                            int best, const double* N, double dt_k) const;
 };
@@ -719,7 +828,7 @@ void SlidingInterfaces::Impl::node_pass(const Model&, const State& s, Interface&
     const auto& sg = segs.seg[std::size_t(best)];
     double vrel[3];
     relative_velocity(s, k, sg, N, vrel);
-    const double pen_used = admitted_penetration(pen, pmax, vrel, bh.n, s.dt_half, pen_before, offset_before, hit, adm);
+    const double pen_used = admitted_penetration(pen, pmax, vrel, bh.n, s.dt_half, pen_before, offset_before, hit.refused, adm);
     if (!(pen_used > 0)) continue;
     hit.omega_dt = dt * std::sqrt(kpen * inverse_contact_mass(s, k, sg, N));
     const double fn = kpen * pen_used;
@@ -730,6 +839,134 @@ void SlidingInterfaces::Impl::node_pass(const Model&, const State& s, Interface&
     for (int i = 0; i < 3; ++i) hit.f[i] = fn * bh.n[i];
     if (in.fs > 0 || in.fd > 0) add_friction_force(s, in, k, sg, N, bh.n, vrel, fn, dt, hit);
   }
+}
+
+// Segment-based contact (SOFT 2), step 2 of a pass: every point of every segment of the pass's
+// own side against the other side's segments (parallel, per-point slots).  A point penetrating
+// a segment by p gets F = w k p n, k the pair's stiffness 0.5 mu m1 m2 / (m1 + m2) / dt_c^2,
+// w = 1/4 (a quarter a point) halved where each pair is met both ways (symmetric passes, single
+// surface); the spring holds the penetration the points' approach explains (as for nodes).
+void SlidingInterfaces::Impl::segment_pass(const State& s, Interface& in, Pass& ps, double dt) {
+  const Surface& own = in.surf[ps.node_side];
+  const Surface& segs = in.surf[ps.seg_side];
+  const Grid& g = ps.grid;
+  const int ns = int(own.seg.size());
+  const double w = 1.0 / (contact::kSegmentPoints * (in.symmetric ? 2.0 : 1.0));
+#pragma omp parallel for schedule(static) if (ns >= 1024)
+  for (int jo = 0; jo < ns; ++jo) {
+    const std::size_t J = std::size_t(jo);
+    const auto& so = own.seg[J];
+    const bool active = segment_active(s, own, J);
+    double X[4][3];
+    seg_coords(s, so, X);
+    for (int i = 0; i < contact::kSegmentPoints; ++i) {
+      const std::size_t slot = contact::kSegmentPoints * J + std::size_t(i);
+      PointHit& hit = ps.points[slot];
+      hit = PointHit{};
+      double* adm = &ps.admitted[2 * slot];
+      const double pen_before = adm[0], offset_before = adm[1];
+      adm[0] = adm[1] = 0.0;
+      if (!active) continue;
+      double xi, eta, p[3], x_xi[3], x_eta[3], n_own[3], Ns[4];
+      contact::segment_point_coordinates(i, xi, eta);
+      contact::segment_point(X, xi, eta, p, x_xi, x_eta);
+      if (p[0] < g.lo[0] || p[0] > g.hi[0] || p[1] < g.lo[1] || p[1] > g.hi[1] || p[2] < g.lo[2] || p[2] > g.hi[2]) continue;
+      contact::segment_normal(X, xi, eta, n_own);
+      contact::SegmentHit bh;
+      double best_r = 0;
+      const int best = find_segment_for_point(s, in, own, J, segs, g, p, n_own, hit, bh, best_r);
+      if (best < 0) continue;
+      const double pen = best_r - bh.gap;
+      const double pmax = segs.pmax[std::size_t(best)] + own.offset[J];
+      if (!(pen > 0) || pen > pmax) continue;
+      const auto& sm = segs.seg[std::size_t(best)];
+      double Nm[4], vp[3], vm[3];
+      contact::shape4(xi, eta, Ns);
+      contact::shape4(bh.xi, bh.eta, Nm);
+      point_velocity(s, so, Ns, vp);
+      point_velocity(s, sm, Nm, vm);
+      const double vrel[3] = {vp[0] - vm[0], vp[1] - vm[1], vp[2] - vm[2]};
+      const double pen_used = admitted_penetration(pen, pmax, vrel, bh.n, s.dt_half, pen_before, offset_before, hit.refused, adm);
+      if (!(pen_used > 0)) continue;
+      const double m1 = own.seg_mass[J], m2 = segs.seg_mass[std::size_t(best)];
+      const double k = contact::segment_pair_stiffness(in.mu, m1, m2, dt_soft);
+      hit.omega_dt = (m1 > 0 && m2 > 0) ? dt * std::sqrt(k * (1.0 / m1 + 1.0 / m2)) : 0.0;
+      const double fn = w * k * pen_used;
+      hit.seg = best;
+      for (int a = 0; a < 4; ++a) hit.Nm[a] = Nm[a];
+      hit.pen = pen_used;
+      for (int c = 0; c < 3; ++c) hit.f[c] = fn * bh.n[c];
+      if (in.fs > 0 || in.fd > 0) {
+        // the stick cap shared by the points of the pair: 1/m* of the point over w
+        const double inv_meff = (inverse_point_mass(s, so, Ns) + inverse_point_mass(s, sm, Nm)) / w;
+        const double vn = vrel[0] * bh.n[0] + vrel[1] * bh.n[1] + vrel[2] * bh.n[2];
+        const double vt[3] = {vrel[0] - vn * bh.n[0], vrel[1] - vn * bh.n[1], vrel[2] - vn * bh.n[2]};
+        const double mu = contact::friction_coefficient(in.fs, in.fd, in.decay, std::sqrt(vt[0] * vt[0] + vt[1] * vt[1] + vt[2] * vt[2]));
+        double ft[3];
+        contact::friction_force(mu, fn, bh.n, vrel, inv_meff, dt, ft);
+        for (int c = 0; c < 3; ++c) hit.f[c] += ft[c];
+      }
+    }
+  }
+}
+
+// Step 3 of a segment-based pass, in segment and point order: F on the point's segment nodes by
+// its shape functions, -F on the hit segment's nodes by theirs (the sum is zero).
+void SlidingInterfaces::Impl::scatter_segment_pass(Interface& in, Pass& ps, std::array<double, 3>& fres) {
+  Surface& own = in.surf[ps.node_side];
+  Surface& segs = in.surf[ps.seg_side];
+  const double sign = ps.node_side == 0 ? 1.0 : -1.0;  // force on the slave side
+  const std::size_t nif = ifaces.size();
+  for (std::size_t jo = 0; jo < own.seg.size(); ++jo)
+    for (int i = 0; i < contact::kSegmentPoints; ++i) {
+      const PointHit& h = ps.points[contact::kSegmentPoints * jo + std::size_t(i)];
+      ++stats.nodes;
+      stats.evaluations += h.evaluations;
+      stats.refused += h.refused ? 1 : 0;
+      if (h.seg < 0) continue;
+      ++stats.contacts;
+      stats.max_omega_dt = std::max(stats.max_omega_dt, h.omega_dt);
+      max_pen = std::max(max_pen, h.pen);
+      double xi, eta, Ns[4];
+      contact::segment_point_coordinates(i, xi, eta);
+      contact::shape4(xi, eta, Ns);
+      const auto& so = own.seg[jo];
+      const auto& sm = segs.seg[std::size_t(h.seg)];
+      double fo[4][3], fm[4][3];
+      for (int a = 0; a < 4; ++a)
+        for (int c = 0; c < 3; ++c) {
+          fo[a][c] = h.f[c] * Ns[a];
+          fm[a][c] = -h.f[c] * h.Nm[a];
+        }
+      for (int a = 0; a < 4; ++a)
+        for (int c = 0; c < 3; ++c) {
+          cur[3 * std::size_t(so[std::size_t(a)]) + std::size_t(c)] += fo[a][c];
+          cur[3 * std::size_t(sm[std::size_t(a)]) + std::size_t(c)] += fm[a][c];
+        }
+      for (int c = 0; c < 3; ++c) fres[std::size_t(c)] += sign * h.f[c];
+      // the interface-force database: the force on each node of a recorded side
+      for (auto [sf, seg, f] : {std::tuple{&own, jo, &fo}, std::tuple{&segs, std::size_t(h.seg), &fm}})
+        if (!sf->node_force.empty())
+          for (int a = 0; a < 4; ++a)
+            for (int c = 0; c < 3; ++c) sf->node_force[3 * std::size_t(sf->local[seg][std::size_t(a)]) + std::size_t(c)] += (*f)[a][c];
+      // force transducers: the forces on their side-A nodes (from side B only, when given: a
+      // segment's forces count when the other segment is all in B)
+      for (std::size_t t = 0; t < transducers.size(); ++t) {
+        const Transducer& tr = transducers[t];
+        auto& ft = forces[nif + t];
+        auto all_b = [&](const std::array<int, 4>& sg) {
+          bool b = true;
+          for (int v : sg) b = b && (tr.flag[std::size_t(v)] & 2);
+          return b;
+        };
+        const bool from_m = !tr.has_b || all_b(sm), from_o = !tr.has_b || all_b(so);
+        for (int a = 0; a < 4; ++a)
+          for (int c = 0; c < 3; ++c) {
+            if (from_m && (tr.flag[std::size_t(so[std::size_t(a)])] & 1)) ft[std::size_t(c)] += fo[a][c];
+            if (from_o && (tr.flag[std::size_t(sm[std::size_t(a)])] & 1)) ft[std::size_t(c)] += fm[a][c];
+          }
+      }
+    }
 }
 
 SlidingInterfaces::SlidingInterfaces() : impl_(std::make_unique<Impl>()) {}
@@ -756,6 +993,7 @@ void SlidingInterfaces::initialize(const Model& m, const State& s) {
     in.symmetric = d.symmetric;
     in.npass = d.symmetric ? 2 : 1;
     im.any_max_stable = im.any_max_stable || in.method == 1;
+    in.segment_based = in.method == 3;
     in.single = d.type == 4;
     if (in.single) {
       // one pass, but every pair of the surface is met both ways (a node of each against the
@@ -772,8 +1010,14 @@ void SlidingInterfaces::initialize(const Model& m, const State& s) {
       ps.node_side = p == 0 ? 0 : 1;
       ps.seg_side = in.single ? 0 : 1 - ps.node_side;
       allocate_grid(in.surf[ps.seg_side].seg.size(), ps.grid);
-      ps.hits.assign(in.surf[ps.node_side].nodes.size(), Hit{});
-      ps.admitted.assign(2 * in.surf[ps.node_side].nodes.size(), 0.0);
+      if (in.segment_based) {
+        const std::size_t np = contact::kSegmentPoints * in.surf[ps.node_side].seg.size();
+        ps.points.assign(np, PointHit{});
+        ps.admitted.assign(2 * np, 0.0);
+      } else {
+        ps.hits.assign(in.surf[ps.node_side].nodes.size(), Hit{});
+        ps.admitted.assign(2 * in.surf[ps.node_side].nodes.size(), 0.0);
+      }
     }
     for (int sd = 0; sd < 2; ++sd)
       im.contact_nodes.insert(im.contact_nodes.end(), in.surf[sd].nodes.begin(), in.surf[sd].nodes.end());
@@ -823,6 +1067,12 @@ void SlidingInterfaces::apply(const Model& m, State& s, double dt) {
       const Surface& nodes_sf = in.surf[ps.node_side];
       const Surface& segs = in.surf[ps.seg_side];
       if (segs.seg.empty()) continue;
+      if (in.segment_based) {
+        rebuild_grid(s, segs, nodes_sf.seg_off_max, ps.grid);
+        im.segment_pass(s, in, ps, dt);
+        im.scatter_segment_pass(in, ps, fres);
+        continue;
+      }
       rebuild_grid(s, segs, nodes_sf.node_off_max, ps.grid);
       im.node_pass(m, s, in, ps, dt, dt_k);
       // 3. scatter in node order

@@ -636,11 +636,11 @@ class KeywordWriter {
     return s;
   }
 
-  // optional card A: SOFT 0 (DYNA3D), 1 (LS-DYNA soft constraint, SOFSCL), -1 (IMPACT-3D maximum
-  // stable); card B of a non-automatic contact whose shells keep their thickness: THKOPT 1 with
+  // optional card A: SOFT 0 (DYNA3D), 1 (LS-DYNA soft constraint, SOFSCL), 2 (LS-DYNA segment-based),
+  // -1 (IMPACT-3D maximum stable); card B of a non-automatic contact whose shells keep their thickness: THKOPT 1 with
   // its SHLTHK (*CONTROL_CONTACT SHLTHK, written blank, leaves them at their mid-surface)
   void soft_card(const SlidingInterface& si, bool automatic) {
-    const int soft = si.stiffness_method == 2 ? 1 : si.stiffness_method == 1 ? -1 : 0;
+    const int soft = si.stiffness_method == 2 ? 1 : si.stiffness_method == 3 ? 2 : si.stiffness_method == 1 ? -1 : 0;
     os_ << "$#    soft    sofscl\n" << kcard({I(soft), R(si.sofscl)}) << "\n";
     if (!automatic && si.shell_thickness != 0)
       os_ << "$#  penmax    thkopt    shlthk\n" << kcard({B(), I(1), I(si.shell_thickness)}) << "\n";
@@ -1231,6 +1231,13 @@ int write_converted_decks(const Model& m, const std::string& keyword_path, const
         if (m.interfaces[j].eroding) {
           log << " error: the fixed-format deck " << path << " cannot hold this model (not written): sliding interface "
               << j + 1 << " is an eroding contact (*CONTACT_ERODING_*: no fixed-format card; write a keyword deck)\n";
+          return exit_code::input_error;
+        }
+    if (k == 1)  // segment-based contact (SOFT 2) has no fixed-format stiffness method
+      for (std::size_t j = 0; j < m.interfaces.size(); ++j)
+        if (m.interfaces[j].stiffness_method == 3) {
+          log << " error: the fixed-format deck " << path << " cannot hold this model (not written): sliding interface "
+              << j + 1 << " is a segment-based contact (SOFT 2: no fixed-format stiffness method; write a keyword deck)\n";
           return exit_code::input_error;
         }
     if (k == 1)  // a cylinder wall has no fixed-format card

@@ -77,15 +77,33 @@ void read_penalty_scales(KeywordValues& c, RContact& ct) {
   c.rest();
 }
 
-// Optional card A: SOFT (the formulations IMPACT-3D has) and SOFSCL; the table checks the rest.
-void read_optional_card_a(KeywordValues& c, RContact& ct) {
+// Optional card A: SOFT (the formulations IMPACT-3D has), SOFSCL, and SOFT 2's SBOPT and DEPTH
+// as far as IMPACT-3D implements them; the table checks the rest.  SOFT 2 (segment-based
+// contact) is LS-DYNA's for surface-to-surface and single-surface contacts only.
+void read_optional_card_a(KeywordValues& c, const ContactKind& kind, RContact& ct) {
   ct.soft = int(c.integer("SOFT"));
-  if (ct.soft == 2 || ct.soft == 4 || ct.soft == 6)
+  const bool segment_based_ok = kind.symmetric || kind.single;
+  if (ct.soft == 2 && !segment_based_ok && !ct.tied && !kind.transducer)
+    c.error(1102, "SOFT", "segment-based contact SOFT = 2 on a nodes-to-surface contact (IMPACT-3D has it for the "
+                          "surface-to-surface and single-surface contacts, as LS-DYNA)");
+  else if (ct.soft == 4 || ct.soft == 6)
     c.error(1102, "SOFT", "contact formulation SOFT = " + std::to_string(ct.soft) +
-                              " (IMPACT-3D has 0 penalty, 1 soft constraint, -1 maximum stable stiffness)");
-  else if (ct.soft != 0 && ct.soft != 1 && ct.soft != -1)
-    c.error(1006, "SOFT", "0 penalty, 1 soft constraint (LS-DYNA), -1 IMPACT-3D maximum stable stiffness");
+                              " (IMPACT-3D has 0 penalty, 1 soft constraint, 2 segment-based, -1 maximum stable stiffness)");
+  else if (ct.soft != 0 && ct.soft != 1 && ct.soft != -1 && ct.soft != 2)
+    c.error(1006, "SOFT", "0 penalty, 1 soft constraint (LS-DYNA), 2 segment-based (LS-DYNA), -1 IMPACT-3D maximum stable stiffness");
   ct.sofscl = c["SOFSCL"];
+  const int sbopt = int(c.integer("SBOPT")), depth = int(c.integer("DEPTH"));
+  if (ct.soft == 2) {
+    // SBOPT 0 / 2 (planar segments) and 3 (warped segments): IMPACT-3D's segments are bilinear
+    // patches either way; 1 (old pinball edge check), 4 and 5 (sliding option) are not here
+    if (sbopt != 0 && sbopt != 2 && sbopt != 3)
+      c.error(1102, "SBOPT", "segment-based contact option SBOPT = " + std::to_string(sbopt) +
+                                 " (IMPACT-3D has 0, 2 and 3: segments as bilinear patches, no sliding option)");
+    // DEPTH 0 / 1 / 2: surface penetrations; edge-to-edge and the other depths are not here
+    if (depth != 0 && depth != 1 && depth != 2)
+      c.error(1102, "DEPTH", "segment-based search depth DEPTH = " + std::to_string(depth) +
+                                 " (IMPACT-3D has 0, 1 and 2: surface penetrations only, no edge-to-edge contact)");
+  }
   c.rest();
 }
 
@@ -138,7 +156,7 @@ void read_contact(const Block& b, KeywordContext& ctx, const KeywordSpec& s, std
   }
   if (ka < b.data.size()) {
     KeywordValues ca = ctx.fields(b, ka, s.card("optional card A"));
-    read_optional_card_a(ca, ct);
+    read_optional_card_a(ca, kind, ct);
   }
   if (ka + 1 < b.data.size()) {
     KeywordValues cb = ctx.fields(b, ka + 1, s.card("optional card B"));

@@ -330,8 +330,8 @@ void resolve_contacts(ResolveContext& rc) {
     si.fd = c.fd;
     si.decay = c.dc;
     si.penalty_scale = c.sfsa == 1 ? 0 : c.sfsa * rc.ctl.slsfac;
-    // SOFT 0 DYNA3D, 1 LS-DYNA's soft constraint, -1 IMPACT-3D maximum stable
-    si.stiffness_method = c.soft == 1 ? 2 : c.soft == -1 ? 1 : 0;
+    // SOFT 0 DYNA3D, 1 LS-DYNA's soft constraint, 2 LS-DYNA's segment-based, -1 IMPACT-3D maximum stable
+    si.stiffness_method = c.soft == 1 ? 2 : c.soft == 2 ? 3 : c.soft == -1 ? 1 : 0;
     si.sofscl = c.sofscl;
     si.penopt = rc.ctl.penopt;
     si.symmetric = c.symmetric;
@@ -342,6 +342,11 @@ void resolve_contacts(ResolveContext& rc) {
     resolve_side(rc, c.a, true, c.keyword, si.slave, si.slave_line, si.slave_file, si.slave_nodes, !c.single);
     if (!c.single) resolve_side(rc, c.b, false, c.keyword, si.master, si.master_line, si.master_file, si.master_nodes, false);
     if (!c.symmetric) si.master_nodes.clear();  // one pass: the master side's nodes search nothing
+    if (si.stiffness_method == 3) {
+      // segment-based contact: segments only (LS-DYNA's does not work with beams)
+      si.slave_nodes.clear();
+      si.master_nodes.clear();
+    }
     rc.all_faces = false;
     rc.m.interfaces.push_back(std::move(si));
   }

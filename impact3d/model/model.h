@@ -185,7 +185,9 @@ struct SlidingInterface {
   double fs = 0, fd = 0, decay = 0;
   double penalty_scale = 0;   // 0 -> control penalty_scale
   // 0 DYNA3D mu K A^2 / V (keyword SOFT 0), 1 IMPACT-3D maximum stable (keyword SOFT -1),
-  // 2 LS-DYNA soft constraint (keyword SOFT 1): max(k of choice 0, sofscl 0.5 m* / dt_c^2)
+  // 2 LS-DYNA soft constraint (keyword SOFT 1): max(k of choice 0, sofscl 0.5 m* / dt_c^2),
+  // 3 LS-DYNA segment-based contact (keyword SOFT 2; docs/contact.md): points of each segment
+  // against the other side's segments, k = 0.5 mu m1 m2 / (m1 + m2) / dt_c^2 per segment pair
   int stiffness_method = 0;
   double sofscl = 0.1;        // SOFSCL (choice 2)
   // PENOPT (choices 0 and 2): 1 the smaller of the segment's and the node's stiffness (LS-DYNA's

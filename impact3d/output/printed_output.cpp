@@ -407,7 +407,10 @@ void write_interfaces(std::ostream& os, const Model& m) {
        << "     penalty stiffness .................... "
        << (si.stiffness_method == 0 ? "DYNA3D mu K A^2 / V (shells mu K A / diagonal), mu = " +
                                           fmt("%.4g", si.penalty_scale > 0 ? si.penalty_scale : m.control.penalty_scale)
-                                    : std::string("IMPACT-3D maximum stable, alpha = 1 - TSSF^2"))
+                        : si.stiffness_method == 2 ? "LS-DYNA soft constraint (SOFT 1), SOFSCL = " + fmt("%.4g", si.sofscl)
+                        : si.stiffness_method == 3 ? "LS-DYNA segment-based (SOFT 2), 0.5 mu m1 m2 / (m1 + m2) / dt^2, mu = " +
+                                                         fmt("%.4g", si.penalty_scale > 0 ? si.penalty_scale : m.control.penalty_scale)
+                                                   : std::string("IMPACT-3D maximum stable, alpha = 1 - TSSF^2"))
        << "\n"
        << "     treatment ............................ " << (single ? "one pass over the surface, each node against the segments not around it" : si.symmetric ? "symmetric (two passes)" : "one pass")
        << "\n";

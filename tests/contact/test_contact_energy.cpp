@@ -326,7 +326,9 @@ TEST(ContactStiffness, OptionalCardsAAndBRefuseByField) {
     int code;
   };
   const std::vector<Case> cases = {
-      {ki(2) + "\n", "SOFT", 1102},
+      {ki(4) + "\n", "SOFT", 1102},
+      {ki(2) + kf(0) + ki(0) + kf(0) + ki(4) + "\n", "SBOPT", 1102},  // SOFT 2 (segment-based) with its sliding option
+      {ki(2) + kf(0) + ki(0) + kf(0) + ki(0) + ki(5) + "\n", "DEPTH", 1102},  // SOFT 2 with edge-to-edge
       {ki(7) + "\n", "SOFT", 1006},
       {ki(1) + kf(-1) + "\n", "SOFSCL", 1003},
       {ki(0) + kf(0) + ki(5) + "\n", "LCIDAB", 1102},
