@@ -43,8 +43,8 @@ std::string ifld(long v, int w) {
 
 // A keyword deck of elastic blocks, each a part with its node range (0-based [first, last)).
 struct Deck {
-  std::ostringstream nodes, solids, parts, extra;
-  int nid = 0, eid = 0, nsets = 0;
+  std::ostringstream nodes, solids, shells, parts, extra;
+  int nid = 0, eid = 0, sid = 1000, nsets = 0;
   struct Body { int first = 0, last = 0, pid = 0; };
   // nx x ny x nz hexahedra over [x0, x0 + lx] x [y0, y0 + ly] x [z0, z0 + lz]
   Body block(int pid, double x0, double y0, double z0, double lx, double ly, double lz, int nx, int ny, int nz) {
@@ -72,6 +72,26 @@ struct Deck {
     b.last = nid;
     return b;
   }
+  // n x n elastic Belytschko-Tsay shells of thickness t over [x0, x0 + l]^2 at height z
+  Body plate(int pid, double t, double x0, double y0, double z, double l, int n) {
+    parts << "*PART\nplate " << pid << "\n" << ifld(pid, 10) << ifld(pid, 10) << ifld(pid, 10) << "\n";
+    parts << "*SECTION_SHELL\n" << ifld(pid, 10) << ifld(2, 10) << fld(1.0, 10) << ifld(2, 10) << "\n" << fld(t, 10) << "\n";
+    parts << "*MAT_ELASTIC\n" << ifld(pid, 10) << fld(kRho, 10) << fld(kE, 10) << fld(kNu, 10) << "\n";
+    Body b{nid, 0, pid};
+    const int base = nid + 1;
+    for (int j = 0; j <= n; ++j)
+      for (int i = 0; i <= n; ++i) {
+        ++nid;
+        nodes << ifld(nid, 8) << fld(x0 + l * i / n, 16) << fld(y0 + l * j / n, 16) << fld(z, 16) << "\n";
+      }
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i) {
+        const int a = base + i + (n + 1) * j;
+        shells << ifld(++sid, 8) << ifld(pid, 8) << ifld(a, 8) << ifld(a + 1, 8) << ifld(a + n + 2, 8) << ifld(a + n + 1, 8) << "\n";
+      }
+    b.last = nid;
+    return b;
+  }
   void velocity(const Body& b, double vz) {
     const int sid = 100 + ++nsets;
     extra << "*SET_NODE_LIST\n" << ifld(sid, 10) << "\n";
@@ -86,7 +106,9 @@ struct Deck {
   std::string text(double end_time, const std::string& contact) const {
     std::ostringstream d;
     d << "*KEYWORD\n*TITLE\nsegment contact test\n*CONTROL_TERMINATION\n" << fld(end_time, 10) << "\n";
-    d << "*NODE\n" << nodes.str() << parts.str() << "*ELEMENT_SOLID\n" << solids.str() << extra.str() << contact << "*END\n";
+    d << "*NODE\n" << nodes.str() << parts.str() << "*ELEMENT_SOLID\n" << solids.str();
+    if (!shells.str().empty()) d << "*ELEMENT_SHELL\n" << shells.str();
+    d << extra.str() << contact << "*END\n";
     return d.str();
   }
 };
@@ -368,6 +390,41 @@ TEST(SegmentContact, SmallBlockOnACoarseSegmentIsCaught) {
       }
     }
   }
+}
+
+// Shells in segment pairs: a 40 mm block (4 x 4 x 4 solids) falls at 5 m/s on a free plate of
+// 10 x 10 shells (t = 2 mm) through *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE SOFT 2: the plate's
+// contact surface is at t/2 above its mid-surface, both sides usable.
+TEST(SegmentContact, BlockOnAShellPlateStopsAtItsThicknessOffset) {
+  Deck d;
+  const double t = 0.002;
+  const Deck::Body plate = d.plate(1, t, -0.01, -0.01, 0.0, 0.06, 10);
+  const Deck::Body block = d.block(2, 0.0, 0.0, 0.5 * t + 1e-4, 0.04, 0.04, 0.04, 4, 4, 4);
+  d.velocity(block, -5.0);
+  const auto r = read_text(d.text(150e-6, contact_card("AUTOMATIC_SURFACE_TO_SURFACE", 2, 1, 2)));
+  ASSERT_TRUE(r.ok) << r.messages();
+  test_support::ScopedThreads one(1);
+  Engine e(r.m);
+  ASSERT_EQ(e.initialize(), StepStatus::ok);
+  const State& s = e.state();
+  const double pb0 = body_pz(s, block), pp0 = body_pz(s, plate);
+  const Trace tr = run(e, block, plate);
+  ASSERT_TRUE(tr.finished);
+  const double pb1 = body_pz(s, block), pp1 = body_pz(s, plate);
+  std::printf("SOFT 2 block on a shell plate: contact %.4g-%.4g us, largest penetration %.4g um (t/2 = %.4g um), block %.6g -> "
+              "%.6g N s, plate %.6g -> %.6g, impulse %.9g (rel. %.2g), momentum drift %.2g, ratio %.6f-%.6f\n",
+              tr.first * 1e6, tr.last * 1e6, tr.max_pen * 1e6, 0.5 * t * 1e6, pb0, pb1, pp0, pp1, tr.impulse_z,
+              tr.impulse_z / (pb1 - pb0) - 1, tr.p_drift / std::abs(pb0), tr.ratio_min, tr.ratio_max);
+  EXPECT_GT(tr.contact_cycles, 5);
+  EXPECT_LT(tr.p_drift, 1e-12 * std::abs(pb0));
+  EXPECT_NEAR(tr.impulse_z / (pb1 - pb0), 1.0, 1e-10);  // side A (SURFA) is the block
+  EXPECT_LT(tr.max_pen, 0.5 * t);                        // never through to the mid-surface
+  EXPECT_GT(tr.ratio_min, 0.99);
+  EXPECT_LT(tr.ratio_max, 1.01);
+  // the plate was pushed down, the block slowed (an elastic collision of the block's 0.5 kg with
+  // the plate's 0.057 kg: the block keeps going down, the plate leaves faster)
+  EXPECT_LT(pp1, 0.0);
+  EXPECT_GT(pb1, pb0);
 }
 
 // Same bits for 1 and 2 threads, on plates of 32 x 32 segments each (the segment pass goes
