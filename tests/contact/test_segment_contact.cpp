@@ -20,6 +20,7 @@
 #include "impact3d/contact/contact_kernels.h"
 #include "impact3d/input/deck_reader.h"
 #include "impact3d/input/deck_writer.h"
+#include "impact3d/output/restart_dump.h"
 #include "impact3d/solve/engine.h"
 #include "../support/deck_text.h"
 #include "../support/threaded_run.h"
@@ -444,4 +445,33 @@ TEST(SegmentContact, SameBitsForOneAndTwoThreads) {
   EXPECT_EQ(std::memcmp(s1.z.data(), s2.z.data(), s1.z.size() * sizeof(double)), 0);
   EXPECT_EQ(std::memcmp(s1.vz.data(), s2.vz.data(), s1.vz.size() * sizeof(double)), 0);
   EXPECT_EQ(std::memcmp(&s1.contact, &s2.contact, sizeof(double)), 0);
+}
+
+// A restart dump in the middle of the contact (the points' offsets in it) restores a run that
+// goes on to the same bits as the uninterrupted one.
+TEST(SegmentContact, RestartDumpContinuesBitForBit) {
+  TwoBlocks tb;
+  const auto r = read_text(tb.d.text(1.0, contact_card("SURFACE_TO_SURFACE", 1, 2, 2)));
+  ASSERT_TRUE(r.ok) << r.messages();
+  test_support::ScopedThreads one(1);
+  Engine a(r.m);
+  ASSERT_EQ(a.initialize(), StepStatus::ok);
+  while (a.state().time < 30e-6) ASSERT_EQ(a.step(), StepStatus::ok);
+  ASSERT_NE(a.interface_forces()[0][2], 0.0);
+  DumpHeader h;
+  h.deck_name = "segment_contact.k";
+  const std::string path = (test_support::empty_run_folder("segment_contact", "restart") / "dump").string();
+  write_restart_dump(path, h, a.state(), a.contact().restart_data());
+  Engine b(r.m);
+  ASSERT_EQ(b.initialize(), StepStatus::ok);
+  SlidingInterfaces::RestartData cd;
+  read_restart_dump_state(path, b.state(), cd);
+  b.contact().restore(cd);
+  for (int c = 0; c < 40; ++c) {
+    ASSERT_EQ(a.step(), StepStatus::ok);
+    ASSERT_EQ(b.step(), StepStatus::ok);
+  }
+  EXPECT_EQ(a.state().z, b.state().z);
+  EXPECT_EQ(a.state().vz, b.state().vz);
+  EXPECT_EQ(std::memcmp(&a.state().contact, &b.state().contact, sizeof(double)), 0);
 }
