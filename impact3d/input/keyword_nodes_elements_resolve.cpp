@@ -146,108 +146,96 @@ void resolve_parts_and_elements(ResolveContext& rc) {
   }
 }
 
-// *ELEMENT_SHELL cards -> Model::shell_* in increasing id order (material: -2 - part index
-// until resolve_shell_materials).
-void resolve_shells(ResolveContext& rc) {
-  rc.part_shells.assign(rc.ps.parts.size(), {});
-  std::stable_sort(rc.me.shells.begin(), rc.me.shells.end(), [](const RShell& a, const RShell& b) { return a.id < b.id; });
+// The Model's arrays of one element kind (shells or beams), N nodes an element.
+template <std::size_t N>
+struct ElementArrays {
+  std::vector<std::array<int, N>>& nodes;
+  std::vector<int>& material;
+  std::vector<std::array<double, 4>>& thickness;
+  std::vector<int>& line;
+  std::vector<int>& file;
+  std::vector<int>& user_id;
+};
+
+// Shell or beam cards -> the kind's arrays in increasing id order (material: -2 - part index
+// until the part steps; an element whose nodes or part are refused gets -1 and nodes -1) and
+// the parts' lists of them.  A beam's N3 (orientation) may be 0: none.  valid: the kind's own
+// check of the node indices, reporting.
+template <class Card, std::size_t N, class Valid>
+void resolve_element_cards(ResolveContext& rc, std::vector<Card>& cards, const char* keyword, ElementArrays<N> a,
+                           std::vector<std::vector<int>>& part_list, Valid valid) {
+  part_list.assign(rc.ps.parts.size(), {});
+  std::stable_sort(cards.begin(), cards.end(), [](const Card& x, const Card& y) { return x.id < y.id; });
   std::vector<int> ids;
   bool identity = true;
-  for (std::size_t q = 0; q < rc.me.shells.size(); ++q) {
-    const RShell& e = rc.me.shells[q];
-    const std::string card = "*ELEMENT_SHELL element " + std::to_string(e.id);
-    if (q > 0 && rc.me.shells[q - 1].id == e.id) {
-      rc.err(1200, e.ref, card, "EID", "element " + std::to_string(e.id) + " also defined at " + at(rc.me.shells[q - 1].ref));
+  for (std::size_t q = 0; q < cards.size(); ++q) {
+    const Card& e = cards[q];
+    const std::string card = std::string(keyword) + " element " + std::to_string(e.id);
+    if (q > 0 && cards[q - 1].id == e.id) {
+      rc.err(1200, e.ref, card, "EID", "element " + std::to_string(e.id) + " also defined at " + at(cards[q - 1].ref));
       continue;
     }
-    std::array<int, 4> n{};
+    std::array<int, N> n;
+    n.fill(-1);
     bool ok = true;
-    for (int j = 0; j < 4; ++j) {
-      n[std::size_t(j)] = rc.node_index(e.n[std::size_t(j)]);
-      if (n[std::size_t(j)] < 0) {
+    for (std::size_t j = 0; j < N; ++j) {
+      if (N == 3 && j == 2 && e.n[2] == 0) break;  // a beam without orientation node
+      n[j] = rc.node_index(e.n[j]);
+      if (n[j] < 0) {
         const std::string f = "N" + std::to_string(j + 1);
-        rc.err(1202, e.node_refs[std::size_t(j)], card, f.c_str(), "node " + std::to_string(e.n[std::size_t(j)]) + " is not defined by *NODE");
+        rc.err(1202, e.node_refs[j], card, f.c_str(), "node " + std::to_string(e.n[j]) + " is not defined by *NODE");
         ok = false;
       }
     }
-    if (ok && (n[0] == n[1] || n[0] == n[2] || n[1] == n[2] || n[0] == n[3] || n[1] == n[3])) {
-      Ref r = e.node_refs[0];
-      r.c2 = e.node_refs[3].c2;
-      rc.err(1222, r, card, "N1-N4", "a shell is a quadrilateral or a triangle with N3 = N4");
-      ok = false;
-    }
+    ok = ok && valid(e, n, card);
     auto pit = rc.part_index.find(e.pid);
     if (pit == rc.part_index.end()) {
       rc.err(1308, e.pid_ref, card, "PID", "part " + std::to_string(e.pid) + " is not defined by *PART" + rc.refused_note('p', e.pid));
       ok = false;
     }
-    const int k = rc.m.num_shells();
+    const int k = int(a.nodes.size());
     if (!ok) n.fill(-1);
-    rc.m.shell_nodes.push_back(n);
-    rc.m.shell_material.push_back(ok ? -2 - pit->second : -1);
-    rc.m.shell_thickness.push_back(e.t);
-    rc.m.shell_line.push_back(e.line);
-    rc.m.shell_file.push_back(rc.file_index(e.file));
+    a.nodes.push_back(n);
+    a.material.push_back(ok ? -2 - pit->second : -1);
+    a.thickness.push_back(e.t);
+    a.line.push_back(e.line);
+    a.file.push_back(rc.file_index(e.file));
     ids.push_back(e.id);
     identity = identity && e.id == k + 1;
-    if (ok) rc.part_shells[std::size_t(pit->second)].push_back(k);
+    if (ok) part_list[std::size_t(pit->second)].push_back(k);
   }
-  rc.m.shell_user_id.clear();
-  if (!identity) rc.m.shell_user_id = ids;
-  release(rc.me.shells);
-  rc.m.shell_rotary_scale = rc.ctl.rotascl;
+  a.user_id.clear();
+  if (!identity) a.user_id = ids;
+  release(cards);
 }
 
-// *ELEMENT_BEAM cards -> Model::beam_* in increasing id order (material: -2 - part index
-// until resolve_beam_materials).
+// *ELEMENT_SHELL cards -> Model::shell_* (a quadrilateral, or a triangle with N3 = N4).
+void resolve_shells(ResolveContext& rc) {
+  Model& m = rc.m;
+  resolve_element_cards(rc, rc.me.shells, "*ELEMENT_SHELL",
+                        ElementArrays<4>{m.shell_nodes, m.shell_material, m.shell_thickness, m.shell_line, m.shell_file, m.shell_user_id},
+                        rc.part_shells, [&](const RShell& e, const std::array<int, 4>& n, const std::string& card) {
+                          if (!(n[0] == n[1] || n[0] == n[2] || n[1] == n[2] || n[0] == n[3] || n[1] == n[3])) return true;
+                          Ref r = e.node_refs[0];
+                          r.c2 = e.node_refs[3].c2;
+                          rc.err(1222, r, card, "N1-N4", "a shell is a quadrilateral or a triangle with N3 = N4");
+                          return false;
+                        });
+  m.shell_rotary_scale = rc.ctl.rotascl;
+}
+
+// *ELEMENT_BEAM cards -> Model::beam_* (N1 and N2 different).
 void resolve_beams(ResolveContext& rc) {
-  rc.part_beams.assign(rc.ps.parts.size(), {});
-  std::stable_sort(rc.me.beams.begin(), rc.me.beams.end(), [](const RBeam& a, const RBeam& b) { return a.id < b.id; });
-  std::vector<int> ids;
-  bool identity = true;
-  for (std::size_t q = 0; q < rc.me.beams.size(); ++q) {
-    const RBeam& e = rc.me.beams[q];
-    const std::string card = "*ELEMENT_BEAM element " + std::to_string(e.id);
-    if (q > 0 && rc.me.beams[q - 1].id == e.id) {
-      rc.err(1200, e.ref, card, "EID", "element " + std::to_string(e.id) + " also defined at " + at(rc.me.beams[q - 1].ref));
-      continue;
-    }
-    std::array<int, 3> n{-1, -1, -1};
-    bool ok = true;
-    for (int j = 0; j < 3; ++j) {
-      if (j == 2 && e.n[2] == 0) break;  // no orientation node
-      n[std::size_t(j)] = rc.node_index(e.n[std::size_t(j)]);
-      if (n[std::size_t(j)] < 0) {
-        const std::string f = "N" + std::to_string(j + 1);
-        rc.err(1202, e.node_refs[std::size_t(j)], card, f.c_str(), "node " + std::to_string(e.n[std::size_t(j)]) + " is not defined by *NODE");
-        ok = false;
-      }
-    }
-    if (ok && n[0] == n[1]) {
-      Ref r = e.node_refs[0];
-      r.c2 = e.node_refs[1].c2;
-      rc.err(1250, r, card, "N1-N2", "N1 = N2");
-      ok = false;
-    }
-    auto pit = rc.part_index.find(e.pid);
-    if (pit == rc.part_index.end()) {
-      rc.err(1308, e.pid_ref, card, "PID", "part " + std::to_string(e.pid) + " is not defined by *PART" + rc.refused_note('p', e.pid));
-      ok = false;
-    }
-    const int k = rc.m.num_beams();
-    if (!ok) n.fill(-1);
-    rc.m.beam_nodes.push_back(n);
-    rc.m.beam_material.push_back(ok ? -2 - pit->second : -1);
-    rc.m.beam_thickness.push_back(e.t);
-    rc.m.beam_line.push_back(e.line);
-    rc.m.beam_file.push_back(rc.file_index(e.file));
-    ids.push_back(e.id);
-    identity = identity && e.id == k + 1;
-    if (ok) rc.part_beams[std::size_t(pit->second)].push_back(k);
-  }
-  rc.m.beam_user_id.clear();
-  if (!identity) rc.m.beam_user_id = ids;
-  release(rc.me.beams);
+  Model& m = rc.m;
+  resolve_element_cards(rc, rc.me.beams, "*ELEMENT_BEAM",
+                        ElementArrays<3>{m.beam_nodes, m.beam_material, m.beam_thickness, m.beam_line, m.beam_file, m.beam_user_id},
+                        rc.part_beams, [&](const RBeam& e, const std::array<int, 3>& n, const std::string& card) {
+                          if (n[0] != n[1]) return true;
+                          Ref r = e.node_refs[0];
+                          r.c2 = e.node_refs[1].c2;
+                          rc.err(1250, r, card, "N1-N2", "N1 = N2");
+                          return false;
+                        });
 }
 
 }  // namespace impact3d::kw

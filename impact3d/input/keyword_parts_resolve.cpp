@@ -151,6 +151,42 @@ void resolve_materials(ResolveContext& rc) {
     if (rc.m.hex_material[e] < 0) rc.m.hex_nodes[e].fill(-1);
 }
 
+// A shell or beam part whose MID names no supported material: error 1103 naming the refused
+// keyword that defines it and the materials the kind (shells, beams) takes, or 1310.
+static void refuse_part_material(ResolveContext& rc, const RPart& p, const std::string& card, const char* kind,
+                                 const std::string& supported) {
+  auto u = rc.refused.mids.find(p.mid);
+  if (u != rc.refused.mids.end())
+    rc.err(1103, p.mid_ref, card, "MID", "material " + std::to_string(p.mid) + " is " + u->second + "; supported for " + kind + ": " + supported);
+  else rc.err(1310, p.mid_ref, card, "MID", "material " + std::to_string(p.mid) + " is not defined by a *MAT keyword");
+}
+
+// A shell or beam part's material, numbered next, with the part's title and line.
+static MaterialData part_material_data(const ResolveContext& rc, const RPart& p, const RMat& r) {
+  MaterialData md = r.md;
+  md.number = int(rc.m.materials.size()) + 1;
+  md.title = p.title;
+  md.line = p.line;
+  return md;
+}
+
+// Error 1103: the part's material type has no form of this kind (shell, beam).
+static void refuse_material_form(ResolveContext& rc, const RPart& p, const std::string& card, const MaterialData& md,
+                                 const char* form, const std::string& supported) {
+  rc.err(1103, p.mid_ref, card, "MID", "material " + std::to_string(p.mid) + " (type " + std::to_string(md.type) + ") has no " + form +
+                                           " form; supported for " + form + "s: " + supported);
+}
+
+// Elements of refused parts (material < 0): material -1 and no nodes (the checks skip them).
+template <std::size_t N>
+void undefine_refused(std::vector<int>& material, std::vector<std::array<int, N>>& nodes) {
+  for (std::size_t e = 0; e < material.size(); ++e)
+    if (material[e] < 0) {
+      material[e] = -1;
+      nodes[e].fill(-1);
+    }
+}
+
 // Beam parts: *SECTION_BEAM and material -> MaterialData (beam = true, its beam_section),
 // the beams' material indices.
 void resolve_beam_materials(ResolveContext& rc) {
@@ -169,20 +205,14 @@ void resolve_beam_materials(ResolveContext& rc) {
       continue;
     }
     if (mit == rc.mt.mats.end()) {
-      auto u = rc.refused.mids.find(p.mid);
-      if (u != rc.refused.mids.end()) rc.err(1103, p.mid_ref, card, "MID", "material " + std::to_string(p.mid) + " is " + u->second + "; supported for beams: " + beam_material_keywords());
-      else rc.err(1310, p.mid_ref, card, "MID", "material " + std::to_string(p.mid) + " is not defined by a *MAT keyword");
+      refuse_part_material(rc, p, card, "beams", beam_material_keywords());
       continue;
     }
     if (p.eosid != 0) rc.err(1102, p.eos_ref, card, "EOSID", "equations of state of beams");
     const RMat& r = mit->second;
-    MaterialData md = r.md;
-    md.number = int(rc.m.materials.size()) + 1;
-    md.title = p.title;
-    md.line = p.line;
+    MaterialData md = part_material_data(rc, p, r);
     if (!has_beam_kernel(md.type)) {
-      rc.err(1103, p.mid_ref, card, "MID", "material " + std::to_string(p.mid) + " (type " + std::to_string(md.type) +
-                                            ") has no beam form; supported for beams: " + beam_material_keywords());
+      refuse_material_form(rc, p, card, md, "beam", beam_material_keywords());
       continue;
     }
     resolve_rigid_constraints(rc, md, r, p.mid);
@@ -205,12 +235,7 @@ void resolve_beam_materials(ResolveContext& rc) {
       }
     }
   }
-  // beams of refused parts: undefined (the checks skip them)
-  for (std::size_t e = 0; e < rc.m.beam_material.size(); ++e)
-    if (rc.m.beam_material[e] < 0) {
-      rc.m.beam_material[e] = -1;
-      rc.m.beam_nodes[e].fill(-1);
-    }
+  undefine_refused(rc.m.beam_material, rc.m.beam_nodes);
 }
 
 // Shell parts: *SECTION_SHELL and material -> MaterialData (shell = true), the shells'
@@ -230,20 +255,14 @@ void resolve_shell_materials(ResolveContext& rc) {
       continue;
     }
     if (mit == rc.mt.mats.end()) {
-      auto u = rc.refused.mids.find(p.mid);
-      if (u != rc.refused.mids.end()) rc.err(1103, p.mid_ref, card, "MID", "material " + std::to_string(p.mid) + " is " + u->second + "; supported for shells: " + shell_material_keywords());
-      else rc.err(1310, p.mid_ref, card, "MID", "material " + std::to_string(p.mid) + " is not defined by a *MAT keyword");
+      refuse_part_material(rc, p, card, "shells", shell_material_keywords());
       continue;
     }
     if (p.eosid != 0) rc.err(1102, p.eos_ref, card, "EOSID", "equations of state");
     const RMat& r = mit->second;
-    MaterialData md = r.md;
-    md.number = int(rc.m.materials.size()) + 1;
-    md.title = p.title;
-    md.line = p.line;
+    MaterialData md = part_material_data(rc, p, r);
     if (!has_shell_kernel(md.type)) {
-      rc.err(1103, p.mid_ref, card, "MID", "material " + std::to_string(p.mid) + " (type " + std::to_string(md.type) +
-                                            ") has no shell form; supported for shells: " + shell_material_keywords());
+      refuse_material_form(rc, p, card, md, "shell", shell_material_keywords());
       continue;
     }
     if (const char* feature = nullptr; const MaterialParam* q = refused_shell_param(md, &feature)) {
@@ -296,12 +315,7 @@ void resolve_shell_materials(ResolveContext& rc) {
       }
     }
   }
-  // shells of refused parts: undefined (the checks skip them)
-  for (std::size_t e = 0; e < rc.m.shell_material.size(); ++e)
-    if (rc.m.shell_material[e] < 0) {
-      rc.m.shell_material[e] = -1;
-      rc.m.shell_nodes[e].fill(-1);
-    }
+  undefine_refused(rc.m.shell_material, rc.m.shell_nodes);
 }
 
 // *MAT_RIGID CMO = -1: CON1 names a local system, CON2 six digits (x y z translations, x y z

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
 
 namespace impact3d::kw {
 
@@ -60,6 +61,34 @@ void refuse_set_option(ResolveContext& rc, const RSetTerm& t, const std::string&
   else rc.err(1006, t.ref, card, "OPTION", valid);
 }
 
+// The _ADD / _GENERAL terms of a set, in order, on mark (per node or element: 1 in the set):
+// ALL marks (or, D in front, clears) every one; each id of another term goes to
+// member(term, id, ref, value); an option not among `options` is refused (naming `valid`).
+template <class Member>
+void apply_set_terms(ResolveContext& rc, const RIdList& s, const std::string& card, std::vector<char>& mark,
+                     std::initializer_list<const char*> options, const char* valid, Member member) {
+  for (const RSetTerm& t : s.terms) {
+    const char value = t.remove ? 0 : 1;
+    if (t.option == "ALL") {
+      std::fill(mark.begin(), mark.end(), value);
+      continue;
+    }
+    if (std::none_of(options.begin(), options.end(), [&](const char* o) { return t.option == o; })) {
+      refuse_set_option(rc, t, card, valid);
+      continue;
+    }
+    for (std::size_t j = 0; j < t.ids.size(); ++j) member(t, t.ids[j], t.refs[j], value);
+  }
+}
+
+// The indices of the marked entries, in increasing order.
+static std::vector<int> marked(const std::vector<char>& mark) {
+  std::vector<int> out;
+  for (std::size_t k = 0; k < mark.size(); ++k)
+    if (mark[k]) out.push_back(int(k));
+  return out;
+}
+
 // Node set members as 0-based node indices (undefined nodes reported).  A list keeps its
 // order; a set with _ADD or _GENERAL terms is sorted, each node once.
 std::vector<int> set_nodes(ResolveContext& rc, const RIdList& s, const std::string& card) {
@@ -76,44 +105,31 @@ std::vector<int> set_nodes(ResolveContext& rc, const RIdList& s, const std::stri
   if (s.terms.empty() || !enter_set(rc, s, s.ref, card)) return out;
   std::vector<char> mark(std::size_t(rc.m.num_nodes()), 0);
   for (int v : out) mark[std::size_t(v)] = 1;
-  for (const RSetTerm& t : s.terms) {
-    const char value = t.remove ? 0 : 1;
-    const auto set_all = [&](const std::vector<int>& nodes) {
-      for (int v : nodes) mark[std::size_t(v)] = value;
-    };
-    if (t.option == "ALL") {
-      std::fill(mark.begin(), mark.end(), value);
-      continue;
-    }
-    if (t.option != "NODE" && t.option != "PART" && t.option != "BOX" && t.option != "SET_SOLID" && t.option != "SET") {
-      refuse_set_option(rc, t, card, "node set options: ALL, NODE, PART, BOX, SET_SOLID (D in front removes: DNODE, DPART, DBOX, ...)");
-      continue;
-    }
-    for (std::size_t j = 0; j < t.ids.size(); ++j) {
-      const int id = t.ids[j];
-      const Ref& r = t.refs[j];
-      if (t.option == "NODE") {
-        const int idx = rc.node_index(id);
-        if (idx < 0) rc.err(1202, r, card, "E", "node " + std::to_string(id) + " is not defined by *NODE");
-        else mark[std::size_t(idx)] = value;
-      } else if (t.option == "PART") {
-        set_all(nodes_of_parts(rc, parts_of(rc, false, id, r, card, "E")));
-      } else if (t.option == "BOX") {
-        if (const Box* bx = find_box(rc, id, r, card, "E"))
-          for (std::size_t k = 0; k < mark.size(); ++k)
-            if (bx->contains(rc.m.x[k], rc.m.y[k], rc.m.z[k])) mark[k] = value;
-      } else if (t.option == "SET_SOLID") {
-        if (const RIdList* ss = find_solid_set(rc, id, r, card, "E")) set_all(nodes_of_elements(rc, set_solids(rc, *ss, "*SET_SOLID " + std::to_string(id))));
-      } else {  // SET: a member of a *SET_NODE_ADD
-        if (const RIdList* ns = find_node_set(rc, id, r, card, "NSID")) set_all(set_nodes(rc, *ns, "*SET_NODE " + std::to_string(id)));
-      }
-    }
-  }
+  apply_set_terms(rc, s, card, mark, {"NODE", "PART", "BOX", "SET_SOLID", "SET"},
+                  "node set options: ALL, NODE, PART, BOX, SET_SOLID (D in front removes: DNODE, DPART, DBOX, ...)",
+                  [&](const RSetTerm& t, int id, const Ref& r, char value) {
+                    const auto set_all = [&](const std::vector<int>& nodes) {
+                      for (int v : nodes) mark[std::size_t(v)] = value;
+                    };
+                    if (t.option == "NODE") {
+                      const int idx = rc.node_index(id);
+                      if (idx < 0) rc.err(1202, r, card, "E", "node " + std::to_string(id) + " is not defined by *NODE");
+                      else mark[std::size_t(idx)] = value;
+                    } else if (t.option == "PART") {
+                      set_all(nodes_of_parts(rc, parts_of(rc, false, id, r, card, "E")));
+                    } else if (t.option == "BOX") {
+                      if (const Box* bx = find_box(rc, id, r, card, "E"))
+                        for (std::size_t k = 0; k < mark.size(); ++k)
+                          if (bx->contains(rc.m.x[k], rc.m.y[k], rc.m.z[k])) mark[k] = value;
+                    } else if (t.option == "SET_SOLID") {
+                      if (const RIdList* ss = find_solid_set(rc, id, r, card, "E"))
+                        set_all(nodes_of_elements(rc, set_solids(rc, *ss, "*SET_SOLID " + std::to_string(id))));
+                    } else {  // SET: a member of a *SET_NODE_ADD
+                      if (const RIdList* ns = find_node_set(rc, id, r, card, "NSID")) set_all(set_nodes(rc, *ns, "*SET_NODE " + std::to_string(id)));
+                    }
+                  });
   rc.resolving.erase(&s);
-  out.clear();
-  for (std::size_t k = 0; k < mark.size(); ++k)
-    if (mark[k]) out.push_back(int(k));
-  return out;
+  return marked(mark);
 }
 
 // Solid set members as element indices, sorted, each once (undefined elements reported).
@@ -127,51 +143,36 @@ std::vector<int> set_solids(ResolveContext& rc, const RIdList& s, const std::str
     else in.push_back(idx);
   }
   for (int e : in) mark[std::size_t(e)] = 1;
-  if (!s.terms.empty() && enter_set(rc, s, s.ref, card)) {
-    for (const RSetTerm& t : s.terms) {
-      const char value = t.remove ? 0 : 1;
-      if (t.option == "ALL") {
-        std::fill(mark.begin(), mark.end(), value);
-        continue;
-      }
-      if (t.option != "ELEM" && t.option != "PART" && t.option != "BOX" && t.option != "SET") {
-        refuse_set_option(rc, t, card, "solid set options: ALL, ELEM, PART, BOX (D in front removes: DELEM, DPART, DBOX)");
-        continue;
-      }
-      for (std::size_t j = 0; j < t.ids.size(); ++j) {
-        const int id = t.ids[j];
-        const Ref& r = t.refs[j];
-        if (t.option == "ELEM") {
-          const int idx = rc.elem_index(id);
-          if (idx < 0) rc.err(1201, r, card, "E", "element " + std::to_string(id) + " is not defined by *ELEMENT_SOLID");
-          else mark[std::size_t(idx)] = value;
-        } else if (t.option == "PART") {
-          for (int p : parts_of(rc, false, id, r, card, "E"))
-            for (int e : rc.part_elems[std::size_t(p)]) mark[std::size_t(e)] = value;
-        } else if (t.option == "BOX") {  // elements whose centroid is in the box
-          if (const Box* bx = find_box(rc, id, r, card, "E"))
-            for (std::size_t e = 0; e < mark.size(); ++e) {
-              const auto& nd = rc.m.hex_nodes[e];
-              if (nd[0] < 0) continue;
-              double c[3] = {0, 0, 0};
-              for (int v : nd) {
-                c[0] += rc.m.x[std::size_t(v)] / 8;
-                c[1] += rc.m.y[std::size_t(v)] / 8;
-                c[2] += rc.m.z[std::size_t(v)] / 8;
-              }
-              if (bx->contains(c[0], c[1], c[2])) mark[e] = value;
-            }
-        } else if (const RIdList* ss = find_solid_set(rc, id, r, card, "SID")) {  // _ADD member
-          for (int e : set_solids(rc, *ss, "*SET_SOLID " + std::to_string(id))) mark[std::size_t(e)] = value;
-        }
-      }
-    }
-    rc.resolving.erase(&s);
-  }
-  std::vector<int> out;
-  for (std::size_t e = 0; e < mark.size(); ++e)
-    if (mark[e]) out.push_back(int(e));
-  return out;
+  if (s.terms.empty() || !enter_set(rc, s, s.ref, card)) return marked(mark);
+  apply_set_terms(rc, s, card, mark, {"ELEM", "PART", "BOX", "SET"},
+                  "solid set options: ALL, ELEM, PART, BOX (D in front removes: DELEM, DPART, DBOX)",
+                  [&](const RSetTerm& t, int id, const Ref& r, char value) {
+                    if (t.option == "ELEM") {
+                      const int idx = rc.elem_index(id);
+                      if (idx < 0) rc.err(1201, r, card, "E", "element " + std::to_string(id) + " is not defined by *ELEMENT_SOLID");
+                      else mark[std::size_t(idx)] = value;
+                    } else if (t.option == "PART") {
+                      for (int p : parts_of(rc, false, id, r, card, "E"))
+                        for (int e : rc.part_elems[std::size_t(p)]) mark[std::size_t(e)] = value;
+                    } else if (t.option == "BOX") {  // elements whose centroid is in the box
+                      if (const Box* bx = find_box(rc, id, r, card, "E"))
+                        for (std::size_t e = 0; e < mark.size(); ++e) {
+                          const auto& nd = rc.m.hex_nodes[e];
+                          if (nd[0] < 0) continue;
+                          double c[3] = {0, 0, 0};
+                          for (int v : nd) {
+                            c[0] += rc.m.x[std::size_t(v)] / 8;
+                            c[1] += rc.m.y[std::size_t(v)] / 8;
+                            c[2] += rc.m.z[std::size_t(v)] / 8;
+                          }
+                          if (bx->contains(c[0], c[1], c[2])) mark[e] = value;
+                        }
+                    } else if (const RIdList* ss = find_solid_set(rc, id, r, card, "SID")) {  // _ADD member
+                      for (int e : set_solids(rc, *ss, "*SET_SOLID " + std::to_string(id))) mark[std::size_t(e)] = value;
+                    }
+                  });
+  rc.resolving.erase(&s);
+  return marked(mark);
 }
 
 // The nodes of elements (refused elements skipped), sorted, each once.
@@ -182,10 +183,7 @@ std::vector<int> nodes_of_elements(ResolveContext& rc, const std::vector<int>& e
     if (n[0] < 0) continue;
     for (int v : n) mark[std::size_t(v)] = 1;
   }
-  std::vector<int> out;
-  for (std::size_t k = 0; k < mark.size(); ++k)
-    if (mark[k]) out.push_back(int(k));
-  return out;
+  return marked(mark);
 }
 
 // *DEFINE_COORDINATE_* and *DEFINE_VECTOR into rc.coords, once the nodes are known.  A system
@@ -319,10 +317,7 @@ std::vector<int> nodes_of_parts(ResolveContext& rc, const std::vector<int>& part
       for (int v : n) mark[std::size_t(v)] = 1;
     }
   }
-  std::vector<int> out;
-  for (std::size_t k = 0; k < mark.size(); ++k)
-    if (mark[k]) out.push_back(int(k));
-  return out;
+  return marked(mark);
 }
 
 }  // namespace impact3d::kw

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "impact3d/material/material_types.h"
+#include "impact3d/solve/rotational_corners.h"
 
 namespace impact3d {
 
@@ -13,32 +14,13 @@ namespace {
 constexpr int kMinBeamsForThreads = 4096;
 
 void zero_beam_ends(State& s, int b) {
-  BeamState& bm = s.beams;
-  for (int j = 0; j < 2; ++j) {
-    const std::size_t c = bm.corner_base + 2 * std::size_t(b) + std::size_t(j);
-    s.cfx[c] = s.cfy[c] = s.cfz[c] = 0;
-    const std::size_t q = bm.moment_base + 2 * std::size_t(b) + std::size_t(j);
-    s.shells.cmx[q] = s.shells.cmy[q] = s.shells.cmz[q] = 0;
-  }
+  const BeamState& bm = s.beams;
+  zero_rotational_corners(s, bm.corner_base + 2 * std::size_t(b), bm.moment_base + 2 * std::size_t(b), 2);
 }
 
 void gather_beam(const State& s, int b, double dt, BeamKernelIO& io) {
   const BeamState& bm = s.beams;
-  const ShellState& sh = s.shells;
-  const auto& c = bm.conn[std::size_t(b)];
-  for (int j = 0; j < 2; ++j) {
-    const std::size_t n = std::size_t(c[std::size_t(j)]);
-    io.x[j][0] = s.x[n];
-    io.x[j][1] = s.y[n];
-    io.x[j][2] = s.z[n];
-    io.v[j][0] = s.vx[n];
-    io.v[j][1] = s.vy[n];
-    io.v[j][2] = s.vz[n];
-    const int r = sh.node_rot.empty() ? -1 : sh.node_rot[n];
-    io.w[j][0] = r >= 0 ? sh.wx[std::size_t(r)] : 0.0;
-    io.w[j][1] = r >= 0 ? sh.wy[std::size_t(r)] : 0.0;
-    io.w[j][2] = r >= 0 ? sh.wz[std::size_t(r)] : 0.0;
-  }
+  gather_rotational_corners(s, bm.conn[std::size_t(b)], io.x, io.v, io.w);
   for (int a = 0; a < 3; ++a) io.e2[a] = bm.e2[3 * std::size_t(b) + std::size_t(a)];
   io.dt = dt;
 }
@@ -75,27 +57,12 @@ void process_beam(State& s, const BeamGroup& g, int b, double dt) {
   bm.de_ie[B] = io.de_ie;
   for (int a = 0; a < 3; ++a) bm.e2[3 * B + std::size_t(a)] = io.e2[a];
   for (int k = 0; k < 6; ++k) bm.res[6 * B + std::size_t(k)] = io.res[k];
-  for (int j = 0; j < 2; ++j) {
-    const std::size_t c = bm.corner_base + 2 * B + std::size_t(j);
-    s.cfx[c] = io.f[j][0];
-    s.cfy[c] = io.f[j][1];
-    s.cfz[c] = io.f[j][2];
-    const std::size_t q = bm.moment_base + 2 * B + std::size_t(j);
-    s.shells.cmx[q] = io.m[j][0];
-    s.shells.cmy[q] = io.m[j][1];
-    s.shells.cmz[q] = io.m[j][2];
-  }
+  store_rotational_corners(s, bm.corner_base + 2 * B, bm.moment_base + 2 * B, io.f, io.m);
 }
 
 bool beam_forces_finite(const State& s, int b) {
   const BeamState& bm = s.beams;
-  double c = 0;
-  for (int j = 0; j < 2; ++j) {
-    const std::size_t q = bm.corner_base + 2 * std::size_t(b) + std::size_t(j);
-    const std::size_t r = bm.moment_base + 2 * std::size_t(b) + std::size_t(j);
-    c += s.cfx[q] + s.cfy[q] + s.cfz[q] + s.shells.cmx[r] + s.shells.cmy[r] + s.shells.cmz[r];
-  }
-  return std::isfinite(c);
+  return rotational_corners_finite(s, bm.corner_base + 2 * std::size_t(b), bm.moment_base + 2 * std::size_t(b), 2);
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "impact3d/element/shell_fi.h"
+#include "impact3d/solve/rotational_corners.h"
 
 namespace impact3d {
 
@@ -12,31 +13,12 @@ namespace {
 constexpr int kMinShellsForThreads = 4096;
 
 void zero_shell_corners(State& s, int k) {
-  ShellState& sh = s.shells;
-  for (int j = 0; j < 4; ++j) {
-    const std::size_t c = sh.corner_base + 4 * std::size_t(k) + std::size_t(j);
-    s.cfx[c] = s.cfy[c] = s.cfz[c] = 0;
-    const std::size_t q = 4 * std::size_t(k) + std::size_t(j);
-    sh.cmx[q] = sh.cmy[q] = sh.cmz[q] = 0;
-  }
+  zero_rotational_corners(s, s.shells.corner_base + 4 * std::size_t(k), 4 * std::size_t(k), 4);
 }
 
 void gather_shell(const State& s, int k, double dt, ShellKernelIO& io) {
   const ShellState& sh = s.shells;
-  const auto& c = sh.conn[std::size_t(k)];
-  for (int j = 0; j < 4; ++j) {
-    const std::size_t n = std::size_t(c[std::size_t(j)]);
-    io.x[j][0] = s.x[n];
-    io.x[j][1] = s.y[n];
-    io.x[j][2] = s.z[n];
-    io.v[j][0] = s.vx[n];
-    io.v[j][1] = s.vy[n];
-    io.v[j][2] = s.vz[n];
-    const int r = sh.node_rot[n];
-    io.w[j][0] = r >= 0 ? sh.wx[std::size_t(r)] : 0.0;
-    io.w[j][1] = r >= 0 ? sh.wy[std::size_t(r)] : 0.0;
-    io.w[j][2] = r >= 0 ? sh.wz[std::size_t(r)] : 0.0;
-  }
+  gather_rotational_corners(s, sh.conn[std::size_t(k)], io.x, io.v, io.w);
   io.h = sh.thick[std::size_t(k)];
   io.dt = dt;
 }
@@ -73,16 +55,7 @@ void process_shell(State& s, const ShellGroup& g, int k, double dt) {
   sh.dt_e[std::size_t(k)] = io.dt_e;
   sh.de_ie[std::size_t(k)] = io.de_ie;
   sh.de_hg[std::size_t(k)] = io.de_hg;
-  for (int j = 0; j < 4; ++j) {
-    const std::size_t c = sh.corner_base + 4 * std::size_t(k) + std::size_t(j);
-    s.cfx[c] = io.f[j][0];
-    s.cfy[c] = io.f[j][1];
-    s.cfz[c] = io.f[j][2];
-    const std::size_t q = 4 * std::size_t(k) + std::size_t(j);
-    sh.cmx[q] = io.m[j][0];
-    sh.cmy[q] = io.m[j][1];
-    sh.cmz[q] = io.m[j][2];
-  }
+  store_rotational_corners(s, sh.corner_base + 4 * std::size_t(k), 4 * std::size_t(k), io.f, io.m);
   // failure (type 3 FS, type 24 FAIL): when every point through the thickness has reached it, the shell is
   // deleted; this pass's forces still act, from the next pass on it carries none.  Type 24 TDEL:
   // likewise when the shell's step falls below it.
@@ -269,14 +242,7 @@ void process_shells_of_group(State& s, const ShellGroup& g, const int* ord, int 
 }
 
 bool shell_forces_finite(const State& s, int k) {
-  const ShellState& sh = s.shells;
-  double c = 0;
-  for (int j = 0; j < 4; ++j) {
-    const std::size_t q = sh.corner_base + 4 * std::size_t(k) + std::size_t(j);
-    const std::size_t r = 4 * std::size_t(k) + std::size_t(j);
-    c += s.cfx[q] + s.cfy[q] + s.cfz[q] + sh.cmx[r] + sh.cmy[r] + sh.cmz[r];
-  }
-  return std::isfinite(c);
+  return rotational_corners_finite(s, s.shells.corner_base + 4 * std::size_t(k), 4 * std::size_t(k), 4);
 }
 
 }  // namespace
