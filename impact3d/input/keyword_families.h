@@ -180,6 +180,19 @@ struct RLoad {            // one load or prescribed-motion card, resolved after 
 // `params` (after the plain *PARAMETER values are in it), errors into `diag`.
 void read_parameter_expressions(const std::vector<Block>& blocks, ParamTable& params, Diagnostics& diag);
 
+// *CASE (keyword_cases.cpp): the *CASE_BEGIN_n sections open while the deck is scanned; marker
+// takes a *CASE_BEGIN_n / *CASE_END_n keyword (name upper case; true if it is one, errors 1006).
+struct CaseSections {
+  std::vector<int> open;
+  bool marker(const std::string& name, const DeckFile& f, const DeckLine& l, Diagnostics& diag);
+};
+// CID=n on a keyword line (after the keyword name): the keyword belongs to child case n (0: none).
+int keyword_case_option(std::string_view t);
+// Reads the master *CASE blocks and leaves out the blocks of the child cases case `want` (0: the
+// base case) does not hold (warning 2008); its job name into m.case_job.
+void select_case(std::vector<Block>& blocks, const CaseSections& sections, int want, const std::string& main_file, KeywordContext& ctx,
+                 Model& m);
+
 // *BOUNDARY_PRESCRIBED_MOTION DOF 4, -4 (along VID) and 8, -8 (about VID): the direction is a
 // *DEFINE_VECTOR; DOF 5-8 and -8 are rotations (rigid bodies)
 inline bool motion_along_vector(int dof) { return dof == 4 || dof == -4 || dof == 8 || dof == -8; }

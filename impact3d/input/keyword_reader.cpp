@@ -1,35 +1,28 @@
-// LS-DYNA keyword-deck reader.  Two passes: the deck and its *INCLUDE files are cut into
-// keyword blocks (keyword line + data lines, '$' comments dropped), every supported block is
-// parsed into raw records by fields (fixed columns, long/I10 widths, or comma free format), and
-// the records are then resolved into the Model: ids renumbered 1..N, parts -> materials, sets
-// -> nodes and segments, contacts -> sliding interfaces.  Every problem is reported, with file,
-// line, keyword/card, field and columns, through the message catalog.  README.md ("Keyword
-// decks") lists the keywords and fields.
+// LS-DYNA keyword-deck reader, the orchestrator.  Three passes: the deck and its *INCLUDE files
+// are cut into keyword blocks (keyword line + data lines, '$' comments dropped; the *CASE to
+// read selected, keyword_cases.cpp), every block goes to the family that reads it by its
+// tables into records (keyword_<family>.cpp; *PARAMETER first), and the families' resolve
+// steps turn the records into the Model in their order (keyword_include_transform.cpp, then
+// keyword_<family>_resolve.cpp, sharing a ResolveContext): ids renumbered 1..N, parts ->
+// materials, sets -> nodes and segments, contacts -> sliding interfaces.  Every problem is
+// reported, with file, line, keyword/card, field and columns, through the message catalog.
+// docs/keyword-decks.md lists the keywords and fields.
 
 #include "impact3d/input/keyword_reader.h"
 #include "impact3d/input/keyword_resolve.h"
-#include "impact3d/init/beam_init.h"
-#include "impact3d/init/shell_init.h"
 #include "impact3d/material/eos.h"
 #include "impact3d/material/material_types.h"
 
 #include "impact3d/input/deck_reader.h"
 #include "impact3d/input/coordinate_systems.h"
-#include "impact3d/input/element_shapes.h"
-#include "impact3d/contact/tied_nodes.h"
 
 #include <algorithm>
-#include <array>
-#include <cmath>
-#include <cstdint>
 #include <cstdlib>
 #include <deque>
 #include <filesystem>
-#include <limits>
 #include <map>
 #include <memory>
 #include <set>
-#include <sstream>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -49,13 +42,14 @@ class KeywordReader {
     std::vector<std::string> stack;
     check_first_line();
     scan(main_, 0, stack);
-    select_case();
+    select_case(blocks_, cases_, opt_.case_id, main_.name(), ctx_, m_);  // keyword_cases.cpp
     collect_parameters();
     parse_blocks();
-    apply_include_transforms();
+    ResolveContext rc{m_, diag_, main_.name(), me_, ps_, mt_, sb_, ld_, ctl_, contacts_, refused_};
+    apply_include_transforms(rc, transforms_);  // keyword_include_transform.cpp
     report_unsupported();
     for (Block& b : blocks_) release(b.data);  // read: the lines are not needed by block any more
-    resolve();
+    resolve(rc);
   }
 
  private:
@@ -137,8 +131,8 @@ class KeywordReader {
         b.name = name;
         b.kw = {&f, &l};
         if (name == "END") return;  // the rest of this file is not read
-        if (case_marker(name, f, l)) continue;  // *CASE_BEGIN_n / *CASE_END_n: no block
-        b.cases = open_cases_;
+        if (cases_.marker(name, f, l, diag_)) continue;  // *CASE_BEGIN_n / *CASE_END_n: no block
+        b.cases = cases_.open;
         if (const int cid = keyword_case_option(t); cid > 0 && std::find(b.cases.begin(), b.cases.end(), cid) == b.cases.end())
           b.cases.push_back(cid);
         if (name == "KEYWORD") keyword_options(t, f, l);
@@ -186,15 +180,6 @@ class KeywordReader {
         // the thread count when the command line has no ncpu= (negative: LS-DYNA's consistent
         // mode; IMPACT-3D's results never depend on the thread count)
         m_.deck_threads = int(std::llabs(n));
-      } else if (tok.rfind("MEMORY=", 0) == 0 || tok.rfind("MEMORY2=", 0) == 0) {
-        // LS-DYNA's memory options: read and listed as ignored
-        Location loc;
-        loc.file = f.name();
-        loc.line = l.number;
-        loc.card = "*KEYWORD";
-        loc.found = tok;
-        loc.show_found = true;
-        diag_.add(2008, loc, "memory is allocated as the model needs it");
       } else {
         Location loc;
         loc.file = f.name();
@@ -202,7 +187,10 @@ class KeywordReader {
         loc.card = "*KEYWORD";
         loc.found = tok;
         loc.show_found = true;
-        diag_.add(1312, loc, "supported: LONG=Y, LONG=S, I10=Y, I10=N, MEMORY=, MEMORY2=, NCPU=n (1 <= |n| <= 1024) and a memory size");
+        if (tok.rfind("MEMORY=", 0) == 0 || tok.rfind("MEMORY2=", 0) == 0)  // LS-DYNA's memory options: read and listed as ignored
+          diag_.add(2008, loc, "memory is allocated as the model needs it");
+        else
+          diag_.add(1312, loc, "supported: LONG=Y, LONG=S, I10=Y, I10=N, MEMORY=, MEMORY2=, NCPU=n (1 <= |n| <= 1024) and a memory size");
       }
     }
   }
@@ -223,19 +211,9 @@ class KeywordReader {
     }
   }
 
-  // *INCLUDE_TRANSFORM: FILENAME; IDNOFF IDEOFF IDPOFF IDMOFF IDSOFF IDFOFF IDDOFF; IDROFF;
-  // FCTMAS FCTTIM FCTLEN FCTTEM INCOUT1; TRANID.  The file is read as an *INCLUDE, and its
-  // records are renumbered and moved once the deck is parsed (apply_include_transforms).
-  struct IncludeTransform {
-    long long idnoff = 0, ideoff = 0, idpoff = 0, idmoff = 0, idsoff = 0, idfoff = 0, iddoff = 0, idroff = 0;
-    double fctlen = 1;
-    int tranid = 0;
-    Ref tranid_ref;
-    AffineMap map;  // FCTLEN scaling, then *DEFINE_TRANSFORMATION TRANID
-    bool moves = false;
-  };
-  std::deque<IncludeTransform> transforms_;
-  std::map<const DeckFile*, const IncludeTransform*> file_transform_;
+  // *INCLUDE_TRANSFORM: the file is read as an *INCLUDE, and its records are renumbered and
+  // moved once the deck is parsed (apply_include_transforms, keyword_include_transform.cpp).
+  IncludeTransforms transforms_;
   const IncludeTransform* pending_transform_ = nullptr;  // for the include being opened
 
   void include_transform(const Block& b, int depth, std::vector<std::string>& stack) {
@@ -283,8 +261,8 @@ class KeywordReader {
       x.tranid = int(c.i(0, "TRANID"));
       x.tranid_ref = c.ref(0);
     }
-    transforms_.push_back(x);
-    pending_transform_ = &transforms_.back();
+    transforms_.list.push_back(x);
+    pending_transform_ = &transforms_.list.back();
     include(std::string(trim_sv(name)), first, depth, stack);
     pending_transform_ = nullptr;
   }
@@ -357,8 +335,8 @@ class KeywordReader {
       return;
     }
     // the records of a transformed include (and of the files it includes) are renumbered and moved
-    if (pending_transform_) file_transform_[df.get()] = pending_transform_;
-    else if (auto t = file_transform_.find(where.file); t != file_transform_.end()) file_transform_[df.get()] = t->second;
+    if (pending_transform_) transforms_.of_file[df.get()] = pending_transform_;
+    else if (auto t = transforms_.of_file.find(where.file); t != transforms_.of_file.end()) transforms_.of_file[df.get()] = t->second;
     pending_transform_ = nullptr;
     includes_.push_back(std::move(df));
     stack.push_back(canon);
@@ -366,176 +344,8 @@ class KeywordReader {
     stack.pop_back();
   }
 
-  // ---------------------------------------------------------------- *CASE
-  // *CASE_BEGIN_n ... *CASE_END_n sections (nested or not) and the CID=n option of a keyword
-  // line put keywords in child case n; a master *CASE (CASEID JOBID; a line of command-line
-  // options; lines of child case ids SCID) runs the main model and its children.  Without a
-  // master *CASE each child n is case n.  The base case (case_id 0) leaves every child out.
-  std::vector<int> open_cases_;
-  struct RCase {
-    int id = 0;
-    std::string job;
-    std::vector<int> children;
-    std::vector<KLine> commands;  // command-line options for the case: warned when it runs
-    Ref ref;
-  };
-  std::vector<RCase> master_cases_;
-
-  bool case_marker(const std::string& name, const DeckFile& f, const DeckLine& l) {
-    for (const bool begin : {true, false}) {
-      const std::string p = begin ? "CASE_BEGIN_" : "CASE_END_";
-      if (name.rfind(p, 0) != 0) continue;
-      long long n = 0;
-      Location loc;
-      loc.file = f.name();
-      loc.line = l.number;
-      loc.card = "*" + name;
-      if (parse_fortran_int(name.substr(p.size()), n) != FieldStatus::ok || n < 1) {
-        diag_.add(1006, loc, "*" + p + "n takes a positive case number n");
-        return true;
-      }
-      auto it = std::find(open_cases_.begin(), open_cases_.end(), int(n));
-      if (begin) {
-        if (it == open_cases_.end()) open_cases_.push_back(int(n));
-      } else if (it == open_cases_.end()) {
-        diag_.add(1006, loc, "no *CASE_BEGIN_" + std::to_string(n) + " before it");
-      } else {
-        open_cases_.erase(it);
-      }
-      return true;
-    }
-    return false;
-  }
-
-  // CID=n on a keyword line (after the keyword name): the keyword belongs to child case n.
-  static int keyword_case_option(std::string_view t) {
-    const std::string u = upper(t);
-    const std::size_t sp = u.find_first_of(" \t");
-    if (sp == std::string::npos) return 0;
-    const std::size_t p = u.find("CID=", sp);
-    if (p == std::string::npos || (p > 0 && u[p - 1] != ' ' && u[p - 1] != '\t')) return 0;
-    long long n = 0;
-    const std::size_t e = u.find_first_of(" \t", p);
-    if (parse_fortran_int(u.substr(p + 4, e == std::string::npos ? std::string::npos : e - p - 4), n) != FieldStatus::ok) return 0;
-    return int(n);
-  }
-
-  void read_master_cases() {
-    for (const Block& b : blocks_) {
-      if (b.name != "CASE") continue;
-      RCase c;
-      c.ref.file = b.kw.file;
-      c.ref.line = b.kw.line;
-      std::size_t k = 0;
-      while (k < b.data.size() && is_blank(b.data[k].line->text)) ++k;
-      if (k >= b.data.size()) { ctx_.missing_card(b, "card 1 (CASEID JOBID)"); continue; }
-      // card 1: CASEID and JOBID, written in columns or separated by blanks
-      std::istringstream first(std::string(b.data[k].line->text));
-      std::string id_text;
-      first >> id_text >> c.job;
-      long long id = 0;
-      if (parse_fortran_int(id_text, id) != FieldStatus::ok || id < 1) {
-        Location loc;
-        loc.file = b.data[k].file->name();
-        loc.line = b.data[k].line->number;
-        loc.card = b.keyword;
-        loc.field = "CASEID";
-        loc.found = id_text;
-        loc.show_found = true;
-        diag_.add(1001, loc, "a positive case id");
-        continue;
-      }
-      c.id = int(id);
-      // then command-line lines (any text) and lines of child case ids (integers only)
-      for (++k; k < b.data.size(); ++k) {
-        std::istringstream line(std::string(b.data[k].line->text));
-        std::vector<int> ids;
-        std::string tok;
-        bool all_ints = true;
-        while (line >> tok) {
-          long long v = 0;
-          if (parse_fortran_int(tok, v) == FieldStatus::ok) ids.push_back(int(v));
-          else all_ints = false;
-        }
-        if (all_ints) {
-          for (int v : ids)
-            if (v != 0) c.children.push_back(v);
-        } else {
-          c.commands.push_back(b.data[k]);
-        }
-      }
-      for (const RCase& o : master_cases_)
-        if (o.id == c.id) diag_.add(1200, loc_of(c.ref, b.keyword, nullptr, false), "case " + std::to_string(c.id) + " also defined at " + at(o.ref));
-      master_cases_.push_back(std::move(c));
-    }
-  }
-
-  // Leaves out the keyword blocks of the child cases the selected case does not hold.
-  void select_case() {
-    read_master_cases();
-    std::set<int> children, all_children;
-    for (const Block& b : blocks_) all_children.insert(b.cases.begin(), b.cases.end());
-    if (!open_cases_.empty()) {
-      Location loc;
-      loc.file = main_.name();
-      diag_.add(1316, loc, "*CASE_BEGIN_" + std::to_string(open_cases_.front()) + " has no *CASE_END_" + std::to_string(open_cases_.front()));
-    }
-    const int want = opt_.case_id;
-    if (want != 0) {
-      std::string job;
-      bool found = false;
-      for (const RCase& c : master_cases_)
-        if (c.id == want) {
-          found = true;
-          job = c.job;
-          children.insert(c.children.begin(), c.children.end());
-          for (const KLine& l : c.commands) {
-            Location loc;
-            loc.file = l.file->name();
-            loc.line = l.line->number;
-            loc.card = "*CASE " + std::to_string(c.id);
-            loc.found = rtrim(l.line->text);
-            loc.show_found = true;
-            diag_.add(2006, loc, "the command-line options of a case: give them on impact3d's command line");
-          }
-        }
-      if (!found && master_cases_.empty() && all_children.count(want)) {  // child n is case n
-        found = true;
-        children.insert(want);
-      }
-      if (!found) {
-        std::string list;
-        for (const RCase& c : master_cases_) list += (list.empty() ? "" : ", ") + std::to_string(c.id);
-        if (master_cases_.empty())
-          for (int c : all_children) list += (list.empty() ? "" : ", ") + std::to_string(c);
-        Location loc;
-        loc.file = main_.name();
-        diag_.add(1310, loc, "case=" + std::to_string(want) + ": the deck defines no such case" + (list.empty() ? std::string(" (it has no *CASE)") : " (its cases: " + list + ")"));
-      }
-      m_.case_job = job.empty() ? "case" + std::to_string(want) : job;
-    }
-    std::size_t dropped = 0;
-    std::vector<Block> kept;
-    kept.reserve(blocks_.size());
-    for (Block& b : blocks_) {
-      bool active = b.cases.empty();
-      for (int c : b.cases) active = active || children.count(c) > 0;
-      if (active) kept.push_back(std::move(b));
-      else ++dropped;
-    }
-    blocks_.swap(kept);
-    if (dropped) {
-      std::string list;
-      for (const RCase& c : master_cases_) list += (list.empty() ? "" : ", ") + std::to_string(c.id);
-      if (master_cases_.empty())
-        for (int c : all_children) list += (list.empty() ? "" : ", ") + std::to_string(c);
-      Location loc;
-      loc.file = main_.name();
-      diag_.add(2008, loc, std::to_string(dropped) + " keyword block(s) of *CASE sections left out: " +
-                               (want == 0 ? "this is the base case (impact3d case=ID runs case ID; cases " + list + ")"
-                                          : "they belong to other cases than " + std::to_string(want)));
-    }
-  }
+  // *CASE_BEGIN_n ... *CASE_END_n sections open while scanning (keyword_cases.cpp)
+  CaseSections cases_;
 
   // ---------------------------------------------------------------- pass 2: parse blocks
   // Field widths for a card of n fields of width w (standard), 20 in long format.
@@ -685,151 +495,11 @@ class KeywordReader {
   }
 
 
-  // The records read from a file of an *INCLUDE_TRANSFORM get the id offsets (an id 0, which
-  // means "none" or "all", stays 0; the ids that keyed definitions define got theirs while
-  // parsing, xid) and their coordinates the map: nodes, the points of walls and coordinate
-  // systems, boxes (translation and scaling only).
-  const IncludeTransform* transform_of(const DeckFile* f) const {
-    auto it = file_transform_.find(f);
-    return it == file_transform_.end() ? nullptr : it->second;
-  }
   // An id a keyword of this block defines, with its *INCLUDE_TRANSFORM offset (applied while
   // parsing, so that a file included twice with offsets defines no duplicates).
   int xid(int id, const Block& b, long long IncludeTransform::*field) const {
-    const IncludeTransform* t = id != 0 ? transform_of(b.kw.file) : nullptr;
+    const IncludeTransform* t = id != 0 ? transforms_.of(b.kw.file) : nullptr;
     return t ? int(id + t->*field) : id;
-  }
-  static void offset(int& id, long long off) {
-    if (id != 0) id = int(id + off);
-  }
-  void offset_set_members(RIdList& s, const IncludeTransform& t, long long member_off) {
-    for (int& id : s.ids) offset(id, member_off);
-    for (auto& r : s.ranges) r[0] += member_off, r[1] += member_off;
-    for (RSetTerm& term : s.terms) {
-      const long long off = term.option == "NODE" ? t.idnoff : term.option == "ELEM" ? t.ideoff : term.option == "PART" ? t.idpoff
-                            : term.option == "BOX" ? t.iddoff : term.option == "SET" || term.option.rfind("SET_", 0) == 0 ? t.idsoff : 0;
-      for (int& id : term.ids) offset(id, off);
-    }
-  }
-
-  void apply_include_transforms() {
-    if (transforms_.empty()) return;
-    for (IncludeTransform& t : transforms_) {
-      t.map = AffineMap::scaling({t.fctlen, t.fctlen, t.fctlen});
-      if (t.tranid != 0) {
-        auto it = sb_.transformations.find(t.tranid);
-        if (it == sb_.transformations.end()) err(1310, t.tranid_ref, "*INCLUDE_TRANSFORM", "TRANID", "*DEFINE_TRANSFORMATION " + std::to_string(t.tranid) + " is not defined");
-        else t.map = t.map.then(it->second.map);
-      }
-      const AffineMap id;
-      t.moves = t.map.a != id.a || t.map.t != id.t;
-    }
-    // FCTLEN converts units: only coordinates are converted here, so data with other
-    // length-dimensioned units (materials, curves) in such a file is not supported
-    for (auto& [mid, mat] : mt_.mats)
-      if (const IncludeTransform* t = transform_of(mat.ref.file); t && t->fctlen != 1)
-        err(1102, mat.ref, "*MAT " + std::to_string(mid), "MID", "a material in an *INCLUDE_TRANSFORM file with FCTLEN other than 1 (its units would have to be converted)");
-    for (std::size_t k = 0; k < ld_.curves.size(); ++k)
-      if (const IncludeTransform* t = transform_of(ld_.curve_refs[k].file); t && t->fctlen != 1)
-        err(1102, ld_.curve_refs[k], "*DEFINE_CURVE " + std::to_string(ld_.curves[k].number), "LCID", "a curve in an *INCLUDE_TRANSFORM file with FCTLEN other than 1 (its units would have to be converted)");
-    for (RNode& n : me_.nodes)
-      if (const IncludeTransform* t = transform_of(n.card.file)) {
-        offset(n.id, t->idnoff);
-        const Vec3 p = t->map.apply({n.x, n.y, n.z});
-        n.x = p[0], n.y = p[1], n.z = p[2];
-      }
-    for (RElem& e : me_.elems)
-      if (const IncludeTransform* t = transform_of(e.card.file)) {
-        offset(e.id, t->ideoff);
-        offset(e.pid, t->idpoff);
-        for (int& v : e.n) offset(v, t->idnoff);
-      }
-    for (RPart& p : ps_.parts)
-      if (const IncludeTransform* t = transform_of(p.ref.file)) {
-        offset(p.pid, t->idpoff);
-        offset(p.mid, t->idmoff);
-        offset(p.secid, t->idroff);
-        offset(p.hgid, t->idroff);
-        offset(p.eosid, t->idroff);
-      }
-    const std::pair<std::map<int, RIdList>*, long long IncludeTransform::*> sets[] = {
-        {&sb_.node_sets, &IncludeTransform::idnoff}, {&sb_.part_sets, &IncludeTransform::idpoff},
-        {&sb_.solid_sets, &IncludeTransform::ideoff}, {&sb_.shell_sets, &IncludeTransform::ideoff}};
-    for (auto [map, member] : sets) {
-      for (auto& [sid, s] : *map)
-        if (const IncludeTransform* t = transform_of(s.ref.file)) offset_set_members(s, *t, t->*member);
-    }
-    for (auto& [sid, s] : sb_.seg_sets)
-      if (const IncludeTransform* t = transform_of(s.ref.file)) {
-        for (auto& seg : s.segs)
-          for (int& v : seg) offset(v, t->idnoff);
-        for (RSetTerm& term : s.terms)
-          for (int& id : term.ids) offset(id, term.option == "PART" ? t->idpoff : t->idsoff);
-      }
-    for (RContact& c : contacts_)
-      if (const IncludeTransform* t = transform_of(c.ref.file))
-        for (RSide* side : {&c.a, &c.b}) {
-          offset(side->id, side->type == 3 ? t->idpoff : t->idsoff);
-          offset(side->boxid, t->iddoff);
-        }
-    for (RWall& w : ld_.walls)
-      if (const IncludeTransform* t = transform_of(w.nsid_ref.file)) {
-        offset(w.nsid, t->idsoff);
-        offset(w.nsidex, t->idsoff);
-        offset(w.boxid, t->iddoff);
-        w.w.tail = t->map.apply(w.w.tail);
-        w.w.head = t->map.apply(w.w.head);
-      }
-    for (RVelocity& v : ld_.velocities)
-      if (const IncludeTransform* t = transform_of(v.ref.file)) {
-        offset(v.id, v.kind == RVelocity::node ? t->idnoff : v.kind == RVelocity::part ? t->idpoff : t->idsoff);
-        offset(v.nsidex, t->idsoff);
-        offset(v.boxid, t->iddoff);
-        offset(v.icid, t->iddoff);
-        if (t->moves && (v.v != Vec3{} || v.omega != 0 || v.ve != Vec3{}))
-          err(1102, v.ref, v.keyword, nullptr, "initial velocities in an *INCLUDE_TRANSFORM file that is scaled, turned or moved (the velocities would have to turn with it)");
-      }
-    for (RSpc& s : ld_.spcs)
-      if (const IncludeTransform* t = transform_of(s.ref.file)) {
-        offset(s.id, s.set ? t->idsoff : t->idnoff);
-        offset(s.cid, t->iddoff);
-      }
-    for (RWeld& w : ld_.welds)
-      if (const IncludeTransform* t = transform_of(w.ref.file)) {
-        if (w.generalized) offset(w.nsid, t->idsoff);
-        else offset(w.n1, t->idnoff), offset(w.n2, t->idnoff);
-        offset(w.cid, t->iddoff);
-      }
-    for (RHistory& h : ctl_.histories)
-      for (std::size_t j = 0; j < h.ids.size(); ++j)
-        if (const IncludeTransform* t = transform_of(h.refs[j].file)) offset(h.ids[j], h.sets ? t->idsoff : h.solid ? t->ideoff : t->idnoff);
-    for (auto& [bid, r] : sb_.boxes)
-      if (const IncludeTransform* t = transform_of(r.ref.file)) {
-        const auto& a = t->map.a;
-        const bool diagonal = a[0][1] == 0 && a[0][2] == 0 && a[1][0] == 0 && a[1][2] == 0 && a[2][0] == 0 && a[2][1] == 0;
-        if (!diagonal) {
-          err(1102, r.ref, "*DEFINE_BOX " + std::to_string(bid), "BOXID", "a box in a turned *INCLUDE_TRANSFORM file (it would no longer be aligned with the axes)");
-          continue;
-        }
-        const Vec3 lo = t->map.apply(r.box.lo), hi = t->map.apply(r.box.hi);
-        for (int q = 0; q < 3; ++q) {
-          r.box.lo[std::size_t(q)] = std::min(lo[std::size_t(q)], hi[std::size_t(q)]);
-          r.box.hi[std::size_t(q)] = std::max(lo[std::size_t(q)], hi[std::size_t(q)]);
-        }
-      }
-    for (RCoordSystem& r : sb_.systems)
-      if (const IncludeTransform* t = transform_of(r.ref.file)) {
-        offset(r.cid, t->iddoff);
-        for (int& v : r.n) offset(v, t->idnoff);
-        if (t->moves && (r.kind == RCoordSystem::points || r.kind == RCoordSystem::vector) && r.n[0] == 0 && r.cid == 0) {
-          for (int q = 0; q < 3; ++q) {  // the points move with the mesh
-            const Vec3 p = t->map.apply({r.v[std::size_t(3 * q)], r.v[std::size_t(3 * q + 1)], r.v[std::size_t(3 * q + 2)]});
-            for (int j = 0; j < 3; ++j) r.v[std::size_t(3 * q + j)] = p[std::size_t(j)];
-          }
-        } else if (t->moves && r.kind == RCoordSystem::vectors) {
-          err(1102, r.ref, r.keyword, nullptr, "*DEFINE_COORDINATE_VECTOR in a turned or moved *INCLUDE_TRANSFORM file");
-        }
-      }
   }
 
   // Keywords whose absence changes what the rest of the deck means: --lenient-keywords cannot
@@ -875,8 +545,7 @@ class KeywordReader {
   // ---------------------------------------------------------------- pass 3: resolve
   // The families' builders turn the records into the Model (keyword_*_resolve.cpp), in this
   // order: each step may use what the earlier ones resolved (ResolveContext).
-  void resolve() {
-    ResolveContext rc{m_, diag_, main_.name(), me_, ps_, mt_, sb_, ld_, ctl_, contacts_, refused_};
+  void resolve(ResolveContext& rc) {
     resolve_nodes(rc);
     resolve_coordinate_systems(rc);
     resolve_parts_and_elements(rc);
@@ -896,10 +565,6 @@ class KeywordReader {
     resolve_contacts(rc);
     resolve_loads(rc);
     resolve_timed_spc(rc);
-  }
-
-  void err(int id, const Ref& r, const std::string& card, const char* field, std::string detail = {}) {
-    diag_.add(id, loc_of(r, card, field), std::move(detail));
   }
 };
 

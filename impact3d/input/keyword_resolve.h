@@ -7,6 +7,7 @@
 // KeywordReader::resolve (keyword_reader.cpp) runs them in their order.
 
 #include <array>
+#include <deque>
 #include <map>
 #include <set>
 #include <string>
@@ -23,6 +24,27 @@ namespace impact3d::kw {
 struct RefusedKeywords {
   std::map<int, std::string> mids, secids, eosids;
   std::map<std::pair<char, int>, std::string> defs;
+};
+
+// *INCLUDE_TRANSFORM: FILENAME; IDNOFF IDEOFF IDPOFF IDMOFF IDSOFF IDFOFF IDDOFF; IDROFF;
+// FCTMAS FCTTIM FCTLEN FCTTEM INCOUT1; TRANID (read by keyword_reader.cpp).
+struct IncludeTransform {
+  long long idnoff = 0, ideoff = 0, idpoff = 0, idmoff = 0, idsoff = 0, idfoff = 0, iddoff = 0, idroff = 0;
+  double fctlen = 1;
+  int tranid = 0;
+  Ref tranid_ref;
+  AffineMap map;  // FCTLEN scaling, then *DEFINE_TRANSFORMATION TRANID
+  bool moves = false;
+};
+// The deck's transforms, and the files read under each (a file included by a transformed
+// file inherits its transform).
+struct IncludeTransforms {
+  std::deque<IncludeTransform> list;
+  std::map<const DeckFile*, const IncludeTransform*> of_file;
+  const IncludeTransform* of(const DeckFile* f) const {
+    auto it = of_file.find(f);
+    return it == of_file.end() ? nullptr : it->second;
+  }
 };
 
 struct ResolveContext {
@@ -99,6 +121,10 @@ struct ResolveContext {
 };
 
 // ---------------------------------------------------------------- the steps, in their order
+// (keyword_include_transform.cpp) before the others: the records of transformed files get
+// their id offsets and coordinates
+void apply_include_transforms(ResolveContext& rc, IncludeTransforms& inc);
+
 // (keyword_nodes_elements_resolve.cpp) nodes, then solids (and the parts' index), shells, beams:
 // renumbered 1..N in increasing id order; an element's material is -2 - its part index until
 // the part steps
