@@ -91,6 +91,13 @@ KField I(long long v, int w = 10) { return {std::to_string(v), w}; }
 KField R(double v, int w = 10) { return {shortest(v), w}; }
 KField B(int w = 10) { return {"", w}; }
 
+// 1-3 when d is the x, y or z axis, else 0.
+int axis_number(const std::array<double, 3>& d) {
+  for (int a = 0; a < 3; ++a)
+    if (d[std::size_t(a)] == 1 && d[std::size_t((a + 1) % 3)] == 0 && d[std::size_t((a + 2) % 3)] == 0) return a + 1;
+  return 0;
+}
+
 class KeywordWriter {
  public:
   KeywordWriter(std::ostream& os, const Model& m, std::vector<std::string>* notes) : os_(os), m_(m), notes_(notes) {}
@@ -526,11 +533,7 @@ class KeywordWriter {
   int lcid(int curve) const { return m_.load_curves[std::size_t(curve)].number; }
 
   // the axis 1-3 of a unit direction along x, y or z, or 0
-  static int axis_of(const std::array<double, 3>& d) {
-    for (int a = 0; a < 3; ++a)
-      if (d[std::size_t(a)] == 1 && d[std::size_t((a + 1) % 3)] == 0 && d[std::size_t((a + 2) % 3)] == 0) return a + 1;
-    return 0;
-  }
+  static int axis_of(const std::array<double, 3>& d) { return axis_number(d); }
   // A *DEFINE_VECTOR head (tail at the origin) that the reader's normalisation turns back into
   // the unit d bit for bit: d times the first whole number 1-32 that does (else d, noted).
   std::array<double, 3> vector_head(const std::array<double, 3>& d) {
@@ -598,13 +601,11 @@ class KeywordWriter {
     }
     int next_vector = 1;
     for (const PrescribedMotion& pm : m_.prescribed_motions) {
-      if (pm.rotation && pm.node >= 0) {
-        note("a prescribed rotational velocity (node " + std::to_string(nid(pm.node)) + ") is not written: keyword decks refuse DOF 5-7 of nodes today");
-        continue;
-      }
       const bool rigid = pm.node < 0;
       int dof = axis_of(pm.dir), vid = 0;
-      if (dof == 0 || pm.hold_normal) {  // DOF 4 / 8 (-4 / -8) along or about a *DEFINE_VECTOR
+      if (pm.orbit) {
+        dof += 8;  // 9-11: turning about an axis along x y z
+      } else if (dof == 0 || pm.hold_normal) {  // DOF 4 / 8 (-4 / -8) along or about a *DEFINE_VECTOR
         vid = next_vector++;
         const std::array<double, 3> h = vector_head(pm.dir);
         os_ << "*DEFINE_VECTOR\n$#     vid        xt        yt        zt        xh        yh        zh\n"
@@ -618,6 +619,11 @@ class KeywordWriter {
           << kcard({I(rigid ? pm.rigid_material + 1 : nid(pm.node)), I(dof), I(int(pm.kind)),
                     I(lcid(pm.curve)), R(pm.scale), I(vid), pm.death < 1e28 ? R(pm.death) : R(0), R(pm.birth)})
           << "\n";
+      if (pm.orbit) {  // card 2: the axis's point in the plane normal to it (y z, z x, x y)
+        const int a = axis_of(pm.dir) - 1;
+        os_ << "$#  offset1   offset2       lrb     node1     node2\n"
+            << kcard({R(pm.center[std::size_t((a + 1) % 3)]), R(pm.center[std::size_t((a + 2) % 3)]), I(0), I(0), I(0)}) << "\n";
+      }
     }
   }
 
@@ -853,8 +859,14 @@ class FixedWriter {
   // What the fixed format can hold of the loads: prescribed motions of nodes, one base
   // acceleration per axis on every material; the rest is noted and left out.
   void note_unwritable() {
-    for (const PrescribedMotion& pm : m_.prescribed_motions) node_motions_ += pm.node >= 0 ? 1 : 0;
-    if (node_motions_ < int(m_.prescribed_motions.size())) note("prescribed motions of rigid bodies have no fixed-format card: not written");
+    int rigid = 0;
+    for (const PrescribedMotion& pm : m_.prescribed_motions) {
+      rigid += pm.node < 0 ? 1 : 0;
+      if (fixed_motion(pm)) ++node_motions_;
+      else if (pm.node >= 0)
+        note("node " + std::to_string(pm.node + 1) + ": a node turning about an axis (LS-DYNA DOF 9-11), or a rotation given by its acceleration or angle, about a vector or with the other rotations held (DOF 8, -8), has no fixed-format card: not written");
+    }
+    if (rigid > 0) note("prescribed motions of rigid bodies have no fixed-format card: not written");
     if (!m_.rigid_body_loads.empty()) note("rigid-body loads have no fixed-format card: not written");
     if (!m_.spot_welds.empty())
       note("spot welds (*CONSTRAINED_SPOTWELD, *CONSTRAINED_GENERALIZED_WELD_SPOT) have no fixed-format card: not written");
@@ -1095,10 +1107,17 @@ class FixedWriter {
     }
   }
 
+  // Whether the fixed format's velocity/acceleration card holds this motion: a node's, along an
+  // axis or a vector, or a rotational velocity about an axis (DOF 5-7, type 0).
+  static bool fixed_motion(const PrescribedMotion& pm) {
+    if (pm.node < 0 || pm.orbit) return false;
+    return !pm.rotation || (pm.kind == MotionKind::velocity && !pm.hold_normal && axis_number(pm.dir) > 0);
+  }
+
   void motions() {
     if (node_motions_ > 0) os_ << "*----- VELOCITY/ACCELERATION BOUNDARY CONDITIONS: node, curve, DOF, scale, vector, type, birth\n";
     for (const PrescribedMotion& pm : m_.prescribed_motions) {
-      if (pm.node < 0) continue;
+      if (!fixed_motion(pm)) continue;
       if (pm.hold_normal)
         note("node " + std::to_string(pm.node + 1) + ": a motion along a vector with its normal plane held (LS-DYNA DOF -4) has no fixed-format field: written as DOF 4, the normal plane free");
       int d = 4;
@@ -1581,6 +1600,8 @@ void load_differences(const Model& a, const Model& b, Differences& d) {
     d.N(w + "kind", int(x.kind), int(y.kind));
     d.N(w + "rotation", x.rotation ? 1 : 0, y.rotation ? 1 : 0);
     d.N(w + "normal held", x.hold_normal ? 1 : 0, y.hold_normal ? 1 : 0);
+    d.N(w + "turning about an axis", x.orbit ? 1 : 0, y.orbit ? 1 : 0);
+    for (std::size_t a = 0; a < 3; ++a) d.D(w + "axis point " + "xyz"[a], x.center[a], y.center[a]);
     curve_differs(w, x.curve, y.curve);
     d.D(w + "scale", x.scale, y.scale);
     d.D(w + "birth", x.birth, y.birth);

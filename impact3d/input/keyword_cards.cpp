@@ -387,12 +387,12 @@ KeywordSpec load_node(const char* name, const char* id, const char* id_meaning) 
           ""};
 }
 
-// *BOUNDARY_PRESCRIBED_MOTION_NODE / _SET / _RIGID: ID DOF VAD LCID SF VID DEATH BIRTH.  DOF
-// 9-11 (and VAD 4) take LS-DYNA's card 2 (OFFSET1 OFFSET2 LRB NODE1 NODE2), skipped.  Rigid
-// bodies take DOF 1-3, 4 / -4 (along VID), 5-7 (rotations about x y z) and 8 / -8 (about VID).
+// *BOUNDARY_PRESCRIBED_MOTION_NODE / _SET / _RIGID: ID DOF VAD LCID SF VID DEATH BIRTH; with
+// |DOF| 9-11 or VAD 4 LS-DYNA's card 2 (OFFSET1 OFFSET2 LRB NODE1 NODE2) follows.  Nodes take DOF
+// 1-3, 4 / -4 (along VID), 5-7 and 8 / -8 (rotations of shell and beam nodes) and 9-11 (turning
+// about an axis through OFFSET1, OFFSET2); rigid bodies DOF 1-3, 4 / -4, 5-7 (rotations about x
+// y z) and 8 / -8 (about VID).
 KeywordSpec prescribed_motion(const char* name, const char* id, bool rigid) {
-  static const char* const about_axis =
-      "motion of nodes rotating about an axis through (OFFSET1, OFFSET2) (DOF 9-11; its card 2 is skipped)";
   std::vector<KeywordCheck> dof;
   if (rigid) {
     dof.push_back(inside(9, 11, 1102, "DOF 9-11 (nodes rotating about an axis; LS-DYNA: not for rigid bodies; its card 2 is skipped)"));
@@ -401,27 +401,34 @@ KeywordSpec prescribed_motion(const char* name, const char* id, bool rigid) {
     dof.push_back(inside(-4, -4, 0, nullptr));  // along VID, the normal plane held
     dof.push_back(outside(1, 8, 1006, "1-3 x y z, 4 / -4 along VID, 5-7 rotations about x y z, 8 / -8 about VID"));
   } else {
+    dof.push_back(inside(-11, -9, 1102, "DOF -11 to -9 (turning about an axis with radial motion; its card 2 is skipped)"));
+    dof.push_back(inside(-8, -8, 0, nullptr));  // about VID, the other rotations held
     dof.push_back(inside(-4, -4, 0, nullptr));  // along VID, the normal plane held
-    dof.push_back(inside(4, 4, 0, nullptr));    // along the vector VID
-    dof.push_back(inside(5, 8, 1102, "rotations (solid nodes have no rotations)"));
-    dof.push_back(inside(9, 11, 1102, about_axis));
-    dof.push_back(inside(-11, -9, 1102, about_axis));
-    dof.push_back(outside(-4, 11, 1006, "1 x, 2 y, 3 z"));
-    dof.push_back(outside(1, 3, 1102, "1 x, 2 y, 3 z"));
+    dof.push_back(outside(1, 11, 1006, "1-3 x y z, 4 / -4 along VID, 5-7 rotations about x y z, 8 / -8 about VID, 9-11 turning about an axis along x y z"));
   }
-  return {{name}, KeywordFamily::loads_bcs, false,
-          {{"", 8, 10, per_field, {
-              {id, 0, I, 0, false, {}, rigid ? "part (a *MAT_RIGID part)" : "node or node set"},
-              {"DOF", 1, I, 0, false, std::move(dof), rigid ? "1-3 x y z, 4 along VID (-4: normal plane held), 5-7 rotation about x y z, 8 about VID (-8: other rotations held)" : "1 x, 2 y, 3 z, 4 along VID (-4: normal plane held)"},
-              {"VAD", 2, I, 0, false, {inside(3, 3, 1102, "velocity as a function of displacement"), inside(4, 4, 1102, "relative displacement"),
-                                       outside(0, 2, 1006, "0 velocity, 1 acceleration, 2 displacement")}, "0 velocity, 1 acceleration, 2 displacement"},
-              load_curve(3),
-              scale_factor(4),
-              {"VID", 5, I, 0, false, {}, "*DEFINE_VECTOR of DOF 4, 8 (required with them: error 1003)"},
-              {"DEATH", 6, E, 0, false, {}, "death time (0: none; before BIRTH: error 1003)"},
-              {"BIRTH", 7, E, 0, false, {}, "birth time"},
-          }, "each motion ([ID card] with _ID; card 2 after it with |DOF| 9-11 or VAD 4, missing: error 1316)"}},
-          ""};
+  const char* dof_text = rigid ? "1-3 x y z, 4 along VID (-4: normal plane held), 5-7 rotation about x y z, 8 about VID (-8: other rotations held)"
+                               : "1-3 x y z, 4 along VID (-4: normal plane held), 5-7 rotation about x y z and 8 about VID (-8: other rotations held) of a shell or beam node, 9-11 turning about an axis along x y z through OFFSET1, OFFSET2";
+  std::vector<KeywordCardLayout> cards = {
+      {"", 8, 10, per_field, {
+          {id, 0, I, 0, false, {}, rigid ? "part (a *MAT_RIGID part)" : "node or node set"},
+          {"DOF", 1, I, 0, false, std::move(dof), dof_text},
+          {"VAD", 2, I, 0, false, {inside(3, 3, 1102, "velocity as a function of displacement"), inside(4, 4, 1102, "relative displacement"),
+                                   outside(0, 2, 1006, "0 velocity, 1 acceleration, 2 displacement")}, "0 velocity, 1 acceleration, 2 displacement"},
+          load_curve(3),
+          scale_factor(4),
+          {"VID", 5, I, 0, false, {}, "*DEFINE_VECTOR of DOF 4, 8 (required with them: error 1003)"},
+          {"DEATH", 6, E, 0, false, {}, "death time (0: none; before BIRTH: error 1003)"},
+          {"BIRTH", 7, E, 0, false, {}, "birth time"},
+      }, "each motion ([ID card] with _ID; card 2 after it with |DOF| 9-11 or VAD 4, missing: error 1316)"}};
+  if (!rigid)
+    cards.push_back({"card 2", 5, 10, per_field, {
+        {"OFFSET1", 0, E, 0, false, {}, "DOF 9, 10, 11: the axis's y, z, x coordinate"},
+        {"OFFSET2", 1, E, 0, false, {}, "DOF 9, 10, 11: the axis's z, x, y coordinate"},
+        {"LRB", 2, I, 0, false, {outside(0, 0, 1102, "0 (a load curve of the motion's radius is not implemented)")}, "not 0: error 1102"},
+        {"NODE1", 3, I, 0, false, {outside(0, 0, 1102, "0 (motions relative to nodes are not implemented)")}, "not 0: error 1102"},
+        {"NODE2", 4, I, 0, false, {outside(0, 0, 1102, "0 (motions relative to nodes are not implemented)")}, "not 0: error 1102"},
+    }, "DOF 9-11 (with a refused DOF or VAD 4 skipped)"});
+  return {{name}, KeywordFamily::loads_bcs, false, std::move(cards), ""};
 }
 
 // *LOAD_NODE, *LOAD_SEGMENT, *LOAD_BODY: the loads.

@@ -174,6 +174,7 @@ struct RLoad {            // one load or prescribed-motion card, resolved after 
   std::array<double, 3> dir{};    // *LOAD_BODY_*
   int cid = 0, vid = 0;           // local system of DOF (loads), vector of DOF 4 (motions)
   Ref cid_ref, vid_ref;
+  double offset1 = 0, offset2 = 0; // motions DOF 9-11: card 2's point of the axis
 };
 
 // *PARAMETER_EXPRESSION (keyword_parameters.cpp): the blocks' parameters evaluated into
@@ -197,6 +198,11 @@ void select_case(std::vector<Block>& blocks, const CaseSections& sections, int w
 // *DEFINE_VECTOR; DOF 5-8 and -8 are rotations (rigid bodies)
 inline bool motion_along_vector(int dof) { return dof == 4 || dof == -4 || dof == 8 || dof == -8; }
 inline bool motion_is_rotation(int dof) { return (dof >= 5 && dof <= 8) || dof == -8; }
+// DOF 9-11: a node turning about an axis along x, y, z through card 2's OFFSET1, OFFSET2
+inline bool motion_is_orbit(int dof) { return dof >= 9 && dof <= 11; }
+// A *BOUNDARY_PRESCRIBED_MOTION_NODE / _SET record's kind of motion: a rotation (DOF 5-8, -8)
+// or turning about the axis through card 2's point (DOF 9-11, PrescribedMotion::center).
+void set_node_motion_kind(const RLoad& l, PrescribedMotion& pm);
 
 struct RTemperature {    // one *INITIAL_TEMPERATURE_NODE / _SET card, in deck order
   bool set = false;       // NSID (0: all nodes), else NID

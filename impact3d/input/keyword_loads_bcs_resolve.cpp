@@ -375,7 +375,8 @@ bool load_direction(ResolveContext& rc, const RLoad& l, std::array<double, 3>& d
     }
     return true;
   }
-  d = axis_direction(motion && motion_is_rotation(l.dof) ? l.dof - 4 : l.dof);  // DOF 5-7: about x y z
+  // DOF 5-7: about x y z; 9-11: turning about an axis along x y z
+  d = axis_direction(motion && motion_is_rotation(l.dof) ? l.dof - 4 : motion && motion_is_orbit(l.dof) ? l.dof - 8 : l.dof);
   return global_direction(rc, l.cid, l.cid_ref, l.keyword, "CID", d);
 }
 
@@ -453,15 +454,21 @@ static std::vector<char> rigid_body_nodes(ResolveContext& rc) {
 }
 
 // *BOUNDARY_PRESCRIBED_MOTION_NODE / _SET: the motion on each of the card's nodes (none when
-// its curve or direction was refused, pm.curve < 0); nodes of rigid bodies refused (1226).
+// its curve or direction was refused, pm.curve < 0); nodes of rigid bodies refused (1226), and
+// rotations (DOF 5-8, -8) of nodes with no rotations (1102).
 static void add_node_motions(ResolveContext& rc, const RLoad& l, PrescribedMotion pm, const std::vector<char>& rigid_node) {
-  int refused = 0, first = -1;
+  set_node_motion_kind(l, pm);
+  int refused = 0, first = -1, no_rotations = 0, first_without = -1;
   for (int n : load_nodes(rc, l, l.kind == RLoad::motion_set, l.kind == RLoad::motion_node ? "NID" : "NSID")) {
     if (rigid_node[std::size_t(n)]) {
       if (refused++ == 0) first = n;
       continue;
     }
     if (pm.curve < 0) continue;
+    if (pm.rotation && !node_has_rotations(rc, n)) {
+      if (no_rotations++ == 0) first_without = n;
+      continue;
+    }
     pm.node = n;
     rc.m.prescribed_motions.push_back(pm);
   }
@@ -469,6 +476,10 @@ static void add_node_motions(ResolveContext& rc, const RLoad& l, PrescribedMotio
     rc.err(1226, l.ref, l.keyword, l.kind == RLoad::motion_node ? "NID" : "NSID",
         std::to_string(refused) + " node(s) of rigid bodies, the first node " + std::to_string(rc.m.node_id(first)) +
             ": prescribe the body's motion with *BOUNDARY_PRESCRIBED_MOTION_RIGID");
+  if (no_rotations > 0)
+    rc.err(1102, l.ref, l.keyword, "DOF",
+           std::to_string(no_rotations) + " node(s) with no rotations (no shell or beam end uses them), the first node " +
+               std::to_string(rc.m.node_id(first_without)) + ": rotations (DOF 5-8) of solid nodes");
 }
 
 void resolve_loads(ResolveContext& rc) {

@@ -338,6 +338,11 @@ struct PrescribedMotion {      // *BOUNDARY_PRESCRIBED_MOTION_NODE / _SET / _RIG
   bool rotation = false;
   // LS-DYNA DOF -4 / -8: the components normal to dir (velocity, or angular velocity) held at 0
   bool hold_normal = false;
+  // LS-DYNA DOF 9-11 of a node: it turns about the axis dir through `center` (its distance from
+  // the axis kept; the motion along the axis free); the curve is the angular velocity (kind
+  // velocity) or the angle turned (displacement)
+  bool orbit = false;
+  std::array<double, 3> center{};
   int curve = 0;
   double scale = 1;
   double birth = 0, death = 1e28;

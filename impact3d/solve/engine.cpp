@@ -208,7 +208,7 @@ StepStatus Engine::step() {
   if (!s.ties.empty()) save_tied_rotations(s);
   update_rotational_velocities_for_nodes(s, dt_n);  // shells' and beams' rotations (none: no-op)
   if (!s.ties.empty()) tie_rotations(s, dt_n);
-  if (loads_.has_rotations) apply_prescribed_rotations(m_, s, loads_, s.time, dt_next);
+  if (loads_.has_rotations) apply_prescribed_rotations(m_, s, loads_, s.time, dt_n, dt_next);
   times_.nodes += seconds_since(t);
   s.time += dt_next;
   s.cycle += 1;

@@ -128,7 +128,7 @@ void prepare_loads(const Model& m, State& s, LoadSet& loads) {
   loads.motion_body.clear();
   for (const PrescribedMotion& pm : m.prescribed_motions)
     loads.motion_body.push_back(pm.node >= 0 ? -1 : rigid_body_of_material(s, pm.rigid_material));
-  loads.rot_old.assign(m.prescribed_motions.size(), 0.0);
+  loads.rot_old.assign(3 * m.prescribed_motions.size(), 0.0);
   loads.has_rotations = false;
   for (const PrescribedMotion& pm : m.prescribed_motions) loads.has_rotations = loads.has_rotations || pm.rotation;
   loads.has_loads = m.has_loads();
@@ -229,6 +229,34 @@ void prescribe_node(const Model& m, State& s, LoadSet& loads, std::size_t j, dou
   s.vx[k] = v[0], s.vy[k] = v[1], s.vz[k] = v[2];
 }
 
+// A node turning about an axis (LS-DYNA DOF 9-11): its velocity normal to the axis carries it
+// from x^n to x^{n+1} on the circle about the axis (the distance from the axis kept), by the
+// angle omega dt (kind velocity: omega = the curve at t^{n+1/2}) or up to the angle the curve
+// gives at t^{n+1} (kind displacement); along the axis it moves freely.  The change of its
+// velocity goes to delta (the reaction's work).
+void prescribe_node_orbit(const Model& m, State& s, LoadSet& loads, std::size_t j, double t, double dt_n,
+                          double dt_next) {
+  const PrescribedMotion& pm = m.prescribed_motions[j];
+  const auto& d = pm.dir;
+  const std::size_t k = std::size_t(pm.node);
+  const double r0[3] = {s.x[k] - pm.center[0], s.y[k] - pm.center[1], s.z[k] - pm.center[2]};
+  const double ra = dot3(r0, d);
+  const double r[3] = {r0[0] - ra * d[0], r0[1] - ra * d[1], r0[2] - ra * d[2]};  // from the axis
+  const double turn = prescribed_velocity(m, pm, t, dt_n, dt_next, 0.0, s.motion_angle[j]) * dt_next;
+  const double c = std::cos(turn), sn = std::sin(turn);
+  const double dxr[3] = {d[1] * r[2] - d[2] * r[1], d[2] * r[0] - d[0] * r[2], d[0] * r[1] - d[1] * r[0]};
+  double* v[3] = {&s.vx[k], &s.vy[k], &s.vz[k]};
+  const double v_free[3] = {*v[0], *v[1], *v[2]};
+  const double along = dot3(v_free, d);
+  loads.free_velocity[j] = along;
+  loads.active[j] = 1;
+  for (std::size_t a = 0; a < 3; ++a) {
+    *v[a] = along * d[a] + ((c - 1) * r[a] + sn * dxr[a]) / dt_next;
+    loads.delta[3 * j + a] = *v[a] - v_free[a];
+  }
+  s.motion_angle[j] += turn;
+}
+
 // A rigid body's prescribed component of its centre's velocity (DOF 1-4, -4).
 void prescribe_rigid_translation(const Model& m, State& s, LoadSet& loads, std::size_t j, RigidBody& rb, double t,
                                  double dt_n, double dt_next) {
@@ -277,7 +305,8 @@ void apply_prescribed_motions(const Model& m, State& s, LoadSet& loads, double t
     const bool node_rotation = pm.rotation && pm.node >= 0;  // (apply_prescribed_rotations)
     if (node_rotation || !motion_is_active(pm, t)) continue;
     if (pm.node >= 0) {
-      prescribe_node(m, s, loads, j, t, dt_n, dt_next);
+      if (pm.orbit) prescribe_node_orbit(m, s, loads, j, t, dt_n, dt_next);
+      else prescribe_node(m, s, loads, j, t, dt_n, dt_next);
       continue;
     }
     const int r = loads.motion_body[j];
@@ -302,11 +331,39 @@ void capture_rotations(const Model& m, const State& s, LoadSet& loads) {
     const int r = sh.node_rot[std::size_t(pm.node)];
     if (r < 0) continue;
     const std::size_t R = std::size_t(r);
-    loads.rot_old[j] = sh.wx[R] * pm.dir[0] + sh.wy[R] * pm.dir[1] + sh.wz[R] * pm.dir[2];
+    loads.rot_old[3 * j] = sh.wx[R], loads.rot_old[3 * j + 1] = sh.wy[R], loads.rot_old[3 * j + 2] = sh.wz[R];
   }
 }
 
-void apply_prescribed_rotations(const Model& m, State& s, LoadSet& loads, double t, double dt_next) {
+namespace {
+
+// Node rotation j's omega^{n+1/2}: the prescribed component along its axis, with DOF -8 the
+// normal ones held; returns the work of the reaction moment over the cycle.
+double prescribe_node_rotation(const Model& m, State& s, const LoadSet& loads, std::size_t j, std::size_t R,
+                               double t, double dt_n, double dt_next) {
+  ShellState& sh = s.shells;
+  const PrescribedMotion& pm = m.prescribed_motions[j];
+  const auto& d = pm.dir;
+  const double* w_old = &loads.rot_old[3 * j];
+  const double w_free = sh.wx[R] * d[0] + sh.wy[R] * d[1] + sh.wz[R] * d[2];
+  const double w = prescribed_velocity(m, pm, t, dt_n, dt_next, dot3(w_old, d), s.motion_angle[j]);
+  sh.wx[R] += (w - w_free) * d[0];
+  sh.wy[R] += (w - w_free) * d[1];
+  sh.wz[R] += (w - w_free) * d[2];
+  double work = sh.inertia[R] * (w - w_free) * 0.5 * (dot3(w_old, d) + w);
+  if (pm.hold_normal) {
+    double v[3] = {sh.wx[R], sh.wy[R], sh.wz[R]}, held[3];
+    hold_normal_plane(d, v, held);
+    sh.wx[R] = v[0], sh.wy[R] = v[1], sh.wz[R] = v[2];
+    for (std::size_t a = 0; a < 3; ++a) work += sh.inertia[R] * held[a] * 0.5 * (w_old[a] + v[a]);
+  }
+  s.motion_angle[j] += dt_next * w;
+  return work;
+}
+
+}  // namespace
+
+void apply_prescribed_rotations(const Model& m, State& s, LoadSet& loads, double t, double dt_n, double dt_next) {
   ShellState& sh = s.shells;
   bool changed = false;
   double work = 0;
@@ -315,14 +372,7 @@ void apply_prescribed_rotations(const Model& m, State& s, LoadSet& loads, double
     if (!pm.rotation || pm.node < 0 || sh.node_rot.empty() || !motion_is_active(pm, t)) continue;
     const int r = sh.node_rot[std::size_t(pm.node)];
     if (r < 0) continue;
-    const std::size_t R = std::size_t(r);
-    const auto& d = pm.dir;
-    const double w_free = sh.wx[R] * d[0] + sh.wy[R] * d[1] + sh.wz[R] * d[2];
-    const double w = pm.scale * curve_value(m, pm.curve, t + 0.5 * dt_next);
-    sh.wx[R] += (w - w_free) * d[0];
-    sh.wy[R] += (w - w_free) * d[1];
-    sh.wz[R] += (w - w_free) * d[2];
-    work += sh.inertia[R] * (w - w_free) * 0.5 * (loads.rot_old[j] + w);
+    work += prescribe_node_rotation(m, s, loads, j, std::size_t(r), t, dt_n, dt_next);
     changed = true;
   }
   if (!changed) return;
@@ -349,7 +399,7 @@ double power_of_motion_reactions(const Model& m, const State& s, const LoadSet& 
       const double v_new = s.vx[k] * d[0] + s.vy[k] * d[1] + s.vz[k] * d[2];
       const double v_old = s.vx_old[k] * d[0] + s.vy_old[k] * d[1] + s.vz_old[k] * d[2];
       w += s.mass[k] * (v_new - loads.free_velocity[j]) / dt_n * 0.5 * (v_old + v_new);
-      if (pm.hold_normal)
+      if (pm.hold_normal || pm.orbit)
         w += s.mass[k] / dt_n * 0.5 * (delta[0] * (s.vx_old[k] + s.vx[k]) + delta[1] * (s.vy_old[k] + s.vy[k]) + delta[2] * (s.vz_old[k] + s.vz[k]));
       continue;
     }

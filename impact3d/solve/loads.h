@@ -23,7 +23,7 @@ double value_of_curve(const LoadCurve& lc, double t);
 // The loads of a model, laid out for the cycle.  Built once at initialization.
 struct LoadSet {
   bool has_rotations = false;          // some prescribed motion is a rotation
-  std::vector<double> rot_old;         // per prescribed motion: omega^{n-1/2} along its axis
+  std::vector<double> rot_old;         // per prescribed motion: omega^{n-1/2} of its node (3)
   // nodal forces and pressures: the force of each this cycle, kept for the work book
   std::vector<double> nodal_force;     // 3 per Model::nodal_loads entry
   std::vector<double> pressure_force;  // 12 per Model::pressure_loads entry (4 nodes x 3)
@@ -53,12 +53,14 @@ void apply_loads_to_nodes(const Model& m, State& s, LoadSet& loads, double t);
 void apply_prescribed_motions(const Model& m, State& s, LoadSet& loads, double t, double dt_n,
                               double dt_next);
 
-// Prescribed rotational velocities (PrescribedMotion::rotation) of nodes with rotations:
-// capture_rotations keeps omega^{n-1/2} along each axis before the rotational update,
-// apply_prescribed_rotations then sets the prescribed components of omega^{n+1/2} and books
-// the reaction moment's work I (w - w_free) / dt_n * (w_old + w) / 2 * dt_n.
+// Prescribed rotations (PrescribedMotion::rotation) of nodes with rotations (shells', beams'):
+// capture_rotations keeps omega^{n-1/2} before the rotational update, apply_prescribed_rotations
+// then sets the prescribed component of omega^{n+1/2} along the axis (from the curve: the
+// angular velocity, from omega^{n-1/2} and the angular acceleration, or from the angle turned so
+// far), with DOF -8 the components normal to it held at 0, and books the reaction moment's work
+// I (w - w_free) / dt_n . (w_old + w) / 2 * dt_n.
 void capture_rotations(const Model& m, const State& s, LoadSet& loads);
-void apply_prescribed_rotations(const Model& m, State& s, LoadSet& loads, double t, double dt_next);
+void apply_prescribed_rotations(const Model& m, State& s, LoadSet& loads, double t, double dt_n, double dt_next);
 
 // Books the work of the loads and of the prescribed motions' reactions over this cycle in
 // s.external_work (call after the velocities are final).

@@ -450,7 +450,11 @@ TEST(RealDyna3dLayout, UserBeamRuleEqualsTheBuiltInRuleAndRoundTrips) {
 // A prescribed rotational velocity (DOF 6, about y) at the tip of the cantilever: 1 rad/s for
 // 9 ms, down to 0 at 11 ms (10 mrad in all), then held; with critical damping it settles on a pure end moment's shape, tip rotation
 // theta = 0.01 and tip deflection -theta L / 2 (within 1 %); the rotation is the prescribed one.
-TEST(RealDyna3dLayout, PrescribedTipRotationBendsTheCantileverAsAnEndMoment) {
+namespace {
+
+// The cantilever with its tip load replaced by a prescribed rotational velocity about y at the
+// tip (DOF 6, type 0): 1 rad/s for 9 ms, down to 0 at 11 ms (10 mrad in all), then held.
+std::string cantilever_with_tip_rotation() {
   std::string s = cantilever();
   const std::string c5 = ints({1, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0});
   s.replace(s.find(c5), c5.size(), ints({1, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}));
@@ -459,6 +463,15 @@ TEST(RealDyna3dLayout, PrescribedTipRotationBendsTheCantileverAsAnEndMoment) {
                                              reals({1, 0}) + "\n");
   const std::string load = I(11, 8) + I(3, 5) + I(1, 5) + reals({100}) + "\n";
   s.replace(s.find(load), load.size(), I(11, 8) + I(1, 5) + I(6, 5) + reals({1, 0, 0, 0}) + I(0, 5) + "\n");
+  return s;
+}
+
+}  // namespace
+
+TEST(RealDyna3dLayout, PrescribedTipRotationBendsTheCantileverAsAnEndMoment) {
+  std::string s = cantilever_with_tip_rotation();
+  const std::string c5 = ints({1, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0});
+  const std::string load = I(11, 8) + I(3, 5) + I(1, 5) + reals({100}) + "\n";
   Model m;
   Diagnostics d;
   ASSERT_TRUE(read_string(s, m, d)) << all_messages(d);
@@ -477,4 +490,60 @@ TEST(RealDyna3dLayout, PrescribedTipRotationBendsTheCantileverAsAnEndMoment) {
   Diagnostics db;
   EXPECT_FALSE(read_string(bad, mb, db));
   EXPECT_NE(all_messages(db).find("field \"type\" (cols 59-63)"), std::string::npos) << all_messages(db);
+}
+
+// The same tip rotation from a keyword deck (issue 25: DOF 5-8 of shell and beam nodes): the
+// converter writes the fixed deck's rotational velocity as *BOUNDARY_PRESCRIBED_MOTION_NODE DOF
+// 6 and reads it back the same; then the tip's angle is given by its angle (VAD 2: 0 to 10 mrad
+// over 10 ms, then held) and by its angular acceleration about *DEFINE_VECTOR y with the other
+// rotations held (DOF -8, VAD 1: +-400 rad/s^2 for 5 ms each, 10 mrad at rest; the curve's steps
+// over 20 us).  Each settles on
+// the pure end moment's shape, tip deflection -theta L / 2 (within 1 %); the tip's rotations about
+// x and z stay 0 exactly with DOF -8; the energy books balance (1e-3).
+TEST(RealDyna3dLayout, KeywordTipRotationByAngleOrAccelerationBendsTheCantilever) {
+  Model f;
+  Diagnostics df;
+  ASSERT_TRUE(read_string(cantilever_with_tip_rotation(), f, df)) << all_messages(df);
+  std::ostringstream k;
+  write_keyword_deck(k, f);
+  std::string text = k.str();
+  ASSERT_NE(text.find("*BOUNDARY_PRESCRIBED_MOTION_NODE"), std::string::npos) << text;
+  Model back;
+  Diagnostics db;
+  ASSERT_TRUE(read_any(text, back, db, "cantilever.k")) << all_messages(db);
+  const auto diff = model_differences(f, back, 10);
+  EXPECT_TRUE(diff.empty()) << diff.front();
+  // the motion block replaced by the variants
+  const std::size_t a = text.find("*BOUNDARY_PRESCRIBED_MOTION_NODE"), b = text.find("\n*", a + 1);
+  auto card = [](std::initializer_list<std::string> fields, std::size_t w = 10) {
+    std::string c;
+    for (const std::string& x : fields) c += std::string(x.size() < w ? w - x.size() : 0, ' ') + x;
+    return c + "\n";
+  };
+  auto point = [&](const char* t, const char* v) { return card({t, v}, 20); };
+  const std::string angle = "*DEFINE_CURVE\n" + card({"91"}) + point("0.0", "0.0") + point("0.01", "0.01") + point("1.0", "0.01");
+  const std::string accel = "*DEFINE_CURVE\n" + card({"92"}) + point("0.0", "400.0") + point("0.00499", "400.0") + point("0.00501", "-400.0") +
+                            point("0.00999", "-400.0") + point("0.01001", "0.0") + point("1.0", "0.0") +
+                            "*DEFINE_VECTOR\n" + card({"93", "0.0", "0.0", "0.0", "0.0", "2.0", "0.0"});
+  const std::string by_angle = "*BOUNDARY_PRESCRIBED_MOTION_NODE\n" + card({"11", "6", "2", "91", "1.0"}) + angle;
+  const std::string by_accel = "*BOUNDARY_PRESCRIBED_MOTION_NODE\n" + card({"11", "-8", "1", "92", "1.0", "93"}) + accel;
+  for (const std::string& motion : {by_angle, by_accel}) {
+    std::string t = text;
+    t.replace(a, b + 1 - a, motion);
+    Model m;
+    Diagnostics d;
+    ASSERT_TRUE(read_any(t, m, d, "cantilever.k")) << all_messages(d) << t;
+    ASSERT_EQ(m.prescribed_motions.size(), 1u);
+    EXPECT_TRUE(m.prescribed_motions[0].rotation);
+    const State st = run_to_end(m);
+    const double theta = 0.01, L = 1;
+    EXPECT_NEAR(st.z[10] - m.z[10], -theta * L / 2, 0.01 * theta * L / 2) << motion;
+    EXPECT_NEAR(st.energy_ratio(), 1.0, 1e-3) << motion;
+    if (m.prescribed_motions[0].hold_normal) {
+      const int r = st.shells.node_rot[10];
+      ASSERT_GE(r, 0);
+      EXPECT_EQ(st.shells.wx[std::size_t(r)], 0.0);
+      EXPECT_EQ(st.shells.wz[std::size_t(r)], 0.0);
+    }
+  }
 }

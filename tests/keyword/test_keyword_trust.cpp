@@ -84,8 +84,8 @@ TEST(KeywordTrust, ShellPartTakesItsLcssCurveById) {
   EXPECT_EQ(c.f[3], 4.2e8);
 }
 
-// Defect 7: DOF 10 (nodes rotating about an axis, LS-DYNA's card 2 OFFSET1 OFFSET2 LRB NODE1
-// NODE2 follows) is refused by one error on DOF; its card 2 is skipped, and the next motion is
+// Defect 7: DOF -10 (nodes turning about an axis with radial motion, LS-DYNA's card 2 OFFSET1
+// OFFSET2 LRB NODE1 NODE2 follows) is refused by one error on DOF; its card 2 is skipped, and the next motion is
 // read from its own cards, with and without the _ID cards.  Before, the card 2 was read as the
 // next motion (nine 1001 errors on a real deck).
 TEST(KeywordTrust, RefusedMotionDofDoesNotShiftTheNextCards) {
@@ -94,7 +94,7 @@ TEST(KeywordTrust, RefusedMotionDofDoesNotShiftTheNextCards) {
       "$#      id                                                             heading\n"
       "         1rotation\n"
       "$#    nsid       dof       vad      lcid        sf       vid     death     birth\n"
-      "        30        10         2        12       1.0\n"
+      "        30       -10         2        12       1.0\n"
       "$# offset1   offset2       lrb     node1     node2\n"
       "       0.5       0.5         0         0         0\n"
       "         2pull\n"
