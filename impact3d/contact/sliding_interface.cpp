@@ -568,6 +568,12 @@ bool node_in_play(const State& s, const Surface& nodes_sf, const Grid& g, int q,
   return false;
 }
 
+// The order of candidate segments for a point: its distance to the contact surface (the
+// mid-surface distance less the offsets r); at equal distance a face point before an edge point.
+double nearest_surface_key(const contact::SegmentHit& h, double r) {
+  return r == 0 ? h.dist * (h.on_edge ? 1 + 1e-9 : 1.0) : h.dist + (h.on_edge ? 1e-9 * h.dist : 0.0) - r;
+}
+
 // The nearest segment of the node's grid cell, or -1: its hit bh and the sum of the offsets r.
 int find_nearest_segment(const State& s, const Interface& in, const Surface& nodes_sf, const Surface& segs, const Grid& g,
                          int q, const double* p, Hit& hit, contact::SegmentHit& bh, double& best_r) {
@@ -598,7 +604,7 @@ int find_nearest_segment(const State& s, const Interface& in, const Surface& nod
     // a face point before an edge point, then the lower segment (the order of the candidates
     // is the segment order)
     const double r = segs.offset[std::size_t(j)] + r_node;
-    const double key = r == 0 ? h.dist * (h.on_edge ? 1 + 1e-9 : 1.0) : h.dist + (h.on_edge ? 1e-9 * h.dist : 0.0) - r;
+    const double key = nearest_surface_key(h, r);
     if (best < 0 || key < best_key) {
       best = j;
       best_key = key;
@@ -720,7 +726,7 @@ int find_segment_for_point(const State& s, const Interface& in, const Surface& o
     if (!h.valid) continue;
     if (own_one_sided && !two && !(n_own[0] * h.n[0] + n_own[1] * h.n[1] + n_own[2] * h.n[2] < 0)) continue;
     const double r = segs.offset[std::size_t(j)] + r_own;
-    const double key = r == 0 ? h.dist * (h.on_edge ? 1 + 1e-9 : 1.0) : h.dist + (h.on_edge ? 1e-9 * h.dist : 0.0) - r;
+    const double key = nearest_surface_key(h, r);
     if (best < 0 || key < best_key) {
       best = j;
       best_key = key;
