@@ -669,11 +669,35 @@ class KeywordWriter {
     soft_card(si, si.eroding);
   }
 
+  // The keyword an interface is written as: the one it was read from where that reads back as
+  // the same interface (an automatic one only with its shells at +-t/2), else the plain form.
+  static std::string contact_keyword(const SlidingInterface& si) {
+    auto kept = [&](std::initializer_list<const char*> names, const char* plain) {
+      for (const char* n : names)
+        if (si.keyword == n) {
+          const bool automatic = si.keyword.find("AUTOMATIC") != std::string::npos || si.keyword.find("FORMING") != std::string::npos;
+          if (!automatic || si.shell_thickness == 2) return "*" + si.keyword + "\n";
+        }
+      return std::string(plain);
+    };
+    if (si.type == 4)
+      return si.eroding ? "*CONTACT_ERODING_SINGLE_SURFACE\n" : kept({"CONTACT_SINGLE_SURFACE"}, "*CONTACT_AUTOMATIC_SINGLE_SURFACE\n");
+    if (si.eroding) return si.symmetric ? "*CONTACT_ERODING_SURFACE_TO_SURFACE\n" : "*CONTACT_ERODING_NODES_TO_SURFACE\n";
+    if (si.symmetric) return kept({"CONTACT_AUTOMATIC_SURFACE_TO_SURFACE"}, "*CONTACT_SURFACE_TO_SURFACE\n");
+    return kept({"CONTACT_AUTOMATIC_NODES_TO_SURFACE", "CONTACT_ONE_WAY_SURFACE_TO_SURFACE", "CONTACT_AUTOMATIC_ONE_WAY_SURFACE_TO_SURFACE",
+                 "CONTACT_FORMING_ONE_WAY_SURFACE_TO_SURFACE"},
+                "*CONTACT_NODES_TO_SURFACE\n");
+  }
+  static bool automatic_keyword(const std::string& kw) {
+    return kw.find("AUTOMATIC") != std::string::npos || kw.find("FORMING") != std::string::npos || kw.find("SINGLE") != std::string::npos ||
+           kw.find("ERODING") != std::string::npos;
+  }
+
   void interfaces() {
     for (const SlidingInterface& si : m_.interfaces) {
       if (si.type == 4) {  // single surface: side A only, a segment set
         const int a = segment_set(si.slave);
-        os_ << (si.eroding ? "*CONTACT_ERODING_SINGLE_SURFACE\n" : "*CONTACT_AUTOMATIC_SINGLE_SURFACE\n");
+        os_ << contact_keyword(si);
         os_ << "$#   surfa     surfb  surfatyp  surfbtyp   saboxid   sbboxid      sapr\n"
             << kcard({I(a), I(0), I(0), I(0), I(0), I(0), I(si.intfor_slave ? 1 : 0)}) << "\n";
         os_ << "$#      fs        fd        dc\n" << kcard({R(si.fs), R(si.fd), R(si.decay)}) << "\n";
@@ -690,8 +714,8 @@ class KeywordWriter {
       }
       int a = segment_set(si.slave), b = segment_set(si.master);
       if (si.type != 3) note("sliding interface type " + std::to_string(si.type) + " written as type 3");
-      if (si.eroding) os_ << (si.symmetric ? "*CONTACT_ERODING_SURFACE_TO_SURFACE\n" : "*CONTACT_ERODING_NODES_TO_SURFACE\n");
-      else os_ << (si.symmetric ? "*CONTACT_SURFACE_TO_SURFACE\n" : "*CONTACT_NODES_TO_SURFACE\n");
+      const std::string kw = contact_keyword(si);
+      os_ << kw;
       if (si.intfor_slave || si.intfor_master)
         os_ << "$#   surfa     surfb  surfatyp  surfbtyp   saboxid   sbboxid      sapr      sbpr\n"
             << kcard({I(a), I(b), I(0), I(0), I(0), I(0), I(si.intfor_slave ? 1 : 0), I(si.intfor_master ? 1 : 0)}) << "\n";
@@ -702,7 +726,7 @@ class KeywordWriter {
       if (si.penalty_scale != 0 && s == 1.0) note("sliding interface penalty scale equal to the control value: written as the default");
       os_ << "$#    sfsa      sfsb\n" << kcard({R(s), R(s)}) << "\n";
       if (si.eroding) os_ << "$#    isym    erosop      iadj\n" << kcard({I(0), I(1), I(0)}) << "\n";
-      soft_card(si, si.eroding);
+      soft_card(si, automatic_keyword(kw));
       beam_node_contact(si, si.slave_nodes, b);
       if (si.symmetric) beam_node_contact(si, si.master_nodes, a);
     }

@@ -916,7 +916,8 @@ std::vector<KeywordCardLayout> contact_cards(bool eroding) {
           {"THKOPT", 1, I, 0, false, {}, "0 *CONTROL_CONTACT's SHLTHK, 1 SHLTHK of this card, 2 no shell thickness; others: error 1006"},
           {"SHLTHK", 2, I, 0, false, {}, "0 shells at their mid-surface, 1 at +-t/2 except rigid shells, 2 at +-t/2; others: error 1006"},
           {"SNLOG", 3, I, 0, false, {neither(0, 1, 1006, "0 or 1")}, "shooting-node logic (none here: 0 and 1 alike)"},
-          {"ISYM", 4, I, 0, false, {nonzero(1102, "symmetry-plane option of the contact")}, "symmetry-plane option"},
+          {"ISYM", 4, I, 0, false, {neither(0, 1, 1006, "0 off, 1 no solid faces whose nodes are all constrained along the face's normal")},
+           "1: a side made of parts (SURFATYP 2, 3, 5) leaves out the solids' faces on a symmetry plane (every node constrained along the face's axis-aligned normal)"},
           {"I2D3D", 5, I, 0, false, {nonzero(1102, "segment search order of shells and solids")}, "search order of shells and solids"},
           {"SLDTHK", 6, E, 0, false, {nonzero(1102, "a contact thickness of solids")}, "contact thickness of solids"},
           {"SLDSTF", 7, E, 0, false, {nonzero(1102, "a contact stiffness of solids")}, "contact stiffness of solids"},
@@ -926,7 +927,8 @@ std::vector<KeywordCardLayout> contact_cards(bool eroding) {
   for (int k = 2; k < 8; ++k) c[3].fields.push_back(plain("SAST/SBST/SFSAT/SFSBT/FSF/VSF", k, E, k == 2 ? "SAST, SBST, SFSAT, SFSBT, FSF, VSF: read, no effect here" : ""));
   if (eroding)
     c.insert(c.begin() + 4, {"eroding card", 8, 10, per_field, {
-        {"ISYM", 0, I, 0, false, {nonzero(1102, "symmetry-plane options of eroding contact")}, "symmetry-plane options"},
+        {"ISYM", 0, I, 0, false, {neither(0, 1, 1006, "0 off, 1 no solid faces whose nodes are all constrained along the face's normal")},
+         "1: as optional card B's ISYM (either card's 1 turns it on)"},
         {"EROSOP", 1, I, 0, false, {neither(0, 1, 1006, "0 exterior faces only, 1 faces exposed by failed solids join")},
          "0 exterior faces only, 1 faces exposed by failed solids join the surface"},
         {"IADJ", 2, I, 0, false, {nonzero(2006, "shell edges do not join an eroding surface")}, "adjacent shell edges"},
@@ -946,10 +948,13 @@ std::vector<KeywordCardLayout> tied_contact_cards() {
 std::vector<KeywordSpec> contact_specs() {
   const KeywordFamily F = KeywordFamily::contacts;
   return {{{"CONTACT_SURFACE_TO_SURFACE", "CONTACT_AUTOMATIC_SURFACE_TO_SURFACE", "CONTACT_NODES_TO_SURFACE",
-            "CONTACT_AUTOMATIC_NODES_TO_SURFACE", "CONTACT_AUTOMATIC_SINGLE_SURFACE", "CONTACT_FORCE_TRANSDUCER_PENALTY"},
+            "CONTACT_AUTOMATIC_NODES_TO_SURFACE", "CONTACT_AUTOMATIC_SINGLE_SURFACE", "CONTACT_FORCE_TRANSDUCER_PENALTY",
+            "CONTACT_SINGLE_SURFACE", "CONTACT_ONE_WAY_SURFACE_TO_SURFACE", "CONTACT_AUTOMATIC_ONE_WAY_SURFACE_TO_SURFACE",
+            "CONTACT_FORMING_ONE_WAY_SURFACE_TO_SURFACE"},
            F, false, contact_cards(false),
-           "one contact a keyword; _ID: the ID card first, _TITLE: a heading card first (not read); automatic and single-surface "
-           "contacts take the shells' thickness always (docs/contact.md)"},
+           "one contact a keyword; _ID: the ID card first, _TITLE: a heading card first (not read); automatic, forming and single-surface "
+           "contacts take the shells' thickness always (docs/contact.md); *CONTACT_SINGLE_SURFACE reads as the automatic single surface, "
+           "the _ONE_WAY_SURFACE_TO_SURFACE forms as nodes-to-surface of the slave surface's nodes"},
           {{"CONTACT_ERODING_SURFACE_TO_SURFACE", "CONTACT_ERODING_NODES_TO_SURFACE", "CONTACT_ERODING_SINGLE_SURFACE"},
            F, false, contact_cards(true),
            "one contact a keyword, as the others with the _ERODING_ card after card 3"},

@@ -16,10 +16,15 @@ struct ContactKind {
   int tied = 0;             // 1 *CONTACT_TIED_NODES_TO_SURFACE, 2 *CONTACT_SPOTWELD
 };
 
+// LS-DYNA's older and forming names read as the contact LS-DYNA treats them as
+// (docs/keyword-decks.md): *CONTACT_SINGLE_SURFACE as the automatic single surface; the one-way
+// surface-to-surface contacts (_ONE_WAY_, _AUTOMATIC_ONE_WAY_, _FORMING_ONE_WAY_) as
+// nodes-to-surface of the slave surface's nodes; forming contacts are automatic (both sides
+// of a shell, +-t/2).
 ContactKind contact_kind(const std::string& n) {
   ContactKind k;
   k.eroding = n.rfind("CONTACT_ERODING_", 0) == 0;
-  k.single = n == "CONTACT_AUTOMATIC_SINGLE_SURFACE" || n == "CONTACT_ERODING_SINGLE_SURFACE";
+  k.single = n == "CONTACT_AUTOMATIC_SINGLE_SURFACE" || n == "CONTACT_ERODING_SINGLE_SURFACE" || n == "CONTACT_SINGLE_SURFACE";
   k.transducer = n == "CONTACT_FORCE_TRANSDUCER_PENALTY";
   k.tied = n == "CONTACT_SPOTWELD" ? 2 : n == "CONTACT_TIED_NODES_TO_SURFACE" ? 1 : 0;
   k.symmetric = n == "CONTACT_SURFACE_TO_SURFACE" || n == "CONTACT_AUTOMATIC_SURFACE_TO_SURFACE" ||
@@ -107,14 +112,16 @@ void read_optional_card_a(KeywordValues& c, const ContactKind& kind, RContact& c
   c.rest();
 }
 
-// Optional card B: THKOPT and SHLTHK (the shells' contact thickness, docs/contact.md); the
-// table checks the rest.
+// Optional card B: THKOPT and SHLTHK (the shells' contact thickness, docs/contact.md) and ISYM
+// (symmetry-plane faces left out of part sides); the table checks the rest.
 void read_optional_card_b(KeywordValues& c, RContact& ct) {
   c["PENMAX"];
   ct.thkopt = int(c.integer("THKOPT"));
   if (ct.thkopt < 0 || ct.thkopt > 2) c.error(1006, "THKOPT", "0 *CONTROL_CONTACT's SHLTHK, 1 SHLTHK of this card, 2 no shell thickness");
   ct.shlthk = int(c.integer("SHLTHK"));
   if (ct.shlthk < 0 || ct.shlthk > 2) c.error(1006, "SHLTHK", "0 shells at their mid-surface, 1 at +-t/2 except rigid shells, 2 at +-t/2");
+  c["SNLOG"];
+  if (c.integer("ISYM") == 1) ct.isym = true;
   c.rest();
 }
 
@@ -130,7 +137,8 @@ void read_contact(const Block& b, KeywordContext& ctx, const KeywordSpec& s, std
   ct.single = kind.single;
   ct.tied = kind.tied;
   ct.keyword = b.keyword;
-  ct.automatic = kind.single || kind.eroding || b.keyword.find("AUTOMATIC") != std::string::npos;
+  ct.name = b.name;
+  ct.automatic = kind.single || kind.eroding || b.name.find("AUTOMATIC") != std::string::npos || b.name.find("FORMING") != std::string::npos;
   if (b.id_opt && k == 1) ct.cid = int(ctx.values(b, 0, s.card("ID card")).integer("CID"));
   KeywordValues c1 = ctx.fields(b, k, s.card("card 1"));
   read_sides(c1, kind, ct);
@@ -151,7 +159,9 @@ void read_contact(const Block& b, KeywordContext& ctx, const KeywordSpec& s, std
       ctx.missing_card(b, "the _ERODING_ card (ISYM EROSOP IADJ)");
       return;
     }
-    ct.eroding = ctx.values(b, k + 3, s.card("eroding card")).integer("EROSOP") == 1;
+    KeywordValues ce = ctx.values(b, k + 3, s.card("eroding card"));
+    ct.isym = ce.integer("ISYM") == 1;
+    ct.eroding = ce.integer("EROSOP") == 1;
     ka = k + 4;
   }
   if (ka < b.data.size()) {

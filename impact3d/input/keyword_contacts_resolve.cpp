@@ -7,6 +7,7 @@
 #include "impact3d/input/keyword_resolve.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "impact3d/contact/tied_nodes.h"
 
@@ -31,6 +32,8 @@ static void resolve_side(ResolveContext& rc, const RSide& side, bool slave, cons
 static void keep_segments_in_box(ResolveContext& rc, const RSide& side, bool slave, const std::string& card, std::vector<std::array<int, 4>>& out,
                           std::vector<int>& lines, std::vector<int>& files);
 static void resolve_tied_contact(ResolveContext& rc, const RContact& c);
+static void drop_symmetry_plane_faces(ResolveContext& rc, std::size_t first, std::vector<std::array<int, 4>>& out,
+                                      std::vector<int>& lines, std::vector<int>& files);
 
 // Exterior faces of a list of elements (faces not shared by two of them).
 void exterior_faces_of_elements(ResolveContext& rc, const std::vector<int>& elems, std::vector<std::array<int, 4>>& out, std::vector<int>& lines,
@@ -163,6 +166,42 @@ void segment_set_segments(ResolveContext& rc, const RSegSet& s, int sid, std::ve
   rc.resolving_segments.erase(&s);
 }
 
+// ISYM 1 (LS-DYNA: "do not include faces with normal boundary constraints"): the solid faces
+// out[first...] whose unit normal lies within 1e-3 rad of a global axis (the two other
+// components' length at most 1e-3) and whose every node is constrained along that axis
+// (*NODE TC, *BOUNDARY_SPC, *CONSTRAINED_GLOBAL: the nodes' boundary codes) leave the side.
+void drop_symmetry_plane_faces(ResolveContext& rc, std::size_t first, std::vector<std::array<int, 4>>& out,
+                               std::vector<int>& lines, std::vector<int>& files) {
+  const Model& m = rc.m;
+  auto fixes = [&](int axis, int n) {
+    const int code = m.bc[std::size_t(n)];
+    return axis == 0 ? bc_fixes_x(code) : axis == 1 ? bc_fixes_y(code) : bc_fixes_z(code);
+  };
+  auto d = [&](int a, int b) {
+    return std::array<double, 3>{m.x[std::size_t(b)] - m.x[std::size_t(a)], m.y[std::size_t(b)] - m.y[std::size_t(a)],
+                                 m.z[std::size_t(b)] - m.z[std::size_t(a)]};
+  };
+  std::size_t kept = first;
+  for (std::size_t k = first; k < out.size(); ++k) {
+    const auto& s = out[k];
+    // quadrilateral: the diagonals' cross product; triangle (n3 = n4): the edges'
+    const auto u = s[2] == s[3] ? d(s[0], s[1]) : d(s[0], s[2]);
+    const auto v = s[2] == s[3] ? d(s[0], s[2]) : d(s[1], s[3]);
+    const std::array<double, 3> n{u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+    const double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    int axis = 0;
+    for (int q = 1; q < 3; ++q)
+      if (std::abs(n[std::size_t(q)]) > std::abs(n[std::size_t(axis)])) axis = q;
+    const double off = std::hypot(n[std::size_t((axis + 1) % 3)], n[std::size_t((axis + 2) % 3)]);
+    bool on_plane = len > 0 && off <= 1e-3 * len;
+    for (int q = 0; q < 4 && on_plane; ++q) on_plane = fixes(axis, s[std::size_t(q)]);
+    if (on_plane) continue;
+    out[kept] = out[k], lines[kept] = lines[k], files[kept] = files[k];
+    ++kept;
+  }
+  out.resize(kept), lines.resize(kept), files.resize(kept);
+}
+
 // A side's segments (out, with their cards' lines and files) and its beam nodes (the end
 // nodes of its parts' beams, or the node set's beam end nodes; in SABOXID / SBBOXID's box;
 // sorted, none a node of the side's segments): beams are contact nodes, never segments.
@@ -195,7 +234,9 @@ void resolve_side(ResolveContext& rc, const RSide& side, bool slave, const std::
       for (std::size_t p = 0; p < rc.ps.parts.size(); ++p) parts.push_back(int(p));
     else
       parts = parts_of(rc, side.type == 2, side.id, side.id_ref, card, field);
+    const std::size_t first_face = out.size();
     exterior_faces(rc, parts, nullptr, out, lines, files);
+    if (rc.isym) drop_symmetry_plane_faces(rc, first_face, out, lines, files);
     shell_segments(rc, parts, nullptr, out, lines, files);
     for (int p : parts)
       for (int e : rc.part_beams[std::size_t(p)]) mark_beam_ends(e);
@@ -292,6 +333,7 @@ void resolve_tied_contact(ResolveContext& rc, const RContact& c) {
 
 void resolve_contacts(ResolveContext& rc) {
   for (const RContact& c : rc.contacts) {
+    rc.isym = c.isym;  // (every side of this contact made of parts)
     if (c.tied) {
       resolve_tied_contact(rc, c);
       continue;
@@ -325,6 +367,7 @@ void resolve_contacts(ResolveContext& rc) {
     SlidingInterface si;
     si.type = c.single ? 4 : 3;
     si.eroding = c.eroding;
+    si.keyword = c.name;
     rc.all_faces = c.eroding;  // an eroding side holds every face of its solids
     si.fs = c.fs;
     si.fd = c.fd;
@@ -350,6 +393,7 @@ void resolve_contacts(ResolveContext& rc) {
     rc.all_faces = false;
     rc.m.interfaces.push_back(std::move(si));
   }
+  rc.isym = false;
   rc.m.control.num_interfaces = int(rc.m.interfaces.size());
 }
 

@@ -375,11 +375,13 @@ struct RContact {
   bool eroding = false;             // *CONTACT_ERODING_* with EROSOP 1: interior faces join
   bool automatic = false;           // _AUTOMATIC_, single surface, eroding: shells always at +-t/2
   int thkopt = 0, shlthk = 0;       // optional card B (THKOPT 1: SHLTHK of the card; 2: none)
+  bool isym = false;                // ISYM 1 (optional card B or the _ERODING_ card): part sides leave out symmetry-plane faces
   int cid = 0;                      // _ID: the contact id
   int tied = 0;                     // 1 *CONTACT_TIED_NODES_TO_SURFACE, 2 *CONTACT_SPOTWELD (constraint ties)
   double sast = 0;                  // card 3 SAST of a tied contact (negative: its magnitude is the reach)
   Ref ref;
   std::string keyword;
+  std::string name;                 // the keyword without its options (_ID, _TITLE): kept for the converter
 };
 
 // Reads a *CONTACT_... keyword (one contact a block) into out; false if the keyword is none of

@@ -85,6 +85,7 @@ struct ResolveContext {
   std::set<const RSegSet*> resolving_segments;
   const std::vector<int>* element_filter = nullptr;  // exterior_faces of these elements instead of parts'
   bool all_faces = false;  // exterior_faces gives every face (an eroding contact's sides), one per solid
+  bool isym = false;  // the contact being resolved has ISYM 1: its part sides leave out symmetry-plane faces
   std::vector<char> shell_node;  // per node: it has rotations (a shell's or a beam end's)
   int rotational_spc = 0;  // rotational constraints on nodes without rotations (warning 2005)
   Ref rotational_ref;

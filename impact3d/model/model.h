@@ -208,6 +208,9 @@ struct SlidingInterface {
   // interface-force database (intfor)
   bool intfor_slave = false, intfor_master = false;
   std::string name;  // DYNA3D free-format "lagop ... name NAME endfree" (empty: none)
+  // The *CONTACT keyword it was read from, options stripped (keyword decks; empty: fixed format):
+  // the converter writes it back where it reads as this interface (deck_writer.cpp)
+  std::string keyword;
   std::vector<std::array<int, 4>> slave, master;  // 0-based nodes
   // Beam nodes of each side (0-based, sorted, unique; none of them a node of the side's
   // segments): contact nodes without segments.  They search the other side's segments as the

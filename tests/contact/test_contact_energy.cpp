@@ -337,7 +337,7 @@ TEST(ContactStiffness, OptionalCardsAAndBRefuseByField) {
       {ki(0) + "\n" + kf(0.5) + "\n", "PENMAX", 1102},
       {ki(0) + "\n" + kf(0) + ki(3) + "\n", "THKOPT", 1006},
       {ki(0) + "\n" + kf(0) + ki(1) + ki(3) + "\n", "SHLTHK", 1006},
-      {ki(0) + "\n" + kf(0) + ki(0) + ki(0) + ki(0) + ki(1) + "\n", "ISYM", 1102},
+      {ki(0) + "\n" + kf(0) + ki(0) + ki(0) + ki(0) + ki(2) + "\n", "ISYM", 1006},  // (1: test_contact_forms.cpp)
       {ki(0) + "\n" + kf(0) + ki(0) + ki(0) + ki(0) + ki(0) + ki(1) + "\n", "I2D3D", 1102},
       {ki(0) + "\n" + kf(0) + ki(0) + ki(0) + ki(0) + ki(0) + ki(0) + kf(1e-3) + "\n", "SLDTHK", 1102},
       {ki(0) + "\n" + kf(0) + ki(0) + ki(0) + ki(0) + ki(0) + ki(0) + kf(0) + kf(1.0) + "\n", "SLDSTF", 1102},
