@@ -7,6 +7,7 @@
 
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -21,6 +22,18 @@ namespace contact_test {
 using impact3d::MaterialData;
 using impact3d::Model;
 using impact3d::State;
+
+// A keyword field of width w: a real (%g, 6 digits; 9 in fields wider than 10) or an integer.
+inline std::string fld(double v, int w) {
+  char b[64];
+  std::snprintf(b, sizeof b, "%*.*g", w, w > 10 ? 9 : 6, v);
+  return b;
+}
+inline std::string ifld(long v, int w) {
+  char b[64];
+  std::snprintf(b, sizeof b, "%*ld", w, v);
+  return b;
+}
 
 inline Model read_deck(const std::string& name) {
   Model m;

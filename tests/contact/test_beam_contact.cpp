@@ -20,6 +20,7 @@
 #include "impact3d/input/deck_writer.h"
 #include "impact3d/solve/engine.h"
 #include "../support/deck_text.h"
+#include "contact_test_util.h"
 
 using namespace impact3d;
 
@@ -28,16 +29,8 @@ namespace {
 constexpr double kE = 210e9, kNu = 0.3, kRho = 7850;
 const double kBulk = kE / (3 * (1 - 2 * kNu));
 
-std::string fld(double v, int w) {
-  char b[64];
-  std::snprintf(b, sizeof b, "%*.*g", w, w > 10 ? 9 : 6, v);
-  return b;
-}
-std::string ifld(long v, int w) {
-  char b[64];
-  std::snprintf(b, sizeof b, "%*ld", w, v);
-  return b;
-}
+using contact_test::fld;
+using contact_test::ifld;
 
 // Bodies of a keyword deck, each a part with its own node range (0-based [first, last)).
 struct Deck {

@@ -24,6 +24,7 @@
 #include "impact3d/solve/engine.h"
 #include "../support/deck_text.h"
 #include "../support/threaded_run.h"
+#include "contact_test_util.h"
 
 using namespace impact3d;
 
@@ -31,16 +32,8 @@ namespace {
 
 constexpr double kE = 210e9, kNu = 0.3, kRho = 7850;
 
-std::string fld(double v, int w) {
-  char b[64];
-  std::snprintf(b, sizeof b, "%*.*g", w, w > 10 ? 9 : 6, v);
-  return b;
-}
-std::string ifld(long v, int w) {
-  char b[64];
-  std::snprintf(b, sizeof b, "%*ld", w, v);
-  return b;
-}
+using contact_test::fld;
+using contact_test::ifld;
 
 // A keyword deck of elastic blocks, each a part with its node range (0-based [first, last)).
 struct Deck {
@@ -125,16 +118,8 @@ test_support::ReadDeck read_text(const std::string& text) {
   return test_support::read_deck_text(text, "segment_contact.k", InputOptions{}, true);
 }
 
-double body_pz(const State& s, const Deck::Body& b) {
-  double p = 0;
-  for (int n = b.first; n < b.last; ++n) p += s.mass[std::size_t(n)] * s.vz[std::size_t(n)];
-  return p;
-}
-double body_mass(const State& s, const Deck::Body& b) {
-  double m = 0;
-  for (int n = b.first; n < b.last; ++n) m += s.mass[std::size_t(n)];
-  return m;
-}
+double body_pz(const State& s, const Deck::Body& b) { return contact_test::momentum(s, b.first, b.last)[2]; }
+double body_mass(const State& s, const Deck::Body& b) { return contact_test::mass_of(s, b.first, b.last); }
 
 // A run cycle by cycle: the impulse of the interface force on the slave side (sum F^n dt_n),
 // the largest drift of the total momentum, the energy ratio's range, the largest omega dt.

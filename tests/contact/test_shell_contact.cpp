@@ -22,6 +22,7 @@
 #include "impact3d/solve/engine.h"
 #include "../support/box_mesh.h"
 #include "../support/deck_text.h"
+#include "contact_test_util.h"
 
 using namespace impact3d;
 
@@ -30,16 +31,8 @@ namespace {
 constexpr double kE = 210e9, kNu = 0.3, kRho = 7850;
 const double kBulk = kE / (3 * (1 - 2 * kNu));
 
-std::string fld(double v, int w) {
-  char b[64];
-  std::snprintf(b, sizeof b, "%*.*g", w, w > 10 ? 9 : 6, v);
-  return b;
-}
-std::string ifld(long v, int w) {
-  char b[64];
-  std::snprintf(b, sizeof b, "%*ld", w, v);
-  return b;
-}
+using contact_test::fld;
+using contact_test::ifld;
 
 // A keyword deck built from plates of shells and blocks of hexahedra; each body is a part with
 // its own section and material, and its own node range (0-based [first, last)).

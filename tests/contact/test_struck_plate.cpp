@@ -41,6 +41,7 @@
 #include "impact3d/input/deck_reader.h"
 #include "impact3d/solve/engine.h"
 #include "../support/box_mesh.h"
+#include "contact_test_util.h"
 
 using namespace impact3d;
 
@@ -59,16 +60,8 @@ const double kBulk = kE / (3 * (1 - 2 * kNu));
 const double kD = kE * kT * kT * kT / (12 * (1 - kNu * kNu));
 const double kTimoshenko = kD / (0.00560 * kA * kA);  // k of a central point load
 
-std::string fld(double v, int w) {
-  char b[64];
-  std::snprintf(b, sizeof b, "%*.*g", w, w > 10 ? 9 : 6, v);
-  return b;
-}
-std::string ifld(long v, int w) {
-  char b[64];
-  std::snprintf(b, sizeof b, "%*ld", w, v);
-  return b;
-}
+using contact_test::fld;
+using contact_test::ifld;
 
 int plate_node(int i, int j) { return 1 + i + (kN + 1) * j; }  // deck id; (i, j) in 0..kN
 constexpr int kPlateNodes = (kN + 1) * (kN + 1);

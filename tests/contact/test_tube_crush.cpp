@@ -19,21 +19,14 @@
 #include "common/messages.h"
 #include "impact3d/input/deck_reader.h"
 #include "impact3d/solve/engine.h"
+#include "contact_test_util.h"
 
 using namespace impact3d;
 
 namespace {
 
-std::string fld(double v, int w) {
-  char b[64];
-  std::snprintf(b, sizeof b, "%*.*g", w, w > 10 ? 9 : 6, v);
-  return b;
-}
-std::string ifld(long v, int w) {
-  char b[64];
-  std::snprintf(b, sizeof b, "%*ld", w, v);
-  return b;
-}
+using contact_test::fld;
+using contact_test::ifld;
 
 struct Tube {
   double b = 0.04, t = 0.001, L = 0.08;  // side (mid-surface), wall, length
