@@ -177,9 +177,9 @@ struct RLoad {            // one load or prescribed-motion card, resolved after 
   double offset1 = 0, offset2 = 0; // motions DOF 9-11: card 2's point of the axis
 };
 
-// *PARAMETER_EXPRESSION (keyword_parameters.cpp): the blocks' parameters evaluated into
-// `params` (after the plain *PARAMETER values are in it), errors into `diag`.
-void read_parameter_expressions(const std::vector<Block>& blocks, ParamTable& params, Diagnostics& diag);
+// *PARAMETER and *PARAMETER_EXPRESSION (keyword_parameters.cpp): the blocks' parameters into
+// `params` (the plain values first, then the expressions), errors into `diag`.
+void read_parameters(const std::vector<Block>& blocks, ParamTable& params, Diagnostics& diag);
 
 // *CASE (keyword_cases.cpp): the *CASE_BEGIN_n sections open while the deck is scanned; marker
 // takes a *CASE_BEGIN_n / *CASE_END_n keyword (name upper case; true if it is one, errors 1006).

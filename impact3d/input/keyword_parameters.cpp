@@ -1,4 +1,5 @@
-// *PARAMETER_EXPRESSION (docs/keyword-decks.md): one parameter a card, PRMR (10 columns, 20 in
+// *PARAMETER and *PARAMETER_EXPRESSION (docs/keyword-decks.md), read before every other keyword.
+// *PARAMETER_EXPRESSION: one parameter a card, PRMR (10 columns, 20 in
 // long format: R or I, then the name) and EXPRESSION (the rest of the card); with a comma in
 // the PRMR columns the card is free format, PRMR up to the first comma.  The expressions are
 // evaluated after the plain *PARAMETER values, each when first needed, so they may refer to
@@ -149,7 +150,41 @@ class ExpressionSet {
 
 }  // namespace
 
-void read_parameter_expressions(const std::vector<Block>& blocks, ParamTable& params, Diagnostics& diag) {
+// *PARAMETER: cards of four pairs PRMR (10 columns: type R, I or C, then the name) and VAL
+// (10 columns), then *PARAMETER_EXPRESSION.  Read before every other keyword, so a reference
+// may come before or after its definition; a name defined twice is error 1200.
+void read_parameters(const std::vector<Block>& blocks, ParamTable& params, Diagnostics& diag) {
+  for (const Block& b : blocks) {
+    if (b.name != "PARAMETER") continue;
+    for (std::size_t k = 0; k < b.data.size(); ++k) {
+      if (is_blank(b.data[k].line->text)) continue;
+      KCard c(b.data[k], b.keyword, std::vector<int>(8, b.long_fmt ? 20 : 10), diag);  // no substitution inside *PARAMETER
+      for (int f = 0; f + 1 < 8; f += 2) {
+        std::string pr = c.literal(f);
+        if (pr.empty()) continue;
+        const char type = char(std::toupper(static_cast<unsigned char>(pr[0])));
+        std::string name = pr.substr(1);
+        const std::size_t s = name.find_first_not_of(' ');
+        name = s == std::string::npos ? std::string() : name.substr(s);
+        for (char& ch : name) ch = char(std::toupper(static_cast<unsigned char>(ch)));
+        if ((type != 'R' && type != 'I' && type != 'C') || name.empty() || name.find(' ') != std::string::npos) {
+          c.error(1006, f, "PRMR", "a type letter R, I or C followed by the parameter name");
+          continue;
+        }
+        Param p;
+        p.type = type;
+        if (type == 'C') {
+          p.text = c.literal(f + 1);
+        } else if (type == 'I') {
+          p.value = double(c.i(f + 1, "VAL"));
+        } else {
+          p.value = c.r(f + 1, "VAL");
+        }
+        if (!params.emplace(name, p).second) c.error(1200, f, "PRMR", "parameter " + name + " is defined twice");
+      }
+    }
+  }
+  // *PARAMETER_EXPRESSION
   ExpressionSet set(params, diag);
   for (const Block& b : blocks)
     if (b.name == "PARAMETER_EXPRESSION") set.read_block(b);

@@ -9,6 +9,7 @@
 #include <array>
 #include <deque>
 #include <map>
+#include <memory>
 #include <set>
 #include <string>
 #include <utility>
@@ -27,7 +28,7 @@ struct RefusedKeywords {
 };
 
 // *INCLUDE_TRANSFORM: FILENAME; IDNOFF IDEOFF IDPOFF IDMOFF IDSOFF IDFOFF IDDOFF; IDROFF;
-// FCTMAS FCTTIM FCTLEN FCTTEM INCOUT1; TRANID (read by keyword_reader.cpp).
+// FCTMAS FCTTIM FCTLEN FCTTEM INCOUT1; TRANID (read by keyword_include.cpp).
 struct IncludeTransform {
   long long idnoff = 0, ideoff = 0, idpoff = 0, idmoff = 0, idsoff = 0, idfoff = 0, iddoff = 0, idroff = 0;
   double fctlen = 1;
@@ -46,6 +47,17 @@ struct IncludeTransforms {
     return it == of_file.end() ? nullptr : it->second;
   }
 };
+
+// The deck cut into keyword blocks (keyword_include.cpp, the reader's first pass): the blocks of
+// the main deck and of the files it includes (which `includes` holds: the blocks point into
+// them), the *INCLUDE_TRANSFORM cards, the *CASE sections.  `m` gets *KEYWORD NCPU=.
+struct ScannedDeck {
+  std::deque<std::unique_ptr<DeckFile>> includes;
+  std::vector<Block> blocks;
+  IncludeTransforms transforms;
+  CaseSections cases;
+};
+void scan_deck(const DeckFile& main, KeywordContext& ctx, Model& m, ScannedDeck& out);
 
 struct ResolveContext {
   ResolveContext(Model& model, Diagnostics& d, std::string main, KeywordMesh& mesh, KeywordParts& parts, KeywordMaterials& mats,
