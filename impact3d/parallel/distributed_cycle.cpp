@@ -8,6 +8,7 @@
 #include "impact3d/material/material_types.h"
 #include "impact3d/parallel/comm.h"
 #include "impact3d/solve/engine.h"
+#include "impact3d/solve/shell_processing.h"
 
 namespace impact3d::parallel {
 
@@ -53,6 +54,44 @@ void visit_solid(State& s, std::size_t e, F&& f) {
       for (std::size_t h = 0; h < hs; ++h) f(s.pt_hist[hs * p + h]);
   }
 }
+
+// Every value of shell k that changes in the cycle and is not among the shell results that go
+// to every rank each cycle (ShellRecord): State::visit_dynamic_fields' shell part.
+template <class F>
+void visit_shell(State& s, std::size_t k, F&& f) {
+  ShellState& sh = s.shells;
+  f(sh.area[k]);
+  const std::size_t ip = std::size_t(sh.ip_start[k]), nip = std::size_t(sh.nip[k]);
+  for (std::size_t p = ip; p < ip + nip; ++p) {
+    for (std::size_t c = 0; c < 5; ++c) f(sh.sig[5 * p + c]);
+    if (!sh.back.empty())
+      for (std::size_t c = 0; c < 6; ++c) f(sh.back[6 * p + c]);
+    if (!sh.eps_p.empty()) f(sh.eps_p[p]);
+    if (!sh.yielded.empty()) f(sh.yielded[p]);
+  }
+  if (!sh.hgq.empty())
+    for (std::size_t c = 0; c < 5; ++c) f(sh.hgq[5 * k + c]);
+  for (std::size_t c = 0; c < 4; ++c) f(sh.drill[4 * k + c]);
+}
+
+// What every rank needs of shell k after the element pass: the books' inputs (this pass's
+// energy increments, step, bad and failure marks) and its corner forces and moments (the
+// node pass of the owners of its nodes, the rotational update that every rank makes).
+template <class F>
+void visit_shell_record(State& s, std::size_t k, F&& f) {
+  ShellState& sh = s.shells;
+  f(sh.de_ie[k]);
+  f(sh.de_hg[k]);
+  f(sh.dt_e[k]);
+  f(sh.bad[k]);
+  f(sh.failed[k]);
+  for (std::size_t j = 0; j < 4; ++j) {
+    const std::size_t c = sh.corner_base + 4 * k + j, q = 4 * k + j;
+    f(s.cfx[c]), f(s.cfy[c]), f(s.cfz[c]);
+    f(sh.cmx[q]), f(sh.cmy[q]), f(sh.cmz[q]);
+  }
+}
+constexpr std::size_t kShellRecord = 5 + 4 * 6;
 
 // A block's corner forces and its solids.
 template <class F>
@@ -105,35 +144,41 @@ std::vector<int> displacements(const std::vector<int>& counts) {
 
 std::string distributed_refusal(const Model& m, int nranks) {
   std::vector<std::string> what;
-  if (!m.shell_nodes.empty()) what.push_back("shells");
   if (!m.beam_nodes.empty()) what.push_back("beams");
   if (!m.interfaces.empty()) what.push_back("sliding interfaces");
   if (!m.force_transducers.empty()) what.push_back("force transducers");
   if (!m.tied_contacts.empty()) what.push_back("tied contacts");
-  bool rigid = !m.spot_welds.empty(), failure = m.control.erode_small_steps;
+  bool rigid = !m.spot_welds.empty(), failure = m.control.erode_small_steps, shell_failure = false;
   for (const MaterialData& md : m.materials) {
-    if (md.shell || md.beam) continue;
+    if (md.beam) continue;
     if (material_type(md.type).rigid) rigid = true;
     const MaterialConstants mc = derive_constants(md, m);
+    if (md.shell) {
+      if (mc.fail_strain > 0 || mc.shell_tdel > 0) shell_failure = true;
+      continue;
+    }
     if (mc.fail_strain > 0 || mc.tdel > 0 || mc.fail_history >= 0 || mc.vol_erode_hi > 0 || mc.vol_erode_lo > 0 ||
         mc.erosion)
       failure = true;
   }
   if (rigid) what.push_back("rigid bodies");
   if (failure) what.push_back("solid failure or erosion");
+  if (shell_failure) what.push_back("shell failure (FS, FAIL, TDEL)");
   if (m.has_loads() || !m.prescribed_motions.empty()) what.push_back("loads or prescribed motions");
   if (m.control.mass_scaling_dt != 0) what.push_back("mass scaling");
   const std::size_t fixed = fixed_walls_for_node_pass(m).size();
   if (!m.walls.empty() && (fixed != m.walls.size() || fixed > kMaxFusedWalls))
     what.push_back("moving stonewalls or stonewalls on node lists");
-  // one block of kLanes solids of one material at least per rank
-  std::vector<int> per_material(m.materials.size(), 0);
-  for (int mat : m.hex_material) ++per_material[std::size_t(mat)];
+  // one block of kLanes solids or kLanes shells of one material at least per rank
+  std::vector<int> solids(m.materials.size(), 0), shells(m.materials.size(), 0);
+  for (int mat : m.hex_material) ++solids[std::size_t(mat)];
+  for (int mat : m.shell_material) ++shells[std::size_t(mat)];
   long blocks = 0;
-  for (int n : per_material) blocks += (n + kLanes - 1) / kLanes;
+  for (std::size_t i = 0; i < m.materials.size(); ++i)
+    blocks += (solids[i] + kLanes - 1) / kLanes + (shells[i] + kLanes - 1) / kLanes;
   if (blocks < nranks)
-    what.push_back(std::to_string(blocks) + " blocks of solids for " + std::to_string(nranks) +
-                   " ranks (one block of 8 solids per rank at least)");
+    what.push_back(std::to_string(blocks) + " blocks of solids and shells for " + std::to_string(nranks) +
+                   " ranks (one block of 8 solids or 8 shells per rank at least)");
   std::string out;
   for (const std::string& w : what) out += (out.empty() ? "" : ", ") + w;
   return out;
@@ -142,9 +187,9 @@ std::string distributed_refusal(const Model& m, int nranks) {
 DistributedCycle::DistributedCycle() : rank_(rank()), nranks_(size()) {}
 
 void DistributedCycle::setup(const State& s) {
-  const std::size_t nb = s.slot_elem.size() / kLanes;
+  const std::size_t nb = s.slot_elem.size() / kLanes, nu = nb + std::size_t(num_shell_chunks(s.shells));
   // the partition: rank 0 computes it, every rank gets it (one partition, whatever METIS does)
-  std::vector<int> block_rank(nb, 0);
+  std::vector<int> block_rank(nu, 0);
   int ok = 1;
   BlockGraph g;
   if (leads()) {
@@ -157,17 +202,34 @@ void DistributedCycle::setup(const State& s) {
   }
   broadcast(&ok, sizeof ok);
   if (!ok) throw std::runtime_error("the partition failed (METIS)");
-  broadcast(block_rank.data(), nb * sizeof(int));
+  broadcast(block_rank.data(), nu * sizeof(int));
   dom_ = build_domain(s, block_rank, nranks_, rank_);
   if (leads()) report_ = partition_report(summarize_partition(s, g, block_rank, nranks_));
 
   rank_blocks_.assign(std::size_t(nranks_), {});
-  for (std::size_t b = 0; b < nb; ++b) rank_blocks_[std::size_t(block_rank[b])].push_back(int(b));
+  for (std::size_t b = 0; b < nb; ++b) rank_blocks_[std::size_t(block_rank[b])].push_back(int(b));  // solids' blocks
   block_bytes_.assign(std::size_t(nranks_), 0);
   for (int q = 0; q < nranks_; ++q)
     block_bytes_[std::size_t(q)] = int(rank_blocks_[std::size_t(q)].size() * sizeof(BlockResult));
   block_displs_ = displacements(block_bytes_);
   block_buf_.resize(nb);
+  // the shells' records: every rank's shells, chunk after chunk
+  const std::vector<std::vector<int>> chunk_shells = [&] {
+    std::vector<std::vector<int>> out(std::size_t(num_shell_chunks(s.shells)));
+    const std::vector<int> chunk = shell_chunk_of_shells(s.shells);
+    for (int k = 0; k < s.shells.ns; ++k) out[std::size_t(chunk[std::size_t(k)])].push_back(k);
+    return out;
+  }();
+  rank_shells_.assign(std::size_t(nranks_), {});
+  for (std::size_t c = 0; c < chunk_shells.size(); ++c) {
+    std::vector<int>& to = rank_shells_[std::size_t(block_rank[nb + c])];
+    to.insert(to.end(), chunk_shells[c].begin(), chunk_shells[c].end());
+  }
+  shell_bytes_.assign(std::size_t(nranks_), 0);
+  for (int q = 0; q < nranks_; ++q)
+    shell_bytes_[std::size_t(q)] = int(rank_shells_[std::size_t(q)].size() * kShellRecord * sizeof(double));
+  shell_displs_ = displacements(shell_bytes_);
+  shell_buf_.assign(std::size_t(s.shells.ns) * kShellRecord, 0.0);
   rank_nodes_.assign(std::size_t(nranks_), {});
   if (leads())
     for (std::size_t n = 0; n < std::size_t(s.nn); ++n) rank_nodes_[std::size_t(dom_.node_rank[n])].push_back(int(n));
@@ -198,6 +260,7 @@ void DistributedCycle::setup(const State& s) {
   Counter cnt;
   for (int n : dom_.owned_nodes) visit_node(sm, std::size_t(n), cnt);
   for (int b : dom_.owned_blocks) visit_block(sm, std::size_t(b), cnt);
+  for (int k : dom_.owned_shells) visit_shell(sm, std::size_t(k), cnt);
   state_buf_.assign(cnt.n, 0.0);
   const int mine = int(cnt.n * sizeof(double));
   state_bytes_.assign(std::size_t(nranks_), 0);
@@ -210,6 +273,7 @@ void DistributedCycle::setup(const State& s) {
 ElementPassHooks DistributedCycle::element_hooks() {
   ElementPassHooks h;
   h.owns_block = &dom_.owns_block;
+  h.owns_shell_chunk = &dom_.owns_chunk;
   h.after_blocks = &DistributedCycle::after_blocks;
   h.ctx = this;
   return h;
@@ -219,6 +283,7 @@ void DistributedCycle::after_blocks(void* self, State& s) {
   auto* d = static_cast<DistributedCycle*>(self);
   const Timer t(d->comm_s_);
   d->share_block_results(s);
+  if (s.shells.ns > 0) d->share_shell_results(s);
   d->send_corner_forces(s);
 }
 
@@ -231,6 +296,18 @@ void DistributedCycle::share_block_results(State& s) {
     const BlockResult* from = block_buf_.data() + block_displs_[std::size_t(q)] / int(sizeof(BlockResult));
     const std::vector<int>& theirs = rank_blocks_[std::size_t(q)];
     for (std::size_t i = 0; i < theirs.size(); ++i) s.block_results[std::size_t(theirs[i])] = from[i];
+  }
+}
+
+void DistributedCycle::share_shell_results(State& s) {
+  double* own = shell_buf_.data() + shell_displs_[std::size_t(rank_)] / int(sizeof(double));
+  Packer pk{own};
+  for (int k : rank_shells_[std::size_t(rank_)]) visit_shell_record(s, std::size_t(k), pk);
+  allgather(own, shell_bytes_[std::size_t(rank_)], shell_buf_.data(), shell_bytes_.data(), shell_displs_.data());
+  for (int q = 0; q < nranks_; ++q) {
+    if (q == rank_) continue;
+    Unpacker up{shell_buf_.data() + shell_displs_[std::size_t(q)] / int(sizeof(double))};
+    for (int k : rank_shells_[std::size_t(q)]) visit_shell_record(s, std::size_t(k), up);
   }
 }
 
@@ -309,6 +386,7 @@ void DistributedCycle::gather_state(State& s) {
   Packer pk{state_buf_.data()};
   for (int n : dom_.owned_nodes) visit_node(s, std::size_t(n), pk);
   for (int b : dom_.owned_blocks) visit_block(s, std::size_t(b), pk);
+  for (int k : dom_.owned_shells) visit_shell(s, std::size_t(k), pk);
   gather(state_buf_.data(), int(state_buf_.size() * sizeof(double)), state_all_.data(), state_bytes_.data(),
          state_displs_.data());
   if (!leads()) return;
@@ -320,6 +398,7 @@ void DistributedCycle::unpack_rank_state(State& s, int q, const double* from) {
   Unpacker up{from};
   for (int n : rank_nodes_[std::size_t(q)]) visit_node(s, std::size_t(n), up);
   for (int b : rank_blocks_[std::size_t(q)]) visit_block(s, std::size_t(b), up);
+  for (int k : rank_shells_[std::size_t(q)]) visit_shell(s, std::size_t(k), up);
 }
 
 void DistributedCycle::announce(Op op, double land_time, int code) {

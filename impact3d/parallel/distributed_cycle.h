@@ -4,15 +4,19 @@
 //
 // Every rank reads the deck and builds the whole State (memory is not yet divided: a first
 // step); each computes only its own blocks of solids and its own nodes:
-//  - element pass: this rank's blocks; then every block's BlockResult to every rank
-//    (allgather), so the reductions over blocks in block order are the same numbers on every
-//    rank (the step, its element, the energies), and the corner forces of this rank's solids
-//    at other ranks' nodes to their owners (neighbour exchange);
+//  - element pass: this rank's blocks of solids and chunks of shells; then every block's
+//    BlockResult and every shell's record (its books' inputs, corner forces and moments) to
+//    every rank (allgather), so the reductions over blocks and shells in the one-process order
+//    are the same numbers on every rank (the step, its element, the energies), and the corner
+//    forces of this rank's solids at other ranks' nodes to their owners (neighbour exchange);
 //  - node pass: this rank's nodes, each summing its corner list in the one-process order (the
 //    corners of other ranks' solids are the received values, the same numbers), so each
 //    node's force has the same bits; each node's kinetic energy and wall books to rank 0
 //    (gather), which sums them in the one-process chunk order; the new positions and
-//    velocities of this rank's nodes to the ranks that have them as ghosts.
+//    velocities of this rank's nodes to the ranks that have them as ghosts;
+//  - the rotational update (shells' rotational degrees of freedom): every rank makes it for
+//    all of them from the shells' moments that every rank has, so the angular velocities are
+//    the same bits everywhere without an exchange.
 // Rank 0 leads: it runs the run driver (outputs, schedule, run checks, messages) and tells the
 // other ranks what to do next (initialize, step, gather for output, finish); before an output
 // it gathers every rank's nodes, solids and corner forces, so that it writes the same files
@@ -69,6 +73,7 @@ class DistributedCycle {
  private:
   static void after_blocks(void* self, State& s);
   void share_block_results(State& s);
+  void share_shell_results(State& s);
   void send_corner_forces(State& s);
   void send_ghost_kinematics(State& s);
   void unpack_rank_state(State& s, int q, const double* from);
@@ -76,11 +81,14 @@ class DistributedCycle {
   int rank_ = 0, nranks_ = 1;
   Domain dom_;
   std::string report_;
-  std::vector<std::vector<int>> rank_blocks_;  // every rank's blocks, increasing
+  std::vector<std::vector<int>> rank_blocks_;  // every rank's solids' blocks, increasing
+  std::vector<std::vector<int>> rank_shells_;  // every rank's shells, chunk after chunk
   std::vector<std::vector<int>> rank_nodes_;   // every rank's nodes, increasing (rank 0 only)
   // buffers, sized once
   std::vector<BlockResult> block_buf_;
   std::vector<int> block_bytes_, block_displs_;
+  std::vector<double> shell_buf_;              // every shell's record (distributed_cycle.cpp)
+  std::vector<int> shell_bytes_, shell_displs_;
   std::vector<double> send_buf_, recv_buf_;    // neighbour exchanges: per peer, one after another
   std::vector<Exchange> corner_ex_, node_ex_;
   std::vector<double> records_, all_records_, gathered_records_;

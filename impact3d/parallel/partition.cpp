@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "impact3d/solve/shell_processing.h"
+
 #if IMPACT3D_HAVE_MPI
 #include <metis.h>
 #endif
@@ -17,7 +19,45 @@ constexpr std::size_t kBlockCorners = 8 * kLanes;  // cfx entries of one block
 
 std::size_t num_blocks(const State& s) { return s.slot_elem.size() / kLanes; }
 
-// The solids' corners around node n (its corner list without shell or beam corners).
+// The units of work (partition.h): the solids' blocks, then the shells' chunks.
+std::size_t num_units(const State& s) { return num_blocks(s) + std::size_t(num_shell_chunks(s.shells)); }
+
+// Corner c's unit: a solid corner's block, a shell corner's chunk (after the blocks); -1 for a
+// beam corner (beams are refused).
+struct CornerUnits {
+  std::size_t solid_corners = 0, shell_base = 0, shell_end = 0, nb = 0;
+  std::vector<int> shell_chunk;
+  explicit CornerUnits(const State& s)
+      : solid_corners(kBlockCorners * num_blocks(s)), shell_base(s.shells.corner_base),
+        shell_end(s.shells.corner_base + 4 * std::size_t(s.shells.ns)), nb(num_blocks(s)),
+        shell_chunk(shell_chunk_of_shells(s.shells)) {}
+  int operator()(std::size_t c) const {
+    if (c < solid_corners) return int(c / kBlockCorners);
+    if (c >= shell_base && c < shell_end) return int(nb) + shell_chunk[(c - shell_base) / 4];
+    return -1;
+  }
+};
+
+// The units around node n, increasing, into out.
+void node_units(const State& s, const CornerUnits& cu, std::size_t n, std::vector<int>& out) {
+  out.clear();
+  for (int c = s.corner_start[n]; c < s.corner_start[n + 1]; ++c)
+    if (const int u = cu(std::size_t(s.corner_list[std::size_t(c)])); u >= 0) out.push_back(u);
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+}
+
+// The ranks of the units around node n, increasing, into out.
+void node_ranks(const State& s, const CornerUnits& cu, const std::vector<int>& unit_rank, std::size_t n,
+                std::vector<int>& out) {
+  node_units(s, cu, n, out);
+  for (int& u : out) u = unit_rank[std::size_t(u)];
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+}
+
+// The solids' corners around node n (its corner list without shell or beam corners): the
+// corners whose forces the neighbour exchange carries (the shells' go to every rank).
 template <class F>
 void for_solid_corners(const State& s, std::size_t n, F&& f) {
   const std::size_t solid_corners = kBlockCorners * num_blocks(s);
@@ -27,19 +67,38 @@ void for_solid_corners(const State& s, std::size_t n, F&& f) {
   }
 }
 
-// Each node's blocks, increasing (CSR).
-void node_blocks(const State& s, std::vector<int>& start, std::vector<int>& list) {
+// Each node's units, increasing (CSR).
+void node_unit_lists(const State& s, std::vector<int>& start, std::vector<int>& list) {
+  const CornerUnits cu(s);
   start.assign(std::size_t(s.nn) + 1, 0);
   list.clear();
   std::vector<int> mine;
   for (std::size_t n = 0; n < std::size_t(s.nn); ++n) {
-    mine.clear();
-    for_solid_corners(s, n, [&](std::size_t c) { mine.push_back(int(c / kBlockCorners)); });
-    std::sort(mine.begin(), mine.end());
-    mine.erase(std::unique(mine.begin(), mine.end()), mine.end());
+    node_units(s, cu, n, mine);
     list.insert(list.end(), mine.begin(), mine.end());
     start[n + 1] = int(list.size());
   }
+}
+
+// The nodes of unit u (with repeats).
+template <class F>
+void for_unit_nodes(const State& s, const std::vector<std::vector<int>>& chunk_shells, std::size_t u, F&& f) {
+  const std::size_t nb = num_blocks(s);
+  if (u < nb) {
+    for (int l = 0; l < kLanes; ++l)
+      if (const int e = s.slot_elem[u * kLanes + std::size_t(l)]; e >= 0)
+        for (int n : s.conn[std::size_t(e)]) f(n);
+    return;
+  }
+  for (int k : chunk_shells[u - nb])
+    for (int n : s.shells.conn[std::size_t(k)]) f(n);
+}
+
+std::vector<std::vector<int>> shells_by_chunk(const State& s) {
+  std::vector<std::vector<int>> out(std::size_t(num_shell_chunks(s.shells)));
+  const std::vector<int> chunk = shell_chunk_of_shells(s.shells);
+  for (int k = 0; k < s.shells.ns; ++k) out[std::size_t(chunk[std::size_t(k)])].push_back(k);
+  return out;
 }
 
 }  // namespace
@@ -47,39 +106,37 @@ void node_blocks(const State& s, std::vector<int>& start, std::vector<int>& list
 int group_cost_per_solid(const ElementGroup& g) { return g.formulation == 2 ? 6 : 1; }
 
 BlockGraph block_graph(const State& s) {
-  const std::size_t nb = num_blocks(s);
+  const std::size_t nb = num_blocks(s), nu = num_units(s);
   std::vector<int> nstart, nlist;
-  node_blocks(s, nstart, nlist);
+  node_unit_lists(s, nstart, nlist);
+  const std::vector<std::vector<int>> chunk_shells = shells_by_chunk(s);
   BlockGraph g;
-  g.xadj.assign(nb + 1, 0);
-  g.vwgt.assign(nb, 0);
+  g.xadj.assign(nu + 1, 0);
+  g.vwgt.assign(nu, 0);
   for (const ElementGroup& grp : s.groups)
     for (int b = grp.first_block; b < grp.first_block + grp.num_blocks; ++b)
       for (int l = 0; l < kLanes; ++l)
         if (s.slot_elem[std::size_t(b) * kLanes + std::size_t(l)] >= 0) g.vwgt[std::size_t(b)] += group_cost_per_solid(grp);
-  std::vector<int> shared(nb, 0), node_seen(std::size_t(s.nn), -1), touched;
-  for (std::size_t b = 0; b < nb; ++b) {
+  for (std::size_t c = 0; c < chunk_shells.size(); ++c) g.vwgt[nb + c] = kShellCost * int(chunk_shells[c].size());
+  std::vector<int> shared(nu, 0), node_seen(std::size_t(s.nn), -1), touched;
+  for (std::size_t u = 0; u < nu; ++u) {
     touched.clear();
-    for (int l = 0; l < kLanes; ++l) {
-      const int e = s.slot_elem[b * kLanes + std::size_t(l)];
-      if (e < 0) continue;
-      for (int n : s.conn[std::size_t(e)]) {
-        if (node_seen[std::size_t(n)] == int(b)) continue;  // each node once per block
-        node_seen[std::size_t(n)] = int(b);
-        for (int k = nstart[std::size_t(n)]; k < nstart[std::size_t(n) + 1]; ++k) {
-          const int b2 = nlist[std::size_t(k)];
-          if (b2 == int(b)) continue;
-          if (shared[std::size_t(b2)]++ == 0) touched.push_back(b2);
-        }
+    for_unit_nodes(s, chunk_shells, u, [&](int n) {
+      if (node_seen[std::size_t(n)] == int(u)) return;  // each node once per unit
+      node_seen[std::size_t(n)] = int(u);
+      for (int k = nstart[std::size_t(n)]; k < nstart[std::size_t(n) + 1]; ++k) {
+        const int u2 = nlist[std::size_t(k)];
+        if (u2 == int(u)) continue;
+        if (shared[std::size_t(u2)]++ == 0) touched.push_back(u2);
       }
-    }
+    });
     std::sort(touched.begin(), touched.end());
-    for (int b2 : touched) {
-      g.adjncy.push_back(b2);
-      g.adjwgt.push_back(shared[std::size_t(b2)]);
-      shared[std::size_t(b2)] = 0;
+    for (int u2 : touched) {
+      g.adjncy.push_back(u2);
+      g.adjwgt.push_back(shared[std::size_t(u2)]);
+      shared[std::size_t(u2)] = 0;
     }
-    g.xadj[b + 1] = int(g.adjncy.size());
+    g.xadj[u + 1] = int(g.adjncy.size());
   }
   return g;
 }
@@ -89,7 +146,7 @@ std::vector<int> partition_blocks(const BlockGraph& g, int nparts) {
   if (nparts < 1) throw std::runtime_error("partition: the number of parts must be at least 1");
   if (nparts == 1) return std::vector<int>(std::size_t(nv), 0);
   if (nv < nparts)
-    throw std::runtime_error("partition: " + std::to_string(nv) + " blocks of solids cannot fill " +
+    throw std::runtime_error("partition: " + std::to_string(nv) + " blocks of solids and shells cannot fill " +
                              std::to_string(nparts) + " ranks");
 #if IMPACT3D_HAVE_MPI
   static_assert(sizeof(idx_t) == sizeof(int), "METIS built with 64-bit indices");
@@ -110,13 +167,14 @@ std::vector<int> partition_blocks(const BlockGraph& g, int nparts) {
 }
 
 Domain build_domain(const State& s, const std::vector<int>& block_rank, int nranks, int rank) {
-  const std::size_t nb = num_blocks(s);
-  if (block_rank.size() != nb) throw std::logic_error("build_domain: one rank per block expected");
+  const std::size_t nb = num_blocks(s), nu = num_units(s);
+  if (block_rank.size() != nu) throw std::logic_error("build_domain: one rank per block and shell chunk expected");
   Domain d;
   d.rank = rank;
   d.nranks = nranks;
   d.block_rank = block_rank;
   d.owns_block.assign(nb, 0);
+  d.owns_chunk.assign(nu - nb, 0);
   for (std::size_t b = 0; b < nb; ++b)
     if (block_rank[b] == rank) {
       d.owns_block[b] = 1;
@@ -125,14 +183,19 @@ Domain build_domain(const State& s, const std::vector<int>& block_rank, int nran
         if (const int e = s.slot_elem[b * kLanes + std::size_t(l)]; e >= 0) d.owned_elems.push_back(e);
     }
   std::sort(d.owned_elems.begin(), d.owned_elems.end());
+  const std::vector<std::vector<int>> chunk_shells = shells_by_chunk(s);
+  for (std::size_t c = 0; c < nu - nb; ++c)
+    if (block_rank[nb + c] == rank) {
+      d.owns_chunk[c] = 1;
+      d.owned_chunks.push_back(int(c));
+      d.owned_shells.insert(d.owned_shells.end(), chunk_shells[c].begin(), chunk_shells[c].end());
+    }
+  const CornerUnits cu(s);
   d.node_rank.assign(std::size_t(s.nn), 0);
   std::vector<Peer> by_rank(static_cast<std::size_t>(nranks));
   std::vector<int> ranks_here;
   for (std::size_t n = 0; n < std::size_t(s.nn); ++n) {
-    ranks_here.clear();
-    for_solid_corners(s, n, [&](std::size_t c) { ranks_here.push_back(block_rank[c / kBlockCorners]); });
-    std::sort(ranks_here.begin(), ranks_here.end());
-    ranks_here.erase(std::unique(ranks_here.begin(), ranks_here.end()), ranks_here.end());
+    node_ranks(s, cu, block_rank, n, ranks_here);
     const int owner = ranks_here.empty() ? 0 : ranks_here.front();
     d.node_rank[n] = owner;
     const bool touched_here = std::binary_search(ranks_here.begin(), ranks_here.end(), rank);
@@ -166,25 +229,29 @@ Domain build_domain(const State& s, const std::vector<int>& block_rank, int nran
 PartitionSummary summarize_partition(const State& s, const BlockGraph& g, const std::vector<int>& block_rank,
                                      int nranks) {
   PartitionSummary p;
-  const std::size_t R = std::size_t(nranks);
+  const std::size_t R = std::size_t(nranks), nb = num_blocks(s);
   p.solids.assign(R, 0);
+  p.shells.assign(R, 0);
   p.blocks.assign(R, 0);
   p.owned_nodes.assign(R, 0);
   p.shared_nodes.assign(R, 0);
   p.weight.assign(R, 0);
+  const std::vector<std::vector<int>> chunk_shells = shells_by_chunk(s);
   for (std::size_t b = 0; b < block_rank.size(); ++b) {
     const std::size_t r = std::size_t(block_rank[b]);
     ++p.blocks[r];
     p.weight[r] += g.vwgt[b];
+    if (b >= nb) {
+      p.shells[r] += int(chunk_shells[b - nb].size());
+      continue;
+    }
     for (int l = 0; l < kLanes; ++l)
       if (s.slot_elem[b * kLanes + std::size_t(l)] >= 0) ++p.solids[r];
   }
+  const CornerUnits cu(s);
   std::vector<int> ranks_here;
   for (std::size_t n = 0; n < std::size_t(s.nn); ++n) {
-    ranks_here.clear();
-    for_solid_corners(s, n, [&](std::size_t c) { ranks_here.push_back(block_rank[c / kBlockCorners]); });
-    std::sort(ranks_here.begin(), ranks_here.end());
-    ranks_here.erase(std::unique(ranks_here.begin(), ranks_here.end()), ranks_here.end());
+    node_ranks(s, cu, block_rank, n, ranks_here);
     ++p.owned_nodes[ranks_here.empty() ? 0 : std::size_t(ranks_here.front())];
     if (ranks_here.size() > 1)
       for (int q : ranks_here) ++p.shared_nodes[std::size_t(q)];
@@ -198,12 +265,12 @@ PartitionSummary summarize_partition(const State& s, const BlockGraph& g, const 
 std::string partition_report(const PartitionSummary& p) {
   const std::size_t R = p.solids.size();
   std::string out = " distributed run: " + std::to_string(R) +
-                    " MPI ranks, the solids' blocks partitioned by METIS k-way (seed 1)\n"
-                    "   rank     solids     blocks   nodes owned   shared nodes\n";
+                    " MPI ranks, the blocks of solids and shells partitioned by METIS k-way (seed 1)\n"
+                    "   rank     solids     shells     blocks   nodes owned   shared nodes\n";
   char buf[160];
   for (std::size_t r = 0; r < R; ++r) {
-    std::snprintf(buf, sizeof buf, " %6zu %10d %10d %13d %14d\n", r, p.solids[r], p.blocks[r], p.owned_nodes[r],
-                  p.shared_nodes[r]);
+    std::snprintf(buf, sizeof buf, " %6zu %10d %10d %10d %13d %14d\n", r, p.solids[r], p.shells[r], p.blocks[r],
+                  p.owned_nodes[r], p.shared_nodes[r]);
     out += buf;
   }
   std::snprintf(buf, sizeof buf, "   imbalance (largest rank weight / mean) %.4f", p.imbalance);

@@ -1,21 +1,24 @@
 #pragma once
 // The partition of a model over MPI ranks and each rank's domain (docs/cluster.md).
 //
-// The unit of ownership is the element pass's block (kLanes solids of one group, State::
-// slot_elem): a rank computes whole blocks, so each block's energy sums (BlockResult, summed
-// over its lanes in lane order) are the same numbers on any rank count, and the reductions
-// over blocks in block order give the same bits as one process.  METIS k-way partitions the
-// element graph coarsened to blocks: one vertex per block, weighted by its solids times the
-// group's cost per solid; an edge between blocks whose solids share nodes, weighted by the
-// nodes they share.  Fixed options and seed: the same partition run after run.
+// The units of ownership are the element pass's blocks: the solids' blocks (kLanes solids of
+// one group, State::slot_elem), then the shells' chunks (kLanes shells of one group's order,
+// shell_processing.h: num_shell_chunks), numbered after the blocks.  A rank computes whole
+// units, so each block's energy sums (BlockResult, summed over its lanes in lane order) and
+// each shell's results are the same numbers on any rank count, and the reductions over them in
+// the one-process order give the same bits as one process.  METIS k-way partitions the element
+// graph coarsened to units: one vertex per unit, weighted by its elements times their cost per
+// element; an edge between units whose elements share nodes, weighted by the nodes they share.
+// Fixed options and seed: the same partition run after run.
 //
-// A node belongs to the lowest rank among the blocks of the solids around it (rank 0 for a
-// node of no solid).  A rank's domain: its blocks and their solids, its nodes, its ghost
-// nodes (nodes of its solids that another rank owns), and per neighbour rank the lists of the
-// two exchanges of a cycle, each in increasing order, built alike on both sides:
+// A node belongs to the lowest rank among the units of the elements around it (rank 0 for a
+// node of no element).  A rank's domain: its units and their elements, its nodes, its ghost
+// nodes (nodes of its elements that another rank owns), and per neighbour rank the lists of
+// the two exchanges of a cycle, each in increasing order, built alike on both sides:
 //  - corner forces: the corners (cfx index, State::corner_index) of this rank's solids at
 //    nodes the neighbour owns (sent), and of the neighbour's solids at nodes this rank owns
-//    (received);
+//    (received); the shells' corner forces and moments go to every rank instead
+//    (distributed_cycle.h);
 //  - kinematics: this rank's nodes that are the neighbour's ghosts (sent), the neighbour's
 //    nodes that are this rank's ghosts (received).
 
@@ -27,19 +30,21 @@
 
 namespace impact3d::parallel {
 
-// The block graph in METIS's CSR form.
+// The unit graph in METIS's CSR form (the solids' blocks, then the shells' chunks).
 struct BlockGraph {
-  std::vector<int> xadj, adjncy, adjwgt;  // neighbours of block b: adjncy[xadj[b] .. xadj[b+1])
-  std::vector<int> vwgt;                  // solids of the block x the group's cost per solid
+  std::vector<int> xadj, adjncy, adjwgt;  // neighbours of unit b: adjncy[xadj[b] .. xadj[b+1])
+  std::vector<int> vwgt;                  // elements of the unit x their cost per element
 };
 
 // A group's relative cost per solid (the vertex weights): 1 for the one-point hexahedron, 6 for
 // the fully integrated one (eight points' stress updates, scalar; an estimate, not a measurement).
 int group_cost_per_solid(const ElementGroup& g);
+// A shell's cost in the same measure: 2 (an estimate, not a measurement).
+constexpr int kShellCost = 2;
 
 BlockGraph block_graph(const State& s);
 
-// Rank of each block: METIS k-way (METIS_PartGraphKway, seed 1, default options otherwise).
+// Rank of each unit: METIS k-way (METIS_PartGraphKway, seed 1, default options otherwise).
 // nparts 1: all blocks on rank 0.  Throws std::runtime_error where the build has no METIS, or
 // with fewer blocks than parts.
 std::vector<int> partition_blocks(const BlockGraph& g, int nparts);
@@ -52,21 +57,24 @@ struct Peer {
 
 struct Domain {
   int rank = 0, nranks = 1;
-  std::vector<int> block_rank;        // every block's rank
+  std::vector<int> block_rank;        // every unit's rank: the solids' blocks, then the shells' chunks
   std::vector<int> node_rank;         // every node's owner
-  std::vector<std::uint8_t> owns_block;  // per block: this rank computes it
+  std::vector<std::uint8_t> owns_block;  // per solid block: this rank computes it
+  std::vector<std::uint8_t> owns_chunk;  // per shell chunk: this rank computes it
   std::vector<int> owned_blocks, owned_elems, owned_nodes, ghost_nodes;  // increasing
+  std::vector<int> owned_chunks;      // increasing
+  std::vector<int> owned_shells;      // the owned chunks' shells, chunk after chunk
   std::vector<Peer> peers;            // the neighbour ranks, increasing
 };
 
-// Rank `rank`'s domain for the given block ranks.
+// Rank `rank`'s domain for the given unit ranks.
 Domain build_domain(const State& s, const std::vector<int>& block_rank, int nranks, int rank);
 
-// What d3hsp states about a partition: per rank its solids, blocks, nodes owned and shared
-// nodes (nodes of its solids that solids of another rank also use), and the imbalance (the
-// largest rank weight over the mean).
+// What d3hsp states about a partition: per rank its solids, shells, units ("blocks"), nodes
+// owned and shared nodes (nodes of its elements that elements of another rank also use), and
+// the imbalance (the largest rank weight over the mean).
 struct PartitionSummary {
-  std::vector<int> solids, blocks, owned_nodes, shared_nodes;
+  std::vector<int> solids, shells, blocks, owned_nodes, shared_nodes;
   std::vector<long> weight;
   double imbalance = 1;
 };

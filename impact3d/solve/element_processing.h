@@ -20,11 +20,14 @@ struct ElementLoopResult {
 // Blocks write only their own slots; the reductions combine per-block results in block order,
 // so the result has the same bits for any thread count.
 //
-// A distributed run (impact3d/parallel) passes hooks: only the blocks marked in owns_block
-// are computed, then after_blocks runs (it brings every block's BlockResult and the corner
-// forces this rank's nodes need) before the reductions, which are then the same on every rank.
+// A distributed run (impact3d/parallel) passes hooks: only the solid blocks marked in
+// owns_block and the shell chunks marked in owns_shell_chunk (shell_processing.h) are
+// computed, then after_blocks runs (it brings every block's BlockResult, every shell's results
+// and moments, and the corner forces this rank's nodes need) before the reductions, which are
+// then the same on every rank.
 struct ElementPassHooks {
   const std::vector<std::uint8_t>* owns_block = nullptr;  // per block; null: all blocks
+  const std::vector<std::uint8_t>* owns_shell_chunk = nullptr;  // per shell chunk; null: all
   void (*after_blocks)(void* ctx, State& s) = nullptr;
   void* ctx = nullptr;
 };

@@ -222,7 +222,8 @@ void process_shell_block(State& s, const ShellGroup& g, const ShellBlockMaterial
 
 // A group's shells: whole blocks through the block kernel (groups with g.blocks), the rest
 // (the last n mod kLanes, or every shell of the other groups) through process_shell.
-void process_shells_of_group(State& s, const ShellGroup& g, const int* ord, int n, double dt) {
+// own: the group's chunks' marks (null: every shell).
+void process_shells_of_group(State& s, const ShellGroup& g, const int* ord, int n, double dt, const std::uint8_t* own) {
   int scalar_from = 0;
   if (g.blocks) {
     const ShellBlockMaterial mat{&s.mats[std::size_t(g.material)], shell_material_kind(g.kernel), g.update_block,
@@ -233,12 +234,14 @@ void process_shells_of_group(State& s, const ShellGroup& g, const int* ord, int 
     {
       ShellBlock b{};  // one per thread: about 40 KB on its stack, reused block after block
 #pragma omp for schedule(static)
-      for (int q = 0; q < nb; ++q) process_shell_block(s, g, mat, a, ord + q * kLanes, dt, b);
+      for (int q = 0; q < nb; ++q)
+        if (!own || own[q]) process_shell_block(s, g, mat, a, ord + q * kLanes, dt, b);
     }
     scalar_from = nb * kLanes;
   }
 #pragma omp parallel for schedule(static) if (n - scalar_from >= kMinShellsForThreads)
-  for (int q = scalar_from; q < n; ++q) process_shell(s, g, ord[q], dt);
+  for (int q = scalar_from; q < n; ++q)
+    if (!own || own[q / kLanes]) process_shell(s, g, ord[q], dt);
 }
 
 bool shell_forces_finite(const State& s, int k) {
@@ -247,20 +250,47 @@ bool shell_forces_finite(const State& s, int k) {
 
 }  // namespace
 
-ShellPassResult calc_forces_for_shells(const Model& m, State& s) {
-  (void)m;
-  ShellPassResult out;
-  out.dt_min = std::numeric_limits<double>::infinity();
+int num_shell_chunks(const ShellState& sh) {
+  int n = 0;
+  for (const ShellGroup& g : sh.groups) n += (g.count + kLanes - 1) / kLanes;
+  return n;
+}
+
+std::vector<int> shell_chunk_of_shells(const ShellState& sh) {
+  std::vector<int> chunk(std::size_t(sh.ns), -1);
+  int c0 = 0;
+  for (const ShellGroup& g : sh.groups) {
+    for (int q = 0; q < g.count; ++q) chunk[std::size_t(sh.order[std::size_t(g.first + q)])] = c0 + q / kLanes;
+    c0 += (g.count + kLanes - 1) / kLanes;
+  }
+  return chunk;
+}
+
+void compute_shell_forces(State& s, const std::vector<std::uint8_t>* owns_chunk) {
   ShellState& sh = s.shells;
   const double dt = s.dt_half;
+  int c0 = 0;  // the group's first chunk
   for (const ShellGroup& g : sh.groups) {
     const int* ord = &sh.order[std::size_t(g.first)];
     const int n = g.count;
+    const std::uint8_t* own = owns_chunk ? owns_chunk->data() + c0 : nullptr;
+    c0 += (n + kLanes - 1) / kLanes;
     if (g.kernel == ShellKernel::rigid) {
       for (int q = 0; q < n; ++q) zero_shell_corners(s, ord[q]);
       continue;
     }
-    process_shells_of_group(s, g, ord, n, dt);
+    process_shells_of_group(s, g, ord, n, dt, own);
+  }
+}
+
+ShellPassResult book_shell_results(State& s) {
+  ShellPassResult out;
+  out.dt_min = std::numeric_limits<double>::infinity();
+  ShellState& sh = s.shells;
+  for (const ShellGroup& g : sh.groups) {
+    if (g.kernel == ShellKernel::rigid) continue;
+    const int* ord = &sh.order[std::size_t(g.first)];
+    const int n = g.count;
     // books in group order (the same bits for any thread count)
     double gie = 0, ghg = 0;
     for (int q = 0; q < n; ++q) {
@@ -291,6 +321,12 @@ ShellPassResult calc_forces_for_shells(const Model& m, State& s) {
     out.dhg += ghg;
   }
   return out;
+}
+
+ShellPassResult calc_forces_for_shells(const Model& m, State& s) {
+  (void)m;
+  compute_shell_forces(s);
+  return book_shell_results(s);
 }
 
 void update_rotational_velocities_for_nodes(State& s, double dt_n) {

@@ -20,8 +20,22 @@ struct ShellPassResult {
 // Element pass of the shells at t^n (x^n, v^{n-1/2}, omega^{n-1/2}, dt^{n-1/2}): stresses,
 // corner forces (s.cfx... at ShellState::corner_base) and moments, steps, energy books
 // (s.mat_internal, s.mat_hourglass too).  Every shell writes only its own entries and the
-// sums run in a fixed order: the same bits for any thread count.
+// sums run in a fixed order: the same bits for any thread count.  The two halves below.
 ShellPassResult calc_forces_for_shells(const Model& m, State& s);
+
+// The shells' unit of work in a distributed run (impact3d/parallel): a chunk of kLanes
+// consecutive shells of a group's order (one block of the block kernel; a group's last chunk
+// may be shorter), numbered group after group.  The number of chunks, and each shell's chunk.
+int num_shell_chunks(const ShellState& sh);
+std::vector<int> shell_chunk_of_shells(const ShellState& sh);
+
+// The first half: every shell's stresses, corner forces and moments, step and this pass's
+// energy increments (ShellState::de_ie, de_hg, dt_e, bad, failed 2); with owns_chunk (one
+// entry per chunk), only the shells of the marked chunks.
+void compute_shell_forces(State& s, const std::vector<std::uint8_t>* owns_chunk = nullptr);
+// The second half: the books over every shell, group by group in order (energies, the
+// smallest step, bad and non-finite shells, failures), from what the first half left.
+ShellPassResult book_shell_results(State& s);
 
 // omega^{n+1/2} = omega^{n-1/2} + dt^n (-sum of the corner moments) / I on the rotational
 // degrees of freedom, constrained components held (nodes of rigid bodies take the body's

@@ -1,5 +1,5 @@
 // The partition over MPI ranks and the ranks' domains (impact3d/parallel/partition.h): every
-// solid and every node owned once, the exchange lists of two neighbours the same on both
+// solid, every shell and every node owned once, the exchange lists of two neighbours the same on both
 // sides, the same partition run after run.  These run in any build; the METIS partitions are
 // skipped (with the reason) in a build without MPI and METIS.
 #include <gtest/gtest.h>
@@ -13,6 +13,7 @@
 #include "impact3d/input/deck_reader.h"
 #include "impact3d/parallel/comm.h"
 #include "impact3d/parallel/partition.h"
+#include "impact3d/solve/shell_processing.h"
 
 using namespace impact3d;
 using namespace impact3d::parallel;
@@ -35,10 +36,10 @@ const Loaded& deck(const std::string& name) {
   return l;
 }
 
-// Blocks in runs of `run` blocks per rank, round robin: a partition without METIS that still
-// has many shared nodes.
+// Units (solid blocks, then shell chunks) in runs of `run` per rank, round robin: a partition
+// without METIS that still has many shared nodes.
 std::vector<int> striped(const State& s, int nranks, int run) {
-  std::vector<int> r(s.slot_elem.size() / kLanes);
+  std::vector<int> r(s.slot_elem.size() / kLanes + std::size_t(num_shell_chunks(s.shells)));
   for (std::size_t b = 0; b < r.size(); ++b) r[b] = int(b / std::size_t(run)) % nranks;
   return r;
 }
@@ -56,7 +57,18 @@ void check_domains(const State& s, const std::vector<int>& block_rank, int nrank
       EXPECT_EQ(block_rank[std::size_t(s.elem_slot[std::size_t(e)]) / kLanes], dr.rank);
     }
   for (int e = 0; e < s.ne; ++e) EXPECT_GE(elem_owner[std::size_t(e)], 0) << "solid " << e << " owned by none";
-  // every node owned once, by the lowest rank of the solids around it
+  // every shell owned once, by the rank of its chunk
+  const std::size_t nb = s.slot_elem.size() / kLanes;
+  const std::vector<int> chunk = shell_chunk_of_shells(s.shells);
+  std::vector<int> shell_owner(std::size_t(s.shells.ns), -1);
+  for (const Domain& dr : d)
+    for (int k : dr.owned_shells) {
+      ASSERT_EQ(shell_owner[std::size_t(k)], -1) << "shell " << k << " owned twice";
+      shell_owner[std::size_t(k)] = dr.rank;
+      EXPECT_EQ(block_rank[nb + std::size_t(chunk[std::size_t(k)])], dr.rank);
+    }
+  for (int k = 0; k < s.shells.ns; ++k) EXPECT_GE(shell_owner[std::size_t(k)], 0) << "shell " << k << " owned by none";
+  // every node owned once, by the lowest rank of the solids and shells around it
   std::vector<int> node_owner(std::size_t(s.nn), -1);
   for (const Domain& dr : d) {
     EXPECT_TRUE(std::is_sorted(dr.owned_nodes.begin(), dr.owned_nodes.end()));
@@ -69,13 +81,19 @@ void check_domains(const State& s, const std::vector<int>& block_rank, int nrank
   for (int e = 0; e < s.ne; ++e)
     for (int n : s.conn[std::size_t(e)])
       lowest[std::size_t(n)] = std::min(lowest[std::size_t(n)], elem_owner[std::size_t(e)]);
+  for (int k = 0; k < s.shells.ns; ++k)
+    for (int n : s.shells.conn[std::size_t(k)])
+      lowest[std::size_t(n)] = std::min(lowest[std::size_t(n)], shell_owner[std::size_t(k)]);
   for (int n = 0; n < s.nn; ++n)
     EXPECT_EQ(node_owner[std::size_t(n)], lowest[std::size_t(n)] == nranks ? 0 : lowest[std::size_t(n)]);
   for (const Domain& dr : d) {
-    // ghosts: the nodes of the rank's solids that another rank owns
+    // ghosts: the nodes of the rank's solids and shells that another rank owns
     std::set<int> ghosts;
     for (int e : dr.owned_elems)
       for (int n : s.conn[std::size_t(e)])
+        if (node_owner[std::size_t(n)] != dr.rank) ghosts.insert(n);
+    for (int k : dr.owned_shells)
+      for (int n : s.shells.conn[std::size_t(k)])
         if (node_owner[std::size_t(n)] != dr.rank) ghosts.insert(n);
     EXPECT_EQ(std::vector<int>(ghosts.begin(), ghosts.end()), dr.ghost_nodes);
     std::set<int> received;
@@ -101,10 +119,12 @@ void check_domains(const State& s, const std::vector<int>& block_rank, int nrank
       }
     }
     EXPECT_EQ(std::vector<int>(received.begin(), received.end()), dr.ghost_nodes);
-    // every corner at an owned node is the rank's own or received
+    // every solid corner at an owned node is the rank's own or received (the shells' corners
+    // go to every rank)
     for (int n : dr.owned_nodes)
       for (int c = s.corner_start[std::size_t(n)]; c < s.corner_start[std::size_t(n) + 1]; ++c) {
         const int cc = s.corner_list[std::size_t(c)];
+        if (s.corner_element(std::size_t(cc)) < 0) continue;
         const int owner = elem_owner[std::size_t(s.corner_element(std::size_t(cc)))];
         if (owner == dr.rank) continue;
         const Peer* p = nullptr;
@@ -138,13 +158,27 @@ TEST(Partition, BlockGraphIsSymmetricWithSolidWeights) {
 }
 
 TEST(Partition, DomainsOfStripedBlocksAreConsistent) {
-  for (const char* name : {"taylor_bar.dyn", "two_bars.dyn"}) {
+  for (const char* name : {"taylor_bar.dyn", "two_bars.dyn", "../tests/parallel/shell_tube.k"}) {
     const State& s = deck(name).state;
     for (int nranks : {1, 2, 3, 4}) {
       SCOPED_TRACE(std::string(name) + " on " + std::to_string(nranks) + " ranks");
       check_domains(s, striped(s, nranks, 3), nranks);
     }
   }
+}
+
+TEST(Partition, ShellChunksAreVerticesAfterTheBlocks) {
+  const State& s = deck("../tests/parallel/shell_tube.k").state;
+  const BlockGraph g = block_graph(s);
+  const std::size_t nb = s.slot_elem.size() / kLanes, nc = std::size_t(num_shell_chunks(s.shells));
+  ASSERT_EQ(nb, 3u);   // the collar's 24 solids
+  ASSERT_EQ(nc, 48u);  // 144, 144 and 96 shells in three groups, 8 a chunk
+  ASSERT_EQ(g.vwgt.size(), nb + nc);
+  for (std::size_t c = 0; c < nc; ++c) EXPECT_EQ(g.vwgt[nb + c], kShellCost * kLanes);
+  // the collar's blocks touch the first rows' shell chunks (nodes shared by solids and shells)
+  bool solid_shell_edge = false;
+  for (int k = g.xadj[0]; k < g.xadj[1]; ++k) solid_shell_edge = solid_shell_edge || g.adjncy[std::size_t(k)] >= int(nb);
+  EXPECT_TRUE(solid_shell_edge);
 }
 
 TEST(Partition, OneRankOwnsEverythingAndExchangesNothing) {
@@ -158,7 +192,7 @@ TEST(Partition, OneRankOwnsEverythingAndExchangesNothing) {
 
 TEST(Partition, MetisKwayIsConsistentBalancedAndRepeatable) {
   if (!built_with_mpi()) GTEST_SKIP() << "this build has no MPI and METIS (CMake option IMPACT3D_MPI off)";
-  for (const char* name : {"taylor_bar.dyn", "two_bars.dyn"}) {
+  for (const char* name : {"taylor_bar.dyn", "two_bars.dyn", "../tests/parallel/shell_tube.k"}) {
     const State& s = deck(name).state;
     const BlockGraph g = block_graph(s);
     for (int nranks : {2, 3, 4}) {
@@ -169,9 +203,11 @@ TEST(Partition, MetisKwayIsConsistentBalancedAndRepeatable) {
       check_domains(s, part, nranks);
       const PartitionSummary p = summarize_partition(s, g, part, nranks);
       EXPECT_LT(p.imbalance, 1.1);  // METIS's default tolerance is 1.03 on the weights
-      long solids = 0;
+      long solids = 0, shells = 0;
       for (int n : p.solids) solids += n;
+      for (int n : p.shells) shells += n;
       EXPECT_EQ(solids, s.ne);
+      EXPECT_EQ(shells, s.shells.ns);
     }
   }
 }
