@@ -449,7 +449,9 @@ class KeywordWriter {
   void tied_contacts() {
     for (const TiedContact& tc : m_.tied_contacts) {
       const int a = node_set(tc.slave_nodes), b = segment_set(tc.master);
-      const std::string kw = tc.spotweld ? "*CONTACT_SPOTWELD" : "*CONTACT_TIED_NODES_TO_SURFACE";
+      const std::string kw = tc.torsion    ? "*CONTACT_SPOTWELD_WITH_TORSION"
+                             : tc.spotweld ? "*CONTACT_SPOTWELD"
+                                           : "*CONTACT_TIED_NODES_TO_SURFACE";
       os_ << (tc.id ? kw + "_ID\n" + kcard({I(tc.id)}) + "\n" : kw + "\n");
       os_ << "$#   surfa     surfb  surfatyp  surfbtyp\n" << kcard({I(a), I(b), I(4), I(0)}) << "\n";
       os_ << "$#      fs        fd        dc\n" << kcard({R(0), R(0), R(0)}) << "\n";

@@ -301,7 +301,8 @@ void keep_segments_in_box(ResolveContext& rc, const RSide& side, bool slave, con
 // the ties (contact/tied_nodes.h); slave nodes out of every segment's reach warning 2015.
 void resolve_tied_contact(ResolveContext& rc, const RContact& c) {
   TiedContact tc;
-  tc.spotweld = c.tied == 2;
+  tc.spotweld = c.tied >= 2;
+  tc.torsion = c.tied == 3;
   tc.id = c.cid;
   tc.line = c.ref.line ? c.ref.line->number : 0;
   tc.tolerance = c.sast < 0 ? -c.sast : 0.0;

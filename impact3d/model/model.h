@@ -259,6 +259,7 @@ struct SpotWeld {
 // a NodeTie per tied node.
 struct TiedContact {
   bool spotweld = false;                      // *CONTACT_SPOTWELD (else _TIED_NODES_TO_SURFACE)
+  bool torsion = false;                       // *CONTACT_SPOTWELD_WITH_TORSION (spotweld too)
   int id = 0;                                 // the _ID card's CID (0: none)
   std::vector<int> slave_nodes;               // 0-based, sorted, unique
   std::vector<std::array<int, 4>> master;     // master segments (0-based nodes)

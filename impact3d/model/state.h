@@ -51,6 +51,14 @@ struct TieState {
   std::vector<std::array<int, 4>> tie_master;
   std::vector<std::array<double, 4>> w;
   std::vector<std::uint8_t> turns;
+  // How a turning tie treats the rotation about its segment's normal: 0 tied as the others
+  // (*CONTACT_TIED_NODES_TO_SURFACE), 1 the slave's own (*CONTACT_SPOTWELD), 2 the segment's
+  // in-plane spin (*CONTACT_SPOTWELD_WITH_TORSION); solve/node_ties.h.
+  std::vector<std::uint8_t> twist;
+  // Per tie, from the segment at x^n (tie_translations): its unit normal and the spin weights
+  // g_a (omega . n = sum_a g_a . v_a); recomputed every cycle, not in restart dumps.
+  std::vector<std::array<double, 3>> normal;
+  std::vector<std::array<double, 12>> spin;
   std::vector<double> fx, fy, fz, m;
   std::vector<double> mx, my, mz, j;
   std::vector<double> wx0, wy0, wz0;

@@ -1,6 +1,7 @@
 #include "impact3d/solve/node_ties.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "impact3d/solve/shell_processing.h"
 
@@ -25,7 +26,51 @@ void net_moment(const State& s, int q, double M[3]) {
   }
 }
 
-// The slaves' angular velocities from their masters' (the ties that turn).
+// The segment of tie t at the current positions: its unit normal (the diagonals' cross product)
+// and the spin weights g_a = n x r_a / sum_b |n x r_b|^2, r_a from the centre of its distinct
+// nodes: sum_a g_a . v_a is the segment's rate of turning about n (exact for a rigid motion of
+// a flat segment), sum_a g_a = 0, and forces T g_a on its nodes are a couple T n.
+void tie_geometry(State& s, std::size_t t) {
+  TieState& ts = s.ties;
+  double X[4][3], c[3] = {0, 0, 0};
+  const std::array<int, 4>& idx = ts.tie_master[t];
+  const int distinct = idx[3] == idx[2] ? 3 : 4;
+  for (int a = 0; a < 4; ++a) {
+    const std::size_t k = std::size_t(ts.masters[std::size_t(idx[std::size_t(a)])]);
+    X[a][0] = s.x[k], X[a][1] = s.y[k], X[a][2] = s.z[k];
+  }
+  for (int a = 0; a < distinct; ++a)
+    for (int i = 0; i < 3; ++i) c[i] += X[a][i] / distinct;
+  const double d1[3] = {X[2][0] - X[0][0], X[2][1] - X[0][1], X[2][2] - X[0][2]};
+  const double d2[3] = {X[3][0] - X[1][0], X[3][1] - X[1][1], X[3][2] - X[1][2]};
+  double n[3] = {d1[1] * d2[2] - d1[2] * d2[1], d1[2] * d2[0] - d1[0] * d2[2], d1[0] * d2[1] - d1[1] * d2[0]};
+  const double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+  for (double& v : n) v /= len;
+  double g[4][3] = {}, sum = 0;
+  for (int a = 0; a < distinct; ++a) {
+    const double r[3] = {X[a][0] - c[0], X[a][1] - c[1], X[a][2] - c[2]};
+    g[a][0] = n[1] * r[2] - n[2] * r[1], g[a][1] = n[2] * r[0] - n[0] * r[2], g[a][2] = n[0] * r[1] - n[1] * r[0];
+    sum += g[a][0] * g[a][0] + g[a][1] * g[a][1] + g[a][2] * g[a][2];
+  }
+  for (int i = 0; i < 3; ++i) ts.normal[t][std::size_t(i)] = n[i];
+  for (int a = 0; a < 4; ++a)
+    for (int i = 0; i < 3; ++i) ts.spin[t][std::size_t(3 * a + i)] = g[a][i] / sum;
+}
+
+// The segment's rate of turning about its normal: sum_a g_a . v_a.
+double segment_spin(const State& s, std::size_t t) {
+  const TieState& ts = s.ties;
+  double w = 0;
+  for (int a = 0; a < 4; ++a) {
+    const std::size_t k = std::size_t(ts.masters[std::size_t(ts.tie_master[t][std::size_t(a)])]);
+    const double* g = &ts.spin[t][std::size_t(3 * a)];
+    w += g[0] * s.vx[k] + g[1] * s.vy[k] + g[2] * s.vz[k];
+  }
+  return w;
+}
+
+// The slaves' angular velocities from their masters' (the ties that turn): the weights' mix;
+// about the segment's normal, for a spot weld, the slave's own (1) or the segment's spin (2).
 void tie_slave_rotations(State& s) {
   const TieState& ts = s.ties;
   ShellState& sh = s.shells;
@@ -37,6 +82,12 @@ void tie_slave_rotations(State& s) {
       const std::size_t r = std::size_t(rot_of(s, ts.masters[std::size_t(ts.tie_master[t][std::size_t(a)])]));
       const double c = ts.w[t][std::size_t(a)];
       w[0] += c * sh.wx[r], w[1] += c * sh.wy[r], w[2] += c * sh.wz[r];
+    }
+    if (ts.twist[t]) {
+      const double* n = ts.normal[t].data();
+      const double about = ts.twist[t] == 1 ? n[0] * sh.wx[q] + n[1] * sh.wy[q] + n[2] * sh.wz[q] : segment_spin(s, t);
+      const double mixed = n[0] * w[0] + n[1] * w[1] + n[2] * w[2];
+      for (int i = 0; i < 3; ++i) w[i] += (about - mixed) * n[i];
     }
     sh.wx[q] = w[0], sh.wy[q] = w[1], sh.wz[q] = w[2];
   }
@@ -63,7 +114,13 @@ void init_node_ties(const Model& m, State& s) {
     ts.tie_master.push_back(idx);
     ts.w.push_back(t.w);
     ts.turns.push_back(turns ? 1 : 0);
+    const TiedContact& tc = m.tied_contacts[std::size_t(t.contact)];
+    ts.twist.push_back(!turns || !tc.spotweld ? 0 : tc.torsion ? 2 : 1);
   }
+  ts.normal.assign(ts.slave.size(), {});
+  ts.spin.assign(ts.slave.size(), {});
+  for (std::size_t t = 0; t < ts.slave.size(); ++t)
+    if (ts.twist[t]) tie_geometry(s, t);
   const std::size_t nm = ts.masters.size();
   for (auto* v : {&ts.fx, &ts.fy, &ts.fz, &ts.m, &ts.mx, &ts.my, &ts.mz, &ts.j, &ts.wx0, &ts.wy0, &ts.wz0}) v->assign(nm, 0.0);
   tie_slave_velocities(s);
@@ -84,6 +141,18 @@ void tie_translations(State& s, double dt_n) {
       const std::size_t i = std::size_t(ts.tie_master[t][std::size_t(a)]);
       const double w = ts.w[t][std::size_t(a)];
       ts.fx[i] += w * s.fx[k], ts.fy[i] += w * s.fy[k], ts.fz[i] += w * s.fz[k], ts.m[i] += w * s.mass[k];
+    }
+    if (!ts.twist[t]) continue;
+    tie_geometry(s, t);
+    if (ts.twist[t] != 2) continue;
+    // the slave's moment about the normal as the couple T g_a on the segment's nodes
+    double M[3];
+    net_moment(s, rot_of(s, ts.slave[t]), M);
+    const double T = M[0] * ts.normal[t][0] + M[1] * ts.normal[t][1] + M[2] * ts.normal[t][2];
+    for (int a = 0; a < 4; ++a) {
+      const std::size_t i = std::size_t(ts.tie_master[t][std::size_t(a)]);
+      const double* g = &ts.spin[t][std::size_t(3 * a)];
+      ts.fx[i] += T * g[0], ts.fy[i] += T * g[1], ts.fz[i] += T * g[2];
     }
   }
   for (std::size_t a = 0; a < ts.masters.size(); ++a) {
@@ -139,6 +208,11 @@ void tie_rotations(State& s, double dt_n) {
     if (!ts.turns[t]) continue;
     const int q = rot_of(s, ts.slave[t]);
     net_moment(s, q, M);
+    if (ts.twist[t]) {  // a spot weld: the moment about the normal is not the masters' rotations'
+      const double* n = ts.normal[t].data();
+      const double about = M[0] * n[0] + M[1] * n[1] + M[2] * n[2];
+      for (int i = 0; i < 3; ++i) M[i] -= about * n[i];
+    }
     for (int a = 0; a < 4; ++a) {
       const std::size_t i = std::size_t(ts.tie_master[t][std::size_t(a)]);
       const double w = ts.w[t][std::size_t(a)];

@@ -6,7 +6,12 @@
 // slave's velocity is the weights' mix of theirs: momentum is kept exactly (sum_a w_a = 1).  Where
 // the slave and all four master nodes have rotational degrees of freedom (a weld beam's end on
 // shells), the rotations are tied the same way (rotary inertias and moments shared by the
-// weights, omega_s = sum_a w_a omega_a).
+// weights, omega_s = sum_a w_a omega_a), except, for a spot weld, about the segment's normal n:
+// *CONTACT_SPOTWELD leaves that component the slave's own (the weld's torsion is not passed to
+// the sheet: its moment about n stays with it), *CONTACT_SPOTWELD_WITH_TORSION ties it to the
+// segment's in-plane spin, omega_s . n = sum_a g_a . v_a, and passes the moment T about n to the
+// segment's nodes as the couple f_a = T g_a (sum_a g_a = 0: momentum kept; a rigid turn of a
+// flat segment about n has spin its rate).
 
 #include "impact3d/model/model.h"
 #include "impact3d/model/state.h"

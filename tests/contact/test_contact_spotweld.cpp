@@ -44,7 +44,10 @@ std::string fmt(const char* f, double a, double b = 0, double c = 0, double d = 
   return buf;
 }
 
-enum class Load { cross_tension, lap_shear, upper_moving, all_moving };
+enum class Load { cross_tension, lap_shear, upper_moving, all_moving, twist, upper_spinning };
+
+constexpr double kTwist = 1e-3, kTwistRamp = 1e-3;  // the upper sheet's turn (rad) and its ramp (s)
+constexpr double kSpin = 100;                       // the upper sheet's spin about the weld (rad/s)
 
 // contact: the tied-contact keyword and its cards (empty: *CONTACT_SPOTWELD, beams' part 2 on
 // the sheets' part 1); end_z: where the lower beam end lies (0: on the lower sheet).
@@ -87,6 +90,23 @@ std::string sheets_deck(Load load, double end_time, const std::string& contact =
     for (int q = 0; q <= kN; ++q) d << fmt("%10.0f         1         1", node_id(1, kN, q)) << fmt("%10.6f\n", share);
     d << "*BOUNDARY_SPC_NODE\n";
     for (int q = 0; q <= kN; ++q) d << fmt("%10.0f         0         1         1         1         1         1         1\n", node_id(0, 0, q));
+  } else if (load == Load::twist) {  // the lower sheet held, the upper one turned about the weld's axis
+    d << "*BOUNDARY_SPC_NODE\n";
+    for (int j = 0; j <= kN; ++j)
+      for (int i = 0; i <= kN; ++i) d << fmt("%10.0f         0         1         1         1         1         1         1\n", node_id(0, i, j));
+    d << "*SET_NODE_LIST\n         7\n";
+    for (int j = 0; j <= kN; ++j)
+      for (int i = 0; i <= kN; ++i) d << fmt("%10.0f", node_id(1, i, j)) << ((i + (kN + 1) * j) % 8 == 7 ? "\n" : "");
+    d << "\n*DEFINE_CURVE\n         2\n                 0.0                 0.0\n" << fmt("%20.6g%20.6g\n", kTwistRamp, kTwist)
+      << fmt("%20.6g%20.6g\n", 1.0, kTwist);
+    d << "*BOUNDARY_PRESCRIBED_MOTION_SET\n         7        11         2         2       1.0\n" << fmt("%10.6g%10.6g\n", kSide / 2, kSide / 2);
+  } else if (load == Load::upper_spinning) {  // the upper sheet turning about the weld's axis, rigidly
+    d << "*INITIAL_VELOCITY_NODE\n";
+    for (int j = 0; j <= kN; ++j)
+      for (int i = 0; i <= kN; ++i) {
+        const double x = kSide * i / kN - kSide / 2, y = kSide * j / kN - kSide / 2;
+        d << fmt("%10.0f", node_id(1, i, j)) << fmt("%10.6g%10.6g       0.0", -kSpin * y, kSpin * x) << fmt("       0.0       0.0%10.6g\n", kSpin);
+      }
   } else {
     d << "*INITIAL_VELOCITY_NODE\n";
     for (int sheet = 0; sheet < 2; ++sheet)
@@ -99,6 +119,8 @@ std::string sheets_deck(Load load, double end_time, const std::string& contact =
   d << "*END\n";
   return d.str();
 }
+
+const std::string kTorsion = "*CONTACT_SPOTWELD_WITH_TORSION\n         2         1         3         3\n\n\n";
 
 using Read = test_support::ReadDeck;
 Read read_text(const std::string& text) { return test_support::read_deck_text(text, "tied.k"); }
@@ -300,4 +322,119 @@ TEST(ContactSpotweld, ConverterRoundTrip) {
     for (int k = 0; k < 4; ++k) EXPECT_NEAR(b.m.node_ties[t].w[std::size_t(k)], a.m.node_ties[t].w[std::size_t(k)], 1e-12);
   }
   EXPECT_TRUE(b.m.tied_contacts[0].spotweld);
+}
+
+namespace {
+
+// Angular momentum about the weld's axis (z through the sheets' centre) of the nodes whose id
+// passes `which` (translations and rotary inertias).
+template <class Which>
+double axial_momentum(const Model& m, const State& s, Which which) {
+  double L = 0;
+  for (int i = 0; i < m.num_nodes(); ++i) {
+    if (!which(m.node_id(i))) continue;
+    const std::size_t k = std::size_t(i);
+    L += s.mass[k] * ((s.x[k] - kSide / 2) * s.vy[k] - (s.y[k] - kSide / 2) * s.vx[k]);
+    const int q = s.shells.node_rot.empty() ? -1 : s.shells.node_rot[k];
+    if (q >= 0) L += s.shells.inertia[std::size_t(q)] * s.shells.wz[std::size_t(q)];
+  }
+  return L;
+}
+
+// The twist run: the weld's torque (beam resultant T) when the upper sheet has turned kTwist.
+struct TwistRun {
+  double torque = 0, ratio = 0, time = 0;
+  long cycles = 0;
+};
+TwistRun run_twist(const std::string& contact) {
+  Read r = read_text(sheets_deck(Load::twist, 2 * kTwistRamp, contact));
+  EXPECT_TRUE(r.ok) << r.messages();
+  TwistRun out;
+  if (!r.ok) return out;
+  Engine e(r.m);
+  EXPECT_EQ(e.initialize(), StepStatus::ok);
+  const State& s = e.state();
+  while (e.step() == StepStatus::ok) {
+  }
+  out.torque = s.beams.res[3], out.ratio = s.energy_ratio(), out.time = s.time, out.cycles = s.cycle;
+  return out;
+}
+
+}  // namespace
+
+// Twist about the weld's axis (issue 24): the lower sheet held, the upper one turned rigidly by
+// kTwist about the beam.  *CONTACT_SPOTWELD_WITH_TORSION ties each weld end's rotation about its
+// sheet's normal to the sheet's in-plane spin: the beam is twisted by kTwist over its length and
+// carries T = G (I_s + I_t) kTwist / L (St-Venant torsion of the Hughes-Liu section, the 2 x 2
+// Gauss points exact for a square: I_s + I_t = b^4 / 6); plain *CONTACT_SPOTWELD leaves that
+// rotation the weld's own: the same turn leaves it untwisted, T = 0.  (The energy balance of the
+// torsion form is TorsionFormPassesSpinKeepingMomentum's: here the prescribed motion's and the
+// strain energies are small against the sheets' own dynamics after the ramp stops.)
+TEST(ContactSpotweld, TorsionFormCarriesTheTorqueThePlainFormDoesNot) {
+  const double G = 2.1e11 / (2 * 1.3), b = 0.005, J = b * b * b * b / 6;
+  const double T = G * J * kTwist / kGap;
+  const TwistRun with = run_twist(kTorsion), plain = run_twist("");
+  std::printf("[ measured ] twist %.3g rad about the weld: _WITH_TORSION torque %.6g N m (G J theta / L = %.6g, %+.4f %%), energy ratio "
+              "%.6f; plain *CONTACT_SPOTWELD torque %.3g N m (%.3g of it), energy ratio %.6f; %ld cycles to %.4g ms\n",
+              kTwist, with.torque, T, 100 * (with.torque / T - 1), with.ratio, plain.torque, plain.torque / T, plain.ratio, with.cycles,
+              with.time * 1e3);
+  EXPECT_NEAR(std::fabs(with.torque) / T, 1.0, 0.005);
+  EXPECT_LT(std::fabs(plain.torque), 1e-6 * T);
+}
+
+// Free sheets, the upper one spinning about the weld's axis at kSpin: with the torsion form the
+// weld passes the spin to the lower sheet (its angular momentum about the axis grows from 0), the
+// momentum of all nodes stays 0 to round-off and the angular momentum about the axis is kept;
+// with the plain form the lower sheet gets none of it.  KE + IE = KE0.
+TEST(ContactSpotweld, TorsionFormPassesSpinKeepingMomentum) {
+  for (const bool torsion : {true, false}) {
+    Read r = read_text(sheets_deck(Load::upper_spinning, 1e-3, torsion ? kTorsion : ""));
+    ASSERT_TRUE(r.ok) << r.messages();
+    Engine e(r.m);
+    ASSERT_EQ(e.initialize(), StepStatus::ok);
+    const State& s = e.state();
+    auto all = [](int) { return true; };
+    auto lower = [](int id) { return id < 100 || id == kLowerEnd; };
+    const double L0 = axial_momentum(r.m, s, all);
+    double scale = 0;
+    for (std::size_t k = 0; k < s.mass.size(); ++k) scale += s.mass[k] * std::hypot(s.vx[k], s.vy[k]);
+    double dp = 0, dL = 0, lower_max = 0;
+    while (e.step() == StepStatus::ok) {
+      const std::array<double, 3> p = momentum(s);
+      dp = std::max({dp, std::fabs(p[0]), std::fabs(p[1]), std::fabs(p[2])});
+      dL = std::max(dL, std::fabs(axial_momentum(r.m, s, all) - L0));
+      lower_max = std::max(lower_max, std::fabs(axial_momentum(r.m, s, lower)));
+    }
+    std::printf("[ measured ] spinning upper sheet, %s: momentum at most %.3g of sum m|v|; angular momentum about the weld %.6g N m s, "
+                "change at most %.3g of it; the lower sheet's at most %.4g of it; energy ratio %.6f (%ld cycles)\n",
+                torsion ? "_WITH_TORSION" : "plain", dp / scale, L0, dL / L0, lower_max / L0, s.energy_ratio(), long(s.cycle));
+    EXPECT_LT(dp, 1e-12 * scale);
+    EXPECT_NEAR(s.energy_ratio(), 1.0, 0.01);
+    if (torsion) {
+      EXPECT_LT(dL, 1e-3 * L0);
+      EXPECT_GT(lower_max, 0.2 * L0);
+    } else {
+      EXPECT_LT(lower_max, 1e-3 * L0);
+    }
+  }
+}
+
+// The torsion form: the same bits for 1 and 2 threads; the converter writes it back as
+// *CONTACT_SPOTWELD_WITH_TORSION.
+TEST(ContactSpotweld, TorsionFormThreadsAndConverter) {
+  Read r = read_text(sheets_deck(Load::upper_spinning, 3e-4, kTorsion));
+  ASSERT_TRUE(r.ok) << r.messages();
+  ASSERT_TRUE(r.m.tied_contacts[0].torsion && r.m.tied_contacts[0].spotweld);
+  const State a = test_support::run_to_end_on_threads(r.m, 1), b = test_support::run_to_end_on_threads(r.m, 2);
+  EXPECT_EQ(a.x, b.x);
+  EXPECT_EQ(a.vy, b.vy);
+  EXPECT_EQ(a.shells.wz, b.shells.wz);
+  std::ostringstream out;
+  std::vector<std::string> notes;
+  write_keyword_deck(out, r.m, &notes);
+  EXPECT_NE(out.str().find("*CONTACT_SPOTWELD_WITH_TORSION"), std::string::npos);
+  Read back = read_text(out.str());
+  ASSERT_TRUE(back.ok) << back.messages();
+  EXPECT_TRUE(back.m.tied_contacts[0].torsion);
+  EXPECT_EQ(back.m.node_ties.size(), r.m.node_ties.size());
 }
