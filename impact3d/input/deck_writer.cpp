@@ -606,7 +606,7 @@ class KeywordWriter {
       const bool rigid = pm.node < 0;
       int dof = axis_of(pm.dir), vid = 0;
       if (pm.orbit) {
-        dof += 8;  // 9-11: turning about an axis along x y z
+        dof = (pm.radial_free ? -1 : 1) * (dof + 8);  // 9-11 (-11 to -9): turning about an axis along x y z
       } else if (dof == 0 || pm.hold_normal) {  // DOF 4 / 8 (-4 / -8) along or about a *DEFINE_VECTOR
         vid = next_vector++;
         const std::array<double, 3> h = vector_head(pm.dir);
@@ -1627,6 +1627,7 @@ void load_differences(const Model& a, const Model& b, Differences& d) {
     d.N(w + "rotation", x.rotation ? 1 : 0, y.rotation ? 1 : 0);
     d.N(w + "normal held", x.hold_normal ? 1 : 0, y.hold_normal ? 1 : 0);
     d.N(w + "turning about an axis", x.orbit ? 1 : 0, y.orbit ? 1 : 0);
+    d.N(w + "distance from the axis free", x.radial_free ? 1 : 0, y.radial_free ? 1 : 0);
     for (std::size_t a = 0; a < 3; ++a) d.D(w + "axis point " + "xyz"[a], x.center[a], y.center[a]);
     curve_differs(w, x.curve, y.curve);
     d.D(w + "scale", x.scale, y.scale);

@@ -401,13 +401,13 @@ KeywordSpec prescribed_motion(const char* name, const char* id, bool rigid) {
     dof.push_back(inside(-4, -4, 0, nullptr));  // along VID, the normal plane held
     dof.push_back(outside(1, 8, 1006, "1-3 x y z, 4 / -4 along VID, 5-7 rotations about x y z, 8 / -8 about VID"));
   } else {
-    dof.push_back(inside(-11, -9, 1102, "DOF -11 to -9 (turning about an axis with radial motion; its card 2 is skipped)"));
+    dof.push_back(inside(-11, -9, 0, nullptr));  // turning about an axis, its distance from it free
     dof.push_back(inside(-8, -8, 0, nullptr));  // about VID, the other rotations held
     dof.push_back(inside(-4, -4, 0, nullptr));  // along VID, the normal plane held
     dof.push_back(outside(1, 11, 1006, "1-3 x y z, 4 / -4 along VID, 5-7 rotations about x y z, 8 / -8 about VID, 9-11 turning about an axis along x y z"));
   }
   const char* dof_text = rigid ? "1-3 x y z, 4 along VID (-4: normal plane held), 5-7 rotation about x y z, 8 about VID (-8: other rotations held)"
-                               : "1-3 x y z, 4 along VID (-4: normal plane held), 5-7 rotation about x y z and 8 about VID (-8: other rotations held) of a shell or beam node, 9-11 turning about an axis along x y z through OFFSET1, OFFSET2";
+                               : "1-3 x y z, 4 along VID (-4: normal plane held), 5-7 rotation about x y z and 8 about VID (-8: other rotations held) of a shell or beam node, 9-11 turning about an axis along x y z through OFFSET1, OFFSET2 (-11 to -9: its distance from the axis free)";
   std::vector<KeywordCardLayout> cards = {
       {"", 8, 10, per_field, {
           {id, 0, I, 0, false, {}, rigid ? "part (a *MAT_RIGID part)" : "node or node set"},

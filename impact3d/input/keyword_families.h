@@ -198,8 +198,9 @@ void select_case(std::vector<Block>& blocks, const CaseSections& sections, int w
 // *DEFINE_VECTOR; DOF 5-8 and -8 are rotations (rigid bodies)
 inline bool motion_along_vector(int dof) { return dof == 4 || dof == -4 || dof == 8 || dof == -8; }
 inline bool motion_is_rotation(int dof) { return (dof >= 5 && dof <= 8) || dof == -8; }
-// DOF 9-11: a node turning about an axis along x, y, z through card 2's OFFSET1, OFFSET2
-inline bool motion_is_orbit(int dof) { return dof >= 9 && dof <= 11; }
+// DOF 9-11: a node turning about an axis along x, y, z through card 2's OFFSET1, OFFSET2;
+// -11 to -9 the same with its distance from the axis free (radial motion allowed)
+inline bool motion_is_orbit(int dof) { return (dof >= 9 && dof <= 11) || (dof >= -11 && dof <= -9); }
 // A *BOUNDARY_PRESCRIBED_MOTION_NODE / _SET record's kind of motion: a rotation (DOF 5-8, -8)
 // or turning about the axis through card 2's point (DOF 9-11, PrescribedMotion::center).
 void set_node_motion_kind(const RLoad& l, PrescribedMotion& pm);

@@ -172,8 +172,6 @@ bool read_motion(const Block& b, KeywordContext& ctx, const KeywordSpec& s, std:
   l.death = death > 0 ? death : 1e28;
   l.birth = v["BIRTH"];
   if (l.death < l.birth) v.error(1003, "DEATH", "the death time comes before the birth time");
-  if (motion_is_orbit(l.dof) && vad == 1)
-    v.error(1102, "VAD", "1 with DOF 9-11 (a node turning about an axis takes its angular velocity, VAD 0, or its angle, VAD 2)");
   const bool card2 = motion_has_card2(l.dof, vad);
   if (card2 && kind != RLoad::motion_rigid && motion_is_orbit(l.dof) && vad != 4 && k + 1 < b.data.size()) {
     KeywordValues c2 = ctx.values(b, k + 1, s.card("card 2"));  // (LRB, NODE1, NODE2 not 0: error 1102)
@@ -189,8 +187,9 @@ bool read_motion(const Block& b, KeywordContext& ctx, const KeywordSpec& s, std:
 void set_node_motion_kind(const RLoad& l, PrescribedMotion& pm) {
   pm.rotation = motion_is_rotation(l.dof);
   pm.orbit = motion_is_orbit(l.dof);
+  pm.radial_free = pm.orbit && l.dof < 0;
   if (pm.orbit) {  // OFFSET1, OFFSET2: (y, z) about x, (z, x) about y, (x, y) about z
-    const std::size_t a = std::size_t(l.dof - 9);
+    const std::size_t a = std::size_t(std::abs(l.dof) - 9);
     pm.center[(a + 1) % 3] = l.offset1;
     pm.center[(a + 2) % 3] = l.offset2;
   }

@@ -376,7 +376,7 @@ bool load_direction(ResolveContext& rc, const RLoad& l, std::array<double, 3>& d
     return true;
   }
   // DOF 5-7: about x y z; 9-11: turning about an axis along x y z
-  d = axis_direction(motion && motion_is_rotation(l.dof) ? l.dof - 4 : motion && motion_is_orbit(l.dof) ? l.dof - 8 : l.dof);
+  d = axis_direction(motion && motion_is_rotation(l.dof) ? l.dof - 4 : motion && motion_is_orbit(l.dof) ? std::abs(l.dof) - 8 : l.dof);
   return global_direction(rc, l.cid, l.cid_ref, l.keyword, "CID", d);
 }
 

@@ -346,6 +346,9 @@ struct PrescribedMotion {      // *BOUNDARY_PRESCRIBED_MOTION_NODE / _SET / _RIG
   // the axis kept; the motion along the axis free); the curve is the angular velocity (kind
   // velocity) or the angle turned (displacement)
   bool orbit = false;
+  // LS-DYNA DOF -11 to -9: turning so, its distance from the axis free (the radial motion from
+  // the forces on the node and the centrifugal acceleration r omega^2)
+  bool radial_free = false;
   std::array<double, 3> center{};
   int curve = 0;
   double scale = 1;

@@ -166,7 +166,7 @@ void write_loads(std::ostream& os, const Model& m) {
     static const char* kinds[] = {"velocity", "acceleration", "displacement"};
     os << "     " << (pm.node >= 0 ? "node " + std::to_string(m.node_id(pm.node)) : "rigid body of material " + std::to_string(m.materials[std::size_t(pm.rigid_material)].number))
        << " " << (pm.rotation || pm.orbit ? "angular " : "") << kinds[int(pm.kind)] << (pm.rotation || pm.orbit ? " about " : " along ") << direction_text(pm.dir)
-       << (pm.orbit ? " through (" + fmt("%.6e", pm.center[0]) + ", " + fmt("%.6e", pm.center[1]) + ", " + fmt("%.6e", pm.center[2]) + "), turning about it" : "")
+       << (pm.orbit ? " through (" + fmt("%.6e", pm.center[0]) + ", " + fmt("%.6e", pm.center[1]) + ", " + fmt("%.6e", pm.center[2]) + "), turning about it" : "") << (pm.radial_free ? ", its distance from it free" : "")
        << (pm.hold_normal ? (pm.rotation ? " (other rotations held)" : " (normal plane held)") : "") << ": " << fmt("%.6e", pm.scale) << " x curve "
        << curve(pm.curve);
     if (pm.birth > 0) os << " from " << fmt("%.6e", pm.birth);

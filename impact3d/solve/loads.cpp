@@ -198,6 +198,7 @@ void apply_loads_to_nodes(const Model& m, State& s, LoadSet& loads, double t) {
 namespace {
 
 double dot3(const double* a, const std::array<double, 3>& d) { return a[0] * d[0] + a[1] * d[1] + a[2] * d[2]; }
+double dot3v(const double* a, const double* b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 
 // DOF -4 / -8: removes the components of v normal to d, the change into delta (3).
 void hold_normal_plane(const std::array<double, 3>& d, double* v, double* delta) {
@@ -229,29 +230,78 @@ void prescribe_node(const Model& m, State& s, LoadSet& loads, std::size_t j, dou
   s.vx[k] = v[0], s.vy[k] = v[1], s.vz[k] = v[2];
 }
 
+// The part of a vector normal to the unit axis d.
+void normal_part(const double* v, const std::array<double, 3>& d, double* out) {
+  const double along = dot3(v, d);
+  for (std::size_t a = 0; a < 3; ++a) out[a] = v[a] - along * d[a];
+}
+
+// How a node turning about an axis moved over the last step: the angle it turned (about d) and
+// the change of its distance from the axis, both per unit time, from r^n (normal to the axis)
+// and x^{n-1} = x^n - dt^{n-1/2} v^{n-1/2}; before the first step from v^{n-1/2} itself.
+struct OrbitRates {
+  double omega = 0, radial = 0;
+};
+OrbitRates last_orbit_rates(const State& s, std::size_t k, const std::array<double, 3>& d, const double* r) {
+  const double v_old[3] = {s.vx_old[k], s.vy_old[k], s.vz_old[k]};
+  double vn[3];
+  normal_part(v_old, d, vn);
+  const double rho = std::sqrt(dot3v(r, r));
+  OrbitRates w;
+  if (rho <= 0) return w;
+  const double dxr[3] = {d[1] * r[2] - d[2] * r[1], d[2] * r[0] - d[0] * r[2], d[0] * r[1] - d[1] * r[0]};
+  if (s.dt_half <= 0) {  // the first step: the rates of the initial velocity
+    w.omega = dot3v(vn, dxr) / (rho * rho);
+    w.radial = dot3v(vn, r) / rho;
+    return w;
+  }
+  const double h = s.dt_half;
+  const double p[3] = {r[0] - h * vn[0], r[1] - h * vn[1], r[2] - h * vn[2]};  // r^{n-1}
+  const double pxr[3] = {p[1] * r[2] - p[2] * r[1], p[2] * r[0] - p[0] * r[2], p[0] * r[1] - p[1] * r[0]};
+  w.omega = std::atan2(dot3(pxr, d), dot3v(p, r)) / h;
+  w.radial = (rho - std::sqrt(dot3v(p, p))) / h;
+  return w;
+}
+
 // A node turning about an axis (LS-DYNA DOF 9-11): its velocity normal to the axis carries it
 // from x^n to x^{n+1} on the circle about the axis (the distance from the axis kept), by the
-// angle omega dt (kind velocity: omega = the curve at t^{n+1/2}) or up to the angle the curve
-// gives at t^{n+1} (kind displacement); along the axis it moves freely.  The change of its
-// velocity goes to delta (the reaction's work).
+// angle omega dt (kind velocity: omega = the curve at t^{n+1/2}; acceleration: omega^{n-1/2} +
+// dt^n alpha(t^n)) or up to the angle the curve gives at t^{n+1} (kind displacement); along the
+// axis it moves freely.  DOF -11 to -9 (radial_free): its distance rho from the axis changes as
+// a free coordinate, rho-dot^{n+1/2} = rho-dot^{n-1/2} + dt^n (f_r / m + rho omega^2), f_r / m
+// the radial part of this cycle's velocity change from the forces.  The change of its velocity
+// goes to delta (the reaction's work).
 void prescribe_node_orbit(const Model& m, State& s, LoadSet& loads, std::size_t j, double t, double dt_n,
                           double dt_next) {
   const PrescribedMotion& pm = m.prescribed_motions[j];
   const auto& d = pm.dir;
   const std::size_t k = std::size_t(pm.node);
   const double r0[3] = {s.x[k] - pm.center[0], s.y[k] - pm.center[1], s.z[k] - pm.center[2]};
-  const double ra = dot3(r0, d);
-  const double r[3] = {r0[0] - ra * d[0], r0[1] - ra * d[1], r0[2] - ra * d[2]};  // from the axis
-  const double turn = prescribed_velocity(m, pm, t, dt_n, dt_next, 0.0, s.motion_angle[j]) * dt_next;
+  double r[3];
+  normal_part(r0, d, r);  // from the axis
+  const bool rates = pm.kind == MotionKind::acceleration || pm.radial_free;
+  const OrbitRates was = rates ? last_orbit_rates(s, k, d, r) : OrbitRates{};
+  const double omega = prescribed_velocity(m, pm, t, dt_n, dt_next, was.omega, s.motion_angle[j]);
+  const double turn = omega * dt_next;
   const double c = std::cos(turn), sn = std::sin(turn);
-  const double dxr[3] = {d[1] * r[2] - d[2] * r[1], d[2] * r[0] - d[0] * r[2], d[0] * r[1] - d[1] * r[0]};
+  double stretch = 1;  // rho^{n+1} / rho^n
   double* v[3] = {&s.vx[k], &s.vy[k], &s.vz[k]};
   const double v_free[3] = {*v[0], *v[1], *v[2]};
+  if (pm.radial_free) {
+    const double rho = std::sqrt(dot3v(r, r));
+    if (rho > 0) {
+      const double dv[3] = {v_free[0] - s.vx_old[k], v_free[1] - s.vy_old[k], v_free[2] - s.vz_old[k]};
+      const double w_n = 0.5 * (was.omega + omega);
+      const double rate = was.radial + dot3v(dv, r) / rho + dt_n * rho * w_n * w_n;
+      stretch = 1 + dt_next * rate / rho;
+    }
+  }
+  const double dxr[3] = {d[1] * r[2] - d[2] * r[1], d[2] * r[0] - d[0] * r[2], d[0] * r[1] - d[1] * r[0]};
   const double along = dot3(v_free, d);
   loads.free_velocity[j] = along;
   loads.active[j] = 1;
   for (std::size_t a = 0; a < 3; ++a) {
-    *v[a] = along * d[a] + ((c - 1) * r[a] + sn * dxr[a]) / dt_next;
+    *v[a] = along * d[a] + ((stretch * c - 1) * r[a] + stretch * sn * dxr[a]) / dt_next;
     loads.delta[3 * j + a] = *v[a] - v_free[a];
   }
   s.motion_angle[j] += turn;

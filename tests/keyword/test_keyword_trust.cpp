@@ -84,8 +84,8 @@ TEST(KeywordTrust, ShellPartTakesItsLcssCurveById) {
   EXPECT_EQ(c.f[3], 4.2e8);
 }
 
-// Defect 7: DOF -10 (nodes turning about an axis with radial motion, LS-DYNA's card 2 OFFSET1
-// OFFSET2 LRB NODE1 NODE2 follows) is refused by one error on DOF; its card 2 is skipped, and the next motion is
+// Defect 7: VAD 4 (relative displacement, LS-DYNA's card 2 OFFSET1 OFFSET2 LRB NODE1 NODE2
+// follows; DOF -10 before it was read) is refused by one error on VAD; its card 2 is skipped, and the next motion is
 // read from its own cards, with and without the _ID cards.  Before, the card 2 was read as the
 // next motion (nine 1001 errors on a real deck).
 TEST(KeywordTrust, RefusedMotionDofDoesNotShiftTheNextCards) {
@@ -94,14 +94,14 @@ TEST(KeywordTrust, RefusedMotionDofDoesNotShiftTheNextCards) {
       "$#      id                                                             heading\n"
       "         1rotation\n"
       "$#    nsid       dof       vad      lcid        sf       vid     death     birth\n"
-      "        30       -10         2        12       1.0\n"
+      "        30         2         4        12       1.0\n"
       "$# offset1   offset2       lrb     node1     node2\n"
       "       0.5       0.5         0         0         0\n"
       "         2pull\n"
       "        30         3         2        12       1.0\n";
   const std::string without_id =
       "*BOUNDARY_PRESCRIBED_MOTION_SET\n"
-      "        30       -11         0        12       1.0\n"
+      "        30         1         4        12       1.0\n"
       "       0.5       0.5\n"
       "        30         3         2        12       1.0\n";
   for (const std::string& extra : {with_id, without_id}) {
@@ -111,7 +111,7 @@ TEST(KeywordTrust, RefusedMotionDofDoesNotShiftTheNextCards) {
     const std::string msgs = messages(d);
     EXPECT_EQ(d.error_count(), 1) << msgs;
     EXPECT_EQ(d.count(1102), 1) << msgs;
-    EXPECT_NE(msgs.find("field \"DOF\""), std::string::npos) << msgs;
+    EXPECT_NE(msgs.find("field \"VAD\""), std::string::npos) << msgs;
     EXPECT_FALSE(d.has(1001)) << msgs;
     EXPECT_FALSE(d.has(1002)) << msgs;
   }
