@@ -8,6 +8,7 @@
 #include "impact3d/material/material_types.h"
 #include "impact3d/parallel/comm.h"
 #include "impact3d/solve/engine.h"
+#include "impact3d/solve/beam_processing.h"
 #include "impact3d/solve/shell_processing.h"
 
 namespace impact3d::parallel {
@@ -93,6 +94,43 @@ void visit_shell_record(State& s, std::size_t k, F&& f) {
 }
 constexpr std::size_t kShellRecord = 5 + 4 * 6;
 
+// Every value of beam b that changes in the cycle and is not in its BeamRecord (State::
+// visit_dynamic_fields' beam part; the spot welds' rings are refused).
+template <class F>
+void visit_beam(State& s, std::size_t b, F&& f) {
+  BeamState& bm = s.beams;
+  f(bm.length[b]);
+  for (std::size_t a = 0; a < 3; ++a) f(bm.e2[3 * b + a]);
+  for (std::size_t p = std::size_t(bm.ip_start[b]); p < std::size_t(bm.ip_start[b + 1]); ++p) {
+    for (std::size_t c = 0; c < 3; ++c) f(bm.sig[3 * p + c]);
+    f(bm.eps_rr[p]);
+    if (!bm.back.empty())
+      for (std::size_t c = 0; c < 6; ++c) f(bm.back[6 * p + c]);
+    if (!bm.eps_p.empty()) f(bm.eps_p[p]);
+    if (!bm.yielded.empty()) f(bm.yielded[p]);
+  }
+  for (std::size_t c = 0; c < 6; ++c) f(bm.res[6 * b + c]);
+  if (!bm.bs.empty())
+    for (std::size_t c = 0; c < 6; ++c) f(bm.bs[6 * b + c]);
+}
+
+// What every rank needs of beam b after the element pass (as a shell's record).
+template <class F>
+void visit_beam_record(State& s, std::size_t b, F&& f) {
+  BeamState& bm = s.beams;
+  ShellState& sh = s.shells;
+  f(bm.de_ie[b]);
+  f(bm.dt_e[b]);
+  f(bm.bad[b]);
+  f(bm.failed[b]);
+  for (std::size_t j = 0; j < 2; ++j) {
+    const std::size_t c = bm.corner_base + 2 * b + j, q = bm.moment_base + 2 * b + j;
+    f(s.cfx[c]), f(s.cfy[c]), f(s.cfz[c]);
+    f(sh.cmx[q]), f(sh.cmy[q]), f(sh.cmz[q]);
+  }
+}
+constexpr std::size_t kBeamRecord = 4 + 2 * 6;
+
 // A block's corner forces and its solids.
 template <class F>
 void visit_block(State& s, std::size_t b, F&& f) {
@@ -144,14 +182,17 @@ std::vector<int> displacements(const std::vector<int>& counts) {
 
 std::string distributed_refusal(const Model& m, int nranks) {
   std::vector<std::string> what;
-  if (!m.beam_nodes.empty()) what.push_back("beams");
   if (!m.interfaces.empty()) what.push_back("sliding interfaces");
   if (!m.force_transducers.empty()) what.push_back("force transducers");
   if (!m.tied_contacts.empty()) what.push_back("tied contacts");
-  bool rigid = !m.spot_welds.empty(), failure = m.control.erode_small_steps, shell_failure = false;
+  bool rigid = !m.spot_welds.empty(), failure = m.control.erode_small_steps, shell_failure = false,
+       weld_beams = false;
   for (const MaterialData& md : m.materials) {
-    if (md.beam) continue;
     if (material_type(md.type).rigid) rigid = true;
+    if (md.beam) {
+      weld_beams = weld_beams || md.type == 100;  // *MAT_SPOTWELD: its failure rule deletes beams
+      continue;
+    }
     const MaterialConstants mc = derive_constants(md, m);
     if (md.shell) {
       if (mc.fail_strain > 0 || mc.shell_tdel > 0) shell_failure = true;
@@ -164,21 +205,23 @@ std::string distributed_refusal(const Model& m, int nranks) {
   if (rigid) what.push_back("rigid bodies");
   if (failure) what.push_back("solid failure or erosion");
   if (shell_failure) what.push_back("shell failure (FS, FAIL, TDEL)");
+  if (weld_beams) what.push_back("spot-weld beams (*MAT_SPOTWELD)");
   if (m.has_loads() || !m.prescribed_motions.empty()) what.push_back("loads or prescribed motions");
   if (m.control.mass_scaling_dt != 0) what.push_back("mass scaling");
   const std::size_t fixed = fixed_walls_for_node_pass(m).size();
   if (!m.walls.empty() && (fixed != m.walls.size() || fixed > kMaxFusedWalls))
     what.push_back("moving stonewalls or stonewalls on node lists");
-  // one block of kLanes solids or kLanes shells of one material at least per rank
-  std::vector<int> solids(m.materials.size(), 0), shells(m.materials.size(), 0);
+  // one block of kLanes solids, shells or beams of one material at least per rank
+  std::vector<int> solids(m.materials.size(), 0), shells(m.materials.size(), 0), beams(m.materials.size(), 0);
   for (int mat : m.hex_material) ++solids[std::size_t(mat)];
   for (int mat : m.shell_material) ++shells[std::size_t(mat)];
+  for (int mat : m.beam_material) ++beams[std::size_t(mat)];
   long blocks = 0;
   for (std::size_t i = 0; i < m.materials.size(); ++i)
-    blocks += (solids[i] + kLanes - 1) / kLanes + (shells[i] + kLanes - 1) / kLanes;
+    blocks += (solids[i] + kLanes - 1) / kLanes + (shells[i] + kLanes - 1) / kLanes + (beams[i] + kLanes - 1) / kLanes;
   if (blocks < nranks)
-    what.push_back(std::to_string(blocks) + " blocks of solids and shells for " + std::to_string(nranks) +
-                   " ranks (one block of 8 solids or 8 shells per rank at least)");
+    what.push_back(std::to_string(blocks) + " blocks of solids, shells and beams for " + std::to_string(nranks) +
+                   " ranks (one block of 8 elements per rank at least)");
   std::string out;
   for (const std::string& w : what) out += (out.empty() ? "" : ", ") + w;
   return out;
@@ -187,7 +230,8 @@ std::string distributed_refusal(const Model& m, int nranks) {
 DistributedCycle::DistributedCycle() : rank_(rank()), nranks_(size()) {}
 
 void DistributedCycle::setup(const State& s) {
-  const std::size_t nb = s.slot_elem.size() / kLanes, nu = nb + std::size_t(num_shell_chunks(s.shells));
+  const std::size_t nb = s.slot_elem.size() / kLanes, nsc = std::size_t(num_shell_chunks(s.shells)),
+                    nu = nb + nsc + std::size_t(num_beam_chunks(s.beams));
   // the partition: rank 0 computes it, every rank gets it (one partition, whatever METIS does)
   std::vector<int> block_rank(nu, 0);
   int ok = 1;
@@ -213,23 +257,20 @@ void DistributedCycle::setup(const State& s) {
     block_bytes_[std::size_t(q)] = int(rank_blocks_[std::size_t(q)].size() * sizeof(BlockResult));
   block_displs_ = displacements(block_bytes_);
   block_buf_.resize(nb);
-  // the shells' records: every rank's shells, chunk after chunk
-  const std::vector<std::vector<int>> chunk_shells = [&] {
-    std::vector<std::vector<int>> out(std::size_t(num_shell_chunks(s.shells)));
-    const std::vector<int> chunk = shell_chunk_of_shells(s.shells);
-    for (int k = 0; k < s.shells.ns; ++k) out[std::size_t(chunk[std::size_t(k)])].push_back(k);
-    return out;
-  }();
+  // the shells' and beams' records: every rank's shells, then its beams, chunk after chunk
   rank_shells_.assign(std::size_t(nranks_), {});
-  for (std::size_t c = 0; c < chunk_shells.size(); ++c) {
-    std::vector<int>& to = rank_shells_[std::size_t(block_rank[nb + c])];
-    to.insert(to.end(), chunk_shells[c].begin(), chunk_shells[c].end());
-  }
+  rank_beams_.assign(std::size_t(nranks_), {});
+  const std::vector<int> shell_chunk = shell_chunk_of_shells(s.shells), beam_chunk = beam_chunk_of_beams(s.beams);
+  // (a group's order runs chunk after chunk, increasing in a chunk: partition.h's owned lists)
+  for (int k : s.shells.order) rank_shells_[std::size_t(block_rank[nb + std::size_t(shell_chunk[std::size_t(k)])])].push_back(k);
+  for (int b : s.beams.order)
+    rank_beams_[std::size_t(block_rank[nb + nsc + std::size_t(beam_chunk[std::size_t(b)])])].push_back(b);
   shell_bytes_.assign(std::size_t(nranks_), 0);
   for (int q = 0; q < nranks_; ++q)
-    shell_bytes_[std::size_t(q)] = int(rank_shells_[std::size_t(q)].size() * kShellRecord * sizeof(double));
+    shell_bytes_[std::size_t(q)] = int((rank_shells_[std::size_t(q)].size() * kShellRecord +
+                                        rank_beams_[std::size_t(q)].size() * kBeamRecord) * sizeof(double));
   shell_displs_ = displacements(shell_bytes_);
-  shell_buf_.assign(std::size_t(s.shells.ns) * kShellRecord, 0.0);
+  shell_buf_.assign(std::size_t(s.shells.ns) * kShellRecord + std::size_t(s.beams.nb) * kBeamRecord, 0.0);
   rank_nodes_.assign(std::size_t(nranks_), {});
   if (leads())
     for (std::size_t n = 0; n < std::size_t(s.nn); ++n) rank_nodes_[std::size_t(dom_.node_rank[n])].push_back(int(n));
@@ -261,6 +302,7 @@ void DistributedCycle::setup(const State& s) {
   for (int n : dom_.owned_nodes) visit_node(sm, std::size_t(n), cnt);
   for (int b : dom_.owned_blocks) visit_block(sm, std::size_t(b), cnt);
   for (int k : dom_.owned_shells) visit_shell(sm, std::size_t(k), cnt);
+  for (int b : dom_.owned_beams) visit_beam(sm, std::size_t(b), cnt);
   state_buf_.assign(cnt.n, 0.0);
   const int mine = int(cnt.n * sizeof(double));
   state_bytes_.assign(std::size_t(nranks_), 0);
@@ -274,6 +316,7 @@ ElementPassHooks DistributedCycle::element_hooks() {
   ElementPassHooks h;
   h.owns_block = &dom_.owns_block;
   h.owns_shell_chunk = &dom_.owns_chunk;
+  h.owns_beam_chunk = &dom_.owns_beam_chunk;
   h.after_blocks = &DistributedCycle::after_blocks;
   h.ctx = this;
   return h;
@@ -283,7 +326,7 @@ void DistributedCycle::after_blocks(void* self, State& s) {
   auto* d = static_cast<DistributedCycle*>(self);
   const Timer t(d->comm_s_);
   d->share_block_results(s);
-  if (s.shells.ns > 0) d->share_shell_results(s);
+  if (s.shells.ns > 0 || s.beams.nb > 0) d->share_shell_results(s);
   d->send_corner_forces(s);
 }
 
@@ -303,11 +346,13 @@ void DistributedCycle::share_shell_results(State& s) {
   double* own = shell_buf_.data() + shell_displs_[std::size_t(rank_)] / int(sizeof(double));
   Packer pk{own};
   for (int k : rank_shells_[std::size_t(rank_)]) visit_shell_record(s, std::size_t(k), pk);
+  for (int b : rank_beams_[std::size_t(rank_)]) visit_beam_record(s, std::size_t(b), pk);
   allgather(own, shell_bytes_[std::size_t(rank_)], shell_buf_.data(), shell_bytes_.data(), shell_displs_.data());
   for (int q = 0; q < nranks_; ++q) {
     if (q == rank_) continue;
     Unpacker up{shell_buf_.data() + shell_displs_[std::size_t(q)] / int(sizeof(double))};
     for (int k : rank_shells_[std::size_t(q)]) visit_shell_record(s, std::size_t(k), up);
+    for (int b : rank_beams_[std::size_t(q)]) visit_beam_record(s, std::size_t(b), up);
   }
 }
 
@@ -387,6 +432,7 @@ void DistributedCycle::gather_state(State& s) {
   for (int n : dom_.owned_nodes) visit_node(s, std::size_t(n), pk);
   for (int b : dom_.owned_blocks) visit_block(s, std::size_t(b), pk);
   for (int k : dom_.owned_shells) visit_shell(s, std::size_t(k), pk);
+  for (int b : dom_.owned_beams) visit_beam(s, std::size_t(b), pk);
   gather(state_buf_.data(), int(state_buf_.size() * sizeof(double)), state_all_.data(), state_bytes_.data(),
          state_displs_.data());
   if (!leads()) return;
@@ -399,6 +445,7 @@ void DistributedCycle::unpack_rank_state(State& s, int q, const double* from) {
   for (int n : rank_nodes_[std::size_t(q)]) visit_node(s, std::size_t(n), up);
   for (int b : rank_blocks_[std::size_t(q)]) visit_block(s, std::size_t(b), up);
   for (int k : rank_shells_[std::size_t(q)]) visit_shell(s, std::size_t(k), up);
+  for (int b : rank_beams_[std::size_t(q)]) visit_beam(s, std::size_t(b), up);
 }
 
 void DistributedCycle::announce(Op op, double land_time, int code) {

@@ -5,7 +5,7 @@
 // Every rank reads the deck and builds the whole State (memory is not yet divided: a first
 // step); each computes only its own blocks of solids and its own nodes:
 //  - element pass: this rank's blocks of solids and chunks of shells; then every block's
-//    BlockResult and every shell's record (its books' inputs, corner forces and moments) to
+//    BlockResult and every shell's and beam's record (its books' inputs, corner forces and moments) to
 //    every rank (allgather), so the reductions over blocks and shells in the one-process order
 //    are the same numbers on every rank (the step, its element, the energies), and the corner
 //    forces of this rank's solids at other ranks' nodes to their owners (neighbour exchange);
@@ -83,11 +83,12 @@ class DistributedCycle {
   std::string report_;
   std::vector<std::vector<int>> rank_blocks_;  // every rank's solids' blocks, increasing
   std::vector<std::vector<int>> rank_shells_;  // every rank's shells, chunk after chunk
+  std::vector<std::vector<int>> rank_beams_;   // every rank's beams, chunk after chunk
   std::vector<std::vector<int>> rank_nodes_;   // every rank's nodes, increasing (rank 0 only)
   // buffers, sized once
   std::vector<BlockResult> block_buf_;
   std::vector<int> block_bytes_, block_displs_;
-  std::vector<double> shell_buf_;              // every shell's record (distributed_cycle.cpp)
+  std::vector<double> shell_buf_;              // every shell's and beam's record (distributed_cycle.cpp)
   std::vector<int> shell_bytes_, shell_displs_;
   std::vector<double> send_buf_, recv_buf_;    // neighbour exchanges: per peer, one after another
   std::vector<Exchange> corner_ex_, node_ex_;

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "impact3d/solve/beam_processing.h"
 #include "impact3d/solve/shell_processing.h"
 
 #if IMPACT3D_HAVE_MPI
@@ -19,21 +20,26 @@ constexpr std::size_t kBlockCorners = 8 * kLanes;  // cfx entries of one block
 
 std::size_t num_blocks(const State& s) { return s.slot_elem.size() / kLanes; }
 
-// The units of work (partition.h): the solids' blocks, then the shells' chunks.
-std::size_t num_units(const State& s) { return num_blocks(s) + std::size_t(num_shell_chunks(s.shells)); }
+// The units of work (partition.h): the solids' blocks, the shells' chunks, the beams' chunks.
+std::size_t num_shell_units(const State& s) { return std::size_t(num_shell_chunks(s.shells)); }
+std::size_t num_units(const State& s) {
+  return num_blocks(s) + num_shell_units(s) + std::size_t(num_beam_chunks(s.beams));
+}
 
-// Corner c's unit: a solid corner's block, a shell corner's chunk (after the blocks); -1 for a
-// beam corner (beams are refused).
+// Corner c's unit: a solid corner's block, a shell corner's chunk (after the blocks), a beam
+// end's chunk (after the shells').
 struct CornerUnits {
-  std::size_t solid_corners = 0, shell_base = 0, shell_end = 0, nb = 0;
-  std::vector<int> shell_chunk;
+  std::size_t solid_corners = 0, shell_base = 0, shell_end = 0, beam_base = 0, beam_end = 0, nb = 0, nsc = 0;
+  std::vector<int> shell_chunk, beam_chunk;
   explicit CornerUnits(const State& s)
       : solid_corners(kBlockCorners * num_blocks(s)), shell_base(s.shells.corner_base),
-        shell_end(s.shells.corner_base + 4 * std::size_t(s.shells.ns)), nb(num_blocks(s)),
-        shell_chunk(shell_chunk_of_shells(s.shells)) {}
+        shell_end(s.shells.corner_base + 4 * std::size_t(s.shells.ns)), beam_base(s.beams.corner_base),
+        beam_end(s.beams.corner_base + 2 * std::size_t(s.beams.nb)), nb(num_blocks(s)), nsc(num_shell_units(s)),
+        shell_chunk(shell_chunk_of_shells(s.shells)), beam_chunk(beam_chunk_of_beams(s.beams)) {}
   int operator()(std::size_t c) const {
     if (c < solid_corners) return int(c / kBlockCorners);
     if (c >= shell_base && c < shell_end) return int(nb) + shell_chunk[(c - shell_base) / 4];
+    if (c >= beam_base && c < beam_end) return int(nb + nsc) + beam_chunk[(c - beam_base) / 2];
     return -1;
   }
 };
@@ -80,25 +86,37 @@ void node_unit_lists(const State& s, std::vector<int>& start, std::vector<int>& 
   }
 }
 
-// The nodes of unit u (with repeats).
+// The elements of each chunk, from each element's chunk.
+std::vector<std::vector<int>> by_chunk(const std::vector<int>& chunk_of, int nchunks) {
+  std::vector<std::vector<int>> out(static_cast<std::size_t>(nchunks));
+  for (std::size_t k = 0; k < chunk_of.size(); ++k) out[std::size_t(chunk_of[k])].push_back(int(k));
+  return out;
+}
+std::vector<std::vector<int>> shells_by_chunk(const State& s) {
+  return by_chunk(shell_chunk_of_shells(s.shells), num_shell_chunks(s.shells));
+}
+std::vector<std::vector<int>> beams_by_chunk(const State& s) {
+  return by_chunk(beam_chunk_of_beams(s.beams), num_beam_chunks(s.beams));
+}
+
+// The nodes of unit u (with repeats; a beam's two ends, not its orientation node).
 template <class F>
-void for_unit_nodes(const State& s, const std::vector<std::vector<int>>& chunk_shells, std::size_t u, F&& f) {
-  const std::size_t nb = num_blocks(s);
+void for_unit_nodes(const State& s, const std::vector<std::vector<int>>& chunk_shells,
+                    const std::vector<std::vector<int>>& chunk_beams, std::size_t u, F&& f) {
+  const std::size_t nb = num_blocks(s), nsc = chunk_shells.size();
   if (u < nb) {
     for (int l = 0; l < kLanes; ++l)
       if (const int e = s.slot_elem[u * kLanes + std::size_t(l)]; e >= 0)
         for (int n : s.conn[std::size_t(e)]) f(n);
     return;
   }
-  for (int k : chunk_shells[u - nb])
-    for (int n : s.shells.conn[std::size_t(k)]) f(n);
-}
-
-std::vector<std::vector<int>> shells_by_chunk(const State& s) {
-  std::vector<std::vector<int>> out(std::size_t(num_shell_chunks(s.shells)));
-  const std::vector<int> chunk = shell_chunk_of_shells(s.shells);
-  for (int k = 0; k < s.shells.ns; ++k) out[std::size_t(chunk[std::size_t(k)])].push_back(k);
-  return out;
+  if (u < nb + nsc) {
+    for (int k : chunk_shells[u - nb])
+      for (int n : s.shells.conn[std::size_t(k)]) f(n);
+    return;
+  }
+  for (int b : chunk_beams[u - nb - nsc])
+    for (int j = 0; j < 2; ++j) f(s.beams.conn[std::size_t(b)][std::size_t(j)]);
 }
 
 }  // namespace
@@ -109,7 +127,7 @@ BlockGraph block_graph(const State& s) {
   const std::size_t nb = num_blocks(s), nu = num_units(s);
   std::vector<int> nstart, nlist;
   node_unit_lists(s, nstart, nlist);
-  const std::vector<std::vector<int>> chunk_shells = shells_by_chunk(s);
+  const std::vector<std::vector<int>> chunk_shells = shells_by_chunk(s), chunk_beams = beams_by_chunk(s);
   BlockGraph g;
   g.xadj.assign(nu + 1, 0);
   g.vwgt.assign(nu, 0);
@@ -118,10 +136,12 @@ BlockGraph block_graph(const State& s) {
       for (int l = 0; l < kLanes; ++l)
         if (s.slot_elem[std::size_t(b) * kLanes + std::size_t(l)] >= 0) g.vwgt[std::size_t(b)] += group_cost_per_solid(grp);
   for (std::size_t c = 0; c < chunk_shells.size(); ++c) g.vwgt[nb + c] = kShellCost * int(chunk_shells[c].size());
+  for (std::size_t c = 0; c < chunk_beams.size(); ++c)
+    g.vwgt[nb + chunk_shells.size() + c] = kBeamCost * int(chunk_beams[c].size());
   std::vector<int> shared(nu, 0), node_seen(std::size_t(s.nn), -1), touched;
   for (std::size_t u = 0; u < nu; ++u) {
     touched.clear();
-    for_unit_nodes(s, chunk_shells, u, [&](int n) {
+    for_unit_nodes(s, chunk_shells, chunk_beams, u, [&](int n) {
       if (node_seen[std::size_t(n)] == int(u)) return;  // each node once per unit
       node_seen[std::size_t(n)] = int(u);
       for (int k = nstart[std::size_t(n)]; k < nstart[std::size_t(n) + 1]; ++k) {
@@ -146,7 +166,7 @@ std::vector<int> partition_blocks(const BlockGraph& g, int nparts) {
   if (nparts < 1) throw std::runtime_error("partition: the number of parts must be at least 1");
   if (nparts == 1) return std::vector<int>(std::size_t(nv), 0);
   if (nv < nparts)
-    throw std::runtime_error("partition: " + std::to_string(nv) + " blocks of solids and shells cannot fill " +
+    throw std::runtime_error("partition: " + std::to_string(nv) + " blocks of solids, shells and beams cannot fill " +
                              std::to_string(nparts) + " ranks");
 #if IMPACT3D_HAVE_MPI
   static_assert(sizeof(idx_t) == sizeof(int), "METIS built with 64-bit indices");
@@ -167,14 +187,15 @@ std::vector<int> partition_blocks(const BlockGraph& g, int nparts) {
 }
 
 Domain build_domain(const State& s, const std::vector<int>& block_rank, int nranks, int rank) {
-  const std::size_t nb = num_blocks(s), nu = num_units(s);
-  if (block_rank.size() != nu) throw std::logic_error("build_domain: one rank per block and shell chunk expected");
+  const std::size_t nb = num_blocks(s), nsc = num_shell_units(s), nu = num_units(s);
+  if (block_rank.size() != nu) throw std::logic_error("build_domain: one rank per block and chunk expected");
   Domain d;
   d.rank = rank;
   d.nranks = nranks;
   d.block_rank = block_rank;
   d.owns_block.assign(nb, 0);
-  d.owns_chunk.assign(nu - nb, 0);
+  d.owns_chunk.assign(nsc, 0);
+  d.owns_beam_chunk.assign(nu - nb - nsc, 0);
   for (std::size_t b = 0; b < nb; ++b)
     if (block_rank[b] == rank) {
       d.owns_block[b] = 1;
@@ -184,11 +205,17 @@ Domain build_domain(const State& s, const std::vector<int>& block_rank, int nran
     }
   std::sort(d.owned_elems.begin(), d.owned_elems.end());
   const std::vector<std::vector<int>> chunk_shells = shells_by_chunk(s);
-  for (std::size_t c = 0; c < nu - nb; ++c)
+  for (std::size_t c = 0; c < nsc; ++c)
     if (block_rank[nb + c] == rank) {
       d.owns_chunk[c] = 1;
       d.owned_chunks.push_back(int(c));
       d.owned_shells.insert(d.owned_shells.end(), chunk_shells[c].begin(), chunk_shells[c].end());
+    }
+  const std::vector<std::vector<int>> chunk_beams = beams_by_chunk(s);
+  for (std::size_t c = 0; c < nu - nb - nsc; ++c)
+    if (block_rank[nb + nsc + c] == rank) {
+      d.owns_beam_chunk[c] = 1;
+      d.owned_beams.insert(d.owned_beams.end(), chunk_beams[c].begin(), chunk_beams[c].end());
     }
   const CornerUnits cu(s);
   d.node_rank.assign(std::size_t(s.nn), 0);
@@ -232,15 +259,21 @@ PartitionSummary summarize_partition(const State& s, const BlockGraph& g, const 
   const std::size_t R = std::size_t(nranks), nb = num_blocks(s);
   p.solids.assign(R, 0);
   p.shells.assign(R, 0);
+  p.beams.assign(R, 0);
   p.blocks.assign(R, 0);
   p.owned_nodes.assign(R, 0);
   p.shared_nodes.assign(R, 0);
   p.weight.assign(R, 0);
-  const std::vector<std::vector<int>> chunk_shells = shells_by_chunk(s);
+  const std::vector<std::vector<int>> chunk_shells = shells_by_chunk(s), chunk_beams = beams_by_chunk(s);
+  const std::size_t nsc = chunk_shells.size();
   for (std::size_t b = 0; b < block_rank.size(); ++b) {
     const std::size_t r = std::size_t(block_rank[b]);
     ++p.blocks[r];
     p.weight[r] += g.vwgt[b];
+    if (b >= nb + nsc) {
+      p.beams[r] += int(chunk_beams[b - nb - nsc].size());
+      continue;
+    }
     if (b >= nb) {
       p.shells[r] += int(chunk_shells[b - nb].size());
       continue;
@@ -265,12 +298,12 @@ PartitionSummary summarize_partition(const State& s, const BlockGraph& g, const 
 std::string partition_report(const PartitionSummary& p) {
   const std::size_t R = p.solids.size();
   std::string out = " distributed run: " + std::to_string(R) +
-                    " MPI ranks, the blocks of solids and shells partitioned by METIS k-way (seed 1)\n"
-                    "   rank     solids     shells     blocks   nodes owned   shared nodes\n";
+                    " MPI ranks, the blocks of solids, shells and beams partitioned by METIS k-way (seed 1)\n"
+                    "   rank     solids     shells      beams     blocks   nodes owned   shared nodes\n";
   char buf[160];
   for (std::size_t r = 0; r < R; ++r) {
-    std::snprintf(buf, sizeof buf, " %6zu %10d %10d %10d %13d %14d\n", r, p.solids[r], p.shells[r], p.blocks[r],
-                  p.owned_nodes[r], p.shared_nodes[r]);
+    std::snprintf(buf, sizeof buf, " %6zu %10d %10d %10d %10d %13d %14d\n", r, p.solids[r], p.shells[r], p.beams[r],
+                  p.blocks[r], p.owned_nodes[r], p.shared_nodes[r]);
     out += buf;
   }
   std::snprintf(buf, sizeof buf, "   imbalance (largest rank weight / mean) %.4f", p.imbalance);

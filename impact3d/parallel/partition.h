@@ -3,9 +3,10 @@
 //
 // The units of ownership are the element pass's blocks: the solids' blocks (kLanes solids of
 // one group, State::slot_elem), then the shells' chunks (kLanes shells of one group's order,
-// shell_processing.h: num_shell_chunks), numbered after the blocks.  A rank computes whole
+// shell_processing.h: num_shell_chunks), then the beams' chunks (beam_processing.h), numbered
+// in that order.  A rank computes whole
 // units, so each block's energy sums (BlockResult, summed over its lanes in lane order) and
-// each shell's results are the same numbers on any rank count, and the reductions over them in
+// each shell's and beam's results are the same numbers on any rank count, and the reductions over them in
 // the one-process order give the same bits as one process.  METIS k-way partitions the element
 // graph coarsened to units: one vertex per unit, weighted by its elements times their cost per
 // element; an edge between units whose elements share nodes, weighted by the nodes they share.
@@ -17,7 +18,7 @@
 // the two exchanges of a cycle, each in increasing order, built alike on both sides:
 //  - corner forces: the corners (cfx index, State::corner_index) of this rank's solids at
 //    nodes the neighbour owns (sent), and of the neighbour's solids at nodes this rank owns
-//    (received); the shells' corner forces and moments go to every rank instead
+//    (received); the shells' and beams' corner forces and moments go to every rank instead
 //    (distributed_cycle.h);
 //  - kinematics: this rank's nodes that are the neighbour's ghosts (sent), the neighbour's
 //    nodes that are this rank's ghosts (received).
@@ -30,7 +31,7 @@
 
 namespace impact3d::parallel {
 
-// The unit graph in METIS's CSR form (the solids' blocks, then the shells' chunks).
+// The unit graph in METIS's CSR form (the solids' blocks, the shells' chunks, the beams' chunks).
 struct BlockGraph {
   std::vector<int> xadj, adjncy, adjwgt;  // neighbours of unit b: adjncy[xadj[b] .. xadj[b+1])
   std::vector<int> vwgt;                  // elements of the unit x their cost per element
@@ -41,6 +42,8 @@ struct BlockGraph {
 int group_cost_per_solid(const ElementGroup& g);
 // A shell's cost in the same measure: 2 (an estimate, not a measurement).
 constexpr int kShellCost = 2;
+// A beam's: 1 (an estimate).
+constexpr int kBeamCost = 1;
 
 BlockGraph block_graph(const State& s);
 
@@ -57,24 +60,26 @@ struct Peer {
 
 struct Domain {
   int rank = 0, nranks = 1;
-  std::vector<int> block_rank;        // every unit's rank: the solids' blocks, then the shells' chunks
+  std::vector<int> block_rank;        // every unit's rank: the solids' blocks, the shells' chunks, the beams' chunks
   std::vector<int> node_rank;         // every node's owner
   std::vector<std::uint8_t> owns_block;  // per solid block: this rank computes it
   std::vector<std::uint8_t> owns_chunk;  // per shell chunk: this rank computes it
+  std::vector<std::uint8_t> owns_beam_chunk;  // per beam chunk: this rank computes it
   std::vector<int> owned_blocks, owned_elems, owned_nodes, ghost_nodes;  // increasing
   std::vector<int> owned_chunks;      // increasing
   std::vector<int> owned_shells;      // the owned chunks' shells, chunk after chunk
+  std::vector<int> owned_beams;       // the owned beam chunks' beams, chunk after chunk
   std::vector<Peer> peers;            // the neighbour ranks, increasing
 };
 
 // Rank `rank`'s domain for the given unit ranks.
 Domain build_domain(const State& s, const std::vector<int>& block_rank, int nranks, int rank);
 
-// What d3hsp states about a partition: per rank its solids, shells, units ("blocks"), nodes
+// What d3hsp states about a partition: per rank its solids, shells, beams, units ("blocks"), nodes
 // owned and shared nodes (nodes of its elements that elements of another rank also use), and
 // the imbalance (the largest rank weight over the mean).
 struct PartitionSummary {
-  std::vector<int> solids, shells, blocks, owned_nodes, shared_nodes;
+  std::vector<int> solids, shells, beams, blocks, owned_nodes, shared_nodes;
   std::vector<long> weight;
   double imbalance = 1;
 };

@@ -115,22 +115,51 @@ const double* filtered_weld_resultants(BeamState& bm, int b, double mean[6]) {
   return mean;
 }
 
-BeamPassResult calc_forces_for_beams(const Model& m, State& s) {
-  (void)m;
+int num_beam_chunks(const BeamState& bm) {
+  int n = 0;
+  for (const BeamGroup& g : bm.groups) n += (g.count + kLanes - 1) / kLanes;
+  return n;
+}
+
+std::vector<int> beam_chunk_of_beams(const BeamState& bm) {
+  std::vector<int> chunk(std::size_t(bm.nb), -1);
+  int c0 = 0;
+  for (const BeamGroup& g : bm.groups) {
+    for (int q = 0; q < g.count; ++q) chunk[std::size_t(bm.order[std::size_t(g.first + q)])] = c0 + q / kLanes;
+    c0 += (g.count + kLanes - 1) / kLanes;
+  }
+  return chunk;
+}
+
+void compute_beam_forces(State& s, const std::vector<std::uint8_t>* owns_chunk) {
+  BeamState& bm = s.beams;
+  const double dt = s.dt_half;
+  int c0 = 0;  // the group's first chunk
+  for (const BeamGroup& g : bm.groups) {
+    const int* ord = &bm.order[std::size_t(g.first)];
+    const int n = g.count;
+    const std::uint8_t* own = owns_chunk ? owns_chunk->data() + c0 : nullptr;
+    c0 += (n + kLanes - 1) / kLanes;
+    if (g.kernel == BeamKernel::rigid) {
+      for (int q = 0; q < n; ++q) zero_beam_ends(s, ord[q]);
+      continue;
+    }
+#pragma omp parallel for schedule(static) if (n >= kMinBeamsForThreads)
+    for (int q = 0; q < n; ++q)
+      if (!own || own[q / kLanes]) process_beam(s, g, ord[q], dt);
+  }
+}
+
+BeamPassResult book_beam_results(State& s) {
   BeamPassResult out;
   out.dt_min = std::numeric_limits<double>::infinity();
   BeamState& bm = s.beams;
   const double dt = s.dt_half;
   bm.newly_failed.clear();
   for (const BeamGroup& g : bm.groups) {
+    if (g.kernel == BeamKernel::rigid) continue;
     const int* ord = &bm.order[std::size_t(g.first)];
     const int n = g.count;
-    if (g.kernel == BeamKernel::rigid) {
-      for (int q = 0; q < n; ++q) zero_beam_ends(s, ord[q]);
-      continue;
-    }
-#pragma omp parallel for schedule(static) if (n >= kMinBeamsForThreads)
-    for (int q = 0; q < n; ++q) process_beam(s, g, ord[q], dt);
     // books in group order (the same bits for any thread count)
     double gie = 0;
     for (int q = 0; q < n; ++q) {
@@ -166,6 +195,12 @@ BeamPassResult calc_forces_for_beams(const Model& m, State& s) {
     out.die += gie;
   }
   return out;
+}
+
+BeamPassResult calc_forces_for_beams(const Model& m, State& s) {
+  (void)m;
+  compute_beam_forces(s);
+  return book_beam_results(s);
 }
 
 }  // namespace impact3d

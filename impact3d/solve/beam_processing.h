@@ -22,6 +22,19 @@ struct BeamPassResult {
 // only its own entries and the sums run in a fixed order: the same bits for any thread count.
 BeamPassResult calc_forces_for_beams(const Model& m, State& s);
 
+// The beams' unit of work in a distributed run (impact3d/parallel), as the shells'
+// (shell_processing.h): a chunk of kLanes consecutive beams of a group's order, numbered group
+// after group.  The number of chunks, and each beam's chunk.
+int num_beam_chunks(const BeamState& bm);
+std::vector<int> beam_chunk_of_beams(const BeamState& bm);
+
+// The two halves of calc_forces_for_beams: every beam's stresses, end forces and moments, step
+// and energy increment (with owns_chunk, only the beams of the marked chunks); then the books
+// over every beam in group order (energies, smallest step, bad and non-finite beams, the spot
+// welds' failure rule).
+void compute_beam_forces(State& s, const std::vector<std::uint8_t>* owns_chunk = nullptr);
+BeamPassResult book_beam_results(State& s);
+
 // *MAT_SPOTWELD's failure rule (types/mat_spotweld.cpp) for a beam with resultants res (N,
 // Q_s, Q_t, T, M_s, M_t), its section points' plastic strains (null: none) and the time.
 bool spot_weld_beam_fails(const MaterialConstants& mc, const double res[6], const double* eps_p, int points, double time);

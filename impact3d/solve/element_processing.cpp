@@ -488,8 +488,10 @@ ElementLoopResult calc_forces_for_elems(const Model& m, State& s, const ElementP
 #pragma omp parallel for schedule(dynamic, kBlocksPerChunk) if (nb >= kMinBlocksForThreads)
     for (int b = b0; b < b0 + nb; ++b) process_hex_block(s, gp, b);
   }
-  // the shells (the second family): computed here, booked after the solids' reductions
+  // the shells and beams (the second and third families): computed here, booked after the
+  // solids' reductions
   if (s.shells.ns > 0) compute_shell_forces(s, hooks.owns_shell_chunk);
+  if (s.beams.nb > 0) compute_beam_forces(s, hooks.owns_beam_chunk);
   if (hooks.after_blocks) hooks.after_blocks(hooks.ctx, s);
   // Reductions group by group, blocks in order (same bits for any thread count and schedule).
   double die = 0, dhg = 0, dbv = 0, dsrc = 0;
@@ -527,7 +529,7 @@ ElementLoopResult calc_forces_for_elems(const Model& m, State& s, const ElementP
   // the shells' books join after the solids'; a shell is reported as element s.ne + its index
   if (s.shells.ns > 0) merge_shell_results(book_shell_results(s), s.ne, die, dhg, dtmin, arg, bad, nonfin);
   if (s.beams.nb > 0)
-    merge_beam_results(calc_forces_for_beams(m, s), s.ne + s.shells.ns, die, dtmin, arg, bad, nonfin);
+    merge_beam_results(book_beam_results(s), s.ne + s.shells.ns, die, dtmin, arg, bad, nonfin);
   out.die = die;
   out.dhg = dhg;
   out.dbv = dbv;

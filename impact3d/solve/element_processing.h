@@ -21,13 +21,14 @@ struct ElementLoopResult {
 // so the result has the same bits for any thread count.
 //
 // A distributed run (impact3d/parallel) passes hooks: only the solid blocks marked in
-// owns_block and the shell chunks marked in owns_shell_chunk (shell_processing.h) are
-// computed, then after_blocks runs (it brings every block's BlockResult, every shell's results
-// and moments, and the corner forces this rank's nodes need) before the reductions, which are
+// owns_block and the shell and beam chunks marked in owns_shell_chunk and owns_beam_chunk
+// (shell_processing.h, beam_processing.h) are computed, then after_blocks runs (it brings
+// every block's BlockResult, every shell's and beam's results, forces and moments, and the corner forces this rank's nodes need) before the reductions, which are
 // then the same on every rank.
 struct ElementPassHooks {
   const std::vector<std::uint8_t>* owns_block = nullptr;  // per block; null: all blocks
   const std::vector<std::uint8_t>* owns_shell_chunk = nullptr;  // per shell chunk; null: all
+  const std::vector<std::uint8_t>* owns_beam_chunk = nullptr;   // per beam chunk (beam_processing.h)
   void (*after_blocks)(void* ctx, State& s) = nullptr;
   void* ctx = nullptr;
 };

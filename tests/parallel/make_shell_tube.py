@@ -1,5 +1,9 @@
 #!/usr/bin/env python3
-"""Writes tests/parallel/shell_tube.k (python3 tests/parallel/make_shell_tube.py > tests/parallel/shell_tube.k).
+"""Writes tests/parallel/shell_tube.k (python3 tests/parallel/make_shell_tube.py > tests/parallel/shell_tube.k)
+and, with the argument beams, shell_tube_beams.k: the same tube with three beam groups on its
+nodes (a ring of Hughes-Liu beams, elastic-plastic, around its upper end; a ring of resultant
+beams, ELFORM 2, around its middle; 12 trusses across its upper quarter, each between opposite
+nodes).
 
 A free shell tube for the distributed runs' tests: radius 10 mm, length 40 mm, 24 x 16 shells
 0.5 mm thick in three parts (three materials, so three shell groups): the lower rows
@@ -13,6 +17,9 @@ rings, bends and yields in its middle; one node of the upper end has its rotatio
 (*BOUNDARY_SPC_NODE).  100 us, 10 plot states, time histories of two nodes, two shells and a solid.
 """
 import math
+import sys
+
+beams = len(sys.argv) > 1 and sys.argv[1] == "beams"
 
 nt, nz = 24, 16
 radius, length, thick, collar = 0.010, 0.040, 0.0005, 0.002
@@ -34,7 +41,8 @@ def part(k):
 out = []
 w = out.append
 w("*KEYWORD")
-w("$ tests/parallel/shell_tube.k: written by tests/parallel/make_shell_tube.py (do not edit by hand)")
+name = "shell_tube_beams.k" if beams else "shell_tube.k"
+w(f"$ tests/parallel/{name}: written by tests/parallel/make_shell_tube.py (do not edit by hand)")
 w("*TITLE")
 w("free shell tube with a solid collar: spin, stretch and swing, SI units (m kg s Pa)")
 w("*CONTROL_TERMINATION")
@@ -55,6 +63,9 @@ w("*DATABASE_HISTORY_NODE")
 w(f"{nid(0, 0):10d}{nid(nt // 2, nz):10d}")
 w("*DATABASE_HISTORY_SHELL")
 w(f"{1:10d}{nt * nz // 2 + 5:10d}")
+if beams:
+    w("*DATABASE_HISTORY_BEAM")
+    w(f"{nt * nz + nt + 1:10d}{nt * nz + 2 * nt + 1:10d}{nt * nz + 3 * nt + 1:10d}")
 w("*DATABASE_HISTORY_SOLID")
 w(f"{nt * nz + 1:10d}")
 for p, (sec, mid, title) in enumerate([(1, 1, "steel, elastic, Belytschko-Tsay"),
@@ -86,6 +97,30 @@ w("*MAT_ELASTIC")
 w("         3    2700.0   0.70e11      0.33")
 w("*MAT_ELASTIC")
 w("         4    7850.0   2.10e11      0.30")
+if beams:
+    w("*PART")
+    w("ring of Hughes-Liu beams, steel, elastic-plastic")
+    w("         5         5         5")
+    w("*PART")
+    w("ring of resultant beams, steel")
+    w("         6         6         6")
+    w("*PART")
+    w("trusses across, steel")
+    w("         7         7         6")
+    w("*SECTION_BEAM")
+    w("         5         1  0.833333         2         0")
+    w("     0.001     0.001    0.0015    0.0015")
+    w("*SECTION_BEAM")
+    w("         6         2")
+    w("    1.0e-6   8.3e-14   8.3e-14   1.4e-13")
+    w("*SECTION_BEAM")
+    w("         7         3")
+    w("    1.0e-6")
+    w("*MAT_PLASTIC_KINEMATIC")
+    w("         5    7850.0   2.10e11      0.30     2.0e8     1.0e9       1.0")
+    w("       0.0       0.0       0.0       0.0")
+    w("*MAT_ELASTIC")
+    w("         6    7850.0   2.10e11      0.30")
 w("*HOURGLASS")
 w("         1         4       0.1")
 w("*NODE")
@@ -112,6 +147,17 @@ for i in range(nt):
     e += 1
     n = [nid(i, 0), cid(i, 0), cid(i + 1, 0), nid(i + 1, 0), nid(i, 1), cid(i, 1), cid(i + 1, 1), nid(i + 1, 1)]
     w(f"{e:8d}{4:8d}" + "".join(f"{v:8d}" for v in n))
+if beams:
+    w("*ELEMENT_BEAM")
+    for i in range(nt):  # around the upper end, oriented by the node below
+        e += 1
+        w(f"{e:8d}{5:8d}{nid(i, nz):8d}{nid(i + 1, nz):8d}{nid(i, nz - 1):8d}")
+    for i in range(nt):  # around the middle
+        e += 1
+        w(f"{e:8d}{6:8d}{nid(i, nz // 2):8d}{nid(i + 1, nz // 2):8d}{nid(i, nz // 2 - 1):8d}")
+    for i in range(nt // 2):  # across
+        e += 1
+        w(f"{e:8d}{7:8d}{nid(i, nz - 4):8d}{nid(i + nt // 2, nz - 4):8d}")
 w("*BOUNDARY_SPC_NODE")
 w(f"{nid(nt // 4, nz):10d}         0         0         0         0         1         1         1")
 w("*INITIAL_VELOCITY_NODE")

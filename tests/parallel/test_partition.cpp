@@ -1,5 +1,5 @@
 // The partition over MPI ranks and the ranks' domains (impact3d/parallel/partition.h): every
-// solid, every shell and every node owned once, the exchange lists of two neighbours the same on both
+// solid, shell, beam and node owned once, the exchange lists of two neighbours the same on both
 // sides, the same partition run after run.  These run in any build; the METIS partitions are
 // skipped (with the reason) in a build without MPI and METIS.
 #include <gtest/gtest.h>
@@ -13,6 +13,7 @@
 #include "impact3d/input/deck_reader.h"
 #include "impact3d/parallel/comm.h"
 #include "impact3d/parallel/partition.h"
+#include "impact3d/solve/beam_processing.h"
 #include "impact3d/solve/shell_processing.h"
 
 using namespace impact3d;
@@ -36,10 +37,11 @@ const Loaded& deck(const std::string& name) {
   return l;
 }
 
-// Units (solid blocks, then shell chunks) in runs of `run` per rank, round robin: a partition
+// Units (solid blocks, shell chunks, beam chunks) in runs of `run` per rank, round robin: a partition
 // without METIS that still has many shared nodes.
 std::vector<int> striped(const State& s, int nranks, int run) {
-  std::vector<int> r(s.slot_elem.size() / kLanes + std::size_t(num_shell_chunks(s.shells)));
+  std::vector<int> r(s.slot_elem.size() / kLanes + std::size_t(num_shell_chunks(s.shells)) +
+                     std::size_t(num_beam_chunks(s.beams)));
   for (std::size_t b = 0; b < r.size(); ++b) r[b] = int(b / std::size_t(run)) % nranks;
   return r;
 }
@@ -68,6 +70,17 @@ void check_domains(const State& s, const std::vector<int>& block_rank, int nrank
       EXPECT_EQ(block_rank[nb + std::size_t(chunk[std::size_t(k)])], dr.rank);
     }
   for (int k = 0; k < s.shells.ns; ++k) EXPECT_GE(shell_owner[std::size_t(k)], 0) << "shell " << k << " owned by none";
+  // every beam owned once, by the rank of its chunk (after the shells' chunks)
+  const std::size_t nsc = std::size_t(num_shell_chunks(s.shells));
+  const std::vector<int> beam_chunk = beam_chunk_of_beams(s.beams);
+  std::vector<int> beam_owner(std::size_t(s.beams.nb), -1);
+  for (const Domain& dr : d)
+    for (int b : dr.owned_beams) {
+      ASSERT_EQ(beam_owner[std::size_t(b)], -1) << "beam " << b << " owned twice";
+      beam_owner[std::size_t(b)] = dr.rank;
+      EXPECT_EQ(block_rank[nb + nsc + std::size_t(beam_chunk[std::size_t(b)])], dr.rank);
+    }
+  for (int b = 0; b < s.beams.nb; ++b) EXPECT_GE(beam_owner[std::size_t(b)], 0) << "beam " << b << " owned by none";
   // every node owned once, by the lowest rank of the solids and shells around it
   std::vector<int> node_owner(std::size_t(s.nn), -1);
   for (const Domain& dr : d) {
@@ -84,6 +97,11 @@ void check_domains(const State& s, const std::vector<int>& block_rank, int nrank
   for (int k = 0; k < s.shells.ns; ++k)
     for (int n : s.shells.conn[std::size_t(k)])
       lowest[std::size_t(n)] = std::min(lowest[std::size_t(n)], shell_owner[std::size_t(k)]);
+  for (int b = 0; b < s.beams.nb; ++b)  // a beam's two ends (its orientation node is not its node)
+    for (int j = 0; j < 2; ++j) {
+      const int n = s.beams.conn[std::size_t(b)][std::size_t(j)];
+      lowest[std::size_t(n)] = std::min(lowest[std::size_t(n)], beam_owner[std::size_t(b)]);
+    }
   for (int n = 0; n < s.nn; ++n)
     EXPECT_EQ(node_owner[std::size_t(n)], lowest[std::size_t(n)] == nranks ? 0 : lowest[std::size_t(n)]);
   for (const Domain& dr : d) {
@@ -95,6 +113,9 @@ void check_domains(const State& s, const std::vector<int>& block_rank, int nrank
     for (int k : dr.owned_shells)
       for (int n : s.shells.conn[std::size_t(k)])
         if (node_owner[std::size_t(n)] != dr.rank) ghosts.insert(n);
+    for (int b : dr.owned_beams)
+      for (int j = 0; j < 2; ++j)
+        if (const int n = s.beams.conn[std::size_t(b)][std::size_t(j)]; node_owner[std::size_t(n)] != dr.rank) ghosts.insert(n);
     EXPECT_EQ(std::vector<int>(ghosts.begin(), ghosts.end()), dr.ghost_nodes);
     std::set<int> received;
     for (const Peer& p : dr.peers) {
@@ -158,7 +179,8 @@ TEST(Partition, BlockGraphIsSymmetricWithSolidWeights) {
 }
 
 TEST(Partition, DomainsOfStripedBlocksAreConsistent) {
-  for (const char* name : {"taylor_bar.dyn", "two_bars.dyn", "../tests/parallel/shell_tube.k"}) {
+  for (const char* name : {"taylor_bar.dyn", "two_bars.dyn", "../tests/parallel/shell_tube.k",
+                           "../tests/parallel/shell_tube_beams.k"}) {
     const State& s = deck(name).state;
     for (int nranks : {1, 2, 3, 4}) {
       SCOPED_TRACE(std::string(name) + " on " + std::to_string(nranks) + " ranks");
@@ -192,7 +214,8 @@ TEST(Partition, OneRankOwnsEverythingAndExchangesNothing) {
 
 TEST(Partition, MetisKwayIsConsistentBalancedAndRepeatable) {
   if (!built_with_mpi()) GTEST_SKIP() << "this build has no MPI and METIS (CMake option IMPACT3D_MPI off)";
-  for (const char* name : {"taylor_bar.dyn", "two_bars.dyn", "../tests/parallel/shell_tube.k"}) {
+  for (const char* name : {"taylor_bar.dyn", "two_bars.dyn", "../tests/parallel/shell_tube.k",
+                           "../tests/parallel/shell_tube_beams.k"}) {
     const State& s = deck(name).state;
     const BlockGraph g = block_graph(s);
     for (int nranks : {2, 3, 4}) {
@@ -203,11 +226,13 @@ TEST(Partition, MetisKwayIsConsistentBalancedAndRepeatable) {
       check_domains(s, part, nranks);
       const PartitionSummary p = summarize_partition(s, g, part, nranks);
       EXPECT_LT(p.imbalance, 1.1);  // METIS's default tolerance is 1.03 on the weights
-      long solids = 0, shells = 0;
+      long solids = 0, shells = 0, beams = 0;
       for (int n : p.solids) solids += n;
       for (int n : p.shells) shells += n;
+      for (int n : p.beams) beams += n;
       EXPECT_EQ(solids, s.ne);
       EXPECT_EQ(shells, s.shells.ns);
+      EXPECT_EQ(beams, s.beams.nb);
     }
   }
 }
