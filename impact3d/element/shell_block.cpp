@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include "impact3d/material/material_block.h"
 #include "impact3d/material/plane_stress.h"
 
 namespace impact3d {
@@ -136,16 +137,10 @@ void update_plane_stress_elastic_block(const MaterialConstants& m, const Lanes d
   }
 }
 
-// The last accepted 3-D trial of each lane (plane_stress.cpp's s3, back, eps_p, yielded).
-struct PlaneStressTrial {
-  Lanes sig[6], back[6], eps_p, yielded;
-};
-
 // One 3-D trial of the plane-stress iteration in every lane: point p's saved state (sigma_zz = 0)
 // with the thickness strain rate dzz, through the material's block update, into b.point.
-// Returns sigma_zz in szz.
 void run_plane_stress_trial_block(const ShellBlockMaterial& mat, const Lanes d[5], const Lanes& dzz, double dt,
-                                  ShellBlock& b, int p, Lanes& szz) {
+                                  ShellBlock& b, int p) {
   MaterialPointBlock& k = b.point;
   IMPACT3D_FOR_LANES {
     k.d[0][l] = d[0][l], k.d[1][l] = d[1][l], k.d[2][l] = dzz[l];
@@ -158,49 +153,185 @@ void run_plane_stress_trial_block(const ShellBlockMaterial& mat, const Lanes d[5
   if (mat.has_back)
     for (int c = 0; c < 6; ++c) IMPACT3D_FOR_LANES k.back[c][l] = b.back[p][c][l];
   mat.update_block(*mat.mc, k, dt);
-  IMPACT3D_FOR_LANES szz[l] = k.sig[2][l];
 }
 
-// Keeps b.point's trial in the lanes where take != 0.
-void keep_plane_stress_trial_block(const MaterialPointBlock& k, const Lanes& take, bool has_back, PlaneStressTrial& t) {
-  for (int c = 0; c < 6; ++c) IMPACT3D_FOR_LANES t.sig[c][l] = take[l] != 0.0 ? k.sig[c][l] : t.sig[c][l];
-  if (has_back)
-    for (int c = 0; c < 6; ++c) IMPACT3D_FOR_LANES t.back[c][l] = take[l] != 0.0 ? k.back[c][l] : t.back[c][l];
+// The iteration needs of a trial only its sigma_zz (and, of the first, the in-plane stresses
+// that scale the tolerance); the state comes from one full trial at each lane's last d_zz.  A
+// probe computes that sigma_zz (and those stresses) in every lane with exactly the operations
+// the material's block update does for them (the same bits), reusing what does not depend on
+// d_zz; the materials without a probe run full trials.
+constexpr int kMaxProbeSegments = 16;  // a type 24 curve's segments a probe takes (more: full trials)
+
+enum class ProbeKind {
+  trial,           // the material's block update (type 24 with rate effects)
+  kinematic,       // type 3 without back stress (update_stress_elastic_plastic_block<false>)
+  kinematic_back,  // type 3 with back stress (<true>)
+  table            // type 24 without rate effects (the piecewise-linear block update with R = 1)
+};
+
+ProbeKind plane_stress_probe_kind(const ShellBlockMaterial& mat) {
+  const MaterialConstants& m = *mat.mc;
+  if (mat.kind == ShellMaterialKind::plastic_kinematic && !(m.rate_c > 0.0))  // (mat_plastic_kinematic's choice)
+    return (1.0 - m.beta) * m.E_p != 0.0 ? ProbeKind::kinematic_back : ProbeKind::kinematic;
+  if (mat.kind == ShellMaterialKind::piecewise_linear && !(m.rate_c > 0.0) && m.rate_x.empty() &&
+      m.curve_slope.size() <= std::size_t(kMaxProbeSegments))
+    return ProbeKind::table;
+  return ProbeKind::trial;
+}
+
+// What point p's trials share: the in-plane elastic increments less their d_zz part, the
+// trial shears (3-D xy yz zx) less the back stress, twice their squares' sum, the yield stress
+// (type 3); the curve's segments' flow stresses at the point's plastic strain and their
+// plastic-strain bounds (type 24: calc_piecewise_linear_increment_block's h, lo, hi).
+struct alignas(64) PlaneStressProbe {
+  ProbeKind kind;
+  int ns;
+  Lanes d01, g0, g1, t[3], xs[3], shear, sy;
+  Lanes h[kMaxProbeSegments];
+  double lo[kMaxProbeSegments], hi[kMaxProbeSegments];
+};
+
+void setup_plane_stress_probe(const ShellBlockMaterial& mat, const Lanes d[5], double dt, ShellBlock& b, int p,
+                              PlaneStressProbe& q) {
+  const MaterialConstants& m = *mat.mc;
+  const bool back = q.kind == ProbeKind::kinematic_back;
+  const double g2 = 2.0 * m.G * dt;
+  const double beta_ep = m.beta * m.E_p;
   IMPACT3D_FOR_LANES {
-    t.eps_p[l] = take[l] != 0.0 ? k.eps_p[l] : t.eps_p[l];
-    t.yielded[l] = take[l] != 0.0 ? k.yielded[l] : t.yielded[l];
+    q.d01[l] = d[0][l] + d[1][l];
+    q.g0[l] = g2 * d[0][l];
+    q.g1[l] = g2 * d[1][l];
+    for (int c = 0; c < 3; ++c) {
+      q.t[c][l] = b.sig[p][2 + c][l] + g2 * d[2 + c][l];
+      q.xs[c][l] = back ? q.t[c][l] - b.back[p][3 + c][l] : q.t[c][l];
+    }
+    q.shear[l] = 2.0 * (q.xs[0][l] * q.xs[0][l] + q.xs[1][l] * q.xs[1][l] + q.xs[2][l] * q.xs[2][l]);
+    q.sy[l] = m.sigma_y + beta_ep * b.eps_p[p][l];
+  }
+  if (q.kind != ProbeKind::table) return;
+  q.ns = int(m.curve_slope.size());
+  for (int i = 0; i < q.ns; ++i) {
+    const double cei = m.curve_eps[std::size_t(i)], csi = m.curve_sig[std::size_t(i)];
+    const double chi = m.curve_slope[std::size_t(i)];
+    q.lo[i] = i == 0 ? -HUGE_VAL : cei;
+    q.hi[i] = i == q.ns - 1 ? HUGE_VAL : m.curve_eps[std::size_t(i + 1)];
+    IMPACT3D_FOR_LANES q.h[i][l] = csi + chi * (b.eps_p[p][l] - cei);
+  }
+}
+
+// sigma_zz of point p's trials at dzz into szz; with First, also the trial's sigma_xx, sigma_yy
+// and sigma_xy into s01 (scale: their absolute values' sum, as the scalar iteration's).
+template <bool First>
+void probe_plane_stress_block(const ShellBlockMaterial& mat, const PlaneStressProbe& q, const Lanes d[5],
+                              const Lanes& dzz, double dt, ShellBlock& b, int p, Lanes& szz, Lanes& scale) {
+  const MaterialConstants& m = *mat.mc;
+  const double g2 = 2.0 * m.G * dt;
+  const double ldt = m.lambda * dt;
+  const double G3 = 3.0 * m.G;
+  if (q.kind == ProbeKind::trial) {
+    run_plane_stress_trial_block(mat, d, dzz, dt, b, p);
+    const MaterialPointBlock& k = b.point;
+    IMPACT3D_FOR_LANES {
+      szz[l] = k.sig[2][l];
+      if (First) scale[l] = m.sigma_y + std::fabs(k.sig[0][l]) + std::fabs(k.sig[1][l]) + std::fabs(k.sig[3][l]);
+    }
+    return;
+  }
+  if (q.kind == ProbeKind::table) {
+    alignas(64) Lanes s[3], mean, vm, de, found;
+    IMPACT3D_FOR_LANES {
+      const double lt = ldt * (q.d01[l] + dzz[l]);
+      s[0][l] = b.sig[p][0][l] + (lt + q.g0[l]);
+      s[1][l] = b.sig[p][1][l] + (lt + q.g1[l]);
+      s[2][l] = 0.0 + (lt + g2 * dzz[l]);
+      const double pm = (s[0][l] + s[1][l] + s[2][l]) * (1.0 / 3.0);
+      const double s0 = s[0][l] - pm, s1 = s[1][l] - pm, s2 = s[2][l] - pm;
+      mean[l] = pm;
+      vm[l] = std::sqrt(1.5 * (s0 * s0 + s1 * s1 + s2 * s2 + q.shear[l]));
+      de[l] = 0.0;
+      found[l] = 0.0;
+    }
+    // calc_piecewise_linear_increment_block with R = 1 (R h = h, G3 + R slope = G3 + slope)
+    for (int i = 0; i < q.ns; ++i) {
+      const double den = G3 + m.curve_slope[std::size_t(i)], lo = q.lo[i], hi = q.hi[i];
+      IMPACT3D_FOR_LANES {
+        const double cand = (vm[l] - q.h[i][l]) / den;
+        const double e = b.eps_p[p][l] + cand;
+        const bool take = (found[l] == 0.0) & (e >= lo) & (e <= hi);
+        de[l] = take ? cand : de[l];
+        found[l] = take ? 1.0 : found[l];
+      }
+    }
+    IMPACT3D_FOR_LANES {
+      const double dl = de[l] > 0.0 ? de[l] : 0.0;
+      const bool yields = dl > 0.0;
+      const double rs = G3 * dl / vm[l];
+      const double pm = mean[l];
+      szz[l] = yields ? s[2][l] - rs * (s[2][l] - pm) : s[2][l];
+      if (First) {
+        const double o0 = yields ? s[0][l] - rs * (s[0][l] - pm) : s[0][l];
+        const double o1 = yields ? s[1][l] - rs * (s[1][l] - pm) : s[1][l];
+        const double o3 = yields ? q.t[0][l] - rs * q.t[0][l] : q.t[0][l];
+        scale[l] = m.sigma_y + std::fabs(o0) + std::fabs(o1) + std::fabs(o3);
+      }
+    }
+    return;
+  }
+  const bool back = q.kind == ProbeKind::kinematic_back;
+  const double plain_den = 3.0 * m.G + m.E_p;
+  IMPACT3D_FOR_LANES {
+    const double lt = ldt * (q.d01[l] + dzz[l]);
+    const double s0 = b.sig[p][0][l] + (lt + q.g0[l]);
+    const double s1 = b.sig[p][1][l] + (lt + q.g1[l]);
+    const double s2 = 0.0 + (lt + g2 * dzz[l]);
+    const double pm = (s0 + s1 + s2) * (1.0 / 3.0);
+    const double xi0 = back ? s0 - pm - b.back[p][0][l] : s0 - pm;
+    const double xi1 = back ? s1 - pm - b.back[p][1][l] : s1 - pm;
+    const double xi2 = back ? s2 - pm - b.back[p][2][l] : s2 - pm;
+    const double xx = xi0 * xi0 + xi1 * xi1 + xi2 * xi2 + q.shear[l];
+    const double vm = std::sqrt(1.5 * xx);
+    const double f = vm - q.sy[l];
+    const bool yields = f > 0.0;
+    const double deps = f / plain_den;
+    const double rs = G3 * deps / vm;
+    szz[l] = yields ? s2 - rs * xi2 : s2;
+    if (First) {
+      const double o0 = yields ? s0 - rs * xi0 : s0;
+      const double o1 = yields ? s1 - rs * xi1 : s1;
+      const double o3 = yields ? q.t[0][l] - rs * q.xs[0][l] : q.t[0][l];
+      scale[l] = m.sigma_y + std::fabs(o0) + std::fabs(o1) + std::fabs(o3);
+    }
   }
 }
 
 // update_plane_stress_plastic_kinematic / update_plane_stress_piecewise_linear of point p:
 // plane_stress.cpp's solve_thickness_rate in every lane, each lane stepping while its scalar
 // twin would (the elastic guess, the incompressible rate, secant steps to |sigma_zz| <= tol,
-// at most kPlaneStressIterations) and keeping its own last trial.
+// at most kPlaneStressIterations) on the probes' sigma_zz, then the full trial at the lane's
+// last d_zz: the state of the scalar iteration's last trial.
 void update_plane_stress_plastic_block(const ShellBlockMaterial& mat, const Lanes d[5], double dt, ShellBlock& b,
                                        int p) {
   const MaterialConstants& m = *mat.mc;
-  MaterialPointBlock& k = b.point;
-  alignas(64) Lanes z0, f0, z1, f1, z2, tol, active;
-  alignas(64) PlaneStressTrial t;
+  alignas(64) Lanes z0, f0, z1, f1, z2, tol, active, zlast, scale;
+  alignas(64) PlaneStressProbe q;
+  q.kind = plane_stress_probe_kind(mat);
+  if (q.kind != ProbeKind::trial) setup_plane_stress_probe(mat, d, dt, b, p, q);
   const double guess = -m.nu / (1.0 - m.nu);
   IMPACT3D_FOR_LANES z0[l] = guess * (d[0][l] + d[1][l]);
-  run_plane_stress_trial_block(mat, d, z0, dt, b, p, f0);
+  probe_plane_stress_block<true>(mat, q, d, z0, dt, b, p, f0, scale);
   IMPACT3D_FOR_LANES {
-    const double scale = m.sigma_y + std::fabs(k.sig[0][l]) + std::fabs(k.sig[1][l]) + std::fabs(k.sig[3][l]);
-    tol[l] = 1e-10 * scale;
+    tol[l] = 1e-10 * scale[l];
     active[l] = std::fabs(f0[l]) > tol[l] ? 1.0 : 0.0;
+    zlast[l] = z0[l];
   }
-  alignas(64) Lanes every;
-  IMPACT3D_FOR_LANES every[l] = 1.0;  // every lane takes the first trial
-  keep_plane_stress_trial_block(k, every, mat.has_back, t);
   if (any_lane(active)) {
     const double tiny = 1e-30 / (dt > 0 ? dt : 1.0);
     IMPACT3D_FOR_LANES {
       const double z = -(d[0][l] + d[1][l]);
       z1[l] = z == z0[l] ? z0[l] + 1e-6 * (std::fabs(z0[l]) + tiny) : z;
+      zlast[l] = active[l] != 0.0 ? z1[l] : zlast[l];
     }
-    run_plane_stress_trial_block(mat, d, z1, dt, b, p, f1);
-    keep_plane_stress_trial_block(k, active, mat.has_back, t);
+    probe_plane_stress_block<false>(mat, q, d, z1, dt, b, p, f1, scale);
     IMPACT3D_FOR_LANES active[l] = active[l] != 0.0 && std::fabs(f1[l]) > tol[l] && f1[l] != f0[l] ? 1.0 : 0.0;
     for (int it = 0; it < kPlaneStressIterations && any_lane(active); ++it) {
       IMPACT3D_FOR_LANES {
@@ -209,9 +340,9 @@ void update_plane_stress_plastic_block(const ShellBlockMaterial& mat, const Lane
         z0[l] = a ? z1[l] : z0[l];
         f0[l] = a ? f1[l] : f0[l];
         z1[l] = a ? zn : z1[l];
+        zlast[l] = a ? zn : zlast[l];
       }
-      run_plane_stress_trial_block(mat, d, z1, dt, b, p, z2);
-      keep_plane_stress_trial_block(k, active, mat.has_back, t);
+      probe_plane_stress_block<false>(mat, q, d, z1, dt, b, p, z2, scale);
       IMPACT3D_FOR_LANES {
         const bool a = active[l] != 0.0;
         f1[l] = a ? z2[l] : f1[l];
@@ -219,14 +350,16 @@ void update_plane_stress_plastic_block(const ShellBlockMaterial& mat, const Lane
       }
     }
   }
+  run_plane_stress_trial_block(mat, d, zlast, dt, b, p);
+  const MaterialPointBlock& k = b.point;
   IMPACT3D_FOR_LANES {
-    b.sig[p][0][l] = t.sig[0][l], b.sig[p][1][l] = t.sig[1][l], b.sig[p][2][l] = t.sig[3][l];
-    b.sig[p][3][l] = t.sig[4][l], b.sig[p][4][l] = t.sig[5][l];
-    b.eps_p[p][l] = t.eps_p[l];
-    b.yielded[p][l] = t.yielded[l] != 0.0 ? 1.0 : 0.0;
+    b.sig[p][0][l] = k.sig[0][l], b.sig[p][1][l] = k.sig[1][l], b.sig[p][2][l] = k.sig[3][l];
+    b.sig[p][3][l] = k.sig[4][l], b.sig[p][4][l] = k.sig[5][l];
+    b.eps_p[p][l] = k.eps_p[l];
+    b.yielded[p][l] = k.yielded[l] != 0.0 ? 1.0 : 0.0;
   }
   if (mat.has_back)
-    for (int c = 0; c < 6; ++c) IMPACT3D_FOR_LANES b.back[p][c][l] = t.back[c][l];
+    for (int c = 0; c < 6; ++c) IMPACT3D_FOR_LANES b.back[p][c][l] = k.back[c][l];
 }
 
 void calc_shell_point_stresses_block(const ShellGroupConstants& g, const ShellBlockMaterial& mat, double dt,

@@ -140,6 +140,21 @@ inline double calc_piecewise_linear_increment(const MaterialConstants& m, double
   return de > 0.0 ? de : 0.0;
 }
 
+// One segment of calc_piecewise_linear_increment_block in every lane (a function of its own:
+// inlined, GCC peels the first and last segments off the loop and runs their lanes scalar).
+[[gnu::noinline]] inline void piecewise_linear_segment_block(double G3, double cei, double csi, double chi,
+                                                             double lo, double hi, const Lanes e0, const Lanes q,
+                                                             const Lanes R, Lanes de, Lanes found) {
+  IMPACT3D_FOR_LANES {
+    const double h = csi + chi * (e0[l] - cei);
+    const double cand = (q[l] - R[l] * h) / (G3 + R[l] * chi);
+    const double e = e0[l] + cand;
+    const bool take = (found[l] == 0.0) & (e >= lo) & (e <= hi);
+    de[l] = take ? cand : de[l];
+    found[l] = take ? 1.0 : found[l];
+  }
+}
+
 // The plastic strain increment de of each lane for the piecewise-linear flow stress R x
 // (curve_sig + curve_slope (e - curve_eps)) of the material's segments: on each segment i the
 // candidate (q - R h_i(e0)) / (3G + R slope_i), taken where e0 + candidate lies on segment i
@@ -157,18 +172,9 @@ inline void calc_piecewise_linear_increment_block(const MaterialConstants& m, co
   const int ns = int(m.curve_slope.size());
   const double G3 = 3.0 * m.G;
   for (int i = 0; i < ns; ++i) {
-    const double cei = ce[i], csi = cs[i], chi = ch[i];
-    const double lo = i == 0 ? -HUGE_VAL : cei;
+    const double lo = i == 0 ? -HUGE_VAL : ce[i];
     const double hi = i == ns - 1 ? HUGE_VAL : ce[i + 1];
-    IMPACT3D_FOR_LANES {
-      const double e0 = k.eps_p[l];
-      const double h = csi + chi * (e0 - cei);
-      const double cand = (q[l] - R[l] * h) / (G3 + R[l] * chi);
-      const double e = e0 + cand;
-      const bool take = found[l] == 0.0 && e >= lo && e <= hi;
-      de[l] = take ? cand : de[l];
-      found[l] = take ? 1.0 : found[l];
-    }
+    piecewise_linear_segment_block(G3, ce[i], cs[i], ch[i], lo, hi, k.eps_p, q, R, de, found);
   }
 }
 
