@@ -574,7 +574,44 @@ double nearest_surface_key(const contact::SegmentHit& h, double r) {
   return r == 0 ? h.dist * (h.on_edge ? 1 + 1e-9 : 1.0) : h.dist + (h.on_edge ? 1e-9 * h.dist : 0.0) - r;
 }
 
+// A lower bound of the distance from p to any point closest_point_on_segment returns for the
+// face X: the distance to its corners' box (a bilinear face lies in its corners' hull), the box
+// grown by twice what the interior test reaches beyond the square (kInteriorTol of x_xi and
+// x_eta, each at most about half the box's diagonal).
+double face_distance_lower_bound(const double X[4][3], const double* p) {
+  double lo[3], hi[3], ext = 0;
+  for (std::size_t i = 0; i < 3; ++i) {
+    lo[i] = std::min(std::min(X[0][i], X[1][i]), std::min(X[2][i], X[3][i]));
+    hi[i] = std::max(std::max(X[0][i], X[1][i]), std::max(X[2][i], X[3][i]));
+    ext += hi[i] - lo[i];
+  }
+  const double pad = 2 * kInteriorTol * ext;
+  double d2 = 0;
+  for (std::size_t i = 0; i < 3; ++i) {
+    const double over = std::max({lo[i] - pad - p[i], p[i] - hi[i] - pad, 0.0});
+    d2 += over * over;
+  }
+  return std::sqrt(d2);
+}
+
+// Whether segment j of the node's grid cell is a candidate for the node at p: its grown box
+// holds p, it is not one of the node's own segments (nor, on a single surface, one around it:
+// the ring), and it is active.
+bool candidate_segment(const State& s, const Surface& segs, const Grid& g, int j, int node, const int* ring,
+                       const int* ring_end, const double* p) {
+  if (!in_box(&g.box[6 * std::size_t(j)], p)) return false;
+  const auto& sg = segs.seg[std::size_t(j)];
+  if (sg[0] == node || sg[1] == node || sg[2] == node || sg[3] == node) return false;
+  if (ring && std::any_of(sg.begin(), sg.end(), [&](int v) { return std::binary_search(ring, ring_end, v); }))
+    return false;
+  return segment_active(s, segs, std::size_t(j));
+}
+
 // The nearest segment of the node's grid cell, or -1: its hit bh and the sum of the offsets r.
+// Nearest contact surface: the least key (the mid-surface distance less the offsets; at equal
+// distance a face point before an edge point), at equal keys the lower segment (the candidates
+// come in segment order).  A solid face whose corners' box is already farther than the best key
+// is not projected: its key could not be lower, so the choice is the one of projecting all.
 int find_nearest_segment(const State& s, const Interface& in, const Surface& nodes_sf, const Surface& segs, const Grid& g,
                          int q, const double* p, Hit& hit, contact::SegmentHit& bh, double& best_r) {
   const int node = nodes_sf.nodes[std::size_t(q)];
@@ -587,23 +624,16 @@ int find_nearest_segment(const State& s, const Interface& in, const Surface& nod
   double best_key = 0;
   for (int e = g.cell_start[std::size_t(c)]; e < g.cell_start[std::size_t(c) + 1]; ++e) {
     const int j = g.entries[std::size_t(e)];
-    if (!in_box(&g.box[6 * std::size_t(j)], p)) continue;
-    const auto& sg = segs.seg[std::size_t(j)];
-    if (sg[0] == node || sg[1] == node || sg[2] == node || sg[3] == node) continue;
-    // single surface: not the segments around the node nor their neighbours
-    if (ring && std::any_of(sg.begin(), sg.end(), [&](int v) { return std::binary_search(ring, ring_end, v); }))
-      continue;
-    if (!segment_active(s, segs, std::size_t(j))) continue;
+    if (!candidate_segment(s, segs, g, j, node, ring, ring_end, p)) continue;
     double X[4][3];
-    seg_coords(s, sg, X);
-    ++hit.evaluations;
-    contact::SegmentHit h = segs.two_sided[std::size_t(j)] ? contact::closest_point_on_shell_segment(X, p, kInteriorTol)
-                                     : contact::closest_point_on_segment(X, p, segs.boundary[std::size_t(j)], kInteriorTol);
-    if (!h.valid) continue;
-    // nearest contact surface (the mid-surface distance less the offsets); at equal distance
-    // a face point before an edge point, then the lower segment (the order of the candidates
-    // is the segment order)
+    seg_coords(s, segs.seg[std::size_t(j)], X);
     const double r = segs.offset[std::size_t(j)] + r_node;
+    const bool two_sided = segs.two_sided[std::size_t(j)];
+    if (best >= 0 && !two_sided && face_distance_lower_bound(X, p) - r > best_key) continue;
+    ++hit.evaluations;
+    contact::SegmentHit h = two_sided ? contact::closest_point_on_shell_segment(X, p, kInteriorTol)
+                                      : contact::closest_point_on_segment(X, p, segs.boundary[std::size_t(j)], kInteriorTol);
+    if (!h.valid) continue;
     const double key = nearest_surface_key(h, r);
     if (best < 0 || key < best_key) {
       best = j;
