@@ -179,22 +179,37 @@ ProbeKind plane_stress_probe_kind(const ShellBlockMaterial& mat) {
   return ProbeKind::trial;
 }
 
-// What point p's trials share: the in-plane elastic increments less their d_zz part, the
-// trial shears (3-D xy yz zx) less the back stress, twice their squares' sum, the yield stress
-// (type 3); the curve's segments' flow stresses at the point's plastic strain and their
-// plastic-strain bounds (type 24: calc_piecewise_linear_increment_block's h, lo, hi).
-struct alignas(64) PlaneStressProbe {
+// The block's probe kind and, type 24, the curve's segments' plastic-strain bounds
+// (calc_piecewise_linear_increment_block's lo, hi).
+struct ProbeMaterial {
   ProbeKind kind;
-  int ns;
-  Lanes d01, g0, g1, t[3], xs[3], shear, sy;
-  Lanes h[kMaxProbeSegments];
+  int ns = 0;
   double lo[kMaxProbeSegments], hi[kMaxProbeSegments];
 };
 
-void setup_plane_stress_probe(const ShellBlockMaterial& mat, const Lanes d[5], double dt, ShellBlock& b, int p,
-                              PlaneStressProbe& q) {
+ProbeMaterial probe_material(const ShellBlockMaterial& mat) {
   const MaterialConstants& m = *mat.mc;
-  const bool back = q.kind == ProbeKind::kinematic_back;
+  ProbeMaterial pm;
+  pm.kind = plane_stress_probe_kind(mat);
+  if (pm.kind != ProbeKind::table) return pm;
+  pm.ns = int(m.curve_slope.size());
+  for (int i = 0; i < pm.ns; ++i) {
+    pm.lo[i] = i == 0 ? -HUGE_VAL : m.curve_eps[std::size_t(i)];
+    pm.hi[i] = i == pm.ns - 1 ? HUGE_VAL : m.curve_eps[std::size_t(i + 1)];
+  }
+  return pm;
+}
+
+// What point p's trials share: the in-plane elastic increments less their d_zz part, the
+// trial shears (3-D xy yz zx) less the back stress, twice their squares' sum, the yield stress.
+struct alignas(64) PlaneStressProbe {
+  Lanes d01, g0, g1, t[3], xs[3], shear, sy;
+};
+
+void setup_plane_stress_probe(const ShellBlockMaterial& mat, const ProbeMaterial& pm, const Lanes d[5], double dt,
+                              const ShellBlock& b, int p, PlaneStressProbe& q) {
+  const MaterialConstants& m = *mat.mc;
+  const bool back = pm.kind == ProbeKind::kinematic_back;
   const double g2 = 2.0 * m.G * dt;
   const double beta_ep = m.beta * m.E_p;
   IMPACT3D_FOR_LANES {
@@ -208,27 +223,19 @@ void setup_plane_stress_probe(const ShellBlockMaterial& mat, const Lanes d[5], d
     q.shear[l] = 2.0 * (q.xs[0][l] * q.xs[0][l] + q.xs[1][l] * q.xs[1][l] + q.xs[2][l] * q.xs[2][l]);
     q.sy[l] = m.sigma_y + beta_ep * b.eps_p[p][l];
   }
-  if (q.kind != ProbeKind::table) return;
-  q.ns = int(m.curve_slope.size());
-  for (int i = 0; i < q.ns; ++i) {
-    const double cei = m.curve_eps[std::size_t(i)], csi = m.curve_sig[std::size_t(i)];
-    const double chi = m.curve_slope[std::size_t(i)];
-    q.lo[i] = i == 0 ? -HUGE_VAL : cei;
-    q.hi[i] = i == q.ns - 1 ? HUGE_VAL : m.curve_eps[std::size_t(i + 1)];
-    IMPACT3D_FOR_LANES q.h[i][l] = csi + chi * (b.eps_p[p][l] - cei);
-  }
 }
 
 // sigma_zz of point p's trials at dzz into szz; with First, also the trial's sigma_xx, sigma_yy
 // and sigma_xy into s01 (scale: their absolute values' sum, as the scalar iteration's).
 template <bool First>
-void probe_plane_stress_block(const ShellBlockMaterial& mat, const PlaneStressProbe& q, const Lanes d[5],
-                              const Lanes& dzz, double dt, ShellBlock& b, int p, Lanes& szz, Lanes& scale) {
+void probe_plane_stress_block(const ShellBlockMaterial& mat, const ProbeMaterial& pm, const PlaneStressProbe& q,
+                              const Lanes d[5], const Lanes& dzz, double dt, ShellBlock& b, int p, Lanes& szz,
+                              Lanes& scale) {
   const MaterialConstants& m = *mat.mc;
   const double g2 = 2.0 * m.G * dt;
   const double ldt = m.lambda * dt;
   const double G3 = 3.0 * m.G;
-  if (q.kind == ProbeKind::trial) {
+  if (pm.kind == ProbeKind::trial) {
     run_plane_stress_trial_block(mat, d, dzz, dt, b, p);
     const MaterialPointBlock& k = b.point;
     IMPACT3D_FOR_LANES {
@@ -237,7 +244,7 @@ void probe_plane_stress_block(const ShellBlockMaterial& mat, const PlaneStressPr
     }
     return;
   }
-  if (q.kind == ProbeKind::table) {
+  if (pm.kind == ProbeKind::table) {
     alignas(64) Lanes s[3], mean, vm, de, found;
     IMPACT3D_FOR_LANES {
       const double lt = ldt * (q.d01[l] + dzz[l]);
@@ -252,10 +259,13 @@ void probe_plane_stress_block(const ShellBlockMaterial& mat, const PlaneStressPr
       found[l] = 0.0;
     }
     // calc_piecewise_linear_increment_block with R = 1 (R h = h, G3 + R slope = G3 + slope)
-    for (int i = 0; i < q.ns; ++i) {
-      const double den = G3 + m.curve_slope[std::size_t(i)], lo = q.lo[i], hi = q.hi[i];
+    for (int i = 0; i < pm.ns; ++i) {
+      const double cei = m.curve_eps[std::size_t(i)], csi = m.curve_sig[std::size_t(i)];
+      const double chi = m.curve_slope[std::size_t(i)];
+      const double den = G3 + chi, lo = pm.lo[i], hi = pm.hi[i];
       IMPACT3D_FOR_LANES {
-        const double cand = (vm[l] - q.h[i][l]) / den;
+        const double h = csi + chi * (b.eps_p[p][l] - cei);
+        const double cand = (vm[l] - h) / den;
         const double e = b.eps_p[p][l] + cand;
         const bool take = (found[l] == 0.0) & (e >= lo) & (e <= hi);
         de[l] = take ? cand : de[l];
@@ -277,7 +287,7 @@ void probe_plane_stress_block(const ShellBlockMaterial& mat, const PlaneStressPr
     }
     return;
   }
-  const bool back = q.kind == ProbeKind::kinematic_back;
+  const bool back = pm.kind == ProbeKind::kinematic_back;
   const double plain_den = 3.0 * m.G + m.E_p;
   IMPACT3D_FOR_LANES {
     const double lt = ldt * (q.d01[l] + dzz[l]);
@@ -304,62 +314,84 @@ void probe_plane_stress_block(const ShellBlockMaterial& mat, const PlaneStressPr
   }
 }
 
-// update_plane_stress_plastic_kinematic / update_plane_stress_piecewise_linear of point p:
-// plane_stress.cpp's solve_thickness_rate in every lane, each lane stepping while its scalar
-// twin would (the elastic guess, the incompressible rate, secant steps to |sigma_zz| <= tol,
-// at most kPlaneStressIterations) on the probes' sigma_zz, then the full trial at the lane's
-// last d_zz: the state of the scalar iteration's last trial.
-void update_plane_stress_plastic_block(const ShellBlockMaterial& mat, const Lanes d[5], double dt, ShellBlock& b,
-                                       int p) {
+// One point's plane-stress iteration: the secant's last two points, the tolerance, the lanes
+// still stepping, each lane's last d_zz, what the probes share.
+struct alignas(64) PlaneStressIteration {
+  Lanes z0, f0, z1, f1, tol, active, zlast;
+  PlaneStressProbe q;
+};
+
+// update_plane_stress_plastic_kinematic / update_plane_stress_piecewise_linear of the block's
+// nip points (strain rates d[p]): plane_stress.cpp's solve_thickness_rate in every lane, each
+// lane stepping while its scalar twin would (the elastic guess, the incompressible rate, secant
+// steps to |sigma_zz| <= tol, at most kPlaneStressIterations) on the probes' sigma_zz, then the
+// full trial at the lane's last d_zz: the state of the scalar iteration's last trial.  The
+// points step together (a step of every point, then the next: their chains of square roots
+// and divisions overlap); each point's own steps are those it would take alone.
+void update_plane_stress_plastic_block(const ShellBlockMaterial& mat, int nip, const Lanes (*d)[5], double dt,
+                                       ShellBlock& b) {
   const MaterialConstants& m = *mat.mc;
-  alignas(64) Lanes z0, f0, z1, f1, z2, tol, active, zlast, scale;
-  alignas(64) PlaneStressProbe q;
-  q.kind = plane_stress_probe_kind(mat);
-  if (q.kind != ProbeKind::trial) setup_plane_stress_probe(mat, d, dt, b, p, q);
+  const ProbeMaterial pm = probe_material(mat);
+  alignas(64) PlaneStressIteration its[kMaxShellIntegrationPoints];
+  alignas(64) Lanes z2, scale;
   const double guess = -m.nu / (1.0 - m.nu);
-  IMPACT3D_FOR_LANES z0[l] = guess * (d[0][l] + d[1][l]);
-  probe_plane_stress_block<true>(mat, q, d, z0, dt, b, p, f0, scale);
-  IMPACT3D_FOR_LANES {
-    tol[l] = 1e-10 * scale[l];
-    active[l] = std::fabs(f0[l]) > tol[l] ? 1.0 : 0.0;
-    zlast[l] = z0[l];
-  }
-  if (any_lane(active)) {
-    const double tiny = 1e-30 / (dt > 0 ? dt : 1.0);
+  const double tiny = 1e-30 / (dt > 0 ? dt : 1.0);
+  bool any = false;
+  for (int p = 0; p < nip; ++p) {
+    PlaneStressIteration& t = its[p];
+    if (pm.kind != ProbeKind::trial) setup_plane_stress_probe(mat, pm, d[p], dt, b, p, t.q);
+    IMPACT3D_FOR_LANES t.z0[l] = guess * (d[p][0][l] + d[p][1][l]);
+    probe_plane_stress_block<true>(mat, pm, t.q, d[p], t.z0, dt, b, p, t.f0, scale);
     IMPACT3D_FOR_LANES {
-      const double z = -(d[0][l] + d[1][l]);
-      z1[l] = z == z0[l] ? z0[l] + 1e-6 * (std::fabs(z0[l]) + tiny) : z;
-      zlast[l] = active[l] != 0.0 ? z1[l] : zlast[l];
+      t.tol[l] = 1e-10 * scale[l];
+      t.active[l] = std::fabs(t.f0[l]) > t.tol[l] ? 1.0 : 0.0;
+      t.zlast[l] = t.z0[l];
     }
-    probe_plane_stress_block<false>(mat, q, d, z1, dt, b, p, f1, scale);
-    IMPACT3D_FOR_LANES active[l] = active[l] != 0.0 && std::fabs(f1[l]) > tol[l] && f1[l] != f0[l] ? 1.0 : 0.0;
-    for (int it = 0; it < kPlaneStressIterations && any_lane(active); ++it) {
+    if (!any_lane(t.active)) continue;
+    any = true;
+    IMPACT3D_FOR_LANES {
+      const double z = -(d[p][0][l] + d[p][1][l]);
+      t.z1[l] = z == t.z0[l] ? t.z0[l] + 1e-6 * (std::fabs(t.z0[l]) + tiny) : z;
+      t.zlast[l] = t.active[l] != 0.0 ? t.z1[l] : t.zlast[l];
+    }
+    probe_plane_stress_block<false>(mat, pm, t.q, d[p], t.z1, dt, b, p, t.f1, scale);
+    IMPACT3D_FOR_LANES
+    t.active[l] = t.active[l] != 0.0 && std::fabs(t.f1[l]) > t.tol[l] && t.f1[l] != t.f0[l] ? 1.0 : 0.0;
+  }
+  for (int it = 0; it < kPlaneStressIterations && any; ++it) {
+    any = false;
+    for (int p = 0; p < nip; ++p) {
+      PlaneStressIteration& t = its[p];
+      if (!any_lane(t.active)) continue;
       IMPACT3D_FOR_LANES {
-        const bool a = active[l] != 0.0;
-        const double zn = z1[l] - f1[l] * (z1[l] - z0[l]) / (f1[l] - f0[l]);
-        z0[l] = a ? z1[l] : z0[l];
-        f0[l] = a ? f1[l] : f0[l];
-        z1[l] = a ? zn : z1[l];
-        zlast[l] = a ? zn : zlast[l];
+        const bool a = t.active[l] != 0.0;
+        const double zn = t.z1[l] - t.f1[l] * (t.z1[l] - t.z0[l]) / (t.f1[l] - t.f0[l]);
+        t.z0[l] = a ? t.z1[l] : t.z0[l];
+        t.f0[l] = a ? t.f1[l] : t.f0[l];
+        t.z1[l] = a ? zn : t.z1[l];
+        t.zlast[l] = a ? zn : t.zlast[l];
       }
-      probe_plane_stress_block<false>(mat, q, d, z1, dt, b, p, z2, scale);
+      probe_plane_stress_block<false>(mat, pm, t.q, d[p], t.z1, dt, b, p, z2, scale);
       IMPACT3D_FOR_LANES {
-        const bool a = active[l] != 0.0;
-        f1[l] = a ? z2[l] : f1[l];
-        active[l] = a && std::fabs(f1[l]) > tol[l] && f1[l] != f0[l] ? 1.0 : 0.0;
+        const bool a = t.active[l] != 0.0;
+        t.f1[l] = a ? z2[l] : t.f1[l];
+        t.active[l] = a && std::fabs(t.f1[l]) > t.tol[l] && t.f1[l] != t.f0[l] ? 1.0 : 0.0;
       }
+      any = any || any_lane(t.active);
     }
   }
-  run_plane_stress_trial_block(mat, d, zlast, dt, b, p);
-  const MaterialPointBlock& k = b.point;
-  IMPACT3D_FOR_LANES {
-    b.sig[p][0][l] = k.sig[0][l], b.sig[p][1][l] = k.sig[1][l], b.sig[p][2][l] = k.sig[3][l];
-    b.sig[p][3][l] = k.sig[4][l], b.sig[p][4][l] = k.sig[5][l];
-    b.eps_p[p][l] = k.eps_p[l];
-    b.yielded[p][l] = k.yielded[l] != 0.0 ? 1.0 : 0.0;
+  for (int p = 0; p < nip; ++p) {
+    run_plane_stress_trial_block(mat, d[p], its[p].zlast, dt, b, p);
+    const MaterialPointBlock& k = b.point;
+    IMPACT3D_FOR_LANES {
+      b.sig[p][0][l] = k.sig[0][l], b.sig[p][1][l] = k.sig[1][l], b.sig[p][2][l] = k.sig[3][l];
+      b.sig[p][3][l] = k.sig[4][l], b.sig[p][4][l] = k.sig[5][l];
+      b.eps_p[p][l] = k.eps_p[l];
+      b.yielded[p][l] = k.yielded[l] != 0.0 ? 1.0 : 0.0;
+    }
+    if (mat.has_back)
+      for (int c = 0; c < 6; ++c) IMPACT3D_FOR_LANES b.back[p][c][l] = k.back[c][l];
   }
-  if (mat.has_back)
-    for (int c = 0; c < 6; ++c) IMPACT3D_FOR_LANES b.back[p][c][l] = k.back[c][l];
 }
 
 void calc_shell_point_stresses_block(const ShellGroupConstants& g, const ShellBlockMaterial& mat, double dt,
@@ -369,41 +401,48 @@ void calc_shell_point_stresses_block(const ShellGroupConstants& g, const ShellBl
     b.work[l] = 0;
   }
   const double hs = 0.5 * g.shrf;
-  for (int p = 0; p < g.nip; ++p) {
-    alignas(64) Lanes z, wz, d[5], old[5];
+  const int nip = g.nip;
+  alignas(64) Lanes z[kMaxShellIntegrationPoints], wz[kMaxShellIntegrationPoints];
+  alignas(64) Lanes d[kMaxShellIntegrationPoints][5], old[kMaxShellIntegrationPoints][5];
+  for (int p = 0; p < nip; ++p) {
     IMPACT3D_FOR_LANES {
       const double hh = 0.5 * b.h[l];
-      z[l] = g.zeta[p] * hh;
-      wz[l] = g.weight[p] * hh;
-      d[0][l] = b.dxx[l] + z[l] * b.kxx[l];
-      d[1][l] = b.dyy[l] + z[l] * b.kyy[l];
-      d[2][l] = 0.5 * (b.gxy[l] + z[l] * b.kxy[l]);
-      d[3][l] = hs * b.gyz[l];
-      d[4][l] = hs * b.gxz[l];
-      for (int c = 0; c < 5; ++c) old[c][l] = b.sig[p][c][l];
+      z[p][l] = g.zeta[p] * hh;
+      wz[p][l] = g.weight[p] * hh;
+      d[p][0][l] = b.dxx[l] + z[p][l] * b.kxx[l];
+      d[p][1][l] = b.dyy[l] + z[p][l] * b.kyy[l];
+      d[p][2][l] = 0.5 * (b.gxy[l] + z[p][l] * b.kxy[l]);
+      d[p][3][l] = hs * b.gyz[l];
+      d[p][4][l] = hs * b.gxz[l];
+      for (int c = 0; c < 5; ++c) old[p][c][l] = b.sig[p][c][l];
     }
-    Lanes* s = b.sig[p];
+  }
+  if (dt > 0) {
+    if (mat.kind == ShellMaterialKind::elastic)
+      for (int p = 0; p < nip; ++p) update_plane_stress_elastic_block(*mat.mc, d[p], dt, b.sig[p]);
+    else
+      update_plane_stress_plastic_block(mat, nip, d, dt, b);
+  }
+  // the work and the resultants point by point (the scalar kernel's sums)
+  for (int p = 0; p < nip; ++p) {
+    const Lanes* s = b.sig[p];
     if (dt > 0) {
-      if (mat.kind == ShellMaterialKind::elastic)
-        update_plane_stress_elastic_block(*mat.mc, d, dt, s);
-      else
-        update_plane_stress_plastic_block(mat, d, dt, b, p);
       IMPACT3D_FOR_LANES {
-        const double pw = 0.5 * ((old[0][l] + s[0][l]) * d[0][l] + (old[1][l] + s[1][l]) * d[1][l]) +
-                          (old[2][l] + s[2][l]) * d[2][l] + 0.5 * (old[3][l] + s[3][l]) * b.gyz[l] +
-                          0.5 * (old[4][l] + s[4][l]) * b.gxz[l];
-        b.work[l] += pw * wz[l];
+        const double pw = 0.5 * ((old[p][0][l] + s[0][l]) * d[p][0][l] + (old[p][1][l] + s[1][l]) * d[p][1][l]) +
+                          (old[p][2][l] + s[2][l]) * d[p][2][l] + 0.5 * (old[p][3][l] + s[3][l]) * b.gyz[l] +
+                          0.5 * (old[p][4][l] + s[4][l]) * b.gxz[l];
+        b.work[l] += pw * wz[p][l];
       }
     }
     IMPACT3D_FOR_LANES {
-      b.Nxx[l] += wz[l] * s[0][l];
-      b.Nyy[l] += wz[l] * s[1][l];
-      b.Nxy[l] += wz[l] * s[2][l];
-      b.Mxx[l] += wz[l] * z[l] * s[0][l];
-      b.Myy[l] += wz[l] * z[l] * s[1][l];
-      b.Mxy[l] += wz[l] * z[l] * s[2][l];
-      b.Qyz[l] += wz[l] * s[3][l];
-      b.Qxz[l] += wz[l] * s[4][l];
+      b.Nxx[l] += wz[p][l] * s[0][l];
+      b.Nyy[l] += wz[p][l] * s[1][l];
+      b.Nxy[l] += wz[p][l] * s[2][l];
+      b.Mxx[l] += wz[p][l] * z[p][l] * s[0][l];
+      b.Myy[l] += wz[p][l] * z[p][l] * s[1][l];
+      b.Mxy[l] += wz[p][l] * z[p][l] * s[2][l];
+      b.Qyz[l] += wz[p][l] * s[3][l];
+      b.Qxz[l] += wz[p][l] * s[4][l];
     }
   }
 }
