@@ -330,28 +330,25 @@ void Card::error(int id, int c1, int c2, const char* field, std::string detail,
   if (message_def(id).severity == Severity::error) had_error_ = true;
 }
 
-long long Card::i(int c1, int c2, const char* field, long long def) {
-  long long v = def;
-  FieldStatus st = parse_fortran_int(columns(c1, c2), v);
+template <class T, class Parse>
+T Card::number(int c1, int c2, const char* field, T def, Parse parse, int id) {
+  T v = def;
+  FieldStatus st = parse(columns(c1, c2), v);
   if (st == FieldStatus::blank) return def;
   if (st == FieldStatus::bad) {
-    error(1001, c1, c2, field);
+    error(id, c1, c2, field);
     bad_fields_.emplace_back(c1, c2);
     return def;
   }
   return v;
 }
 
+long long Card::i(int c1, int c2, const char* field, long long def) {
+  return number<long long>(c1, c2, field, def, [](std::string_view t, long long& v) { return parse_fortran_int(t, v); }, 1001);
+}
+
 double Card::e(int c1, int c2, const char* field, double def) {
-  double v = def;
-  FieldStatus st = parse_fortran_real(columns(c1, c2), v);
-  if (st == FieldStatus::blank) return def;
-  if (st == FieldStatus::bad) {
-    error(1002, c1, c2, field);
-    bad_fields_.emplace_back(c1, c2);
-    return def;
-  }
-  return v;
+  return number<double>(c1, c2, field, def, [](std::string_view t, double& v) { return parse_fortran_real(t, v); }, 1002);
 }
 
 }  // namespace impact3d

@@ -186,6 +186,9 @@ class Card {
   // Columns of the fields that failed to parse (1001/1002): a later check of the same field
   // (range, reference) would only repeat the error about the default value, so it is not shown.
   std::vector<std::pair<int, int>> bad_fields_;
+  // i and e: the field parsed by parse (blank: def; bad: message id, def).
+  template <class T, class Parse>
+  T number(int c1, int c2, const char* field, T def, Parse parse, int id);
 };
 
 }  // namespace impact3d

@@ -73,12 +73,35 @@ const char* kUsage =
     "Exit status: 0 done (compare, compare-summary: same within tolerance), 1 different,\n"
     "2 usage, input or rendering error.\n";
 
+// --tol FILE (--tolerances, -t) at argument i.
+bool is_tol_option(const std::string& a, int i, int argc) {
+    return (a == "--tol" || a == "--tolerances" || a == "-t") && i + 1 < argc;
+}
+
+// A word of command cmd that is no option it knows: an operand (into pos), or an unknown option
+// (false, reported with the usage).
+bool operand(const std::string& a, const char* cmd, std::vector<std::string>& pos) {
+    if (!a.empty() && a[0] == '-') {
+        std::cerr << "postimpact " << cmd << ": unknown option " << a << "\n" << kUsage;
+        return false;
+    }
+    pos.push_back(a);
+    return true;
+}
+
+// The two operands of cmd (what: what they are), or false (reported with the usage).
+bool two_operands(const std::vector<std::string>& pos, const char* cmd, const char* what) {
+    if (pos.size() == 2) return true;
+    std::cerr << "postimpact " << cmd << ": expected two " << what << "\n" << kUsage;
+    return false;
+}
+
 int run_compare(int argc, char** argv) {
     std::vector<std::string> pos;
     postimpact::CompareOptions opt;
     for (int i = 2; i < argc; ++i) {
         const std::string a = argv[i];
-        if ((a == "--tol" || a == "--tolerances" || a == "-t") && i + 1 < argc) {
+        if (is_tol_option(a, i, argc)) {
             opt.tol = postimpact::Tolerances::read(argv[++i]);
         } else if (a == "--report" && i + 1 < argc) {
             const char* v = argv[++i];
@@ -91,17 +114,11 @@ int run_compare(int argc, char** argv) {
             opt.report = static_cast<int>(n);
         } else if (a == "--by-time") {
             opt.by_time = true;
-        } else if (!a.empty() && a[0] == '-') {
-            std::cerr << "postimpact compare: unknown option " << a << "\n" << kUsage;
+        } else if (!operand(a, "compare", pos)) {
             return 2;
-        } else {
-            pos.push_back(a);
         }
     }
-    if (pos.size() != 2) {
-        std::cerr << "postimpact compare: expected two databases\n" << kUsage;
-        return 2;
-    }
+    if (!two_operands(pos, "compare", "databases")) return 2;
     return postimpact::compare_databases(pos[0], pos[1], opt, std::cout);
 }
 
@@ -140,19 +157,13 @@ int run_compare_summary(int argc, char** argv) {
     postimpact::Tolerances tol;
     for (int i = 2; i < argc; ++i) {
         const std::string a = argv[i];
-        if ((a == "--tol" || a == "--tolerances" || a == "-t") && i + 1 < argc) {
+        if (is_tol_option(a, i, argc)) {
             tol = postimpact::Tolerances::read(argv[++i]);
-        } else if (!a.empty() && a[0] == '-') {
-            std::cerr << "postimpact compare-summary: unknown option " << a << "\n" << kUsage;
+        } else if (!operand(a, "compare-summary", pos)) {
             return 2;
-        } else {
-            pos.push_back(a);
         }
     }
-    if (pos.size() != 2) {
-        std::cerr << "postimpact compare-summary: expected two summary files\n" << kUsage;
-        return 2;
-    }
+    if (!two_operands(pos, "compare-summary", "summary files")) return 2;
     const auto a = postimpact::read_summary(pos[0]);
     const auto b = postimpact::read_summary(pos[1]);
     return postimpact::compare_summaries(a, b, tol, std::cout, pos[0], pos[1]);

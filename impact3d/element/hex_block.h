@@ -328,28 +328,26 @@ inline void limit_hex_time_step_block(HexBlock& k) {
 }
 
 // Element step (calc_hex_time_step) into k.dt.
+namespace hex_block_detail {
+// One lane's step: length V / A_max over the sound speed c with the bulk viscosity's q (DBL_MAX
+// where the element has no length or no speed).
+inline double hex_lane_time_step(const HexBlock& k, int l, double c, double q1, double q2) {
+  const double len = k.v[l] / k.amax[l];
+  const double trd = k.trd[l];
+  const double q = trd < 0.0 ? q2 * c + q1 * len * (-trd) : 0.0;
+  const double den = q + std::sqrt(q * q + c * c);
+  const double dt = len / den;
+  return (k.amax[l] <= 0.0 || den <= 0.0) ? DBL_MAX : dt;
+}
+}  // namespace hex_block_detail
+
 inline void calc_hex_time_step_block(HexBlock& k, double c, double q1, double q2) {
-  IMPACT3D_FOR_LANES {
-    const double len = k.v[l] / k.amax[l];
-    const double trd = k.trd[l];
-    const double q = trd < 0.0 ? q2 * c + q1 * len * (-trd) : 0.0;
-    const double den = q + std::sqrt(q * q + c * c);
-    const double dt = len / den;
-    k.dt[l] = (k.amax[l] <= 0.0 || den <= 0.0) ? DBL_MAX : dt;
-  }
+  IMPACT3D_FOR_LANES { k.dt[l] = hex_block_detail::hex_lane_time_step(k, l, c, q1, q2); }
 }
 
 // The same with a sound speed per lane (k.cs: groups with an equation of state).
 inline void calc_hex_time_step_lanes_block(HexBlock& k, double q1, double q2) {
-  IMPACT3D_FOR_LANES {
-    const double c = k.cs[l];
-    const double len = k.v[l] / k.amax[l];
-    const double trd = k.trd[l];
-    const double q = trd < 0.0 ? q2 * c + q1 * len * (-trd) : 0.0;
-    const double den = q + std::sqrt(q * q + c * c);
-    const double dt = len / den;
-    k.dt[l] = (k.amax[l] <= 0.0 || den <= 0.0) ? DBL_MAX : dt;
-  }
+  IMPACT3D_FOR_LANES { k.dt[l] = hex_block_detail::hex_lane_time_step(k, l, k.cs[l], q1, q2); }
 }
 
 }  // namespace impact3d

@@ -208,6 +208,24 @@ void add_node_to_rigid_body(const State& s, std::size_t k, RigidBody& rb, std::a
   rb.r0.insert(rb.r0.end(), {r[0], r[1], r[2]});
 }
 
+// The body's nodes move with its rigid motion: v = vcom + omega x r.
+void set_rigid_node_velocities(State& s, const RigidBody& rb) {
+  for (std::size_t j = 0; j < rb.nodes.size(); ++j) {
+    const double* r = &rb.r0[3 * j];
+    const std::size_t n = std::size_t(rb.nodes[j]);
+    s.vx[n] = rb.vcom[0] + rb.omega[1] * r[2] - rb.omega[2] * r[1];
+    s.vy[n] = rb.vcom[1] + rb.omega[2] * r[0] - rb.omega[0] * r[2];
+    s.vz[n] = rb.vcom[2] + rb.omega[0] * r[1] - rb.omega[1] * r[0];
+  }
+}
+
+// The body's translations that `fixed` (bits x, y, z) or any of its nodes fixes are zero.
+void zero_fixed_translations(const State& s, RigidBody& rb, unsigned fixed) {
+  for (int n : rb.nodes) fixed |= s.fix[std::size_t(n)];
+  for (int a = 0; a < 3; ++a)
+    if (fixed & (1u << a)) rb.vcom[std::size_t(a)] = 0;
+}
+
 void init_rigid_bodies(const Model& m, State& s) {
   for (std::size_t k = 0; k < s.mats.size(); ++k) {
     if (!material_type(s.mats[k].type).rigid) continue;
@@ -253,18 +271,9 @@ void init_rigid_bodies(const Model& m, State& s) {
     rigid_body_constraints(m.materials[k], rb.fix_translation, rb.fix_rotation);
     // as in the run: a fixed node fixes that translation of the body; the material's
     // constraints (CMO/CON1/CON2) its translations and rotations
-    unsigned fixed = rb.fix_translation;
-    for (int n : rb.nodes) fixed |= s.fix[std::size_t(n)];
-    for (int a = 0; a < 3; ++a)
-      if (fixed & (1u << a)) rb.vcom[std::size_t(a)] = 0;
+    zero_fixed_translations(s, rb, rb.fix_translation);
     if (rb.fix_rotation) rb.omega = constrained_rigid_omega(I, L, rb.fix_rotation, rb.ang_mom);
-    for (std::size_t j = 0; j < rb.nodes.size(); ++j) {
-      const double* r = &rb.r0[3 * j];
-      const std::size_t n = std::size_t(rb.nodes[j]);
-      s.vx[n] = rb.vcom[0] + rb.omega[1] * r[2] - rb.omega[2] * r[1];
-      s.vy[n] = rb.vcom[1] + rb.omega[2] * r[0] - rb.omega[0] * r[2];
-      s.vz[n] = rb.vcom[2] + rb.omega[0] * r[1] - rb.omega[1] * r[0];
-    }
+    set_rigid_node_velocities(s, rb);
     int idx = int(s.rigid.size());
     for (int n : rb.nodes) s.rigid_of_node[std::size_t(n)] = idx;
     s.rigid.push_back(std::move(rb));
@@ -326,17 +335,8 @@ void init_spot_welds(const Model& m, State& s) {
     rb.inertia0 = I;
     rb.ang_mom = L;
     rb.omega = rigid_omega(I, L);
-    unsigned fixed = 0;
-    for (int n : rb.nodes) fixed |= s.fix[std::size_t(n)];
-    for (int a = 0; a < 3; ++a)
-      if (fixed & (1u << a)) rb.vcom[std::size_t(a)] = 0;
-    for (std::size_t j = 0; j < rb.nodes.size(); ++j) {
-      const double* r = &rb.r0[3 * j];
-      const std::size_t n = std::size_t(rb.nodes[j]);
-      s.vx[n] = rb.vcom[0] + rb.omega[1] * r[2] - rb.omega[2] * r[1];
-      s.vy[n] = rb.vcom[1] + rb.omega[2] * r[0] - rb.omega[0] * r[2];
-      s.vz[n] = rb.vcom[2] + rb.omega[0] * r[1] - rb.omega[1] * r[0];
-    }
+    zero_fixed_translations(s, rb, 0);
+    set_rigid_node_velocities(s, rb);
     const int idx = int(s.rigid.size());
     for (int n : rb.nodes) s.rigid_of_node[std::size_t(n)] = idx;
     s.rigid.push_back(std::move(rb));

@@ -327,26 +327,24 @@ class KeywordWriter {
   void shell_elements() {
     if (m_.num_shells() == 0) return;
     os_ << "*ELEMENT_SHELL_THICKNESS\n$#   eid     pid      n1      n2      n3      n4\n";
-    for (int e = 0; e < m_.num_shells(); ++e) {
-      const auto& n = m_.shell_nodes[std::size_t(e)];
-      std::vector<KField> f = {I(m_.shell_id(e), 8), I(m_.shell_material[std::size_t(e)] + 1, 8)};
-      for (int v : n) f.push_back(I(v >= 0 ? nid(v) : 0, 8));
-      os_ << kcard(f) << "\n";
-      const auto& t = m_.shell_thickness[std::size_t(e)];
-      os_ << kcard({R(t[0], 16), R(t[1], 16), R(t[2], 16), R(t[3], 16)}) << "\n";
-    }
+    element_cards(m_.num_shells(), m_.shell_nodes, m_.shell_material, m_.shell_thickness, [&](int e) { return m_.shell_id(e); });
   }
 
   // Beams, with their section sizes on every element card (all 0: the section's).
   void beam_elements() {
     if (m_.num_beams() == 0) return;
     os_ << "*ELEMENT_BEAM_THICKNESS\n$#   eid     pid      n1      n2      n3\n";
-    for (int e = 0; e < m_.num_beams(); ++e) {
-      const auto& n = m_.beam_nodes[std::size_t(e)];
-      std::vector<KField> f = {I(m_.beam_id(e), 8), I(m_.beam_material[std::size_t(e)] + 1, 8)};
-      for (int v : n) f.push_back(I(v >= 0 ? nid(v) : 0, 8));
+    element_cards(m_.num_beams(), m_.beam_nodes, m_.beam_material, m_.beam_thickness, [&](int e) { return m_.beam_id(e); });
+  }
+
+  // The cards of n shells or beams: EID PID N1... (a missing node 0), then the four sizes.
+  template <class Nodes, class Materials, class Sizes, class Id>
+  void element_cards(int n, const Nodes& nodes, const Materials& material, const Sizes& sizes, Id&& id) {
+    for (int e = 0; e < n; ++e) {
+      std::vector<KField> f = {I(id(e), 8), I(material[std::size_t(e)] + 1, 8)};
+      for (int v : nodes[std::size_t(e)]) f.push_back(I(v >= 0 ? nid(v) : 0, 8));
       os_ << kcard(f) << "\n";
-      const auto& t = m_.beam_thickness[std::size_t(e)];
+      const auto& t = sizes[std::size_t(e)];
       os_ << kcard({R(t[0], 16), R(t[1], 16), R(t[2], 16), R(t[3], 16)}) << "\n";
     }
   }

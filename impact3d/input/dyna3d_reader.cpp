@@ -715,21 +715,58 @@ class Dyna3dReader {
     std::vector<int> seen(std::size_t(n), 0);
     const FixedCardLayout& layout = sized_layout("node card");
     const int after = layout.field("rotational code").c2 + 1;  // the first column not read
-    int unread = 0;  // node cards with text in the columns after the rotational code
+    // the columns after the rotational code are not read: some writers put a code there
+    read_numbered_cards(
+        n, layout, after, {"node", "NUMNP", "node", "the rotational code"}, seen,
+        [&] { return read_plain_node(layout, seen); }, [&](FixedValues& v) { read_node_card(v, seen); });
+  }
+
+  // Card number id (1..n, control card 2's `count`) of a numbered table, seen on the card's line;
+  // false (error 1201 or 1200 on `field`, "<what> N already defined") when it is out of range
+  // or seen before.
+  static bool claim_number(const FixedValues& v, long long id, int n, const char* field, const char* what, const char* count,
+                           std::vector<int>& seen) {
+    if (id < 1 || id > n) {
+      v.error(1201, field, "must be 1.." + std::to_string(n) + " (" + count + ")");
+      return false;
+    }
+    if (seen[std::size_t(id - 1)]) {
+      v.error(1200, field, std::string(what) + " " + std::to_string(id) + " already defined on line " + std::to_string(seen[std::size_t(id - 1)]));
+      return false;
+    }
+    seen[std::size_t(id - 1)] = v.card().line();
+    return true;
+  }
+
+  // How read_numbered_cards names a table's cards in messages.
+  struct NumberedCards {
+    const char* what;     // "node": "node card 3 of 8", "node number(s) never defined"
+    const char* count;    // control card 2's count: "NUMNP"
+    const char* id_word;  // "node card for node 17"
+    const char* last;     // the last field read: "after the rotational code"
+  };
+
+  // The n cards of a numbered table (nodes, solid elements): each taken by plain() (the fast
+  // path) or else read as a Card by full(); text in the columns from `after` on (not read) is
+  // warning 2020 (counted, the first named); numbers never defined are error 1204.
+  template <class Plain, class Full>
+  void read_numbered_cards(int n, const FixedCardLayout& layout, int after, const NumberedCards& names, std::vector<int>& seen,
+                           Plain&& plain, Full&& full) {
+    int unread = 0;  // cards with text after the last field
     Location unread_where;
+    const std::string what = names.what, id_word = names.id_word;
     for (int k = 0; k < n; ++k) {
-      if (read_plain_node(layout, seen)) continue;
-      Card c = next("node card " + std::to_string(k + 1) + " of " + std::to_string(n),
-                    "expected " + std::to_string(n) + " node cards (control card 2 NUMNP), found " + std::to_string(k));
-      FixedValues v(c, layout, [](long long id) { return "node card for node " + std::to_string(id); });
-      // the columns after the rotational code are not read: some writers put a code there
+      if (plain()) continue;
+      Card c = next(what + " card " + std::to_string(k + 1) + " of " + std::to_string(n),
+                    "expected " + std::to_string(n) + " " + what + " cards (control card 2 " + names.count + "), found " + std::to_string(k));
+      FixedValues v(c, layout, [&](long long id) { return what + " card for " + id_word + " " + std::to_string(id); });
       if (!c.blank(after, 80) && unread++ == 0) unread_where = c.where(after, 80, "unread columns");
-      read_node_card(v, seen);
+      full(v);
     }
     if (unread)
-      diag_.add(2020, unread_where, std::to_string(unread) + " node card(s) (this is the first) hold text in columns " +
-                                        std::to_string(after) + "-80, after the rotational code: IMPACT-3D reads nothing there");
-    report_missing(seen, "node");
+      diag_.add(2020, unread_where, std::to_string(unread) + " " + what + " card(s) (this is the first) hold text in columns " +
+                                        std::to_string(after) + "-80, after " + names.last + ": IMPACT-3D reads nothing there");
+    report_missing(seen, what.c_str());
   }
 
   // The next node card read without a Card when it is plain and every field passes (nothing to
@@ -773,15 +810,7 @@ class Dyna3dReader {
       m_.rot_bc[std::size_t(id - 1)] = bits[rc];
       rot_code_line_[std::size_t(id - 1)] = v.card().line();
     }
-    if (id < 1 || id > n) {
-      v.error(1201, "node number", "must be 1.." + std::to_string(n) + " (NUMNP)");
-      return;
-    }
-    if (seen[std::size_t(id - 1)]) {
-      v.error(1200, "node number", "node " + std::to_string(id) + " already defined on line " + std::to_string(seen[std::size_t(id - 1)]));
-      return;
-    }
-    seen[std::size_t(id - 1)] = v.card().line();
+    if (!claim_number(v, id, n, "node number", "node", "NUMNP", seen)) return;
     m_.x[std::size_t(id - 1)] = v["x"];
     m_.y[std::size_t(id - 1)] = v["y"];
     m_.z[std::size_t(id - 1)] = v["z"];
@@ -818,20 +847,9 @@ class Dyna3dReader {
     std::vector<int> seen(std::size_t(n), 0);
     const FixedCardLayout& layout = sized_layout("solid element card");
     const int after = layout.field("node n8").c2 + 1;  // the first column not read
-    int unread = 0;                                     // element cards with text after node n8
-    Location unread_where;
-    for (int k = 0; k < n; ++k) {
-      if (read_plain_solid(layout, seen)) continue;
-      Card c = next("solid element card " + std::to_string(k + 1) + " of " + std::to_string(n),
-                    "expected " + std::to_string(n) + " solid element cards (control card 2 NUMELH), found " + std::to_string(k));
-      FixedValues v(c, layout, [](long long id) { return "solid element card for element " + std::to_string(id); });
-      if (!c.blank(after, 80) && unread++ == 0) unread_where = c.where(after, 80, "unread columns");
-      read_solid_card(v, seen);
-    }
-    if (unread)
-      diag_.add(2020, unread_where, std::to_string(unread) + " solid element card(s) (this is the first) hold text in columns " +
-                                        std::to_string(after) + "-80, after node n8: IMPACT-3D reads nothing there");
-    report_missing(seen, "solid element");
+    read_numbered_cards(
+        n, layout, after, {"solid element", "NUMELH", "element", "node n8"}, seen,
+        [&] { return read_plain_solid(layout, seen); }, [&](FixedValues& v) { read_solid_card(v, seen); });
   }
 
   // The next solid element card read without a Card when it is plain and every field passes;
@@ -880,15 +898,7 @@ class Dyna3dReader {
       v.card().error(1222, a.col_first, b.col_last, "nodes n1-n8");
       ok = false;
     }
-    if (id < 1 || id > n) {
-      v.error(1201, "element number", "must be 1.." + std::to_string(n) + " (NUMELH)");
-      return;
-    }
-    if (seen[std::size_t(id - 1)]) {
-      v.error(1200, "element number", "element " + std::to_string(id) + " already defined on line " + std::to_string(seen[std::size_t(id - 1)]));
-      return;
-    }
-    seen[std::size_t(id - 1)] = v.card().line();
+    if (!claim_number(v, id, n, "element number", "element", "NUMELH", seen)) return;
     if (!ok) nodes.fill(-1);
     else make_canonical_solid_node_pattern(nodes);
     m_.hex_line[std::size_t(id - 1)] = v.card().line();
@@ -932,15 +942,7 @@ class Dyna3dReader {
     }
     std::array<double, 4> t{};
     ok = read_shell_thickness(id, t) && ok;
-    if (id < 1 || id > n) {
-      v.error(1201, "element number", "must be 1.." + std::to_string(n) + " (NUMELS)");
-      return;
-    }
-    if (seen[std::size_t(id - 1)]) {
-      v.error(1200, "element number", "shell " + std::to_string(id) + " already defined on line " + std::to_string(seen[std::size_t(id - 1)]));
-      return;
-    }
-    seen[std::size_t(id - 1)] = v.card().line();
+    if (!claim_number(v, id, n, "element number", "shell", "NUMELS", seen)) return;
     m_.shell_line[std::size_t(id - 1)] = v.card().line();
     if (!ok) return;
     if (t[0] == 0 && t[1] == 0 && t[2] == 0 && t[3] == 0) t = m_.materials[std::size_t(mat - 1)].shell_section.t;
@@ -1895,12 +1897,7 @@ class Dyna3dReader {
       }
       if (ok && nodes[0] == nodes[1]) { v.error(1250, "node n2", "n1 = n2"); ok = false; }
       std::array<double, 4> t{v["field 6"], v["field 7"], v["field 8"], v["field 9"]};
-      if (id < 1 || id > n) { v.error(1201, "element number", "must be 1.." + std::to_string(n) + " (NUMELB)"); continue; }
-      if (seen[std::size_t(id - 1)]) {
-        v.error(1200, "element number", "beam " + std::to_string(id) + " already defined on line " + std::to_string(seen[std::size_t(id - 1)]));
-        continue;
-      }
-      seen[std::size_t(id - 1)] = c.line();
+      if (!claim_number(v, id, n, "element number", "beam", "NUMELB", seen)) continue;
       m_.beam_line[std::size_t(id - 1)] = c.line();
       if (!ok) continue;
       m_.beam_nodes[std::size_t(id - 1)] = nodes;

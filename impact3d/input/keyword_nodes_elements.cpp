@@ -210,6 +210,25 @@ void read_sizes(KeywordValues& v2, const char* const (&names)[4], std::array<dou
   v2.rest();
 }
 
+// A shell or beam card at k and, with _THICKNESS, its thickness card (the four sizes `sizes`;
+// k then at it): own(v, e, ok) reads the fields of the kind's own; the element goes to `out`
+// when every field passed and its EID checks.  False when the block ends before the thickness
+// card (reported).
+template <class R, class Out, class Own>
+bool read_element(const Block& b, std::size_t& k, KeywordContext& ctx, const KeywordSpec& s, bool thickness, const char* missing,
+                  const char* const (&sizes)[4], Out& out, Own&& own) {
+  R e;
+  KeywordValues v = element_card(b, k, ctx, s, e);
+  bool ok = true;
+  own(v, e, ok);
+  if (thickness) {
+    if (!thickness_card(b, k, ctx, s, v, e.id, missing, [&](KeywordValues& v2) { read_sizes(v2, sizes, e.t, ok); })) return false;
+    ++k;
+  }
+  if (v.check("EID") && ok) out.push_back(e);
+  return true;
+}
+
 // *ELEMENT_SHELL (_THICKNESS): EID PID N1-N8 (N5-N8 refused); _THICKNESS: THIC1-THIC4 BETA.
 void read_shells(const Block& b, KeywordContext& ctx, const KeywordSpec& s, KeywordMesh& m, bool thickness) {
   if (!thickness) reserve_for(m.shells, b.data.size());
@@ -222,21 +241,13 @@ void read_shells(const Block& b, KeywordContext& ctx, const KeywordSpec& s, Keyw
         continue;
       }
     }
-    RShell e;
-    KeywordValues v = element_card(b, k, ctx, s, e);
-    bool ok = true;
-    for (const char* n : {"N5", "N6", "N7", "N8"}) ok = v.passed(n) && ok;
-    if (e.n[3] == 0) e.n[3] = e.n[2];  // triangle given with three nodes
-    if (thickness) {
-      if (!thickness_card(b, k, ctx, s, v, e.id, "the thickness card (THIC1-THIC4 BETA) is missing", [&](KeywordValues& v2) {
-            static const char* const kT[4] = {"THIC1", "THIC2", "THIC3", "THIC4"};
-            read_sizes(v2, kT, e.t, ok);
-          }))
-        break;
-      ++k;
-    }
-    if (!v.check("EID")) continue;
-    if (ok) m.shells.push_back(e);
+    static const char* const kT[4] = {"THIC1", "THIC2", "THIC3", "THIC4"};
+    const bool read = read_element<RShell>(b, k, ctx, s, thickness, "the thickness card (THIC1-THIC4 BETA) is missing", kT, m.shells,
+                                           [](KeywordValues& v, RShell& e, bool& ok) {
+                                             for (const char* n : {"N5", "N6", "N7", "N8"}) ok = v.passed(n) && ok;
+                                             if (e.n[3] == 0) e.n[3] = e.n[2];  // triangle given with three nodes
+                                           });
+    if (!read) break;
   }
 }
 
@@ -245,21 +256,13 @@ void read_shells(const Block& b, KeywordContext& ctx, const KeywordSpec& s, Keyw
 void read_beams(const Block& b, KeywordContext& ctx, const KeywordSpec& s, KeywordMesh& m, bool thickness) {
   for (std::size_t k = 0; k < b.data.size(); ++k) {
     if (is_blank(b.data[k].line->text)) continue;
-    RBeam e;
-    KeywordValues v = element_card(b, k, ctx, s, e);
-    bool ok = true;
-    for (const char* r : {"RT1", "RR1", "RT2", "RR2"}) ok = v.passed(r) && ok;
-    v.rest();  // LOCAL
-    if (thickness) {
-      if (!thickness_card(b, k, ctx, s, v, e.id, "the thickness card (PARM1-PARM5) is missing", [&](KeywordValues& v2) {
-            static const char* const kParm[4] = {"PARM1", "PARM2", "PARM3", "PARM4"};
-            read_sizes(v2, kParm, e.t, ok);
-          }))
-        break;
-      ++k;
-    }
-    if (!v.check("EID")) continue;
-    if (ok) m.beams.push_back(e);
+    static const char* const kParm[4] = {"PARM1", "PARM2", "PARM3", "PARM4"};
+    const bool read = read_element<RBeam>(b, k, ctx, s, thickness, "the thickness card (PARM1-PARM5) is missing", kParm, m.beams,
+                                          [](KeywordValues& v, RBeam&, bool& ok) {
+                                            for (const char* r : {"RT1", "RR1", "RT2", "RR2"}) ok = v.passed(r) && ok;
+                                            v.rest();  // LOCAL
+                                          });
+    if (!read) break;
   }
 }
 

@@ -16,20 +16,10 @@
 namespace impact3d::kw {
 
 void resolve_nodes(ResolveContext& rc) {
-  std::vector<std::uint32_t> order(rc.me.nodes.size());
-  for (std::size_t k = 0; k < order.size(); ++k) order[k] = std::uint32_t(k);
-  const auto by_id = [&](std::uint32_t a, std::uint32_t b) { return rc.me.nodes[a].id < rc.me.nodes[b].id; };
-  if (!std::is_sorted(order.begin(), order.end(), by_id)) std::stable_sort(order.begin(), order.end(), by_id);
-  // the first of each id is kept (order is filtered in place)
-  std::size_t nn = 0;
-  for (std::size_t q = 0; q < order.size(); ++q) {
-    const RNode& n = rc.me.nodes[order[q]];
-    if (nn > 0 && rc.me.nodes[order[nn - 1]].id == n.id) {
-      rc.err(1200, n.ref(), "*NODE node " + std::to_string(n.id), "NID", "node " + std::to_string(n.id) + " also defined at " + at(rc.me.nodes[order[nn - 1]].ref()));
-      continue;
-    }
-    order[nn++] = order[q];
-  }
+  std::vector<std::uint32_t> order;
+  const std::size_t nn = order_by_id(rc.me.nodes, order, [&](const RNode& n, const RNode& first) {
+    rc.err(1200, n.ref(), "*NODE node " + std::to_string(n.id), "NID", "node " + std::to_string(n.id) + " also defined at " + at(first.ref()));
+  });
   const auto kept = [&](std::size_t k) { return &rc.me.nodes[order[k]]; };
   assign_huge(rc.m.x, nn, 0.0);
   assign_huge(rc.m.y, nn, 0.0);
@@ -64,20 +54,10 @@ void resolve_parts_and_elements(ResolveContext& rc) {
     if (!fresh) rc.err(1200, rc.ps.parts[k].ref, "*PART " + std::to_string(rc.ps.parts[k].pid), "PID", "also defined at " + at(rc.ps.parts[it->second].ref));
   }
   rc.part_elems.assign(rc.ps.parts.size(), {});
-  std::vector<std::uint32_t> order(rc.me.elems.size());
-  for (std::size_t k = 0; k < order.size(); ++k) order[k] = std::uint32_t(k);
-  const auto by_id = [&](std::uint32_t a, std::uint32_t b) { return rc.me.elems[a].id < rc.me.elems[b].id; };
-  if (!std::is_sorted(order.begin(), order.end(), by_id)) std::stable_sort(order.begin(), order.end(), by_id);
-  // the first of each id is kept (order is filtered in place)
-  std::size_t ne = 0;
-  for (std::size_t q = 0; q < order.size(); ++q) {
-    const RElem& e = rc.me.elems[order[q]];
-    if (ne > 0 && rc.me.elems[order[ne - 1]].id == e.id) {
-      rc.err(1200, e.ref(), "*ELEMENT_SOLID element " + std::to_string(e.id), "EID", "element " + std::to_string(e.id) + " also defined at " + at(rc.me.elems[order[ne - 1]].ref()));
-      continue;
-    }
-    order[ne++] = order[q];
-  }
+  std::vector<std::uint32_t> order;
+  const std::size_t ne = order_by_id(rc.me.elems, order, [&](const RElem& e, const RElem& first) {
+    rc.err(1200, e.ref(), "*ELEMENT_SOLID element " + std::to_string(e.id), "EID", "element " + std::to_string(e.id) + " also defined at " + at(first.ref()));
+  });
   std::array<int, 8> undefined;
   undefined.fill(-1);
   assign_huge(rc.m.hex_nodes, ne, undefined);

@@ -151,30 +151,53 @@ void resolve_materials(ResolveContext& rc) {
     if (rc.m.hex_material[e] < 0) rc.m.hex_nodes[e].fill(-1);
 }
 
-// A shell or beam part whose MID names no supported material: error 1103 naming the refused
-// keyword that defines it and the materials the kind (shells, beams) takes, or 1310.
-static void refuse_part_material(ResolveContext& rc, const RPart& p, const std::string& card, const char* kind,
-                                 const std::string& supported) {
-  auto u = rc.refused.mids.find(p.mid);
-  if (u != rc.refused.mids.end())
-    rc.err(1103, p.mid_ref, card, "MID", "material " + std::to_string(p.mid) + " is " + u->second + "; supported for " + kind + ": " + supported);
-  else rc.err(1310, p.mid_ref, card, "MID", "material " + std::to_string(p.mid) + " is not defined by a *MAT keyword");
-}
+// What a part of shells or beams needs: its section keyword, its material forms.
+struct PartKind {
+  const char* section;     // the section keyword
+  const char* elements;    // in messages: "shells need *SECTION_SHELL"
+  const char* form;        // the material form: "has no shell form"
+  const char* eos_detail;  // error 1102 when the part names an EOSID
+  bool (*has_kernel)(int type);
+  std::string (*materials)();  // the material keywords the form has
+};
+const PartKind kShellParts = {"*SECTION_SHELL", "shells", "shell", "equations of state", has_shell_kernel, shell_material_keywords};
+const PartKind kBeamParts = {"*SECTION_BEAM", "beams", "beam", "equations of state of beams", has_beam_kernel, beam_material_keywords};
 
-// A shell or beam part's material, numbered next, with the part's title and line.
-static MaterialData part_material_data(const ResolveContext& rc, const RPart& p, const RMat& r) {
-  MaterialData md = r.md;
+// A shell or beam part's section and material: the part's material (md: its data, numbered
+// next, with the part's title and line), or null when the section is not found (`other`: a
+// section of another kind, "is not a ...") or the MID names no material of the kind (errors
+// 1102, 1103, 1310 naming the refused keyword that defines the id, if one does).
+static const RMat* part_material_of_kind(ResolveContext& rc, const RPart& p, const std::string& card, const PartKind& kind,
+                                         bool section_found, const char* other, MaterialData& md) {
+  const std::string need = std::string("; ") + kind.elements + " need " + kind.section;
+  if (!section_found) {
+    if (other) rc.err(1102, p.sec_ref, card, "SECID", "section " + std::to_string(p.secid) + " " + other + need);
+    else if (auto u = rc.refused.secids.find(p.secid); u != rc.refused.secids.end())
+      rc.err(1102, p.sec_ref, card, "SECID", "section " + std::to_string(p.secid) + " is " + u->second + need);
+    else rc.err(1310, p.sec_ref, card, "SECID", std::string(kind.section) + " " + std::to_string(p.secid) + " is not defined");
+    return nullptr;
+  }
+  auto mit = rc.mt.mats.find(p.mid);
+  if (mit == rc.mt.mats.end()) {
+    auto u = rc.refused.mids.find(p.mid);
+    if (u != rc.refused.mids.end())
+      rc.err(1103, p.mid_ref, card, "MID",
+             "material " + std::to_string(p.mid) + " is " + u->second + "; supported for " + kind.elements + ": " + kind.materials());
+    else rc.err(1310, p.mid_ref, card, "MID", "material " + std::to_string(p.mid) + " is not defined by a *MAT keyword");
+    return nullptr;
+  }
+  if (p.eosid != 0) rc.err(1102, p.eos_ref, card, "EOSID", kind.eos_detail);
+  const RMat& r = mit->second;
+  md = r.md;
   md.number = int(rc.m.materials.size()) + 1;
   md.title = p.title;
   md.line = p.line;
-  return md;
-}
-
-// Error 1103: the part's material type has no form of this kind (shell, beam).
-static void refuse_material_form(ResolveContext& rc, const RPart& p, const std::string& card, const MaterialData& md,
-                                 const char* form, const std::string& supported) {
-  rc.err(1103, p.mid_ref, card, "MID", "material " + std::to_string(p.mid) + " (type " + std::to_string(md.type) + ") has no " + form +
-                                           " form; supported for " + form + "s: " + supported);
+  if (!kind.has_kernel(md.type)) {
+    rc.err(1103, p.mid_ref, card, "MID", "material " + std::to_string(p.mid) + " (type " + std::to_string(md.type) + ") has no " +
+                                             kind.form + " form; supported for " + kind.form + "s: " + kind.materials());
+    return nullptr;
+  }
+  return &r;
 }
 
 // Elements of refused parts (material < 0): material -1 and no nodes (the checks skip them).
@@ -195,26 +218,11 @@ void resolve_beam_materials(ResolveContext& rc) {
     if (rc.part_index[p.pid] != int(k) || rc.part_beams[k].empty() || !rc.part_elems[k].empty() || !rc.part_shells[k].empty()) continue;
     const std::string card = "*PART " + std::to_string(p.pid);
     auto sit = rc.ps.beam_sections.find(p.secid);
-    auto mit = rc.mt.mats.find(p.mid);
-    if (sit == rc.ps.beam_sections.end()) {
-      if (rc.ps.sections.count(p.secid) || rc.ps.shell_sections.count(p.secid))
-        rc.err(1102, p.sec_ref, card, "SECID", "section " + std::to_string(p.secid) + " is not a *SECTION_BEAM; beams need *SECTION_BEAM");
-      else if (auto u = rc.refused.secids.find(p.secid); u != rc.refused.secids.end())
-        rc.err(1102, p.sec_ref, card, "SECID", "section " + std::to_string(p.secid) + " is " + u->second + "; beams need *SECTION_BEAM");
-      else rc.err(1310, p.sec_ref, card, "SECID", "*SECTION_BEAM " + std::to_string(p.secid) + " is not defined");
-      continue;
-    }
-    if (mit == rc.mt.mats.end()) {
-      refuse_part_material(rc, p, card, "beams", beam_material_keywords());
-      continue;
-    }
-    if (p.eosid != 0) rc.err(1102, p.eos_ref, card, "EOSID", "equations of state of beams");
-    const RMat& r = mit->second;
-    MaterialData md = part_material_data(rc, p, r);
-    if (!has_beam_kernel(md.type)) {
-      refuse_material_form(rc, p, card, md, "beam", beam_material_keywords());
-      continue;
-    }
+    const bool other = rc.ps.sections.count(p.secid) || rc.ps.shell_sections.count(p.secid);
+    MaterialData md;
+    const RMat* rm = part_material_of_kind(rc, p, card, kBeamParts, sit != rc.ps.beam_sections.end(), other ? "is not a *SECTION_BEAM" : nullptr, md);
+    if (!rm) continue;
+    const RMat& r = *rm;
     resolve_rigid_constraints(rc, md, r, p.mid);
     if (auto eit = rc.mt.erosion.find(p.mid); eit != rc.mt.erosion.end())
       rc.err(1102, eit->second.second, "*MAT_ADD_EROSION material " + std::to_string(p.mid), "MID", "erosion (element deletion) of beams");
@@ -246,25 +254,11 @@ void resolve_shell_materials(ResolveContext& rc) {
     if (rc.part_index[p.pid] != int(k) || rc.part_shells[k].empty() || !rc.part_elems[k].empty()) continue;
     const std::string card = "*PART " + std::to_string(p.pid);
     auto sit = rc.ps.shell_sections.find(p.secid);
-    auto mit = rc.mt.mats.find(p.mid);
-    if (sit == rc.ps.shell_sections.end()) {
-      if (rc.ps.sections.count(p.secid)) rc.err(1102, p.sec_ref, card, "SECID", "section " + std::to_string(p.secid) + " is a *SECTION_SOLID; shells need *SECTION_SHELL");
-      else if (auto u = rc.refused.secids.find(p.secid); u != rc.refused.secids.end())
-        rc.err(1102, p.sec_ref, card, "SECID", "section " + std::to_string(p.secid) + " is " + u->second + "; shells need *SECTION_SHELL");
-      else rc.err(1310, p.sec_ref, card, "SECID", "*SECTION_SHELL " + std::to_string(p.secid) + " is not defined");
-      continue;
-    }
-    if (mit == rc.mt.mats.end()) {
-      refuse_part_material(rc, p, card, "shells", shell_material_keywords());
-      continue;
-    }
-    if (p.eosid != 0) rc.err(1102, p.eos_ref, card, "EOSID", "equations of state");
-    const RMat& r = mit->second;
-    MaterialData md = part_material_data(rc, p, r);
-    if (!has_shell_kernel(md.type)) {
-      refuse_material_form(rc, p, card, md, "shell", shell_material_keywords());
-      continue;
-    }
+    MaterialData md;
+    const RMat* rm = part_material_of_kind(rc, p, card, kShellParts, sit != rc.ps.shell_sections.end(),
+                                           rc.ps.sections.count(p.secid) ? "is a *SECTION_SOLID" : nullptr, md);
+    if (!rm) continue;
+    const RMat& r = *rm;
     if (const char* feature = nullptr; const MaterialParam* q = refused_shell_param(md, &feature)) {
       const std::size_t qi = std::size_t(q - r.type->params.data());
       rc.err(1102, qi < r.refs.size() && r.refs[qi].line ? r.refs[qi] : p.mid_ref, "*MAT material " + std::to_string(p.mid), q->key,

@@ -6,7 +6,9 @@
 // element ids -> indices, parts -> their elements and materials, curves, coordinate systems).
 // KeywordReader::resolve (keyword_reader.cpp) runs them in their order.
 
+#include <algorithm>
 #include <array>
+#include <cstdint>
 #include <deque>
 #include <map>
 #include <memory>
@@ -58,6 +60,27 @@ struct ScannedDeck {
   CaseSections cases;
 };
 void scan_deck(const DeckFile& main, KeywordContext& ctx, Model& m, ScannedDeck& out);
+
+// The indices of `recs` in increasing id order (a stable sort, skipped when they are in order
+// already) into `order`, the first record of each id kept: returns how many are kept
+// (order[0, n)); duplicate(record, first) is called for each record left out.
+template <class Records, class Duplicate>
+std::size_t order_by_id(const Records& recs, std::vector<std::uint32_t>& order, Duplicate&& duplicate) {
+  order.resize(recs.size());
+  for (std::size_t k = 0; k < order.size(); ++k) order[k] = std::uint32_t(k);
+  const auto by_id = [&](std::uint32_t a, std::uint32_t b) { return recs[a].id < recs[b].id; };
+  if (!std::is_sorted(order.begin(), order.end(), by_id)) std::stable_sort(order.begin(), order.end(), by_id);
+  std::size_t n = 0;  // order is filtered in place
+  for (std::size_t q = 0; q < order.size(); ++q) {
+    const auto& r = recs[order[q]];
+    if (n > 0 && recs[order[n - 1]].id == r.id) {
+      duplicate(r, recs[order[n - 1]]);
+      continue;
+    }
+    order[n++] = order[q];
+  }
+  return n;
+}
 
 struct ResolveContext {
   ResolveContext(Model& model, Diagnostics& d, std::string main, KeywordMesh& mesh, KeywordParts& parts, KeywordMaterials& mats,

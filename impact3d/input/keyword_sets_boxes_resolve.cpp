@@ -35,22 +35,24 @@ bool enter_set(ResolveContext& rc, const RIdList& s, const Ref& r, const std::st
   return true;
 }
 
+// The record of id in `defs`, or null: error `msg` ("<keyword> id is not defined", naming the
+// refused keyword that defines it, of kind `kind`, if one does).
+template <class Map>
+const typename Map::mapped_type* find_defined(ResolveContext& rc, const Map& defs, int id, int msg, const char* keyword, char kind,
+                                              const Ref& r, const std::string& card, const char* field) {
+  auto it = defs.find(id);
+  if (it != defs.end()) return &it->second;
+  rc.err(msg, r, card, field, std::string(keyword) + " " + std::to_string(id) + " is not defined" + rc.refused_note(kind, id));
+  return nullptr;
+}
+
 const Box* find_box(ResolveContext& rc, int id, const Ref& r, const std::string& card, const char* field) {
-  auto it = rc.sb.boxes.find(id);
-  if (it == rc.sb.boxes.end()) {
-    rc.err(1310, r, card, field, "*DEFINE_BOX " + std::to_string(id) + " is not defined" + rc.refused_note('B', id));
-    return nullptr;
-  }
-  return &it->second.box;
+  const auto* b = find_defined(rc, rc.sb.boxes, id, 1310, "*DEFINE_BOX", 'B', r, card, field);
+  return b ? &b->box : nullptr;
 }
 
 const RIdList* find_solid_set(ResolveContext& rc, int sid, const Ref& r, const std::string& card, const char* field) {
-  auto it = rc.sb.solid_sets.find(sid);
-  if (it == rc.sb.solid_sets.end()) {
-    rc.err(1309, r, card, field, "*SET_SOLID " + std::to_string(sid) + " is not defined" + rc.refused_note('H', sid));
-    return nullptr;
-  }
-  return &it->second;
+  return find_defined(rc, rc.sb.solid_sets, sid, 1309, "*SET_SOLID", 'H', r, card, field);
 }
 
 // The option of a *SET_..._GENERAL card that IMPACT-3D cannot resolve: error 1102 for the
@@ -259,12 +261,7 @@ bool global_direction(ResolveContext& rc, int cid, const Ref& r, const std::stri
 }
 
 const RIdList* find_node_set(ResolveContext& rc, int sid, const Ref& r, const std::string& card, const char* field) {
-  auto it = rc.sb.node_sets.find(sid);
-  if (it == rc.sb.node_sets.end()) {
-    rc.err(1309, r, card, field, "*SET_NODE_LIST " + std::to_string(sid) + " is not defined" + rc.refused_note('N', sid));
-    return nullptr;
-  }
-  return &it->second;
+  return find_defined(rc, rc.sb.node_sets, sid, 1309, "*SET_NODE_LIST", 'N', r, card, field);
 }
 
 // Parts of a part or part set, as part indices.

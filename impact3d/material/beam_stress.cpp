@@ -27,20 +27,7 @@ double solve_lateral_rate(const MaterialConstants& m, const double d[3], double 
   double f0 = trial(z0);
   const double scale = m.sigma_y + std::fabs(s3[0]) + std::fabs(s3[3]) + std::fabs(s3[5]);
   const double tol = 1e-10 * scale;
-  if (std::fabs(f0) > tol) {
-    double z1 = -0.5 * d[0];
-    if (z1 == z0) z1 = z0 + 1e-6 * (std::fabs(z0) + 1e-30 / (dt > 0 ? dt : 1.0));
-    double f1 = trial(z1);
-    for (int it = 0; it < kPlaneStressIterations && std::fabs(f1) > tol && f1 != f0; ++it) {
-      const double z2 = z1 - f1 * (z1 - z0) / (f1 - f0);
-      z0 = z1;
-      f0 = f1;
-      z1 = z2;
-      f1 = trial(z1);
-    }
-    z0 = z1;
-  }
-  return z0;
+  return secant_zero_stress(z0, f0, -0.5 * d[0], tol, dt, trial);
 }
 
 void load_stress_3d(const double sig[3], double s3[6]) {
@@ -56,23 +43,17 @@ void load_stress_3d(const double sig[3], double s3[6]) {
 double update_beam_point_plastic(BeamMaterialKind kind, const MaterialConstants& m, const double d[3], double dt,
                                  double sig[3], const BeamPointPlastic& h) {
   if (kind == BeamMaterialKind::plastic_kinematic) {
-    double s3[6], back[6], eps_p = 0;
-    unsigned char yielded = 0;
-    const double z = solve_lateral_rate(m, d, dt, s3, [&](double dl) {
+    KinematicTrial kt;
+    const double z = solve_lateral_rate(m, d, dt, kt.s3, [&](double dl) {
       const double d3[6] = {d[0], dl, dl, d[1], 0.0, d[2]};
-      load_stress_3d(sig, s3);
-      for (int k = 0; k < 6; ++k) back[k] = h.back[k];
-      eps_p = *h.eps_p;
-      yielded = *h.yielded;
-      update_stress_elastic_plastic(m, d3, dt, s3, back, eps_p, yielded);
-      return s3[1];
+      load_stress_3d(sig, kt.s3);
+      kt.run(m, d3, dt, h);
+      return kt.s3[1];
     });
-    sig[0] = s3[0];
-    sig[1] = s3[3];
-    sig[2] = s3[5];
-    for (int k = 0; k < 6; ++k) h.back[k] = back[k];
-    *h.eps_p = eps_p;
-    *h.yielded = yielded;
+    sig[0] = kt.s3[0];
+    sig[1] = kt.s3[3];
+    sig[2] = kt.s3[5];
+    kt.save(h);
     return z;
   }
   SolidPointState t;

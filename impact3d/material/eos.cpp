@@ -133,12 +133,6 @@ const EosForm& tabulated_compaction() {
   return f;
 }
 
-std::string f6(double v) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.6e", v);
-  return b;
-}
-
 }  // namespace
 
 std::span<const EosForm* const> eos_forms() {
@@ -247,7 +241,7 @@ void check_eos(EosData& e, double rho0, const std::function<void(const EosParam&
   derive_eos_constants(e, c);
   if (!(c.K > 0))
     report(param(e.form == 1 || e.form == 6 || e.form == 8 || e.form == 9 ? "C1" : e.form == 2 ? "A" : e.form == 3 ? "A1" : e.form == 5 ? "A11" : "C"), 1003,
-           "the equation of state gives no sound speed at its initial state (isentropic bulk modulus " + f6(c.K) + " <= 0)");
+           "the equation of state gives no sound speed at its initial state (isentropic bulk modulus " + echo_number(c.K) + " <= 0)");
 }
 
 void derive_eos_constants(const EosData& e, MaterialConstants& c) {
@@ -300,7 +294,7 @@ void echo_eos(std::ostream& os, const EosData& e) {
     const bool table = (e.form == 9 || e.form == 8) && p.slot != kEosTabGamma && p.slot < kEosConstants;
     if (table && (p.slot < kEosTabGamma ? p.slot % 10 : p.slot - kEosTabK) >= n) continue;  // past the table
     const double v = eos_value(e, p);
-    echo_line(os, std::string("  EOS ") + p.key, e.form == 6 && p.slot == kEosLeakCurve ? std::to_string(int(v)) : f6(v));
+    echo_line(os, std::string("  EOS ") + p.key, e.form == 6 && p.slot == kEosLeakCurve ? std::to_string(int(v)) : echo_number(v));
   }
   echo_line(os, "pressure from", "the equation of state (deviatoric stress from the material)");
 }

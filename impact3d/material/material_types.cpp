@@ -175,6 +175,12 @@ void echo_line(std::ostream& os, const std::string& label, const std::string& va
   os << "     " << l << " " << value << "\n";
 }
 
+std::string echo_number(double v) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.6e", v);
+  return b;
+}
+
 void echo_material_params(std::ostream& os, const MaterialData& md, const MaterialType& t) {
   for (const MaterialParam& p : t.params) {
     if (!p.label) continue;

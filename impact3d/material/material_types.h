@@ -206,6 +206,8 @@ MaterialConstants derive_constants(const MaterialData& md, const Model& m);
 void echo_material_params(std::ostream& os, const MaterialData& md, const MaterialType& t);
 // One echo line "     label ..... value" in the printed output's layout.
 void echo_line(std::ostream& os, const std::string& label, const std::string& value);
+// A real value as the echo lines print it ("%.6e").
+std::string echo_number(double v);
 // Whether a curve parameter of the material (ParamCheck::curve) names this curve.
 bool material_uses_curve(const MaterialData& md, int curve);
 // The history values a material's solids carry (0 for none).

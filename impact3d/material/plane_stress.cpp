@@ -35,20 +35,7 @@ double solve_thickness_rate(const MaterialConstants& m, const double d[5], doubl
   double f0 = trial(z0);
   const double scale = m.sigma_y + std::fabs(s3[0]) + std::fabs(s3[1]) + std::fabs(s3[3]);
   const double tol = 1e-10 * scale;
-  if (std::fabs(f0) > tol) {
-    double z1 = -(d[0] + d[1]);
-    if (z1 == z0) z1 = z0 + 1e-6 * (std::fabs(z0) + 1e-30 / (dt > 0 ? dt : 1.0));
-    double f1 = trial(z1);
-    for (int it = 0; it < kPlaneStressIterations && std::fabs(f1) > tol && f1 != f0; ++it) {
-      const double z2 = z1 - f1 * (z1 - z0) / (f1 - f0);
-      z0 = z1;
-      f0 = f1;
-      z1 = z2;
-      f1 = trial(z1);
-    }
-    z0 = z1;
-  }
-  return z0;
+  return secant_zero_stress(z0, f0, -(d[0] + d[1]), tol, dt, trial);
 }
 
 // The 3-D stress of a shell point (sigma_zz = 0) and back.
@@ -73,21 +60,15 @@ void store_stress_3d(const double s3[6], double sig[5]) {
 double update_plane_stress_plastic_kinematic(const MaterialConstants& m, const double d[5],
                                              double dt, double sig[5],
                                              const PlaneStressPlastic& h) {
-  double s3[6], back[6], eps_p = 0;
-  unsigned char yielded = 0;
-  const double z = solve_thickness_rate(m, d, dt, s3, [&](double dzz) {
+  KinematicTrial kt;
+  const double z = solve_thickness_rate(m, d, dt, kt.s3, [&](double dzz) {
     const double d3[6] = {d[0], d[1], dzz, d[2], d[3], d[4]};
-    load_stress_3d(sig, s3);
-    for (int k = 0; k < 6; ++k) back[k] = h.back[k];
-    eps_p = *h.eps_p;
-    yielded = *h.yielded;
-    update_stress_elastic_plastic(m, d3, dt, s3, back, eps_p, yielded);
-    return s3[2];
+    load_stress_3d(sig, kt.s3);
+    kt.run(m, d3, dt, h);
+    return kt.s3[2];
   });
-  store_stress_3d(s3, sig);
-  for (int k = 0; k < 6; ++k) h.back[k] = back[k];
-  *h.eps_p = eps_p;
-  *h.yielded = yielded;
+  store_stress_3d(kt.s3, sig);
+  kt.save(h);
   return z;
 }
 

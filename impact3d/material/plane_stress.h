@@ -6,6 +6,8 @@
 // Small functions on the caller's arrays (no heap): the per-material table of shells points
 // at these.
 
+#include <cmath>
+
 #include "impact3d/material/material.h"
 
 namespace impact3d {
@@ -27,6 +29,49 @@ double update_plane_stress_elastic(const MaterialConstants& m, const double d[5]
 // (LS-DYNA's iterative plane-stress plasticity; iterated to |sigma_zz| <= 1e-10 (sigma_y + |sigma|),
 // at most kPlaneStressIterations).  Returns d_zz.
 constexpr int kPlaneStressIterations = 30;
+
+// A trial of type 3's 3-D radial return in the plane-stress (shells) and uniaxial-stress (beams)
+// iterations: the caller loads s3, run() takes the back stress, plastic strain and yield flag
+// from the point's saved state h (PlaneStressPlastic, BeamPointPlastic) and updates; save()
+// stores the last trial's into h.
+struct KinematicTrial {
+  double s3[6], back[6], eps_p = 0;
+  unsigned char yielded = 0;
+  template <class Saved>
+  void run(const MaterialConstants& m, const double d3[6], double dt, const Saved& h) {
+    for (int k = 0; k < 6; ++k) back[k] = h.back[k];
+    eps_p = *h.eps_p;
+    yielded = *h.yielded;
+    update_stress_elastic_plastic(m, d3, dt, s3, back, eps_p, yielded);
+  }
+  template <class Saved>
+  void save(const Saved& h) const {
+    for (int k = 0; k < 6; ++k) h.back[k] = back[k];
+    *h.eps_p = eps_p;
+    *h.yielded = yielded;
+  }
+};
+
+// The secant steps of the iterative plane stress (shells) and uniaxial stress (beams): from the
+// strain rate z0 whose trial stress is f0 (trial(z) runs the update and returns the stress that
+// should vanish) and a second guess z1, until |f| <= tol, the secant stalls, or after
+// kPlaneStressIterations; the last trial is the result.  Returns z0 when |f0| <= tol already.
+template <class Trial>
+double secant_zero_stress(double z0, double f0, double z1, double tol, double dt, Trial&& trial) {
+  if (std::fabs(f0) > tol) {
+    if (z1 == z0) z1 = z0 + 1e-6 * (std::fabs(z0) + 1e-30 / (dt > 0 ? dt : 1.0));
+    double f1 = trial(z1);
+    for (int it = 0; it < kPlaneStressIterations && std::fabs(f1) > tol && f1 != f0; ++it) {
+      const double z2 = z1 - f1 * (z1 - z0) / (f1 - f0);
+      z0 = z1;
+      f0 = f1;
+      z1 = z2;
+      f1 = trial(z1);
+    }
+    z0 = z1;
+  }
+  return z0;
+}
 double update_plane_stress_plastic_kinematic(const MaterialConstants& m, const double d[5],
                                              double dt, double sig[5],
                                              const PlaneStressPlastic& h);

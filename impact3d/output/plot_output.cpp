@@ -69,6 +69,26 @@ void add_corner_motion(const State& s, std::size_t i, double mc, std::size_t k, 
   ps.mat_velocity[3 * k + 2] += mc * s.vz[i];
 }
 
+// An element of material k and mass me: its mass booked to the material, mc (its share) at
+// each of its n nodes.
+void add_element_motion(const State& s, std::size_t k, double me, double mc, const int* nodes, int n, PlotState& ps) {
+  ps.mat_mass[k] += me;
+  for (int j = 0; j < n; ++j) add_corner_motion(s, std::size_t(nodes[j]), mc, k, ps);
+}
+
+// The nodes of the interface sides written to the interface-force database (intfor_slave,
+// intfor_master), in increasing order, each once.
+std::vector<int> intfor_nodes(const Model& m) {
+  std::vector<int> nodes;
+  for (const SlidingInterface& si : m.interfaces)
+    for (int sd = 0; sd < 2; ++sd)
+      if (sd == 0 ? si.intfor_slave : si.intfor_master)
+        for (const auto& sg : sd == 0 ? si.slave : si.master) nodes.insert(nodes.end(), sg.begin(), sg.end());
+  std::sort(nodes.begin(), nodes.end());
+  nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+  return nodes;
+}
+
 }  // namespace
 
 void fill_plot_globals(const Model& m, const State& s, const InterfaceForces& iface, PlotState& ps) {
@@ -87,38 +107,21 @@ void fill_plot_globals(const Model& m, const State& s, const InterfaceForces& if
     ps.mat_internal_energy[k] = s.mat_internal[k];
     ps.mat_hourglass_energy[k] = s.mat_hourglass[k];
   }
-  for (std::size_t e = 0; e < ne; ++e) {
-    const std::size_t k = std::size_t(s.mat[e]);
-    ps.mat_mass[k] += s.mass_e[e];
-    const double mc = s.mass_e[e] / 8;
-    for (int n : s.conn[e]) {
-      const std::size_t i = std::size_t(n);
-      add_corner_motion(s, i, mc, k, ps);
-    }
-  }
+  for (std::size_t e = 0; e < ne; ++e)
+    add_element_motion(s, std::size_t(s.mat[e]), s.mass_e[e], s.mass_e[e] / 8, s.conn[e].data(), 8, ps);
   // beams: rho A L0 each, half per end
   const BeamState& bm = s.beams;
   for (int q = 0; q < bm.nb; ++q) {
     const std::size_t k = std::size_t(bm.mat[std::size_t(q)]);
     const double me = s.mats[k].rho * bm.area[std::size_t(q)] * bm.length0[std::size_t(q)];
-    ps.mat_mass[k] += me;
-    for (int j = 0; j < 2; ++j) {
-      const std::size_t i = std::size_t(bm.conn[std::size_t(q)][std::size_t(j)]);
-      const double mc = 0.5 * me;
-      add_corner_motion(s, i, mc, k, ps);
-    }
+    add_element_motion(s, k, me, 0.5 * me, bm.conn[std::size_t(q)].data(), 2, ps);
   }
   // shells: rho h A0 each, a quarter per corner
   const ShellState& sh = s.shells;
   for (int q = 0; q < sh.ns; ++q) {
     const std::size_t k = std::size_t(sh.mat[std::size_t(q)]);
     const double me = s.mats[k].rho * sh.thick[std::size_t(q)] * sh.area0[std::size_t(q)];
-    ps.mat_mass[k] += me;
-    for (int n : sh.conn[std::size_t(q)]) {
-      const std::size_t i = std::size_t(n);
-      const double mc = 0.25 * me;
-      add_corner_motion(s, i, mc, k, ps);
-    }
+    add_element_motion(s, k, me, 0.25 * me, sh.conn[std::size_t(q)].data(), 4, ps);
   }
   // whole-model velocity: total momentum over total mass
   double mtot = 0, p[3] = {0, 0, 0};
@@ -323,13 +326,7 @@ PlotGeometry IntforOutput::make_geometry(const Model& m) {
   PlotGeometry g;
   g.title = m.title;
   g.num_interfaces = m.num_interface_outputs();
-  std::vector<int> nodes;
-  for (const SlidingInterface& si : m.interfaces)
-    for (int sd = 0; sd < 2; ++sd)
-      if (sd == 0 ? si.intfor_slave : si.intfor_master)
-        for (const auto& sg : sd == 0 ? si.slave : si.master) nodes.insert(nodes.end(), sg.begin(), sg.end());
-  std::sort(nodes.begin(), nodes.end());
-  nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+  const std::vector<int> nodes = intfor_nodes(m);
   for (int n : nodes) {
     g.x0.insert(g.x0.end(), {m.x[std::size_t(n)], m.y[std::size_t(n)], m.z[std::size_t(n)]});
     g.node_user_ids.push_back(m.node_id(n));
@@ -351,13 +348,7 @@ PlotGeometry IntforOutput::make_geometry(const Model& m) {
 }
 
 void IntforOutput::prepare(const Model& m) {
-  nodes_.clear();
-  for (const SlidingInterface& si : m.interfaces)
-    for (int sd = 0; sd < 2; ++sd)
-      if (sd == 0 ? si.intfor_slave : si.intfor_master)
-        for (const auto& sg : sd == 0 ? si.slave : si.master) nodes_.insert(nodes_.end(), sg.begin(), sg.end());
-  std::sort(nodes_.begin(), nodes_.end());
-  nodes_.erase(std::unique(nodes_.begin(), nodes_.end()), nodes_.end());
+  nodes_ = intfor_nodes(m);
   auto local = [&](int n) { return int(std::lower_bound(nodes_.begin(), nodes_.end(), n) - nodes_.begin()); };
   sides_.clear();
   int shell = 0;

@@ -426,28 +426,30 @@ void process_hex_block(State& s, const GroupPass& gp, int block) {
   store_hex_block(s, gp, elems, active, block, k);
 }
 
+// A shell or beam pass joins the solids' results: its elements are reported as element
+// first + their index (the step, the first bad and the first non-finite element).
+void merge_pass_results(int first, double dt_min, int dt_elem, int bad_elem, int non_finite_elem, double& dtmin, int& arg,
+                        int& bad, int& nonfin) {
+  if (dt_elem >= 0 && (dt_min < dtmin || arg < 0)) {
+    dtmin = dt_min;
+    arg = first + dt_elem;
+  }
+  if (bad < 0 && bad_elem >= 0) bad = first + bad_elem;
+  if (nonfin < 0 && non_finite_elem >= 0) nonfin = first + non_finite_elem;
+}
+
 void merge_shell_results(const ShellPassResult& r, int ne, double& die, double& dhg, double& dtmin,
                          int& arg, int& bad, int& nonfin) {
   die += r.die;
   dhg += r.dhg;
-  if (r.dt_shell >= 0 && (r.dt_min < dtmin || arg < 0)) {
-    dtmin = r.dt_min;
-    arg = ne + r.dt_shell;
-  }
-  if (bad < 0 && r.bad_shell >= 0) bad = ne + r.bad_shell;
-  if (nonfin < 0 && r.non_finite_shell >= 0) nonfin = ne + r.non_finite_shell;
+  merge_pass_results(ne, r.dt_min, r.dt_shell, r.bad_shell, r.non_finite_shell, dtmin, arg, bad, nonfin);
 }
 
 // The beams join after the shells: a beam is reported as element ne + ns + its index.
 void merge_beam_results(const BeamPassResult& r, int first, double& die, double& dtmin, int& arg, int& bad,
                         int& nonfin) {
   die += r.die;
-  if (r.dt_beam >= 0 && (r.dt_min < dtmin || arg < 0)) {
-    dtmin = r.dt_min;
-    arg = first + r.dt_beam;
-  }
-  if (bad < 0 && r.bad_beam >= 0) bad = first + r.bad_beam;
-  if (nonfin < 0 && r.non_finite_beam >= 0) nonfin = first + r.non_finite_beam;
+  merge_pass_results(first, r.dt_min, r.dt_beam, r.bad_beam, r.non_finite_beam, dtmin, arg, bad, nonfin);
 }
 
 }  // namespace

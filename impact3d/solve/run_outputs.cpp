@@ -31,6 +31,20 @@ struct OutputTimer {
   ~OutputTimer() { total += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); }
 };
 
+// A database written by write(); a failure is error 4004 naming `where`, and the run writes no
+// more (ok false).  False when it failed.
+template <class Write>
+bool write_or_stop(RunLog& log, const std::string& where, bool& ok, Write&& write) {
+  try {
+    write();
+  } catch (const std::exception& ex) {
+    log.file_error(4004, where, ex.what());
+    ok = false;
+    return false;
+  }
+  return true;
+}
+
 }  // namespace
 
 RunOutputs::RunOutputs(Engine& engine, const RunOptions& opt, RunLog& log, const RunClock& clock,
@@ -145,13 +159,7 @@ void RunOutputs::write_plot(bool scheduled) {
   if (!scheduled && plot_.last_time() == s_.time) return;  // a state at this time exists
   const OutputTimer timer(seconds_);
   engine_.gather_for_output();  // a distributed run: every rank's part to rank 0
-  try {
-    plot_.write(model_, s_, engine_.interface_forces());
-  } catch (const std::exception& ex) {
-    log_.file_error(4004, opt_.plot, ex.what());
-    ok_ = false;
-    return;
-  }
+  if (!write_or_stop(log_, opt_.plot, ok_, [&] { plot_.write(model_, s_, engine_.interface_forces()); })) return;
   if (scheduled) {
     schedule_.plot_written(s_.time);
     scheduled_plot_states_ = plot_.states_written();
@@ -162,13 +170,8 @@ void RunOutputs::write_intfor() {
   if (!want_intfor_ || intfor_.last_time() == s_.time) return;
   const OutputTimer timer(seconds_);
   engine_.gather_for_output();
-  try {
-    intfor_.write(model_, s_, engine_.contact(), engine_.interface_forces());
-  } catch (const std::exception& ex) {
-    log_.file_error(4004, intfor_root_, ex.what());
-    ok_ = false;
+  if (!write_or_stop(log_, intfor_root_, ok_, [&] { intfor_.write(model_, s_, engine_.contact(), engine_.interface_forces()); }))
     return;
-  }
   schedule_.intfor_written(s_.time);
 }
 
@@ -176,15 +179,12 @@ void RunOutputs::write_history() {
   last_history_time_ = s_.time;
   const OutputTimer timer(seconds_);
   engine_.gather_for_output();
-  try {
+  const bool written = write_or_stop(log_, out_dir_, ok_, [&] {
     const double ns = s_.cycle > 0 ? 1e9 * clock_.elapsed() / (double(s_.cycle) * std::max(1, s_.ne)) : 0;
     history_.write(model_, s_, engine_.interface_forces(), ns);
     history_.flush();
-  } catch (const std::exception& ex) {
-    log_.file_error(4004, out_dir_, ex.what());
-    ok_ = false;
-    return;
-  }
+  });
+  if (!written) return;
   schedule_.history_written(s_.time);
 }
 

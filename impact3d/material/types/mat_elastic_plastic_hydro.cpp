@@ -90,24 +90,18 @@ void derive(const MaterialData& d, const Model&, MaterialConstants& c) {
   c.sigma_y = c.curve_sig[0];
 }
 
-std::string f6(double v) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.6e", v);
-  return b;
-}
-
 void echo(std::ostream& os, const MaterialData& md) {
   const int n = table_points(md);
   if (n > 1) {
     for (int i = 0; i < n; ++i)
       echo_line(os, "flow stress point " + std::to_string(i + 1),
-                "plastic strain " + f6(par(md, pEps1 + i)) + ", stress " + f6(par(md, pEs1 + i)));
+                "plastic strain " + echo_number(par(md, pEps1 + i)) + ", stress " + echo_number(par(md, pEs1 + i)));
   } else {
-    echo_line(os, "yield stress", f6(md.sigma_y) + " (stress)");
-    echo_line(os, "plastic hardening modulus EH", f6(par(md, pEh)) + " (stress)");
+    echo_line(os, "yield stress", echo_number(md.sigma_y) + " (stress)");
+    echo_line(os, "plastic hardening modulus EH", echo_number(par(md, pEh)) + " (stress)");
   }
-  if (par(md, pPc) < 0) echo_line(os, "pressure cutoff (tension)", f6(par(md, pPc)) + " (stress)");
-  if (md.fail_strain > 0) echo_line(os, "failure plastic strain (deletion)", f6(md.fail_strain));
+  if (par(md, pPc) < 0) echo_line(os, "pressure cutoff (tension)", echo_number(par(md, pPc)) + " (stress)");
+  if (md.fail_strain > 0) echo_line(os, "failure plastic strain (deletion)", echo_number(md.fail_strain));
 }
 
 void update_point(const MaterialConstants& m, const double d[6], double dt, SolidPointState& s) {

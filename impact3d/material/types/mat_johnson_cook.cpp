@@ -192,12 +192,6 @@ void update_block(const MaterialConstants& m, MaterialPointBlock& k, double dt) 
   update_block_lane_by_lane(m, k, dt, int(m.k[kHistory]), update_point);
 }
 
-std::string f6(double v) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.6e", v);
-  return b;
-}
-
 // ---- type 15
 
 void check15(MaterialData& md, const MaterialType& t, const ParamReport& report) {
@@ -261,7 +255,7 @@ void echo15(std::ostream& os, const MaterialData& md) {
                                                  : "Johnson-Cook damage D >= 1 zeroes the deviatoric stress (EROD)");
   if (par(md, pPc) < 0) {
     const double sp = par(md, pSpall);
-    echo_line(os, sp == 1 ? "pressure cutoff (tension)" : "spall stress", f6(par(md, pPc)) + " (stress)");
+    echo_line(os, sp == 1 ? "pressure cutoff (tension)" : "spall stress", echo_number(par(md, pPc)) + " (stress)");
     echo_line(os, "spall", sp == 1   ? "1: mean stress bounded by -PC"
                            : sp == 3 ? "3: spall at pressure PC (then no deviatoric stress, no tension)"
                                      : "2: spall at largest principal stress -PC (then no deviatoric stress, no tension)");
@@ -297,7 +291,7 @@ void derive98(const MaterialData& d, const Model&, MaterialConstants& c) {
 void echo98(std::ostream& os, const MaterialData& md) {
   echo_line(os, "flow stress", "min(min(A + B eps_p^N, SIGSAT) (1 + C ln rate*), SIGMAX)");
   if (par(md, qVp) != 0) echo_line(os, "rate in the flow stress", "the plastic strain rate (VP = 1, viscoplastic)");
-  if (md.fail_strain > 0) echo_line(os, "failure plastic strain (deletion)", f6(md.fail_strain));
+  if (md.fail_strain > 0) echo_line(os, "failure plastic strain (deletion)", echo_number(md.fail_strain));
 }
 
 }  // namespace

@@ -132,12 +132,6 @@ void derive(const MaterialData& d, const Model& m, MaterialConstants& c) {
   c.sigma_y = c.curve_sig.empty() ? 0.0 : c.curve_sig[0];
 }
 
-std::string f6(double v) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.6e", v);
-  return b;
-}
-
 void echo(std::ostream& os, const MaterialData& md) {
   const int n = table_points(md);
   if (par(md, kLcss) > 0) {
@@ -145,12 +139,12 @@ void echo(std::ostream& os, const MaterialData& md) {
   } else if (n > 0) {
     for (int i = 0; i < n; ++i)
       echo_line(os, "flow stress point " + std::to_string(i + 1),
-                "plastic strain " + f6(par(md, kEps1 + i)) + ", stress " + f6(par(md, kEs1 + i)));
+                "plastic strain " + echo_number(par(md, kEps1 + i)) + ", stress " + echo_number(par(md, kEs1 + i)));
   } else {
     const double Ep = (md.E_tan > 0 && md.E_tan < md.E) ? md.E * md.E_tan / (md.E - md.E_tan) : 0.0;
-    echo_line(os, "yield stress", f6(md.sigma_y) + " (stress)");
-    echo_line(os, "tangent modulus", f6(md.E_tan) + " (stress)");
-    echo_line(os, "plastic hardening modulus (derived)", f6(Ep) + " (stress)");
+    echo_line(os, "yield stress", echo_number(md.sigma_y) + " (stress)");
+    echo_line(os, "tangent modulus", echo_number(md.E_tan) + " (stress)");
+    echo_line(os, "plastic hardening modulus (derived)", echo_number(Ep) + " (stress)");
   }
   const char* rate = par(md, kVP) == 1 ? "plastic strain rate (VP = 1, viscoplastic)" : "total strain rate sqrt(D:D) (VP = 0)";
   if (par(md, kLcsr) > 0) {
@@ -159,11 +153,11 @@ void echo(std::ostream& os, const MaterialData& md) {
   } else if (md.rate_c > 0) {
     char p[32];
     std::snprintf(p, sizeof p, "%.4g", md.rate_p);
-    echo_line(os, "strain-rate factor (Cowper-Symonds)", "1 + (rate/C)^(1/P), C " + f6(md.rate_c) + " (1/time), P " + p);
+    echo_line(os, "strain-rate factor (Cowper-Symonds)", "1 + (rate/C)^(1/P), C " + echo_number(md.rate_c) + " (1/time), P " + p);
     echo_line(os, "rate of the factor", rate);
   }
-  if (md.fail_strain > 0) echo_line(os, "failure plastic strain (deletion)", f6(md.fail_strain));
-  if (par(md, kTdel) > 0) echo_line(os, "deletion below element step TDEL", f6(par(md, kTdel)) + " (time)");
+  if (md.fail_strain > 0) echo_line(os, "failure plastic strain (deletion)", echo_number(md.fail_strain));
+  if (par(md, kTdel) > 0) echo_line(os, "deletion below element step TDEL", echo_number(par(md, kTdel)) + " (time)");
 }
 
 double rate_norm(const double d[6]) {

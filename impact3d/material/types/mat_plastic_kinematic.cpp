@@ -46,25 +46,19 @@ void derive(const MaterialData& d, const Model&, MaterialConstants& c) {
   if (d.fail_strain > 0) c.fail_strain = d.fail_strain;
 }
 
-std::string f6(double v) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.6e", v);
-  return b;
-}
-
 void echo(std::ostream& os, const MaterialData& md) {
   const double Ep = md.E * md.E_tan / (md.E - md.E_tan);
   char beta[32], p[32];
   std::snprintf(beta, sizeof beta, "%.3f", md.beta);
   std::snprintf(p, sizeof p, "%.4g", md.rate_p);
-  echo_line(os, "yield stress", f6(md.sigma_y) + " (stress)");
-  echo_line(os, "tangent modulus", f6(md.E_tan) + " (stress)");
-  echo_line(os, "plastic hardening modulus (derived)", f6(Ep) + " (stress)");
+  echo_line(os, "yield stress", echo_number(md.sigma_y) + " (stress)");
+  echo_line(os, "tangent modulus", echo_number(md.E_tan) + " (stress)");
+  echo_line(os, "plastic hardening modulus (derived)", echo_number(Ep) + " (stress)");
   echo_line(os, "hardening beta", std::string(beta) + (md.beta == 1 ? " (isotropic)" : md.beta == 0 ? " (kinematic)" : " (mixed)"));
   echo_line(os, "initially elastic fast path", md.initially_elastic ? "yes" : "no");
   if (md.rate_c > 0)
-    echo_line(os, "strain-rate factor (Cowper-Symonds)", "1 + (rate/C)^(1/P), C " + f6(md.rate_c) + " (1/time), P " + p);
-  if (md.fail_strain > 0) echo_line(os, "failure plastic strain (deletion)", f6(md.fail_strain));
+    echo_line(os, "strain-rate factor (Cowper-Symonds)", "1 + (rate/C)^(1/P), C " + echo_number(md.rate_c) + " (1/time), P " + p);
+  if (md.fail_strain > 0) echo_line(os, "failure plastic strain (deletion)", echo_number(md.fail_strain));
 }
 
 }  // namespace

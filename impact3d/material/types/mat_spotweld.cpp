@@ -48,17 +48,11 @@ void check(MaterialData& md, const MaterialType& t, const ParamReport& report) {
     report(*find_param(t, "NF"), 1003, "at most " + std::to_string(kSpotWeldMaxNF) + " resultant vectors are filtered");
 }
 
-std::string f6(double v) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.6e", v);
-  return b;
-}
-
 void echo(std::ostream& os, const MaterialData& md) {
   bool resultants = false;
   for (int i = 0; i < 6; ++i) resultants = resultants || md.par[std::size_t(kNRR + i)] > 0;
   echo_line(os, "beam failure rule", resultants ? "resultants (NRR NRS NRT MRR MSS MTT)" : md.fail_strain > 0 ? "plastic strain EFAIL" : "none");
-  if (md.par[kTFAIL] > 0) echo_line(os, "failure time TFAIL", f6(md.par[kTFAIL]));
+  if (md.par[kTFAIL] > 0) echo_line(os, "failure time TFAIL", echo_number(md.par[kTFAIL]));
   if (md.par[kNF] > 0) echo_line(os, "failure rule on the mean of the last NF resultants", std::to_string(int(md.par[kNF])));
 }
 
