@@ -594,46 +594,32 @@ double face_distance_lower_bound(const double X[4][3], const double* p) {
   return std::sqrt(d2);
 }
 
-// Whether segment j of the node's grid cell is a candidate for the node at p: its grown box
-// holds p, it is not one of the node's own segments (nor, on a single surface, one around it:
-// the ring), and it is active.
-bool candidate_segment(const State& s, const Surface& segs, const Grid& g, int j, int node, const int* ring,
-                       const int* ring_end, const double* p) {
-  if (!in_box(&g.box[6 * std::size_t(j)], p)) return false;
-  const auto& sg = segs.seg[std::size_t(j)];
-  if (sg[0] == node || sg[1] == node || sg[2] == node || sg[3] == node) return false;
-  if (ring && std::any_of(sg.begin(), sg.end(), [&](int v) { return std::binary_search(ring, ring_end, v); }))
-    return false;
-  return segment_active(s, segs, std::size_t(j));
-}
-
-// The nearest segment of the node's grid cell, or -1: its hit bh and the sum of the offsets r.
+// The nearest segment to point p among its grid cell's candidates, or -1: its hit bh and the sum
+// of the offsets r (r_point, the point's own, plus the segment's).  allowed(j) says whether
+// segment j may be tried (the pair rules), accepted(h, two_sided) whether its hit counts.
 // Nearest contact surface: the least key (the mid-surface distance less the offsets; at equal
 // distance a face point before an edge point), at equal keys the lower segment (the candidates
 // come in segment order).  A solid face whose corners' box is already farther than the best key
 // is not projected: its key could not be lower, so the choice is the one of projecting all.
-int find_nearest_segment(const State& s, const Interface& in, const Surface& nodes_sf, const Surface& segs, const Grid& g,
-                         int q, const double* p, Hit& hit, contact::SegmentHit& bh, double& best_r) {
-  const int node = nodes_sf.nodes[std::size_t(q)];
+template <class Allowed, class Accepted>
+int nearest_segment_in_cell(const State& s, const Surface& segs, const Grid& g, const double* p, double r_point,
+                            int& evaluations, Allowed allowed, Accepted accepted, contact::SegmentHit& bh,
+                            double& best_r) {
   const int c = cell_coord(g, 0, p[0]) + g.dim[0] * (cell_coord(g, 1, p[1]) + g.dim[1] * cell_coord(g, 2, p[2]));
-  // the node's own offset: half its shell's thickness (0 for a solid's node)
-  const double r_node = nodes_sf.node_off[std::size_t(q)];
-  const int* ring = in.single ? nodes_sf.ring.data() + nodes_sf.ring_start[std::size_t(q)] : nullptr;
-  const int* ring_end = in.single ? nodes_sf.ring.data() + nodes_sf.ring_start[std::size_t(q) + 1] : nullptr;
   int best = -1;
   double best_key = 0;
   for (int e = g.cell_start[std::size_t(c)]; e < g.cell_start[std::size_t(c) + 1]; ++e) {
     const int j = g.entries[std::size_t(e)];
-    if (!candidate_segment(s, segs, g, j, node, ring, ring_end, p)) continue;
+    if (!in_box(&g.box[6 * std::size_t(j)], p) || !allowed(j)) continue;
     double X[4][3];
     seg_coords(s, segs.seg[std::size_t(j)], X);
-    const double r = segs.offset[std::size_t(j)] + r_node;
+    const double r = segs.offset[std::size_t(j)] + r_point;
     const bool two_sided = segs.two_sided[std::size_t(j)];
     if (best >= 0 && !two_sided && face_distance_lower_bound(X, p) - r > best_key) continue;
-    ++hit.evaluations;
+    ++evaluations;
     contact::SegmentHit h = two_sided ? contact::closest_point_on_shell_segment(X, p, kInteriorTol)
                                       : contact::closest_point_on_segment(X, p, segs.boundary[std::size_t(j)], kInteriorTol);
-    if (!h.valid) continue;
+    if (!h.valid || !accepted(h, two_sided)) continue;
     const double key = nearest_surface_key(h, r);
     if (best < 0 || key < best_key) {
       best = j;
@@ -643,6 +629,26 @@ int find_nearest_segment(const State& s, const Interface& in, const Surface& nod
     }
   }
   return best;
+}
+
+// The nearest segment of node q's grid cell, or -1: not one of the node's own segments (nor, on
+// a single surface, one around it: the ring), active.
+int find_nearest_segment(const State& s, const Interface& in, const Surface& nodes_sf, const Surface& segs, const Grid& g,
+                         int q, const double* p, Hit& hit, contact::SegmentHit& bh, double& best_r) {
+  const int node = nodes_sf.nodes[std::size_t(q)];
+  // the node's own offset: half its shell's thickness (0 for a solid's node)
+  const double r_node = nodes_sf.node_off[std::size_t(q)];
+  const int* ring = in.single ? nodes_sf.ring.data() + nodes_sf.ring_start[std::size_t(q)] : nullptr;
+  const int* ring_end = in.single ? nodes_sf.ring.data() + nodes_sf.ring_start[std::size_t(q) + 1] : nullptr;
+  auto allowed = [&](int j) {
+    const auto& sg = segs.seg[std::size_t(j)];
+    if (sg[0] == node || sg[1] == node || sg[2] == node || sg[3] == node) return false;
+    if (ring && std::any_of(sg.begin(), sg.end(), [&](int v) { return std::binary_search(ring, ring_end, v); }))
+      return false;
+    return segment_active(s, segs, std::size_t(j));
+  };
+  auto any_hit = [](const contact::SegmentHit&, bool) { return true; };
+  return nearest_segment_in_cell(s, segs, g, p, r_node, hit.evaluations, allowed, any_hit, bh, best_r);
 }
 
 // The velocity of node k relative to the contact point of segment sg (shape values N).
@@ -736,35 +742,14 @@ bool segment_pair_allowed(const Interface& in, const Surface& own, std::size_t j
 int find_segment_for_point(const State& s, const Interface& in, const Surface& own, std::size_t jo, const Surface& segs,
                            const Grid& g, const double* p, const double* n_own, PointHit& hit, contact::SegmentHit& bh,
                            double& best_r) {
-  const int c = cell_coord(g, 0, p[0]) + g.dim[0] * (cell_coord(g, 1, p[1]) + g.dim[1] * cell_coord(g, 2, p[2]));
-  const double r_own = own.offset[jo];
   const bool own_one_sided = !own.two_sided[jo];
-  int best = -1;
-  double best_key = 0;
-  for (int e = g.cell_start[std::size_t(c)]; e < g.cell_start[std::size_t(c) + 1]; ++e) {
-    const int j = g.entries[std::size_t(e)];
-    if (!in_box(&g.box[6 * std::size_t(j)], p)) continue;
-    const auto& sg = segs.seg[std::size_t(j)];
-    if (!segment_pair_allowed(in, own, jo, sg)) continue;
-    if (!segment_active(s, segs, std::size_t(j))) continue;
-    double X[4][3];
-    seg_coords(s, sg, X);
-    ++hit.evaluations;
-    const bool two = segs.two_sided[std::size_t(j)];
-    contact::SegmentHit h = two ? contact::closest_point_on_shell_segment(X, p, kInteriorTol)
-                                : contact::closest_point_on_segment(X, p, segs.boundary[std::size_t(j)], kInteriorTol);
-    if (!h.valid) continue;
-    if (own_one_sided && !two && !(n_own[0] * h.n[0] + n_own[1] * h.n[1] + n_own[2] * h.n[2] < 0)) continue;
-    const double r = segs.offset[std::size_t(j)] + r_own;
-    const double key = nearest_surface_key(h, r);
-    if (best < 0 || key < best_key) {
-      best = j;
-      best_key = key;
-      best_r = r;
-      bh = h;
-    }
-  }
-  return best;
+  auto allowed = [&](int j) {
+    return segment_pair_allowed(in, own, jo, segs.seg[std::size_t(j)]) && segment_active(s, segs, std::size_t(j));
+  };
+  auto facing = [&](const contact::SegmentHit& h, bool two_sided) {
+    return !own_one_sided || two_sided || n_own[0] * h.n[0] + n_own[1] * h.n[1] + n_own[2] * h.n[2] < 0;
+  };
+  return nearest_segment_in_cell(s, segs, g, p, own.offset[jo], hit.evaluations, allowed, facing, bh, best_r);
 }
 
 // sum_a N_a v_a over a segment's nodes (the velocity of its point of shape values N).
