@@ -115,20 +115,10 @@ const double* filtered_weld_resultants(BeamState& bm, int b, double mean[6]) {
   return mean;
 }
 
-int num_beam_chunks(const BeamState& bm) {
-  int n = 0;
-  for (const BeamGroup& g : bm.groups) n += (g.count + kLanes - 1) / kLanes;
-  return n;
-}
+int num_beam_chunks(const BeamState& bm) { return count_group_chunks(bm.groups, kLanes); }
 
 std::vector<int> beam_chunk_of_beams(const BeamState& bm) {
-  std::vector<int> chunk(std::size_t(bm.nb), -1);
-  int c0 = 0;
-  for (const BeamGroup& g : bm.groups) {
-    for (int q = 0; q < g.count; ++q) chunk[std::size_t(bm.order[std::size_t(g.first + q)])] = c0 + q / kLanes;
-    c0 += (g.count + kLanes - 1) / kLanes;
-  }
-  return chunk;
+  return chunk_of_group_elements(bm.groups, bm.order, bm.nb, kLanes);
 }
 
 void compute_beam_forces(State& s, const std::vector<std::uint8_t>* owns_chunk) {

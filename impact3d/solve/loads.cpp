@@ -242,11 +242,11 @@ void normal_part(const double* v, const std::array<double, 3>& d, double* out) {
 struct OrbitRates {
   double omega = 0, radial = 0;
 };
-OrbitRates last_orbit_rates(const State& s, std::size_t k, const std::array<double, 3>& d, const double* r) {
+OrbitRates last_orbit_rates(const State& s, std::size_t k, const std::array<double, 3>& d, const double* r,
+                            double rho) {
   const double v_old[3] = {s.vx_old[k], s.vy_old[k], s.vz_old[k]};
   double vn[3];
   normal_part(v_old, d, vn);
-  const double rho = std::sqrt(dot3v(r, r));
   OrbitRates w;
   if (rho <= 0) return w;
   const double dxr[3] = {d[1] * r[2] - d[2] * r[1], d[2] * r[0] - d[0] * r[2], d[0] * r[1] - d[1] * r[0]};
@@ -280,7 +280,8 @@ void prescribe_node_orbit(const Model& m, State& s, LoadSet& loads, std::size_t 
   double r[3];
   normal_part(r0, d, r);  // from the axis
   const bool rates = pm.kind == MotionKind::acceleration || pm.radial_free;
-  const OrbitRates was = rates ? last_orbit_rates(s, k, d, r) : OrbitRates{};
+  const double rho = rates ? std::sqrt(dot3v(r, r)) : 0.0;  // its distance from the axis
+  const OrbitRates was = rates ? last_orbit_rates(s, k, d, r, rho) : OrbitRates{};
   const double omega = prescribed_velocity(m, pm, t, dt_n, dt_next, was.omega, s.motion_angle[j]);
   const double turn = omega * dt_next;
   const double c = std::cos(turn), sn = std::sin(turn);
@@ -288,7 +289,6 @@ void prescribe_node_orbit(const Model& m, State& s, LoadSet& loads, std::size_t 
   double* v[3] = {&s.vx[k], &s.vy[k], &s.vz[k]};
   const double v_free[3] = {*v[0], *v[1], *v[2]};
   if (pm.radial_free) {
-    const double rho = std::sqrt(dot3v(r, r));
     if (rho > 0) {
       const double dv[3] = {v_free[0] - s.vx_old[k], v_free[1] - s.vy_old[k], v_free[2] - s.vz_old[k]};
       const double w_n = 0.5 * (was.omega + omega);

@@ -6,10 +6,32 @@
 
 #include <cmath>
 #include <cstddef>
+#include <vector>
 
 #include "impact3d/model/state.h"
 
 namespace impact3d {
+
+// Chunks of `lanes` consecutive elements of each group's order (the block kernels' blocks, the
+// units a distributed run partitions), numbered group after group: how many there are, and the
+// chunk of each element (order: the groups' elements, n elements in all).
+template <class Groups>
+int count_group_chunks(const Groups& groups, int lanes) {
+  int n = 0;
+  for (const auto& g : groups) n += (g.count + lanes - 1) / lanes;
+  return n;
+}
+
+template <class Groups>
+std::vector<int> chunk_of_group_elements(const Groups& groups, const std::vector<int>& order, int n, int lanes) {
+  std::vector<int> chunk(std::size_t(n), -1);
+  int c0 = 0;
+  for (const auto& g : groups) {
+    for (int q = 0; q < g.count; ++q) chunk[std::size_t(order[std::size_t(g.first + q)])] = c0 + q / lanes;
+    c0 += (g.count + lanes - 1) / lanes;
+  }
+  return chunk;
+}
 
 // Nodes conn[0..N) of an element into a kernel's corner arrays.
 template <std::size_t N, class Conn>

@@ -250,20 +250,10 @@ bool shell_forces_finite(const State& s, int k) {
 
 }  // namespace
 
-int num_shell_chunks(const ShellState& sh) {
-  int n = 0;
-  for (const ShellGroup& g : sh.groups) n += (g.count + kLanes - 1) / kLanes;
-  return n;
-}
+int num_shell_chunks(const ShellState& sh) { return count_group_chunks(sh.groups, kLanes); }
 
 std::vector<int> shell_chunk_of_shells(const ShellState& sh) {
-  std::vector<int> chunk(std::size_t(sh.ns), -1);
-  int c0 = 0;
-  for (const ShellGroup& g : sh.groups) {
-    for (int q = 0; q < g.count; ++q) chunk[std::size_t(sh.order[std::size_t(g.first + q)])] = c0 + q / kLanes;
-    c0 += (g.count + kLanes - 1) / kLanes;
-  }
-  return chunk;
+  return chunk_of_group_elements(sh.groups, sh.order, sh.ns, kLanes);
 }
 
 void compute_shell_forces(State& s, const std::vector<std::uint8_t>* owns_chunk) {
