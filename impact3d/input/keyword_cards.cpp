@@ -91,6 +91,102 @@ std::vector<KeywordField> fields_of(std::vector<KeywordField> a, const More&... 
   return a;
 }
 
+// The keywords that shape the deck itself (keyword_include.cpp, keyword_parameters.cpp,
+// keyword_cases.cpp): read in the reader's first pass, before any family, and with no
+// *PARAMETER reference replaced in their cards.
+KeywordField file_name(const char* meaning) { return {"FILENAME", 0, FieldKind::text, 0, false, {}, meaning}; }
+constexpr const char* kFileLookup =
+    "the line, right blanks dropped (any length); looked up next to the including file, next to the main deck, in the working directory, then in the *INCLUDE_PATH directories "
+    "(not found: error 1306; more than 20 levels, or a file that includes itself: error 1307); a name ending in \" +\" continues on the next line";
+std::vector<KeywordSpec> deck_specs() {
+  const KeywordFamily F = KeywordFamily::deck;
+  constexpr FieldKind A = FieldKind::text;
+  std::vector<KeywordSpec> t;
+  t.push_back({{"KEYWORD"}, F, false,
+               {{"options", 6, 0, per_field, {
+                   {"LONG", 0, A, 0, false, {}, "LONG=Y: every keyword in long format (fields of 20 columns); LONG=S or LONG=N: standard format"},
+                   {"I10", 1, A, 0, false, {}, "I10=Y: I10 format (the 8-column ids have 10); I10=N: not"},
+                   {"NCPU", 2, I, 0, false, {}, "NCPU=n: the thread count when the command line has no ncpu= (1 <= abs(n) <= 1024; "
+                                                "negative, LS-DYNA's consistent mode: the same, IMPACT-3D's results never depend on the thread count)"},
+                   {"MEMORY", 3, A, 0, false, {}, "MEMORY=...: warning 2008 (memory is allocated as the model needs it)"},
+                   {"MEMORY2", 4, A, 0, false, {}, "MEMORY2=...: warning 2008, as MEMORY"},
+                   {"size", 5, A, 0, false, {}, "a memory size (digits, M): ignored"},
+               }, "on the *KEYWORD line after the keyword, in any order; any other word: error 1312", {}, false, true}},
+               "the first line of the deck (after blank and $ lines; else warning 2009); LONG= and I10= hold for the keywords after it "
+               "that have no format suffix of their own (+ long, - standard, % I10)"});
+  t.push_back({{"INCLUDE"}, F, false,
+               {{"file card", 1, 80, per_field, {file_name(kFileLookup)}, "each card: one file, read in place of the card", {}, true}},
+               "the file's keywords are read as if they stood here; $ lines and blank cards between the names are skipped"});
+  t.push_back({{"INCLUDE_PATH", "INCLUDE_PATH_RELATIVE"}, F, false,
+               {{"directory card", 1, 80, per_field, {{"PATH", 0, A, 0, false, {}, "a directory searched for *INCLUDE files after the including "
+                                                        "file's; relative: to the main deck's directory (and, without _RELATIVE, to the working directory too)"}},
+                 "each card: one directory", {}, true}},
+               ""});
+  t.push_back({{"INCLUDE_TRANSFORM"}, F, false,
+               {{"card 1", 1, 80, per_field, {file_name(kFileLookup)}, "the first card that is not blank; missing: error 1316", {}, true},
+                {"card 2", 8, 10, after_card, {
+                   {"IDNOFF", 0, I, 0, false, {below(0, 1003, "id offsets must not be negative")}, "added to every node id the file's cards define or name (0 stays 0)"},
+                   {"IDEOFF", 1, I, 0, false, {below(0, 1003, "id offsets must not be negative")}, "element ids"},
+                   {"IDPOFF", 2, I, 0, false, {below(0, 1003, "id offsets must not be negative")}, "part ids"},
+                   {"IDMOFF", 3, I, 0, false, {below(0, 1003, "id offsets must not be negative")}, "material ids"},
+                   {"IDSOFF", 4, I, 0, false, {below(0, 1003, "id offsets must not be negative")}, "set ids"},
+                   {"IDFOFF", 5, I, 0, false, {below(0, 1003, "id offsets must not be negative")}, "curve ids"},
+                   {"IDDOFF", 6, I, 0, false, {below(0, 1003, "id offsets must not be negative")}, "box, coordinate system and vector ids"},
+               }, "when given"},
+                {"card 3", 8, 10, per_field, {
+                   {"IDROFF", 0, I, 0, false, {below(0, 1003, "id offsets must not be negative")}, "section, hourglass and EOS ids"},
+               }, "when given"},
+                {"card 4", 8, 10, per_field, {
+                   {"FCTMAS", 0, E, 1, false, {neither(0, 1, 1102, "unit conversion of the included data (mass)")}, "mass unit factor", kByReader},
+                   {"FCTTIM", 1, E, 1, false, {neither(0, 1, 1102, "unit conversion of the included data (time)")}, "time unit factor", kByReader},
+                   {"FCTLEN", 2, E, 1, true, {outside(0, kInf, 1003, "must be positive", true)},
+                    "length unit factor: the coordinates are scaled (materials and curves in the file with FCTLEN other than 1: error 1102); "
+                    "checked after FCTTEM", kByReader},
+                   {"FCTTEM", 3, E, 1, false, {neither(0, 1, 1102, "unit conversion of the included data (temperature)")}, "temperature unit factor", kByReader},
+                   plain("INCOUT1", 4, I),
+               }, "when given"},
+                {"card 5", 8, 10, per_field, {
+                   {"TRANID", 0, I, 0, false, {}, "*DEFINE_TRANSFORMATION applied after FCTLEN (0: none; not defined: error 1310); initial velocities in a "
+                                                  "moved file, a box in a turned one: error 1102"},
+               }, "when given"}},
+               "the file is read as an *INCLUDE (files it includes inherit the transform); its records get the offsets and their coordinates the "
+               "map once the deck is read"});
+  t.push_back({{"PARAMETER"}, F, false,
+               {{"", 8, 10, per_field, {
+                   {"PRMR", 0, A, 0, false, {}, "R (real), I (integer) or C (text), then the name (else error 1006; defined twice, here or by "
+                                                "*PARAMETER_EXPRESSION: error 1200); blank: no parameter"},
+                   {"VAL", 1, E, 0, false, {}, "the value, read as PRMR's letter says: I an integer, R a real, C text as written"},
+                   {"PRMR", 2, A, 0, false, {}, ""}, {"VAL", 3, E, 0, false, {}, ""},
+                   {"PRMR", 4, A, 0, false, {}, ""}, {"VAL", 5, E, 0, false, {}, ""},
+                   {"PRMR", 6, A, 0, false, {}, ""}, {"VAL", 7, E, 0, false, {}, ""},
+               }, "each card; blank cards skipped"}},
+               "read before every other keyword: &name or -&name in a numeric field of any other keyword takes the value, wherever it is "
+               "defined (names case-insensitive; not defined, or text: error 1310)"});
+  t.push_back({{"PARAMETER_EXPRESSION"}, F, false,
+               {{"", 2, 10, per_field, {
+                   {"PRMR", 0, A, 0, false, {}, "R or I, then the name (else error 1006; defined twice: error 1200); a comma within these columns: "
+                                                "PRMR up to it, the expression after it"},
+                   {"EXPRESSION", 1, A, 0, false, {}, "the rest of the line after PRMR, any length (blank: error 1317); errors name the column of the "
+                                                      "offending character: error 1317, an undefined or text parameter 1310"},
+               }, "each card; blank cards skipped", {10, 70}}},
+               "one parameter a card, evaluated after the *PARAMETER values in any order (docs/keyword-decks.md); an I parameter takes the value "
+               "truncated toward zero"});
+  t.push_back({{"CASE"}, F, false,
+               {{"card 1", 2, 0, per_field, {
+                   {"CASEID", 0, I, 0, false, {}, "the first word: the case id (not a positive integer: error 1001; defined twice: error 1200)"},
+                   {"JOBID", 1, A, 0, false, {}, "the second word: the job name (case=CASEID's output name; blank: caseCASEID)"},
+               }, "the first card that is not blank; missing: error 1316", {}, false, true},
+                {"command card", 1, 0, per_field, {
+                   {"COMMANDS", 0, A, 0, false, {}, "command-line options for the case: warning 2006 when it runs (give them on impact3d's command line)"},
+               }, "each later card with a word that is not an integer", {}, false, true},
+                {"child case card", 1, 0, per_field, {
+                   {"SCID", 0, I, 0, false, {}, "child case ids, any number on a card (0: none)"},
+               }, "each later card of integers only", {}, false, true}},
+               "a master case (impact3d case=CASEID runs the main model and these children); keywords between *CASE_BEGIN_n and *CASE_END_n, or "
+               "with CID=n on their line, belong to child case n (docs/keyword-decks.md)"});
+  return t;
+}
+
 // *NODE and *ELEMENT_...: the bulk of a deck.  Their ids are 8 columns (10 in I10 format, 20 in
 // long format); a card that is plain and passes every check is read by a fast path with the
 // same columns (keyword_nodes_elements.cpp).
@@ -1181,7 +1277,8 @@ const KeywordCardLayout& KeywordSpec::card(std::string_view label, std::string_v
 
 const std::vector<KeywordSpec>& all_keyword_specs() {
   static const std::vector<KeywordSpec> t = [] {
-    std::vector<KeywordSpec> all = nodes_elements_specs();
+    std::vector<KeywordSpec> all = deck_specs();
+    for (KeywordSpec& s : nodes_elements_specs()) all.push_back(std::move(s));
     for (KeywordSpec& s : parts_sections_specs()) all.push_back(std::move(s));
     for (KeywordSpec& s : materials_specs()) all.push_back(std::move(s));
     for (KeywordSpec& s : sets_boxes_specs()) all.push_back(std::move(s));
@@ -1212,22 +1309,26 @@ std::string keyword_tables_markdown() {
     for (const KeywordCardLayout& c : s.cards) {
       const std::vector<int> w = c.columns(false, false);
       os << "**" << (c.card[0] ? c.card : "card 1") << "**" << (c.when[0] ? std::string(" (") + c.when + ")" : std::string()) << ": ";
-      if (c.widths.empty()) {
-        os << c.count << " fields of " << c.width << " columns";
+      if (c.words) {
+        os << "words separated by blanks (in any columns)";
+      } else if (c.widths.empty()) {
+        os << c.count << (c.count == 1 ? " field of " : " fields of ") << c.width << " columns";
       } else {
         os << c.count << " fields of";
         for (std::size_t k = 0; k < w.size(); ++k) os << (k ? ", " : " ") << w[k];
         os << " columns";
       }
-      os << (c.fixed ? " (the same in long format)"
+      os << (c.words ? ""
+             : c.fixed ? " (the same in long format)"
              : c.width == 8 || (!c.widths.empty() && c.columns(false, true) != w) ? " (8-column fields 10 in I10 format; 20 in long format)"
                                                                                    : " (20 in long format)");
       if (c.order == CheckOrder::after_card) os << "; checked once the card is read";
       os << "\n\n| field | columns | kind | blank | meaning | checks |\n|---|---|---|---|---|---|\n";
       for (const KeywordField& f : c.fields) {
         int c1 = 1;
-        for (int k = 0; k < f.index; ++k) c1 += w[std::size_t(k)];
-        os << "| " << f.name << " | " << c1 << "-" << c1 + w[std::size_t(f.index)] - 1 << " | "
+        for (int k = 0; !c.words && k < f.index; ++k) c1 += w[std::size_t(k)];
+        os << "| " << f.name << " | " << (c.words ? std::string("-") : std::to_string(c1) + "-" + std::to_string(c1 + w[std::size_t(f.index)] - 1))
+           << " | "
            << (f.kind == FieldKind::real ? "E" : f.kind == FieldKind::text ? "A" : "I")
            << " | " << number(f.blank) << (f.zero_is_blank ? " (also for 0)" : "") << " | " << f.meaning << " | ";
         for (std::size_t k = 0; k < f.checks.size(); ++k) {

@@ -68,6 +68,8 @@ struct KeywordCardLayout {
                                  // (*NODE: 8 16 16 16 8 8); empty: `count` fields of `width`
   bool fixed = false;  // the same columns in long and I10 format (a heading card: *TITLE, the
                        // _ID cards of *DATABASE_HISTORY_...)
+  bool words = false;  // the fields are words separated by blanks, not columns (the *KEYWORD
+                       // line's options, *CASE's cards); `count` and `width` unused
   const KeywordField& field(std::string_view name) const;  // every name a reader asks for exists
   // The columns of each field: standard format, I10 format (a field of 8 columns has 10: the
   // ids of *NODE and *ELEMENT_...) or long format (20 each).
@@ -78,6 +80,9 @@ struct KeywordCardLayout {
 
 // The families of keywords (one reader file each, keyword_<family>.cpp).
 enum class KeywordFamily {
+  deck,              // *KEYWORD, *INCLUDE..., *PARAMETER..., *CASE: read in the reader's first pass, before
+                     // any family and with no *PARAMETER reference replaced (keyword_include.cpp,
+                     // keyword_parameters.cpp, keyword_cases.cpp)
   nodes_elements,    // *NODE, *ELEMENT_SOLID / _SHELL / _BEAM (keyword_nodes_elements.cpp)
   materials,         // *MAT_..., *EOS_..., *MAT_ADD_EROSION (keyword_materials.cpp; the cards from the material and EOS tables)
   parts_sections,    // *PART, *SECTION_..., *HOURGLASS (keyword_parts_sections.cpp)

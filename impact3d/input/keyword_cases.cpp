@@ -97,6 +97,10 @@ static std::vector<RCase> read_master_cases(const std::vector<Block>& blocks, Ke
       loc.line = b.data[k].line->number;
       loc.card = b.keyword;
       loc.field = "CASEID";
+      if (const std::size_t c = std::string_view(b.data[k].line->text).find(id_text); !id_text.empty() && c != std::string::npos) {
+        loc.col_first = int(c) + 1;  // the word's columns
+        loc.col_last = int(c + id_text.size());
+      }
       loc.found = id_text;
       loc.show_found = true;
       ctx.diag.add(1001, loc, "a positive case id");

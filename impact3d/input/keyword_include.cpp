@@ -44,9 +44,6 @@ class DeckScanner {
   CaseSections& cases_;  // *CASE_BEGIN_n ... *CASE_END_n sections open while scanning
   bool global_long_ = false, global_i10_ = false;
 
-  // Field widths for a card of n fields of width w (standard), 20 in long format.
-  static std::vector<int> W(const Block& b, int n, int w = 10) { return std::vector<int>(std::size_t(n), b.long_fmt ? 20 : w); }
-
   void check_first_line() {
     for (const auto& l : main_.lines()) {
       if (is_blank(l.text) || l.text[0] == '$') continue;
@@ -123,15 +120,25 @@ class DeckScanner {
     close_block(cur, depth, stack);
   }
 
+  // The options on the *KEYWORD line (the table's "options" card, keyword_cards.cpp): words in
+  // any order; a message names the option (its field in the table) and the word's columns.
   void keyword_options(std::string_view t, const DeckFile& f, const DeckLine& l) {
-    std::string u = upper(t);
-    std::size_t p = u.find_first_of(" \t");
-    while (p != std::string::npos && p < u.size()) {
-      std::size_t b = u.find_first_not_of(" \t", p);
-      if (b == std::string::npos) break;
-      std::size_t e = u.find_first_of(" \t", b);
-      std::string tok = u.substr(b, e == std::string::npos ? std::string::npos : e - b);
-      p = e;
+    const KeywordCardLayout& options = find_keyword_spec("KEYWORD")->card("options");
+    const std::string u = upper(t);
+    for (std::size_t b = u.find_first_of(" \t"); (b = u.find_first_not_of(" \t", b)) != std::string::npos;) {
+      const std::size_t e = std::min(u.find_first_of(" \t", b), u.size());
+      const std::string tok = u.substr(b, e - b);
+      Location loc;
+      loc.file = f.name();
+      loc.line = l.number;
+      loc.card = "*KEYWORD";
+      for (const KeywordField& o : options.fields)
+        if (tok.substr(0, tok.find('=')) == o.name) loc.field = o.name;
+      loc.col_first = int(b) + 1;
+      loc.col_last = int(e);
+      loc.found = tok;
+      loc.show_found = true;
+      b = e;
       if (tok == "LONG=Y") global_long_ = true;
       else if (tok == "LONG=S" || tok == "LONG=N") global_long_ = false;
       else if (tok == "I10=Y") global_i10_ = true;
@@ -143,17 +150,10 @@ class DeckScanner {
         // the thread count when the command line has no ncpu= (negative: LS-DYNA's consistent
         // mode; IMPACT-3D's results never depend on the thread count)
         m_.deck_threads = int(std::llabs(n));
+      } else if (tok.rfind("MEMORY=", 0) == 0 || tok.rfind("MEMORY2=", 0) == 0) {  // LS-DYNA's memory options: read and listed as ignored
+        diag_.add(2008, loc, "memory is allocated as the model needs it");
       } else {
-        Location loc;
-        loc.file = f.name();
-        loc.line = l.number;
-        loc.card = "*KEYWORD";
-        loc.found = tok;
-        loc.show_found = true;
-        if (tok.rfind("MEMORY=", 0) == 0 || tok.rfind("MEMORY2=", 0) == 0)  // LS-DYNA's memory options: read and listed as ignored
-          diag_.add(2008, loc, "memory is allocated as the model needs it");
-        else
-          diag_.add(1312, loc, "supported: LONG=Y, LONG=S, I10=Y, I10=N, MEMORY=, MEMORY2=, NCPU=n (1 <= |n| <= 1024) and a memory size");
+        diag_.add(1312, loc, "supported: LONG=Y, LONG=S, I10=Y, I10=N, MEMORY=, MEMORY2=, NCPU=n (1 <= |n| <= 1024) and a memory size");
       }
     }
   }
@@ -193,35 +193,26 @@ class DeckScanner {
       break;
     }
     IncludeTransform x;
-    const auto card = [&](std::size_t j, const char* what) { return KCard(data[j], b.keyword + " " + what, W(b, 8), diag_); };
+    // cards 2-5 by their table (keyword_cards.cpp), read before *PARAMETER: no references replaced
+    const KeywordSpec& spec = *find_keyword_spec("INCLUDE_TRANSFORM");
+    const auto card = [&](const char* label) { return KeywordValues(b, k++, spec.card(label), diag_, nullptr); };
     if (k < data.size()) {
-      KCard c = card(k++, "card 2");
-      x.idnoff = c.i(0, "IDNOFF"), x.ideoff = c.i(1, "IDEOFF"), x.idpoff = c.i(2, "IDPOFF"), x.idmoff = c.i(3, "IDMOFF");
-      x.idsoff = c.i(4, "IDSOFF"), x.idfoff = c.i(5, "IDFOFF"), x.iddoff = c.i(6, "IDDOFF");
-      for (int f = 0; f < 7; ++f)
-        if (c.i(f, "offset") < 0) c.error(1003, f, "offset", "id offsets must not be negative");
+      KeywordValues v = card("card 2");
+      x.idnoff = v.integer("IDNOFF"), x.ideoff = v.integer("IDEOFF"), x.idpoff = v.integer("IDPOFF"), x.idmoff = v.integer("IDMOFF");
+      x.idsoff = v.integer("IDSOFF"), x.idfoff = v.integer("IDFOFF"), x.iddoff = v.integer("IDDOFF");
+    }
+    if (k < data.size()) x.idroff = card("card 3").integer("IDROFF");
+    if (k < data.size()) {
+      KeywordValues v = card("card 4");
+      for (const char* f : {"FCTMAS", "FCTTIM", "FCTLEN", "FCTTEM"}) v[f];  // read in this order, then checked in this:
+      for (const char* f : {"FCTMAS", "FCTTIM", "FCTTEM", "FCTLEN"}) v.check(f);
+      x.fctlen = v["FCTLEN"];
+      v["INCOUT1"];
     }
     if (k < data.size()) {
-      KCard c = card(k++, "card 3");
-      x.idroff = c.i(0, "IDROFF");
-      if (x.idroff < 0) c.error(1003, 0, "IDROFF", "id offsets must not be negative");
-    }
-    if (k < data.size()) {
-      KCard c = card(k++, "card 4");
-      const double fctmas = c.r(0, "FCTMAS", 1), fcttim = c.r(1, "FCTTIM", 1);
-      x.fctlen = c.r(2, "FCTLEN", 1);
-      const double fcttem = c.r(3, "FCTTEM", 1);
-      if (x.fctlen == 0) x.fctlen = 1;
-      if (fctmas != 0 && fctmas != 1) c.error(1102, 0, "FCTMAS", "unit conversion of the included data (mass)");
-      if (fcttim != 0 && fcttim != 1) c.error(1102, 1, "FCTTIM", "unit conversion of the included data (time)");
-      if (fcttem != 0 && fcttem != 1) c.error(1102, 3, "FCTTEM", "unit conversion of the included data (temperature)");
-      if (!(x.fctlen > 0)) c.error(1003, 2, "FCTLEN", "must be positive");
-      c.i(4, "INCOUT1");
-    }
-    if (k < data.size()) {
-      KCard c = card(k++, "card 5");
-      x.tranid = int(c.i(0, "TRANID"));
-      x.tranid_ref = c.ref(0);
+      KeywordValues v = card("card 5");
+      x.tranid = int(v.integer("TRANID"));
+      x.tranid_ref = v.ref("TRANID");
     }
     transforms_.list.push_back(x);
     pending_transform_ = &transforms_.list.back();

@@ -1,6 +1,6 @@
 // *PARAMETER and *PARAMETER_EXPRESSION (docs/keyword-decks.md), read before every other keyword.
-// *PARAMETER_EXPRESSION: one parameter a card, PRMR (10 columns, 20 in
-// long format: R or I, then the name) and EXPRESSION (the rest of the card); with a comma in
+// *PARAMETER_EXPRESSION: one parameter a card, PRMR (the table's columns, keyword_cards.cpp:
+// R or I, then the name) and EXPRESSION (the rest of the card); with a comma in
 // the PRMR columns the card is free format, PRMR up to the first comma.  The expressions are
 // evaluated after the plain *PARAMETER values, each when first needed, so they may refer to
 // one another in any order; a cycle is an error.  I parameters take the value truncated toward
@@ -29,7 +29,8 @@ struct ExpressionDef {
 
 class ExpressionSet {
  public:
-  ExpressionSet(ParamTable& params, Diagnostics& diag) : params_(params), diag_(diag) {}
+  ExpressionSet(ParamTable& params, Diagnostics& diag)
+      : layout_(find_keyword_spec("PARAMETER_EXPRESSION")->card("")), params_(params), diag_(diag) {}
 
   void read_block(const Block& b) {
     for (std::size_t k = 0; k < b.data.size(); ++k)
@@ -64,7 +65,7 @@ class ExpressionSet {
 
   void read_card(const Block& b, const KLine& l) {
     const std::string_view line = l.line->text;
-    const int width = b.long_fmt ? 20 : 10;
+    const int width = layout_.columns(b.long_fmt, b.i10)[0];  // PRMR's columns (the table's)
     const std::size_t comma = line.find(',');
     const bool free = comma != std::string_view::npos && comma < std::size_t(width);
     const std::size_t split = free ? comma : std::min(line.size(), std::size_t(width));
@@ -142,6 +143,7 @@ class ExpressionSet {
     d.state = ExpressionDef::done;
   }
 
+  const KeywordCardLayout& layout_;  // PRMR, EXPRESSION (keyword_cards.cpp)
   ParamTable& params_;
   Diagnostics& diag_;
   std::vector<ExpressionDef> defs_;
@@ -150,17 +152,20 @@ class ExpressionSet {
 
 }  // namespace
 
-// *PARAMETER: cards of four pairs PRMR (10 columns: type R, I or C, then the name) and VAL
-// (10 columns), then *PARAMETER_EXPRESSION.  Read before every other keyword, so a reference
-// may come before or after its definition; a name defined twice is error 1200.
+// *PARAMETER: cards of four pairs PRMR (type R, I or C, then the name) and VAL, by the table
+// (keyword_cards.cpp), then *PARAMETER_EXPRESSION.  Read before every other keyword, so a
+// reference may come before or after its definition; a name defined twice is error 1200.
 void read_parameters(const std::vector<Block>& blocks, ParamTable& params, Diagnostics& diag) {
+  const KeywordCardLayout& layout = find_keyword_spec("PARAMETER")->card("");
   for (const Block& b : blocks) {
     if (b.name != "PARAMETER") continue;
     for (std::size_t k = 0; k < b.data.size(); ++k) {
       if (is_blank(b.data[k].line->text)) continue;
-      KCard c(b.data[k], b.keyword, std::vector<int>(8, b.long_fmt ? 20 : 10), diag);  // no substitution inside *PARAMETER
-      for (int f = 0; f + 1 < 8; f += 2) {
-        std::string pr = c.literal(f);
+      KeywordValues v(b, k, layout, diag, nullptr);  // no substitution inside *PARAMETER
+      KCard& c = v.card();
+      for (std::size_t f = 0; f + 1 < layout.fields.size(); f += 2) {
+        const KeywordField &prmr = layout.fields[f], &val = layout.fields[f + 1];
+        std::string pr = c.literal(prmr.index);
         if (pr.empty()) continue;
         const char type = char(std::toupper(static_cast<unsigned char>(pr[0])));
         std::string name = pr.substr(1);
@@ -168,19 +173,19 @@ void read_parameters(const std::vector<Block>& blocks, ParamTable& params, Diagn
         name = s == std::string::npos ? std::string() : name.substr(s);
         for (char& ch : name) ch = char(std::toupper(static_cast<unsigned char>(ch)));
         if ((type != 'R' && type != 'I' && type != 'C') || name.empty() || name.find(' ') != std::string::npos) {
-          c.error(1006, f, "PRMR", "a type letter R, I or C followed by the parameter name");
+          c.error(1006, prmr.index, prmr.name, "a type letter R, I or C followed by the parameter name");
           continue;
         }
         Param p;
         p.type = type;
         if (type == 'C') {
-          p.text = c.literal(f + 1);
+          p.text = c.literal(val.index);
         } else if (type == 'I') {
-          p.value = double(c.i(f + 1, "VAL"));
+          p.value = double(c.i(val.index, val.name));
         } else {
-          p.value = c.r(f + 1, "VAL");
+          p.value = c.r(val.index, val.name);
         }
-        if (!params.emplace(name, p).second) c.error(1200, f, "PRMR", "parameter " + name + " is defined twice");
+        if (!params.emplace(name, p).second) c.error(1200, prmr.index, prmr.name, "parameter " + name + " is defined twice");
       }
     }
   }

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -395,4 +396,47 @@ TEST(KeywordCards, HistoriesTitleAndCommentByTheirTables) {
   EXPECT_EQ(l[1].find("deck.k:10: error 1001: *DATABASE_HISTORY_NODE_ID+, field \"NID\" (cols 1-10)"), 0u) << l[1];
   EXPECT_EQ(r.m.title, "  a\ttitle");
   EXPECT_EQ(r.m.control.viscosity_flag, 1);
+}
+
+// The keywords that shape the deck read by their tables too: *INCLUDE_TRANSFORM's cards 2-5
+// (each message names its field, IDNOFF rather than the "offset" of old, and a bad field is
+// refused once), *PARAMETER's PRMR / VAL pairs and *PARAMETER_EXPRESSION's PRMR by their
+// columns (20 in long format); the *KEYWORD options and *CASE's CASEID, words in any columns,
+// are named with the word's columns.
+TEST(KeywordCards, DeckShapingKeywordsByTheirTables) {
+  for (const char* n : {"KEYWORD", "INCLUDE", "INCLUDE_PATH_RELATIVE", "INCLUDE_TRANSFORM", "PARAMETER", "PARAMETER_EXPRESSION", "CASE"})
+    EXPECT_EQ(find_keyword_spec(n)->family, KeywordFamily::deck) << n;
+  const auto has = [](const std::vector<std::string>& l, const std::string& line) {
+    return std::find(l.begin(), l.end(), line) != l.end();
+  };
+  const std::string head = "*CONTROL_TERMINATION\n   1.0E-05\n";
+  const Read x = read(deck(head + "*INCLUDE_TRANSFORM\nnone.k\n" + card({"-5", "abc"}) + card({"0"}) + card({"2.0", "1.0", "-1.0", "0"})));
+  const std::vector<std::string> l = x.lines();
+  EXPECT_TRUE(has(l, "deck.k:6: error 1001: *INCLUDE_TRANSFORM card 2, field \"IDEOFF\" (cols 11-20): not an integer [found \"abc\"]")) << l[0];
+  EXPECT_TRUE(has(l, "deck.k:6: error 1003: *INCLUDE_TRANSFORM card 2, field \"IDNOFF\" (cols 1-10): value out of range: "
+                     "id offsets must not be negative [found \"-5\"]")) << l[0];
+  EXPECT_TRUE(has(l, "deck.k:8: error 1102: *INCLUDE_TRANSFORM card 4, field \"FCTMAS\" (cols 1-10): feature not supported by IMPACT-3D: "
+                     "unit conversion of the included data (mass) [found \"2.0\"]"));
+  EXPECT_TRUE(has(l, "deck.k:8: error 1003: *INCLUDE_TRANSFORM card 4, field \"FCTLEN\" (cols 21-30): value out of range: "
+                     "must be positive [found \"-1.0\"]"));
+  EXPECT_EQ(l.size(), 5u) << "and 1306 for the file: one message a bad field";
+  const Read lng = read(deck(head + "*INCLUDE_TRANSFORM +\nnone.k\n" + card({"0", "-1"}, 20)));
+  EXPECT_NE(lng.lines()[0].find("card 2, field \"IDEOFF\" (cols 21-40)"), std::string::npos) << lng.lines()[0];
+
+  const Read p = read(deck(head + "*PARAMETER\n" + card({"R A", "1.5", "X B", "2"}) + "*PARAMETER_EXPRESSION +\n" +
+                           "C TEXT              1 + 1\n"));
+  ASSERT_EQ(p.lines().size(), 2u);
+  EXPECT_EQ(p.lines()[0], "deck.k:5: error 1006: *PARAMETER, field \"PRMR\" (cols 21-30): not a valid choice: "
+                          "a type letter R, I or C followed by the parameter name [found \"X B\"]");
+  EXPECT_EQ(p.lines()[1].find("deck.k:7: error 1006: *PARAMETER_EXPRESSION, field \"PRMR\" (cols 1-20)"), 0u) << p.lines()[1];
+
+  const Read k = read("*KEYWORD 20M NCPU=0 LONG=X\n" + deck(head).substr(9));
+  ASSERT_EQ(k.lines().size(), 2u);
+  EXPECT_EQ(k.lines()[0], "deck.k:1: error 1312: *KEYWORD, field \"NCPU\" (cols 14-19): keyword option not supported: supported: LONG=Y, "
+                          "LONG=S, I10=Y, I10=N, MEMORY=, MEMORY2=, NCPU=n (1 <= |n| <= 1024) and a memory size [found \"NCPU=0\"]");
+  EXPECT_NE(k.lines()[1].find("field \"LONG\" (cols 21-26)"), std::string::npos) << k.lines()[1];
+
+  const Read c = read(deck(head + "*CASE\n    1x   job\n"));
+  ASSERT_FALSE(c.lines().empty());
+  EXPECT_EQ(c.lines()[0], "deck.k:5: error 1001: *CASE, field \"CASEID\" (cols 5-6): not an integer: a positive case id [found \"1x\"]");
 }
