@@ -17,7 +17,7 @@
 // (on an edge, dvz/dr is the difference of its nodes' vz over 2, the rotations their mean).  The
 // corner forces and moments are the work conjugates at x^n, each point weighted by det J.
 //
-// Integration points per shell: 5 sets of NIP (ShellState::ip_start), set 0 the mean of the four
+// Integration points per shell: 5 sets of NIP (ShellState::pt_base; a run of width 1), set 0 the mean of the four
 // Gauss points' stresses, plastic strains, back stresses (what the plot database, the histories
 // and the failure check read: a shell fails when the mean plastic strain of every layer has
 // reached FS), sets 1-4 the Gauss points in the order of the nodes.

@@ -111,6 +111,32 @@ void add_shell_corners(State& s) {
                  [&](int k, int j) { return sh.conn[std::size_t(k)][std::size_t(j)]; });
 }
 
+// The points' layout (the table in model/shell_state.h): run after run in the groups' order,
+// a group in blocks one run of width kLanes per whole block, every other shell a run of width 1.
+// Returns the number of points.
+std::size_t lay_out_shell_points(ShellState& sh, const std::vector<int>& points) {
+  sh.pt_base.assign(std::size_t(sh.ns), 0);
+  sh.pt_lane.assign(std::size_t(sh.ns), 0);
+  sh.pt_width.assign(std::size_t(sh.ns), 1);
+  std::size_t next = 0;
+  auto run = [&](const int* ord, int width) {
+    for (int l = 0; l < width; ++l) {
+      const std::size_t k = std::size_t(ord[l]);
+      sh.pt_base[k] = int(next);
+      sh.pt_lane[k] = std::uint8_t(l);
+      sh.pt_width[k] = std::uint8_t(width);
+    }
+    next += std::size_t(width) * std::size_t(points[std::size_t(ord[0])]);  // a group's shells: one section
+  };
+  for (const ShellGroup& g : sh.groups) {
+    const int* ord = &sh.order[std::size_t(g.first)];
+    const int nb = g.blocks ? g.count / kLanes : 0;
+    for (int q = 0; q < nb; ++q) run(ord + q * kLanes, kLanes);
+    for (int q = nb * kLanes; q < g.count; ++q) run(ord + q, 1);
+  }
+  return next;
+}
+
 }  // namespace
 
 void init_shells(const Model& m, State& s) {
@@ -152,13 +178,13 @@ void init_shells(const Model& m, State& s) {
   for (int k = 0; k < ns; ++k) sh.order[std::size_t(first[std::size_t(sh.mat[std::size_t(k)])]++)] = k;
   // integration points
   sh.nip.assign(std::size_t(ns), 0);
-  sh.ip_start.assign(std::size_t(ns) + 1, 0);
+  std::vector<int> points(std::size_t(ns), 0);
   for (int k = 0; k < ns; ++k) {
     const ShellSectionData& sec = m.materials[std::size_t(sh.mat[std::size_t(k)])].shell_section;
     sh.nip[std::size_t(k)] = sec.nip;  // through the thickness (ELFORM 16: times 5 sets, shell_fi.h)
-    sh.ip_start[std::size_t(k) + 1] = sh.ip_start[std::size_t(k)] + shell_points_per_shell(sec.elform, sec.nip);
+    points[std::size_t(k)] = shell_points_per_shell(sec.elform, sec.nip);
   }
-  const std::size_t nip_total = std::size_t(sh.ip_start[std::size_t(ns)]);
+  const std::size_t nip_total = lay_out_shell_points(sh, points);
   sh.sig.assign(5 * nip_total, 0.0);
   sh.back.assign(kinematic ? 6 * nip_total : 0, 0.0);
   sh.eps_p.assign(plastic ? nip_total : 0, 0.0);

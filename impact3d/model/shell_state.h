@@ -56,7 +56,9 @@ struct ShellState {
   std::vector<ShellGroup> groups;             // one per material, in material order
   std::vector<int> order;                     // shells group after group, increasing in a group
   std::vector<int> nip;                       // integration points of each shell
-  std::vector<int> ip_start;                  // first integration point of each shell
+  // the points' state, in the layout of the table below (shell_sig_at etc.; never index it by hand)
+  std::vector<int> pt_base;                   // per shell: the first point of its run of points
+  std::vector<std::uint8_t> pt_lane, pt_width;  // per shell: its lane in the run, the run's width
   std::vector<double> sig;                    // 5 per point: local xx yy xy yz zx
   std::vector<double> back;                   // 6 per point (with a plastic-kinematic or Mooney-Rivlin group; else empty)
   std::vector<double> eps_p;                  // 1 per point (with a plastic group; else empty)
@@ -82,5 +84,30 @@ struct ShellState {
   std::vector<int> rot_corner_start, rot_corner_list;  // CSR: rotational dof -> shell corners (4 k + j)
   double rot_kinetic = 0;                     // rotational kinetic energy (in State::kinetic)
 };
+
+// The layout of the points' state (sig, back, eps_p, yielded), the one table.  Shell k owns
+// points [pt_base, pt_base + width * points) of a run of width shells (points: nip, ELFORM 16
+// 5 nip, shell_points_per_shell); in its run it is lane pt_lane.  Its point p, component c is
+//   sig[5 pt_base + (5 p + c) width + lane], back[6 pt_base + (6 p + c) width + lane],
+//   eps_p[pt_base + p width + lane], yielded[pt_base + p width + lane].
+// A group that runs in blocks (ShellGroup::blocks at initialization) keeps each whole block of
+// kLanes shells (order[first + kLanes q ..], the block kernel's blocks) as one run of width
+// kLanes: block order, what ShellBlock holds, so that the block pass loads and stores them with
+// plain vector moves.  Every other shell (a group's last count mod kLanes, the groups shell by
+// shell) is a run of width 1: its points together, component after component.  Runs follow the
+// groups' order (init/shell_init.cpp, lay_out_shell_points).  Output, histories and exchanges read through these functions, shell by shell
+// and point by point, so they see the same values in the same order for any layout.
+inline std::size_t shell_point_at(const ShellState& sh, int k, int p) {
+  const std::size_t K = std::size_t(k);
+  return std::size_t(sh.pt_base[K]) + std::size_t(p) * sh.pt_width[K] + sh.pt_lane[K];
+}
+inline std::size_t shell_sig_at(const ShellState& sh, int k, int p, int c) {
+  const std::size_t K = std::size_t(k);
+  return 5 * std::size_t(sh.pt_base[K]) + std::size_t(5 * p + c) * sh.pt_width[K] + sh.pt_lane[K];
+}
+inline std::size_t shell_back_at(const ShellState& sh, int k, int p, int c) {
+  const std::size_t K = std::size_t(k);
+  return 6 * std::size_t(sh.pt_base[K]) + std::size_t(6 * p + c) * sh.pt_width[K] + sh.pt_lane[K];
+}
 
 }  // namespace impact3d

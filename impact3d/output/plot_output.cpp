@@ -180,13 +180,13 @@ void fill_shell_plot_vars(const State& s, int k, double* out) {
   const ShellState& sh = s.shells;
   const std::size_t K = std::size_t(k);
   const int nip = sh.nip[K];
-  const std::size_t ip0 = std::size_t(sh.ip_start[K]);
   const double h = sh.thick[K];
   double zeta[kMaxShellIntegrationPoints], w[kMaxShellIntegrationPoints];
   gauss_legendre_rule(nip, zeta, w);
   double N[5] = {0, 0, 0, 0, 0}, M[3] = {0, 0, 0};
   for (int p = 0; p < nip; ++p) {
-    const double* q = &sh.sig[5 * (ip0 + std::size_t(p))];
+    double q[5];
+    for (int c = 0; c < 5; ++c) q[c] = sh.sig[shell_sig_at(sh, k, p, c)];
     const double wz = 0.5 * h * w[p], z = 0.5 * h * zeta[p];
     for (int c = 0; c < 5; ++c) N[c] += wz * q[c];
     for (int c = 0; c < 3; ++c) M[c] += wz * z * q[c];
@@ -212,9 +212,9 @@ void fill_shell_plot_vars(const State& s, int k, double* out) {
     shell_stress_to_global(fr.e, l, out + 7 * layer);
     double ep = 0;
     if (plastic) {
-      const std::size_t p = layer == 1 ? 0 : layer == 2 ? std::size_t(nip - 1) : std::size_t(nip / 2);
-      ep = sh.eps_p[ip0 + p];
-      if (layer == 0 && nip % 2 == 0) ep = 0.5 * (ep + sh.eps_p[ip0 + p - 1]);
+      const int p = layer == 1 ? 0 : layer == 2 ? nip - 1 : nip / 2;
+      ep = sh.eps_p[shell_point_at(sh, k, p)];
+      if (layer == 0 && nip % 2 == 0) ep = 0.5 * (ep + sh.eps_p[shell_point_at(sh, k, p - 1)]);
     }
     out[7 * layer + 6] = ep;
   }

@@ -47,8 +47,9 @@ struct DumpHeader {
 // energies); 15: the beams' failure flags, the spot welds (rigid bodies' released flags, the
 // node-to-body map); 16: the viscous hourglass forms' resultants (State::hgs) and their pending
 // power (State::hg_pending, State::dt_vel); 17: the spot-weld beams' stored resultants (NF,
-// BeamState::weld_res, weld_res_count); 18: the fully integrated solids' points (State::pt_*).
-constexpr std::uint32_t kDumpVersion = 19;
+// BeamState::weld_res, weld_res_count); 18: the fully integrated solids' points (State::pt_*);
+// 20: the shells' points' state in runs (blocks of 8 in block order, model/shell_state.h).
+constexpr std::uint32_t kDumpVersion = 20;
 
 // Writes the dump atomically (temporary file, fsync, rename).  Throws std::runtime_error.
 // The contact state (energy books of the sliding interfaces) travels with the State.

@@ -62,13 +62,13 @@ template <class F>
 void visit_shell(State& s, std::size_t k, F&& f) {
   ShellState& sh = s.shells;
   f(sh.area[k]);
-  const std::size_t ip = std::size_t(sh.ip_start[k]), nip = std::size_t(sh.nip[k]);
-  for (std::size_t p = ip; p < ip + nip; ++p) {
-    for (std::size_t c = 0; c < 5; ++c) f(sh.sig[5 * p + c]);
+  const int K = int(k), nip = sh.nip[k];
+  for (int p = 0; p < nip; ++p) {
+    for (int c = 0; c < 5; ++c) f(sh.sig[shell_sig_at(sh, K, p, c)]);
     if (!sh.back.empty())
-      for (std::size_t c = 0; c < 6; ++c) f(sh.back[6 * p + c]);
-    if (!sh.eps_p.empty()) f(sh.eps_p[p]);
-    if (!sh.yielded.empty()) f(sh.yielded[p]);
+      for (int c = 0; c < 6; ++c) f(sh.back[shell_back_at(sh, K, p, c)]);
+    if (!sh.eps_p.empty()) f(sh.eps_p[shell_point_at(sh, K, p)]);
+    if (!sh.yielded.empty()) f(sh.yielded[shell_point_at(sh, K, p)]);
   }
   if (!sh.hgq.empty())
     for (std::size_t c = 0; c < 5; ++c) f(sh.hgq[5 * k + c]);

@@ -149,8 +149,10 @@ void measure_shells(FinalShape& f, const State& s) {
     }
     for (int n : sh.conn[K]) take_node(f, s, n);
     if (sh.eps_p.empty()) continue;
-    for (int p = sh.ip_start[K]; p < sh.ip_start[K] + sh.nip[K]; ++p)
-      if (f.max_eps_shell < 0 || sh.eps_p[std::size_t(p)] > f.shell_eps) f.max_eps_shell = k, f.shell_eps = sh.eps_p[std::size_t(p)];
+    for (int p = 0; p < sh.nip[K]; ++p) {
+      const double e = sh.eps_p[shell_point_at(sh, k, p)];
+      if (f.max_eps_shell < 0 || e > f.shell_eps) f.max_eps_shell = k, f.shell_eps = e;
+    }
   }
 }
 

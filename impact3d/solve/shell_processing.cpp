@@ -23,6 +23,57 @@ void gather_shell(const State& s, int k, double dt, ShellKernelIO& io) {
   io.dt = dt;
 }
 
+// A shell's points' state for the scalar kernels (ShellPointState: a shell's points together).
+// A run of width 1 is that already (the pointers point into the State); a shell of a wider run
+// (a block's shell going through the scalar kernel) is copied into pts, and put_shell_points
+// copies it back after the kernel.
+struct ShellPoints {
+  double sig[5 * kMaxShellIntegrationPoints], back[6 * kMaxShellIntegrationPoints];
+  double eps_p[kMaxShellIntegrationPoints];
+  unsigned char yielded[kMaxShellIntegrationPoints];
+};
+
+ShellPointState shell_point_state(ShellState& sh, int k, bool plastic, bool back, ShellPoints& pts) {
+  const std::size_t K = std::size_t(k);
+  ShellPointState st{nullptr, nullptr, nullptr, nullptr, sh.hgq.empty() ? nullptr : &sh.hgq[5 * K], &sh.drill[4 * K]};
+  if (sh.pt_width[K] == 1) {
+    const std::size_t ip = std::size_t(sh.pt_base[K]);
+    st.sig = &sh.sig[5 * ip];
+    st.back = back ? &sh.back[6 * ip] : nullptr;
+    st.eps_p = plastic ? &sh.eps_p[ip] : nullptr;
+    st.yielded = plastic ? &sh.yielded[ip] : nullptr;
+    return st;
+  }
+  const int nip = sh.nip[K];  // a run wider than 1: a group in blocks, ELFORM 2 (nip points)
+  for (int p = 0; p < nip; ++p) {
+    for (int c = 0; c < 5; ++c) pts.sig[5 * p + c] = sh.sig[shell_sig_at(sh, k, p, c)];
+    if (back)
+      for (int c = 0; c < 6; ++c) pts.back[6 * p + c] = sh.back[shell_back_at(sh, k, p, c)];
+    if (plastic) {
+      pts.eps_p[p] = sh.eps_p[shell_point_at(sh, k, p)];
+      pts.yielded[p] = sh.yielded[shell_point_at(sh, k, p)];
+    }
+  }
+  st.sig = pts.sig;
+  st.back = back ? pts.back : nullptr;
+  st.eps_p = plastic ? pts.eps_p : nullptr;
+  st.yielded = plastic ? pts.yielded : nullptr;
+  return st;
+}
+
+void put_shell_points(ShellState& sh, int k, bool plastic, bool back, const ShellPoints& pts) {
+  const int nip = sh.nip[std::size_t(k)];
+  for (int p = 0; p < nip; ++p) {
+    for (int c = 0; c < 5; ++c) sh.sig[shell_sig_at(sh, k, p, c)] = pts.sig[5 * p + c];
+    if (back)
+      for (int c = 0; c < 6; ++c) sh.back[shell_back_at(sh, k, p, c)] = pts.back[6 * p + c];
+    if (plastic) {
+      sh.eps_p[shell_point_at(sh, k, p)] = pts.eps_p[p];
+      sh.yielded[shell_point_at(sh, k, p)] = pts.yielded[p];
+    }
+  }
+}
+
 void process_shell(State& s, const ShellGroup& g, int k, double dt) {
   ShellState& sh = s.shells;
   if (sh.failed[std::size_t(k)]) {  // deleted: no forces, no step, no energy (its mass stays)
@@ -34,16 +85,15 @@ void process_shell(State& s, const ShellGroup& g, int k, double dt) {
   }
   ShellKernelIO io;
   gather_shell(s, k, dt, io);
-  const std::size_t ip = std::size_t(sh.ip_start[std::size_t(k)]);
   const bool plastic = shell_kernel_is_plastic(g.kernel);
-  ShellPointState st{&sh.sig[5 * ip], shell_kernel_has_back(g.kernel) ? &sh.back[6 * ip] : nullptr,
-                     plastic ? &sh.eps_p[ip] : nullptr, plastic ? &sh.yielded[ip] : nullptr,
-                     sh.hgq.empty() ? nullptr : &sh.hgq[5 * std::size_t(k)],
-                     &sh.drill[4 * std::size_t(k)]};
+  const bool back = shell_kernel_has_back(g.kernel);
+  ShellPoints pts;
+  ShellPointState st = shell_point_state(sh, k, plastic, back, pts);
   if (g.constants.elform == 16)
     calc_shell_fi_forces(g.constants, s.mats[std::size_t(g.material)], shell_material_kind(g.kernel), io, st);
   else
     calc_shell_bt_forces(g.constants, s.mats[std::size_t(g.material)], shell_material_kind(g.kernel), io, st);
+  if (sh.pt_width[std::size_t(k)] != 1) put_shell_points(sh, k, plastic, back, pts);
   sh.bad[std::size_t(k)] = io.bad;
   if (io.bad) {
     zero_shell_corners(s, k);
@@ -63,7 +113,7 @@ void process_shell(State& s, const ShellGroup& g, int k, double dt) {
   const double fs = mc.fail_strain;
   if (plastic && fs > 0 && dt > 0) {
     bool all = true;
-    for (int i = 0; i < sh.nip[std::size_t(k)] && all; ++i) all = sh.eps_p[ip + std::size_t(i)] >= fs;
+    for (int i = 0; i < sh.nip[std::size_t(k)] && all; ++i) all = sh.eps_p[shell_point_at(sh, k, i)] >= fs;
     if (all) sh.failed[std::size_t(k)] = 2;  // 2: in this pass (the books count it)
   }
   if (mc.shell_tdel > 0 && dt > 0 && io.dt_e < mc.shell_tdel) sh.failed[std::size_t(k)] = 2;
@@ -75,7 +125,8 @@ void process_shell(State& s, const ShellGroup& g, int k, double dt) {
 struct ShellBlockArrays {
   const double *x, *y, *z, *vx, *vy, *vz, *wx, *wy, *wz, *thick;
   const std::array<int, 4>* conn;
-  const int *node_rot, *ip_start;
+  const int *node_rot, *pt_base;
+  const std::uint8_t* pt_width;
   double *sig, *back, *eps_p, *hgq, *drill;
   std::uint8_t* yielded;
   double *cfx, *cfy, *cfz, *cmx, *cmy, *cmz, *area, *dt_e, *de_ie, *de_hg;
@@ -94,7 +145,7 @@ ShellBlockArrays shell_block_arrays(State& s, const ShellGroup& g, const ShellBl
   a.wx = sh.wx.data(), a.wy = sh.wy.data(), a.wz = sh.wz.data();
   a.thick = sh.thick.data();
   a.conn = sh.conn.data();
-  a.node_rot = sh.node_rot.data(), a.ip_start = sh.ip_start.data();
+  a.node_rot = sh.node_rot.data(), a.pt_base = sh.pt_base.data(), a.pt_width = sh.pt_width.data();
   a.sig = sh.sig.data(), a.back = sh.back.data(), a.eps_p = sh.eps_p.data(), a.hgq = sh.hgq.data();
   a.drill = sh.drill.data(), a.yielded = sh.yielded.data();
   a.cfx = s.cfx.data(), a.cfy = s.cfy.data(), a.cfz = s.cfz.data();
@@ -133,23 +184,26 @@ void gather_shell_block(const ShellBlockArrays& a, const int* ord, ShellBlock& b
     if (a.drilling)
       for (int j = 0; j < 4; ++j) b.drill[j][l] = a.drill[4 * k + std::size_t(j)];
     b.h[l] = a.thick[k];
-    const double* sig = a.sig + 5 * std::size_t(a.ip_start[k]);
-    for (int p = 0; p < a.nip; ++p)
-      for (int c = 0; c < 5; ++c) b.sig[p][c][l] = sig[5 * p + c];
-    if (a.back_stress) {
-      const double* back = a.back + 6 * std::size_t(a.ip_start[k]);
-      for (int p = 0; p < a.nip; ++p)
-        for (int c = 0; c < 6; ++c) b.back[p][c][l] = back[6 * p + c];
-    }
-    if (a.plastic) {
-      const std::size_t ip = std::size_t(a.ip_start[k]);
-      for (int p = 0; p < a.nip; ++p) {
-        b.eps_p[p][l] = a.eps_p[ip + std::size_t(p)];
-        b.yielded[p][l] = a.yielded[ip + std::size_t(p)];
-      }
-    }
     if (a.hourglass_state)
       for (int j = 0; j < 5; ++j) b.hgq[j][l] = a.hgq[5 * k + std::size_t(j)];
+  }
+  // the points' state: the block's run (shell_state.h) is laid out as ShellBlock holds it
+  const std::size_t ip = std::size_t(a.pt_base[ord[0]]);
+  const double* sig = a.sig + 5 * ip;
+  for (int p = 0; p < a.nip; ++p)
+    for (int c = 0; c < 5; ++c) IMPACT3D_FOR_LANES b.sig[p][c][l] = sig[(5 * p + c) * kLanes + l];
+  if (a.back_stress) {
+    const double* back = a.back + 6 * ip;
+    for (int p = 0; p < a.nip; ++p)
+      for (int c = 0; c < 6; ++c) IMPACT3D_FOR_LANES b.back[p][c][l] = back[(6 * p + c) * kLanes + l];
+  }
+  if (a.plastic) {
+    const double* eps_p = a.eps_p + ip;
+    const std::uint8_t* yielded = a.yielded + ip;
+    for (int p = 0; p < a.nip; ++p) {
+      IMPACT3D_FOR_LANES b.eps_p[p][l] = eps_p[p * kLanes + l];
+      IMPACT3D_FOR_LANES b.yielded[p][l] = yielded[p * kLanes + l];
+    }
   }
 }
 
@@ -175,22 +229,9 @@ void store_shell_block(const ShellBlockArrays& a, const int* ord, double dt, con
     }
     if (a.drilling)
       for (int j = 0; j < 4; ++j) a.drill[4 * k + std::size_t(j)] = b.drill[j][l];
-    double* sig = a.sig + 5 * std::size_t(a.ip_start[k]);
-    for (int p = 0; p < a.nip; ++p)
-      for (int c = 0; c < 5; ++c) sig[5 * p + c] = b.sig[p][c][l];
-    if (a.back_stress) {
-      double* back = a.back + 6 * std::size_t(a.ip_start[k]);
-      for (int p = 0; p < a.nip; ++p)
-        for (int c = 0; c < 6; ++c) back[6 * p + c] = b.back[p][c][l];
-    }
     if (a.plastic) {
-      const std::size_t ip = std::size_t(a.ip_start[k]);
       bool all_failed = a.fail_strain > 0 && dt > 0;
-      for (int p = 0; p < a.nip; ++p) {
-        a.eps_p[ip + std::size_t(p)] = b.eps_p[p][l];
-        a.yielded[ip + std::size_t(p)] = b.yielded[p][l] != 0.0;
-        all_failed = all_failed && b.eps_p[p][l] >= a.fail_strain;
-      }
+      for (int p = 0; p < a.nip; ++p) all_failed = all_failed && b.eps_p[p][l] >= a.fail_strain;
       // failure as process_shell: this pass's forces still act, from the next pass on none
       if (all_failed) a.failed[k] = 2;
     }
@@ -199,6 +240,24 @@ void store_shell_block(const ShellBlockArrays& a, const int* ord, double dt, con
     // type 24 TDEL as process_shell: deleted when the shell's step falls below it
     if (a.shell_tdel > 0 && dt > 0 && b.dt_e[l] < a.shell_tdel) a.failed[k] = 2;
   }
+  // the points' state back into the block's run (as gather_shell_block reads it)
+  const std::size_t ip = std::size_t(a.pt_base[ord[0]]);
+  double* sig = a.sig + 5 * ip;
+  for (int p = 0; p < a.nip; ++p)
+    for (int c = 0; c < 5; ++c) IMPACT3D_FOR_LANES sig[(5 * p + c) * kLanes + l] = b.sig[p][c][l];
+  if (a.back_stress) {
+    double* back = a.back + 6 * ip;
+    for (int p = 0; p < a.nip; ++p)
+      for (int c = 0; c < 6; ++c) IMPACT3D_FOR_LANES back[(6 * p + c) * kLanes + l] = b.back[p][c][l];
+  }
+  if (a.plastic) {
+    double* eps_p = a.eps_p + ip;
+    std::uint8_t* yielded = a.yielded + ip;
+    for (int p = 0; p < a.nip; ++p) {
+      IMPACT3D_FOR_LANES eps_p[p * kLanes + l] = b.eps_p[p][l];
+      IMPACT3D_FOR_LANES yielded[p * kLanes + l] = b.yielded[p][l] != 0.0;
+    }
+  }
 }
 
 // kLanes shells ord[0..kLanes) through the block kernel; a block with a deleted shell or a bad
@@ -206,7 +265,7 @@ void store_shell_block(const ShellBlockArrays& a, const int* ord, double dt, con
 // process_shell shell by shell instead (the same bits; the scalar kernel's handling of both).
 void process_shell_block(State& s, const ShellGroup& g, const ShellBlockMaterial& mat, const ShellBlockArrays& a,
                          const int* ord, double dt, ShellBlock& b) {
-  bool scalar = false;
+  bool scalar = a.pt_width[ord[0]] != kLanes;  // (never: lay_out_shell_points makes each block one run)
   for (int l = 0; l < kLanes; ++l) scalar = scalar || a.failed[ord[l]] != 0;
   if (!scalar) {
     gather_shell_block(a, ord, b);

@@ -19,12 +19,11 @@ double shell_plastic_strain(const ShellState& sh, std::size_t k) {
   const ShellGroupConstants* c = nullptr;
   for (const ShellGroup& g : sh.groups)
     if (g.material == sh.mat[k]) c = &g.constants;
-  const std::size_t ip = std::size_t(sh.ip_start[k]);
   const int nip = sh.nip[k];
   double sum = 0, wsum = 0;
   for (int p = 0; p < nip; ++p) {
     const double w = c && nip == c->nip ? c->weight[p] : 1.0;
-    sum += w * sh.eps_p[ip + std::size_t(p)];
+    sum += w * sh.eps_p[shell_point_at(sh, int(k), p)];
     wsum += w;
   }
   return wsum > 0 ? sum / wsum : 0.0;

@@ -34,7 +34,7 @@ double min_point_strain(const State& s, int k) {
   const ShellState& sh = s.shells;
   double lo = 1e300;
   for (int i = 0; i < sh.nip[std::size_t(k)]; ++i)
-    lo = std::min(lo, sh.eps_p[std::size_t(sh.ip_start[std::size_t(k)] + i)]);
+    lo = std::min(lo, sh.eps_p[shell_point_at(sh, k, i)]);
   return lo;
 }
 

@@ -89,9 +89,10 @@ TEST(ShellFi, MembranePatchTestOnDistortedMesh) {
   double worst = 0;
   for (int k = 0; k < s.shells.ns; ++k) {
     const int nip = s.shells.nip[std::size_t(k)];
-    ASSERT_EQ(s.shells.ip_start[std::size_t(k) + 1] - s.shells.ip_start[std::size_t(k)], kShellFiPointSets * nip);
+    ASSERT_EQ(s.shells.pt_width[std::size_t(k)], 1);  // ELFORM 16: shell by shell, its points together
     for (int p = 0; p < kShellFiPointSets * nip; ++p) {
-      const double* q = &s.shells.sig[5 * std::size_t(s.shells.ip_start[std::size_t(k)] + p)];
+      double q[5];
+      for (int c = 0; c < 5; ++c) q[c] = s.shells.sig[shell_sig_at(s.shells, k, p, c)];
       const double tr = q[0] + q[1], det = q[0] * q[1] - q[2] * q[2];  // frame along edge 1-2
       worst = std::max({worst, std::fabs(tr - sxx - syy) / std::fabs(sxx),
                         std::fabs(det - (sxx * syy - sxy * sxy)) / (sxx * sxx), std::fabs(q[3]) / std::fabs(sxx),
@@ -424,10 +425,11 @@ TEST(ShellFi, EveryShellMaterialGivesTheOnePointStressUnderUniformStretch) {
     for (int set = 0; set < kShellFiPointSets; ++set)
       for (int p = 0; p < nip; ++p) {
         for (int c = 0; c < 5; ++c)
-          worst = std::max(worst, std::fabs(fi.shells.sig[std::size_t(5 * (nip * set + p) + c)] - bt.shells.sig[std::size_t(5 * p + c)]));
+          worst = std::max(worst, std::fabs(fi.shells.sig[shell_sig_at(fi.shells, 0, nip * set + p, c)] - bt.shells.sig[shell_sig_at(bt.shells, 0, p, c)]));
         if (!bt.shells.eps_p.empty()) {
-          eps_max = std::max(eps_max, bt.shells.eps_p[std::size_t(p)]);
-          eps_worst = std::max(eps_worst, std::fabs(fi.shells.eps_p[std::size_t(nip * set + p)] - bt.shells.eps_p[std::size_t(p)]));
+          const double ep_bt = bt.shells.eps_p[shell_point_at(bt.shells, 0, p)];
+          eps_max = std::max(eps_max, ep_bt);
+          eps_worst = std::max(eps_worst, std::fabs(fi.shells.eps_p[shell_point_at(fi.shells, 0, nip * set + p)] - ep_bt));
         }
       }
     std::printf("type %d: largest stress %.4e, ELFORM 16 points vs ELFORM 2 %.2e of it; plastic strain %.4e, difference %.2e\n",

@@ -207,7 +207,7 @@ TEST(ShellPiecewiseLinearFailure, DeletesShellsWhoseEveryPointReachedFail) {
   auto min_point = [](const State& s, int k) {
     double lo = 1e300;
     for (int i = 0; i < s.shells.nip[std::size_t(k)]; ++i)
-      lo = std::min(lo, s.shells.eps_p[std::size_t(s.shells.ip_start[std::size_t(k)] + i)]);
+      lo = std::min(lo, s.shells.eps_p[shell_point_at(s.shells, k, i)]);
     return lo;
   };
   while (st == StepStatus::ok) {

@@ -132,7 +132,7 @@ Outcome run_strips(const Read& r, double t_expect) {
     // the strains of the last element pass: what this step's release check reads (the element
     // pass ends a step, after the positions move)
     const double ep = spot_weld_node_plastic_strain(s, weld_node);
-    const double shell_ep = s.shells.eps_p.empty() ? 0.0 : 0.5 * (s.shells.eps_p[0] + s.shells.eps_p[1]);
+    const double shell_ep = s.shells.eps_p.empty() ? 0.0 : 0.5 * (s.shells.eps_p[shell_point_at(s.shells, 0, 0)] + s.shells.eps_p[shell_point_at(s.shells, 0, 1)]);
     const double t0 = s.time;
     st = e.step();
     if (!s.newly_released.empty()) {
