@@ -447,9 +447,10 @@ class KeywordWriter {
   void tied_contacts() {
     for (const TiedContact& tc : m_.tied_contacts) {
       const int a = node_set(tc.slave_nodes), b = segment_set(tc.master);
-      const std::string kw = tc.torsion    ? "*CONTACT_SPOTWELD_WITH_TORSION"
-                             : tc.spotweld ? "*CONTACT_SPOTWELD"
-                                           : "*CONTACT_TIED_NODES_TO_SURFACE";
+      const std::string kw = !tc.keyword.empty() ? "*" + tc.keyword
+                             : tc.torsion        ? "*CONTACT_SPOTWELD_WITH_TORSION"
+                             : tc.spotweld       ? "*CONTACT_SPOTWELD"
+                                                 : "*CONTACT_TIED_NODES_TO_SURFACE";
       os_ << (tc.id ? kw + "_ID\n" + kcard({I(tc.id)}) + "\n" : kw + "\n");
       os_ << "$#   surfa     surfb  surfatyp  surfbtyp\n" << kcard({I(a), I(b), I(4), I(0)}) << "\n";
       os_ << "$#      fs        fd        dc\n" << kcard({R(0), R(0), R(0)}) << "\n";
@@ -898,7 +899,7 @@ class FixedWriter {
     if (m_.damping.active && !damping_card_)
       note("global mass damping with a curve or per-axis factors (*DAMPING_GLOBAL) has no fixed-format card: not written");
     if (!m_.tied_contacts.empty())
-      note("tied contacts (*CONTACT_SPOTWELD, *CONTACT_TIED_NODES_TO_SURFACE) have no fixed-format card: not written");
+      note("tied contacts (*CONTACT_SPOTWELD, *CONTACT_TIED_...) have no fixed-format card: not written");
     if (!m_.force_transducers.empty()) note("force transducers (*CONTACT_FORCE_TRANSDUCER_PENALTY) have no fixed-format card: not written");
     if (m_.control.intfor_interval >= 0)
       note("the interface-force database (*DATABASE_BINARY_INTFOR, SAPR/SBPR) has no fixed-format card: not written");

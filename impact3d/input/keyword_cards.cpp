@@ -1054,9 +1054,11 @@ std::vector<KeywordSpec> contact_specs() {
           {{"CONTACT_ERODING_SURFACE_TO_SURFACE", "CONTACT_ERODING_NODES_TO_SURFACE", "CONTACT_ERODING_SINGLE_SURFACE"},
            F, false, contact_cards(true),
            "one contact a keyword, as the others with the _ERODING_ card after card 3"},
-          {{"CONTACT_SPOTWELD", "CONTACT_SPOTWELD_WITH_TORSION", "CONTACT_TIED_NODES_TO_SURFACE"}, F, false, tied_contact_cards(),
+          {{"CONTACT_SPOTWELD", "CONTACT_SPOTWELD_WITH_TORSION", "CONTACT_TIED_NODES_TO_SURFACE", "CONTACT_TIED_SURFACE_TO_SURFACE",
+            "CONTACT_TIED_SHELL_EDGE_TO_SURFACE"}, F, false, tied_contact_cards(),
            "constraint-based ties: each slave node (SURFA: node set, or the nodes of a segment set or parts, beams' too) "
-           "projected onto a master segment (SURFB) when read and moved with it; a spot weld's rotation about the segment's "
+           "projected onto a master segment (SURFB) when read and moved with it; the rotations tied too by the spot welds and "
+           "_SHELL_EDGE_TO_SURFACE (translations only: _NODES_, _SURFACE_TO_SURFACE); a spot weld's rotation about the segment's "
            "normal free (_SPOTWELD) or tied to the segment's in-plane spin (_WITH_TORSION) (docs/contact.md \"Tied contacts\")"}};
 }
 

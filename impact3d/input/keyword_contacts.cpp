@@ -13,7 +13,7 @@ struct ContactKind {
   bool transducer = false;  // *CONTACT_FORCE_TRANSDUCER_PENALTY
   bool single = false;      // one surface against itself
   bool eroding = false;     // the _ERODING_ card follows card 3
-  int tied = 0;             // 1 *CONTACT_TIED_NODES_TO_SURFACE, 2 *CONTACT_SPOTWELD, 3 _SPOTWELD_WITH_TORSION
+  int tied = 0;             // 1 *CONTACT_TIED_{NODES,SURFACE,SHELL_EDGE}_TO_SURFACE, 2 *CONTACT_SPOTWELD, 3 _SPOTWELD_WITH_TORSION
 };
 
 // LS-DYNA's older and forming names read as the contact LS-DYNA treats them as
@@ -26,7 +26,9 @@ ContactKind contact_kind(const std::string& n) {
   k.eroding = n.rfind("CONTACT_ERODING_", 0) == 0;
   k.single = n == "CONTACT_AUTOMATIC_SINGLE_SURFACE" || n == "CONTACT_ERODING_SINGLE_SURFACE" || n == "CONTACT_SINGLE_SURFACE";
   k.transducer = n == "CONTACT_FORCE_TRANSDUCER_PENALTY";
-  k.tied = n == "CONTACT_SPOTWELD_WITH_TORSION" ? 3 : n == "CONTACT_SPOTWELD" ? 2 : n == "CONTACT_TIED_NODES_TO_SURFACE" ? 1 : 0;
+  k.tied = n == "CONTACT_SPOTWELD_WITH_TORSION" ? 3 : n == "CONTACT_SPOTWELD" ? 2 : 0;
+  for (const char* f : {"CONTACT_TIED_NODES_TO_SURFACE", "CONTACT_TIED_SURFACE_TO_SURFACE", "CONTACT_TIED_SHELL_EDGE_TO_SURFACE"})
+    if (n == f) k.tied = 1;
   k.symmetric = n == "CONTACT_SURFACE_TO_SURFACE" || n == "CONTACT_AUTOMATIC_SURFACE_TO_SURFACE" ||
                 n == "CONTACT_ERODING_SURFACE_TO_SURFACE";
   return k;

@@ -296,13 +296,16 @@ void keep_segments_in_box(ResolveContext& rc, const RSide& side, bool slave, con
   files.resize(kept);
 }
 
-// A tied contact (*CONTACT_SPOTWELD, *CONTACT_TIED_NODES_TO_SURFACE): its slave nodes (a node
+// A tied contact (*CONTACT_SPOTWELD..., *CONTACT_TIED_..._TO_SURFACE): its slave nodes (a node
 // set's nodes; a segment set's or parts' segment and beam nodes) and master segments, then
 // the ties (contact/tied_nodes.h); slave nodes out of every segment's reach warning 2015.
 void resolve_tied_contact(ResolveContext& rc, const RContact& c) {
   TiedContact tc;
   tc.spotweld = c.tied >= 2;
   tc.torsion = c.tied == 3;
+  tc.keyword = c.name;
+  // translations only for TIED_NODES/SURFACE_TO_SURFACE; rotations too for spot welds and shell edges
+  tc.rotations = tc.spotweld || c.name == "CONTACT_TIED_SHELL_EDGE_TO_SURFACE";
   tc.id = c.cid;
   tc.line = c.ref.line ? c.ref.line->number : 0;
   tc.tolerance = c.sast < 0 ? -c.sast : 0.0;

@@ -329,7 +329,8 @@ void check_node_ties(const Model& m, const Location& file_loc, Diagnostics& diag
     const TiedContact& tc = m.tied_contacts[std::size_t(t.contact)];
     Location loc = file_loc;
     loc.line = tc.line;
-    loc.card = std::string(tc.spotweld ? "*CONTACT_SPOTWELD" : "*CONTACT_TIED_NODES_TO_SURFACE") + (tc.id ? " " + std::to_string(tc.id) : "");
+    loc.card = (tc.keyword.empty() ? std::string(tc.spotweld ? "*CONTACT_SPOTWELD" : "*CONTACT_TIED_NODES_TO_SURFACE") : "*" + tc.keyword) +
+               (tc.id ? " " + std::to_string(tc.id) : "");
     const std::size_t k = std::size_t(t.node);
     const std::string node = "slave node " + std::to_string(m.node_id(t.node));
     if (tie_of[k] >= 0)

@@ -253,13 +253,15 @@ struct SpotWeld {
   int file = -1;                     // Model::source_files index of that line (-1: the deck)
 };
 
-// *CONTACT_SPOTWELD and *CONTACT_TIED_NODES_TO_SURFACE (solve/node_ties.h): constraint-based
-// tied contacts.  Each slave node within reach of a master segment is projected onto it once
+// *CONTACT_SPOTWELD (_WITH_TORSION) and *CONTACT_TIED_{NODES,SURFACE,SHELL_EDGE}_TO_SURFACE
+// (solve/node_ties.h): constraint-based tied contacts.  Each slave node within reach of a master segment is projected onto it once
 // (when the deck is read: the node is moved onto the segment) and then moves with the segment:
 // a NodeTie per tied node.
 struct TiedContact {
   bool spotweld = false;                      // *CONTACT_SPOTWELD (else _TIED_NODES_TO_SURFACE)
   bool torsion = false;                       // *CONTACT_SPOTWELD_WITH_TORSION (spotweld too)
+  bool rotations = false;                     // rotations tied too (spot welds, _SHELL_EDGE_TO_SURFACE)
+  std::string keyword;                        // the keyword read, options stripped (the converter's; empty: by the flags)
   int id = 0;                                 // the _ID card's CID (0: none)
   std::vector<int> slave_nodes;               // 0-based, sorted, unique
   std::vector<std::array<int, 4>> master;     // master segments (0-based nodes)

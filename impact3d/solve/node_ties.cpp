@@ -104,7 +104,8 @@ void init_node_ties(const Model& m, State& s) {
   ts.masters.erase(std::unique(ts.masters.begin(), ts.masters.end()), ts.masters.end());
   for (const NodeTie& t : m.node_ties) {
     std::array<int, 4> idx{};
-    bool turns = rot_of(s, t.node) >= 0;
+    const TiedContact& tc = m.tied_contacts[std::size_t(t.contact)];
+    bool turns = tc.rotations && rot_of(s, t.node) >= 0;
     for (int a = 0; a < 4; ++a) {
       const int n = t.seg[std::size_t(a)];
       idx[std::size_t(a)] = int(std::lower_bound(ts.masters.begin(), ts.masters.end(), n) - ts.masters.begin());
@@ -114,7 +115,6 @@ void init_node_ties(const Model& m, State& s) {
     ts.tie_master.push_back(idx);
     ts.w.push_back(t.w);
     ts.turns.push_back(turns ? 1 : 0);
-    const TiedContact& tc = m.tied_contacts[std::size_t(t.contact)];
     ts.twist.push_back(!turns || !tc.spotweld ? 0 : tc.torsion ? 2 : 1);
   }
   ts.normal.assign(ts.slave.size(), {});

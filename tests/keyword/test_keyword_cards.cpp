@@ -344,7 +344,7 @@ TEST(KeywordCards, ContactCardsByTheirTables) {
   for (const char* n : {"CONTACT_SURFACE_TO_SURFACE", "CONTACT_AUTOMATIC_SINGLE_SURFACE", "CONTACT_ERODING_NODES_TO_SURFACE",
                         "CONTACT_FORCE_TRANSDUCER_PENALTY"})
     EXPECT_NE(find_keyword_spec(n), nullptr) << n;
-  EXPECT_EQ(find_keyword_spec("CONTACT_TIED_SURFACE_TO_SURFACE"), nullptr);
+  EXPECT_EQ(find_keyword_spec("CONTACT_TIED_SHELL_EDGE_TO_SURFACE_BEAM_OFFSET"), nullptr);
   const std::string head = "*CONTROL_TERMINATION\n   1.0E-05\n";
   const Read r = read(deck(head + "*CONTACT_SURFACE_TO_SURFACE\n" + card({"1", "1", "3", "4"}) + card({"-1.0", "x", "-2.0"}) +
                            card({"0.0", "2.0", "y"}) + "*CONTACT_ERODING_SINGLE_SURFACE\n" + card({"1", "", "3"}) + card({""}) +
