@@ -523,17 +523,13 @@ void calc_shell_hourglass_forces_block(const ShellGroupConstants& g, bool stiffn
       const double h = b.h[l];
       const double cm = qrc * h * std::sqrt(fr.area[l]) / 4.0;
       const double cb = cm * h * h / 12.0;
+      const double c[5] = {cm, cm, cm, cb, cb};
       double de_hg = 0;
-      Q[0][l] = cm * q[0][l];
-      de_hg += Q[0][l] * q[0][l] * dt;
-      Q[1][l] = cm * q[1][l];
-      de_hg += Q[1][l] * q[1][l] * dt;
-      Q[2][l] = cm * q[2][l];
-      de_hg += Q[2][l] * q[2][l] * dt;
-      Q[3][l] = cb * q[3][l];
-      de_hg += Q[3][l] * q[3][l] * dt;
-      Q[4][l] = cb * q[4][l];
-      de_hg += Q[4][l] * q[4][l] * dt;
+      for (int j = 0; j < 5; ++j) {
+        Q[j][l] = c[j] * q[j][l];
+        de_hg += 0.5 * (b.hgq[j][l] + Q[j][l]) * q[j][l] * dt;
+        b.hgq[j][l] = Q[j][l];
+      }
       b.de_hg[l] = de_hg;
     }
   }

@@ -322,7 +322,9 @@ double calc_shell_hourglass_forces(const ShellGroupConstants& g, const ShellFram
     const double c[5] = {cm, cm, cm, cb, cb};
     for (int j = 0; j < 5; ++j) {
       Q[j] = c[j] * q[j];
-      de_hg += Q[j] * q[j] * dt;
+      const double q0 = st.hgq ? st.hgq[j] : Q[j];
+      de_hg += 0.5 * (q0 + Q[j]) * q[j] * dt;
+      if (st.hgq) st.hgq[j] = Q[j];
     }
   }
   for (int i = 0; i < 4; ++i) {

@@ -170,8 +170,7 @@ void init_shells(const Model& m, State& s) {
     placed += count[k];
     plastic = plastic || shell_kernel_is_plastic(g.kernel);
     kinematic = kinematic || shell_kernel_has_back(g.kernel);
-    hg_state = hg_state || (g.kernel != ShellKernel::rigid && g.constants.hourglass_type >= 4 &&
-                            g.constants.hourglass_coef > 0);
+    hg_state = hg_state || (g.kernel != ShellKernel::rigid && g.constants.hourglass_coef > 0);
     sh.groups.push_back(g);
   }
   sh.order.assign(std::size_t(ns), 0);

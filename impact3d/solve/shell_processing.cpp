@@ -156,7 +156,7 @@ ShellBlockArrays shell_block_arrays(State& s, const ShellGroup& g, const ShellBl
   a.nip = g.constants.nip;
   a.plastic = shell_kernel_is_plastic(g.kernel);
   a.back_stress = mat.has_back;
-  a.hourglass_state = mat.has_hgq && g.constants.hourglass_type >= 4 && g.constants.hourglass_coef > 0;
+  a.hourglass_state = mat.has_hgq && g.constants.hourglass_coef > 0;
   a.drilling = g.constants.drill_coef > 0;
   a.fail_strain = s.mats[std::size_t(g.material)].fail_strain;
   a.shell_tdel = s.mats[std::size_t(g.material)].shell_tdel;
