@@ -122,6 +122,7 @@ const std::vector<MessageDef> kCatalog = {
     {5103, S::warning, "contact energy is negative beyond its limit (contact forces put energy in)"},
     {5104, S::warning, "added mass (mass scaling) beyond its limit"},
     {5105, S::warning, "nodes not caught by contact"},
+    {5106, S::warning, "energy ratio swings outside its band while the time-centred balance holds: energy in modes near the step's limit"},
     {5110, S::info, "run verdict"},
 };
 }  // namespace

@@ -83,6 +83,9 @@ struct ShellState {
   std::vector<std::uint8_t> rot_fix;          // bit 0 rx, 1 ry, 2 rz
   std::vector<int> rot_corner_start, rot_corner_list;  // CSR: rotational dof -> shell corners (4 k + j)
   double rot_kinetic = 0;                     // rotational kinetic energy (in State::kinetic)
+  // sum 1/2 I w^{n-1/2} . w^{n+1/2} over the last rotational update: the run checks' time-centred
+  // book (run_cycle.h); recomputed every cycle, not in restart dumps
+  double rot_kinetic_centred = 0;
 };
 
 // The layout of the points' state (sig, back, eps_p, yielded), the one table.  Shell k owns

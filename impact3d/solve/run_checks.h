@@ -5,6 +5,7 @@
 // (part) or the energy it is about; the run ends with a verdict (5110): clean, or suspect with
 // its reasons.  impact3d --strict turns a suspect verdict into exit code 7.
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -30,6 +31,10 @@ struct RunSnapshot {
   const Model& model;
   const State& state;
   long long contact_misses = 0;
+  // The time-centred energy ratio at t^n (run_cycle.h), which the central-difference update
+  // holds for linear forces; NaN where not known (before the first cycle, distributed runs):
+  // 5102 then judges the ratio as printed.
+  double centred_ratio = std::numeric_limits<double>::quiet_NaN();
 };
 
 class RunChecks {
@@ -46,6 +51,7 @@ class RunChecks {
  private:
   std::vector<std::string> check_hourglass_energy(const RunSnapshot& now);
   std::vector<std::string> check_energy_ratio(const RunSnapshot& now);
+  std::vector<std::string> energy_swing(const RunSnapshot& now);
   std::vector<std::string> check_contact_energy(const RunSnapshot& now);
   std::vector<std::string> check_added_mass(const RunSnapshot& now);
   std::vector<std::string> check_contact_misses(const RunSnapshot& now);

@@ -27,6 +27,14 @@ class RunCycle {
 
  private:
   void log_failures();
+  double time_centred_ratio() const;
+
+  // The books at t^n, taken before each step: the element energies (at x^n until the step's
+  // element pass), the contact and wall work and the external work booked so far.
+  struct BooksAtN {
+    double elements = 0, contact_walls = 0, external = 0;
+    bool known = false;
+  };
 
   Engine& engine_;
   const Model& model_;
@@ -37,6 +45,7 @@ class RunCycle {
   const int report_;              // cycles between cycle lines
   RunChecks checks_;
   long long refused_contacts_ = 0;  // node-cycles the penetration-growth rule did not catch
+  BooksAtN before_;
 };
 
 }  // namespace impact3d

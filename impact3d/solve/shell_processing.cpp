@@ -383,15 +383,18 @@ void update_rotational_velocities_for_nodes(State& s, double dt_n) {
   if (sh.nr == 0) return;
   const int* cs = sh.rot_corner_start.data();
   const int* cl = sh.rot_corner_list.data();
+  double ke_centred = 0;
   for (int r = 0; r < sh.nr; ++r) {
     const std::size_t R = std::size_t(r);
     const int node = sh.rot_node[R];
     const int rb = s.rigid_of_node[std::size_t(node)];
+    const double w0x = sh.wx[R], w0y = sh.wy[R], w0z = sh.wz[R];
     if (rb >= 0) {  // a node of a rigid body turns with it
       const auto& w = s.rigid[std::size_t(rb)].omega;
       sh.wx[R] = w[0];
       sh.wy[R] = w[1];
       sh.wz[R] = w[2];
+      ke_centred += 0.5 * sh.inertia[R] * (w0x * w[0] + w0y * w[1] + w0z * w[2]);
       continue;
     }
     double mx = 0, my = 0, mz = 0;
@@ -406,7 +409,9 @@ void update_rotational_velocities_for_nodes(State& s, double dt_n) {
     if (!(f & 1)) sh.wx[R] -= dt_n * mx * inv;
     if (!(f & 2)) sh.wy[R] -= dt_n * my * inv;
     if (!(f & 4)) sh.wz[R] -= dt_n * mz * inv;
+    ke_centred += 0.5 * sh.inertia[R] * (w0x * sh.wx[R] + w0y * sh.wy[R] + w0z * sh.wz[R]);
   }
+  sh.rot_kinetic_centred = ke_centred;
   sh.rot_kinetic = calc_rotational_kinetic_energy(s);
   s.kinetic += sh.rot_kinetic;
 }
