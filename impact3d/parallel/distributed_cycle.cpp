@@ -206,7 +206,6 @@ std::string distributed_refusal(const Model& m, int nranks) {
   if (failure) what.push_back("solid failure or erosion");
   if (shell_failure) what.push_back("shell failure (FS, FAIL, TDEL)");
   if (weld_beams) what.push_back("spot-weld beams (*MAT_SPOTWELD)");
-  if (m.has_loads() || !m.prescribed_motions.empty()) what.push_back("loads or prescribed motions");
   if (m.control.mass_scaling_dt != 0) what.push_back("mass scaling");
   const std::size_t fixed = fixed_walls_for_node_pass(m).size();
   if (!m.walls.empty() && (fixed != m.walls.size() || fixed > kMaxFusedWalls))
@@ -229,7 +228,10 @@ std::string distributed_refusal(const Model& m, int nranks) {
 
 DistributedCycle::DistributedCycle() : rank_(rank()), nranks_(size()) {}
 
-void DistributedCycle::setup(const State& s) {
+void DistributedCycle::setup(const State& s, const Model& m, const LoadSet& loads) {
+  model_ = &m;
+  loads_ = &loads;
+  load_terms_ = loads.has_loads || loads.has_motions;
   const std::size_t nb = s.slot_elem.size() / kLanes, nsc = std::size_t(num_shell_chunks(s.shells)),
                     nu = nb + nsc + std::size_t(num_beam_chunks(s.beams));
   // the partition: rank 0 computes it, every rank gets it (one partition, whatever METIS does)
@@ -247,7 +249,9 @@ void DistributedCycle::setup(const State& s) {
   broadcast(&ok, sizeof ok);
   if (!ok) throw std::runtime_error("the partition failed (METIS)");
   broadcast(block_rank.data(), nu * sizeof(int));
-  dom_ = build_domain(s, block_rank, nranks_, rank_);
+  std::vector<std::vector<int>> faces;  // a pressure face's corners: its force needs all four
+  for (const PressureLoad& l : m.pressure_loads) faces.emplace_back(l.nodes.begin(), l.nodes.end());
+  dom_ = build_domain(s, block_rank, nranks_, rank_, faces);
   if (leads()) report_ = partition_report(summarize_partition(s, g, block_rank, nranks_));
 
   rank_blocks_.assign(std::size_t(nranks_), {});
@@ -274,6 +278,14 @@ void DistributedCycle::setup(const State& s) {
   rank_nodes_.assign(std::size_t(nranks_), {});
   if (leads())
     for (std::size_t n = 0; n < std::size_t(s.nn); ++n) rank_nodes_[std::size_t(dom_.node_rank[n])].push_back(int(n));
+  // the load terms: each slot on the rank that owns its node (a rigid body's: rank 0)
+  const std::vector<int> slot_node = load_term_nodes(m);
+  rank_slots_.assign(std::size_t(nranks_), {});
+  for (std::size_t j = 0; j < slot_node.size(); ++j)
+    rank_slots_[slot_node[j] < 0 ? 0 : std::size_t(dom_.node_rank[std::size_t(slot_node[j])])].push_back(int(j));
+  terms_.assign(slot_node.size(), 0.0);
+  all_terms_.assign(leads() ? slot_node.size() : 0, 0.0);
+  records_.clear();
 
   // the neighbour exchanges' buffers: per peer its corners (3 values each), then its nodes (6)
   std::size_t ns = 0, nr = 0;
@@ -396,34 +408,78 @@ void DistributedCycle::send_ghost_kinematics(State& s) {
   }
 }
 
-void DistributedCycle::node_pass(State& s, const NodePass& p) {
-  if (!p.update_positions) throw std::logic_error("distributed node pass: positions must move in the pass");
-  const std::size_t stride = std::size_t(node_record_size(p));
-  if (records_.size() != stride * dom_.owned_nodes.size()) {  // the first cycle: sized once
-    records_.assign(stride * dom_.owned_nodes.size(), 0.0);
-    record_counts_.assign(std::size_t(nranks_), 0);
-    for (int q = 0; q < nranks_; ++q)
-      record_counts_[std::size_t(q)] = int(stride * (leads() ? rank_nodes_[std::size_t(q)].size() : 0) * sizeof(double));
-    record_displs_ = displacements(record_counts_);
-    if (leads()) {
-      gathered_records_.assign(stride * std::size_t(s.nn), 0.0);
-      all_records_.assign(stride * std::size_t(s.nn), 0.0);
-    }
+void DistributedCycle::size_node_records(const State& s, const NodePass& p) {
+  const std::size_t nodes = dom_.owned_nodes.size(), mine = rank_slots_[std::size_t(rank_)].size();
+  terms_offset_ = std::size_t(node_record_size(p));
+  stride_ = terms_offset_ + std::size_t(load_terms_ ? node_power_term_count(*model_) : 0);
+  const std::size_t slots = load_terms_ ? mine : 0;
+  if (records_.size() == stride_ * nodes + slots) return;  // sized once, at the first cycle
+  records_.assign(stride_ * nodes + slots, 0.0);
+  record_counts_.assign(std::size_t(nranks_), 0);
+  for (int q = 0; q < nranks_; ++q) {
+    const std::size_t qs = load_terms_ ? rank_slots_[std::size_t(q)].size() : 0;
+    record_counts_[std::size_t(q)] =
+        leads() ? int((stride_ * rank_nodes_[std::size_t(q)].size() + qs) * sizeof(double)) : 0;
   }
-  update_velocities_for_listed_nodes(s, p, dom_.owned_nodes, records_.data());
+  record_displs_ = displacements(record_counts_);
+  if (leads()) {
+    gathered_records_.assign(std::size_t(record_displs_.back() + record_counts_.back()) / sizeof(double), 0.0);
+    all_records_.assign(stride_ * std::size_t(s.nn), 0.0);
+  }
+}
+
+void DistributedCycle::node_pass(State& s, const NodePass& p) {
+  size_node_records(s, p);
+  update_velocities_for_listed_nodes(s, p, dom_.owned_nodes, records_.data(), stride_);
+  if (p.update_positions) share_node_books(s, p);
+}
+
+void DistributedCycle::apply_walls(State& s, const NodePass& p) {
+  apply_walls_to_listed_nodes(s, p, dom_.owned_nodes, records_.data(), stride_);
+}
+
+void DistributedCycle::finish_node_pass(State& s, const NodePass& p) {
+  if (p.update_positions) throw std::logic_error("distributed node pass: the nodes moved already");
+  update_positions_for_listed_nodes(s, p.dt_next, dom_.owned_nodes, records_.data(), stride_);
+  share_node_books(s, p);
+}
+
+// The books of this rank's nodes (kinetic energy, walls, the external work's node terms) and
+// its load terms to rank 0, which books them in the one-process order; then the ghosts.
+void DistributedCycle::share_node_books(State& s, const NodePass& p) {
+  const std::size_t nodes = dom_.owned_nodes.size();
+  const std::vector<int>& my_slots = rank_slots_[std::size_t(rank_)];
+  if (load_terms_) {
+    if (stride_ > terms_offset_)
+      for (std::size_t a = 0; a < nodes; ++a)
+        compute_node_power_terms(*model_, s, *loads_, std::size_t(dom_.owned_nodes[a]),
+                                 &records_[stride_ * a + terms_offset_]);
+    compute_load_terms(*model_, s, *loads_, p.dt_n, &dom_.owns_node, terms_.data());
+    double* out = records_.data() + stride_ * nodes;
+    for (int j : my_slots) *out++ = terms_[std::size_t(j)];
+  }
   const Timer t(comm_s_);
   gather(records_.data(), int(records_.size() * sizeof(double)), gathered_records_.data(), record_counts_.data(),
          record_displs_.data());
-  if (leads()) {  // into node order, then the one-process sums
+  if (leads()) {  // into node and slot order, then the one-process sums
     const double* in = gathered_records_.data();
-    for (const std::vector<int>& nodes : rank_nodes_)
-      for (int n : nodes) {
-        std::memcpy(&all_records_[stride * std::size_t(n)], in, stride * sizeof(double));
-        in += stride;
+    for (int q = 0; q < nranks_; ++q) {
+      for (int n : rank_nodes_[std::size_t(q)]) {
+        std::memcpy(&all_records_[stride_ * std::size_t(n)], in, stride_ * sizeof(double));
+        in += stride_;
       }
-    book_node_records(s, p, all_records_.data());
+      if (load_terms_)
+        for (int j : rank_slots_[std::size_t(q)]) all_terms_[std::size_t(j)] = *in++;
+    }
+    book_node_records(s, p, all_records_.data(), stride_);
   }
   send_ghost_kinematics(s);
+}
+
+void DistributedCycle::book_external_work(State& s, double dt_n) {
+  if (!leads()) return;
+  book_external_work_from_terms(*model_, s, *loads_, dt_n, all_terms_.data(), all_records_.data() + terms_offset_,
+                                stride_);
 }
 
 void DistributedCycle::gather_state(State& s) {

@@ -16,7 +16,13 @@
 //    velocities of this rank's nodes to the ranks that have them as ghosts;
 //  - the rotational update (shells' rotational degrees of freedom): every rank makes it for
 //    all of them from the shells' moments that every rank has, so the angular velocities are
-//    the same bits everywhere without an exchange.
+//    the same bits everywhere without an exchange;
+//  - loads and prescribed motions: every rank adds every load's forces (their values at the
+//    rank's own nodes are those of one process: a pressure face's corners are ghosts of the
+//    owners of its other corners), the owner of a node sets its prescribed motions between the
+//    velocity and the position update (a node pass in two parts), and the external work's
+//    terms (solve/loads.h) go to rank 0 with the node books, which sums them in the
+//    one-process order.
 // Rank 0 leads: it runs the run driver (outputs, schedule, run checks, messages) and tells the
 // other ranks what to do next (initialize, step, gather for output, finish); before an output
 // it gathers every rank's nodes, solids and corner forces, so that it writes the same files
@@ -30,6 +36,7 @@
 #include "impact3d/parallel/comm.h"
 #include "impact3d/parallel/partition.h"
 #include "impact3d/solve/element_processing.h"
+#include "impact3d/solve/loads.h"
 #include "impact3d/solve/node_processing.h"
 
 namespace impact3d {
@@ -47,15 +54,27 @@ class DistributedCycle {
   DistributedCycle();
   bool leads() const { return rank_ == 0; }
 
-  // After initialize_state: the partition (rank 0, sent to all), this rank's domain, buffers.
-  void setup(const State& s);
+  // After initialize_state and prepare_loads: the partition (rank 0, sent to all), this rank's
+  // domain, buffers; the model and its loads are kept (the external work's terms).
+  void setup(const State& s, const Model& m, const LoadSet& loads);
   const Domain& domain() const { return dom_; }
   // d3hsp's lines on the partition (rank 0).
   const std::string& report() const { return report_; }
 
   ElementPassHooks element_hooks();
-  // The node pass on this rank's nodes, the books to rank 0, the ghosts' kinematics.
+  // The node pass on this rank's nodes, the books to rank 0, the ghosts' kinematics.  A pass
+  // without p.update_positions stops after the velocities; finish_node_pass then moves this
+  // rank's nodes (after the prescribed motions) and sends the books and the ghosts.
   void node_pass(State& s, const NodePass& p);
+  void finish_node_pass(State& s, const NodePass& p);
+  // Between the two parts: the fixed walls p.walls on this rank's nodes, booked by rank 0 with
+  // the node books.
+  void apply_walls(State& s, const NodePass& p);
+  // Per node: 1 for this rank's own nodes (prescribed motions act there).
+  const std::vector<std::uint8_t>& owned_node_mask() const { return dom_.owns_node; }
+  // Rank 0: the cycle's external work from the terms that came with the node books (the
+  // other ranks: nothing).
+  void book_external_work(State& s, double dt_n);
   // Rank 0 receives every rank's nodes, solids and corner forces (collective).
   void gather_state(State& s);
 
@@ -76,6 +95,8 @@ class DistributedCycle {
   void share_shell_results(State& s);
   void send_corner_forces(State& s);
   void send_ghost_kinematics(State& s);
+  void size_node_records(const State& s, const NodePass& p);
+  void share_node_books(State& s, const NodePass& p);
   void unpack_rank_state(State& s, int q, const double* from);
 
   int rank_ = 0, nranks_ = 1;
@@ -92,8 +113,16 @@ class DistributedCycle {
   std::vector<int> shell_bytes_, shell_displs_;
   std::vector<double> send_buf_, recv_buf_;    // neighbour exchanges: per peer, one after another
   std::vector<Exchange> corner_ex_, node_ex_;
+  // the node books: per own node a record of stride_ doubles (node_processing.h's, then the
+  // external work's node terms from terms_offset_), then this rank's load terms
   std::vector<double> records_, all_records_, gathered_records_;
   std::vector<int> record_counts_, record_displs_;
+  std::size_t stride_ = 0, terms_offset_ = 0;
+  const Model* model_ = nullptr;
+  const LoadSet* loads_ = nullptr;
+  bool load_terms_ = false;                   // loads or prescribed motions: terms go to rank 0
+  std::vector<std::vector<int>> rank_slots_;  // every rank's load-term slots (loads.h), increasing
+  std::vector<double> terms_, all_terms_;     // this rank's terms; every slot's (rank 0)
   std::vector<double> state_buf_, state_all_;
   std::vector<int> state_bytes_, state_displs_;
   double comm_s_ = 0, gather_s_ = 0;

@@ -186,7 +186,8 @@ std::vector<int> partition_blocks(const BlockGraph& g, int nparts) {
 #endif
 }
 
-Domain build_domain(const State& s, const std::vector<int>& block_rank, int nranks, int rank) {
+Domain build_domain(const State& s, const std::vector<int>& block_rank, int nranks, int rank,
+                    const std::vector<std::vector<int>>& together) {
   const std::size_t nb = num_blocks(s), nsc = num_shell_units(s), nu = num_units(s);
   if (block_rank.size() != nu) throw std::logic_error("build_domain: one rank per block and chunk expected");
   Domain d;
@@ -219,15 +220,29 @@ Domain build_domain(const State& s, const std::vector<int>& block_rank, int nran
     }
   const CornerUnits cu(s);
   d.node_rank.assign(std::size_t(s.nn), 0);
-  std::vector<Peer> by_rank(static_cast<std::size_t>(nranks));
+  d.owns_node.assign(std::size_t(s.nn), 0);
   std::vector<int> ranks_here;
+  for (std::size_t n = 0; n < std::size_t(s.nn); ++n) {  // the owners: the lowest rank of the elements around
+    node_ranks(s, cu, block_rank, n, ranks_here);
+    d.node_rank[n] = ranks_here.empty() ? 0 : ranks_here.front();
+  }
+  std::vector<std::vector<int>> also(together.empty() ? 0 : std::size_t(s.nn));  // ranks that need a node
+  for (const std::vector<int>& g : together)
+    for (int n : g)
+      for (int n2 : g) also[std::size_t(n2)].push_back(d.node_rank[std::size_t(n)]);
+  std::vector<Peer> by_rank(static_cast<std::size_t>(nranks));
   for (std::size_t n = 0; n < std::size_t(s.nn); ++n) {
     node_ranks(s, cu, block_rank, n, ranks_here);
-    const int owner = ranks_here.empty() ? 0 : ranks_here.front();
-    d.node_rank[n] = owner;
+    const int owner = d.node_rank[n];
+    if (!also.empty() && !also[n].empty()) {
+      ranks_here.insert(ranks_here.end(), also[n].begin(), also[n].end());
+      std::sort(ranks_here.begin(), ranks_here.end());
+      ranks_here.erase(std::unique(ranks_here.begin(), ranks_here.end()), ranks_here.end());
+    }
     const bool touched_here = std::binary_search(ranks_here.begin(), ranks_here.end(), rank);
     if (owner == rank) {
       d.owned_nodes.push_back(int(n));
+      d.owns_node[n] = 1;
       for (int q : ranks_here)
         if (q != rank) by_rank[std::size_t(q)].send_nodes.push_back(int(n));
       for_solid_corners(s, n, [&](std::size_t c) {

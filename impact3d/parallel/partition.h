@@ -66,14 +66,18 @@ struct Domain {
   std::vector<std::uint8_t> owns_chunk;  // per shell chunk: this rank computes it
   std::vector<std::uint8_t> owns_beam_chunk;  // per beam chunk: this rank computes it
   std::vector<int> owned_blocks, owned_elems, owned_nodes, ghost_nodes;  // increasing
+  std::vector<std::uint8_t> owns_node;  // per node: 1 for this rank's own nodes
   std::vector<int> owned_chunks;      // increasing
   std::vector<int> owned_shells;      // the owned chunks' shells, chunk after chunk
   std::vector<int> owned_beams;       // the owned beam chunks' beams, chunk after chunk
   std::vector<Peer> peers;            // the neighbour ranks, increasing
 };
 
-// Rank `rank`'s domain for the given unit ranks.
-Domain build_domain(const State& s, const std::vector<int>& block_rank, int nranks, int rank);
+// Rank `rank`'s domain for the given unit ranks.  `together`: groups of nodes (a pressure
+// face's corners) whose owners each need all of the group's nodes: a rank that owns one of them
+// has the group's other nodes as ghosts (the owners stay those of the elements' rule).
+Domain build_domain(const State& s, const std::vector<int>& block_rank, int nranks, int rank,
+                    const std::vector<std::vector<int>>& together = {});
 
 // What d3hsp states about a partition: per rank its solids, shells, beams, units ("blocks"), nodes
 // owned and shared nodes (nodes of its elements that elements of another rank also use), and

@@ -96,9 +96,9 @@ StepStatus Engine::process_elements() {
 StepStatus Engine::initialize() {
   if (dist_ && dist_->leads()) dist_->announce(parallel::DistributedCycle::Op::initialize);
   initialize_state(m_, s_);
-  if (dist_) dist_->setup(s_);
   contact_.initialize(m_, s_);
   prepare_loads(m_, s_, loads_);
+  if (dist_) dist_->setup(s_, m_, loads_);
   fixed_walls_ = fixed_walls_for_node_pass(m_);
   if (fixed_walls_.size() > kMaxFusedWalls) fixed_walls_.clear();
   s_.dt_half = 0;
@@ -177,16 +177,20 @@ StepStatus Engine::step() {
     if (!s.rigid.empty()) update_rigid_body_velocities(s, dt_n, dt_next);
     if (!m_.spot_welds.empty()) check_spot_weld_failure(m_, s, dt_n);
     if (!s.ties.empty()) tie_translations(s, dt_n);
-    if (!m_.walls.empty()) apply_stonewalls_to_nodes(m_, s, dt_next, dt_n);
+    if (!m_.walls.empty()) {
+      if (dist_) dist_->apply_walls(s, np);  // fixed walls on this rank's nodes (distributed_cycle.h)
+      else apply_stonewalls_to_nodes(m_, s, dt_next, dt_n);
+    }
     times_.walls += seconds_since(t);
     t = Clock::now();
     if (loads_.has_motions) {
-      apply_prescribed_motions(m_, s, loads_, s.time, dt_n, dt_next);
+      apply_prescribed_motions(m_, s, loads_, s.time, dt_n, dt_next, dist_ ? &dist_->owned_node_mask() : nullptr);
       if (!s.ties.empty()) tie_slave_velocities(s);  // (masters moved by a prescribed motion)
       times_.loads += seconds_since(t);
       t = Clock::now();
     }
-    update_positions_for_nodes(s, dt_next);
+    if (dist_) dist_->finish_node_pass(s, np);  // this rank's nodes move (distributed_cycle.h)
+    else update_positions_for_nodes(s, dt_next);
   }
   times_.nodes += seconds_since(t);
   if (!contact_.empty()) {  // the contact forces' work, on the velocities the cycle reached
@@ -196,7 +200,8 @@ StepStatus Engine::step() {
   }
   if (loads_.has_loads || loads_.has_motions) {
     t = Clock::now();
-    book_external_work(m_, s, loads_, dt_n);
+    if (dist_) dist_->book_external_work(s, dt_n);  // rank 0, from the terms its ranks sent
+    else book_external_work(m_, s, loads_, dt_n);
     times_.loads += seconds_since(t);
   }
   t = Clock::now();

@@ -88,21 +88,6 @@ void apply_global_damping_to_nodes(const Model& m, State& s, LoadSet& loads, dou
   }
 }
 
-// the damping forces' work this cycle: f . (v^{n-1/2} + v^{n+1/2}) / 2 summed over the nodes
-double power_of_global_damping(const Model& m, const State& s, const LoadSet& loads) {
-  const GlobalDamping& g = m.damping;
-  const double d = loads.damping_d;
-  double px = 0, py = 0, pz = 0;
-  for (int i = 0; i < s.nn; ++i) {
-    const std::size_t k = std::size_t(i);
-    const double mk = s.mass[k];
-    px += mk * s.vx_old[k] * (s.vx_old[k] + s.vx[k]);
-    py += mk * s.vy_old[k] * (s.vy_old[k] + s.vy[k]);
-    pz += mk * s.vz_old[k] * (s.vz_old[k] + s.vz[k]);
-  }
-  return -0.5 * d * (g.factor[0] * px + g.factor[1] * py + g.factor[2] * pz);
-}
-
 }  // namespace
 
 void prepare_loads(const Model& m, State& s, LoadSet& loads) {
@@ -131,6 +116,7 @@ void prepare_loads(const Model& m, State& s, LoadSet& loads) {
   loads.rot_old.assign(3 * m.prescribed_motions.size(), 0.0);
   loads.has_rotations = false;
   for (const PrescribedMotion& pm : m.prescribed_motions) loads.has_rotations = loads.has_rotations || pm.rotation;
+  loads.terms.assign(load_term_nodes(m).size(), 0.0);
   loads.has_loads = m.has_loads();
   loads.has_motions = !m.prescribed_motions.empty();
   s.motion_angle.assign(m.prescribed_motions.size(), 0.0);  // (a restart dump restores them)
@@ -348,13 +334,14 @@ void prescribe_rigid_rotation(const Model& m, State& s, LoadSet& loads, std::siz
 }  // namespace
 
 void apply_prescribed_motions(const Model& m, State& s, LoadSet& loads, double t, double dt_n,
-                              double dt_next) {
+                              double dt_next, const std::vector<std::uint8_t>* owned) {
   for (std::size_t j = 0; j < m.prescribed_motions.size(); ++j) {
     const PrescribedMotion& pm = m.prescribed_motions[j];
     loads.active[j] = 0;
     const bool node_rotation = pm.rotation && pm.node >= 0;  // (apply_prescribed_rotations)
     if (node_rotation || !motion_is_active(pm, t)) continue;
     if (pm.node >= 0) {
+      if (owned && !(*owned)[std::size_t(pm.node)]) continue;  // another rank's node
       if (pm.orbit) prescribe_node_orbit(m, s, loads, j, t, dt_n, dt_next);
       else prescribe_node(m, s, loads, j, t, dt_n, dt_next);
       continue;
@@ -434,54 +421,91 @@ void apply_prescribed_rotations(const Model& m, State& s, LoadSet& loads, double
 
 namespace {
 
-// The power of the reactions that hold the prescribed motions this cycle: m (v_prescribed -
-// v_free) / dt_n along dir on the mean velocity (a held normal plane: m delta / dt_n on it); a
-// rigid rotation's reaction moment I delta / dt_n on the mean angular velocity.
-double power_of_motion_reactions(const Model& m, const State& s, const LoadSet& loads, double dt_n) {
-  double w = 0;
-  for (std::size_t j = 0; j < m.prescribed_motions.size(); ++j) {
-    if (!loads.active[j]) continue;
-    const PrescribedMotion& pm = m.prescribed_motions[j];
-    const auto& d = pm.dir;
-    const double* delta = &loads.delta[3 * j];
-    if (pm.node >= 0) {
-      const std::size_t k = std::size_t(pm.node);
-      const double v_new = s.vx[k] * d[0] + s.vy[k] * d[1] + s.vz[k] * d[2];
-      const double v_old = s.vx_old[k] * d[0] + s.vy_old[k] * d[1] + s.vz_old[k] * d[2];
-      w += s.mass[k] * (v_new - loads.free_velocity[j]) / dt_n * 0.5 * (v_old + v_new);
-      if (pm.hold_normal || pm.orbit)
-        w += s.mass[k] / dt_n * 0.5 * (delta[0] * (s.vx_old[k] + s.vx[k]) + delta[1] * (s.vy_old[k] + s.vy[k]) + delta[2] * (s.vz_old[k] + s.vz[k]));
-      continue;
-    }
-    const int r = loads.motion_body[j];
-    if (r < 0) continue;
-    const RigidBody& rb = s.rigid[std::size_t(r)];
-    if (pm.rotation) {
-      const std::array<double, 3> L = rigid_body_inertia_times(rb, {delta[0], delta[1], delta[2]});
-      const auto& wo = rb.omega_old;
-      for (std::size_t a = 0; a < 3; ++a) w += L[a] / dt_n * 0.5 * (wo[a] + rb.omega[a]);
-      continue;
-    }
-    const std::array<double, 3> vc_old = rigid_body_old_velocity(s, rb);
-    const double v_new = rb.vcom[0] * d[0] + rb.vcom[1] * d[1] + rb.vcom[2] * d[2];
-    const double v_old = vc_old[0] * d[0] + vc_old[1] * d[1] + vc_old[2] * d[2];
-    w += rb.mass * (v_new - loads.free_velocity[j]) / dt_n * 0.5 * (v_old + v_new);
-    if (pm.hold_normal)
-      for (std::size_t a = 0; a < 3; ++a) w += rb.mass * delta[a] / dt_n * 0.5 * (vc_old[a] + rb.vcom[a]);
-  }
-  return w;
+// The terms of node motion j's reaction power (load_term_nodes: 3 slots): whether it acted, m
+// (v_prescribed - v_free) / dt_n along dir on the mean velocity, and its held plane's or
+// orbit's change m delta / dt_n on the mean velocity.
+void motion_reaction_terms(const Model& m, const State& s, const LoadSet& loads, std::size_t j, double dt_n,
+                           double* out) {
+  const PrescribedMotion& pm = m.prescribed_motions[j];
+  out[0] = out[1] = out[2] = 0;
+  if (!loads.active[j] || pm.node < 0) return;
+  const auto& d = pm.dir;
+  const double* delta = &loads.delta[3 * j];
+  const std::size_t k = std::size_t(pm.node);
+  const double v_new = s.vx[k] * d[0] + s.vy[k] * d[1] + s.vz[k] * d[2];
+  const double v_old = s.vx_old[k] * d[0] + s.vy_old[k] * d[1] + s.vz_old[k] * d[2];
+  out[0] = 1;
+  out[1] = s.mass[k] * (v_new - loads.free_velocity[j]) / dt_n * 0.5 * (v_old + v_new);
+  if (pm.hold_normal || pm.orbit)
+    out[2] = s.mass[k] / dt_n * 0.5 * (delta[0] * (s.vx_old[k] + s.vx[k]) + delta[1] * (s.vy_old[k] + s.vy[k]) + delta[2] * (s.vz_old[k] + s.vz[k]));
 }
 
-}  // namespace
+// Adds to w the power of a rigid body's prescribed motion j's reaction: a rotation's reaction
+// moment I delta / dt_n on the mean angular velocity; a translation's m (v_prescribed - v_free) /
+// dt_n along dir on the mean velocity (a held normal plane: m delta / dt_n on it).
+void add_rigid_motion_reaction_power(const Model& m, const State& s, const LoadSet& loads, std::size_t j,
+                                     double dt_n, double& w) {
+  const PrescribedMotion& pm = m.prescribed_motions[j];
+  const int r = loads.motion_body[j];
+  if (r < 0) return;
+  const auto& d = pm.dir;
+  const double* delta = &loads.delta[3 * j];
+  const RigidBody& rb = s.rigid[std::size_t(r)];
+  if (pm.rotation) {
+    const std::array<double, 3> L = rigid_body_inertia_times(rb, {delta[0], delta[1], delta[2]});
+    const auto& wo = rb.omega_old;
+    for (std::size_t a = 0; a < 3; ++a) w += L[a] / dt_n * 0.5 * (wo[a] + rb.omega[a]);
+    return;
+  }
+  const std::array<double, 3> vc_old = rigid_body_old_velocity(s, rb);
+  const double v_new = rb.vcom[0] * d[0] + rb.vcom[1] * d[1] + rb.vcom[2] * d[2];
+  const double v_old = vc_old[0] * d[0] + vc_old[1] * d[1] + vc_old[2] * d[2];
+  w += rb.mass * (v_new - loads.free_velocity[j]) / dt_n * 0.5 * (v_old + v_new);
+  if (pm.hold_normal)
+    for (std::size_t a = 0; a < 3; ++a) w += rb.mass * delta[a] / dt_n * 0.5 * (vc_old[a] + rb.vcom[a]);
+}
 
-void book_external_work(const Model& m, State& s, LoadSet& loads, double dt_n) {
+// A node's body-load terms m (v_old + v) and damping terms m v_old (v_old + v), x y z each.
+void body_load_terms(const State& s, std::size_t k, double* out) {
+  out[0] = s.mass[k] * (s.vx_old[k] + s.vx[k]);
+  out[1] = s.mass[k] * (s.vy_old[k] + s.vy[k]);
+  out[2] = s.mass[k] * (s.vz_old[k] + s.vz[k]);
+}
+void damping_terms(const State& s, std::size_t k, double* out) {
+  const double mk = s.mass[k];
+  out[0] = mk * s.vx_old[k] * (s.vx_old[k] + s.vx[k]);
+  out[1] = mk * s.vy_old[k] * (s.vy_old[k] + s.vy[k]);
+  out[2] = mk * s.vz_old[k] * (s.vz_old[k] + s.vz[k]);
+}
+
+// The node terms: from records (node_stride apart, the body's at offset 0, the damping's after
+// them) or, without records, from the State.
+struct NodeTerms {
+  const double* records = nullptr;
+  std::size_t stride = 0, damping_offset = 0;
+  const double* body(const State& s, std::size_t k, double* buf) const {
+    if (records) return records + stride * k;
+    body_load_terms(s, k, buf);
+    return buf;
+  }
+  const double* damping(const State& s, std::size_t k, double* buf) const {
+    if (records) return records + stride * k + damping_offset;
+    damping_terms(s, k, buf);
+    return buf;
+  }
+};
+
+// The power of the loads and of the motions' reactions this cycle: the terms summed in one
+// fixed order (nodal loads, pressures, rigid body loads, body loads, motions, damping).
+double external_power(const Model& m, const State& s, const LoadSet& loads, double dt_n, const double* terms,
+                      const NodeTerms& nt) {
   double w = 0;
-  for (std::size_t j = 0; j < m.nodal_loads.size(); ++j)
-    w += power_on_node(s, m.nodal_loads[j].node, &loads.nodal_force[3 * j]);
-  for (std::size_t j = 0; j < m.pressure_loads.size(); ++j) {
-    const PressureLoad& l = m.pressure_loads[j];
+  const double* t = terms;
+  for (std::size_t j = 0; j < m.nodal_loads.size(); ++j) w += *t++;
+  for (const PressureLoad& l : m.pressure_loads) {
     const int corners = l.nodes[2] == l.nodes[3] ? 3 : 4;
-    for (int c = 0; c < corners; ++c) w += power_on_node(s, l.nodes[std::size_t(c)], &loads.pressure_force[12 * j + 3 * std::size_t(c)]);
+    for (int c = 0; c < corners; ++c) w += t[c];
+    t += 4;
   }
   for (std::size_t j = 0; j < m.rigid_body_loads.size(); ++j) {
     const int r = loads.rigid_body[j];
@@ -491,22 +515,98 @@ void book_external_work(const Model& m, State& s, LoadSet& loads, double dt_n) {
     const double* F = &loads.rigid_force[3 * j];
     for (int a = 0; a < 3; ++a) w += F[a] * 0.5 * (vo[std::size_t(a)] + rb.vcom[std::size_t(a)]);
   }
+  double buf[3];
   if (!m.body_loads.empty()) {
     // body forces on free components only: a held component does no work (its velocity stays)
     double px = 0, py = 0, pz = 0;
     for (int i = 0; i < s.nn; ++i) {
       const std::size_t k = std::size_t(i);
       if (!loads.body_node[k]) continue;
-      px += s.mass[k] * (s.vx_old[k] + s.vx[k]);
-      py += s.mass[k] * (s.vy_old[k] + s.vy[k]);
-      pz += s.mass[k] * (s.vz_old[k] + s.vz[k]);
+      const double* p = nt.body(s, k, buf);
+      px += p[0];
+      py += p[1];
+      pz += p[2];
     }
     w += 0.5 * (loads.body_acc[0] * px + loads.body_acc[1] * py + loads.body_acc[2] * pz);
   }
-  w += power_of_motion_reactions(m, s, loads, dt_n);
-  if (m.damping.active) w += power_of_global_damping(m, s, loads);
+  double wm = 0;  // the motions' reactions, summed apart
+  for (std::size_t j = 0; j < m.prescribed_motions.size(); ++j, t += 3) {
+    const PrescribedMotion& pm = m.prescribed_motions[j];
+    if (pm.node < 0) {
+      if (loads.active[j]) add_rigid_motion_reaction_power(m, s, loads, j, dt_n, wm);
+      continue;
+    }
+    if (t[0] == 0) continue;  // it did not act
+    wm += t[1];
+    if (pm.hold_normal || pm.orbit) wm += t[2];
+  }
+  w += wm;
+  if (m.damping.active) {  // f . (v^{n-1/2} + v^{n+1/2}) / 2 summed over the nodes
+    const GlobalDamping& g = m.damping;
+    double px = 0, py = 0, pz = 0;
+    for (int i = 0; i < s.nn; ++i) {
+      const double* p = nt.damping(s, std::size_t(i), buf);
+      px += p[0];
+      py += p[1];
+      pz += p[2];
+    }
+    w += -0.5 * loads.damping_d * (g.factor[0] * px + g.factor[1] * py + g.factor[2] * pz);
+  }
+  return w;
+}
+
+void finish_external_work(State& s, double dt_n, double w) {
   s.external_work += dt_n * w;
   for (RigidBody& rb : s.rigid) rb.omega_old = rb.omega;  // omega^{n+1/2}: the next cycle's old one
+}
+
+}  // namespace
+
+std::vector<int> load_term_nodes(const Model& m) {
+  std::vector<int> out;
+  for (const NodalLoad& l : m.nodal_loads) out.push_back(l.node);
+  for (const PressureLoad& l : m.pressure_loads) out.insert(out.end(), l.nodes.begin(), l.nodes.end());
+  for (const PrescribedMotion& pm : m.prescribed_motions) out.insert(out.end(), 3, pm.node);
+  return out;
+}
+
+void compute_load_terms(const Model& m, const State& s, const LoadSet& loads, double dt_n,
+                        const std::vector<std::uint8_t>* owned, double* terms) {
+  const auto mine = [&](int node) { return node >= 0 && (!owned || (*owned)[std::size_t(node)]); };
+  double* t = terms;
+  for (std::size_t j = 0; j < m.nodal_loads.size(); ++j, ++t)
+    if (mine(m.nodal_loads[j].node)) *t = power_on_node(s, m.nodal_loads[j].node, &loads.nodal_force[3 * j]);
+  for (std::size_t j = 0; j < m.pressure_loads.size(); ++j, t += 4) {
+    const PressureLoad& l = m.pressure_loads[j];
+    const int corners = l.nodes[2] == l.nodes[3] ? 3 : 4;
+    for (int c = 0; c < corners; ++c)
+      if (mine(l.nodes[std::size_t(c)]))
+        t[c] = power_on_node(s, l.nodes[std::size_t(c)], &loads.pressure_force[12 * j + 3 * std::size_t(c)]);
+  }
+  for (std::size_t j = 0; j < m.prescribed_motions.size(); ++j, t += 3)
+    if (mine(m.prescribed_motions[j].node)) motion_reaction_terms(m, s, loads, j, dt_n, t);
+}
+
+int node_power_term_count(const Model& m) { return (m.body_loads.empty() ? 0 : 3) + (m.damping.active ? 3 : 0); }
+
+void compute_node_power_terms(const Model& m, const State& s, const LoadSet& loads, std::size_t k, double* out) {
+  if (!m.body_loads.empty()) {
+    if (loads.body_node[k]) body_load_terms(s, k, out);
+    else out[0] = out[1] = out[2] = 0;
+    out += 3;
+  }
+  if (m.damping.active) damping_terms(s, k, out);
+}
+
+void book_external_work(const Model& m, State& s, LoadSet& loads, double dt_n) {
+  compute_load_terms(m, s, loads, dt_n, nullptr, loads.terms.data());
+  finish_external_work(s, dt_n, external_power(m, s, loads, dt_n, loads.terms.data(), NodeTerms{}));
+}
+
+void book_external_work_from_terms(const Model& m, State& s, const LoadSet& loads, double dt_n, const double* terms,
+                                   const double* node_terms, std::size_t node_stride) {
+  const NodeTerms nt{node_terms, node_stride, std::size_t(m.body_loads.empty() ? 0 : 3)};
+  finish_external_work(s, dt_n, external_power(m, s, loads, dt_n, terms, nt));
 }
 
 }  // namespace impact3d

@@ -40,6 +40,7 @@ struct LoadSet {
   std::vector<double> delta;
   std::vector<int> motion_body;        // per motion: its rigid body (index in State::rigid), -1
   double damping_d = 0;                // this cycle's global damping constant D
+  std::vector<double> terms;           // the external work's terms of one cycle (load_term_nodes)
   bool has_loads = false, has_motions = false;
 };
 
@@ -49,9 +50,10 @@ void prepare_loads(const Model& m, State& s, LoadSet& loads);
 void apply_loads_to_nodes(const Model& m, State& s, LoadSet& loads, double t);
 
 // After the velocity update (and rigid bodies and walls): sets the prescribed components of
-// v^{n+1/2}.  t is t^n; dt_n and dt_next as in the node pass.
+// v^{n+1/2}.  t is t^n; dt_n and dt_next as in the node pass.  `owned` (a distributed run: 1
+// for a rank's own nodes) limits the motions of nodes to those nodes; null: all.
 void apply_prescribed_motions(const Model& m, State& s, LoadSet& loads, double t, double dt_n,
-                              double dt_next);
+                              double dt_next, const std::vector<std::uint8_t>* owned = nullptr);
 
 // Prescribed rotations (PrescribedMotion::rotation) of nodes with rotations (shells', beams'):
 // capture_rotations keeps omega^{n-1/2} before the rotational update, apply_prescribed_rotations
@@ -65,5 +67,23 @@ void apply_prescribed_rotations(const Model& m, State& s, LoadSet& loads, double
 // Books the work of the loads and of the prescribed motions' reactions over this cycle in
 // s.external_work (call after the velocities are final).
 void book_external_work(const Model& m, State& s, LoadSet& loads, double dt_n);
+
+// The same book from its terms, for a distributed run (impact3d/parallel): the ranks that own
+// the nodes compute the terms, rank 0 sums them in the one-process order.
+//  - load terms, one slot each, load_term_nodes(m) giving each slot's node: per nodal load its
+//    power; per pressure load 4 (its corners' powers; a triangle's fourth 0); per prescribed
+//    motion 3 (1 when it acted on its node this cycle, its reaction's power along its direction,
+//    the power of its held plane's or orbit's change); a rigid body's slots (node -1) stay 0
+//    (one process books rigid bodies from their state);
+//  - node terms, node_power_term_count(m) per node: m (v_old + v) x y z of a node the body
+//    loads act on (0 for another), then with global damping m v_old (v_old + v) x y z.
+std::vector<int> load_term_nodes(const Model& m);
+void compute_load_terms(const Model& m, const State& s, const LoadSet& loads, double dt_n,
+                        const std::vector<std::uint8_t>* owned, double* terms);
+int node_power_term_count(const Model& m);
+void compute_node_power_terms(const Model& m, const State& s, const LoadSet& loads, std::size_t k, double* out);
+// terms: every slot (load_term_nodes' order); node_terms: every node's, node_stride apart.
+void book_external_work_from_terms(const Model& m, State& s, const LoadSet& loads, double dt_n, const double* terms,
+                                   const double* node_terms, std::size_t node_stride);
 
 }  // namespace impact3d

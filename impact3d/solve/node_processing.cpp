@@ -139,12 +139,36 @@ void update_velocities_for_nodes(State& s, const NodePass& p) {
   book_chunk_walls(s, p);
 }
 
-int node_record_size(const NodePass& p) { return 1 + 5 * fused_wall_count(p); }
+// Walls in a distributed pass's records: the fused ones, or after a pass without
+// update_positions the fixed walls apply_walls_to_listed_nodes applies.
+int recorded_wall_count(const NodePass& p) { return p.walls ? int(p.walls->size()) : 0; }
 
-void update_velocities_for_listed_nodes(State& s, const NodePass& p, const std::vector<int>& nodes, double* records) {
+int node_record_size(const NodePass& p) { return 1 + 5 * recorded_wall_count(p); }
+
+void apply_walls_to_listed_nodes(State& s, const NodePass& p, const std::vector<int>& nodes, double* records,
+                                 std::size_t stride) {
+  const int nw = recorded_wall_count(p);
+  if (p.update_positions) throw std::logic_error("apply_walls_to_listed_nodes: the pass applied its walls");
+  if (std::size_t(nw) > kMaxFusedWalls) throw std::logic_error("apply_walls_to_listed_nodes: too many walls");
+  const int n = int(nodes.size());
+#pragma omp parallel for schedule(dynamic, kNodeChunk) if (n >= kMinChunksForThreads * kNodeChunk)
+  for (int a = 0; a < n; ++a) {  // each node wall after wall, as apply_stonewalls_to_nodes
+    double* r = records + stride * std::size_t(a);
+    for (int w = 0; w < nw; ++w) {
+      const FixedWall& fw = (*p.walls)[std::size_t(w)];
+      double books[4] = {};
+      r[1 + 5 * w] = apply_wall_to_node(s, nodes[std::size_t(a)], fw.p, fw.n, 0.0, fw.friction, p.dt_next, books,
+                                        books[3]);
+      for (int m = 0; m < 4; ++m) r[2 + 5 * w + m] = books[m];
+    }
+  }
+}
+
+void update_velocities_for_listed_nodes(State& s, const NodePass& p, const std::vector<int>& nodes, double* records,
+                                        std::size_t stride) {
   const int nw = fused_wall_count(p);
   if (std::size_t(nw) > kMaxFusedWalls) throw std::logic_error("update_velocities_for_listed_nodes: too many fused walls");
-  const std::size_t stride = std::size_t(node_record_size(p));
+  if (stride < std::size_t(node_record_size(p))) throw std::logic_error("update_velocities_for_listed_nodes: records too short");
   const int n = int(nodes.size());
 #pragma omp parallel for schedule(dynamic, kNodeChunk) if (n >= kMinChunksForThreads * kNodeChunk)
   for (int a = 0; a < n; ++a) {
@@ -159,10 +183,22 @@ void update_velocities_for_listed_nodes(State& s, const NodePass& p, const std::
   }
 }
 
-void book_node_records(State& s, const NodePass& p, const double* records) {
+void update_positions_for_listed_nodes(State& s, double dt_next, const std::vector<int>& nodes, double* records,
+                                       std::size_t stride) {
+  const int n = int(nodes.size());
+#pragma omp parallel for schedule(dynamic, kNodeChunk) if (n >= kMinChunksForThreads * kNodeChunk)
+  for (int a = 0; a < n; ++a) {  // as update_positions_for_chunk, node by node
+    const std::size_t k = std::size_t(nodes[std::size_t(a)]);
+    s.x[k] += dt_next * s.vx[k];
+    s.y[k] += dt_next * s.vy[k];
+    s.z[k] += dt_next * s.vz[k];
+    records[stride * std::size_t(a)] = kinetic_energy_of_node(s, k);
+  }
+}
+
+void book_node_records(State& s, const NodePass& p, const double* records, std::size_t stride) {
   const int nc = num_node_chunks(s);
   const int nw = fused_wall_count(p);
-  const std::size_t stride = std::size_t(node_record_size(p));
   s.chunk_kinetic.resize(std::size_t(nc));
   s.chunk_walls.resize(std::size_t(nc) * 4 * std::size_t(nw));
   for (int c = 0; c < nc; ++c) {  // each chunk's sums, node by node as update_velocities_for_chunk
@@ -182,6 +218,20 @@ void book_node_records(State& s, const NodePass& p, const double* records) {
   }
   sum_chunk_kinetic_energies(s);
   book_chunk_walls(s, p);
+  if (p.update_positions) return;
+  // the walls of apply_walls_to_listed_nodes: each wall's sums over all nodes in node order
+  // (as apply_stonewalls_to_nodes books them)
+  for (int w = 0; w < recorded_wall_count(p); ++w) {
+    double imp[3] = {0, 0, 0}, dke = 0;
+    for (int i = 0; i < s.nn; ++i) {
+      const double* r = records + stride * std::size_t(i);
+      if (r[1 + 5 * w] == 0.0) continue;
+      for (int a = 0; a < 3; ++a) imp[a] += r[2 + 5 * w + a];
+      dke -= -r[5 + 5 * w];
+    }
+    s.wall_work += dke;
+    for (int a = 0; a < 3; ++a) s.wall_force[std::size_t(w)][std::size_t(a)] = -imp[a] / p.dt_n;
+  }
 }
 
 void update_positions_for_nodes(State& s, double dt_next) {

@@ -32,13 +32,26 @@ struct NodePass {
 void update_velocities_for_nodes(State& s, const NodePass& p);
 
 // A distributed run (impact3d/parallel): the same pass on the listed nodes only (a rank's own),
-// each node's books kept apart in `records`, node_record_size(p) doubles per listed node: its
-// kinetic energy, then per fused wall whether it acted and its impulse x y z and energy
-// change.  book_node_records takes the records of every node (node order) and makes the
-// chunk sums, s.kinetic and the walls' books exactly as update_velocities_for_nodes does.
+// each node's books kept apart in `records`, one record of `stride` doubles per listed node,
+// node_record_size(p) of them used here: its kinetic energy (0 without p.update_positions),
+// then per fused wall whether it acted and its impulse x y z and energy change (the rest of a
+// record is the caller's).  update_positions_for_listed_nodes moves the listed nodes afterwards
+// (a pass without update_positions: prescribed motions set velocities in between) and writes
+// their kinetic energies into the records.  book_node_records takes the records of every node
+// (node order) and makes the chunk sums, s.kinetic and the walls' books exactly as
+// update_velocities_for_nodes and update_positions_for_nodes do.
+// A pass without update_positions leaves its fixed walls p.walls to apply_walls_to_listed_nodes
+// (the engine's apply_stonewalls_to_nodes in one process), which applies them to the listed
+// nodes after the velocities, each node wall after wall, their books in the records as above;
+// book_node_records then sums each wall's over all nodes in node order, as that function does.
 int node_record_size(const NodePass& p);
-void update_velocities_for_listed_nodes(State& s, const NodePass& p, const std::vector<int>& nodes, double* records);
-void book_node_records(State& s, const NodePass& p, const double* records);
+void apply_walls_to_listed_nodes(State& s, const NodePass& p, const std::vector<int>& nodes, double* records,
+                                 std::size_t stride);
+void update_velocities_for_listed_nodes(State& s, const NodePass& p, const std::vector<int>& nodes, double* records,
+                                        std::size_t stride);
+void update_positions_for_listed_nodes(State& s, double dt_next, const std::vector<int>& nodes, double* records,
+                                       std::size_t stride);
+void book_node_records(State& s, const NodePass& p, const double* records, std::size_t stride);
 
 // x^{n+1} = x^n + dt v^{n+1/2} and s.kinetic, after walls and rigid bodies set the velocities.
 void update_positions_for_nodes(State& s, double dt_next);

@@ -3,7 +3,10 @@
 and, with the argument beams, shell_tube_beams.k: the same tube with three beam groups on its
 nodes (a ring of Hughes-Liu beams, elastic-plastic, around its upper end; a ring of resultant
 beams, ELFORM 2, around its middle; 12 trusses across its upper quarter, each between opposite
-nodes).
+nodes); with the argument loads, shell_tube_loads.k: the tube under loads and prescribed motions
+(an internal pressure on its middle rows of shells arriving at 10 us, a sideways body load, the
+lower ring of tube nodes pulled down at a prescribed velocity, one upper-end node's spin about
+the axis prescribed, DOF 6, as a rotational velocity).
 
 A free shell tube for the distributed runs' tests: radius 10 mm, length 40 mm, 24 x 16 shells
 0.5 mm thick in three parts (three materials, so three shell groups): the lower rows
@@ -20,6 +23,7 @@ import math
 import sys
 
 beams = len(sys.argv) > 1 and sys.argv[1] == "beams"
+loads = len(sys.argv) > 1 and sys.argv[1] == "loads"
 
 nt, nz = 24, 16
 radius, length, thick, collar = 0.010, 0.040, 0.0005, 0.002
@@ -41,7 +45,7 @@ def part(k):
 out = []
 w = out.append
 w("*KEYWORD")
-name = "shell_tube_beams.k" if beams else "shell_tube.k"
+name = "shell_tube_beams.k" if beams else "shell_tube_loads.k" if loads else "shell_tube.k"
 w(f"$ tests/parallel/{name}: written by tests/parallel/make_shell_tube.py (do not edit by hand)")
 w("*TITLE")
 w("free shell tube with a solid collar: spin, stretch and swing, SI units (m kg s Pa)")
@@ -165,5 +169,26 @@ for n in sorted(coords):
     x, y, z = coords[n]
     vx, vy, vz = -omega * y + swing * z / length, omega * x, vend * (2 * z / length - 1)
     w(f"{n:10d}{vx:10.4f}{vy:10.4f}{vz:10.4f}{0.0:10.4f}{0.0:10.4f}{omega:10.4f}")
+if loads:
+    w("*DEFINE_CURVE_TITLE")
+    w("ramp to 1 in 20 us, then held")
+    w("         1")
+    for a, o in [(0.0, 0.0), (2.0e-5, 1.0), (1.0e-3, 1.0)]:
+        w(f"{a:20.6e}{o:20.6e}")
+    w("*DEFINE_CURVE_TITLE")
+    w("constant 1")
+    w("         2")
+    for a, o in [(0.0, 1.0), (1.0e-3, 1.0)]:
+        w(f"{a:20.6e}{o:20.6e}")
+    w("*LOAD_SEGMENT")  # the shells' normal points outward: a negative pressure pushes out
+    for k in range(4, 12):
+        for i in range(nt):
+            w(f"         1    -2.0e6    1.0e-5{nid(i, k):10d}{nid(i + 1, k):10d}{nid(i + 1, k + 1):10d}{nid(i, k + 1):10d}")
+    w("*LOAD_BODY_Y")
+    w("         1    1.0e5")
+    w("*BOUNDARY_PRESCRIBED_MOTION_NODE")
+    for i in range(nt):
+        w(f"{nid(i, 0):10d}         3         0         2     -60.0")
+    w(f"{nid(nt // 2, nz):10d}         6         0         2  {omega:8.1f}")
 w("*END")
 print("\n".join(out))
