@@ -14,6 +14,7 @@
 #include <cmath>
 
 #include "impact3d/element/cbrt_positive.h"
+#include "impact3d/element/hex_volume_derivative.h"
 #include "impact3d/material/material_point_block.h"
 
 namespace impact3d {
@@ -39,27 +40,6 @@ struct alignas(64) HexBlock : MaterialPointBlock {
 };
 
 namespace hex_block_detail {
-// dV/dx at node n0 from its six face neighbours (hexahedron.cpp volu_der), lane form.
-inline void calc_volume_derivative_lanes(const Lanes* x, const Lanes* y, const Lanes* z, int n0,
-                                         int n1, int n2, int n3, int n4, int n5, Lanes& dx,
-                                         Lanes& dy, Lanes& dz) {
-  constexpr double twelfth = 1.0 / 12.0;
-  IMPACT3D_FOR_LANES {
-    const double x0 = x[n0][l], x1 = x[n1][l], x2 = x[n2][l], x3 = x[n3][l], x4 = x[n4][l], x5 = x[n5][l];
-    const double y0 = y[n0][l], y1 = y[n1][l], y2 = y[n2][l], y3 = y[n3][l], y4 = y[n4][l], y5 = y[n5][l];
-    const double z0 = z[n0][l], z1 = z[n1][l], z2 = z[n2][l], z3 = z[n3][l], z4 = z[n4][l], z5 = z[n5][l];
-    double ddx = (y1 + y2) * (z0 + z1) - (y0 + y1) * (z1 + z2) + (y0 + y4) * (z3 + z4) -
-                 (y3 + y4) * (z0 + z4) - (y2 + y5) * (z3 + z5) + (y3 + y5) * (z2 + z5);
-    double ddy = -(x1 + x2) * (z0 + z1) + (x0 + x1) * (z1 + z2) - (x0 + x4) * (z3 + z4) +
-                 (x3 + x4) * (z0 + z4) + (x2 + x5) * (z3 + z5) - (x3 + x5) * (z2 + z5);
-    double ddz = -(y1 + y2) * (x0 + x1) + (y0 + y1) * (x1 + x2) - (y0 + y4) * (x3 + x4) +
-                 (y3 + y4) * (x0 + x4) + (y2 + y5) * (x3 + x5) - (y3 + y5) * (x2 + x5);
-    dx[l] = ddx * twelfth;
-    dy[l] = ddy * twelfth;
-    dz[l] = ddz * twelfth;
-  }
-}
-
 inline void quad_area_lanes(const Lanes* x, const Lanes* y, const Lanes* z, int a, int b, int c,
                             int d, Lanes& area) {
   IMPACT3D_FOR_LANES {
@@ -110,15 +90,12 @@ inline void viscous_hourglass_step_lanes(const Lanes (*g)[8], const Lanes& ah, c
 // dV/dx at the nodes and the volume V = sum x dV/dx (calc_hex_volume_derivatives).
 inline void calc_hex_volume_derivatives_block(const Lanes* x, const Lanes* y, const Lanes* z,
                                               Lanes* dvdx, Lanes* dvdy, Lanes* dvdz, Lanes& vol) {
-  using hex_block_detail::calc_volume_derivative_lanes;
-  calc_volume_derivative_lanes(x, y, z, 1, 2, 3, 4, 5, 7, dvdx[0], dvdy[0], dvdz[0]);
-  calc_volume_derivative_lanes(x, y, z, 0, 1, 2, 7, 4, 6, dvdx[3], dvdy[3], dvdz[3]);
-  calc_volume_derivative_lanes(x, y, z, 3, 0, 1, 6, 7, 5, dvdx[2], dvdy[2], dvdz[2]);
-  calc_volume_derivative_lanes(x, y, z, 2, 3, 0, 5, 6, 4, dvdx[1], dvdy[1], dvdz[1]);
-  calc_volume_derivative_lanes(x, y, z, 7, 6, 5, 0, 3, 1, dvdx[4], dvdy[4], dvdz[4]);
-  calc_volume_derivative_lanes(x, y, z, 4, 7, 6, 1, 0, 2, dvdx[5], dvdy[5], dvdz[5]);
-  calc_volume_derivative_lanes(x, y, z, 5, 4, 7, 2, 1, 3, dvdx[6], dvdy[6], dvdz[6]);
-  calc_volume_derivative_lanes(x, y, z, 6, 5, 4, 3, 2, 0, dvdx[7], dvdy[7], dvdz[7]);
+#pragma GCC unroll 8
+  for (const auto& c : kVolumeDerivativeNeighbours)
+    IMPACT3D_FOR_LANES {
+      volume_derivative([x, l](int n) { return x[n][l]; }, [y, l](int n) { return y[n][l]; }, [z, l](int n) { return z[n][l]; },
+                        c + 1, dvdx[c[0]][l], dvdy[c[0]][l], dvdz[c[0]][l]);
+    }
   IMPACT3D_FOR_LANES {
     double v = 0.0;
     #pragma GCC unroll 16

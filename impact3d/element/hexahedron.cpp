@@ -7,6 +7,7 @@
 #include "impact3d/element/hexahedron.h"
 
 #include "impact3d/element/cbrt_positive.h"
+#include "impact3d/element/hex_volume_derivative.h"
 
 #include <cfloat>
 #include <cmath>
@@ -19,26 +20,6 @@ namespace {
 inline double triple(double ax, double ay, double az, double bx, double by, double bz, double cx,
                      double cy, double cz) {
   return ax * (by * cz - bz * cy) + ay * (bz * cx - bx * cz) + az * (bx * cy - by * cx);
-}
-
-// Derivative of the exact hexahedron volume with respect to one node's coordinates, written in
-// terms of the six nodes that share a face with it (the classic form used by LULESH,
-// CalcElemVolumeDerivative / VoluDer).  For node 0 the arguments are nodes 1, 2, 3, 4, 5, 7.
-inline void volu_der(const double x[8], const double y[8], const double z[8], int n0, int n1,
-                     int n2, int n3, int n4, int n5, double& dx, double& dy, double& dz) {
-  const double x0 = x[n0], x1 = x[n1], x2 = x[n2], x3 = x[n3], x4 = x[n4], x5 = x[n5];
-  const double y0 = y[n0], y1 = y[n1], y2 = y[n2], y3 = y[n3], y4 = y[n4], y5 = y[n5];
-  const double z0 = z[n0], z1 = z[n1], z2 = z[n2], z3 = z[n3], z4 = z[n4], z5 = z[n5];
-  constexpr double twelfth = 1.0 / 12.0;
-  dx = (y1 + y2) * (z0 + z1) - (y0 + y1) * (z1 + z2) + (y0 + y4) * (z3 + z4) -
-       (y3 + y4) * (z0 + z4) - (y2 + y5) * (z3 + z5) + (y3 + y5) * (z2 + z5);
-  dy = -(x1 + x2) * (z0 + z1) + (x0 + x1) * (z1 + z2) - (x0 + x4) * (z3 + z4) +
-       (x3 + x4) * (z0 + z4) + (x2 + x5) * (z3 + z5) - (x3 + x5) * (z2 + z5);
-  dz = -(y1 + y2) * (x0 + x1) + (y0 + y1) * (x1 + x2) - (y0 + y4) * (x3 + x4) +
-       (y3 + y4) * (x0 + x4) + (y2 + y5) * (x3 + x5) - (y3 + y5) * (x2 + x5);
-  dx *= twelfth;
-  dy *= twelfth;
-  dz *= twelfth;
 }
 
 // Area of a (possibly warped) quadrilateral face: half the norm of the cross product of its
@@ -65,6 +46,21 @@ constexpr double kGamma[4][8] = {
     {-1., 1., -1., 1., 1., -1., 1., -1.},
 };
 
+// sum_I w_I (x_I, y_I, z_I) over the 8 nodes, summed in node order: the contraction of a
+// node vector (a hourglass base vector, a shape vector) with the coordinates or velocities.
+inline void node_contraction(const double w[8], const double x[8], const double y[8], const double z[8], double& sx,
+                             double& sy, double& sz) {
+  double ax = 0.0, ay = 0.0, az = 0.0;
+  for (int n = 0; n < 8; ++n) {
+    ax += w[n] * x[n];
+    ay += w[n] * y[n];
+    az += w[n] * z[n];
+  }
+  sx = ax;
+  sy = ay;
+  sz = az;
+}
+
 // Flanagan-Belytschko hourglass shape vectors gamma_a = Gamma_a - (Gamma_a . x_i) b_i, with
 // b = dV/dx / V.  They are orthogonal to every linear field (constant and linear in x).
 inline void fb_gamma(const double x[8], const double y[8], const double z[8],
@@ -72,12 +68,8 @@ inline void fb_gamma(const double x[8], const double y[8], const double z[8],
                      double volume, double g[4][8]) {
   const double rv = 1.0 / volume;
   for (int a = 0; a < 4; ++a) {
-    double gx = 0.0, gy = 0.0, gz = 0.0;
-    for (int n = 0; n < 8; ++n) {
-      gx += kGamma[a][n] * x[n];
-      gy += kGamma[a][n] * y[n];
-      gz += kGamma[a][n] * z[n];
-    }
+    double gx, gy, gz;
+    node_contraction(kGamma[a], x, y, z, gx, gy, gz);
     gx *= rv;
     gy *= rv;
     gz *= rv;
@@ -90,17 +82,7 @@ inline void fb_gamma(const double x[8], const double y[8], const double z[8],
 // Hourglass velocities h_ia = sum_I v_iI g_aI, stored h[3a + i].
 inline void hourglass_rates(const double g[4][8], const double vx[8], const double vy[8],
                             const double vz[8], double h[12]) {
-  for (int a = 0; a < 4; ++a) {
-    double hx = 0.0, hy = 0.0, hz = 0.0;
-    for (int n = 0; n < 8; ++n) {
-      hx += g[a][n] * vx[n];
-      hy += g[a][n] * vy[n];
-      hz += g[a][n] * vz[n];
-    }
-    h[3 * a] = hx;
-    h[3 * a + 1] = hy;
-    h[3 * a + 2] = hz;
-  }
+  for (int a = 0; a < 4; ++a) node_contraction(g[a], vx, vy, vz, h[3 * a], h[3 * a + 1], h[3 * a + 2]);
 }
 
 // f_iI += sum_a Q_ia g_aI; returns sum of (added force) . v.
@@ -172,14 +154,10 @@ double calc_hex_volume(const double x[8], const double y[8], const double z[8]) 
 
 double calc_hex_volume_derivatives(const double x[8], const double y[8], const double z[8],
                                    double dvdx[8], double dvdy[8], double dvdz[8]) {
-  volu_der(x, y, z, 1, 2, 3, 4, 5, 7, dvdx[0], dvdy[0], dvdz[0]);
-  volu_der(x, y, z, 0, 1, 2, 7, 4, 6, dvdx[3], dvdy[3], dvdz[3]);
-  volu_der(x, y, z, 3, 0, 1, 6, 7, 5, dvdx[2], dvdy[2], dvdz[2]);
-  volu_der(x, y, z, 2, 3, 0, 5, 6, 4, dvdx[1], dvdy[1], dvdz[1]);
-  volu_der(x, y, z, 7, 6, 5, 0, 3, 1, dvdx[4], dvdy[4], dvdz[4]);
-  volu_der(x, y, z, 4, 7, 6, 1, 0, 2, dvdx[5], dvdy[5], dvdz[5]);
-  volu_der(x, y, z, 5, 4, 7, 2, 1, 3, dvdx[6], dvdy[6], dvdz[6]);
-  volu_der(x, y, z, 6, 5, 4, 3, 2, 0, dvdx[7], dvdy[7], dvdz[7]);
+#pragma GCC unroll 8
+  for (const auto& c : kVolumeDerivativeNeighbours)
+    volume_derivative([x](int n) { return x[n]; }, [y](int n) { return y[n]; }, [z](int n) { return z[n]; }, c + 1,
+                      dvdx[c[0]], dvdy[c[0]], dvdz[c[0]]);
   // V is homogeneous of degree one in the x coordinates alone (a stretch in x scales it), so
   // V = sum_I x_I dV/dx_I exactly; this costs 8 multiply-adds and uses the same numbers.
   double v = 0.0;

@@ -79,39 +79,15 @@ ScaledStep scale_masses_for_time_step(const Model& m, State& s, double dt_min, i
   double best = std::numeric_limits<double>::infinity();
   int arg = -1;
   double ke = 0;
-  // solids, then shells, each in element order (one thread: the same bits for any count)
-  for (int e = 0; e < s.ne; ++e) {
-    const std::size_t E = std::size_t(e);
-    const double dt = s.dt_e[E];
-    double& f = s.ms_factor[E];
+  // One element (number id in the step's numbering, solids then shells): its factor f anew
+  // when scaling, the mass added (element_mass() its mass; add_mass(dm) spreads dm to its nodes
+  // and returns the kinetic energy that adds) booked, and its scaled step against the smallest.
+  const auto scale_element = [&](double dt, double& f, int mat, int id, const auto& element_mass, const auto& add_mass) {
     if (scale) {
       const double g = new_factor(dt, f, target, lower);
       if (g != f) {
-        const double dm = (g - f) * s.mass_e[E];
-        ke += add_mass_to_solid(s, e, dm);
-        s.added_mass += dm;
-        s.mat_added_mass[std::size_t(s.mat[E])] += dm;
-        f = g;
-      }
-    }
-    const double dts = dt * std::sqrt(f);
-    if (dts < best) {
-      best = dts;
-      arg = e;
-    }
-  }
-  ShellState& sh = s.shells;
-  for (int j = 0; j < sh.ns; ++j) {
-    const std::size_t J = std::size_t(j);
-    const double dt = sh.dt_e[J];
-    double& f = sh.ms_factor[J];
-    if (scale) {
-      const double g = new_factor(dt, f, target, lower);
-      if (g != f) {
-        const int mat = sh.mat[J];
-        const double me = s.mats[std::size_t(mat)].rho * sh.thick[J] * sh.area0[J];
-        const double dm = (g - f) * me;
-        ke += add_mass_to_shell(m, s, j, dm);
+        const double dm = (g - f) * element_mass();
+        ke += add_mass(dm);
         s.added_mass += dm;
         s.mat_added_mass[std::size_t(mat)] += dm;
         f = g;
@@ -120,8 +96,21 @@ ScaledStep scale_masses_for_time_step(const Model& m, State& s, double dt_min, i
     const double dts = dt * std::sqrt(f);
     if (dts < best) {
       best = dts;
-      arg = s.ne + j;
+      arg = id;
     }
+  };
+  // solids, then shells, each in element order (one thread: the same bits for any count)
+  for (int e = 0; e < s.ne; ++e) {
+    const std::size_t E = std::size_t(e);
+    scale_element(s.dt_e[E], s.ms_factor[E], s.mat[E], e, [&] { return s.mass_e[E]; },
+                  [&](double dm) { return add_mass_to_solid(s, e, dm); });
+  }
+  ShellState& sh = s.shells;
+  for (int j = 0; j < sh.ns; ++j) {
+    const std::size_t J = std::size_t(j);
+    const int mat = sh.mat[J];
+    scale_element(sh.dt_e[J], sh.ms_factor[J], mat, s.ne + j, [&] { return s.mats[std::size_t(mat)].rho * sh.thick[J] * sh.area0[J]; },
+                  [&](double dm) { return add_mass_to_shell(m, s, j, dm); });
   }
   s.external_work += ke;
   if (arg >= 0) {
