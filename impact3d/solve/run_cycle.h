@@ -33,6 +33,7 @@ class RunCycle {
   // element pass), the contact and wall work and the external work booked so far.
   struct BooksAtN {
     double elements = 0, contact_walls = 0, external = 0;
+    double dt_half = 0;  // dt^{n-1/2}
     bool known = false;
   };
 

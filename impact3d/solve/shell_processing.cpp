@@ -378,11 +378,24 @@ ShellPassResult calc_forces_for_shells(const Model& m, State& s) {
   return book_shell_results(s);
 }
 
+namespace {
+
+// a^{n-1/2} . (a^{n-1/2} + r (a^{n+1/2} - a^{n-1/2})) for a velocity's components (update_rotational_velocities_for_nodes)
+double centred_product(double x0, double y0, double z0, double x1, double y1, double z1, double r) {
+  return x0 * (x0 + r * (x1 - x0)) + y0 * (y0 + r * (y1 - y0)) + z0 * (z0 + r * (z1 - z0));
+}
+
+}  // namespace
+
 void update_rotational_velocities_for_nodes(State& s, double dt_n) {
   ShellState& sh = s.shells;
   if (sh.nr == 0) return;
   const int* cs = sh.rot_corner_start.data();
   const int* cl = sh.rot_corner_list.data();
+  // the time-centred book's product w^{n-1/2} . w*, w* = w^{n-1/2} + r (w^{n+1/2} - w^{n-1/2}) with
+  // r = dt^{n-1/2} / dt^n: the increment as a step equal to the last would have made it (r = 1 but
+  // where the step changes: the last step landing on the end time; run_cycle.h)
+  const double r_step = s.dt_half > 0 ? s.dt_half / dt_n : 1.0;
   double ke_centred = 0;
   for (int r = 0; r < sh.nr; ++r) {
     const std::size_t R = std::size_t(r);
@@ -394,7 +407,7 @@ void update_rotational_velocities_for_nodes(State& s, double dt_n) {
       sh.wx[R] = w[0];
       sh.wy[R] = w[1];
       sh.wz[R] = w[2];
-      ke_centred += 0.5 * sh.inertia[R] * (w0x * w[0] + w0y * w[1] + w0z * w[2]);
+      ke_centred += 0.5 * sh.inertia[R] * centred_product(w0x, w0y, w0z, w[0], w[1], w[2], r_step);
       continue;
     }
     double mx = 0, my = 0, mz = 0;
@@ -409,7 +422,7 @@ void update_rotational_velocities_for_nodes(State& s, double dt_n) {
     if (!(f & 1)) sh.wx[R] -= dt_n * mx * inv;
     if (!(f & 2)) sh.wy[R] -= dt_n * my * inv;
     if (!(f & 4)) sh.wz[R] -= dt_n * mz * inv;
-    ke_centred += 0.5 * sh.inertia[R] * (w0x * sh.wx[R] + w0y * sh.wy[R] + w0z * sh.wz[R]);
+    ke_centred += 0.5 * sh.inertia[R] * centred_product(w0x, w0y, w0z, sh.wx[R], sh.wy[R], sh.wz[R], r_step);
   }
   sh.rot_kinetic_centred = ke_centred;
   sh.rot_kinetic = calc_rotational_kinetic_energy(s);

@@ -292,16 +292,18 @@ TEST(RunChecksDecks, MassScalingTripsTheAddedMassCheck) {
   EXPECT_NE(r.log.find("info 5110: run verdict: suspect: added mass"), std::string::npos) << r.log;
 }
 
-// A free strip of 6 x 1 Belytschko-Tsay shells (10 mm, 1 mm steel, IHQ 1 QM 0.1, TSSFAC 0.9)
-// whose right half starts at 1 m/s along it: a velocity jump on a mesh this coarse puts much of
-// the energy in modes near the step's limit, and the printed ratio swings to 1.13 at cycle 100
-// (kinetic energy half a step behind the element energies); the time-centred ratio stays at
-// 1.0001 (docs/shells.md, "Energy books under sudden loads"). 5106, not 5102 (before the
-// viscous hourglass fix and this check: "energy gained", 5102).
+// A free strip of 6 x 1 Belytschko-Tsay shells (10 mm, 1 mm steel with nu = 0, IHQ 1 QM 0.1,
+// TSSFAC 0.9) whose right half starts at 1 m/s along it: a velocity jump on a mesh this coarse
+// puts much of the energy in modes near the step's limit, and the printed ratio swings (1.07 at
+// cycle 100, kinetic energy half a step behind the element energies); the time-centred ratio
+// stays at 1.0001 (docs/shells.md, "Energy books under sudden loads"). 5106, not 5102 (before the
+// viscous hourglass fix and this check: "energy gained", 5102). The last step lands on the end
+// time at 0.2 of the step: the time-centred book takes the velocity increment as an equal step
+// would have made it (without that, the end check said 5102, 1.076).
 TEST(RunChecksDecks, StruckShellStripSwingsButHoldsItsBalance) {
   std::string s = "*KEYWORD\n*TITLE\nstrip\n*CONTROL_TERMINATION\n    0.0005\n*PART\nstrip\n         1         1         1\n"
                   "*SECTION_SHELL\n         1         2       1.0         2\n     0.001     0.001     0.001     0.001\n"
-                  "*MAT_ELASTIC\n         1    7850.0   2.1e+11       0.3\n*NODE\n";
+                  "*MAT_ELASTIC\n         1    7850.0   2.1e+11       0.0\n*NODE\n";
   char buf[120];
   for (int j = 0; j < 2; ++j)
     for (int i = 0; i < 7; ++i) {
