@@ -103,7 +103,20 @@ void tie_node_to_segment(Model& m, TiedContact& tc, int c, int n, const TieChoic
     x[2] += t.w[std::size_t(a)] * m.z[q];
   }
   const std::size_t k = std::size_t(n);
-  m.x[k] = x[0], m.y[k] = x[1], m.z[k] = x[2];
+  if (tc.offset == 1) {  // a penalty spring keeps the offset: its part along the segment's normal
+    contact::SegX X;
+    segment_coordinates(m, t.seg, X);
+    double d1[3], d2[3];
+    for (int i = 0; i < 3; ++i) d1[i] = X[2][i] - X[0][i], d2[i] = X[3][i] - X[1][i];
+    double nn[3] = {d1[1] * d2[2] - d1[2] * d2[1], d1[2] * d2[0] - d1[0] * d2[2], d1[0] * d2[1] - d1[1] * d2[0]};
+    const double ln = std::sqrt(nn[0] * nn[0] + nn[1] * nn[1] + nn[2] * nn[2]);
+    for (double& v : nn) v /= ln;
+    const double d[3] = {m.x[k] - x[0], m.y[k] - x[1], m.z[k] - x[2]};
+    t.gap = d[0] * nn[0] + d[1] * nn[1] + d[2] * nn[2];
+    for (int i = 0; i < 3; ++i) t.rest[std::size_t(i)] = d[i] - t.gap * nn[i];
+  } else if (tc.offset == 0) {
+    m.x[k] = x[0], m.y[k] = x[1], m.z[k] = x[2];
+  }
   m.node_ties.push_back(t);
   ++tc.tied;
 }

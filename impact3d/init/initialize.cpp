@@ -23,8 +23,10 @@ void init_nodes(const Model& m, State& s) {
   s.x = m.x; s.y = m.y; s.z = m.z;
   for (auto* v : {&s.vx, &s.vy, &s.vz, &s.ax, &s.ay, &s.az, &s.vx_old, &s.vy_old, &s.vz_old, &s.mass})
     v->assign(std::size_t(nn), 0.0);
-  // external forces: only sliding interfaces and loads make them (the node pass reads them then)
-  const bool fext = !m.interfaces.empty() || m.has_loads();
+  // external forces: only sliding interfaces, loads and _OFFSET ties make them (the node pass
+  // reads them then)
+  bool fext = !m.interfaces.empty() || m.has_loads();
+  for (const TiedContact& tc : m.tied_contacts) fext = fext || tc.offset == 1;
   for (auto* v : {&s.fext_x, &s.fext_y, &s.fext_z}) v->assign(fext ? std::size_t(nn) : 0, 0.0);
   s.fix.assign(std::size_t(nn), 0);
   for (int i = 0; i < nn; ++i) {

@@ -1059,7 +1059,13 @@ std::vector<KeywordSpec> contact_specs() {
            "constraint-based ties: each slave node (SURFA: node set, or the nodes of a segment set or parts, beams' too) "
            "projected onto a master segment (SURFB) when read and moved with it; the rotations tied too by the spot welds and "
            "_SHELL_EDGE_TO_SURFACE (translations only: _NODES_, _SURFACE_TO_SURFACE); a spot weld's rotation about the segment's "
-           "normal free (_SPOTWELD) or tied to the segment's in-plane spin (_WITH_TORSION) (docs/contact.md \"Tied contacts\")"}};
+           "normal free (_SPOTWELD) or tied to the segment's in-plane spin (_WITH_TORSION) (docs/contact.md \"Tied contacts\")"},
+          {{"CONTACT_TIED_NODES_TO_SURFACE_OFFSET", "CONTACT_TIED_SURFACE_TO_SURFACE_OFFSET", "CONTACT_TIED_NODES_TO_SURFACE_CONSTRAINED_OFFSET",
+            "CONTACT_TIED_SURFACE_TO_SURFACE_CONSTRAINED_OFFSET"},
+           F, false, tied_contact_cards(),
+           "ties that keep each slave node's offset (not moved; translations only): _OFFSET a penalty spring holding the offset along "
+           "the segment's turning normal, _CONSTRAINED_OFFSET the constraint tie with the offset kept as a fixed vector "
+           "(docs/contact.md \"Tied contacts\")"}};
 }
 
 // A card of one id and a heading in fixed columns (10 and 70, also in long format).

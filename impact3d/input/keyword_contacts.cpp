@@ -14,6 +14,7 @@ struct ContactKind {
   bool single = false;      // one surface against itself
   bool eroding = false;     // the _ERODING_ card follows card 3
   int tied = 0;             // 1 *CONTACT_TIED_{NODES,SURFACE,SHELL_EDGE}_TO_SURFACE, 2 *CONTACT_SPOTWELD, 3 _SPOTWELD_WITH_TORSION
+  int offset = 0;           // the tied forms' _OFFSET (1) and _CONSTRAINED_OFFSET (2)
 };
 
 // LS-DYNA's older and forming names read as the contact LS-DYNA treats them as
@@ -29,6 +30,10 @@ ContactKind contact_kind(const std::string& n) {
   k.tied = n == "CONTACT_SPOTWELD_WITH_TORSION" ? 3 : n == "CONTACT_SPOTWELD" ? 2 : 0;
   for (const char* f : {"CONTACT_TIED_NODES_TO_SURFACE", "CONTACT_TIED_SURFACE_TO_SURFACE", "CONTACT_TIED_SHELL_EDGE_TO_SURFACE"})
     if (n == f) k.tied = 1;
+  for (const char* f : {"CONTACT_TIED_NODES_TO_SURFACE", "CONTACT_TIED_SURFACE_TO_SURFACE"}) {
+    if (n == std::string(f) + "_OFFSET") k.tied = 1, k.offset = 1;
+    if (n == std::string(f) + "_CONSTRAINED_OFFSET") k.tied = 1, k.offset = 2;
+  }
   k.symmetric = n == "CONTACT_SURFACE_TO_SURFACE" || n == "CONTACT_AUTOMATIC_SURFACE_TO_SURFACE" ||
                 n == "CONTACT_ERODING_SURFACE_TO_SURFACE";
   return k;
@@ -138,6 +143,7 @@ void read_contact(const Block& b, KeywordContext& ctx, const KeywordSpec& s, std
   ct.transducer = kind.transducer;
   ct.single = kind.single;
   ct.tied = kind.tied;
+  ct.offset = kind.offset;
   ct.keyword = b.keyword;
   ct.name = b.name;
   ct.automatic = kind.single || kind.eroding || b.name.find("AUTOMATIC") != std::string::npos || b.name.find("FORMING") != std::string::npos;

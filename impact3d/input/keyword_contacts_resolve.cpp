@@ -306,6 +306,7 @@ void resolve_tied_contact(ResolveContext& rc, const RContact& c) {
   tc.keyword = c.name;
   // translations only for TIED_NODES/SURFACE_TO_SURFACE; rotations too for spot welds and shell edges
   tc.rotations = tc.spotweld || c.name == "CONTACT_TIED_SHELL_EDGE_TO_SURFACE";
+  tc.offset = c.offset;
   tc.id = c.cid;
   tc.line = c.ref.line ? c.ref.line->number : 0;
   tc.tolerance = c.sast < 0 ? -c.sast : 0.0;

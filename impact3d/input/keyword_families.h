@@ -379,6 +379,7 @@ struct RContact {
   bool isym = false;                // ISYM 1 (optional card B or the _ERODING_ card): part sides leave out symmetry-plane faces
   int cid = 0;                      // _ID: the contact id
   int tied = 0;                     // 1 *CONTACT_TIED_NODES_TO_SURFACE, 2 *CONTACT_SPOTWELD, 3 _WITH_TORSION (constraint ties)
+  int offset = 0;                   // a tied contact's _OFFSET (1: penalty springs) or _CONSTRAINED_OFFSET (2)
   double sast = 0;                  // card 3 SAST of a tied contact (negative: its magnitude is the reach)
   Ref ref;
   std::string keyword;

@@ -261,6 +261,7 @@ struct TiedContact {
   bool spotweld = false;                      // *CONTACT_SPOTWELD (else _TIED_NODES_TO_SURFACE)
   bool torsion = false;                       // *CONTACT_SPOTWELD_WITH_TORSION (spotweld too)
   bool rotations = false;                     // rotations tied too (spot welds, _SHELL_EDGE_TO_SURFACE)
+  int offset = 0;                             // 1 _OFFSET (penalty springs), 2 _CONSTRAINED_OFFSET: the slaves not moved
   std::string keyword;                        // the keyword read, options stripped (the converter's; empty: by the flags)
   int id = 0;                                 // the _ID card's CID (0: none)
   std::vector<int> slave_nodes;               // 0-based, sorted, unique
@@ -274,6 +275,8 @@ struct NodeTie {
   int contact = 0;                            // Model::tied_contacts index
   std::array<int, 4> seg{};                   // the master segment's nodes (a triangle repeats n3)
   std::array<double, 4> w{};                  // the shape functions at the projection (sum 1)
+  double gap = 0;                             // _OFFSET: the slave's offset along the segment's normal
+  std::array<double, 3> rest{};               // _OFFSET: the rest of its offset (global; 0 on a flat segment)
 };
 
 struct LoadCurve {

@@ -62,7 +62,17 @@ struct TieState {
   std::vector<double> fx, fy, fz, m;
   std::vector<double> mx, my, mz, j;
   std::vector<double> wx0, wy0, wz0;
-  bool empty() const { return masters.empty(); }
+  // _OFFSET ties (penalty springs, solve/node_ties.h; apart from the constraint ties above): per
+  // tie its slave, its segment's nodes and weights, the offset along the normal and the rest, the
+  // spring's stiffness (once the first step is known) and its last forces (slave, then the
+  // segment's four nodes) for the energy.
+  std::vector<int> pen_slave;
+  std::vector<std::array<int, 4>> pen_seg;
+  std::vector<std::array<double, 4>> pen_w;
+  std::vector<double> pen_gap, pen_k;
+  std::vector<std::array<double, 3>> pen_rest;
+  std::vector<std::array<double, 15>> pen_f;
+  bool empty() const { return masters.empty(); }  // no constraint ties
 };
 
 struct ElementGroup {

@@ -114,6 +114,7 @@ StepStatus Engine::initialize() {
   }
   if (m_.control.initial_dt > 0) s_.dt_next = std::min(s_.dt_next, m_.control.initial_dt);
   s_.dt0 = s_.dt_next;
+  init_offset_tie_stiffness(s_);
   // ERODE: a deformable solid whose step TSSF dt_e falls below DTMIN x the first step is deleted
   // (the element pass's TDEL test) instead of the run ending
   if (m_.control.erode_small_steps && m_.control.min_step_factor > 0)
@@ -142,7 +143,7 @@ StepStatus Engine::step() {
 
   // external forces at x^n: loads, then contact penalty forces (walls act on velocities below)
   auto t = Clock::now();
-  const bool has_fext = !contact_.empty() || loads_.has_loads;
+  const bool has_fext = !contact_.empty() || loads_.has_loads || !s.ties.pen_slave.empty();
   if (has_fext) {
     std::fill(s.fext_x.begin(), s.fext_x.end(), 0.0);
     std::fill(s.fext_y.begin(), s.fext_y.end(), 0.0);
@@ -155,6 +156,11 @@ StepStatus Engine::step() {
   }
   if (!contact_.empty()) {
     contact_.apply(m_, s, dt_next);
+    times_.contact += seconds_since(t);
+    t = Clock::now();
+  }
+  if (!s.ties.pen_slave.empty()) {  // _OFFSET ties' springs
+    apply_offset_ties(s);
     times_.contact += seconds_since(t);
     t = Clock::now();
   }
@@ -198,6 +204,7 @@ StepStatus Engine::step() {
     contact_.book_energy(s, dt_n);
     times_.contact += seconds_since(t);
   }
+  if (!s.ties.pen_slave.empty()) book_offset_tie_energy(s, dt_n);
   if (loads_.has_loads || loads_.has_motions) {
     t = Clock::now();
     if (dist_) dist_->book_external_work(s, dt_n);  // rank 0, from the terms its ranks sent

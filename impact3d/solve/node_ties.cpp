@@ -99,10 +99,23 @@ void init_node_ties(const Model& m, State& s) {
   TieState& ts = s.ties;
   ts = TieState{};
   if (m.node_ties.empty()) return;
-  for (const NodeTie& t : m.node_ties) ts.masters.insert(ts.masters.end(), t.seg.begin(), t.seg.end());
+  auto penalty = [&](const NodeTie& t) { return m.tied_contacts[std::size_t(t.contact)].offset == 1; };
+  for (const NodeTie& t : m.node_ties) {
+    if (!penalty(t)) continue;
+    ts.pen_slave.push_back(t.node);
+    ts.pen_seg.push_back(t.seg);
+    ts.pen_w.push_back(t.w);
+    ts.pen_gap.push_back(t.gap);
+    ts.pen_rest.push_back(t.rest);
+  }
+  ts.pen_k.assign(ts.pen_slave.size(), 0.0);
+  ts.pen_f.assign(ts.pen_slave.size(), {});
+  for (const NodeTie& t : m.node_ties)
+    if (!penalty(t)) ts.masters.insert(ts.masters.end(), t.seg.begin(), t.seg.end());
   std::sort(ts.masters.begin(), ts.masters.end());
   ts.masters.erase(std::unique(ts.masters.begin(), ts.masters.end()), ts.masters.end());
   for (const NodeTie& t : m.node_ties) {
+    if (penalty(t)) continue;
     std::array<int, 4> idx{};
     const TiedContact& tc = m.tied_contacts[std::size_t(t.contact)];
     bool turns = tc.rotations && rot_of(s, t.node) >= 0;
@@ -232,6 +245,91 @@ void tie_rotations(State& s, double dt_n) {
   s.kinetic -= sh.rot_kinetic;
   sh.rot_kinetic = calc_rotational_kinetic_energy(s);
   s.kinetic += sh.rot_kinetic;
+}
+
+
+// ---------------------------------------------------------------- _OFFSET ties (penalty springs)
+
+void init_offset_tie_stiffness(State& s) {
+  TieState& ts = s.ties;
+  for (std::size_t t = 0; t < ts.pen_slave.size(); ++t) {
+    // the spring between the slave and its point: omega^2 = k (1 / m_s + sum_a w_a^2 / m_a)
+    double flex = 1 / s.mass[std::size_t(ts.pen_slave[t])];
+    for (int a = 0; a < 4; ++a) {
+      const double w = ts.pen_w[t][std::size_t(a)];
+      if (w != 0) flex += w * w / s.mass[std::size_t(ts.pen_seg[t][std::size_t(a)])];
+    }
+    ts.pen_k[t] = kOffsetTieStepShare * kOffsetTieStepShare / (s.dt0 * s.dt0 * flex);
+  }
+}
+
+namespace {
+
+void cross(const double a[3], const double b[3], double c[3]) {
+  c[0] = a[1] * b[2] - a[2] * b[1], c[1] = a[2] * b[0] - a[0] * b[2], c[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+}  // namespace
+
+void apply_offset_ties(State& s) {
+  TieState& ts = s.ties;
+  // (the ties in order: the same sums for any thread count)
+  for (std::size_t t = 0; t < ts.pen_slave.size(); ++t) {
+    const std::array<int, 4>& seg = ts.pen_seg[t];
+    double X[4][3], p[3] = {0, 0, 0};
+    for (int a = 0; a < 4; ++a) {
+      const std::size_t q = std::size_t(seg[std::size_t(a)]);
+      X[a][0] = s.x[q], X[a][1] = s.y[q], X[a][2] = s.z[q];
+      for (int i = 0; i < 3; ++i) p[i] += ts.pen_w[t][std::size_t(a)] * X[a][i];
+    }
+    double d1[3], d2[3], c[3];
+    for (int i = 0; i < 3; ++i) d1[i] = X[2][i] - X[0][i], d2[i] = X[3][i] - X[1][i];
+    cross(d1, d2, c);
+    const double lc = std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
+    const double n[3] = {c[0] / lc, c[1] / lc, c[2] / lc};
+    const std::size_t k = std::size_t(ts.pen_slave[t]);
+    const double xs[3] = {s.x[k], s.y[k], s.z[k]};
+    const double kk = ts.pen_k[t], gap = ts.pen_gap[t];
+    double r[3];
+    for (int i = 0; i < 3; ++i) r[i] = xs[i] - p[i] - gap * n[i] - ts.pen_rest[t][std::size_t(i)];
+    // U = k |r|^2 / 2: the slave's force -k r, the point's k r by the weights, and the normal's
+    // turning: g = k gap (I - n n) r / |c| conjugate to c = d1 x d2
+    const double rn = r[0] * n[0] + r[1] * n[1] + r[2] * n[2];
+    double g[3], h02[3], h13[3];
+    for (int i = 0; i < 3; ++i) g[i] = kk * gap * (r[i] - rn * n[i]) / lc;
+    cross(d2, g, h02);  // on x2, minus on x0
+    cross(g, d1, h13);  // on x3, minus on x1
+    std::array<double, 15>& f = ts.pen_f[t];
+    for (int i = 0; i < 3; ++i) {
+      f[std::size_t(i)] = -kk * r[i];
+      for (int a = 0; a < 4; ++a) f[std::size_t(3 + 3 * a + i)] = kk * ts.pen_w[t][std::size_t(a)] * r[i];
+      f[std::size_t(3 + 0 + i)] -= h02[i];
+      f[std::size_t(3 + 6 + i)] += h02[i];
+      f[std::size_t(3 + 3 + i)] -= h13[i];
+      f[std::size_t(3 + 9 + i)] += h13[i];
+    }
+    s.fext_x[k] += f[0], s.fext_y[k] += f[1], s.fext_z[k] += f[2];
+    for (int a = 0; a < 4; ++a) {
+      const std::size_t q = std::size_t(seg[std::size_t(a)]);
+      s.fext_x[q] += f[std::size_t(3 + 3 * a)], s.fext_y[q] += f[std::size_t(4 + 3 * a)], s.fext_z[q] += f[std::size_t(5 + 3 * a)];
+    }
+  }
+}
+
+void book_offset_tie_energy(State& s, double dt_n) {
+  // the forces at x^n on the velocities at t^n, (v^{n-1/2} + v^{n+1/2}) / 2 (as the sliding
+  // interfaces book theirs): the springs' energy, booked as contact energy
+  const TieState& ts = s.ties;
+  auto power_on = [&](std::size_t q, const double* f) {
+    return 0.5 * (f[0] * (s.vx_old[q] + s.vx[q]) + f[1] * (s.vy_old[q] + s.vy[q]) + f[2] * (s.vz_old[q] + s.vz[q]));
+  };
+  double power = 0;
+  for (std::size_t t = 0; t < ts.pen_slave.size(); ++t) {
+    const std::array<double, 15>& f = ts.pen_f[t];
+    power += power_on(std::size_t(ts.pen_slave[t]), &f[0]);
+    for (int a = 0; a < 4; ++a) power += power_on(std::size_t(ts.pen_seg[t][std::size_t(a)]), &f[std::size_t(3 + 3 * a)]);
+  }
+  s.contact -= dt_n * power;
 }
 
 }  // namespace impact3d

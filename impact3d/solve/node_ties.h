@@ -13,6 +13,19 @@
 // segment's nodes as the couple f_a = T g_a (sum_a g_a = 0: momentum kept; a rigid turn of a
 // flat segment about n has spin its rate).
 
+// _OFFSET ties (*CONTACT_TIED_NODES_TO_SURFACE_OFFSET, _SURFACE_TO_SURFACE_OFFSET) are penalty
+// springs instead, external forces: the slave is not moved, and with p = sum_a w_a x_a and n the
+// segment's unit normal (its diagonals' cross product c = d1 x d2 normalised) the spring holds
+// r = x_s - p - g n - e = 0 (g the slave's initial offset along n, e the rest of it, zero on a
+// flat segment) with the energy U = k |r|^2 / 2; the forces are U's gradient: -k r on the slave,
+// k w_a r on the segment's nodes, and the normal's turning, G = k g (I - n n) r / |c| as
+// d2 x G on x2 (minus on x0) and G x d1 on x3 (minus on x1).  U depends on relative positions
+// only and turns with the pair: momentum and (e = 0) angular momentum are kept, and the offset
+// turns with the segment.  k = 0.25 / (dt0^2 (1 / m_s + sum_a w_a^2 / m_a)), dt0 the first step:
+// the spring between the slave and its point alone at omega dt = 0.5, inside the margin the
+// elements' 1.8 (TSSFAC 0.9) leaves.  Translations only.  _CONSTRAINED_OFFSET ties are the constraint ties above with
+// the slave left where it is: x_s - p stays its initial vector.
+
 #include "impact3d/model/model.h"
 #include "impact3d/model/state.h"
 
@@ -35,5 +48,13 @@ void tie_slave_velocities(State& s);
 // rotary inertias, the slaves' the weights' mix, and the rotational kinetic energy again.
 void save_tied_rotations(State& s);
 void tie_rotations(State& s, double dt_n);
+
+// _OFFSET ties: the springs' stiffnesses once the first step dt0 is known (Engine::initialize);
+// their forces at x^n into the external forces (s.fext_*); their work once the cycle's
+// velocities are known (s.contact -= dt_n sum f . (v^{n-1/2} + v^{n+1/2}) / 2).
+constexpr double kOffsetTieStepShare = 0.5;  // the spring's omega dt0
+void init_offset_tie_stiffness(State& s);
+void apply_offset_ties(State& s);
+void book_offset_tie_energy(State& s, double dt_n);
 
 }  // namespace impact3d
