@@ -112,9 +112,11 @@ void add_shell_corners(State& s) {
 }
 
 // The points' layout (the table in model/shell_state.h): run after run in the groups' order,
-// a group in blocks one run of width kLanes per whole block, every other shell a run of width 1.
-// Returns the number of points.
+// a group in blocks one run of width kLanes per whole block, every other shell a run of width 1;
+// and the blocks' corner nodes in block order (ShellState::block_nodes).  Returns the number of
+// points.
 std::size_t lay_out_shell_points(ShellState& sh, const std::vector<int>& points) {
+  sh.block_nodes.assign(4 * std::size_t(sh.ns), -1);
   sh.pt_base.assign(std::size_t(sh.ns), 0);
   sh.pt_lane.assign(std::size_t(sh.ns), 0);
   sh.pt_width.assign(std::size_t(sh.ns), 1);
@@ -127,6 +129,11 @@ std::size_t lay_out_shell_points(ShellState& sh, const std::vector<int>& points)
       sh.pt_width[k] = std::uint8_t(width);
     }
     next += std::size_t(width) * std::size_t(points[std::size_t(ord[0])]);  // a group's shells: one section
+    if (width == kLanes) {
+      int* bn = &sh.block_nodes[4 * std::size_t(ord - sh.order.data())];
+      for (int j = 0; j < 4; ++j)
+        for (int l = 0; l < kLanes; ++l) bn[kLanes * j + l] = sh.conn[std::size_t(ord[l])][std::size_t(j)];
+    }
   };
   for (const ShellGroup& g : sh.groups) {
     const int* ord = &sh.order[std::size_t(g.first)];

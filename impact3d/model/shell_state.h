@@ -55,6 +55,9 @@ struct ShellState {
   std::vector<double> area0, area;            // initial and current area
   std::vector<ShellGroup> groups;             // one per material, in material order
   std::vector<int> order;                     // shells group after group, increasing in a group
+  // a block's corner nodes in block order: the block order[i .. i + kLanes) of a group in blocks
+  // has corner j of lane l at block_nodes[4 i + kLanes j + l] (4 per shell; others' unused)
+  std::vector<int> block_nodes;
   std::vector<int> nip;                       // integration points of each shell
   // the points' state, in the layout of the table below (shell_sig_at etc.; never index it by hand)
   std::vector<int> pt_base;                   // per shell: the first point of its run of points

@@ -125,7 +125,7 @@ void process_shell(State& s, const ShellGroup& g, int k, double dt) {
 struct ShellBlockArrays {
   const double *x, *y, *z, *vx, *vy, *vz, *wx, *wy, *wz, *thick;
   const std::array<int, 4>* conn;
-  const int *node_rot, *pt_base;
+  const int *order, *block_nodes, *node_rot, *pt_base;
   const std::uint8_t* pt_width;
   double *sig, *back, *eps_p, *hgq, *drill;
   std::uint8_t* yielded;
@@ -145,6 +145,7 @@ ShellBlockArrays shell_block_arrays(State& s, const ShellGroup& g, const ShellBl
   a.wx = sh.wx.data(), a.wy = sh.wy.data(), a.wz = sh.wz.data();
   a.thick = sh.thick.data();
   a.conn = sh.conn.data();
+  a.order = sh.order.data(), a.block_nodes = sh.block_nodes.data();
   a.node_rot = sh.node_rot.data(), a.pt_base = sh.pt_base.data(), a.pt_width = sh.pt_width.data();
   a.sig = sh.sig.data(), a.back = sh.back.data(), a.eps_p = sh.eps_p.data(), a.hgq = sh.hgq.data();
   a.drill = sh.drill.data(), a.yielded = sh.yielded.data();
@@ -166,10 +167,10 @@ ShellBlockArrays shell_block_arrays(State& s, const ShellGroup& g, const ShellBl
 // A block of kLanes shells ord[0..kLanes) into b: nodal data (as gather_shell), thickness, the
 // points' state, the hourglass resultants and drilling moments (where the kernel reads them).
 void gather_shell_block(const ShellBlockArrays& a, const int* ord, ShellBlock& b) {
-  for (int l = 0; l < kLanes; ++l) {
-    const std::size_t k = std::size_t(ord[l]);
-    for (int j = 0; j < 4; ++j) {
-      const std::size_t n = std::size_t(a.conn[k][std::size_t(j)]);
+  const int* bn = a.block_nodes + 4 * (ord - a.order);  // the block's corner nodes, lane after lane
+  for (int j = 0; j < 4; ++j) {
+    IMPACT3D_FOR_LANES {
+      const int n = bn[kLanes * j + l];
       b.x[j][0][l] = a.x[n];
       b.x[j][1][l] = a.y[n];
       b.x[j][2][l] = a.z[n];
@@ -181,6 +182,9 @@ void gather_shell_block(const ShellBlockArrays& a, const int* ord, ShellBlock& b
       b.w[j][1][l] = r >= 0 ? a.wy[r] : 0.0;
       b.w[j][2][l] = r >= 0 ? a.wz[r] : 0.0;
     }
+  }
+  for (int l = 0; l < kLanes; ++l) {
+    const std::size_t k = std::size_t(ord[l]);
     if (a.drilling)
       for (int j = 0; j < 4; ++j) b.drill[j][l] = a.drill[4 * k + std::size_t(j)];
     b.h[l] = a.thick[k];
