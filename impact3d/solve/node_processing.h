@@ -59,4 +59,12 @@ void update_positions_for_nodes(State& s, double dt_next);
 // s.kinetic from the current velocities (same chunked sum as the passes above).
 void calc_kinetic_energy_for_nodes(State& s);
 
+// The time-centred energy book's product of a velocity's v^{n-1/2} (x0, y0, z0) and v^{n+1/2}
+// (x1, y1, z1): v^{n-1/2} . (v^{n-1/2} + r (v^{n+1/2} - v^{n-1/2})), r = dt^{n-1/2} / dt^n, the
+// increment as a step equal to the last would have made it (r = 1 but where the step changes; the
+// run checks' time-centred ratio, run_cycle.h, for nodes and rotational degrees of freedom).
+inline double time_centred_product(double x0, double y0, double z0, double x1, double y1, double z1, double r) {
+  return x0 * (x0 + r * (x1 - x0)) + y0 * (y0 + r * (y1 - y0)) + z0 * (z0 + r * (z1 - z0));
+}
+
 }  // namespace impact3d

@@ -5,6 +5,7 @@
 
 #include "common/messages.h"
 #include "impact3d/parallel/comm.h"
+#include "impact3d/solve/node_processing.h"
 #include "impact3d/solve/run_report.h"
 
 namespace impact3d {
@@ -52,15 +53,13 @@ std::string RunCycle::cycle_line() const {
 // checks"). NaN before the first cycle and in distributed runs (each rank holds its own v^{n-1/2}).
 double RunCycle::time_centred_ratio() const {
   if (!before_.known || parallel::size() > 1) return std::numeric_limits<double>::quiet_NaN();
-  // v^{n-1/2} . v*, v* = v^{n-1/2} + r (v^{n+1/2} - v^{n-1/2}), r = dt^{n-1/2} / dt^n: the increment as a
-  // step equal to the last would have made it (1 but where the step changed, as on the last step,
-  // which lands on the end time: without it that step's change alone moved the ratio)
+  // r: 1 but where the step changed, as on the last step, which lands on the end time (without it
+  // that step's change alone moved the ratio; time_centred_product)
   const double r = before_.dt_half > 0 && s_.dt_vel > 0 ? before_.dt_half / s_.dt_vel : 1.0;
   double ke = s_.shells.rot_kinetic_centred;
   for (int i = 0; i < s_.nn; ++i) {
     const std::size_t k = std::size_t(i);
-    const double ux = s_.vx_old[k], uy = s_.vy_old[k], uz = s_.vz_old[k];
-    ke += 0.5 * s_.mass[k] * (ux * (ux + r * (s_.vx[k] - ux)) + uy * (uy + r * (s_.vy[k] - uy)) + uz * (uz + r * (s_.vz[k] - uz)));
+    ke += 0.5 * s_.mass[k] * time_centred_product(s_.vx_old[k], s_.vy_old[k], s_.vz_old[k], s_.vx[k], s_.vy[k], s_.vz[k], r);
   }
   const double e = ke + before_.elements + 0.5 * (before_.contact_walls + s_.contact + s_.wall_work);
   const double ref = s_.initial_total + 0.5 * (before_.external + s_.external_work);

@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "impact3d/element/shell_fi.h"
+#include "impact3d/solve/node_processing.h"
 #include "impact3d/solve/rotational_corners.h"
 
 namespace impact3d {
@@ -382,15 +383,6 @@ ShellPassResult calc_forces_for_shells(const Model& m, State& s) {
   return book_shell_results(s);
 }
 
-namespace {
-
-// a^{n-1/2} . (a^{n-1/2} + r (a^{n+1/2} - a^{n-1/2})) for a velocity's components (update_rotational_velocities_for_nodes)
-double centred_product(double x0, double y0, double z0, double x1, double y1, double z1, double r) {
-  return x0 * (x0 + r * (x1 - x0)) + y0 * (y0 + r * (y1 - y0)) + z0 * (z0 + r * (z1 - z0));
-}
-
-}  // namespace
-
 void update_rotational_velocities_for_nodes(State& s, double dt_n) {
   ShellState& sh = s.shells;
   if (sh.nr == 0) return;
@@ -411,7 +403,7 @@ void update_rotational_velocities_for_nodes(State& s, double dt_n) {
       sh.wx[R] = w[0];
       sh.wy[R] = w[1];
       sh.wz[R] = w[2];
-      ke_centred += 0.5 * sh.inertia[R] * centred_product(w0x, w0y, w0z, w[0], w[1], w[2], r_step);
+      ke_centred += 0.5 * sh.inertia[R] * time_centred_product(w0x, w0y, w0z, w[0], w[1], w[2], r_step);
       continue;
     }
     double mx = 0, my = 0, mz = 0;
@@ -426,7 +418,7 @@ void update_rotational_velocities_for_nodes(State& s, double dt_n) {
     if (!(f & 1)) sh.wx[R] -= dt_n * mx * inv;
     if (!(f & 2)) sh.wy[R] -= dt_n * my * inv;
     if (!(f & 4)) sh.wz[R] -= dt_n * mz * inv;
-    ke_centred += 0.5 * sh.inertia[R] * centred_product(w0x, w0y, w0z, sh.wx[R], sh.wy[R], sh.wz[R], r_step);
+    ke_centred += 0.5 * sh.inertia[R] * time_centred_product(w0x, w0y, w0z, sh.wx[R], sh.wy[R], sh.wz[R], r_step);
   }
   sh.rot_kinetic_centred = ke_centred;
   sh.rot_kinetic = calc_rotational_kinetic_energy(s);

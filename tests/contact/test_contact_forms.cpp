@@ -23,6 +23,7 @@
 #include "../support/deck_text.h"
 
 using namespace impact3d;
+using test_support::card;
 using test_support::I;
 
 namespace {
@@ -85,11 +86,6 @@ struct TwoBlocks {
 
 test_support::ReadDeck read(const std::string& text) { return test_support::read_deck_text(text, "deck.k"); }
 
-std::string card(std::initializer_list<std::string> f) {
-  std::string s;
-  for (const auto& x : f) s += x;
-  return s + "\n";
-}
 
 // A contact's keyword with side A = part 2 (the impactor), side B = part 1 (type 3 parts).
 std::string two_sided(const std::string& kw) {

@@ -31,6 +31,7 @@
 #include "tests/support/threaded_run.h"
 
 using namespace impact3d;
+using test_support::card;
 using test_support::I;
 
 namespace {
@@ -41,11 +42,6 @@ std::string R(double v, int w = 10) {
   return b;
 }
 
-std::string card(std::initializer_list<std::string> f) {
-  std::string s;
-  for (const auto& x : f) s += x;
-  return s + "\n";
-}
 
 constexpr double kRho = 7850, kE = 2.1e11;
 

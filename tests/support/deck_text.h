@@ -5,6 +5,7 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <initializer_list>
 #include <sstream>
 #include <string>
 
@@ -76,6 +77,13 @@ inline std::string I(long v, int w = 10) {
   char b[32];
   std::snprintf(b, sizeof b, "%*ld", w, v);
   return b;
+}
+
+// A card: its fields, already formatted, on one line.
+inline std::string card(std::initializer_list<std::string> fields) {
+  std::string s;
+  for (const auto& f : fields) s += f;
+  return s + "\n";
 }
 
 // A keyword deck's real field in w columns: 6 significant digits in a 10-column field, 12 in a
