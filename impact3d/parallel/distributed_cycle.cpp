@@ -322,6 +322,13 @@ void DistributedCycle::setup(const State& s, const Model& m, const LoadSet& load
   gather(&mine, int(sizeof(int)), state_bytes_.data(), one.data(), displacements(one).data());
   state_displs_ = displacements(state_bytes_);
   if (leads()) state_all_.assign(std::size_t(state_displs_.back() + state_bytes_.back()) / sizeof(double), 0.0);
+  // the velocities' gather: each rank's own nodes, 6 values each
+  vel_buf_.assign(6 * dom_.owned_nodes.size(), 0.0);
+  vel_bytes_.assign(std::size_t(nranks_), 0);
+  for (int q = 0; q < nranks_; ++q)
+    vel_bytes_[std::size_t(q)] = leads() ? int(6 * rank_nodes_[std::size_t(q)].size() * sizeof(double)) : 0;
+  vel_displs_ = displacements(vel_bytes_);
+  if (leads()) vel_all_.assign(6 * std::size_t(s.nn), 0.0);
 }
 
 ElementPassHooks DistributedCycle::element_hooks() {
@@ -496,6 +503,26 @@ void DistributedCycle::gather_state(State& s) {
     unpack_rank_state(s, q, state_all_.data() + state_displs_[std::size_t(q)] / int(sizeof(double)));
 }
 
+void DistributedCycle::gather_velocities(State& s) {
+  const Timer t(gather_s_);
+  double* out = vel_buf_.data();
+  for (int n : dom_.owned_nodes) {
+    const std::size_t k = std::size_t(n);
+    *out++ = s.vx_old[k], *out++ = s.vy_old[k], *out++ = s.vz_old[k];
+    *out++ = s.vx[k], *out++ = s.vy[k], *out++ = s.vz[k];
+  }
+  gather(vel_buf_.data(), int(vel_buf_.size() * sizeof(double)), vel_all_.data(), vel_bytes_.data(),
+         vel_displs_.data());
+  if (!leads()) return;
+  const double* in = vel_all_.data();
+  for (int q = 0; q < nranks_; ++q)
+    for (int n : rank_nodes_[std::size_t(q)]) {
+      const std::size_t k = std::size_t(n);
+      s.vx_old[k] = *in++, s.vy_old[k] = *in++, s.vz_old[k] = *in++;
+      s.vx[k] = *in++, s.vy[k] = *in++, s.vz[k] = *in++;
+    }
+}
+
 void DistributedCycle::unpack_rank_state(State& s, int q, const double* from) {
   Unpacker up{from};
   for (int n : rank_nodes_[std::size_t(q)]) visit_node(s, std::size_t(n), up);
@@ -527,6 +554,9 @@ int DistributedCycle::follow(Engine& engine) {
         break;
       case Op::gather:
         engine.gather_for_output();
+        break;
+      case Op::gather_velocities:
+        engine.gather_velocities();
         break;
       case Op::finish:
         return c.code;

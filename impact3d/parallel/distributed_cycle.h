@@ -26,7 +26,7 @@
 // Rank 0 leads: it runs the run driver (outputs, schedule, run checks, messages) and tells the
 // other ranks what to do next (initialize, step, gather for output, finish); before an output
 // it gathers every rank's nodes, solids and corner forces, so that it writes the same files
-// as one process.
+// as one process; before the run checks, every node's velocities (the time-centred ratio).
 
 #include <string>
 #include <vector>
@@ -77,6 +77,9 @@ class DistributedCycle {
   void book_external_work(State& s, double dt_n);
   // Rank 0 receives every rank's nodes, solids and corner forces (collective).
   void gather_state(State& s);
+  // Rank 0 receives every rank's nodes' v^{n-1/2} and v^{n+1/2} (s.vx_old..., s.vx...), the
+  // run checks' time-centred ratio (collective; solve/run_cycle.h).
+  void gather_velocities(State& s);
 
   // The leader's commands (rank 0), and the other ranks' loop that follows them until finish;
   // follow returns the exit code rank 0 finished with.
@@ -85,7 +88,7 @@ class DistributedCycle {
   double cycle_comm_seconds() const { return comm_s_; }
   double output_gather_seconds() const { return gather_s_; }
 
-  enum class Op : int { initialize = 1, step, gather, finish };
+  enum class Op : int { initialize = 1, step, gather, finish, gather_velocities };
   void announce(Op op, double land_time = -1, int code = 0);
   int follow(Engine& engine);
 
@@ -125,6 +128,8 @@ class DistributedCycle {
   std::vector<double> terms_, all_terms_;     // this rank's terms; every slot's (rank 0)
   std::vector<double> state_buf_, state_all_;
   std::vector<int> state_bytes_, state_displs_;
+  std::vector<double> vel_buf_, vel_all_;       // the velocities' gather: 6 per own node
+  std::vector<int> vel_bytes_, vel_displs_;
   double comm_s_ = 0, gather_s_ = 0;
 };
 

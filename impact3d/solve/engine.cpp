@@ -53,6 +53,12 @@ void Engine::gather_for_output() {
   dist_->gather_state(s_);
 }
 
+void Engine::gather_velocities() {
+  if (!dist_) return;
+  if (dist_->leads()) dist_->announce(parallel::DistributedCycle::Op::gather_velocities);
+  dist_->gather_velocities(s_);
+}
+
 void Engine::release_followers(int code) {
   if (dist_ && dist_->leads()) dist_->announce(parallel::DistributedCycle::Op::finish, -1, code);
   dist_ = nullptr;

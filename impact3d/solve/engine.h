@@ -70,6 +70,9 @@ class Engine {
   parallel::DistributedCycle* distribution() const { return dist_; }
   // Before an output: rank 0 gathers every rank's part of the State (nothing in one process).
   void gather_for_output();
+  // Before the run checks' time-centred ratio: rank 0 gathers every node's v^{n-1/2} and
+  // v^{n+1/2} (nothing in one process).
+  void gather_velocities();
   // Rank 0 at the end of a distributed run: the other ranks stop with this exit code.
   void release_followers(int code);
 

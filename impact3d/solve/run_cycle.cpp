@@ -4,7 +4,6 @@
 #include <limits>
 
 #include "common/messages.h"
-#include "impact3d/parallel/comm.h"
 #include "impact3d/solve/node_processing.h"
 #include "impact3d/solve/run_report.h"
 
@@ -50,9 +49,10 @@ std::string RunCycle::cycle_line() const {
 // (nodes, and rotations: ShellState::rot_kinetic_centred) with the element energies at x^n, and the
 // contact, wall and external work at the mean of their books before and after the step. For
 // linear forces the central-difference update holds it exactly (docs/command-line.md, "Run
-// checks"). NaN before the first cycle and in distributed runs (each rank holds its own v^{n-1/2}).
+// checks"). NaN before the first cycle. A distributed run gathers every node's velocities to rank
+// 0 first (check_now), which makes the same sum in node order.
 double RunCycle::time_centred_ratio() const {
-  if (!before_.known || parallel::size() > 1) return std::numeric_limits<double>::quiet_NaN();
+  if (!before_.known) return std::numeric_limits<double>::quiet_NaN();
   // r: 1 but where the step changed, as on the last step, which lands on the end time (without it
   // that step's change alone moved the ratio; time_centred_product)
   const double r = before_.dt_half > 0 && s_.dt_vel > 0 ? before_.dt_half / s_.dt_vel : 1.0;
@@ -67,6 +67,7 @@ double RunCycle::time_centred_ratio() const {
 }
 
 std::vector<std::string> RunCycle::check_now() {
+  if (before_.known) engine_.gather_velocities();  // a distributed run: every rank's nodes to rank 0
   return checks_.check_state({model_, s_, refused_contacts_, time_centred_ratio()});
 }
 

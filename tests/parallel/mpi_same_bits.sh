@@ -5,10 +5,13 @@
 #     database d3plot*, the time histories d3thdt* and the ASCII files (glstat, matsum, nodout,
 #     elout, rwforc) byte for byte; d3hsp must state the partition over NP ranks and, but for
 #     that statement and its clock readings, be the one process's d3hsp line for line.
+#   mpi_same_bits.sh same IMPACT3D DECK NP WORKDIR EXPECT
+#     the same, and both d3hsp must have a line that matches the extended regular expression
+#     EXPECT (what the deck is there to show, e.g. a run check's message).
 #   mpi_same_bits.sh refused IMPACT3D DECK NP WORKDIR
 #     the deck must be refused under mpirun -np NP: exit code 3 and message 3007.
 set -uo pipefail
-mode=$1 impact3d=$2 deck=$3 np=$4 work=$5
+mode=$1 impact3d=$2 deck=$3 np=$4 work=$5 expect=${6:-}
 flags=(--oversubscribe)
 [ "$(id -u)" = 0 ] && flags+=(--allow-run-as-root)
 # ranks that wait yield the core (this machine runs more ranks than it has cores)
@@ -42,6 +45,11 @@ numbers() {
 }
 diff -B <(numbers "$work/one/d3hsp") <(numbers "$work/np$np/d3hsp") || { echo "differs: d3hsp"; exit 1; }
 n=$((n + 1))
+if [ -n "$expect" ]; then
+  for d in one "np$np"; do
+    grep -E -m 1 "$expect" "$work/$d/d3hsp" || { echo "no line of $d/d3hsp matches: $expect"; exit 1; }
+  done
+fi
 count() { ls "$1" | grep -c -E '^(d3plot|d3thdt)'; }
 [ "$(count "$work/one")" = "$(count "$work/np$np")" ] || { echo "not the same number of database files"; exit 1; }
 grep -A $((np + 2)) "distributed run: $np MPI ranks" "$work/np$np/d3hsp" || { echo "d3hsp does not state the partition"; exit 1; }
