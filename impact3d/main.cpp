@@ -381,10 +381,9 @@ int end_with_input_errors(const Diagnostics& diag, const std::string& deck, std:
 
 // Under mpirun with more than one rank: what the distributed cycle does not carry yet is
 // refused (3007) with its exit code; -1 when the run may go on.
-int refuse_if_not_distributable(const RunOptions& opt, const Model& model, std::ofstream& printed) {
+int refuse_if_not_distributable(const Model& model, std::ofstream& printed) {
   if (parallel::size() <= 1) return -1;
-  const std::string why = !opt.restart.empty() ? std::string("restarts (r=)")
-                                               : parallel::distributed_refusal(model, parallel::size());
+  const std::string why = parallel::distributed_refusal(model, parallel::size());
   if (why.empty()) return -1;
   const Diagnostic d{3007, Severity::error, Location{}, why + " (" + std::to_string(parallel::size()) + " ranks)"};
   std::cerr << "impact3d: " << render(d) << "\n";
@@ -420,7 +419,7 @@ int run_main(int argc, char** argv) {
     std::cout << " input check: 0 errors, " << diag.warning_count() << " warning(s)\n";
     return exit_code::ok;
   }
-  if (const int rc = refuse_if_not_distributable(opt, model, printed); rc >= 0) return rc;
+  if (const int rc = refuse_if_not_distributable(model, printed); rc >= 0) return rc;
   if (opt.restart.empty()) write_model_summary(printed, model);
   if (diag.warning_count()) diag.print(printed);
   // the starter's last step: the mesh in memory order (init/mesh_order.h); the summary above

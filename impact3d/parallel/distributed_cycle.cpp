@@ -2,10 +2,14 @@
 #include "impact3d/parallel/distributed_cycle.h"
 
 #include <chrono>
+#include <cstdio>
 #include <cstring>
 #include <stdexcept>
 
+#include "common/messages.h"
+#include "impact3d/element/shell_fi.h"
 #include "impact3d/material/material_types.h"
+#include "impact3d/output/restart_dump.h"
 #include "impact3d/parallel/comm.h"
 #include "impact3d/solve/engine.h"
 #include "impact3d/solve/beam_processing.h"
@@ -18,11 +22,12 @@ namespace {
 constexpr int kTagCorners = 1, kTagKinematics = 2;
 constexpr std::size_t kBlockCorners = 8 * kLanes;
 
-// Every value of node k that the outputs or a restart dump read, in a fixed order.
+// Every value of node k that the outputs or a restart dump read, in a fixed order (the external
+// forces: their owner's are one process's, a restart dump holds them).
 template <class F>
 void visit_node(State& s, std::size_t k, F&& f) {
   for (std::vector<double>* v : {&s.x, &s.y, &s.z, &s.vx, &s.vy, &s.vz, &s.ax, &s.ay, &s.az, &s.vx_old, &s.vy_old,
-                                 &s.vz_old})
+                                 &s.vz_old, &s.fext_x, &s.fext_y, &s.fext_z})
     if (!v->empty()) f((*v)[k]);
 }
 
@@ -57,13 +62,15 @@ void visit_solid(State& s, std::size_t e, F&& f) {
 }
 
 // Every value of shell k that changes in the cycle and is not among the shell results that go
-// to every rank each cycle (ShellRecord): State::visit_dynamic_fields' shell part.
+// to every rank each cycle (ShellRecord): State::visit_dynamic_fields' shell part.  `points`:
+// the shell's integration points, all of them (ELFORM 16: 5 x NIP, shell_fi.h; the outputs read
+// the first NIP, a restart dump all).
 template <class F>
-void visit_shell(State& s, std::size_t k, F&& f) {
+void visit_shell(State& s, std::size_t k, int points, F&& f) {
   ShellState& sh = s.shells;
   f(sh.area[k]);
-  const int K = int(k), nip = sh.nip[k];
-  for (int p = 0; p < nip; ++p) {
+  const int K = int(k);
+  for (int p = 0; p < points; ++p) {
     for (int c = 0; c < 5; ++c) f(sh.sig[shell_sig_at(sh, K, p, c)]);
     if (!sh.back.empty())
       for (int c = 0; c < 6; ++c) f(sh.back[shell_back_at(sh, K, p, c)]);
@@ -313,8 +320,20 @@ void DistributedCycle::setup(const State& s, const Model& m, const LoadSet& load
   Counter cnt;
   for (int n : dom_.owned_nodes) visit_node(sm, std::size_t(n), cnt);
   for (int b : dom_.owned_blocks) visit_block(sm, std::size_t(b), cnt);
-  for (int k : dom_.owned_shells) visit_shell(sm, std::size_t(k), cnt);
+  shell_points_.assign(std::size_t(s.shells.ns), 0);
+  for (const ShellGroup& g : s.shells.groups)
+    for (int i = g.first; i < g.first + g.count; ++i) {
+      const std::size_t k = std::size_t(s.shells.order[std::size_t(i)]);
+      shell_points_[k] = shell_points_per_shell(g.constants.elform, s.shells.nip[k]);
+    }
+  for (int k : dom_.owned_shells) visit_shell(sm, std::size_t(k), shell_points_[std::size_t(k)], cnt);
   for (int b : dom_.owned_beams) visit_beam(sm, std::size_t(b), cnt);
+  // the prescribed motions of nodes: each on the rank that owns its node (their angles)
+  rank_motions_.assign(std::size_t(nranks_), {});
+  for (std::size_t j = 0; j < m.prescribed_motions.size(); ++j)
+    if (const int n = m.prescribed_motions[j].node; n >= 0)
+      rank_motions_[std::size_t(dom_.node_rank[std::size_t(n)])].push_back(int(j));
+  cnt.n += rank_motions_[std::size_t(rank_)].size();
   state_buf_.assign(cnt.n, 0.0);
   const int mine = int(cnt.n * sizeof(double));
   state_bytes_.assign(std::size_t(nranks_), 0);
@@ -494,8 +513,9 @@ void DistributedCycle::gather_state(State& s) {
   Packer pk{state_buf_.data()};
   for (int n : dom_.owned_nodes) visit_node(s, std::size_t(n), pk);
   for (int b : dom_.owned_blocks) visit_block(s, std::size_t(b), pk);
-  for (int k : dom_.owned_shells) visit_shell(s, std::size_t(k), pk);
+  for (int k : dom_.owned_shells) visit_shell(s, std::size_t(k), shell_points_[std::size_t(k)], pk);
   for (int b : dom_.owned_beams) visit_beam(s, std::size_t(b), pk);
+  for (int j : rank_motions_[std::size_t(rank_)]) pk(s.motion_angle[std::size_t(j)]);
   gather(state_buf_.data(), int(state_buf_.size() * sizeof(double)), state_all_.data(), state_bytes_.data(),
          state_displs_.data());
   if (!leads()) return;
@@ -527,8 +547,20 @@ void DistributedCycle::unpack_rank_state(State& s, int q, const double* from) {
   Unpacker up{from};
   for (int n : rank_nodes_[std::size_t(q)]) visit_node(s, std::size_t(n), up);
   for (int b : rank_blocks_[std::size_t(q)]) visit_block(s, std::size_t(b), up);
-  for (int k : rank_shells_[std::size_t(q)]) visit_shell(s, std::size_t(k), up);
+  for (int k : rank_shells_[std::size_t(q)]) visit_shell(s, std::size_t(k), shell_points_[std::size_t(k)], up);
   for (int b : rank_beams_[std::size_t(q)]) visit_beam(s, std::size_t(b), up);
+  for (int j : rank_motions_[std::size_t(q)]) up(s.motion_angle[std::size_t(j)]);
+}
+
+void DistributedCycle::resume(Engine& engine) {
+  try {
+    SlidingInterfaces::RestartData cd;
+    read_restart_dump_state(restart_path_, engine.state(), cd);
+    engine.contact().restore(cd);
+  } catch (const std::exception& ex) {  // rank 0 read it: a file that changed under the run
+    std::fprintf(stderr, "impact3d: rank %d: restart dump %s: %s\n", rank_, restart_path_.c_str(), ex.what());
+    abort(exit_code::file_error);
+  }
 }
 
 void DistributedCycle::announce(Op op, double land_time, int code) {
@@ -557,6 +589,9 @@ int DistributedCycle::follow(Engine& engine) {
         break;
       case Op::gather_velocities:
         engine.gather_velocities();
+        break;
+      case Op::resume:
+        resume(engine);
         break;
       case Op::finish:
         return c.code;

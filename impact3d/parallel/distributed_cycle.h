@@ -26,7 +26,9 @@
 // Rank 0 leads: it runs the run driver (outputs, schedule, run checks, messages) and tells the
 // other ranks what to do next (initialize, step, gather for output, finish); before an output
 // it gathers every rank's nodes, solids and corner forces, so that it writes the same files
-// as one process; before the run checks, every node's velocities (the time-centred ratio).
+// as one process (a restart dump too: every point of every shell, the motions' angles); before
+// the run checks, every node's velocities (the time-centred ratio).  A restart: every rank
+// reads the dump once rank 0 has (Op::resume).
 
 #include <string>
 #include <vector>
@@ -88,12 +90,16 @@ class DistributedCycle {
   double cycle_comm_seconds() const { return comm_s_; }
   double output_gather_seconds() const { return gather_s_; }
 
-  enum class Op : int { initialize = 1, step, gather, finish, gather_velocities };
+  enum class Op : int { initialize = 1, step, gather, finish, gather_velocities, resume };
   void announce(Op op, double land_time = -1, int code = 0);
   int follow(Engine& engine);
+  // A restart (r=): the dump every rank reads when rank 0 has read it (Op::resume; the same
+  // dump on every rank, as one process restores it).
+  void restart_from(const std::string& path) { restart_path_ = path; }
 
  private:
   static void after_blocks(void* self, State& s);
+  void resume(Engine& engine);
   void share_block_results(State& s);
   void share_shell_results(State& s);
   void send_corner_forces(State& s);
@@ -109,6 +115,9 @@ class DistributedCycle {
   std::vector<std::vector<int>> rank_shells_;  // every rank's shells, chunk after chunk
   std::vector<std::vector<int>> rank_beams_;   // every rank's beams, chunk after chunk
   std::vector<std::vector<int>> rank_nodes_;   // every rank's nodes, increasing (rank 0 only)
+  std::vector<std::vector<int>> rank_motions_; // every rank's prescribed motions of nodes, increasing
+  std::vector<int> shell_points_;              // per shell: its integration points (shell_fi.h)
+  std::string restart_path_;
   // buffers, sized once
   std::vector<BlockResult> block_buf_;
   std::vector<int> block_bytes_, block_displs_;

@@ -61,6 +61,7 @@ int run_simulation(const Model& model, const RunOptions& opt, std::ostream& prin
   if (parallel::size() > 1) {
     distributed = std::make_unique<parallel::DistributedCycle>();
     engine.distribute(distributed.get());
+    distributed->restart_from(opt.restart);
     if (!distributed->leads()) return distributed->follow(engine);
   }
   auto finish = [&engine](int code) {

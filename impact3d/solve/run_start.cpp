@@ -18,6 +18,9 @@ bool resume(Engine& engine, const std::string& path, OutputCursor& cursor, RunLo
     SlidingInterfaces::RestartData cd;
     read_restart_dump_state(path, engine.state(), cd);
     engine.contact().restore(cd);
+    // a distributed run: every other rank reads the same dump now
+    if (parallel::DistributedCycle* d = engine.distribution(); d && d->leads())
+      d->announce(parallel::DistributedCycle::Op::resume);
   } catch (const std::exception& ex) {
     log.file_error(4005, path, ex.what());
     log.line("\n E r r o r   t e r m i n a t i o n   (restart dump is invalid)");

@@ -8,6 +8,11 @@
 #   mpi_same_bits.sh same IMPACT3D DECK NP WORKDIR EXPECT
 #     the same, and both d3hsp must have a line that matches the extended regular expression
 #     EXPECT (what the deck is there to show, e.g. a run check's message).
+#   mpi_same_bits.sh restart IMPACT3D DECK NP WORKDIR CYCLES
+#     DECK with a restart dump every CYCLES cycles (*DATABASE_BINARY_D3DUMP added): one process
+#     and mpirun -np NP write the same dumps byte for byte; then mpirun -np NP restarts from the
+#     first dump (r=d3dump01) and its plot database, time histories, ASCII files and dumps are the
+#     uninterrupted one process's byte for byte.
 #   mpi_same_bits.sh refused IMPACT3D DECK NP WORKDIR
 #     the deck must be refused under mpirun -np NP: exit code 3 and message 3007.
 set -uo pipefail
@@ -25,6 +30,32 @@ if [ "$mode" = refused ]; then
   [ $rc = 3 ] || { echo "exit code $rc, not 3"; exit 1; }
   grep -q "error 3007" "$work/np$np/log" || { echo "no message 3007"; exit 1; }
   echo "refused as expected on $np ranks"
+  exit 0
+fi
+if [ "$mode" = restart ]; then
+  cycles=$6
+  sed "1a *DATABASE_BINARY_D3DUMP\\n$(printf '%10d' "$cycles")" "$deck" > "$work/deck.k"
+  (cd "$work/one" && "$impact3d" i=../deck.k ncpu=1 > log 2>&1) || { cat "$work/one/log"; echo "one process failed"; exit 1; }
+  (cd "$work/np$np" && mpirun "${flags[@]}" -np "$np" "$impact3d" i=../deck.k ncpu=1 > log 2>&1) ||
+    { cat "$work/np$np/log"; echo "mpirun -np $np failed"; exit 1; }
+  [ -e "$work/one/d3dump01" ] || { echo "no restart dump d3dump01"; exit 1; }
+  n=0
+  for f in "$work/one"/d3dump*; do
+    n=$((n + 1))
+    cmp "$f" "$work/np$np/$(basename "$f")" || { echo "differs: $(basename "$f") of the first run"; exit 1; }
+  done
+  echo "the same $n restart dumps, one process and $np ranks"
+  (cd "$work/np$np" && mpirun "${flags[@]}" -np "$np" "$impact3d" r=d3dump01 ncpu=1 > rlog 2>&1) ||
+    { cat "$work/np$np/rlog"; echo "mpirun -np $np r=d3dump01 failed"; exit 1; }
+  grep -q "restart from d3dump01 at cycle $cycles" "$work/np$np/d3hsp" || { echo "d3hsp does not state the restart"; exit 1; }
+  n=0
+  for f in "$work/one"/d3plot* "$work/one"/d3thdt* "$work/one"/d3dump* "$work/one"/{glstat,matsum,nodout,elout,rwforc}; do
+    [ -e "$f" ] || continue
+    n=$((n + 1))
+    cmp "$f" "$work/np$np/$(basename "$f")" || { echo "differs after the restart: $(basename "$f")"; exit 1; }
+  done
+  grep "N o r m a l" "$work/np$np/rlog"
+  echo "same bits after a restart: $n files, one process and $np ranks"
   exit 0
 fi
 (cd "$work/one" && "$impact3d" i="$deck" ncpu=1 > log 2>&1) || { cat "$work/one/log"; echo "one process failed"; exit 1; }
