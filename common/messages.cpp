@@ -110,6 +110,7 @@ const std::vector<MessageDef> kCatalog = {
     {4004, S::error, "plot database write failed"},
     {4005, S::error, "restart dump is invalid"},
     {4006, S::error, "output files do not match the restart dump (cannot continue them)"},
+    {4007, S::error, "the run diverged: its energy grew without a source"},
     // 5000-5099: run-time information
     {5001, S::info, "stop requested by signal (sense switch sw1): dump and plot state written"},
     {5002, S::info, "status requested (sense switch sw2)"},

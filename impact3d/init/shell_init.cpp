@@ -66,7 +66,7 @@ const MaterialParam* refused_shell_param(const MaterialData& md, const char** fe
 }
 
 double shell_rotary_inertia(double corner_mass, double h, double area) {
-  return corner_mass * (h * h + area) / 12.0;
+  return corner_mass * std::max(h * h / 12.0, area / 8.0);
 }
 
 double corner_fraction(const std::array<int, 4>& c, int j) {

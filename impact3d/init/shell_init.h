@@ -24,8 +24,10 @@ std::string shell_material_numbers();
 // asks for), or nullptr.
 const MaterialParam* refused_shell_param(const MaterialData& md, const char** feature);
 
-// Rotary inertia that a shell corner of mass m gives its node: m (h^2 + A) / 12 (the scaled
-// rotary inertia of Kennedy, Belytschko and Lin 1986, so that the rotations never set the step).
+// Rotary inertia that a shell corner of mass m gives its node: m max(h^2 / 12, A / 8) (the scaled
+// rotary inertia of Hughes, Cohen and Haroun 1978 and Kennedy, Belytschko and Lin 1986): the
+// thickness-shear mode (every node turning alike) then allows 1.095 L / c for any nu >= 0, so the
+// rotations never set the step (docs/shells.md, "Kinks and the rotary inertia").
 double shell_rotary_inertia(double corner_mass, double h, double area);
 
 // Share of a shell's mass at corner j: a quadrilateral 1/4 each; a triangle (n3 == n4) 1/3 per

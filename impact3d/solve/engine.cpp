@@ -130,6 +130,15 @@ StepStatus Engine::initialize() {
   return StepStatus::ok;
 }
 
+// Whether the energy books say the run has blown up: the total energy above
+// kDivergedEnergyRatio times the initial energy plus the external work (message 4007). A
+// physical run never gets there; an unstable one does within a few cycles of leaving the band
+// of warning 5102, long before its elements turn inside out (if they ever do).
+bool energy_diverged(const State& s) {
+  const double ref = s.initial_total + s.external_work;
+  return ref > 0 && s.total_energy() > kDivergedEnergyRatio * ref;
+}
+
 StepStatus Engine::step() {
   State& s = s_;
   if (dist_ && dist_->leads()) dist_->announce(parallel::DistributedCycle::Op::step, land_time_);
@@ -240,6 +249,7 @@ StepStatus Engine::step() {
     error_elem_ = -1;
     return StepStatus::non_finite;
   }
+  if (energy_diverged(s)) return StepStatus::diverged;
   if (m_.control.min_step_factor > 0 && !m_.control.erode_small_steps && s.dt_next < m_.control.min_step_factor * s.dt0 &&
       !finished())
     return StepStatus::dt_too_small;

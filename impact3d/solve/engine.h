@@ -16,7 +16,7 @@ namespace parallel {
 class DistributedCycle;
 }
 
-enum class StepStatus { ok, finished, negative_volume, non_finite, dt_too_small };
+enum class StepStatus { ok, finished, negative_volume, non_finite, dt_too_small, diverged };
 
 // Wall-clock seconds spent in each phase of the cycle since initialize() (benchmarks and the
 // run's final report).
@@ -27,6 +27,11 @@ struct PhaseTimes {
   double walls = 0;     // stonewalls and rigid bodies
   double elements = 0;  // element pass and its reductions
 };
+
+// The energy ratio (total / (initial + external work)) above which a run stops as diverged
+// (message 4007, docs/command-line.md "Run checks").
+inline constexpr double kDivergedEnergyRatio = 10.0;
+bool energy_diverged(const State& s);
 
 class Engine {
  public:

@@ -151,7 +151,8 @@ std::vector<std::string> RunChecks::energy_swing(const RunSnapshot& now) {
   std::snprintf(buf, sizeof buf,
                 "%.5f as printed %s, outside the band 1 +- %.2f, while the time-centred ratio is %.5f: no energy "
                 "gained or lost, but much of it in modes near the step's limit (a sudden load on a coarse mesh; a "
-                "smaller TSSFAC or a finer mesh resolves them)",
+                "smaller TSSFAC or a finer mesh resolves them; a printed ratio that keeps growing is a mode past the limit, "
+                "which the time-centred book does not see: the run stops at 10, error 4007)",
                 now.state.energy_ratio(), at_cycle(now.state).c_str(), limits_.energy_ratio_band, now.centred_ratio);
   return {say(5106, buf, "energy ratio swings (modes near the step's limit)")};
 }

@@ -41,7 +41,7 @@ void log_timings(const Engine& engine, const State& s, double seconds, double ou
   }
 }
 
-// Message 4001-4003's detail for an error termination `st`.
+// Message 4001-4003 and 4007: the detail for an error termination `st`.
 std::string error_detail(const Engine& engine, StepStatus st) {
   const Model& model = engine.model();
   const State& s = engine.state();
@@ -64,6 +64,13 @@ std::string error_detail(const Engine& engine, StepStatus st) {
                                                                 : "kinetic energy; element ",
                     e >= 0 ? model.hex_id(e) : 0, s.cycle, s.time);
       break;
+    case StepStatus::diverged:
+      std::snprintf(buf, sizeof buf,
+                    "total energy %.4e is %.4g times the initial energy + external work %.4e (limit %.0f) at cycle "
+                    "%d, time %.6e; the step was set by element %d",
+                    s.total_energy(), s.energy_ratio(), s.initial_total + s.external_work, kDivergedEnergyRatio,
+                    s.cycle, s.time, s.dt_elem >= 0 ? model.hex_id(s.dt_elem) : 0);
+      break;
     default:
       std::snprintf(buf, sizeof buf, "dt %.4e below %.4g x first step, element %d, cycle %d, time %.6e",
                     s.dt_next, model.control.min_step_factor, s.dt_elem >= 0 ? model.hex_id(s.dt_elem) : 0, s.cycle,
@@ -77,6 +84,7 @@ int error_message_of(StepStatus st) {
   switch (st) {
     case StepStatus::negative_volume: return 4001;
     case StepStatus::non_finite: return 4002;
+    case StepStatus::diverged: return 4007;
     default: return 4003;
   }
 }

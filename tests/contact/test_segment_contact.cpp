@@ -414,7 +414,8 @@ TEST(SegmentContact, BlockOnAShellPlateStopsAtItsThicknessOffset) {
 }
 
 // Same bits for 1 and 2 threads, on plates of 32 x 32 segments each (the segment pass goes
-// parallel from 1024 segments).
+// parallel from 1024 segments). TSSFAC 0.5: plates one solid thick struck at 0.9 are not stable
+// (README, "The step": the energy ratio reached 14 by cycle 34, which error 4007 now stops).
 TEST(SegmentContact, SameBitsForOneAndTwoThreads) {
   Deck d;
   d.block(1, 0, 0, 0, 0.32, 0.32, 0.01, 32, 32, 1);
@@ -422,8 +423,10 @@ TEST(SegmentContact, SameBitsForOneAndTwoThreads) {
   d.velocity(b, -5.0);
   const auto r = read_text(d.text(1.0, contact_card("SURFACE_TO_SURFACE", 1, 2, 2)));
   ASSERT_TRUE(r.ok) << r.messages();
-  const State s1 = test_support::run_cycles_on_threads(r.m, 1, 40);
-  const State s2 = test_support::run_cycles_on_threads(r.m, 2, 40);
+  Model m = r.m;
+  m.control.tssf = 0.5;
+  const State s1 = test_support::run_cycles_on_threads(m, 1, 40);
+  const State s2 = test_support::run_cycles_on_threads(m, 2, 40);
   ASSERT_EQ(s1.x.size(), s2.x.size());
   EXPECT_NE(s1.contact, 0.0);
   EXPECT_EQ(std::memcmp(s1.x.data(), s2.x.data(), s1.x.size() * sizeof(double)), 0);

@@ -47,9 +47,12 @@ double largest_principal_of(const double* s) {
 // Elastic copper bar of 20 solids (2.5 mm square, 50 mm long) whose bottom end is held while the
 // rest starts with vz growing linearly to v_top at the top: a uniform stretch (v_top > 0) or
 // squeeze, so the stress grows steadily (about E v_top / L t) and crosses a criterion some
-// cycles in, in the solids where rounding puts it first.
+// cycles in, in the solids where rounding puts it first. TSSFAC 0.5: a bar one solid across is
+// not stable at 0.9 under this sudden start (its energy grew 44-fold by cycle 6, which error
+// 4007 now stops; README, "The step").
 Model struck_bar(double v_top) {
   Model m = make_box_model({1, 1, 20, 0.0025, 0.0025, 0.05, 0, 0, 0}, copper_elastic(), 2e-5);
+  m.control.tssf = 0.5;
   for (int n = 0; n < m.num_nodes(); ++n)
     if (m.z[std::size_t(n)] < 1e-12) m.bc[std::size_t(n)] = 3;
   set_velocity_field(m, [&](double, double, double z) { return std::array<double, 3>{0, 0, v_top * z / 0.05}; });
@@ -123,7 +126,7 @@ std::pair<int, std::vector<int>> first_deletion(const Model& m) {
   return {-1, {}};
 }
 
-void expect_erosion_matches(const ErosionData& er, const Criterion& met, const char* what, double vz = -20) {
+void expect_erosion_matches(const ErosionData& er, const Criterion& met, const char* what, double vz = -40) {
   Model plain = struck_bar(vz);
   const auto expected = first_meeting(plain, met);
   ASSERT_GT(expected.first, 2) << what << ": the plain run never meets the criterion, or at once";
@@ -154,14 +157,14 @@ ErosionData erosion() {
 }  // namespace
 
 TEST(Erosion, PressureCriteriaDeleteTheSolidsThatReachThem) {
-  // the axial stress grows about 6 MPa a cycle, the pressure a third as fast
+  // the axial stress grows about 24 MPa a cycle (v_top 40 m/s, TSSFAC 0.5), the pressure a third as fast
   ErosionData e = erosion();
   e.mxpres = 2.4e8;
   expect_erosion_matches(e, [](const double* s, double, double) { return pressure_of(s) >= 2.4e8; }, "MXPRES");
   // pulled: tension
   e = erosion();
   e.mnpres = -4e8;
-  expect_erosion_matches(e, [](const double* s, double, double) { return pressure_of(s) <= -4e8; }, "MNPRES", 20);
+  expect_erosion_matches(e, [](const double* s, double, double) { return pressure_of(s) <= -4e8; }, "MNPRES", 40);
 }
 
 TEST(Erosion, StressVolumeAndTimeCriteria) {
@@ -170,7 +173,7 @@ TEST(Erosion, StressVolumeAndTimeCriteria) {
   expect_erosion_matches(e, [](const double* s, double, double) { return von_mises_of(s) >= 4.8e8; }, "SIGVM");
   e = erosion();
   e.sigp1 = 4.8e8;
-  expect_erosion_matches(e, [](const double* s, double, double) { return largest_principal_of(s) >= 4.8e8; }, "SIGP1", 20);
+  expect_erosion_matches(e, [](const double* s, double, double) { return largest_principal_of(s) >= 4.8e8; }, "SIGP1", 40);
   e = erosion();
   e.voleps = -3e-3;
   expect_erosion_matches(e, [](const double*, double v, double) { return v - 1 <= -3e-3; }, "VOLEPS");
@@ -180,11 +183,11 @@ TEST(Erosion, StressVolumeAndTimeCriteria) {
   // NCS 2: pressure and volumetric strain must hold at once
   e = erosion();
   e.mxpres = 1.5e8;
-  e.voleps = -4e-3;
+  e.voleps = -3e-3;
   e.ncs = 2;
-  expect_erosion_matches(e, [](const double* s, double v, double) { return pressure_of(s) >= 1.5e8 && v - 1 <= -4e-3; }, "NCS 2");
+  expect_erosion_matches(e, [](const double* s, double v, double) { return pressure_of(s) >= 1.5e8 && v - 1 <= -3e-3; }, "NCS 2");
   e.ncs = 1;  // either one: earlier
-  expect_erosion_matches(e, [](const double* s, double v, double) { return pressure_of(s) >= 1.5e8 || v - 1 <= -4e-3; }, "NCS 1");
+  expect_erosion_matches(e, [](const double* s, double v, double) { return pressure_of(s) >= 1.5e8 || v - 1 <= -3e-3; }, "NCS 1");
   // EXCL: a criterion equal to it is off (here MXPRES = EXCL = 1: only FAILTM acts)
   e = erosion();
   e.excl = 1;

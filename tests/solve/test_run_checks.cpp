@@ -4,13 +4,19 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <map>
+#include <set>
 #include <sstream>
 #include <string>
 
+#include "impact3d/init/shell_init.h"
 #include "impact3d/input/deck_reader.h"
+#include "impact3d/solve/engine.h"
 #include "impact3d/solve/run.h"
 #include "impact3d/solve/run_checks.h"
 #include "../support/deck_text.h"
@@ -290,6 +296,123 @@ TEST(RunChecksDecks, MassScalingTripsTheAddedMassCheck) {
   EXPECT_EQ(count_of(r.log, "warning 5104"), 1) << r.log;
   EXPECT_NE(r.log.find("most to material 1 \"cube\" (100 % of it)"), std::string::npos) << r.log;
   EXPECT_NE(r.log.find("info 5110: run verdict: suspect: added mass"), std::string::npos) << r.log;
+}
+
+// A run that blows up stops (4007, exit 5) instead of ending "Normal termination": the free
+// hexahedron in its hourglass mode (x velocities 1 -1 1 -1 1 -1 1 -1), TSSFAC 0.9, with the
+// stiffness form at QM 50 (far past any sensible value: the hourglass stiffness, which the step
+// does not see, makes the mode unstable). Before 4007 this run ended normally with an energy
+// ratio of 1.4e43 and exit code 0 (2026-11-28); it now stops on the first cycle past 10.
+TEST(RunChecksDecks, DivergingRunStopsWithAnError) {
+  const double vx[8] = {1000, -1000, 1000, -1000, 1000, -1000, 1000, -1000};
+  std::string s = one_hex_deck(vx, 0);
+  auto replace = [&s](const std::string& a, const std::string& b) {
+    const std::size_t at = s.find(a);
+    ASSERT_NE(at, std::string::npos) << a;
+    s.replace(at, a.size(), b);
+  };
+  replace("       0.0       0.5", "       0.0       0.9");
+  replace("         1         1         1\n", "         1         1         1         0         1\n");
+  replace("*NODE\n", "*HOURGLASS\n         1         4      50.0\n*NODE\n");
+  const RunResult r = run_deck(s, "diverging", false);
+  EXPECT_EQ(r.code, exit_code::error_termination) << r.log;
+  const std::size_t at = r.log.find("error 4007: the run diverged: its energy grew without a source: total energy ");
+  ASSERT_NE(at, std::string::npos) << r.log;
+  const std::size_t times = r.log.find(" is ", at);
+  ASSERT_NE(times, std::string::npos) << r.log;
+  const double ratio = std::stod(r.log.substr(times + 4, 12));
+  EXPECT_GT(ratio, kDivergedEnergyRatio) << r.log;
+  EXPECT_LT(ratio, 1e4) << r.log;  // the first cycle past the limit, not 1e43
+  EXPECT_NE(r.log.find("E r r o r   t e r m i n a t i o n   (the run diverged"), std::string::npos) << r.log;
+  EXPECT_EQ(r.log.find("N o r m a l   t e r m i n a t i o n"), std::string::npos) << r.log;
+}
+
+namespace {
+
+// Two strips of 6 x `wide` shells (10 mm, t = 1 mm, steel, nu as given) sharing the nodes of
+// the line x = 60 mm; the upper one (x 40-100 mm) lies 1 mm above the lower (x 0-60 mm) but for
+// that line: a kink. The upper strip's own nodes start at 1 m/s along x; TSSFAC as given.
+std::string kinked_strips_deck(int wide, double nu, double tssfac) {
+  std::map<std::array<long, 3>, int> ids;
+  std::string nodes, elements;
+  char buf[160];
+  auto node = [&](int i, int j, bool up) {
+    const std::array<long, 3> k{i, j, up && i != 6 ? 1 : 0};
+    auto [it, added] = ids.emplace(k, int(ids.size()) + 1);
+    if (added) {
+      std::snprintf(buf, sizeof buf, "%8d%16.8g%16.8g%16.8g\n", it->second, 0.01 * i, 0.01 * j, 0.001 * double(k[2]));
+      nodes += buf;
+    }
+    return it->second;
+  };
+  std::set<int> lower, upper;
+  int e = 0;
+  for (int part = 1; part <= 2; ++part)
+    for (int j = 0; j < wide; ++j)
+      for (int i = part == 1 ? 0 : 4; i < (part == 1 ? 6 : 10); ++i) {
+        const bool up = part == 2;
+        const int c[4] = {node(i, j, up), node(i + 1, j, up), node(i + 1, j + 1, up), node(i, j + 1, up)};
+        std::snprintf(buf, sizeof buf, "%8d%8d%8d%8d%8d%8d\n", ++e, part, c[0], c[1], c[2], c[3]);
+        elements += buf;
+        (up ? upper : lower).insert(c, c + 4);
+      }
+  std::snprintf(buf, sizeof buf, "*CONTROL_TIMESTEP\n       0.0%10.3f\n", tssfac);
+  std::string s = "*KEYWORD\n*TITLE\nkinked strips\n" + std::string(buf) +
+                  "*CONTROL_TERMINATION\n    0.0005\n*PART\nlower\n         1         1         1\n*PART\nupper\n"
+                  "         2         1         1\n*SECTION_SHELL\n         1         2       1.0         2\n"
+                  "     0.001     0.001     0.001     0.001\n*MAT_ELASTIC\n";
+  std::snprintf(buf, sizeof buf, "         1    7850.0   2.1e+11%10.3f\n", nu);
+  s += buf + ("*NODE\n" + nodes) + "*ELEMENT_SHELL\n" + elements + "*INITIAL_VELOCITY_NODE\n";
+  for (int n : upper)
+    if (!lower.count(n)) {
+      std::snprintf(buf, sizeof buf, "%8d       1.0       0.0       0.0\n", n);
+      s += buf;
+    }
+  return s + "*END\n";
+}
+
+double final_energy_ratio(const std::string& log) {
+  const std::string key = "energy ratio (total/(initial+ext)) ...";
+  const std::size_t at = log.rfind(key);
+  return at == std::string::npos ? -1 : std::stod(log.substr(at + key.size()));
+}
+
+}  // namespace
+
+// The thickness-shear mode of a one-point shell (every node turning by theta, no translation:
+// gamma = theta over the whole shell) has omega^2 = kappa G h A / (4 I) with I each corner's
+// rotary inertia; with I = m_corner max(h^2/12, A/8), m_corner = rho h A / 4, its step 2 / omega
+// is at least sqrt(1 / (kappa (1 - nu))) L / c (c the plate wave speed, L = sqrt(A)) = 1.095 at
+// nu = 0, above any TSSFAC: the rotations never set the step (docs/shells.md, "Kinks and the
+// rotary inertia"; before, m (h^2 + A)/12 gave 0.894 at nu = 0).
+TEST(ShellRotaryInertia, ThicknessShearModeIsSlowerThanTheStep) {
+  const double kappa = 5.0 / 6.0, E = 2.1e11, rho = 7850;
+  for (double nu : {0.0, 0.3, 0.49})
+    for (double h_over_L : {0.001, 0.1, 0.5, 2.0}) {
+      const double L = 0.01, A = L * L, h = h_over_L * L, G = E / (2 * (1 + nu));
+      const double I = shell_rotary_inertia(rho * h * A / 4, h, A);
+      const double omega = std::sqrt(kappa * G * h * A / (4 * I));
+      const double c = std::sqrt(E / (rho * (1 - nu * nu)));
+      EXPECT_GE(2 / omega, std::min(1.0954, std::sqrt(1 / (kappa * (1 - nu)))) * L / c * (1 - 1e-12))
+          << "nu " << nu << " h/L " << h_over_L;
+    }
+}
+
+// Two kinked strips 4 shells wide of a material with nu = 0 at TSSFAC 0.9 run to their end
+// (before the rotary inertia m max(h^2/12, A/8): error 4001, a shell turned inside out at cycle
+// 22), as does a one-element-wide pair with nu = 0.3 (before: 4001 at cycle 48). The printed
+// ratio swings (the velocity jump puts energy in modes near the step's limit: 5106), the run ends
+// normally.
+TEST(ShellRotaryInertia, KinkedStripAtNuZeroRunsAtTheDefaultStep) {
+  for (auto [wide, nu] : {std::pair{4, 0.0}, std::pair{1, 0.3}}) {
+    const RunResult r = run_deck(kinked_strips_deck(wide, nu, 0.9), "kinked_" + std::to_string(wide), false);
+    EXPECT_EQ(r.code, 0) << r.log;
+    EXPECT_NE(r.log.find("N o r m a l   t e r m i n a t i o n"), std::string::npos) << r.log;
+    EXPECT_EQ(r.log.find("E r r o r"), std::string::npos) << r.log;
+    const double ratio = final_energy_ratio(r.log);
+    EXPECT_GT(ratio, 0.95) << r.log;
+    EXPECT_LT(ratio, 1.3) << r.log;
+  }
 }
 
 // A free strip of 6 x 1 Belytschko-Tsay shells (10 mm, 1 mm steel with nu = 0, IHQ 1 QM 0.1,

@@ -207,7 +207,10 @@ std::array<double, 4> hourglass_pattern_run(const MaterialData& mat, bool in_pla
 // (every shell in its hourglass mode u = xi eta, lumped masses equal): omega^2 = (4/3)
 // (E/(1 - nu^2) + G) / (rho a^2), and central differences carry the half-step kinetic energy up
 // to 1/(1 - (omega dt/2)^2) of the initial one (1.574 at the default step, omega dt = 1.21):
-// the largest sampled value within 1 % of it.  Out of plane: at most 1.0001 of the initial one.
+// the largest sampled value within 1 % of it.  Out of plane the pattern turns into bending and
+// rotations, whose half-step kinetic energy swings too: at most 1.05 of the initial one (1.0176
+// over these 0.2 ms with the rotary inertia m max(h^2/12, A/8) per corner, 1.0000 with the
+// earlier m (h^2 + A)/12; over 4 ms 1.090 and 1.107: a swing, not a growth).
 // (Both modes sit near the element's highest frequencies: the run's energy ratio swings by
 // O(omega dt) there, as ELFORM 2's does with IHQ 4; the energy balance is checked on a smooth
 // mode below.)
@@ -225,7 +228,7 @@ TEST(ShellFi, HourglassModesOfTheOnePointShellAreResisted) {
     EXPECT_LT(full[0], in_plane ? 0.05 : 0.25);
     EXPECT_EQ(full[2], 0.0);
     if (!in_plane) {
-      EXPECT_LT(full[1], 1.0001);
+      EXPECT_LT(full[1], 1.05);
       continue;
     }
     const double a = 0.05, G = fi.E / (2 * (1 + fi.nu));
