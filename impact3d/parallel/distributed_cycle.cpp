@@ -213,7 +213,6 @@ std::string distributed_refusal(const Model& m, int nranks) {
   if (failure) what.push_back("solid failure or erosion");
   if (shell_failure) what.push_back("shell failure (FS, FAIL, TDEL)");
   if (weld_beams) what.push_back("spot-weld beams (*MAT_SPOTWELD)");
-  if (m.control.mass_scaling_dt != 0) what.push_back("mass scaling");
   const std::size_t fixed = fixed_walls_for_node_pass(m).size();
   if (!m.walls.empty() && (fixed != m.walls.size() || fixed > kMaxFusedWalls))
     what.push_back("moving stonewalls or stonewalls on node lists");
@@ -268,6 +267,13 @@ void DistributedCycle::setup(const State& s, const Model& m, const LoadSet& load
     block_bytes_[std::size_t(q)] = int(rank_blocks_[std::size_t(q)].size() * sizeof(BlockResult));
   block_displs_ = displacements(block_bytes_);
   block_buf_.resize(nb);
+  if (m.control.mass_scaling_dt != 0) {  // every solid's step to every rank (mass_scaling.h)
+    step_bytes_.assign(std::size_t(nranks_), 0);
+    for (int q = 0; q < nranks_; ++q)
+      step_bytes_[std::size_t(q)] = int(rank_blocks_[std::size_t(q)].size() * kLanes * sizeof(double));
+    step_displs_ = displacements(step_bytes_);
+    step_buf_.assign(nb * kLanes, 0.0);
+  }
   // the shells' and beams' records: every rank's shells, then its beams, chunk after chunk
   rank_shells_.assign(std::size_t(nranks_), {});
   rank_beams_.assign(std::size_t(nranks_), {});
@@ -364,6 +370,7 @@ void DistributedCycle::after_blocks(void* self, State& s) {
   auto* d = static_cast<DistributedCycle*>(self);
   const Timer t(d->comm_s_);
   d->share_block_results(s);
+  if (!d->step_buf_.empty()) d->share_solid_steps(s);
   if (s.shells.ns > 0 || s.beams.nb > 0) d->share_shell_results(s);
   d->send_corner_forces(s);
 }
@@ -378,6 +385,28 @@ void DistributedCycle::share_block_results(State& s) {
     const std::vector<int>& theirs = rank_blocks_[std::size_t(q)];
     for (std::size_t i = 0; i < theirs.size(); ++i) s.block_results[std::size_t(theirs[i])] = from[i];
   }
+}
+
+void DistributedCycle::share_solid_steps(State& s) {
+  double* own = step_buf_.data() + step_displs_[std::size_t(rank_)] / int(sizeof(double));
+  for (int b : rank_blocks_[std::size_t(rank_)])
+    for (std::size_t l = 0; l < std::size_t(kLanes); ++l) {
+      const int e = s.slot_elem[std::size_t(b) * kLanes + l];
+      *own++ = e >= 0 ? s.dt_e[std::size_t(e)] : 0.0;
+    }
+  own = step_buf_.data() + step_displs_[std::size_t(rank_)] / int(sizeof(double));
+  allgather(own, step_bytes_[std::size_t(rank_)], step_buf_.data(), step_bytes_.data(), step_displs_.data());
+  for (int q = 0; q < nranks_; ++q) {
+    if (q == rank_) continue;
+    const double* in = step_buf_.data() + step_displs_[std::size_t(q)] / int(sizeof(double));
+    for (int b : rank_blocks_[std::size_t(q)])
+      for (std::size_t l = 0; l < std::size_t(kLanes); ++l, ++in)
+        if (const int e = s.slot_elem[std::size_t(b) * kLanes + l]; e >= 0) s.dt_e[std::size_t(e)] = *in;
+  }
+}
+
+void DistributedCycle::before_adding_mass(void* self, State& s) {
+  static_cast<DistributedCycle*>(self)->gather_velocities(s);
 }
 
 void DistributedCycle::share_shell_results(State& s) {

@@ -17,6 +17,9 @@
 //  - the rotational update (shells' rotational degrees of freedom): every rank makes it for
 //    all of them from the shells' moments that every rank has, so the angular velocities are
 //    the same bits everywhere without an exchange;
+//  - mass scaling: every solid's step goes to every rank with the block results, so every rank
+//    adds the same masses to every node; a cycle that adds mass first brings every node's
+//    velocity to rank 0, which books the kinetic energy it brings (solve/mass_scaling.h);
 //  - loads and prescribed motions: every rank adds every load's forces (their values at the
 //    rank's own nodes are those of one process: a pressure face's corners are ghosts of the
 //    owners of its other corners), the owner of a node sets its prescribed motions between the
@@ -39,6 +42,7 @@
 #include "impact3d/parallel/partition.h"
 #include "impact3d/solve/element_processing.h"
 #include "impact3d/solve/loads.h"
+#include "impact3d/solve/mass_scaling.h"
 #include "impact3d/solve/node_processing.h"
 
 namespace impact3d {
@@ -64,6 +68,8 @@ class DistributedCycle {
   const std::string& report() const { return report_; }
 
   ElementPassHooks element_hooks();
+  // Mass scaling: every node's velocity to rank 0 before masses are added (mass_scaling.h).
+  MassScalingHook mass_scaling_hook() { return {&DistributedCycle::before_adding_mass, this}; }
   // The node pass on this rank's nodes, the books to rank 0, the ghosts' kinematics.  A pass
   // without p.update_positions stops after the velocities; finish_node_pass then moves this
   // rank's nodes (after the prescribed motions) and sends the books and the ghosts.
@@ -99,6 +105,8 @@ class DistributedCycle {
 
  private:
   static void after_blocks(void* self, State& s);
+  static void before_adding_mass(void* self, State& s);
+  void share_solid_steps(State& s);
   void resume(Engine& engine);
   void share_block_results(State& s);
   void share_shell_results(State& s);
@@ -121,6 +129,8 @@ class DistributedCycle {
   // buffers, sized once
   std::vector<BlockResult> block_buf_;
   std::vector<int> block_bytes_, block_displs_;
+  std::vector<double> step_buf_;               // mass scaling: every block's solids' steps (kLanes each)
+  std::vector<int> step_bytes_, step_displs_;
   std::vector<double> shell_buf_;              // every shell's and beam's record (distributed_cycle.cpp)
   std::vector<int> shell_bytes_, shell_displs_;
   std::vector<double> send_buf_, recv_buf_;    // neighbour exchanges: per peer, one after another

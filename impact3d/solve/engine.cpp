@@ -89,7 +89,8 @@ StepStatus Engine::process_elements() {
     return StepStatus::non_finite;
   }
   // mass scaling: elements below the target step get mass (the step is then the scaled one)
-  const ScaledStep sc = scale_masses_for_time_step(m_, s_, r.dt_min, r.dt_elem, s_.cycle == 0 && s_.dt_half == 0);
+  const ScaledStep sc = scale_masses_for_time_step(m_, s_, r.dt_min, r.dt_elem, s_.cycle == 0 && s_.dt_half == 0,
+                                                   dist_ ? dist_->mass_scaling_hook() : MassScalingHook{});
   double dt = sc.dt_min;
   if (!std::isfinite(dt)) dt = m_.control.end_time / 1000;  // only rigid bodies
   s_.dt_next = m_.control.tssf * dt;

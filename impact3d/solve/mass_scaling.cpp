@@ -69,7 +69,8 @@ double add_mass_to_shell(const Model& m, State& s, int k, double dm) {
 
 }  // namespace
 
-ScaledStep scale_masses_for_time_step(const Model& m, State& s, double dt_min, int dt_elem, bool first_cycle) {
+ScaledStep scale_masses_for_time_step(const Model& m, State& s, double dt_min, int dt_elem, bool first_cycle,
+                                      const MassScalingHook& hook) {
   ScaledStep out{dt_min, dt_elem};
   const ControlData& k = m.control;
   if (k.mass_scaling_dt == 0) return out;
@@ -79,6 +80,7 @@ ScaledStep scale_masses_for_time_step(const Model& m, State& s, double dt_min, i
   double best = std::numeric_limits<double>::infinity();
   int arg = -1;
   double ke = 0;
+  bool adding = false;
   // One element (number id in the step's numbering, solids then shells): its factor f anew
   // when scaling, the mass added (element_mass() its mass; add_mass(dm) spreads dm to its nodes
   // and returns the kinetic energy that adds) booked, and its scaled step against the smallest.
@@ -86,6 +88,8 @@ ScaledStep scale_masses_for_time_step(const Model& m, State& s, double dt_min, i
     if (scale) {
       const double g = new_factor(dt, f, target, lower);
       if (g != f) {
+        if (!adding && hook.before_adding) hook.before_adding(hook.ctx, s);
+        adding = true;
         const double dm = (g - f) * element_mass();
         ke += add_mass(dm);
         s.added_mass += dm;

@@ -31,7 +31,16 @@ struct ScaledStep {
   double dt_min = 0;
   int dt_elem = -1;
 };
-ScaledStep scale_masses_for_time_step(const Model& m, State& s, double dt_min, int dt_elem, bool first_cycle);
+// A distributed run (impact3d/parallel/distributed_cycle.h): every rank has every element's
+// step, so every rank adds the same masses to every node; before_adding(ctx, s) is called once,
+// on every rank at the same element, before the first mass of a call is added (it brings every
+// node's velocity to rank 0, which books the kinetic energy the added mass brings).
+struct MassScalingHook {
+  void (*before_adding)(void* ctx, State& s) = nullptr;
+  void* ctx = nullptr;
+};
+ScaledStep scale_masses_for_time_step(const Model& m, State& s, double dt_min, int dt_elem, bool first_cycle,
+                                      const MassScalingHook& hook = {});
 
 // Added mass as a percentage of the model's mass before scaling.
 double added_mass_percent(const State& s);

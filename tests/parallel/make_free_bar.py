@@ -7,7 +7,8 @@ argument motions, free_bar_motions.k (the bar's bottom pulled down at a prescrib
 40 us, top nodes moved by a prescribed displacement, acceleration, velocity along a vector with
 its normal plane held, two mid-height nodes turned about the bar's axis, one of them free in
 radius, with a nodal force and a body load, falling on a stonewall with friction 0.8 mm below it
-after the pull ends).
+after the pull ends); with the argument masses, free_bar_masses.k (mass scaling: DT2MS < 0, the
+solids whose step falls below 0.55 us get mass, at the first cycle and as they deform).
 
 A free bar for the distributed runs' tests: 4 x 4 x 20 hexahedra (10 mm x 10 mm x 50 mm), no
 wall, no constraint; the lower half copper, the upper half a softer copper (two
@@ -38,7 +39,10 @@ w("free bar: spin and stretch, copper and steel halves, SI units (m kg s Pa)")
 w("*CONTROL_TERMINATION")
 w("    6.0e-5         0       0.0")
 w("*CONTROL_TIMESTEP")
-w("       0.0       0.9")
+if variant == "masses":  # DT2MS < 0: the solids whose step falls below it get mass
+    w("       0.0       0.9         0       0.0  -5.50e-7")
+else:
+    w("       0.0       0.9")
 w("*DATABASE_BINARY_D3PLOT")
 w("    6.0e-6")
 w("*DATABASE_NODOUT")

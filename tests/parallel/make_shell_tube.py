@@ -24,10 +24,12 @@ import sys
 
 beams = len(sys.argv) > 1 and sys.argv[1] == "beams"
 loads = len(sys.argv) > 1 and sys.argv[1] == "loads"
+masses = len(sys.argv) > 1 and sys.argv[1] == "masses"
 
 nt, nz = 24, 16
 radius, length, thick, collar = 0.010, 0.040, 0.0005, 0.002
 omega, vend, swing = 2000.0, 60.0, 30.0
+DT2MS = 5.0e-7  # (masses) the target element step, s
 
 
 def nid(i, k):  # tube node: i around, k along
@@ -45,14 +47,17 @@ def part(k):
 out = []
 w = out.append
 w("*KEYWORD")
-name = "shell_tube_beams.k" if beams else "shell_tube_loads.k" if loads else "shell_tube.k"
+name = "shell_tube_beams.k" if beams else "shell_tube_loads.k" if loads else "shell_tube_masses.k" if masses else "shell_tube.k"
 w(f"$ tests/parallel/{name}: written by tests/parallel/make_shell_tube.py (do not edit by hand)")
 w("*TITLE")
 w("free shell tube with a solid collar: spin, stretch and swing, SI units (m kg s Pa)")
 w("*CONTROL_TERMINATION")
 w("    1.0e-4         0       0.0")
 w("*CONTROL_TIMESTEP")
-w("       0.0       0.9")
+if masses:  # DT2MS < 0: the shells and solids whose step falls below it get mass
+    w(f"       0.0       0.9         0       0.0{-DT2MS:10.2e}")
+else:
+    w("       0.0       0.9")
 w("*DATABASE_BINARY_D3PLOT")
 w("    1.0e-5")
 w("*DATABASE_NODOUT")
