@@ -517,29 +517,50 @@ inline bool in_box(const double* b, const double p[3]) {
          p[2] <= b[5];
 }
 
+// A solid's elastic step V / A_max / c at the current positions (DBL_MAX: none).
+double solid_elastic_step(const State& s, std::size_t E) {
+  const double c = s.mats[std::size_t(s.mat[E])].c;
+  if (!(c > 0)) return std::numeric_limits<double>::max();
+  double x[8], y[8], z[8];
+  for (int a = 0; a < 8; ++a) {
+    const std::size_t n = std::size_t(s.conn[E][std::size_t(a)]);
+    x[a] = s.x[n];
+    y[a] = s.y[n];
+    z[a] = s.z[n];
+  }
+  const double amax = calc_hex_max_face_area(x, y, z);
+  return amax > 0 ? s.vol[E] / amax / c : std::numeric_limits<double>::max();
+}
+
+// The solids' part: the element pass of this cycle computed it for every deformable solid it
+// processed (State::elastic_dt_solids, from the same V and A_max), so only the failed solids
+// (whose V the pass no longer updates) are computed here; without that pass (a restart's
+// first cycle), every solid.
+double solids_elastic_step(const State& s) {
+  double dtmin = std::numeric_limits<double>::max();
+  if (s.elastic_dt_cycle == s.cycle) {
+    if (s.elastic_dt_solids < dtmin) dtmin = s.elastic_dt_solids;
+    for (int e = 0; e < s.ne; ++e) {
+      const std::size_t E = std::size_t(e);
+      if (s.failed[E] && !s.rigid_elem[E]) dtmin = std::min(dtmin, solid_elastic_step(s, E));
+    }
+    return dtmin;
+  }
+#pragma omp parallel for schedule(static) reduction(min : dtmin) if (s.ne >= 8192)
+  for (int e = 0; e < s.ne; ++e) {
+    const std::size_t E = std::size_t(e);
+    if (!s.rigid_elem[E]) dtmin = std::min(dtmin, solid_elastic_step(s, E));
+  }
+  return dtmin;
+}
+
 // The step of the maximum stable stiffness: TSSF x the smallest element step l / c without the
 // bulk-viscosity term (DYNA3D's step drops by ~6% whenever an element compresses, Q = C1 c, and
 // a stiffness following those jumps, k ~ 1/dt^2, pumps energy into the springs: loaded at one
 // k, unloaded at another).  It is >= the engine's step, so the stiffness stays <= the seed's
 // k(dt), and it varies smoothly with the geometry.  Minimum: the same for any thread count.
 double elastic_step(const State& s, double tssf) {
-  double dtmin = std::numeric_limits<double>::max();
-#pragma omp parallel for schedule(static) reduction(min : dtmin) if (s.ne >= 8192)
-  for (int e = 0; e < s.ne; ++e) {
-    const std::size_t E = std::size_t(e);
-    if (s.rigid_elem[E]) continue;
-    const double c = s.mats[std::size_t(s.mat[E])].c;
-    if (!(c > 0)) continue;
-    double x[8], y[8], z[8];
-    for (int a = 0; a < 8; ++a) {
-      const std::size_t n = std::size_t(s.conn[E][std::size_t(a)]);
-      x[a] = s.x[n];
-      y[a] = s.y[n];
-      z[a] = s.z[n];
-    }
-    const double amax = calc_hex_max_face_area(x, y, z);
-    if (amax > 0) dtmin = std::min(dtmin, s.vol[E] / amax / c);
-  }
+  double dtmin = solids_elastic_step(s);
   // shells: their elastic step (they have no bulk viscosity)
   const ShellState& sh = s.shells;
   for (int k = 0; k < sh.ns; ++k) {
@@ -1174,6 +1195,7 @@ void SlidingInterfaces::book_energy(State& s, double dt_n) const {
 }
 
 bool SlidingInterfaces::empty() const { return impl_->ifaces.empty(); }
+bool SlidingInterfaces::uses_elastic_step() const { return impl_->any_max_stable; }
 
 const std::vector<std::array<double, 3>>& SlidingInterfaces::interface_forces() const {
   return impl_->forces;

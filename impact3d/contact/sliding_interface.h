@@ -29,6 +29,9 @@ class SlidingInterfaces {
   // velocities v^{n+1/2} are final (after rigid bodies, walls, prescribed motions).
   void book_energy(State& s, double dt_n) const;
   bool empty() const;
+  // Whether apply() needs the solids' elastic step (an interface with the maximum stable
+  // stiffness): the engine then has the element pass compute it (State::elastic_dt_wanted).
+  bool uses_elastic_step() const;
 
   // Resultant force on the slave side of each interface in the last apply() (the master side
   // takes the opposite): normal and friction parts of both passes.  For the interface-force

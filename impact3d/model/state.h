@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "impact3d/element/hex_block.h"
@@ -96,6 +97,9 @@ struct BlockResult {
   int dt_elem = -1;
   int bad_volume_elem = -1, non_finite_elem = -1;  // lowest such element, or -1
   int failed_now = 0;                  // solids that failed in this pass
+  // smallest elastic step V / A_max / c of the block's computed solids (contact's maximum
+  // stable stiffness, State::elastic_dt_wanted; +inf otherwise)
+  double dt_elastic = std::numeric_limits<double>::infinity();
 };
 
 // What deleted a solid (message 5004): the value State::failed holds during the cycle it fails.
@@ -201,6 +205,13 @@ struct State {
   double dt_vel = 0;        // dt^n: the velocity step of the cycle just done (0 before the first)
   int dt_elem = -1;         // element controlling the step (0-based)
   double dt0 = 0;           // first step (for the minimum step check)
+  // Contact's maximum stable stiffness needs the solids' elastic step V / A_max / c at x^n
+  // (sliding_interface.cpp elastic_step): when elastic_dt_wanted, the element pass leaves the
+  // smallest over the solids it computed (deformable, not failed) in elastic_dt_solids and its
+  // cycle in elastic_dt_cycle (-1: none; not in restart dumps, reset when one is read).
+  bool elastic_dt_wanted = false;
+  double elastic_dt_solids = std::numeric_limits<double>::infinity();
+  int elastic_dt_cycle = -1;
 
   // energies (accumulated)
   double kinetic = 0, internal = 0, hourglass = 0, bulk_viscous = 0;

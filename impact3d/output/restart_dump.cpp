@@ -216,6 +216,7 @@ void read_restart_dump_state(const std::string& path, State& s,
   if (nn != std::uint64_t(s.nn) || ne != std::uint64_t(s.ne) || nr != s.rigid.size())
     r.fail("model size differs from the deck (" + std::to_string(nn) + " nodes, " + std::to_string(ne) + " solids)");
   s.visit_dynamic_fields(r);
+  s.elastic_dt_cycle = -1;  // the positions are the dump's: contact computes the elastic step itself
   // contact arrays: their sizes are whatever the dump says (empty without interfaces)
   for (auto* v : {&contact.forces, &contact.admitted}) {
     std::uint64_t n = 0;

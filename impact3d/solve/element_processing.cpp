@@ -41,6 +41,7 @@ struct GroupPass {
   bool sri;       // fully integrated selective-reduced solids (ELFORM 2, element/hex_sri.h)
   double time;    // t^n (erosion by failure time)
   const Model* model;  // initial coordinates (erosion by strain)
+  bool elastic_dt;     // contact wants the solids' elastic step (State::elastic_dt_wanted)
 };
 
 // Lane l of a block holds element elems[l], or repeats lane 0's element (padding, inactive).
@@ -331,6 +332,12 @@ void store_hex_block(State& s, const GroupPass& gp, const int* elems, const bool
     const std::size_t hs = std::size_t(s.hist_stride);
     for (int h = 0; h < gp.history; ++h) s.hist[hs * E + std::size_t(h)] = k.hist[h][l];
     s.vol[E] = k.v[l];
+    // contact's elastic step, from this pass's V and A_max (the same operations as
+    // calc_hex_max_face_area: the same bits)
+    if (gp.elastic_dt && mc.c > 0 && k.amax[l] > 0) {
+      const double d = k.v[l] / k.amax[l] / mc.c;
+      if (d < r.dt_elastic) r.dt_elastic = d;
+    }
     // the first criterion met is the cause the run log names (State::failed, FailCause)
     FailCause cause = FailCause::none;
     if (mc.fail_strain > 0 && k.eps_p[l] >= mc.fail_strain) cause = FailCause::plastic_strain;
@@ -479,6 +486,7 @@ ElementLoopResult calc_forces_for_elems(const Model& m, State& s, const ElementP
     gp.sri = g.formulation == 2;
     gp.time = s.time;
     gp.model = &m;
+    gp.elastic_dt = s.elastic_dt_wanted;
     const int b0 = g.first_block, nb = g.num_blocks;
     if (hooks.owns_block) {
       const std::uint8_t* own = hooks.owns_block->data();
@@ -498,6 +506,7 @@ ElementLoopResult calc_forces_for_elems(const Model& m, State& s, const ElementP
   // Reductions group by group, blocks in order (same bits for any thread count and schedule).
   double die = 0, dhg = 0, dbv = 0, dsrc = 0;
   double dtmin = std::numeric_limits<double>::infinity();
+  double dt_elastic = std::numeric_limits<double>::infinity();
   int arg = -1, bad = -1, nonfin = -1, failed = 0;
   for (std::size_t gi = 0; gi < s.groups.size(); ++gi) {
     const ElementGroup& g = s.groups[gi];
@@ -518,6 +527,7 @@ ElementLoopResult calc_forces_for_elems(const Model& m, State& s, const ElementP
       if (r.bad_volume_elem >= 0 && (bad < 0 || r.bad_volume_elem < bad)) bad = r.bad_volume_elem;
       if (r.non_finite_elem >= 0 && (nonfin < 0 || r.non_finite_elem < nonfin)) nonfin = r.non_finite_elem;
       failed += r.failed_now;
+      if (r.dt_elastic < dt_elastic) dt_elastic = r.dt_elastic;
     }
     // the viscous resultants of the last pass: their work over the velocity step they acted in,
     // at the mean of the velocities before and after it (hexahedron.h)
@@ -541,6 +551,10 @@ ElementLoopResult calc_forces_for_elems(const Model& m, State& s, const ElementP
   out.dt_min = dtmin;
   out.dt_elem = arg;
   out.failed_now = failed;
+  if (s.elastic_dt_wanted) {
+    s.elastic_dt_solids = dt_elastic;
+    s.elastic_dt_cycle = s.cycle;
+  }
   return out;
 }
 

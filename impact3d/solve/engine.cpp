@@ -104,6 +104,7 @@ StepStatus Engine::initialize() {
   if (dist_ && dist_->leads()) dist_->announce(parallel::DistributedCycle::Op::initialize);
   initialize_state(m_, s_);
   contact_.initialize(m_, s_);
+  s_.elastic_dt_wanted = contact_.uses_elastic_step();
   prepare_loads(m_, s_, loads_);
   if (dist_) dist_->setup(s_, m_, loads_);
   fixed_walls_ = fixed_walls_for_node_pass(m_);
