@@ -69,6 +69,12 @@ double beam_area(const Model& m, int b) {
   return beam_section_properties(beam_section_size(m, b)).area;
 }
 
+const double* beam_orientation_vector(const Model& m, int b) {
+  if (m.beam_orientation.empty()) return nullptr;
+  const auto& v = m.beam_orientation[std::size_t(b)];
+  return v[0] != 0 || v[1] != 0 || v[2] != 0 ? v.data() : nullptr;
+}
+
 bool beam_initial_s_axis(const Model& m, int b, double s[3]) {
   const auto& c = m.beam_nodes[std::size_t(b)];
   const std::size_t n1 = std::size_t(c[0]), n2 = std::size_t(c[1]);
@@ -82,6 +88,8 @@ bool beam_initial_s_axis(const Model& m, int b, double s[3]) {
     g[0] = m.x[n3] - m.x[n1];
     g[1] = m.y[n3] - m.y[n1];
     g[2] = m.z[n3] - m.z[n1];
+  } else if (const double* v = beam_orientation_vector(m, b)) {
+    for (int k = 0; k < 3; ++k) g[k] = v[k];
   } else {
     int a = 0;
     for (int k = 1; k < 3; ++k)

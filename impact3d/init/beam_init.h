@@ -23,10 +23,13 @@ BeamSectionSize beam_section_size(const Model& m, int b);
 // The cross-section area of beam b (a truss: the section's A).
 double beam_area(const Model& m, int b);
 
+// Beam b's *ELEMENT_BEAM_ORIENTATION vector (VX VY VZ), or null where it gives none.
+const double* beam_orientation_vector(const Model& m, int b);
+
 // The s axis of beam b at its initial position: towards the orientation node n3 (normal to
-// the axis), or, without n3, the global axis least aligned with the beam (x, y, z first on a
-// tie) projected normal to it.  Returns false when n3 lies on the beam's axis or the beam has
-// no length.
+// the axis), or, without n3, along its orientation vector (normal to the axis), or, without
+// either, the global axis least aligned with the beam (x, y, z first on a tie) projected normal
+// to it.  Returns false when n3 or the vector lies on the beam's axis or the beam has no length.
 bool beam_initial_s_axis(const Model& m, int b, double s[3]);
 
 // Rotary inertia of a beam node: J = (m_e / 2) (L0^2 / 4 + (I_s + I_t) / A), m_e = rho A L0

@@ -13,6 +13,7 @@
 #include <sstream>
 
 #include "common/cards.h"
+#include "impact3d/init/beam_init.h"
 #include "impact3d/material/eos.h"
 #include "impact3d/material/material_types.h"
 
@@ -330,22 +331,30 @@ class KeywordWriter {
     element_cards(m_.num_shells(), m_.shell_nodes, m_.shell_material, m_.shell_thickness, [&](int e) { return m_.shell_id(e); });
   }
 
-  // Beams, with their section sizes on every element card (all 0: the section's).
+  // Beams, with their section sizes on every element card (all 0: the section's), and their
+  // orientation vectors where the model has any (_ORIENTATION: one more card each).
   void beam_elements() {
     if (m_.num_beams() == 0) return;
-    os_ << "*ELEMENT_BEAM_THICKNESS\n$#   eid     pid      n1      n2      n3\n";
-    element_cards(m_.num_beams(), m_.beam_nodes, m_.beam_material, m_.beam_thickness, [&](int e) { return m_.beam_id(e); });
+    const bool oriented = !m_.beam_orientation.empty();
+    os_ << (oriented ? "*ELEMENT_BEAM_THICKNESS_ORIENTATION" : "*ELEMENT_BEAM_THICKNESS") << "\n$#   eid     pid      n1      n2      n3\n";
+    element_cards(m_.num_beams(), m_.beam_nodes, m_.beam_material, m_.beam_thickness, [&](int e) { return m_.beam_id(e); },
+                  oriented ? &m_.beam_orientation : nullptr);
   }
 
   // The cards of n shells or beams: EID PID N1... (a missing node 0), then the four sizes.
   template <class Nodes, class Materials, class Sizes, class Id>
-  void element_cards(int n, const Nodes& nodes, const Materials& material, const Sizes& sizes, Id&& id) {
+  void element_cards(int n, const Nodes& nodes, const Materials& material, const Sizes& sizes, Id&& id,
+                     const std::vector<std::array<double, 3>>* orientation = nullptr) {
     for (int e = 0; e < n; ++e) {
       std::vector<KField> f = {I(id(e), 8), I(material[std::size_t(e)] + 1, 8)};
       for (int v : nodes[std::size_t(e)]) f.push_back(I(v >= 0 ? nid(v) : 0, 8));
       os_ << kcard(f) << "\n";
       const auto& t = sizes[std::size_t(e)];
       os_ << kcard({R(t[0], 16), R(t[1], 16), R(t[2], 16), R(t[3], 16)}) << "\n";
+      if (orientation) {
+        const auto& v = (*orientation)[std::size_t(e)];
+        os_ << kcard({R(v[0], 16), R(v[1], 16), R(v[2], 16)}) << "\n";
+      }
     }
   }
 
@@ -1256,6 +1265,11 @@ int write_converted_decks(const Model& m, const std::string& keyword_path, const
         return exit_code::input_error;
       }
     }
+    if (k == 1 && !m.beam_orientation.empty()) {  // DYNA3D's beam card holds an orientation node only
+      log << " error: the fixed-format deck " << path << " cannot hold this model (not written): beam orientation "
+          << "vectors (*ELEMENT_BEAM_ORIENTATION; no fixed-format field: give orientation nodes N3, or write a keyword deck)\n";
+      return exit_code::input_error;
+    }
     if (k == 1)
       for (std::size_t j = 0; j < m.materials.size(); ++j)
         if (m.materials[j].beam && m.materials[j].beam_section.elform != 1) {
@@ -1456,6 +1470,9 @@ void mesh_differences(const Model& a, const Model& b, Differences& d) {
       d.N(w + "node " + std::to_string(j + 1), a.beam_nodes[std::size_t(e)][std::size_t(j)], b.beam_nodes[std::size_t(e)][std::size_t(j)]);
     for (int j = 0; j < 4; ++j)
       d.D(w + "size " + std::to_string(j + 1), a.beam_thickness[std::size_t(e)][std::size_t(j)], b.beam_thickness[std::size_t(e)][std::size_t(j)]);
+    const double* va = beam_orientation_vector(a, e);
+    const double* vb = beam_orientation_vector(b, e);
+    for (int j = 0; j < 3; ++j) d.D(w + "orientation vector " + "xyz"[j], va ? va[j] : 0.0, vb ? vb[j] : 0.0);
   }
   if (a.beam_user_id != b.beam_user_id) d.diff("beam ids", std::to_string(a.beam_user_id.size()), std::to_string(b.beam_user_id.size()));
 }

@@ -233,7 +233,7 @@ std::vector<KeywordSpec> nodes_elements_specs() {
                    {"BETA", 4, E, 0, false, {nonzero(1102, "material angles (orthotropic materials)")}, "material angle"},
                  }, "_THICKNESS, named \"element EID thickness card\"; missing: error 1316"}},
                "an element with a refused field is left out"});
-  t.push_back({{"ELEMENT_BEAM", "ELEMENT_BEAM_THICKNESS"}, F, false,
+  t.push_back({{"ELEMENT_BEAM", "ELEMENT_BEAM_THICKNESS", "ELEMENT_BEAM_ORIENTATION", "ELEMENT_BEAM_THICKNESS_ORIENTATION"}, F, false,
                {{"", 10, 8, per_field, fields_of(std::vector<KeywordField>{
                    positive_id("EID", "element ids must be positive", eid),
                    {"PID", 1, I, 0, false, {}, "part"}}, node_fields(1, 2, 2),
@@ -251,7 +251,12 @@ std::vector<KeywordSpec> nodes_elements_specs() {
                    {"PARM3", 2, E, 0, false, {below(0, 1251)}, "TT1"},
                    {"PARM4", 3, E, 0, false, {below(0, 1251)}, "TT2"},
                    plain("PARM5", 4, E),
-                 }, "_THICKNESS, named \"element EID thickness card\"; missing: error 1316"}},
+                 }, "_THICKNESS, named \"element EID thickness card\"; missing: error 1316"},
+                {"orientation card", 3, 16, per_field, {
+                   {"VX", 0, E, 0, false, {}, "orientation vector from N1 (N3 0), x"},
+                   {"VY", 1, E, 0, false, {}, "y"},
+                   {"VZ", 2, E, 0, false, {}, "z"},
+                 }, "_ORIENTATION (after the thickness card), named \"element EID orientation card\"; missing: error 1316"}},
                "an element with a refused field is left out"});
   return t;
 }

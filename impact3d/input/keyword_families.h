@@ -67,6 +67,7 @@ struct RBeam {
   int id = 0, pid = 0;
   std::array<int, 3> n{};      // N1 N2 N3 (N3 0: none)
   std::array<double, 4> t{};   // _THICKNESS: TS1 TS2 TT1 TT2 (0: the section's)
+  std::array<double, 3> v{};   // _ORIENTATION: VX VY VZ (all 0: none)
   Ref ref, pid_ref;
   std::array<Ref, 3> node_refs;
   int line = 0;

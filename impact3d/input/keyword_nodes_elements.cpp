@@ -142,16 +142,17 @@ void read_solids(const Block& b, KeywordContext& ctx, const KeywordSpec& s, Keyw
   }
 }
 
-// The thickness card of an _THICKNESS element (card k + 1), named by the element, given to
-// `read`; false (error 1316 on the element's card) if the block ends before it.
-bool thickness_card(const Block& b, std::size_t k, KeywordContext& ctx, const KeywordSpec& s, KeywordValues& v, int id,
-                    const char* missing, const std::function<void(KeywordValues&)>& read) {
+// An option card of an element (card k + 1: `which`, "thickness card" or "orientation card"),
+// named by the element, given to `read`; false (error 1316 on the element's card) if the block
+// ends before it.
+bool option_card(const Block& b, std::size_t k, KeywordContext& ctx, const KeywordSpec& s, KeywordValues& v, int id,
+                 const char* which, const char* missing, const std::function<void(KeywordValues&)>& read) {
   if (k + 1 >= b.data.size() || is_keyword_line(b.data[k + 1].line->text)) {
     v.card().error(1316, -1, nullptr, missing);
     return false;
   }
-  const std::string label = "element " + std::to_string(id) + " thickness card";
-  KeywordValues v2 = ctx.fields(b, k + 1, s.card("thickness card"), &label);
+  const std::string label = "element " + std::to_string(id) + " " + which;
+  KeywordValues v2 = ctx.fields(b, k + 1, s.card(which), &label);
   read(v2);
   return true;
 }
@@ -211,20 +212,23 @@ void read_sizes(KeywordValues& v2, const char* const (&names)[4], std::array<dou
 }
 
 // A shell or beam card at k and, with _THICKNESS, its thickness card (the four sizes `sizes`;
-// k then at it): own(v, e, ok) reads the fields of the kind's own; the element goes to `out`
-// when every field passed and its EID checks.  False when the block ends before the thickness
-// card (reported).
-template <class R, class Out, class Own>
+// k then at it): own(v, e, ok) reads the fields of the kind's own; more(v, k, e, ok) reads the
+// cards of the kind's further options (k then at the last; false: the block ended before one,
+// reported); the element goes to `out` when every field passed and its EID checks.  False when
+// the block ends before an option card.
+template <class R, class Out, class Own, class More>
 bool read_element(const Block& b, std::size_t& k, KeywordContext& ctx, const KeywordSpec& s, bool thickness, const char* missing,
-                  const char* const (&sizes)[4], Out& out, Own&& own) {
+                  const char* const (&sizes)[4], Out& out, Own&& own, More&& more) {
   R e;
   KeywordValues v = element_card(b, k, ctx, s, e);
   bool ok = true;
   own(v, e, ok);
   if (thickness) {
-    if (!thickness_card(b, k, ctx, s, v, e.id, missing, [&](KeywordValues& v2) { read_sizes(v2, sizes, e.t, ok); })) return false;
+    if (!option_card(b, k, ctx, s, v, e.id, "thickness card", missing, [&](KeywordValues& v2) { read_sizes(v2, sizes, e.t, ok); }))
+      return false;
     ++k;
   }
+  if (!more(v, k, e, ok)) return false;
   if (v.check("EID") && ok) out.push_back(e);
   return true;
 }
@@ -246,22 +250,40 @@ void read_shells(const Block& b, KeywordContext& ctx, const KeywordSpec& s, Keyw
                                            [](KeywordValues& v, RShell& e, bool& ok) {
                                              for (const char* n : {"N5", "N6", "N7", "N8"}) ok = v.passed(n) && ok;
                                              if (e.n[3] == 0) e.n[3] = e.n[2];  // triangle given with three nodes
-                                           });
+                                           },
+                                           [](KeywordValues&, std::size_t&, RShell&, bool&) { return true; });
     if (!read) break;
   }
 }
 
-// *ELEMENT_BEAM (_THICKNESS): EID PID N1 N2 N3 RT1 RR1 RT2 RR2 LOCAL (releases refused);
-// _THICKNESS: PARM1-PARM5 (the Hughes-Liu sizes TS1 TS2 TT1 TT2 of this element).
-void read_beams(const Block& b, KeywordContext& ctx, const KeywordSpec& s, KeywordMesh& m, bool thickness) {
+// *ELEMENT_BEAM (_THICKNESS) (_ORIENTATION): EID PID N1 N2 N3 RT1 RR1 RT2 RR2 LOCAL (releases
+// refused); _THICKNESS: PARM1-PARM5 (the Hughes-Liu sizes TS1 TS2 TT1 TT2 of this element);
+// _ORIENTATION: VX VY VZ (the vector from N1 to a virtual orientation node, where N3 is 0).
+void read_beams(const Block& b, KeywordContext& ctx, const KeywordSpec& s, KeywordMesh& m, bool thickness, bool orientation) {
   for (std::size_t k = 0; k < b.data.size(); ++k) {
     if (is_blank(b.data[k].line->text)) continue;
     static const char* const kParm[4] = {"PARM1", "PARM2", "PARM3", "PARM4"};
-    const bool read = read_element<RBeam>(b, k, ctx, s, thickness, "the thickness card (PARM1-PARM5) is missing", kParm, m.beams,
-                                          [](KeywordValues& v, RBeam&, bool& ok) {
-                                            for (const char* r : {"RT1", "RR1", "RT2", "RR2"}) ok = v.passed(r) && ok;
-                                            v.rest();  // LOCAL
-                                          });
+    const bool read = read_element<RBeam>(
+        b, k, ctx, s, thickness, "the thickness card (PARM1-PARM5) is missing", kParm, m.beams,
+        [](KeywordValues& v, RBeam&, bool& ok) {
+          for (const char* r : {"RT1", "RR1", "RT2", "RR2"}) ok = v.passed(r) && ok;
+          v.rest();  // LOCAL
+        },
+        [&](KeywordValues& v, std::size_t& k2, RBeam& e, bool& ok) {
+          if (!orientation) return true;
+          if (!option_card(b, k2, ctx, s, v, e.id, "orientation card", "the orientation card (VX VY VZ) is missing",
+                           [&](KeywordValues& v2) {
+                             int j = 0;
+                             for (const char* f : {"VX", "VY", "VZ"}) {
+                               e.v[std::size_t(j++)] = v2[f];
+                               ok = v2.passed(f) && ok;
+                             }
+                             v2.rest();
+                           }))
+            return false;
+          ++k2;
+          return true;
+        });
     if (!read) break;
   }
 }
@@ -298,7 +320,7 @@ bool read_nodes_elements(const Block& b, KeywordContext& ctx, KeywordMesh& m) {
   if (b.name == "NODE") read_nodes(b, ctx, *s, m);
   else if (b.name == "ELEMENT_SOLID") read_solids(b, ctx, *s, m);
   else if (b.name.rfind("ELEMENT_SHELL", 0) == 0) read_shells(b, ctx, *s, m, b.name == "ELEMENT_SHELL_THICKNESS");
-  else read_beams(b, ctx, *s, m, b.name == "ELEMENT_BEAM_THICKNESS");
+  else read_beams(b, ctx, *s, m, b.name.find("THICKNESS") != std::string::npos, b.name.find("ORIENTATION") != std::string::npos);
   return true;
 }
 

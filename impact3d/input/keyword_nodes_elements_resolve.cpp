@@ -140,10 +140,10 @@ struct ElementArrays {
 // Shell or beam cards -> the kind's arrays in increasing id order (material: -2 - part index
 // until the part steps; an element whose nodes or part are refused gets -1 and nodes -1) and
 // the parts' lists of them.  A beam's N3 (orientation) may be 0: none.  valid: the kind's own
-// check of the node indices, reporting.
-template <class Card, std::size_t N, class Valid>
+// check of the node indices, reporting; kept(e): the kind's further data of each element kept.
+template <class Card, std::size_t N, class Valid, class Kept>
 void resolve_element_cards(ResolveContext& rc, std::vector<Card>& cards, const char* keyword, ElementArrays<N> a,
-                           std::vector<std::vector<int>>& part_list, Valid valid) {
+                           std::vector<std::vector<int>>& part_list, Valid valid, Kept kept) {
   part_list.assign(rc.ps.parts.size(), {});
   std::stable_sort(cards.begin(), cards.end(), [](const Card& x, const Card& y) { return x.id < y.id; });
   std::vector<int> ids;
@@ -178,6 +178,7 @@ void resolve_element_cards(ResolveContext& rc, std::vector<Card>& cards, const c
     a.nodes.push_back(n);
     a.material.push_back(ok ? -2 - pit->second : -1);
     a.thickness.push_back(e.t);
+    kept(e);
     a.line.push_back(e.line);
     a.file.push_back(rc.file_index(e.file));
     ids.push_back(e.id);
@@ -200,13 +201,18 @@ void resolve_shells(ResolveContext& rc) {
                           r.c2 = e.node_refs[3].c2;
                           rc.err(1222, r, card, "N1-N4", "a shell is a quadrilateral or a triangle with N3 = N4");
                           return false;
-                        });
+                        },
+                        [](const RShell&) {});
   m.shell_rotary_scale = rc.ctl.rotascl;
 }
 
-// *ELEMENT_BEAM cards -> Model::beam_* (N1 and N2 different).
+// *ELEMENT_BEAM cards -> Model::beam_* (N1 and N2 different; beam_orientation only when some
+// beam gives an _ORIENTATION vector).
 void resolve_beams(ResolveContext& rc) {
   Model& m = rc.m;
+  bool oriented = false;
+  for (const RBeam& e : rc.me.beams) oriented = oriented || e.v[0] != 0 || e.v[1] != 0 || e.v[2] != 0;
+  m.beam_orientation.clear();
   resolve_element_cards(rc, rc.me.beams, "*ELEMENT_BEAM",
                         ElementArrays<3>{m.beam_nodes, m.beam_material, m.beam_thickness, m.beam_line, m.beam_file, m.beam_user_id},
                         rc.part_beams, [&](const RBeam& e, const std::array<int, 3>& n, const std::string& card) {
@@ -215,6 +221,9 @@ void resolve_beams(ResolveContext& rc) {
                           r.c2 = e.node_refs[1].c2;
                           rc.err(1250, r, card, "N1-N2", "N1 = N2");
                           return false;
+                        },
+                        [&](const RBeam& e) {
+                          if (oriented) m.beam_orientation.push_back(e.v);
                         });
 }
 

@@ -427,6 +427,9 @@ struct Model {
   std::vector<std::array<int, 3>> beam_nodes;
   std::vector<int> beam_material;
   std::vector<std::array<double, 4>> beam_thickness;
+  // LS-DYNA *ELEMENT_BEAM_ORIENTATION: per beam the vector VX VY VZ from n1 towards a virtual
+  // orientation node, used where n3 is -1 (empty, or all 0: none given).
+  std::vector<std::array<double, 3>> beam_orientation;
   std::vector<int> beam_line, beam_file;
   std::vector<int> beam_user_id;
   int num_beams() const { return static_cast<int>(beam_nodes.size()); }

@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
+#include <cstdio>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -341,4 +343,62 @@ TEST(KeywordBeams, RigidBeamPartTakesTheMomentsOfItsNodes) {
   while (st == StepStatus::ok) st = e.step();
   EXPECT_EQ(st, StepStatus::finished);
   EXPECT_NEAR(e.state().energy_ratio(), 1.0, 0.01);
+}
+
+// *ELEMENT_BEAM_ORIENTATION: the frame's ten rectangular beams with the vector VX VY VZ = 0 1 0
+// (N3 0) in place of their orientation node 17 at (0, 1, 0): the same s axes, so the same bits
+// after 200 cycles; the keyword round trip keeps the vectors; the fixed format, whose beam card
+// holds an orientation node only, refuses them; a vector along a beam's axis is error 1250, a
+// block that ends before an orientation card error 1316.
+TEST(KeywordBeams, OrientationVectorTakesTheOrientationNodesPlace) {
+  const std::string plain = frame_deck();
+  std::string oriented = replaced(plain, "*ELEMENT_BEAM\n$    eid     pid      n1      n2      n3\n",
+                                  "*ELEMENT_BEAM_ORIENTATION\n$    eid     pid      n1      n2      n3\n");
+  for (int e = 1; e <= 10; ++e) {
+    char from[80], to[160];
+    std::snprintf(from, sizeof from, "%8d%8d%8d%8d%8d\n", e, 1, e, e + 1, 17);
+    std::snprintf(to, sizeof to, "%8d%8d%8d%8d%8d\n%16.1f%16.1f%16.1f\n", e, 1, e, e + 1, 0, 0.0, 1.0, 0.0);
+    oriented = replaced(oriented, from, to);
+  }
+  BeamRead a = read_beam_text(plain), b = read_beam_text(oriented);
+  ASSERT_TRUE(a.ok) << a.messages();
+  ASSERT_TRUE(b.ok) << b.messages() << oriented;
+  ASSERT_EQ(b.m.beam_orientation.size(), 15u);
+  EXPECT_EQ(b.m.beam_nodes[0][2], -1);
+  EXPECT_EQ(b.m.beam_orientation[0], (std::array<double, 3>{0, 1, 0}));
+  Engine ea(a.m), eb(b.m);
+  ASSERT_EQ(ea.initialize(), StepStatus::ok);
+  ASSERT_EQ(eb.initialize(), StepStatus::ok);
+  for (int c = 0; c < 200; ++c) {
+    ASSERT_EQ(ea.step(), StepStatus::ok);
+    ASSERT_EQ(eb.step(), StepStatus::ok);
+  }
+  EXPECT_EQ(ea.state().z, eb.state().z);
+  EXPECT_EQ(ea.state().beams.sig, eb.state().beams.sig);
+  EXPECT_EQ(ea.state().beams.e2, eb.state().beams.e2);
+
+  std::ostringstream os;
+  write_keyword_deck(os, b.m, nullptr);
+  EXPECT_NE(os.str().find("*ELEMENT_BEAM_THICKNESS_ORIENTATION"), std::string::npos);
+  BeamRead c = read_beam_text(os.str());
+  ASSERT_TRUE(c.ok) << c.messages() << os.str();
+  std::string all;
+  for (const auto& d : model_differences(b.m, c.m, 50)) all += d + "\n";
+  EXPECT_TRUE(all.empty()) << all;
+  std::ostringstream log;
+  const std::string fixed = std::string(IMPACT3D_BINARY_DIR) + "/beam_orientation_refused.dyn";
+  EXPECT_EQ(write_converted_decks(b.m, "", fixed, log), exit_code::input_error);
+  EXPECT_NE(log.str().find("beam orientation vectors (*ELEMENT_BEAM_ORIENTATION"), std::string::npos) << log.str();
+
+  BeamRead along = read_beam_text(replaced(oriented, "       1       1       1       2       0\n             0.0             1.0             0.0\n",
+                                           "       1       1       1       2       0\n             2.0             0.0             0.0\n"));
+  EXPECT_FALSE(along.ok);
+  EXPECT_EQ(along.count(1250), 1) << along.messages();
+  const std::size_t cut = oriented.find("             0.0             1.0             0.0\n*ELEMENT_BEAM_THICKNESS");
+  ASSERT_NE(cut, std::string::npos);
+  std::string truncated = oriented;
+  truncated.erase(cut, std::string("             0.0             1.0             0.0\n").size());
+  BeamRead missing = read_beam_text(truncated);
+  EXPECT_FALSE(missing.ok);
+  EXPECT_EQ(missing.count(1316), 1) << missing.messages();
 }
