@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <numeric>
+#include <type_traits>
 #include <utility>
 
 namespace impact3d {
@@ -186,12 +187,16 @@ void compute_locality_order(const Model& m, std::vector<int>& node_new_of_old, s
 
 namespace {
 
-template <class V>
-void permute_array(V& v, const std::vector<int>& new_of_old) {
-  if (v.empty()) return;
-  V out(v.size());
-  for (std::size_t i = 0; i < v.size(); ++i) out[std::size_t(new_of_old[i])] = std::move(v[i]);
-  v.swap(out);
+// Each array (empty: not given) moved to the new order: v[new_of_old[i]] = old v[i].
+template <class... V>
+void permute_arrays(const std::vector<int>& new_of_old, V&... arrays) {
+  auto permute = [&](auto& v) {
+    if (v.empty()) return;
+    std::remove_reference_t<decltype(v)> out(v.size());
+    for (std::size_t i = 0; i < v.size(); ++i) out[std::size_t(new_of_old[i])] = std::move(v[i]);
+    v.swap(out);
+  };
+  (permute(arrays), ...);
 }
 
 // order[k] (deck k -> index) composed with index -> new index
@@ -224,22 +229,11 @@ void permute_model(Model& m, const std::vector<int>& node_new_of_old, const std:
     std::iota(m.hex_user_id.begin(), m.hex_user_id.end(), 1);
   }
   // per node
-  permute_array(m.x, node_new_of_old);
-  permute_array(m.y, node_new_of_old);
-  permute_array(m.z, node_new_of_old);
-  permute_array(m.bc, node_new_of_old);
-  permute_array(m.node_user_id, node_new_of_old);
-  permute_array(m.rot_bc, node_new_of_old);
-  permute_array(m.init_omega, node_new_of_old);
-  permute_array(m.node_temperature, node_new_of_old);
+  permute_arrays(node_new_of_old, m.x, m.y, m.z, m.bc, m.node_user_id, m.rot_bc, m.init_omega, m.node_temperature);
   // per solid, and their nodes
   for (auto& hn : m.hex_nodes)
     for (int& n : hn) n = node(n);
-  permute_array(m.hex_nodes, hex_new_of_old);
-  permute_array(m.hex_material, hex_new_of_old);
-  permute_array(m.hex_line, hex_new_of_old);
-  permute_array(m.hex_file, hex_new_of_old);
-  permute_array(m.hex_user_id, hex_new_of_old);
+  permute_arrays(hex_new_of_old, m.hex_nodes, m.hex_material, m.hex_line, m.hex_file, m.hex_user_id);
   // node references
   for (auto& sn : m.shell_nodes)
     for (int& n : sn) n = node(n);

@@ -238,9 +238,7 @@ class Dyna3dReader {
     if (k.report_interval < 0) v.error(1003, "report interval", "must not be negative");
     if (k.report_interval <= 0) k.report_interval = 100;
     k.reaction_print_flag = int(v.integer("reaction-force print flag"));
-    const long long del = v.integer("element deletion flag");
-    if (del != 0 && del != 1) v.error(1006, "element deletion flag", "0 or 1 (deletion flags in the plot database)");
-    deletion_flag_ = del == 1;
+    deletion_flag_ = v.flag01("element deletion flag", "0 or 1 (deletion flags in the plot database)");
   }
 
   void read_control_card_4() {
@@ -268,11 +266,8 @@ class Dyna3dReader {
     k.num_init_velocity_cards = bounded_count(v, "initial condition parameter", avail);
     k.num_interfaces = bounded_count(v, "sliding interfaces", avail);
     static const char* const base[3] = {"base acceleration x", "base acceleration y", "base acceleration z"};
-    for (int f = 0; f < 3; ++f) {
-      const long long flag = v.integer(base[f]);
-      if (flag != 0 && flag != 1) v.error(1006, base[f], "0 none, 1 one base-acceleration card");
-      k.base_acceleration[std::size_t(f)] = flag == 1 ? 1 : 0;
-    }
+    for (int f = 0; f < 3; ++f)
+      k.base_acceleration[std::size_t(f)] = v.flag01(base[f], "0 none, 1 one base-acceleration card") ? 1 : 0;
   }
 
   void read_control_card_6() {
@@ -328,14 +323,11 @@ class Dyna3dReader {
     note_ignored(v);
     // mass scaling (IMPACT-3D choice: no DYNA3D manual places it; LS-DYNA's DT2MS, MS1ST, ENDMAS)
     k.mass_scaling_dt = v["DT2MS"];
-    const long long ms1st = v.integer("MS1ST");
-    if (ms1st != 0 && ms1st != 1) v.error(1006, "MS1ST", "0 (mass scaling every cycle) or 1 (the first cycle only)");
-    k.mass_scaling_first_only = ms1st == 1;
+    k.mass_scaling_first_only = v.flag01("MS1ST", "0 (mass scaling every cycle) or 1 (the first cycle only)");
     k.end_mass_percent = v["ENDMAS"];
     if (k.end_mass_percent < 0) v.error(1003, "ENDMAS", "must not be negative (0 or blank: no limit)");
-    const long long erode = v.integer("ERODE");  // IMPACT-3D choice: LS-DYNA's *CONTROL_TIMESTEP ERODE
-    if (erode != 0 && erode != 1) v.error(1006, "ERODE", "0 (the run ends below the minimum step) or 1 (solids below it are deleted)");
-    k.erode_small_steps = erode == 1;
+    // ERODE: an IMPACT-3D choice, LS-DYNA's *CONTROL_TIMESTEP ERODE
+    k.erode_small_steps = v.flag01("ERODE", "0 (the run ends below the minimum step) or 1 (solids below it are deleted)");
   }
 
   // The counts of control card 2 of the small format (no DYNA3D deck of this vintage is known):
@@ -1442,8 +1434,7 @@ class Dyna3dReader {
   // The stonewall card: the plane (tail, head of its normal), friction; returns NSN.
   int read_stonewall_card(const FixedValues& v, StoneWall& sw) {
     int nsn = int(v.integer("NSN"));
-    const long long moving = v.integer("moving flag");
-    if (moving != 0 && moving != 1) v.error(1006, "moving flag", "0 fixed, 1 moving (a card with MASS and V0 follows)");
+    v.flag01("moving flag", "0 fixed, 1 moving (a card with MASS and V0 follows)");  // read again by the caller
     static const char* const names[] = {"XT", "YT", "ZT", "XH", "YH", "ZH"};
     for (int f = 0; f < 3; ++f) sw.tail[std::size_t(f)] = v[names[f]];
     for (int f = 0; f < 3; ++f) sw.head[std::size_t(f)] = v[names[3 + f]];

@@ -605,6 +605,12 @@ void FixedValues::error(int id, std::string_view name, std::string detail) const
   card_.error(id, f.c1, f.c2, f.name, std::move(detail));
 }
 
+bool FixedValues::flag01(std::string_view name, std::string choices) const {
+  const long long x = integer(name);
+  if (x != 0 && x != 1) error(1006, name, std::move(choices));
+  return x == 1;
+}
+
 Location FixedValues::where(std::string_view name) const {
   const FixedField& f = layout_.fields[index(name)];
   return card_.where(f.c1, f.c2, f.name);

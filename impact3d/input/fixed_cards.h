@@ -82,6 +82,8 @@ class FixedValues {
   bool blank(std::string_view name) const;
   // An error about one field, with its columns from the table.
   void error(int id, std::string_view name, std::string detail = {}) const;
+  // A 0/1 field: whether it is 1; another value is message 1006 with `choices` as its detail.
+  bool flag01(std::string_view name, std::string choices) const;
   Location where(std::string_view name) const;
   const FixedField& field(std::string_view name) const { return layout_.field(name); }
   // Fields with FieldUse::ignored that hold a nonzero value ("name (cols a-b)").

@@ -4,7 +4,10 @@
 
 #include <cmath>
 #include <cstdio>
+#include <initializer_list>
 #include <ostream>
+#include <utility>
+#include <vector>
 
 #include "impact3d/material/material_types.h"  // echo_line
 
@@ -12,19 +15,34 @@ namespace impact3d {
 
 namespace {
 
+// The rows of a form whose values follow EOSID in order, eight fields a card (keyword card k,
+// field j: the (8 k + j)-th value, EOSID the 0-th); the fixed format has the same cards without
+// EOSID, so the first card's fields move one to the left.  Then the rows `refused` (slot -1).
+std::vector<EosParam> in_order(std::initializer_list<std::pair<const char*, int>> keys_slots,
+                               std::initializer_list<EosParam> refused = {}) {
+  std::vector<EosParam> rows;
+  int i = 1;
+  for (const auto& [key, slot] : keys_slots) {
+    const int card = i / 8, field = i % 8;
+    rows.push_back({key, card, field, card, card == 0 ? field - 1 : field, slot});
+    ++i;
+  }
+  rows.insert(rows.end(), refused);
+  return rows;
+}
+
+// LS-DYNA's EOS 1: EOSID C0-C6; card 2 E0 V0.  c: C0-C6.
 const EosForm& linear_polynomial() {
   static const EosForm f = {1, "linear polynomial", "EOS_LINEAR_POLYNOMIAL",
-                            {{"C0", 0, 1, 0, 0, 0}, {"C1", 0, 2, 0, 1, 1}, {"C2", 0, 3, 0, 2, 2}, {"C3", 0, 4, 0, 3, 3},
-                             {"C4", 0, 5, 0, 4, 4}, {"C5", 0, 6, 0, 5, 5}, {"C6", 0, 7, 0, 6, 6},
-                             {"E0", 1, 0, 1, 0, kEosSlotE0}, {"V0", 1, 1, 1, 1, kEosSlotV0}}};
+                            in_order({{"C0", 0}, {"C1", 1}, {"C2", 2}, {"C3", 3}, {"C4", 4}, {"C5", 5}, {"C6", 6},
+                                      {"E0", kEosSlotE0}, {"V0", kEosSlotV0}})};
   return f;
 }
 
 // LS-DYNA's EOS 2: EOSID A B R1 R2 OMEG E0 V0 (one card).  c: A, B, R1, R2, OMEG.
 const EosForm& jwl() {
   static const EosForm f = {2, "JWL", "EOS_JWL",
-                            {{"A", 0, 1, 0, 0, 0}, {"B", 0, 2, 0, 1, 1}, {"R1", 0, 3, 0, 2, 2}, {"R2", 0, 4, 0, 3, 3},
-                             {"OMEG", 0, 5, 0, 4, 4}, {"E0", 0, 6, 0, 5, kEosSlotE0}, {"V0", 0, 7, 0, 6, kEosSlotV0}},
+                            in_order({{"A", 0}, {"B", 1}, {"R1", 2}, {"R2", 3}, {"OMEG", 4}, {"E0", kEosSlotE0}, {"V0", kEosSlotV0}}),
                             {10}};
   return f;
 }
@@ -32,18 +50,19 @@ const EosForm& jwl() {
 // LS-DYNA's EOS 3: EOSID A1 A2 A3 B1 B2 E0 V0 (one card).  c: A1, A2, A3, B1, B2.
 const EosForm& sack_tuesday() {
   static const EosForm f = {3, "Sack Tuesday", "EOS_SACK_TUESDAY",
-                            {{"A1", 0, 1, 0, 0, 0}, {"A2", 0, 2, 0, 1, 1}, {"A3", 0, 3, 0, 2, 2}, {"B1", 0, 4, 0, 3, 3},
-                             {"B2", 0, 5, 0, 4, 4}, {"E0", 0, 6, 0, 5, kEosSlotE0}, {"V0", 0, 7, 0, 6, kEosSlotV0}},
+                            in_order({{"A1", 0}, {"A2", 1}, {"A3", 2}, {"B1", 3}, {"B2", 4}, {"E0", kEosSlotE0}, {"V0", kEosSlotV0}}),
                             {10}};
   return f;
 }
 
+// LS-DYNA's EOS 4: EOSID C S1 S2 S3 GAMMA0 A E0; card 2 V0, then LCID (refused).  c: C, S1-S3,
+// GAMMA0, A.
 const EosForm& gruneisen() {
   static const EosForm f = {4, "Gruneisen", "EOS_GRUNEISEN",
-                            {{"C", 0, 1, 0, 0, 0}, {"S1", 0, 2, 0, 1, 1}, {"S2", 0, 3, 0, 2, 2}, {"S3", 0, 4, 0, 3, 3},
-                             {"GAMMA0", 0, 5, 0, 4, 4}, {"A", 0, 6, 0, 5, 5}, {"E0", 0, 7, 0, 6, kEosSlotE0},
-                             {"V0", 1, 0, 1, 0, kEosSlotV0}, {"LCID", 1, 1, -1, 0, -1, "LCID (GAMMA0 from a curve of the energy)"},
-                             {"LCID", 1, 2, -1, 0, -1, "LCID (GAMMA0 from a curve of the energy)"}}};
+                            in_order({{"C", 0}, {"S1", 1}, {"S2", 2}, {"S3", 3}, {"GAMMA0", 4}, {"A", 5}, {"E0", kEosSlotE0},
+                                      {"V0", kEosSlotV0}},
+                                     {{"LCID", 1, 1, -1, 0, -1, "LCID (GAMMA0 from a curve of the energy)"},
+                                      {"LCID", 1, 2, -1, 0, -1, "LCID (GAMMA0 from a curve of the energy)"}})};
   return f;
 }
 
@@ -62,13 +81,10 @@ void append_table_params(EosForm& f, int tables) {
 // T1-5, T6-10.  c: EV1-10 (0-9), C1-10 (10-19), T1-10 (20-29), GAMMA (30).
 const EosForm& tabulated() {
   static const EosForm f = [] {
-    EosForm f;
-    f.form = 9;
-    f.name = "tabulated";
-    f.keyword = "EOS_TABULATED";
-    f.params = {{"GAMA", 0, 1, 0, 0, 30}, {"E0", 0, 2, 0, 1, kEosSlotE0}, {"V0", 0, 3, 0, 2, kEosSlotV0}};
+    EosForm f{.form = 9, .name = "tabulated", .keyword = "EOS_TABULATED",
+              .params = {{"GAMA", 0, 1, 0, 0, 30}, {"E0", 0, 2, 0, 1, kEosSlotE0}, {"V0", 0, 3, 0, 2, kEosSlotV0}},
+              .widths = {10, 16, 16, 16, 16, 16, 16}};
     append_table_params(f, 3);
-    f.widths = {10, 16, 16, 16, 16, 16, 16};
     return f;
   }();
   return f;
@@ -79,10 +95,8 @@ const EosForm& tabulated() {
 // F2 A20-A24 (5-9), F3-F7 A_i0-A_i3 (10-29), ALPHA (30), BETA (31).
 const EosForm& ratio_of_polynomials() {
   static const EosForm f = [] {
-    EosForm f;
-    f.form = 5;
-    f.name = "ratio of polynomials";
-    f.keyword = "EOS_RATIO_OF_POLYNOMIALS";
+    EosForm f{.form = 5, .name = "ratio of polynomials", .keyword = "EOS_RATIO_OF_POLYNOMIALS",
+              .widths = {10, 20, 20, 20, 20, 20, 20, 20, 20, 20}, .fixed_widths = {20, 20, 20, 20, 20, 20, 20, 20, 20}};
     static const char* const names[7][5] = {{"A10", "A11", "A12", "A13", "A14"}, {"A20", "A21", "A22", "A23", "A24"},
                                             {"A30", "A31", "A32", "A33", ""},    {"A40", "A41", "A42", "A43", ""},
                                             {"A50", "A51", "A52", "A53", ""},    {"A60", "A61", "A62", "A63", ""},
@@ -95,8 +109,6 @@ const EosForm& ratio_of_polynomials() {
     f.params.push_back({"BETA", 9, 1, 8, 1, kEosRpBeta});
     f.params.push_back({"E0", 9, 2, 8, 2, kEosSlotE0});
     f.params.push_back({"V0", 9, 3, 8, 3, kEosSlotV0});
-    f.widths = {10, 20, 20, 20, 20, 20, 20, 20, 20, 20};
-    f.fixed_widths = {20, 20, 20, 20, 20, 20, 20, 20, 20};
     return f;
   }();
   return f;
@@ -105,9 +117,8 @@ const EosForm& ratio_of_polynomials() {
 // LS-DYNA's EOS 6: form 1's cards, card 2 E0 V0 LCID (the energy deposition rate's curve).
 const EosForm& linear_polynomial_with_energy_leak() {
   static const EosForm f = {6, "linear polynomial with energy deposition", "EOS_LINEAR_POLYNOMIAL_WITH_ENERGY_LEAK",
-                            {{"C0", 0, 1, 0, 0, 0}, {"C1", 0, 2, 0, 1, 1}, {"C2", 0, 3, 0, 2, 2}, {"C3", 0, 4, 0, 3, 3},
-                             {"C4", 0, 5, 0, 4, 4}, {"C5", 0, 6, 0, 5, 5}, {"C6", 0, 7, 0, 6, 6},
-                             {"E0", 1, 0, 1, 0, kEosSlotE0}, {"V0", 1, 1, 1, 1, kEosSlotV0}, {"LCID", 1, 2, 1, 2, kEosLeakCurve}}};
+                            in_order({{"C0", 0}, {"C1", 1}, {"C2", 2}, {"C3", 3}, {"C4", 4}, {"C5", 5}, {"C6", 6},
+                                      {"E0", kEosSlotE0}, {"V0", kEosSlotV0}, {"LCID", kEosLeakCurve}})};
   return f;
 }
 
@@ -116,18 +127,14 @@ const EosForm& linear_polynomial_with_energy_leak() {
 // K6-10.  c: form 9's layout, K1-10 at 31-40.
 const EosForm& tabulated_compaction() {
   static const EosForm f = [] {
-    EosForm f;
-    f.form = 8;
-    f.name = "tabulated compaction";
-    f.keyword = "EOS_TABULATED_COMPACTION";
-    f.params = {{"GAMA", 0, 1, 0, 0, kEosTabGamma}, {"E0", 0, 2, 0, 1, kEosSlotE0}, {"V0", 0, 3, 0, 2, kEosSlotV0},
-                {"LCC", 0, 4, -1, 0, -1, "LCC (the C table as a load curve)"},
-                {"LCT", 0, 5, -1, 0, -1, "LCT (the T table as a load curve)"},
-                {"LCK", 0, 6, -1, 0, -1, "LCK (the K table as a load curve)"},
-                {"LCID", 0, 7, -1, 0, -1, "LCID (an energy deposition curve)"}};
+    EosForm f{.form = 8, .name = "tabulated compaction", .keyword = "EOS_TABULATED_COMPACTION",
+              .params = {{"GAMA", 0, 1, 0, 0, kEosTabGamma}, {"E0", 0, 2, 0, 1, kEosSlotE0}, {"V0", 0, 3, 0, 2, kEosSlotV0},
+                         {"LCC", 0, 4, -1, 0, -1, "LCC (the C table as a load curve)"},
+                         {"LCT", 0, 5, -1, 0, -1, "LCT (the T table as a load curve)"},
+                         {"LCK", 0, 6, -1, 0, -1, "LCK (the K table as a load curve)"},
+                         {"LCID", 0, 7, -1, 0, -1, "LCID (an energy deposition curve)"}},
+              .widths = {10, 16, 16, 16, 16, 16, 16, 16, 16}, .history = 2};
     append_table_params(f, 4);
-    f.widths = {10, 16, 16, 16, 16, 16, 16, 16, 16};
-    f.history = 2;
     return f;
   }();
   return f;

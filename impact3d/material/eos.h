@@ -91,7 +91,7 @@ struct EosForm {
   int form = 0;             // DYNA3D's EOS form number
   const char* name = "";    // printed name
   const char* keyword = "";  // LS-DYNA keyword without '*'
-  std::vector<EosParam> params;
+  std::vector<EosParam> params{};
   std::vector<int> widths = {10, 10};  // per card (both formats): the field width; its size: the cards
   std::vector<int> fixed_widths = {};  // the fixed format's, when its cards differ (empty: widths)
   int history = 1;                     // history values (the energy E; form 8 also eps_min)

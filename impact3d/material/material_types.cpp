@@ -64,6 +64,17 @@ const MaterialParam* find_param(const MaterialType& t, std::string_view key) {
   return nullptr;
 }
 
+void check_flow_table(const MaterialData& md, const MaterialType& t, const ParamReport& report, int n, int eps1, int es1,
+                      const char* const eps_names[], const char* const es_names[]) {
+  for (int i = 0; i < n; ++i) {
+    const double e = par(md, eps1 + i), s = par(md, es1 + i);
+    if (e < 0 || (i > 0 && !(e > par(md, eps1 + i - 1))))
+      report(*find_param(t, eps_names[i]), 1003, "plastic strains of the table must start at 0 or more and increase");
+    if (s < 0 || (i > 0 && s < par(md, es1 + i - 1)))
+      report(*find_param(t, es_names[i]), 1003, "yield stresses of the table must not be negative nor decrease (no softening)");
+  }
+}
+
 const MaterialType& material_type(int number) {
   const MaterialType* t = find_material_type(number);
   if (!t) throw std::logic_error("no material type " + std::to_string(number));

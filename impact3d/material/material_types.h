@@ -122,11 +122,11 @@ using ParamReport = std::function<void(const MaterialParam& p, int msg, const st
 struct MaterialType {
   int number = 0;                         // DYNA3D type number (LS-DYNA's *MAT_0nn)
   const char* name = "";                  // printed name
-  std::vector<const char*> keywords;      // LS-DYNA keywords (without '*'; the first is written)
-  std::vector<MaterialParam> params;      // card layouts, checks, defaults
+  std::vector<const char*> keywords{};    // LS-DYNA keywords (without '*'; the first is written)
+  std::vector<MaterialParam> params{};    // card layouts, checks, defaults
   int num_par = 0;                        // size of MaterialData::par
   int keyword_cards = 1;                  // cards the keyword reader reads (and the converter writes)
-  std::vector<const char*> keyword_heads;  // the converter's comment line above card k (nullptr: the keys)
+  std::vector<const char*> keyword_heads{};  // the converter's comment line above card k (nullptr: the keys)
   const char* extra_card_feature = nullptr;  // non-null: a card after those is message 1102 naming this
   bool one_per_card = false;              // fixed format: the original one parameter per card (cols 1-10),
                                           // with the packed 8-per-card alternative (warning 2001)
@@ -138,13 +138,13 @@ struct MaterialType {
   void (*derive)(const MaterialData&, const Model&, MaterialConstants&) = nullptr;
   // extra echo lines after the parameters (may be null)
   void (*echo)(std::ostream&, const MaterialData&) = nullptr;
-  SolidKernel solid;
-  PlaneStressKernel shell;
+  SolidKernel solid{};
+  PlaneStressKernel shell{};
   // equations of state (material/eos.h): whether the type takes one (its pressure then comes
   // from the EOS, its deviatoric stress from the kernel), and whether it needs one
   bool accepts_eos = false;
   bool needs_eos = false;
-  std::vector<const char*> history;       // names of the per-element history values (<= kMaxHistory)
+  std::vector<const char*> history{};     // names of the per-element history values (<= kMaxHistory)
   // the history value that holds a solid's absolute temperature (-1: none): the starter sets it
   // to the mean of its nodes' *INITIAL_TEMPERATURE (Model::node_temperature), a node without one
   // counting as initial_temperature(md)
@@ -159,15 +159,23 @@ struct MaterialType {
 constexpr int kSpotWeldNRR = 0, kSpotWeldTFAIL = 6, kSpotWeldNF = 7;
 constexpr int kSpotWeldMaxNF = 30;
 
-// E and nu, which every type has (keyword card 1 fields 2 and 3; fixed format where given).
-inline MaterialParam young_modulus_param(int fcard, int fcol) {
-  return {.key = "E", .label = nullptr, .kcard = 0, .kfield = 2, .fcard = fcard, .fcol = fcol, .field = &MaterialData::E,
+// E and nu, which every type has (keyword card 1, fields 2 and 3 unless the type places them
+// elsewhere; fixed format where given).
+inline MaterialParam young_modulus_param(int fcard, int fcol, int kfield = 2) {
+  return {.key = "E", .label = nullptr, .kcard = 0, .kfield = kfield, .fcard = fcard, .fcol = fcol, .field = &MaterialData::E,
           .check = ParamCheck::positive, .msg = 1208};
 }
-inline MaterialParam poisson_param(int fcard, int fcol) {
-  return {.key = "PR", .fname = "nu", .kcard = 0, .kfield = 3, .fcard = fcard, .fcol = fcol, .field = &MaterialData::nu,
+inline MaterialParam poisson_param(int fcard, int fcol, int kfield = 3) {
+  return {.key = "PR", .fname = "nu", .kcard = 0, .kfield = kfield, .fcard = fcard, .fcol = fcol, .field = &MaterialData::nu,
           .check = ParamCheck::poisson, .msg = 1209};
 }
+// MaterialData::par[i], or 0 where a programmatic MaterialData leaves par short.
+inline double par(const MaterialData& md, int i) { return std::size_t(i) < md.par.size() ? md.par[std::size_t(i)] : 0.0; }
+// The checks of a flow table's first n points (plastic strains par[eps1 + i], yield stresses
+// par[es1 + i], named eps_names[i] and es_names[i]), message 1003: the strains start at 0 or
+// more and increase; the stresses are not negative and do not decrease (no softening).
+void check_flow_table(const MaterialData& md, const MaterialType& t, const ParamReport& report, int n, int eps1, int es1,
+                      const char* const eps_names[], const char* const es_names[]);
 // The parameter with this keyword name, or nullptr.
 const MaterialParam* find_param(const MaterialType& t, std::string_view key);
 

@@ -38,6 +38,18 @@ inline void apply_radial_return(double G3, double de, const TrialDeviator& t, do
   sig[5] -= rs * sig[5];
 }
 
+// The returned stress p + scale s, given the mean p (after any cutoff), the deviator s0 s1 s2
+// (the shears are sig[3..5]) and the factor scale = 1 - 3 G de / q, in the one order of
+// operations the Johnson-Cook kernels use (same bits).
+inline void set_scaled_deviator(double p, double scale, double s0, double s1, double s2, double sig[6]) {
+  sig[0] = p + scale * s0;
+  sig[1] = p + scale * s1;
+  sig[2] = p + scale * s2;
+  sig[3] *= scale;
+  sig[4] *= scale;
+  sig[5] *= scale;
+}
+
 template <class Flow>
 double solve_radial_return(double q, double G3, double e0, Flow&& flow) {
   double s, ds;

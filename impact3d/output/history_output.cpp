@@ -23,6 +23,13 @@ const char* kNames[HistoryOutput::kNumAscii] = {"glstat", "matsum", "rwforc", "r
 [[noreturn]] void fail(const std::string& what, const std::string& file) {
   throw std::runtime_error(what + " " + file + ": " + std::strerror(errno));
 }
+
+// A block's heading in nodout and elout (LS-DYNA's words, letters spaced): "<title> for time
+// step <cycle> ( at time <time> )", then the columns' line.
+void time_step_heading(FILE* f, const char* spaced_title, const char* columns, const State& s) {
+  std::fprintf(f, "\n %s   f o r   t i m e   s t e p %8d   ( at time %12.5E )\n%s", spaced_title, s.cycle, s.time, columns);
+}
+
 }  // namespace
 
 const char* HistoryOutput::ascii_name(int k) { return kNames[k]; }
@@ -202,11 +209,10 @@ void HistoryOutput::write_rcforc(FILE* f, const State& s, const std::vector<std:
 
 // nodout: the listed nodes' displacements, velocities, accelerations and coordinates.
 void HistoryOutput::write_nodout(FILE* f, const Model& m, const State& s) {
-  std::fprintf(f,
-               "\n n o d a l   p r i n t   o u t   f o r   t i m e   s t e p %8d   ( at time %12.5E )\n"
-               " nodal point   x-disp       y-disp       z-disp       x-vel        y-vel        z-vel"
-               "        x-accl       y-accl       z-accl       x-coor       y-coor       z-coor\n",
-               s.cycle, s.time);
+  time_step_heading(f, "n o d a l   p r i n t   o u t",
+                    " nodal point   x-disp       y-disp       z-disp       x-vel        y-vel        z-vel"
+                    "        x-accl       y-accl       z-accl       x-coor       y-coor       z-coor\n",
+                    s);
   for (int n : th_nodes_) {
     const std::size_t i = std::size_t(n);
     std::fprintf(f, "%10d %12.4E %12.4E %12.4E %12.4E %12.4E %12.4E %12.4E %12.4E %12.4E %12.4E %12.4E %12.4E\n",
@@ -217,11 +223,10 @@ void HistoryOutput::write_nodout(FILE* f, const Model& m, const State& s) {
 
 // elout, solids: stresses, pressure, von Mises stress and plastic strain.
 void HistoryOutput::write_elout_solids(FILE* f, const Model& m, const State& s) {
-  std::fprintf(f,
-               "\n e l e m e n t   s t r e s s   c a l c u l a t i o n s   f o r   t i m e   s t e p %8d   ( at time %12.5E )\n"
-               "  element  materl     sig-xx       sig-yy       sig-zz       sig-xy       sig-yz       sig-zx"
-               "     pressure    von-mises   eff-plastic\n",
-               s.cycle, s.time);
+  time_step_heading(f, "e l e m e n t   s t r e s s   c a l c u l a t i o n s",
+                    "  element  materl     sig-xx       sig-yy       sig-zz       sig-xy       sig-yz       sig-zx"
+                    "     pressure    von-mises   eff-plastic\n",
+                    s);
   for (int e : th_solids_) {
     const double* sg = &s.sig[6 * std::size_t(e)];
     std::fprintf(f, "%9d %7d %12.4E %12.4E %12.4E %12.4E %12.4E %12.4E %12.4E %12.4E %12.4E\n", m.hex_id(e),
@@ -233,13 +238,10 @@ void HistoryOutput::write_elout_solids(FILE* f, const Model& m, const State& s) 
 // elout, shells: the mid-surface, inner and outer stresses (global axes, the plot database's
 // words) and the plastic strain of the middle, lowest and highest integration point.
 void HistoryOutput::write_elout_shells(FILE* f, const Model& m, const State& s) {
-  // shells: the mid-surface, inner and outer stresses (global axes, the plot database's words)
-  // and the plastic strain of the middle, lowest and highest integration point
-  std::fprintf(f,
-               "\n s h e l l   e l e m e n t   s t r e s s e s   f o r   t i m e   s t e p %8d   ( at time %12.5E )\n"
-               "  element  materl surface      sig-xx       sig-yy       sig-zz       sig-xy       sig-yz       sig-zx"
-               "    von-mises   eff-plastic\n",
-               s.cycle, s.time);
+  time_step_heading(f, "s h e l l   e l e m e n t   s t r e s s e s",
+                    "  element  materl surface      sig-xx       sig-yy       sig-zz       sig-xy       sig-yz       sig-zx"
+                    "    von-mises   eff-plastic\n",
+                    s);
   static const char* const kSurface[3] = {"mid", "inner", "outer"};
   shell_words_.resize(kShellPlotVars);
   for (int k : th_shells_) {
@@ -259,10 +261,8 @@ void HistoryOutput::write_elout_shells(FILE* f, const Model& m, const State& s) 
 void HistoryOutput::write_elout_beams(FILE* f, const Model& m, const State& s) {
   // beams: the resultants in the beam's local axes (r axial, s and t of the section), as
   // LS-DYNA's elout lays out its beam block: axial force, shear forces, bending moments, torsion
-  std::fprintf(f,
-               "\n r e s u l t a n t s   f o r   b e a m s   f o r   t i m e   s t e p %8d   ( at time %12.5E )\n"
-               "  element  materl       axial      shear-s      shear-t     moment-s     moment-t      torsion\n",
-               s.cycle, s.time);
+  time_step_heading(f, "r e s u l t a n t s   f o r   b e a m s",
+                    "  element  materl       axial      shear-s      shear-t     moment-s     moment-t      torsion\n", s);
   for (int b : th_beams_) {
     const double* r = &s.beams.res[6 * std::size_t(b)];  // N, Q_s, Q_t, T, M_s, M_t
     std::fprintf(f, "%9d %7d %12.4E %12.4E %12.4E %12.4E %12.4E %12.4E%s\n", m.beam_id(b),

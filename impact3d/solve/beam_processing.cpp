@@ -122,22 +122,18 @@ std::vector<int> beam_chunk_of_beams(const BeamState& bm) {
 }
 
 void compute_beam_forces(State& s, const std::vector<std::uint8_t>* owns_chunk) {
-  BeamState& bm = s.beams;
   const double dt = s.dt_half;
-  int c0 = 0;  // the group's first chunk
-  for (const BeamGroup& g : bm.groups) {
-    const int* ord = &bm.order[std::size_t(g.first)];
+  auto group = [&](const BeamGroup& g, const int* ord, const std::uint8_t* own) {
     const int n = g.count;
-    const std::uint8_t* own = owns_chunk ? owns_chunk->data() + c0 : nullptr;
-    c0 += (n + kLanes - 1) / kLanes;
     if (g.kernel == BeamKernel::rigid) {
       for (int q = 0; q < n; ++q) zero_beam_ends(s, ord[q]);
-      continue;
+      return;
     }
 #pragma omp parallel for schedule(static) if (n >= kMinBeamsForThreads)
     for (int q = 0; q < n; ++q)
       if (!own || own[q / kLanes]) process_beam(s, g, ord[q], dt);
-  }
+  };
+  for_each_group_with_chunks(s.beams.groups, s.beams.order, kLanes, owns_chunk, group);
 }
 
 BeamPassResult book_beam_results(State& s) {

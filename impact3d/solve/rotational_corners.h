@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "impact3d/model/state.h"
@@ -31,6 +32,19 @@ std::vector<int> chunk_of_group_elements(const Groups& groups, const std::vector
     c0 += (g.count + lanes - 1) / lanes;
   }
   return chunk;
+}
+
+// Each group in turn: f(g, ord, own) with its elements ord[0..g.count) (order from g.first) and
+// its chunks' flags own[0..) (owns_chunk's from the group's first chunk; nullptr: every chunk).
+template <class Groups, class F>
+void for_each_group_with_chunks(const Groups& groups, const std::vector<int>& order, int lanes,
+                                const std::vector<std::uint8_t>* owns_chunk, F&& f) {
+  int c0 = 0;  // the group's first chunk
+  for (const auto& g : groups) {
+    const std::uint8_t* own = owns_chunk ? owns_chunk->data() + c0 : nullptr;
+    c0 += (g.count + lanes - 1) / lanes;
+    f(g, &order[std::size_t(g.first)], own);
+  }
 }
 
 // Nodes conn[0..N) of an element into a kernel's corner arrays.

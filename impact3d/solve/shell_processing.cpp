@@ -321,20 +321,15 @@ std::vector<int> shell_chunk_of_shells(const ShellState& sh) {
 }
 
 void compute_shell_forces(State& s, const std::vector<std::uint8_t>* owns_chunk) {
-  ShellState& sh = s.shells;
   const double dt = s.dt_half;
-  int c0 = 0;  // the group's first chunk
-  for (const ShellGroup& g : sh.groups) {
-    const int* ord = &sh.order[std::size_t(g.first)];
-    const int n = g.count;
-    const std::uint8_t* own = owns_chunk ? owns_chunk->data() + c0 : nullptr;
-    c0 += (n + kLanes - 1) / kLanes;
+  auto group = [&](const ShellGroup& g, const int* ord, const std::uint8_t* own) {
     if (g.kernel == ShellKernel::rigid) {
-      for (int q = 0; q < n; ++q) zero_shell_corners(s, ord[q]);
-      continue;
+      for (int q = 0; q < g.count; ++q) zero_shell_corners(s, ord[q]);
+      return;
     }
-    process_shells_of_group(s, g, ord, n, dt, own);
-  }
+    process_shells_of_group(s, g, ord, g.count, dt, own);
+  };
+  for_each_group_with_chunks(s.shells.groups, s.shells.order, kLanes, owns_chunk, group);
 }
 
 ShellPassResult book_shell_results(State& s) {

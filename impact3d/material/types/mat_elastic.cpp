@@ -16,24 +16,16 @@ void update_block(const MaterialConstants& m, MaterialPointBlock& k, double dt) 
 }  // namespace
 
 const MaterialType& mat_elastic_type() {
-  static const MaterialType t = [] {
-    MaterialType t;
-    t.number = 1;
-    t.name = "elastic";
-    t.keywords = {"MAT_ELASTIC", "MAT_001"};
-    t.params = {
-        young_modulus_param(3, 1),
-        poisson_param(4, 1),
-        {.key = "DA", .kcard = 0, .kfield = 4, .index = 0, .check = ParamCheck::ignored, .detail = "axial damping (beams)", .keyword_write = false},
-        {.key = "DB", .kcard = 0, .kfield = 5, .index = 1, .check = ParamCheck::ignored, .detail = "bending damping (beams)", .keyword_write = false},
-    };
-    t.num_par = 2;
-    t.keyword_cards = 1;
-    t.extra_card_feature = "the fluid option card (VC, CP) of *MAT_ELASTIC";
-    t.one_per_card = true;
-    t.solid = {HexKernel::deformable, update_point, update_block, false};
-    return t;
-  }();
+  static const MaterialType t{.number = 1, .name = "elastic", .keywords = {"MAT_ELASTIC", "MAT_001"},
+      .params = {
+          young_modulus_param(3, 1), poisson_param(4, 1),
+          {.key = "DA", .kcard = 0, .kfield = 4, .index = 0, .check = ParamCheck::ignored, .detail = "axial damping (beams)", .keyword_write = false},
+          {.key = "DB", .kcard = 0, .kfield = 5, .index = 1, .check = ParamCheck::ignored, .detail = "bending damping (beams)", .keyword_write = false},
+      },
+      .num_par = 2, .keyword_cards = 1, .extra_card_feature = "the fluid option card (VC, CP) of *MAT_ELASTIC",
+      .one_per_card = true,
+      .solid = {HexKernel::deformable, update_point, update_block, false},
+  };
   return t;
 }
 

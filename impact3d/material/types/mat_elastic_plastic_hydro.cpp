@@ -32,8 +32,6 @@ namespace {
 constexpr int kPoints = 16;
 enum Par { pG, pEh, pPc, pCharl, pEps1, pEs1 = pEps1 + kPoints, kNumPar = pEs1 + kPoints };
 
-double par(const MaterialData& md, int i) { return std::size_t(i) < md.par.size() ? md.par[std::size_t(i)] : 0.0; }
-
 // The table's points (EPS1.., ES1..): up to the first pair after the first that is all zero.
 int table_points(const MaterialData& md) {
   bool any = false;
@@ -55,13 +53,7 @@ void check(MaterialData& md, const MaterialType& t, const ParamReport& report) {
     report(*find_param(t, "FS"), 1102, "FS < 0 (failure by element thickness with CHARL); FS > 0 is the failure plastic strain");
   const int n = table_points(md);
   if (n == 1) report(*find_param(t, "ES2"), 1003, "a table needs at least two points (or none: SIGY and EH)");
-  for (int i = 0; i < n; ++i) {
-    const double e = par(md, pEps1 + i), s = par(md, pEs1 + i);
-    if (e < 0 || (i > 0 && !(e > par(md, pEps1 + i - 1))))
-      report(*find_param(t, kEpsNames[i]), 1003, "plastic strains of the table must start at 0 or more and increase");
-    if (s < 0 || (i > 0 && s < par(md, pEs1 + i - 1)))
-      report(*find_param(t, kEsNames[i]), 1003, "yield stresses of the table must not be negative nor decrease (no softening)");
-  }
+  check_flow_table(md, t, report, n, pEps1, pEs1, kEpsNames, kEsNames);
 }
 
 void derive(const MaterialData& d, const Model&, MaterialConstants& c) {
@@ -131,39 +123,36 @@ MaterialParam table_param(const char* key, int index) {
           .optional_write = true};
 }
 
+// The card 1 rows followed by the EPS and ES tables.
+std::vector<MaterialParam> with_tables(std::vector<MaterialParam> rows) {
+  for (int i = 0; i < kPoints; ++i) rows.push_back(table_param(kEpsNames[i], pEps1 + i));
+  for (int i = 0; i < kPoints; ++i) rows.push_back(table_param(kEsNames[i], pEs1 + i));
+  return rows;
+}
+
 }  // namespace
 
 const MaterialType& mat_elastic_plastic_hydro_type() {
-  static const MaterialType t = [] {
-    MaterialType t;
-    t.number = 10;
-    t.name = "elastic-plastic hydrodynamic (with an equation of state)";
-    t.keywords = {"MAT_ELASTIC_PLASTIC_HYDRO", "MAT_010"};
-    t.params = {
-        {.key = "G", .label = "shear modulus G", .kcard = 0, .kfield = 2, .fcard = 3, .fcol = 1, .index = pG,
-         .check = ParamCheck::positive, .detail = "the shear modulus must be positive", .unit = "stress"},
-        {.key = "SIGY", .label = "yield stress SIGY (without a table)", .kcard = 0, .kfield = 3, .fcard = 3, .fcol = 11,
-         .field = &MaterialData::sigma_y, .check = ParamCheck::non_negative, .msg = 1211, .unit = "stress"},
-        {.key = "EH", .kcard = 0, .kfield = 4, .fcard = 3, .fcol = 21, .index = pEh, .check = ParamCheck::non_negative,
-         .detail = "the plastic hardening modulus must not be negative"},
-        {.key = "PC", .kcard = 0, .kfield = 5, .fcard = 3, .fcol = 31, .index = pPc},
-        {.key = "FS", .kcard = 0, .kfield = 6, .fcard = 3, .fcol = 41, .field = &MaterialData::fail_strain,
-         .optional_write = true},
-        {.key = "CHARL", .kcard = 0, .kfield = 7, .fcard = 3, .fcol = 51, .index = pCharl, .check = ParamCheck::unsupported,
-         .detail = "failure by element thickness (CHARL)", .optional_write = true},
-    };
-    for (int i = 0; i < kPoints; ++i) t.params.push_back(table_param(kEpsNames[i], pEps1 + i));
-    for (int i = 0; i < kPoints; ++i) t.params.push_back(table_param(kEsNames[i], pEs1 + i));
-    t.num_par = kNumPar;
-    t.keyword_cards = 5;
-    t.check = check;
-    t.derive = derive;
-    t.echo = echo;
-    t.solid = {HexKernel::deformable, update_point, update_block, true};
-    t.accepts_eos = true;
-    t.needs_eos = true;
-    return t;
-  }();
+  static const MaterialType t{.number = 10, .name = "elastic-plastic hydrodynamic (with an equation of state)",
+      .keywords = {"MAT_ELASTIC_PLASTIC_HYDRO", "MAT_010"},
+      .params = with_tables({
+          {.key = "G", .label = "shear modulus G", .kcard = 0, .kfield = 2, .fcard = 3, .fcol = 1, .index = pG,
+           .check = ParamCheck::positive, .detail = "the shear modulus must be positive", .unit = "stress"},
+          {.key = "SIGY", .label = "yield stress SIGY (without a table)", .kcard = 0, .kfield = 3, .fcard = 3, .fcol = 11,
+           .field = &MaterialData::sigma_y, .check = ParamCheck::non_negative, .msg = 1211, .unit = "stress"},
+          {.key = "EH", .kcard = 0, .kfield = 4, .fcard = 3, .fcol = 21, .index = pEh, .check = ParamCheck::non_negative,
+           .detail = "the plastic hardening modulus must not be negative"},
+          {.key = "PC", .kcard = 0, .kfield = 5, .fcard = 3, .fcol = 31, .index = pPc},
+          {.key = "FS", .kcard = 0, .kfield = 6, .fcard = 3, .fcol = 41, .field = &MaterialData::fail_strain,
+           .optional_write = true},
+          {.key = "CHARL", .kcard = 0, .kfield = 7, .fcard = 3, .fcol = 51, .index = pCharl, .check = ParamCheck::unsupported,
+           .detail = "failure by element thickness (CHARL)", .optional_write = true},
+      }),
+      .num_par = kNumPar, .keyword_cards = 5,
+      .check = check, .derive = derive, .echo = echo,
+      .solid = {HexKernel::deformable, update_point, update_block, true},
+      .accepts_eos = true, .needs_eos = true,
+  };
   return t;
 }
 

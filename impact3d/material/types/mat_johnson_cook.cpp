@@ -59,8 +59,6 @@ enum P98 { qVp, qA, qB, qN, qC, qSigmax, qSigsat, qEps0, kNumPar98 };
 // history (type 15)
 enum H { hTemperatureRise, hDamage, hSpalled };
 
-double par(const MaterialData& md, int i) { return std::size_t(i) < md.par.size() ? md.par[std::size_t(i)] : 0.0; }
-
 // The rate factor R of the effective strain rate r and its slope dR/dr (rate* = max(r / EPSO, 1)).
 void calc_rate_factor(const MaterialConstants& m, double r, double& R, double& dR) {
   const int form = int(m.k[kRateop]);
@@ -162,12 +160,7 @@ void update_point(const MaterialConstants& m, const double d[6], double dt, Soli
   double pm = p;
   if (spall == 1 && pm > -m.k[kPc]) pm = -m.k[kPc];  // pressure cutoff: mean stress <= -PC
   const double scale = de > 0.0 ? 1.0 - 3.0 * m.G * de / q : 1.0;
-  sig[0] = pm + scale * s0;
-  sig[1] = pm + scale * s1;
-  sig[2] = pm + scale * s2;
-  sig[3] *= scale;
-  sig[4] *= scale;
-  sig[5] *= scale;
+  set_scaled_deviator(pm, scale, s0, s1, s2, sig);
   if (spall >= 2 && (spall == 2 ? calc_max_principal_stress(sig, pm) >= -m.k[kPc] : pm >= -m.k[kPc])) {
     // spall (2: the largest principal stress of the updated stress reached -PC; 3: the
     // pressure reached PC): from now on a rubble, tension reset to 0
@@ -297,86 +290,65 @@ void echo98(std::ostream& os, const MaterialData& md) {
 }  // namespace
 
 const MaterialType& mat_johnson_cook_type() {
-  static const MaterialType t = [] {
-    MaterialType t;
-    t.number = 15;
-    t.name = "Johnson-Cook";
-    t.keywords = {"MAT_JOHNSON_COOK", "MAT_015"};
-    t.params = {
-        {.key = "G", .label = "shear modulus G", .kcard = 0, .kfield = 2, .fcard = 3, .fcol = 1, .index = pG, .unit = "stress"},
-        {.key = "E", .kcard = 0, .kfield = 3, .fcard = 3, .fcol = 11, .field = &MaterialData::E,
-         .check = ParamCheck::positive, .msg = 1208},
-        {.key = "PR", .fname = "nu", .kcard = 0, .kfield = 4, .fcard = 3, .fcol = 21, .field = &MaterialData::nu,
-         .check = ParamCheck::poisson, .msg = 1209},
-        {.key = "DTF", .kcard = 0, .kfield = 5, .fcard = 3, .fcol = 31, .index = pDtf, .check = ParamCheck::non_negative,
-         .detail = "must not be negative (0: no deletion by time step)"},
-        {.key = "VP", .kcard = 0, .kfield = 6, .fcard = 3, .fcol = 41, .index = pVp, .check = ParamCheck::flag01,
-         .detail = "must be 0 (scale the yield stress) or 1 (viscoplastic)"},
-        {.key = "RATEOP", .kcard = 0, .kfield = 7, .fcard = 3, .fcol = 51, .index = pRateop},
-        p("A", 1, 0, pA, ParamCheck::non_negative, "must not be negative", "A (yield stress)", "stress"),
-        p("B", 1, 1, pB, ParamCheck::non_negative, "must not be negative", "B (hardening)", "stress"),
-        p("N", 1, 2, pN, ParamCheck::non_negative, "must not be negative", "N (hardening exponent)"),
-        p("C", 1, 3, pC, ParamCheck::non_negative, "must not be negative", "C (rate)"),
-        p("M", 1, 4, pM, ParamCheck::non_negative, "must not be negative", "M (thermal softening exponent)"),
-        p("TM", 1, 5, pTm, ParamCheck::none, "", "melt temperature TM", "temperature"),
-        p("TR", 1, 6, pTr, ParamCheck::none, "", "room temperature TR", "temperature"),
-        p("EPSO", 1, 7, pEps0, ParamCheck::non_negative, "must not be negative (0: 1)", "reference strain rate EPSO", "1/time"),
-        p("CP", 2, 0, pCp, ParamCheck::non_negative, "must not be negative (0: no heating)", "specific heat CP"),
-        p("PC", 2, 1, pPc, ParamCheck::none, "", "pressure cutoff PC (< 0; 0 none)", "stress"),
-        p("SPALL", 2, 2, pSpall),
-        p("IT", 2, 3, pIt),
-        p("D1", 2, 4, pD1, ParamCheck::none, "", "damage D1"),
-        p("D2", 2, 5, pD2, ParamCheck::none, "", "damage D2"),
-        p("D3", 2, 6, pD3, ParamCheck::none, "", "damage D3"),
-        p("D4", 2, 7, pD4, ParamCheck::none, "", "damage D4"),
-        p("D5", 3, 0, pD5, ParamCheck::none, "", "damage D5"),
-        p("C2/P", 3, 1, pC2, ParamCheck::none, "", "rate C2 (RATEOP 1) or P (RATEOP 3)"),
-        p("EROD", 3, 2, pErod),
-        p("EFMIN", 3, 3, pEfmin, ParamCheck::non_negative, "must not be negative", "minimum failure strain EFMIN"),
-        {.key = "NUMINT", .kcard = 3, .kfield = 4, .index = pNumint},
-    };
-    t.num_par = kNumPar15;
-    t.keyword_cards = 4;
-    t.check = check15;
-    t.derive = derive15;
-    t.echo = echo15;
-    t.solid = {HexKernel::deformable, update_point, update_block, true};
-    t.history = {"temperature rise", "damage", "spalled"};
-    t.accepts_eos = true;
-    return t;
-  }();
+  static const MaterialType t{.number = 15, .name = "Johnson-Cook", .keywords = {"MAT_JOHNSON_COOK", "MAT_015"},
+      .params = {
+          {.key = "G", .label = "shear modulus G", .kcard = 0, .kfield = 2, .fcard = 3, .fcol = 1, .index = pG, .unit = "stress"},
+          young_modulus_param(3, 11, 3), poisson_param(3, 21, 4),
+          {.key = "DTF", .kcard = 0, .kfield = 5, .fcard = 3, .fcol = 31, .index = pDtf, .check = ParamCheck::non_negative,
+           .detail = "must not be negative (0: no deletion by time step)"},
+          {.key = "VP", .kcard = 0, .kfield = 6, .fcard = 3, .fcol = 41, .index = pVp, .check = ParamCheck::flag01,
+           .detail = "must be 0 (scale the yield stress) or 1 (viscoplastic)"},
+          {.key = "RATEOP", .kcard = 0, .kfield = 7, .fcard = 3, .fcol = 51, .index = pRateop},
+          p("A", 1, 0, pA, ParamCheck::non_negative, "must not be negative", "A (yield stress)", "stress"),
+          p("B", 1, 1, pB, ParamCheck::non_negative, "must not be negative", "B (hardening)", "stress"),
+          p("N", 1, 2, pN, ParamCheck::non_negative, "must not be negative", "N (hardening exponent)"),
+          p("C", 1, 3, pC, ParamCheck::non_negative, "must not be negative", "C (rate)"),
+          p("M", 1, 4, pM, ParamCheck::non_negative, "must not be negative", "M (thermal softening exponent)"),
+          p("TM", 1, 5, pTm, ParamCheck::none, "", "melt temperature TM", "temperature"),
+          p("TR", 1, 6, pTr, ParamCheck::none, "", "room temperature TR", "temperature"),
+          p("EPSO", 1, 7, pEps0, ParamCheck::non_negative, "must not be negative (0: 1)", "reference strain rate EPSO", "1/time"),
+          p("CP", 2, 0, pCp, ParamCheck::non_negative, "must not be negative (0: no heating)", "specific heat CP"),
+          p("PC", 2, 1, pPc, ParamCheck::none, "", "pressure cutoff PC (< 0; 0 none)", "stress"),
+          p("SPALL", 2, 2, pSpall),
+          p("IT", 2, 3, pIt),
+          p("D1", 2, 4, pD1, ParamCheck::none, "", "damage D1"),
+          p("D2", 2, 5, pD2, ParamCheck::none, "", "damage D2"),
+          p("D3", 2, 6, pD3, ParamCheck::none, "", "damage D3"),
+          p("D4", 2, 7, pD4, ParamCheck::none, "", "damage D4"),
+          p("D5", 3, 0, pD5, ParamCheck::none, "", "damage D5"),
+          p("C2/P", 3, 1, pC2, ParamCheck::none, "", "rate C2 (RATEOP 1) or P (RATEOP 3)"),
+          p("EROD", 3, 2, pErod),
+          p("EFMIN", 3, 3, pEfmin, ParamCheck::non_negative, "must not be negative", "minimum failure strain EFMIN"),
+          {.key = "NUMINT", .kcard = 3, .kfield = 4, .index = pNumint},
+      },
+      .num_par = kNumPar15, .keyword_cards = 4,
+      .check = check15, .derive = derive15, .echo = echo15,
+      .solid = {HexKernel::deformable, update_point, update_block, true},
+      .accepts_eos = true, .history = {"temperature rise", "damage", "spalled"},
+  };
   return t;
 }
 
 const MaterialType& mat_simplified_johnson_cook_type() {
-  static const MaterialType t = [] {
-    MaterialType t;
-    t.number = 98;
-    t.name = "simplified Johnson-Cook";
-    t.keywords = {"MAT_SIMPLIFIED_JOHNSON_COOK", "MAT_098"};
-    t.params = {
-        young_modulus_param(3, 1),
-        poisson_param(3, 11),
-        {.key = "VP", .kcard = 0, .kfield = 4, .fcard = 3, .fcol = 21, .index = qVp, .check = ParamCheck::flag01,
-         .detail = "must be 0 (scale the yield stress) or 1 (viscoplastic)"},
-        p("A", 1, 0, qA, ParamCheck::non_negative, "must not be negative", "A (yield stress)", "stress"),
-        p("B", 1, 1, qB, ParamCheck::non_negative, "must not be negative", "B (hardening)", "stress"),
-        p("N", 1, 2, qN, ParamCheck::non_negative, "must not be negative", "N (hardening exponent)"),
-        p("C", 1, 3, qC, ParamCheck::non_negative, "must not be negative", "C (rate)"),
-        {.key = "PSFAIL", .kcard = 1, .kfield = 4, .fcard = 4, .fcol = 41, .field = &MaterialData::fail_strain,
-         .check = ParamCheck::non_negative, .detail = "must not be negative (0 or >= 1e16: no failure)"},
-        p("SIGMAX", 1, 5, qSigmax, ParamCheck::non_negative, "must not be negative (0: none)", "maximum flow stress SIGMAX", "stress"),
-        p("SIGSAT", 1, 6, qSigsat, ParamCheck::non_negative, "must not be negative (0: none)", "saturation stress SIGSAT", "stress"),
-        p("EPSO", 1, 7, qEps0, ParamCheck::non_negative, "must not be negative (0: 1)", "reference strain rate EPSO", "1/time"),
-    };
-    t.num_par = kNumPar98;
-    t.keyword_cards = 2;
-    t.check = check98;
-    t.derive = derive98;
-    t.echo = echo98;
-    t.solid = {HexKernel::deformable, update_point, update_block, true};
-    return t;
-  }();
+  static const MaterialType t{.number = 98, .name = "simplified Johnson-Cook", .keywords = {"MAT_SIMPLIFIED_JOHNSON_COOK", "MAT_098"},
+      .params = {
+          young_modulus_param(3, 1), poisson_param(3, 11),
+          {.key = "VP", .kcard = 0, .kfield = 4, .fcard = 3, .fcol = 21, .index = qVp, .check = ParamCheck::flag01,
+           .detail = "must be 0 (scale the yield stress) or 1 (viscoplastic)"},
+          p("A", 1, 0, qA, ParamCheck::non_negative, "must not be negative", "A (yield stress)", "stress"),
+          p("B", 1, 1, qB, ParamCheck::non_negative, "must not be negative", "B (hardening)", "stress"),
+          p("N", 1, 2, qN, ParamCheck::non_negative, "must not be negative", "N (hardening exponent)"),
+          p("C", 1, 3, qC, ParamCheck::non_negative, "must not be negative", "C (rate)"),
+          {.key = "PSFAIL", .kcard = 1, .kfield = 4, .fcard = 4, .fcol = 41, .field = &MaterialData::fail_strain,
+           .check = ParamCheck::non_negative, .detail = "must not be negative (0 or >= 1e16: no failure)"},
+          p("SIGMAX", 1, 5, qSigmax, ParamCheck::non_negative, "must not be negative (0: none)", "maximum flow stress SIGMAX", "stress"),
+          p("SIGSAT", 1, 6, qSigsat, ParamCheck::non_negative, "must not be negative (0: none)", "saturation stress SIGSAT", "stress"),
+          p("EPSO", 1, 7, qEps0, ParamCheck::non_negative, "must not be negative (0: 1)", "reference strain rate EPSO", "1/time"),
+      },
+      .num_par = kNumPar98, .keyword_cards = 2,
+      .check = check98, .derive = derive98, .echo = echo98,
+      .solid = {HexKernel::deformable, update_point, update_block, true},
+  };
   return t;
 }
 

@@ -43,8 +43,6 @@ enum K { kA, kB, kN, kC, kM, kTr, kTm, kE0dot, kHeat, kTc, kTauc, kThermal,
          kZa, kZaA, kZaN, kAlpha0, kAlpha1, kBeta0, kBeta1 };  // kZa: FLAG1 = 1 (kA: SIGA, kB: B)
 enum H { hTemperature, hEroded };
 
-double par(const MaterialData& md, int i) { return std::size_t(i) < md.par.size() ? md.par[std::size_t(i)] : 0.0; }
-
 // The temperature factor 1 - T*^M.
 double thermal_factor(const MaterialConstants& m, double T) {
   if (m.k[kThermal] == 0.0) return 1.0;
@@ -106,12 +104,7 @@ void update_point(const MaterialConstants& m, const double d[6], double dt, Soli
   }
   if (de > 0.0) {
     const double scale = 1.0 - 3.0 * m.G * de / q;
-    sig[0] = p + scale * s0;
-    sig[1] = p + scale * s1;
-    sig[2] = p + scale * s2;
-    sig[3] *= scale;
-    sig[4] *= scale;
-    sig[5] *= scale;
+    set_scaled_deviator(p, scale, s0, s1, s2, sig);
     st.eps_p += de;
     st.yielded = 1.0;
     st.hist[hTemperature] += m.k[kHeat] * (q - 3.0 * m.G * de) * de;  // XSI sigma_y dp / (rho CP)
@@ -193,54 +186,44 @@ MaterialParam p(const char* key, int kcard, int kfield, int index, ParamCheck ch
 }  // namespace
 
 const MaterialType& mat_modified_johnson_cook_type() {
-  static const MaterialType t = [] {
-    MaterialType t;
-    t.number = 107;
-    t.name = "modified Johnson-Cook";
-    t.keywords = {"MAT_MODIFIED_JOHNSON_COOK", "MAT_107"};
-    t.params = {
-        young_modulus_param(3, 1),
-        poisson_param(3, 11),
-        p("BETA", 0, 4, pBeta, ParamCheck::unsupported, "BETA != 0 (damage coupling)"),
-        p("XSI", 0, 5, pXsi, ParamCheck::fraction, "the Taylor-Quinney coefficient must lie in [0, 1]", "Taylor-Quinney XSI"),
-        p("CP", 0, 6, pCp, ParamCheck::non_negative, "must not be negative (0: no heating)", "specific heat CP"),
-        p("ALPHA", 0, 7, pAlpha, ParamCheck::unsupported, "ALPHA != 0 (thermal expansion)"),
-        p("E0DOT", 1, 0, pE0dot, ParamCheck::non_negative, "must not be negative (0: 1)", "reference strain rate E0DOT", "1/time"),
-        p("TR", 1, 1, pTr, ParamCheck::none, "", "room temperature TR", "temperature"),
-        p("TM", 1, 2, pTm, ParamCheck::none, "", "melt temperature TM", "temperature"),
-        p("T0", 1, 3, pT0, ParamCheck::non_negative, "must not be negative (0: TR)", "initial temperature T0", "temperature"),
-        p("FLAG1", 1, 4, pFlag1),
-        p("FLAG2", 1, 5, pFlag2),
-        p("A/SIGA", 2, 0, pA, ParamCheck::non_negative, "must not be negative", "A (yield stress; FLAG1 1: SIGA)", "stress"),
-        p("B/B", 2, 1, pB, ParamCheck::non_negative, "must not be negative", "B (hardening; FLAG1 1: B)", "stress"),
-        p("N/BETA0", 2, 2, pN, ParamCheck::non_negative, "must not be negative", "N (hardening exponent; FLAG1 1: BETA0)"),
-        p("C/BETA1", 2, 3, pC, ParamCheck::non_negative, "must not be negative", "C (rate exponent; FLAG1 1: BETA1)"),
-        p("M/NA", 2, 4, pM, ParamCheck::non_negative, "must not be negative", "M (thermal softening exponent; FLAG1 0 only)"),
-        p("Q1/A", 3, 0, pQ1),
-        p("C1/N", 3, 1, pC1),
-        p("Q2/ALPHA0", 3, 2, pQ2),
-        p("C2/ALPHA1", 3, 3, pC2),
-        p("DC", 4, 0, pDc),
-        p("PD/WC", 4, 1, pPd),
-        p("D1", 4, 2, pD1),
-        p("D2", 4, 3, pD2),
-        p("D3", 4, 4, pD3),
-        p("D4", 4, 5, pD4),
-        p("D5", 4, 6, pD5),
-        p("TC", 5, 0, pTc, ParamCheck::non_negative, "must not be negative (0: no erosion by temperature)", "erosion temperature TC", "temperature"),
-        p("TAUC", 5, 1, pTauc, ParamCheck::non_negative, "must not be negative (0: no erosion by shear stress)", "erosion shear stress TAUC", "stress"),
-    };
-    t.num_par = kNumPar;
-    t.keyword_cards = 6;
-    t.check = check;
-    t.derive = derive;
-    t.echo = echo;
-    t.solid = {HexKernel::deformable, update_point, update_block, true};
-    t.history = {"temperature", "eroded"};
-    t.temperature_history = hTemperature;
-    t.initial_temperature = initial_temperature;
-    return t;
-  }();
+  static const MaterialType t{.number = 107, .name = "modified Johnson-Cook", .keywords = {"MAT_MODIFIED_JOHNSON_COOK", "MAT_107"},
+      .params = {
+          young_modulus_param(3, 1), poisson_param(3, 11),
+          p("BETA", 0, 4, pBeta, ParamCheck::unsupported, "BETA != 0 (damage coupling)"),
+          p("XSI", 0, 5, pXsi, ParamCheck::fraction, "the Taylor-Quinney coefficient must lie in [0, 1]", "Taylor-Quinney XSI"),
+          p("CP", 0, 6, pCp, ParamCheck::non_negative, "must not be negative (0: no heating)", "specific heat CP"),
+          p("ALPHA", 0, 7, pAlpha, ParamCheck::unsupported, "ALPHA != 0 (thermal expansion)"),
+          p("E0DOT", 1, 0, pE0dot, ParamCheck::non_negative, "must not be negative (0: 1)", "reference strain rate E0DOT", "1/time"),
+          p("TR", 1, 1, pTr, ParamCheck::none, "", "room temperature TR", "temperature"),
+          p("TM", 1, 2, pTm, ParamCheck::none, "", "melt temperature TM", "temperature"),
+          p("T0", 1, 3, pT0, ParamCheck::non_negative, "must not be negative (0: TR)", "initial temperature T0", "temperature"),
+          p("FLAG1", 1, 4, pFlag1),
+          p("FLAG2", 1, 5, pFlag2),
+          p("A/SIGA", 2, 0, pA, ParamCheck::non_negative, "must not be negative", "A (yield stress; FLAG1 1: SIGA)", "stress"),
+          p("B/B", 2, 1, pB, ParamCheck::non_negative, "must not be negative", "B (hardening; FLAG1 1: B)", "stress"),
+          p("N/BETA0", 2, 2, pN, ParamCheck::non_negative, "must not be negative", "N (hardening exponent; FLAG1 1: BETA0)"),
+          p("C/BETA1", 2, 3, pC, ParamCheck::non_negative, "must not be negative", "C (rate exponent; FLAG1 1: BETA1)"),
+          p("M/NA", 2, 4, pM, ParamCheck::non_negative, "must not be negative", "M (thermal softening exponent; FLAG1 0 only)"),
+          p("Q1/A", 3, 0, pQ1),
+          p("C1/N", 3, 1, pC1),
+          p("Q2/ALPHA0", 3, 2, pQ2),
+          p("C2/ALPHA1", 3, 3, pC2),
+          p("DC", 4, 0, pDc),
+          p("PD/WC", 4, 1, pPd),
+          p("D1", 4, 2, pD1),
+          p("D2", 4, 3, pD2),
+          p("D3", 4, 4, pD3),
+          p("D4", 4, 5, pD4),
+          p("D5", 4, 6, pD5),
+          p("TC", 5, 0, pTc, ParamCheck::non_negative, "must not be negative (0: no erosion by temperature)", "erosion temperature TC", "temperature"),
+          p("TAUC", 5, 1, pTauc, ParamCheck::non_negative, "must not be negative (0: no erosion by shear stress)", "erosion shear stress TAUC", "stress"),
+      },
+      .num_par = kNumPar, .keyword_cards = 6,
+      .check = check, .derive = derive, .echo = echo,
+      .solid = {HexKernel::deformable, update_point, update_block, true},
+      .history = {"temperature", "eroded"}, .temperature_history = hTemperature,
+      .initial_temperature = initial_temperature,
+  };
   return t;
 }
 

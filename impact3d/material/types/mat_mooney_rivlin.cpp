@@ -43,8 +43,6 @@ namespace {
 enum Par { pA, pB, pRef, pSgl, pSw, pSt, pLcid, kNumPar };
 enum K { kA, kB, kC, kD };
 
-double par(const MaterialData& md, int i) { return std::size_t(i) < md.par.size() ? md.par[std::size_t(i)] : 0.0; }
-
 void mooney_rivlin_constants(double A, double B, double nu, double& C, double& D) {
   C = 0.5 * A + B;
   D = (A * (5.0 * nu - 2.0) + B * (11.0 * nu - 5.0)) / (2.0 * (1.0 - 2.0 * nu));
@@ -185,31 +183,23 @@ double update_plane_stress_mooney_rivlin(const MaterialConstants& m, const doubl
 }
 
 const MaterialType& mat_mooney_rivlin_type() {
-  static const MaterialType t = [] {
-    MaterialType t;
-    t.number = 27;
-    t.name = "Mooney-Rivlin rubber";
-    t.keywords = {"MAT_MOONEY-RIVLIN_RUBBER", "MAT_027"};
-    t.params = {
-        {.key = "PR", .fname = "nu", .label = "Poisson's ratio PR", .kcard = 0, .kfield = 2, .fcard = 3, .fcol = 1,
-         .field = &MaterialData::nu, .check = ParamCheck::poisson, .msg = 1209},
-        p("A", 0, 3, pA, ParamCheck::none, "", "A", "stress"),
-        p("B", 0, 4, pB, ParamCheck::none, "", "B", "stress"),
-        p("REF", 0, 5, pRef, ParamCheck::unsupported, "REF = 1 (the reference geometry of *INITIAL_FOAM_REFERENCE_GEOMETRY)"),
-        p("SGL", 1, 0, pSgl, ParamCheck::non_negative, "must not be negative (specimen gauge length)"),
-        p("SW", 1, 1, pSw, ParamCheck::non_negative, "must not be negative (specimen width)"),
-        p("ST", 1, 2, pSt, ParamCheck::non_negative, "must not be negative (specimen thickness)"),
-        p("LCID", 1, 3, pLcid, ParamCheck::integer, "must be a curve number"),
-    };
-    t.num_par = kNumPar;
-    t.keyword_cards = 2;
-    t.check = check;
-    t.derive = derive;
-    t.echo = echo;
-    t.solid = {HexKernel::deformable, update_point, update_block, false};
-    t.history = {"b_xx - 1", "b_yy - 1", "b_zz - 1", "b_xy", "b_yz", "b_zx"};
-    return t;
-  }();
+  static const MaterialType t{.number = 27, .name = "Mooney-Rivlin rubber", .keywords = {"MAT_MOONEY-RIVLIN_RUBBER", "MAT_027"},
+      .params = {
+          {.key = "PR", .fname = "nu", .label = "Poisson's ratio PR", .kcard = 0, .kfield = 2, .fcard = 3, .fcol = 1,
+           .field = &MaterialData::nu, .check = ParamCheck::poisson, .msg = 1209},
+          p("A", 0, 3, pA, ParamCheck::none, "", "A", "stress"),
+          p("B", 0, 4, pB, ParamCheck::none, "", "B", "stress"),
+          p("REF", 0, 5, pRef, ParamCheck::unsupported, "REF = 1 (the reference geometry of *INITIAL_FOAM_REFERENCE_GEOMETRY)"),
+          p("SGL", 1, 0, pSgl, ParamCheck::non_negative, "must not be negative (specimen gauge length)"),
+          p("SW", 1, 1, pSw, ParamCheck::non_negative, "must not be negative (specimen width)"),
+          p("ST", 1, 2, pSt, ParamCheck::non_negative, "must not be negative (specimen thickness)"),
+          p("LCID", 1, 3, pLcid, ParamCheck::integer, "must be a curve number"),
+      },
+      .num_par = kNumPar, .keyword_cards = 2,
+      .check = check, .derive = derive, .echo = echo,
+      .solid = {HexKernel::deformable, update_point, update_block, false},
+      .history = {"b_xx - 1", "b_yy - 1", "b_zz - 1", "b_xy", "b_yz", "b_zx"},
+  };
   return t;
 }
 

@@ -23,8 +23,6 @@ namespace {
 enum P { pPc, pMu, pTerod, pCerod, pYm, pPr, kNumPar };
 enum K { kMu };
 
-double par(const MaterialData& md, int i) { return std::size_t(i) < md.par.size() ? md.par[std::size_t(i)] : 0.0; }
-
 void update_point(const MaterialConstants& m, const double d[6], double, SolidPointState& st) {
   double* sig = st.sig;
   const double p = (sig[0] + sig[1] + sig[2]) * (1.0 / 3.0);
@@ -86,29 +84,20 @@ MaterialParam p(const char* key, int kfield, int index, ParamCheck check, const 
 }  // namespace
 
 const MaterialType& mat_null_type() {
-  static const MaterialType t = [] {
-    MaterialType t;
-    t.number = 9;
-    t.name = "null (fluid, with an equation of state)";
-    t.keywords = {"MAT_NULL", "MAT_009"};
-    t.params = {
-        p("PC", 2, pPc, ParamCheck::none, "", "pressure cutoff PC (< 0; 0 none)", "stress"),
-        p("MU", 3, pMu, ParamCheck::non_negative, "the viscosity must not be negative", "dynamic viscosity MU", "stress x time"),
-        p("TEROD", 4, pTerod, ParamCheck::none, "", "erosion above relative volume TEROD (0 off)"),
-        p("CEROD", 5, pCerod, ParamCheck::none, "", "erosion below relative volume CEROD (0 off)"),
-        p("YM", 6, pYm, ParamCheck::ignored, "YM (LS-DYNA uses it for null shells and beams only)", nullptr),
-        p("PR", 7, pPr, ParamCheck::ignored, "PR (LS-DYNA uses it for null shells and beams only)", nullptr),
-    };
-    t.num_par = kNumPar;
-    t.keyword_cards = 1;
-    t.check = check;
-    t.derive = derive;
-    t.echo = echo;
-    t.solid = {HexKernel::deformable, update_point, update_block, false};
-    t.accepts_eos = true;
-    t.needs_eos = true;
-    return t;
-  }();
+  static const MaterialType t{.number = 9, .name = "null (fluid, with an equation of state)", .keywords = {"MAT_NULL", "MAT_009"},
+      .params = {
+          p("PC", 2, pPc, ParamCheck::none, "", "pressure cutoff PC (< 0; 0 none)", "stress"),
+          p("MU", 3, pMu, ParamCheck::non_negative, "the viscosity must not be negative", "dynamic viscosity MU", "stress x time"),
+          p("TEROD", 4, pTerod, ParamCheck::none, "", "erosion above relative volume TEROD (0 off)"),
+          p("CEROD", 5, pCerod, ParamCheck::none, "", "erosion below relative volume CEROD (0 off)"),
+          p("YM", 6, pYm, ParamCheck::ignored, "YM (LS-DYNA uses it for null shells and beams only)", nullptr),
+          p("PR", 7, pPr, ParamCheck::ignored, "PR (LS-DYNA uses it for null shells and beams only)", nullptr),
+      },
+      .num_par = kNumPar, .keyword_cards = 1,
+      .check = check, .derive = derive, .echo = echo,
+      .solid = {HexKernel::deformable, update_point, update_block, false},
+      .accepts_eos = true, .needs_eos = true,
+  };
   return t;
 }
 

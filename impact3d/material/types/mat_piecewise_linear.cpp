@@ -35,8 +35,10 @@ enum Par { kTdel, kLcss, kLcsr, kVP, kLcf, kEps1, kEs1 = kEps1 + 8, kNumPar = kE
 // MaterialConstants::k: the viscoplastic flag (VP = 1)
 enum K { kViscoplastic };
 
-// A parameter (0 when a programmatic MaterialData leaves par short).
-double par(const MaterialData& md, int i) { return std::size_t(i) < md.par.size() ? md.par[std::size_t(i)] : 0.0; }
+// Load curve number id (1-based), or nullptr (0, or beyond the deck's curves).
+const LoadCurve* load_curve(const Model& m, int id) {
+  return id > 0 && std::size_t(id) <= m.load_curves.size() ? &m.load_curves[std::size_t(id - 1)] : nullptr;
+}
 
 // Whether any of EPS1-EPS8 is nonzero: LS-DYNA reads an all-zero EPS table as no table (the
 // flow stress from SIGY and ETAN, or LCSS), whatever ES1-ES8 hold.
@@ -66,8 +68,8 @@ void check(MaterialData& md, const MaterialType& t, const ParamReport& report) {
   if (md.fail_strain < 0) report(*find_param(t, "FAIL"), 1102, "a user failure subroutine (FAIL < 0)");
   if (md.fail_strain >= 1e19) md.fail_strain = 0;  // LS-DYNA's default 1e21: never
   const int n = table_points(md);
-  static const char* eps_names[] = {"EPS1", "EPS2", "EPS3", "EPS4", "EPS5", "EPS6", "EPS7", "EPS8"};
-  static const char* es_names[] = {"ES1", "ES2", "ES3", "ES4", "ES5", "ES6", "ES7", "ES8"};
+  static const char* const eps_names[] = {"EPS1", "EPS2", "EPS3", "EPS4", "EPS5", "EPS6", "EPS7", "EPS8"};
+  static const char* const es_names[] = {"ES1", "ES2", "ES3", "ES4", "ES5", "ES6", "ES7", "ES8"};
   if (!eps_table_given(md))
     for (int i = 0; i < 8; ++i)
       if (par(md, kEs1 + i) != 0) {  // the first nonzero ES: not used
@@ -75,13 +77,7 @@ void check(MaterialData& md, const MaterialType& t, const ParamReport& report) {
                "EPS1-EPS8 are all zero: LS-DYNA reads no table (the flow stress from SIGY and ETAN, or LCSS)");
         break;
       }
-  for (int i = 0; i < n; ++i) {
-    const double e = par(md, kEps1 + i), s = par(md, kEs1 + i);
-    if (e < 0 || (i > 0 && !(e > par(md, kEps1 + i - 1))))
-      report(*find_param(t, eps_names[i]), 1003, "plastic strains of the table must start at 0 or more and increase");
-    if (s < 0 || (i > 0 && s < par(md, kEs1 + i - 1)))
-      report(*find_param(t, es_names[i]), 1003, "yield stresses of the table must not be negative nor decrease (no softening)");
-  }
+  check_flow_table(md, t, report, n, kEps1, kEs1, eps_names, es_names);
 }
 
 void derive(const MaterialData& d, const Model& m, MaterialConstants& c) {
@@ -92,12 +88,11 @@ void derive(const MaterialData& d, const Model& m, MaterialConstants& c) {
   c.rate_x.clear();
   c.rate_f.clear();
   c.rate_slope.clear();
-  if (lcsr > 0 && std::size_t(lcsr) <= m.load_curves.size()) {
-    const LoadCurve& lc = m.load_curves[std::size_t(lcsr - 1)];
-    c.rate_x = lc.t;
-    c.rate_f = lc.f;
-    for (std::size_t i = 0; i + 1 < lc.t.size(); ++i)
-      c.rate_slope.push_back(lc.t[i + 1] > lc.t[i] ? (lc.f[i + 1] - lc.f[i]) / (lc.t[i + 1] - lc.t[i]) : 0.0);
+  if (const LoadCurve* lc = load_curve(m, lcsr)) {
+    c.rate_x = lc->t;
+    c.rate_f = lc->f;
+    for (std::size_t i = 0; i + 1 < lc->t.size(); ++i)
+      c.rate_slope.push_back(lc->t[i + 1] > lc->t[i] ? (lc->f[i + 1] - lc->f[i]) / (lc->t[i + 1] - lc->t[i]) : 0.0);
   } else if (d.rate_c > 0 && d.rate_p > 0) {
     c.rate_c = d.rate_c;
     c.rate_inv_p = 1.0 / d.rate_p;
@@ -110,10 +105,9 @@ void derive(const MaterialData& d, const Model& m, MaterialConstants& c) {
   const int n = table_points(d);
   c.curve_eps.clear();
   c.curve_sig.clear();
-  if (lcss > 0 && std::size_t(lcss) <= m.load_curves.size()) {
-    const LoadCurve& lc = m.load_curves[std::size_t(lcss - 1)];
-    c.curve_eps = lc.t;
-    c.curve_sig = lc.f;
+  if (const LoadCurve* lc = load_curve(m, lcss)) {
+    c.curve_eps = lc->t;
+    c.curve_sig = lc->f;
   } else if (n > 0) {
     for (int i = 0; i < n; ++i) {
       c.curve_eps.push_back(par(d, kEps1 + i));
@@ -271,49 +265,40 @@ void update_stress_piecewise_linear(const MaterialConstants& m, const double d[6
 }
 
 const MaterialType& mat_piecewise_linear_type() {
-  static const MaterialType t = [] {
-    MaterialType t;
-    t.number = 24;
-    t.name = "piecewise-linear plasticity";
-    t.keywords = {"MAT_PIECEWISE_LINEAR_PLASTICITY", "MAT_024"};
-    t.params = {
-        young_modulus_param(3, 1),
-        poisson_param(3, 11),
-        {.key = "SIGY", .kcard = 0, .kfield = 4, .fcard = 3, .fcol = 21, .field = &MaterialData::sigma_y,
-         .check = ParamCheck::non_negative, .msg = 1211},
-        {.key = "ETAN", .kcard = 0, .kfield = 5, .fcard = 3, .fcol = 31, .field = &MaterialData::E_tan,
-         .check = ParamCheck::below_E, .msg = 1210},
-        {.key = "FAIL", .kcard = 0, .kfield = 6, .fcard = 3, .fcol = 41, .field = &MaterialData::fail_strain, .optional_write = true},
-        {.key = "TDEL", .kcard = 0, .kfield = 7, .fcard = 3, .fcol = 51, .index = kTdel, .check = ParamCheck::non_negative,
-         .detail = "must not be negative (0: no deletion by time step)", .optional_write = true},
-        {.key = "C", .kcard = 1, .kfield = 0, .fcard = 4, .fcol = 1, .field = &MaterialData::rate_c,
-         .check = ParamCheck::non_negative, .detail = "must not be negative (0: no strain-rate effect)", .optional_write = true},
-        {.key = "P", .kcard = 1, .kfield = 1, .fcard = 4, .fcol = 11, .field = &MaterialData::rate_p, .optional_write = true},
-        {.key = "LCSS", .kcard = 1, .kfield = 2, .fcard = 4, .fcol = 21, .index = kLcss, .check = ParamCheck::curve,
-         .detail = "a load-curve number (0: none)", .optional_write = true},
-        {.key = "LCSR", .kcard = 1, .kfield = 3, .fcard = 4, .fcol = 31, .index = kLcsr, .check = ParamCheck::curve,
-         .detail = "a load-curve number (0: none; strain rate -> yield-stress factor)", .optional_write = true},
-        {.key = "VP", .kcard = 1, .kfield = 4, .fcard = 4, .fcol = 41, .index = kVP,
-         .detail = "VP: 0 the yield stress scaled by the strain rate, 1 viscoplastic", .optional_write = true},
-        {.key = "LCF", .kcard = 1, .kfield = 5, .index = kLcf, .check = ParamCheck::unsupported,
-         .detail = "the failure curve LCF"},
-        table_param("EPS1", 3, 0, kEps1 + 0), table_param("EPS2", 3, 1, kEps1 + 1),
-        table_param("EPS3", 3, 2, kEps1 + 2), table_param("EPS4", 3, 3, kEps1 + 3),
-        table_param("EPS5", 3, 4, kEps1 + 4), table_param("EPS6", 3, 5, kEps1 + 5),
-        table_param("EPS7", 3, 6, kEps1 + 6), table_param("EPS8", 3, 7, kEps1 + 7),
-        table_param("ES1", 4, 0, kEs1 + 0), table_param("ES2", 4, 1, kEs1 + 1),
-        table_param("ES3", 4, 2, kEs1 + 2), table_param("ES4", 4, 3, kEs1 + 3),
-        table_param("ES5", 4, 4, kEs1 + 4), table_param("ES6", 4, 5, kEs1 + 5),
-        table_param("ES7", 4, 6, kEs1 + 6), table_param("ES8", 4, 7, kEs1 + 7),
-    };
-    t.num_par = kNumPar;
-    t.keyword_cards = 4;
-    t.check = check;
-    t.derive = derive;
-    t.echo = echo;
-    t.solid = {HexKernel::deformable, update_point, update_block, true};
-    return t;
-  }();
+  static const MaterialType t{.number = 24, .name = "piecewise-linear plasticity", .keywords = {"MAT_PIECEWISE_LINEAR_PLASTICITY", "MAT_024"},
+      .params = {
+          young_modulus_param(3, 1), poisson_param(3, 11),
+          {.key = "SIGY", .kcard = 0, .kfield = 4, .fcard = 3, .fcol = 21, .field = &MaterialData::sigma_y,
+           .check = ParamCheck::non_negative, .msg = 1211},
+          {.key = "ETAN", .kcard = 0, .kfield = 5, .fcard = 3, .fcol = 31, .field = &MaterialData::E_tan,
+           .check = ParamCheck::below_E, .msg = 1210},
+          {.key = "FAIL", .kcard = 0, .kfield = 6, .fcard = 3, .fcol = 41, .field = &MaterialData::fail_strain, .optional_write = true},
+          {.key = "TDEL", .kcard = 0, .kfield = 7, .fcard = 3, .fcol = 51, .index = kTdel, .check = ParamCheck::non_negative,
+           .detail = "must not be negative (0: no deletion by time step)", .optional_write = true},
+          {.key = "C", .kcard = 1, .kfield = 0, .fcard = 4, .fcol = 1, .field = &MaterialData::rate_c,
+           .check = ParamCheck::non_negative, .detail = "must not be negative (0: no strain-rate effect)", .optional_write = true},
+          {.key = "P", .kcard = 1, .kfield = 1, .fcard = 4, .fcol = 11, .field = &MaterialData::rate_p, .optional_write = true},
+          {.key = "LCSS", .kcard = 1, .kfield = 2, .fcard = 4, .fcol = 21, .index = kLcss, .check = ParamCheck::curve,
+           .detail = "a load-curve number (0: none)", .optional_write = true},
+          {.key = "LCSR", .kcard = 1, .kfield = 3, .fcard = 4, .fcol = 31, .index = kLcsr, .check = ParamCheck::curve,
+           .detail = "a load-curve number (0: none; strain rate -> yield-stress factor)", .optional_write = true},
+          {.key = "VP", .kcard = 1, .kfield = 4, .fcard = 4, .fcol = 41, .index = kVP,
+           .detail = "VP: 0 the yield stress scaled by the strain rate, 1 viscoplastic", .optional_write = true},
+          {.key = "LCF", .kcard = 1, .kfield = 5, .index = kLcf, .check = ParamCheck::unsupported,
+           .detail = "the failure curve LCF"},
+          table_param("EPS1", 3, 0, kEps1 + 0), table_param("EPS2", 3, 1, kEps1 + 1),
+          table_param("EPS3", 3, 2, kEps1 + 2), table_param("EPS4", 3, 3, kEps1 + 3),
+          table_param("EPS5", 3, 4, kEps1 + 4), table_param("EPS6", 3, 5, kEps1 + 5),
+          table_param("EPS7", 3, 6, kEps1 + 6), table_param("EPS8", 3, 7, kEps1 + 7),
+          table_param("ES1", 4, 0, kEs1 + 0), table_param("ES2", 4, 1, kEs1 + 1),
+          table_param("ES3", 4, 2, kEs1 + 2), table_param("ES4", 4, 3, kEs1 + 3),
+          table_param("ES5", 4, 4, kEs1 + 4), table_param("ES6", 4, 5, kEs1 + 5),
+          table_param("ES7", 4, 6, kEs1 + 6), table_param("ES8", 4, 7, kEs1 + 7),
+      },
+      .num_par = kNumPar, .keyword_cards = 4,
+      .check = check, .derive = derive, .echo = echo,
+      .solid = {HexKernel::deformable, update_point, update_block, true},
+  };
   return t;
 }
 

@@ -64,45 +64,35 @@ void echo(std::ostream& os, const MaterialData& md) {
 }  // namespace
 
 const MaterialType& mat_plastic_kinematic_type() {
-  static const MaterialType t = [] {
-    MaterialType t;
-    t.number = 3;
-    t.name = "elastic-plastic (linear hardening)";
-    t.keywords = {"MAT_PLASTIC_KINEMATIC", "MAT_003"};
-    t.params = {
-        young_modulus_param(3, 1),
-        poisson_param(4, 1),
-        {.key = "SIGY", .fname = "yield stress", .kcard = 0, .kfield = 4, .fcard = 5, .fcol = 1,
-         .field = &MaterialData::sigma_y, .check = ParamCheck::non_negative, .msg = 1211},
-        {.key = "ETAN", .fname = "tangent modulus", .kcard = 0, .kfield = 5, .fcard = 6, .fcol = 1,
-         .field = &MaterialData::E_tan, .check = ParamCheck::below_E, .msg = 1210},
-        {.key = "BETA", .fname = "beta", .kcard = 0, .kfield = 6, .fcard = 7, .fcol = 1,
-         .field = &MaterialData::beta, .check = ParamCheck::fraction, .msg = 1212},
-        // the seed's "initially elastic" switch: fixed card 8 column 1-10; keyword decks set it
-        // with the IMPACT-3D comment line INITIALLY_ELASTIC PART
-        {.key = "IE", .fname = "initially elastic flag", .kcard = -1, .fcard = 8, .fcol = 1, .index = kInitiallyElastic,
-         .check = ParamCheck::flag01, .msg = 1006, .detail = "0 or 1"},
-        // card 2 (fixed: card 8 columns 11-40, an IMPACT-3D choice in the order of LS-DYNA's card 2)
-        {.key = "SRC", .fname = "strain-rate parameter C", .kcard = 1, .kfield = 0, .fcard = 8, .fcol = 11,
-         .field = &MaterialData::rate_c, .check = ParamCheck::non_negative,
-         .detail = "must not be negative (0: no strain-rate effect)", .optional_write = true},
-        {.key = "SRP", .fname = "strain-rate parameter P", .kcard = 1, .kfield = 1, .fcard = 8, .fcol = 21,
-         .field = &MaterialData::rate_p, .optional_write = true},
-        {.key = "FS", .fname = "failure plastic strain", .kcard = 1, .kfield = 2, .fcard = 8, .fcol = 31,
-         .field = &MaterialData::fail_strain, .check = ParamCheck::non_negative,
-         .detail = "must not be negative (0 or >= 1e19: no failure)", .optional_write = true},
-        {.key = "VP", .kcard = 1, .kfield = 3, .index = kVP, .check = ParamCheck::unsupported,
-         .detail = "the viscoplastic rate formulation (VP = 1); VP = 0 scales the yield stress"},
-    };
-    t.num_par = kNumPar;
-    t.keyword_cards = 2;
-    t.one_per_card = true;
-    t.check = check;
-    t.derive = derive;
-    t.echo = echo;
-    t.solid = {HexKernel::deformable, update_point, update_block, true};
-    return t;
-  }();
+  static const MaterialType t{.number = 3, .name = "elastic-plastic (linear hardening)", .keywords = {"MAT_PLASTIC_KINEMATIC", "MAT_003"},
+      .params = {
+          young_modulus_param(3, 1), poisson_param(4, 1),
+          {.key = "SIGY", .fname = "yield stress", .kcard = 0, .kfield = 4, .fcard = 5, .fcol = 1,
+           .field = &MaterialData::sigma_y, .check = ParamCheck::non_negative, .msg = 1211},
+          {.key = "ETAN", .fname = "tangent modulus", .kcard = 0, .kfield = 5, .fcard = 6, .fcol = 1,
+           .field = &MaterialData::E_tan, .check = ParamCheck::below_E, .msg = 1210},
+          {.key = "BETA", .fname = "beta", .kcard = 0, .kfield = 6, .fcard = 7, .fcol = 1,
+           .field = &MaterialData::beta, .check = ParamCheck::fraction, .msg = 1212},
+          // the seed's "initially elastic" switch: fixed card 8 column 1-10; keyword decks set it
+          // with the IMPACT-3D comment line INITIALLY_ELASTIC PART
+          {.key = "IE", .fname = "initially elastic flag", .kcard = -1, .fcard = 8, .fcol = 1, .index = kInitiallyElastic,
+           .check = ParamCheck::flag01, .msg = 1006, .detail = "0 or 1"},
+          // card 2 (fixed: card 8 columns 11-40, an IMPACT-3D choice in the order of LS-DYNA's card 2)
+          {.key = "SRC", .fname = "strain-rate parameter C", .kcard = 1, .kfield = 0, .fcard = 8, .fcol = 11,
+           .field = &MaterialData::rate_c, .check = ParamCheck::non_negative,
+           .detail = "must not be negative (0: no strain-rate effect)", .optional_write = true},
+          {.key = "SRP", .fname = "strain-rate parameter P", .kcard = 1, .kfield = 1, .fcard = 8, .fcol = 21,
+           .field = &MaterialData::rate_p, .optional_write = true},
+          {.key = "FS", .fname = "failure plastic strain", .kcard = 1, .kfield = 2, .fcard = 8, .fcol = 31,
+           .field = &MaterialData::fail_strain, .check = ParamCheck::non_negative,
+           .detail = "must not be negative (0 or >= 1e19: no failure)", .optional_write = true},
+          {.key = "VP", .kcard = 1, .kfield = 3, .index = kVP, .check = ParamCheck::unsupported,
+           .detail = "the viscoplastic rate formulation (VP = 1); VP = 0 scales the yield stress"},
+      },
+      .num_par = kNumPar, .keyword_cards = 2, .one_per_card = true,
+      .check = check, .derive = derive, .echo = echo,
+      .solid = {HexKernel::deformable, update_point, update_block, true},
+  };
   return t;
 }
 

@@ -25,8 +25,6 @@ namespace {
 enum Par { pK, pN, pSigy, pVp, kNumPar };
 enum K { kK, kN, kEyp, kVp };
 
-double par(const MaterialData& md, int i) { return std::size_t(i) < md.par.size() ? md.par[std::size_t(i)] : 0.0; }
-
 double yield_strain(const MaterialData& d) {
   const double k = par(d, pK), n = par(d, pN), sigy = par(d, pSigy);
   if (sigy > 0) return std::pow(sigy / k, 1.0 / n);
@@ -118,34 +116,25 @@ void echo(std::ostream& os, const MaterialData& md) {
 }  // namespace
 
 const MaterialType& mat_power_law_type() {
-  static const MaterialType t = [] {
-    MaterialType t;
-    t.number = 18;
-    t.name = "power-law plasticity";
-    t.keywords = {"MAT_POWER_LAW_PLASTICITY", "MAT_018"};
-    t.params = {
-        young_modulus_param(3, 1),
-        poisson_param(3, 11),
-        {.key = "K", .label = "strength coefficient K", .kcard = 0, .kfield = 4, .fcard = 3, .fcol = 21, .index = pK, .unit = "stress"},
-        {.key = "N", .label = "hardening exponent N", .kcard = 0, .kfield = 5, .fcard = 3, .fcol = 31, .index = pN},
-        {.key = "SRC", .kcard = 0, .kfield = 6, .fcard = 3, .fcol = 41, .field = &MaterialData::rate_c,
-         .check = ParamCheck::non_negative, .detail = "must not be negative (0: no strain-rate effect)"},
-        {.key = "SRP", .kcard = 0, .kfield = 7, .fcard = 3, .fcol = 51, .field = &MaterialData::rate_p},
-        {.key = "SIGY", .label = "initial yield stress SIGY (0: from E)", .kcard = 1, .kfield = 0, .fcard = 4, .fcol = 1,
-         .index = pSigy, .check = ParamCheck::non_negative, .msg = 1211, .unit = "stress"},
-        {.key = "VP", .kcard = 1, .kfield = 1, .fcard = 4, .fcol = 11, .index = pVp, .check = ParamCheck::flag01,
-         .detail = "must be 0 (scale the yield stress) or 1 (viscoplastic)"},
-        {.key = "EPSF", .kcard = 1, .kfield = 2, .fcard = 4, .fcol = 21, .field = &MaterialData::fail_strain,
-         .check = ParamCheck::non_negative, .detail = "must not be negative (0: no failure)"},
-    };
-    t.num_par = kNumPar;
-    t.keyword_cards = 2;
-    t.check = check;
-    t.derive = derive;
-    t.echo = echo;
-    t.solid = {HexKernel::deformable, update_stress_power_law, update_block, true};
-    return t;
-  }();
+  static const MaterialType t{.number = 18, .name = "power-law plasticity", .keywords = {"MAT_POWER_LAW_PLASTICITY", "MAT_018"},
+      .params = {
+          young_modulus_param(3, 1), poisson_param(3, 11),
+          {.key = "K", .label = "strength coefficient K", .kcard = 0, .kfield = 4, .fcard = 3, .fcol = 21, .index = pK, .unit = "stress"},
+          {.key = "N", .label = "hardening exponent N", .kcard = 0, .kfield = 5, .fcard = 3, .fcol = 31, .index = pN},
+          {.key = "SRC", .kcard = 0, .kfield = 6, .fcard = 3, .fcol = 41, .field = &MaterialData::rate_c,
+           .check = ParamCheck::non_negative, .detail = "must not be negative (0: no strain-rate effect)"},
+          {.key = "SRP", .kcard = 0, .kfield = 7, .fcard = 3, .fcol = 51, .field = &MaterialData::rate_p},
+          {.key = "SIGY", .label = "initial yield stress SIGY (0: from E)", .kcard = 1, .kfield = 0, .fcard = 4, .fcol = 1,
+           .index = pSigy, .check = ParamCheck::non_negative, .msg = 1211, .unit = "stress"},
+          {.key = "VP", .kcard = 1, .kfield = 1, .fcard = 4, .fcol = 11, .index = pVp, .check = ParamCheck::flag01,
+           .detail = "must be 0 (scale the yield stress) or 1 (viscoplastic)"},
+          {.key = "EPSF", .kcard = 1, .kfield = 2, .fcard = 4, .fcol = 21, .field = &MaterialData::fail_strain,
+           .check = ParamCheck::non_negative, .detail = "must not be negative (0: no failure)"},
+      },
+      .num_par = kNumPar, .keyword_cards = 2,
+      .check = check, .derive = derive, .echo = echo,
+      .solid = {HexKernel::deformable, update_stress_power_law, update_block, true},
+  };
   return t;
 }
 

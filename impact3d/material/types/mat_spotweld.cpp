@@ -66,48 +66,38 @@ MaterialParam force(const char* key, const char* label, int kfield, int fcol, in
 }  // namespace
 
 const MaterialType& mat_spotweld_type() {
-  static const MaterialType t = [] {
-    MaterialType t;
-    t.number = 100;
-    t.name = "spot weld";
-    t.keywords = {"MAT_SPOTWELD", "MAT_100"};
-    // keyword card 1: MID RO E PR SIGY EH DT TFAIL; card 2: EFAIL NRR NRS NRT MRR MSS MTT NF.
-    // Fixed format (an IMPACT-3D choice, no DYNA3D type 100): E card 3, PR card 4, SIGY card 5,
-    // EH card 6, TFAIL card 7, card 8 EFAIL NRR NRS NRT MRR MSS MTT in columns 1-70.
-    t.params = {
-        young_modulus_param(3, 1),
-        poisson_param(4, 1),
-        {.key = "SIGY", .fname = "yield stress", .label = "yield stress", .kcard = 0, .kfield = 4, .fcard = 5, .fcol = 1,
-         .field = &MaterialData::sigma_y, .check = ParamCheck::non_negative, .msg = 1211, .unit = "stress"},
-        {.key = "EH", .fname = "plastic hardening modulus", .label = "plastic hardening modulus", .kcard = 0, .kfield = 5,
-         .fcard = 6, .fcol = 1, .index = kEH, .check = ParamCheck::non_negative, .detail = "must not be negative",
-         .unit = "stress"},
-        {.key = "DT", .kcard = 0, .kfield = 6, .index = kDT, .check = ParamCheck::unsupported,
-         .detail = "mass scaling of spot-weld beams (DT)"},
-        {.key = "TFAIL", .fname = "failure time", .kcard = 0, .kfield = 7, .fcard = 7, .fcol = 1, .index = kTFAIL,
-         .check = ParamCheck::non_negative, .detail = "must not be negative (0: no failure by time)", .optional_write = true},
-        {.key = "EFAIL", .fname = "failure plastic strain", .label = "failure plastic strain", .kcard = 1, .kfield = 0,
-         .fcard = 8, .fcol = 1, .field = &MaterialData::fail_strain, .check = ParamCheck::non_negative,
-         .detail = "must not be negative (0: no failure by plastic strain)", .optional_write = true},
-        force("NRR", "axial failure force NRR", 1, 11, kNRR),
-        force("NRS", "shear failure force NRS", 2, 21, kNRS),
-        force("NRT", "shear failure force NRT", 3, 31, kNRT),
-        force("MRR", "torsional failure moment MRR", 4, 41, kMRR),
-        force("MSS", "bending failure moment MSS", 5, 51, kMSS),
-        force("MTT", "bending failure moment MTT", 6, 61, kMTT),
-        {.key = "NF", .fname = "filtered resultants NF", .kcard = 1, .kfield = 7, .fcard = 8, .fcol = 71, .index = kNF,
-         .check = ParamCheck::integer, .detail = "a whole number of resultant vectors, 0 to 30", .optional_write = true},
-    };
-    t.num_par = kNumPar;
-    t.keyword_cards = 2;
-    t.extra_card_feature = "the damage and failure option cards of *MAT_SPOTWELD";
-    t.one_per_card = true;
-    t.check = check;
-    t.derive = derive;
-    t.echo = echo;
-    t.solid = {HexKernel::deformable, update_point, update_block, true};
-    return t;
-  }();
+  static const MaterialType t{.number = 100, .name = "spot weld", .keywords = {"MAT_SPOTWELD", "MAT_100"},
+      // keyword card 1: MID RO E PR SIGY EH DT TFAIL; card 2: EFAIL NRR NRS NRT MRR MSS MTT NF.
+      // Fixed format (an IMPACT-3D choice, no DYNA3D type 100): E card 3, PR card 4, SIGY card 5,
+      // EH card 6, TFAIL card 7, card 8 EFAIL NRR NRS NRT MRR MSS MTT in columns 1-70.
+      .params = {
+          young_modulus_param(3, 1), poisson_param(4, 1),
+          {.key = "SIGY", .fname = "yield stress", .label = "yield stress", .kcard = 0, .kfield = 4, .fcard = 5, .fcol = 1,
+           .field = &MaterialData::sigma_y, .check = ParamCheck::non_negative, .msg = 1211, .unit = "stress"},
+          {.key = "EH", .fname = "plastic hardening modulus", .label = "plastic hardening modulus", .kcard = 0, .kfield = 5,
+           .fcard = 6, .fcol = 1, .index = kEH, .check = ParamCheck::non_negative, .detail = "must not be negative",
+           .unit = "stress"},
+          {.key = "DT", .kcard = 0, .kfield = 6, .index = kDT, .check = ParamCheck::unsupported,
+           .detail = "mass scaling of spot-weld beams (DT)"},
+          {.key = "TFAIL", .fname = "failure time", .kcard = 0, .kfield = 7, .fcard = 7, .fcol = 1, .index = kTFAIL,
+           .check = ParamCheck::non_negative, .detail = "must not be negative (0: no failure by time)", .optional_write = true},
+          {.key = "EFAIL", .fname = "failure plastic strain", .label = "failure plastic strain", .kcard = 1, .kfield = 0,
+           .fcard = 8, .fcol = 1, .field = &MaterialData::fail_strain, .check = ParamCheck::non_negative,
+           .detail = "must not be negative (0: no failure by plastic strain)", .optional_write = true},
+          force("NRR", "axial failure force NRR", 1, 11, kNRR),
+          force("NRS", "shear failure force NRS", 2, 21, kNRS),
+          force("NRT", "shear failure force NRT", 3, 31, kNRT),
+          force("MRR", "torsional failure moment MRR", 4, 41, kMRR),
+          force("MSS", "bending failure moment MSS", 5, 51, kMSS),
+          force("MTT", "bending failure moment MTT", 6, 61, kMTT),
+          {.key = "NF", .fname = "filtered resultants NF", .kcard = 1, .kfield = 7, .fcard = 8, .fcol = 71, .index = kNF,
+           .check = ParamCheck::integer, .detail = "a whole number of resultant vectors, 0 to 30", .optional_write = true},
+      },
+      .num_par = kNumPar, .keyword_cards = 2,
+      .extra_card_feature = "the damage and failure option cards of *MAT_SPOTWELD", .one_per_card = true,
+      .check = check, .derive = derive, .echo = echo,
+      .solid = {HexKernel::deformable, update_point, update_block, true},
+  };
   return t;
 }
 
