@@ -299,8 +299,12 @@ void DistributedCycle::setup(const State& s, const Model& m, const LoadSet& load
   terms_.assign(slot_node.size(), 0.0);
   all_terms_.assign(leads() ? slot_node.size() : 0, 0.0);
   records_.clear();
+  setup_exchanges();
+  setup_gathers(s, m);
+}
 
-  // the neighbour exchanges' buffers: per peer its corners (3 values each), then its nodes (6)
+// The neighbour exchanges' buffers: per peer its corners (3 values each), then its nodes (6).
+void DistributedCycle::setup_exchanges() {
   std::size_t ns = 0, nr = 0;
   for (const Peer& p : dom_.peers) {
     ns += 3 * p.send_corners.size() + 6 * p.send_nodes.size();
@@ -320,8 +324,11 @@ void DistributedCycle::setup(const State& s, const Model& m, const LoadSet& load
     corner_ex_.push_back(c);
     node_ex_.push_back(k);
   }
+}
 
-  // the output gather's sizes: each rank's own nodes and blocks
+// The output gather's sizes (each rank's own nodes, blocks, shells, beams and the angles of its
+// nodes' prescribed motions) and the velocities' gather (6 values a node).
+void DistributedCycle::setup_gathers(const State& s, const Model& m) {
   State& sm = const_cast<State&>(s);  // (the counter only counts)
   Counter cnt;
   for (int n : dom_.owned_nodes) visit_node(sm, std::size_t(n), cnt);

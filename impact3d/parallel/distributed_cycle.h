@@ -114,6 +114,8 @@ class DistributedCycle {
   void send_ghost_kinematics(State& s);
   void size_node_records(const State& s, const NodePass& p);
   void share_node_books(State& s, const NodePass& p);
+  void setup_exchanges();                               // setup's neighbour exchange buffers
+  void setup_gathers(const State& s, const Model& m);  // setup's output and velocity gathers
   void unpack_rank_state(State& s, int q, const double* from);
 
   int rank_ = 0, nranks_ = 1;
